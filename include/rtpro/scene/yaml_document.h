@@ -1,0 +1,84 @@
+#pragma once
+// A YAML document as rtpro's scene reader sees it: a tree of null/scalar/sequence/mapping nodes,
+// each knowing where it came from (the scene file or a command-line override). Built from
+// yaml-cpp's event stream rather than YAML::Node, because YAML::Node silently drops duplicate
+// keys, has no nesting limit of its own worth relying on, and cannot say which override a node
+// came from. Aliases share the anchored subtree, so `*a` costs no memory.
+#include "rtpro/core/error.h"
+
+#include <deque>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rtpro {
+
+// Deeper documents are rejected before anything walks them recursively.
+inline constexpr int kMaxYamlNesting = 64;
+
+// Where a node was written. `source` is owned by the YamlDocument; line/column are 1-based, and 0
+// for override values (the override text itself names the place).
+struct YamlPosition {
+  const std::string* source = nullptr;
+  int line = 0;
+  int column = 0;
+
+  SourceLocation location() const;
+};
+
+struct YamlNode;
+using YamlNodePtr = std::shared_ptr<const YamlNode>;
+
+struct YamlEntry {
+  std::string key;
+  YamlPosition key_at;
+  YamlNodePtr value;
+};
+
+struct YamlNode {
+  enum class Kind { null, scalar, sequence, mapping };
+
+  Kind kind = Kind::null;
+  YamlPosition at;
+  std::string scalar;     // scalar text
+  bool plain = true;      // an unquoted scalar: only plain scalars are numbers
+  std::vector<YamlNodePtr> items;  // sequence
+  std::vector<YamlEntry> entries;  // mapping, in document order, keys unique
+
+  bool is_null() const { return kind == Kind::null; }
+  bool is_scalar() const { return kind == Kind::scalar; }
+  bool is_sequence() const { return kind == Kind::sequence; }
+  bool is_mapping() const { return kind == Kind::mapping; }
+  const YamlEntry* find(std::string_view key) const;
+  // "a number", "a list of 2 items", ... for "expected X, got Y" messages.
+  std::string describe() const;
+};
+
+class YamlDocument {
+ public:
+  // Throws InputError at the offending position for syntax errors, duplicate keys, non-scalar
+  // keys, explicit tags, nesting deeper than kMaxYamlNesting, and more than one document. An
+  // empty text gives a null root.
+  static YamlDocument parse(std::string_view text, const std::string& source_name);
+
+  YamlDocument(YamlDocument&&) = default;
+  YamlDocument& operator=(YamlDocument&&) = default;
+  YamlDocument(const YamlDocument&) = delete;  // positions point into sources_
+  YamlDocument& operator=(const YamlDocument&) = delete;
+
+  // Applies "dotted.key=value" (the value is YAML): sets that key, creating missing mappings on
+  // the way; a numeric segment indexes into an existing list. The new nodes are positioned at the
+  // override, so later errors about them name it.
+  void apply_override(const std::string& override_text);
+
+  const YamlNode& root() const { return *root_; }
+
+ private:
+  YamlDocument() = default;
+
+  std::deque<std::string> sources_;  // stable addresses for YamlPosition::source
+  YamlNodePtr root_;
+};
+
+}  // namespace rtpro

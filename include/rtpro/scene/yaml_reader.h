@@ -1,0 +1,59 @@
+#pragma once
+// Typed, validated reads from a YamlDocument. Every failure is an InputError at the offending
+// node that names the field ("camera.fov: expected a number, got 'wide'").
+#include "rtpro/core/vec3.h"
+#include "rtpro/scene/yaml_document.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rtpro {
+
+// Numbers further from zero than this are rejected everywhere: at float precision they mean
+// nothing to a ray tracer, and far larger ones overflow (or abort Embree) once combined.
+inline constexpr double kMaxSceneNumber = 1e9;
+
+[[noreturn]] void fail_at(const YamlPosition& at, const std::string& message);
+[[noreturn]] void fail_at(const YamlNode& node, const std::string& message);
+
+// The candidate nearest to `word` by edit distance, if near enough to be a likely typo.
+std::optional<std::string> closest_match(std::string_view word, const std::vector<std::string>& candidates);
+// "; did you mean 'radius'?", or "; expected one of: a, b, c" when nothing is near.
+std::string suggestion(std::string_view word, const std::vector<std::string>& candidates);
+
+// A mapping with a fixed set of keys; constructing it rejects any other key.
+class MappingReader {
+ public:
+  // `what` names the mapping in messages: "camera", "sphere", "material 'red'".
+  MappingReader(const YamlNode& node, std::string what, std::vector<std::string> keys);
+
+  const YamlNode* optional(std::string_view key) const;
+  const YamlNode& required(std::string_view key) const;
+  // "camera.fov": the name messages use for a field.
+  std::string field(std::string_view key) const { return what_ + "." + std::string(key); }
+  const YamlNode& node() const { return node_; }
+
+ private:
+  const YamlNode& node_;
+  std::string what_;
+};
+
+// The `type:` of a list entry (a light, a shape), one of `types`; `what` names the entry.
+std::string read_entry_type(const YamlNode& entry, const std::string& what, const std::vector<std::string>& types);
+
+// `name` is the field's name in messages.
+double read_number(const YamlNode& node, const std::string& name);
+std::int64_t read_integer(const YamlNode& node, const std::string& name);
+std::uint64_t read_unsigned(const YamlNode& node, const std::string& name);
+std::string read_string(const YamlNode& node, const std::string& name);
+Vec3 read_vec3(const YamlNode& node, const std::string& name);
+// A vec3 whose components are all >= 0 (colours).
+Color read_color(const YamlNode& node, const std::string& name);
+// A list of exactly `count` items, or a failure naming the expected shape.
+const std::vector<YamlNodePtr>& read_list(const YamlNode& node, const std::string& name, std::size_t count,
+                                          std::string_view shape);
+
+}  // namespace rtpro

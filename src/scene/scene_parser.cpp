@@ -1,0 +1,247 @@
+#include "rtpro/scene/scene_parser.h"
+
+#include "rtpro/scene/yaml_document.h"
+#include "rtpro/scene/yaml_reader.h"
+#include "rtpro/scene/yaml_scene_objects.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace rtpro {
+
+namespace {
+
+constexpr std::int64_t kMaxImageSide = 65536;
+constexpr std::int64_t kMaxImagePixels = std::int64_t{1} << 28;
+constexpr std::int64_t kMaxSpp = 65536;
+constexpr std::int64_t kMaxDepth = 64;
+constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{256} << 20;
+// Below this sine of the angle between them, up and the view direction give no usable basis.
+constexpr float kMinUpViewSine = 1e-3f;
+
+bool absent(const YamlNode* node) { return !node || node->is_null(); }
+
+float read_non_negative(const YamlNode& node, const std::string& name) {
+  const double value = read_number(node, name);
+  if (value < 0.0) fail_at(node, name + " must be >= 0, got " + node.scalar);
+  return static_cast<float>(value);
+}
+
+void read_version(const YamlNode& root) {
+  const YamlEntry* version = root.find("rtpro");
+  if (!version) {
+    fail_at(root, "missing the required key 'rtpro' (the format version; this rtpro reads version " +
+                      std::to_string(kSceneFormatVersion) + ")");
+  }
+  if (read_integer(*version->value, "rtpro") != kSceneFormatVersion) {
+    fail_at(*version->value, "rtpro: unsupported scene format version " + version->value->scalar +
+                                 "; this rtpro reads version " + std::to_string(kSceneFormatVersion));
+  }
+}
+
+int read_image_side(const YamlNode& node, const std::string& name) {
+  const std::int64_t side = read_integer(node, name);
+  if (side < 1 || side > kMaxImageSide)
+    fail_at(node, name + ": each side must be from 1 to " + std::to_string(kMaxImageSide) + " pixels, got " + node.scalar);
+  return static_cast<int>(side);
+}
+
+void read_resolution(const YamlNode& node, CameraDesc& camera) {
+  const auto& items = read_list(node, "camera.resolution", 2, "[width, height] in pixels");
+  camera.width = read_image_side(*items[0], "camera.resolution");
+  camera.height = read_image_side(*items[1], "camera.resolution");
+  const std::int64_t pixels = std::int64_t{camera.width} * camera.height;
+  if (pixels > kMaxImagePixels) {
+    fail_at(node, "camera.resolution: " + std::to_string(camera.width) + "x" + std::to_string(camera.height) +
+                      " is " + std::to_string(pixels) + " pixels; the limit is " + std::to_string(kMaxImagePixels) +
+                      " (2^28, e.g. 16384x16384)");
+  }
+}
+
+CameraDesc read_camera(const YamlNode& node) {
+  const MappingReader camera(node, "camera", {"position", "look_at", "up", "fov", "resolution"});
+  CameraDesc desc;
+  desc.position = read_vec3(camera.required("position"), "camera.position");
+  const YamlNode& look_at = camera.required("look_at");
+  desc.look_at = read_vec3(look_at, "camera.look_at");
+  const Vec3 view = desc.look_at - desc.position;
+  if (!(length(view) > 0.0f))
+    fail_at(look_at, "camera.look_at must differ from camera.position: the camera needs a direction to look in");
+
+  const YamlNode* up = camera.optional("up");
+  if (up) {
+    desc.up = read_vec3(*up, "camera.up");
+    if (!(length(desc.up) > 0.0f)) fail_at(*up, "camera.up must not be zero-length");
+  }
+  if (length(cross(normalize(view), normalize(desc.up))) < kMinUpViewSine) {
+    fail_at(up ? *up : look_at, std::string("camera.up") + (up ? "" : " (default [0, 1, 0])") +
+                                    " is parallel to the view direction (look_at - position); choose another up");
+  }
+
+  if (const YamlNode* fov = camera.optional("fov")) {
+    const double degrees = read_number(*fov, "camera.fov");
+    if (!(degrees > 0.0 && degrees < 180.0))
+      fail_at(*fov, "camera.fov must be between 0 and 180 degrees (exclusive), got " + fov->scalar);
+    desc.fov_degrees = static_cast<float>(degrees);
+  }
+  if (const YamlNode* resolution = camera.optional("resolution")) read_resolution(*resolution, desc);
+  return desc;
+}
+
+int read_spp(const YamlNode& node) {
+  const std::int64_t spp = read_integer(node, "render.spp");
+  if (spp < 1 || spp > kMaxSpp)
+    fail_at(node, "render.spp must be from 1 to " + std::to_string(kMaxSpp) + " (256x256), got " + node.scalar);
+  const auto root = static_cast<std::int64_t>(std::sqrt(static_cast<double>(spp)));
+  if (root * root != spp) {
+    const std::int64_t above = root + 1;
+    fail_at(node, "render.spp must be a perfect square n x n (1, 4, 9, 16, 25, ...) for stratified sampling, got " +
+                      node.scalar + "; the nearest are " + std::to_string(root * root) + " (" + std::to_string(root) +
+                      "x" + std::to_string(root) + ") and " + std::to_string(above * above) + " (" +
+                      std::to_string(above) + "x" + std::to_string(above) + ")");
+  }
+  return static_cast<int>(spp);
+}
+
+RenderSettings read_render(const YamlNode* node) {
+  RenderSettings settings;
+  if (absent(node)) return settings;
+  const MappingReader render(*node, "render", {"spp", "max_depth", "seed", "ambient", "background"});
+  if (const YamlNode* spp = render.optional("spp")) settings.spp = read_spp(*spp);
+  if (const YamlNode* depth = render.optional("max_depth")) {
+    const std::int64_t value = read_integer(*depth, "render.max_depth");
+    if (value < 0 || value > kMaxDepth)
+      fail_at(*depth, "render.max_depth must be from 0 to " + std::to_string(kMaxDepth) + ", got " + depth->scalar);
+    settings.max_depth = static_cast<int>(value);
+  }
+  if (const YamlNode* seed = render.optional("seed")) settings.seed = read_unsigned(*seed, "render.seed");
+  if (const YamlNode* ambient = render.optional("ambient")) settings.ambient = read_non_negative(*ambient, "render.ambient");
+  if (const YamlNode* background = render.optional("background"))
+    settings.background = read_color(*background, "render.background");
+  return settings;
+}
+
+MaterialDesc read_material(const std::string& name, const YamlNode& node) {
+  const MappingReader material(node, "material '" + name + "'", {"color", "specular", "shininess", "reflectivity"});
+  MaterialDesc desc;
+  desc.name = name;
+  if (const YamlNode* color = material.optional("color")) desc.color = read_color(*color, material.field("color"));
+  if (const YamlNode* specular = material.optional("specular"))
+    desc.specular = read_non_negative(*specular, material.field("specular"));
+  if (const YamlNode* shininess = material.optional("shininess"))
+    desc.shininess = read_non_negative(*shininess, material.field("shininess"));
+  if (const YamlNode* reflectivity = material.optional("reflectivity")) {
+    desc.reflectivity = read_non_negative(*reflectivity, material.field("reflectivity"));
+    if (desc.reflectivity > 1.0f)
+      fail_at(*reflectivity, material.field("reflectivity") + " must be from 0 to 1, got " + reflectivity->scalar);
+  }
+  return desc;
+}
+
+std::vector<MaterialDesc> read_materials(const YamlNode* node) {
+  std::vector<MaterialDesc> materials{MaterialDesc{.name = "default"}};
+  if (absent(node)) return materials;
+  if (!node->is_mapping()) fail_at(*node, "materials: expected a mapping of name: {color: ...}, got " + node->describe());
+  for (const YamlEntry& entry : node->entries) {
+    MaterialDesc material = read_material(entry.key, *entry.value);
+    if (entry.key == "default") {
+      materials[0] = std::move(material);
+    } else {
+      materials.push_back(std::move(material));
+    }
+  }
+  return materials;
+}
+
+LightDesc read_light(const YamlNode& node) {
+  const std::string type = read_entry_type(node, "light", {"point", "directional"});
+  if (type == "point") {
+    const MappingReader light(node, "point light", {"type", "position", "color", "intensity"});
+    PointLightDesc desc;
+    desc.position = read_vec3(light.required("position"), light.field("position"));
+    if (const YamlNode* color = light.optional("color")) desc.color = read_color(*color, light.field("color"));
+    if (const YamlNode* intensity = light.optional("intensity"))
+      desc.intensity = read_non_negative(*intensity, light.field("intensity"));
+    return desc;
+  }
+  const MappingReader light(node, "directional light", {"type", "direction", "color", "intensity"});
+  DirectionalLightDesc desc;
+  const YamlNode& direction = light.required("direction");
+  desc.direction = read_vec3(direction, light.field("direction"));
+  if (!(length(desc.direction) > 0.0f)) fail_at(direction, light.field("direction") + " must not be zero-length");
+  desc.direction = normalize(desc.direction);
+  if (const YamlNode* color = light.optional("color")) desc.color = read_color(*color, light.field("color"));
+  if (const YamlNode* intensity = light.optional("intensity"))
+    desc.intensity = read_non_negative(*intensity, light.field("intensity"));
+  return desc;
+}
+
+std::vector<LightDesc> read_lights(const YamlNode* node) {
+  std::vector<LightDesc> lights;
+  if (absent(node)) return lights;
+  if (!node->is_sequence()) fail_at(*node, "lights: expected a list of lights, got " + node->describe());
+  for (const YamlNodePtr& light : node->items) lights.push_back(read_light(*light));
+  return lights;
+}
+
+void check_scene_root(const YamlNode& root) {
+  if (root.is_null()) {
+    fail_at(root, "the scene is empty; it needs at least 'rtpro: " + std::to_string(kSceneFormatVersion) +
+                      "' and a camera");
+  }
+  if (!root.is_mapping()) fail_at(root, "expected the scene to be a mapping (rtpro: 1, camera: ...), got " + root.describe());
+}
+
+SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& file) {
+  check_scene_root(root);
+  read_version(root);
+  const MappingReader scene(root, "the scene", {"rtpro", "camera", "render", "materials", "lights", "objects", "world"});
+
+  SceneDescription desc;
+  desc.file = file;
+  desc.camera = read_camera(scene.required("camera"));
+  desc.render = read_render(scene.optional("render"));
+  desc.materials = read_materials(scene.optional("materials"));
+  desc.lights = read_lights(scene.optional("lights"));
+  read_scene_objects(scene.optional("objects"), scene.optional("world"), file.parent_path(), desc);
+  return desc;
+}
+
+std::string read_scene_file_text(const std::filesystem::path& file) {
+  const SourceLocation where{file.string()};
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(file, error);
+  if (!std::filesystem::exists(status)) throw InputError(where, "cannot read the scene file: it does not exist");
+  if (std::filesystem::is_directory(status))
+    throw InputError(where, "cannot read the scene file: it is a directory");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(where, std::string("cannot read the scene file: ") + std::strerror(errno));
+  const std::uintmax_t size = std::filesystem::file_size(file, error);
+  if (!error && size > kMaxSceneFileBytes) {
+    throw InputError(where, "the scene file is " + std::to_string(size >> 20) +
+                                " MiB; the limit is 256 MiB (put large geometry in mesh files)");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(where, std::string("cannot read the scene file: ") + std::strerror(errno));
+  return text.str();
+}
+
+}  // namespace
+
+SceneDescription parse_scene_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  return parse_scene_text(read_scene_file_text(file), file, overrides);
+}
+
+SceneDescription parse_scene_text(std::string_view text, const std::filesystem::path& file,
+                                  const std::vector<std::string>& overrides) {
+  YamlDocument document = YamlDocument::parse(text, file.string());
+  check_scene_root(document.root());
+  for (const std::string& override_text : overrides) document.apply_override(override_text);
+  return read_scene(document.root(), file);
+}
+
+}  // namespace rtpro
