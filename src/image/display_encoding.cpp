@@ -1,0 +1,46 @@
+#include "display_encoding.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rtpro {
+
+namespace {
+
+std::vector<float> display_rgb(const Image& image, const DisplayTransform& transform) {
+  const std::size_t pixel_count = static_cast<std::size_t>(image.width) * image.height;
+  const std::size_t stride = image.channels.size();
+  const bool grey = stride < 3;
+  std::vector<float> rgb(pixel_count * 3);
+  for (std::size_t pixel = 0; pixel < pixel_count; ++pixel)
+    for (std::size_t c = 0; c < 3; ++c) rgb[pixel * 3 + c] = image.data[pixel * stride + (grey ? 0 : c)];
+  // Applied to a copy: the caller's scene-linear image stays as it is.
+  transform.apply(rgb.data(), pixel_count);
+  return rgb;
+}
+
+template <typename Code>
+std::vector<Code> quantise(const std::vector<float>& rgb) {
+  constexpr float top = std::numeric_limits<Code>::max();
+  std::vector<Code> codes(rgb.size());
+  std::transform(rgb.begin(), rgb.end(), codes.begin(), [](float value) {
+    // Written so that NaN fails the first test and becomes 0 (black) rather than undefined
+    // behaviour in the float-to-integer conversion; +inf becomes the top code.
+    const float clamped = value > 0.0f ? std::min(value, 1.0f) : 0.0f;
+    return static_cast<Code>(std::lround(clamped * top));
+  });
+  return codes;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_for_display_8bit(const Image& image, const DisplayTransform& transform) {
+  return quantise<std::uint8_t>(display_rgb(image, transform));
+}
+
+std::vector<std::uint16_t> encode_for_display_16bit(const Image& image, const DisplayTransform& transform) {
+  return quantise<std::uint16_t>(display_rgb(image, transform));
+}
+
+}  // namespace rtpro

@@ -1,0 +1,201 @@
+#include "rtpro/image/image_io.h"
+
+#include "atomic_file_replacement.h"
+#include "display_encoding.h"
+#include "rtpro/core/error.h"
+#include "rtpro/image/color_config.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <ctime>
+#include <variant>
+
+namespace rtpro {
+
+namespace {
+
+// How a format stores pixels. Float formats keep scene-linear values; the others hold
+// display-referred code values. TIFF gets 16 bits so that its display-referred gradients do not
+// band; PNG and JPEG stay 8-bit, what every viewer expects.
+enum class PixelEncoding { kSceneLinearFloat, kDisplay8Bit, kDisplay16Bit };
+
+constexpr std::size_t kMaxReadValues = std::size_t{1} << 30;  // 4 GiB of floats: a 16k x 16k RGBA image
+
+using PixelBuffer = std::variant<std::vector<float>, std::vector<std::uint8_t>, std::vector<std::uint16_t>>;
+
+std::string lowercase_extension(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+PixelEncoding encoding_for(const std::filesystem::path& file) {
+  const std::string extension = lowercase_extension(file);
+  for (const char* float_format : {".exr", ".sxr", ".mxr", ".hdr", ".rgbe", ".pfm"})
+    if (extension == float_format) return PixelEncoding::kSceneLinearFloat;
+  if (extension == ".tif" || extension == ".tiff") return PixelEncoding::kDisplay16Bit;
+  return PixelEncoding::kDisplay8Bit;
+}
+
+// OpenImageIO reports some failures (an unknown extension, a failed open) only through its global
+// error, others only through the ImageInput/ImageOutput: collect both.
+std::string oiio_errors(std::string object_error) {
+  const std::string global_error = OIIO::geterror();
+  if (object_error.empty()) return global_error.empty() ? "unknown OpenImageIO error" : global_error;
+  return global_error.empty() ? object_error : object_error + "; " + global_error;
+}
+
+// Also the check that OpenImageIO has a writer for the extension, done before anything touches
+// the disk.
+bool writer_supports_any_channel_count(const std::filesystem::path& file) {
+  const auto output = OIIO::ImageOutput::create(file.string());
+  if (!output) {
+    const std::string extension = file.extension().string();
+    throw InputError(SourceLocation{file.string()},
+                     (extension.empty() ? std::string("no file extension to choose an image format from")
+                                        : "unsupported image format \"" + extension + "\"") +
+                         " (" + oiio_errors("") + ")");
+  }
+  return output->supports("nchannels");
+}
+
+void require_writable_image(const std::filesystem::path& file, const Image& image) {
+  const std::size_t expected = static_cast<std::size_t>(std::max(image.width, 0)) *
+                               static_cast<std::size_t>(std::max(image.height, 0)) * image.channels.size();
+  if (image.width <= 0 || image.height <= 0 || image.channels.empty() || image.data.size() != expected)
+    throw RuntimeError("cannot write " + file.string() + ": the image is empty or inconsistent (" +
+                       std::to_string(image.width) + "x" + std::to_string(image.height) + ", " +
+                       std::to_string(image.channels.size()) + " channels, " + std::to_string(image.data.size()) +
+                       " values)");
+}
+
+std::string current_date_time() {
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &local);  // the TIFF/EXIF DateTime form
+  return text;
+}
+
+void add_metadata(OIIO::ImageSpec& spec, const ImageWriteOptions& options, const std::string& description) {
+  // Defaults first: ImageSpec::attribute replaces, so the caller's entries win.
+  spec.attribute("Software", "rtpro " RTPRO_VERSION);
+  spec.attribute("ImageDescription", description);
+  spec.attribute("DateTime", current_date_time());
+  for (const auto& [key, value] : options.metadata) spec.attribute(key, value);
+}
+
+// All channels, named as given, when the format takes any number of them; else R, G, B.
+std::vector<float> scene_linear_channels(const Image& image, int channel_count) {
+  if (channel_count == image.channel_count()) return image.data;
+  std::vector<float> values;
+  values.reserve(static_cast<std::size_t>(image.width) * image.height * channel_count);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      for (int c = 0; c < channel_count; ++c) values.push_back(image.at(x, y, c));
+  return values;
+}
+
+void describe_scene_linear(OIIO::ImageSpec& spec, const Image& image, bool any_channel_count,
+                           const ImageWriteOptions& options) {
+  const int channel_count = any_channel_count ? image.channel_count() : std::min(image.channel_count(), 3);
+  spec = OIIO::ImageSpec(image.width, image.height, channel_count, OIIO::TypeDesc::FLOAT);
+  spec.channelnames.assign(image.channels.begin(), image.channels.begin() + channel_count);
+  // EXR does not keep oiio:ColorSpace, so the primaries go in the standard chromaticities
+  // attribute: Rec.709 red, green, blue and the D65 white point (x, y pairs).
+  static constexpr float kRec709Chromaticities[8] = {0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+  spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), kRec709Chromaticities);
+  spec.attribute("rtpro:colorspace", "Linear Rec.709 (sRGB)");
+  spec.attribute("compression", "zip");
+  add_metadata(spec, options, "rtpro image, scene-linear Rec.709 primaries");
+}
+
+PixelBuffer encode_display_referred(OIIO::ImageSpec& spec, const Image& image, PixelEncoding encoding,
+                                    const ImageWriteOptions& options) {
+  const ColorConfig config = ColorConfig::load(options.ocio_config);
+  const DisplayTransform transform = config.display_transform(options.display, options.view);
+  const bool sixteen_bits = encoding == PixelEncoding::kDisplay16Bit;
+  spec = OIIO::ImageSpec(image.width, image.height, 3, sixteen_bits ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+  std::string display_lowercase = transform.display();
+  std::transform(display_lowercase.begin(), display_lowercase.end(), display_lowercase.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  // Without the tag OpenImageIO's PNG writer may declare the pixels linear (gAMA 1.0); other
+  // displays' encodings have no OpenImageIO name, and untagged files are read as sRGB anyway.
+  if (display_lowercase.find("srgb") != std::string::npos) spec.attribute("oiio:ColorSpace", "sRGB");
+  add_metadata(spec, options,
+               "rtpro image, display-referred: OpenColorIO display \"" + transform.display() + "\", view \"" +
+                   transform.view() + "\" (config: " + config.source() + ")");
+  if (sixteen_bits) return encode_for_display_16bit(image, transform);
+  return encode_for_display_8bit(image, transform);
+}
+
+void write_pixels(const std::filesystem::path& file, const OIIO::ImageSpec& spec, const PixelBuffer& pixels) {
+  AtomicFileReplacement replacement(file);
+  {
+    // Scoped so the writer has closed the temporary file before it is renamed or removed.
+    const std::string temporary = replacement.temporary_path().string();
+    const auto output = OIIO::ImageOutput::create(temporary);
+    if (!output) throw RuntimeError("cannot write " + file.string() + ": " + oiio_errors(""));
+    if (!output->open(temporary, spec))
+      throw RuntimeError("cannot write " + file.string() + ": " + oiio_errors(output->geterror()));
+    const bool written = std::visit(
+        [&](const auto& values) {
+          using Value = typename std::decay_t<decltype(values)>::value_type;
+          return output->write_image(OIIO::BaseTypeFromC<Value>::value, values.data());
+        },
+        pixels);
+    if (!written || !output->close())
+      throw RuntimeError("cannot write " + file.string() + ": " + oiio_errors(output->geterror()));
+  }
+  replacement.commit();
+}
+
+}  // namespace
+
+bool writes_scene_linear(const std::filesystem::path& file) {
+  return encoding_for(file) == PixelEncoding::kSceneLinearFloat;
+}
+
+void write_image(const std::filesystem::path& file, const Image& image, const ImageWriteOptions& options) {
+  const bool any_channel_count = writer_supports_any_channel_count(file);
+  require_writable_image(file, image);
+  OIIO::ImageSpec spec;
+  const PixelEncoding encoding = encoding_for(file);
+  PixelBuffer pixels;
+  if (encoding == PixelEncoding::kSceneLinearFloat) {
+    describe_scene_linear(spec, image, any_channel_count, options);
+    pixels = scene_linear_channels(image, spec.nchannels);
+  } else {
+    pixels = encode_display_referred(spec, image, encoding, options);
+  }
+  write_pixels(file, spec, pixels);
+}
+
+Image read_image(const std::filesystem::path& file) {
+  const SourceLocation where{file.string()};
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(file, error)) throw InputError(where, "no such image file");
+  const auto input = OIIO::ImageInput::open(file.string());
+  if (!input) throw InputError(where, "cannot read image: " + oiio_errors(""));
+  const OIIO::ImageSpec& spec = input->spec();
+  if (spec.deep || spec.depth > 1) throw InputError(where, "deep and volume images are not supported");
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+    throw InputError(where, "the image has no pixels");
+  // Checked before allocating: a small hostile header can declare an enormous image. Each factor is
+  // at most 2^31, so the product of the first two cannot overflow 64 bits.
+  const std::size_t pixels = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
+  if (pixels > kMaxReadValues || pixels * static_cast<std::size_t>(spec.nchannels) > kMaxReadValues)
+    throw InputError(where, "the image is too large (" + std::to_string(spec.width) + "x" +
+                                std::to_string(spec.height) + ", " + std::to_string(spec.nchannels) + " channels)");
+  // The data window is the image: an offset or a differing display window is not kept.
+  Image image(spec.width, spec.height, spec.channelnames);
+  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.data.data()))
+    throw InputError(where, "cannot read image: " + oiio_errors(input->geterror()));
+  return image;
+}
+
+}  // namespace rtpro

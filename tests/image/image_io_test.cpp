@@ -1,0 +1,305 @@
+#include "rtpro/image/image_io.h"
+
+#include "rtpro/core/error.h"
+#include "test_paths.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+#include <functional>
+#include <fstream>
+#include <iterator>
+#include <sys/resource.h>
+
+namespace rtpro {
+namespace {
+
+namespace fs = std::filesystem;
+
+Image grey_image(int width, int height, float value) {
+  Image image(width, height);
+  std::fill(image.data.begin(), image.data.end(), value);
+  return image;
+}
+
+// Values of every sign and magnitude, none of which a half-float or 8-bit path keeps exactly.
+Image varied_image(int width, int height, std::vector<std::string> channels = {"R", "G", "B"}) {
+  Image image(width, height, std::move(channels));
+  std::uint32_t state = 12345;
+  for (float& value : image.data) {
+    state = state * 1664525u + 1013904223u;
+    value = (static_cast<float>(state >> 8) / 16777216.0f - 0.25f) * 7.0f + 1e-7f;
+  }
+  return image;
+}
+
+std::vector<std::string> folder_listing(const fs::path& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::string file_bytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+OIIO::ImageSpec spec_of(const fs::path& file) {
+  const auto input = OIIO::ImageInput::open(file.string());
+  EXPECT_TRUE(input) << OIIO::geterror();
+  return input ? input->spec() : OIIO::ImageSpec();
+}
+
+std::string format_of(const fs::path& file) {
+  const auto input = OIIO::ImageInput::open(file.string());
+  return input ? input->format_name() : OIIO::geterror();
+}
+
+template <typename Error>
+std::string error_message_of(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "the expected error was not thrown";
+  return {};
+}
+
+TEST(ImageIo, ExrKeepsScenelinearFloatsExactly) {
+  const auto file = test::scratch_dir() / "beauty.exr";
+  const Image image = varied_image(17, 9);
+  write_image(file, image, {});
+  const Image back = read_image(file);
+  EXPECT_EQ(back.width, 17);
+  EXPECT_EQ(back.height, 9);
+  EXPECT_EQ(back.channels, image.channels);
+  EXPECT_EQ(back.data, image.data);
+  EXPECT_EQ(spec_of(file).format, OIIO::TypeDesc::FLOAT);
+}
+
+TEST(ImageIo, ExrKeepsEveryChannelByName) {
+  const auto file = test::scratch_dir() / "aovs.exr";
+  const std::vector<std::string> names = {"R", "G", "B", "A", "albedo.R", "albedo.G", "albedo.B",
+                                          "N.X", "N.Y", "N.Z", "Z"};
+  const Image image = varied_image(5, 4, names);
+  write_image(file, image, {});
+  const Image back = read_image(file);
+  ASSERT_EQ(back.channel_count(), image.channel_count());
+  // OpenEXR stores channels sorted by name, so compare by name rather than by position.
+  for (int c = 0; c < image.channel_count(); ++c) {
+    const auto found = std::find(back.channels.begin(), back.channels.end(), image.channels[c]);
+    ASSERT_NE(found, back.channels.end()) << image.channels[c];
+    const int back_c = static_cast<int>(found - back.channels.begin());
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) EXPECT_EQ(back.at(x, y, back_c), image.at(x, y, c)) << image.channels[c];
+  }
+}
+
+TEST(ImageIo, ExrCarriesChromaticitiesAndMetadata) {
+  const auto file = test::scratch_dir() / "tagged.exr";
+  ImageWriteOptions options;
+  options.metadata = {{"rtpro:backend", "embree"}, {"Software", "rtpro test"}};
+  write_image(file, grey_image(2, 2, 0.5f), options);
+  const OIIO::ImageSpec spec = spec_of(file);
+  EXPECT_EQ(spec.get_string_attribute("rtpro:backend"), "embree");
+  EXPECT_EQ(spec.get_string_attribute("Software"), "rtpro test");
+  EXPECT_FALSE(spec.get_string_attribute("DateTime").empty());
+  const OIIO::ParamValue* chromaticities = spec.find_attribute("chromaticities");
+  ASSERT_NE(chromaticities, nullptr);
+  ASSERT_EQ(chromaticities->type(), OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8));
+  const float* xy = static_cast<const float*>(chromaticities->data());
+  EXPECT_FLOAT_EQ(xy[0], 0.64f);  // Rec.709 red x
+  EXPECT_FLOAT_EQ(xy[7], 0.3290f);  // D65 white y
+}
+
+TEST(ImageIo, PngGoesThroughTheSrgbView) {
+  const auto file = test::scratch_dir() / "grey.png";
+  write_image(file, grey_image(3, 2, 0.18f), {});
+  const OIIO::ImageSpec spec = spec_of(file);
+  EXPECT_EQ(spec.format, OIIO::TypeDesc::UINT8);
+  EXPECT_EQ(spec.get_string_attribute("oiio:ColorSpace"), "sRGB");
+  EXPECT_NE(spec.get_string_attribute("ImageDescription").find("Standard"), std::string::npos);
+  const Image back = read_image(file);
+  EXPECT_EQ(back.channels, (std::vector<std::string>{"R", "G", "B"}));
+  for (float value : back.data) EXPECT_EQ(std::lround(value * 255.0f), 118);  // 0.4614 * 255 = 117.66
+}
+
+TEST(ImageIo, PngThroughTheAcesView) {
+  const auto file = test::scratch_dir() / "aces.png";
+  ImageWriteOptions options;
+  options.view = "ACES 1.0 SDR-video";
+  write_image(file, grey_image(2, 2, 0.18f), options);
+  for (float value : read_image(file).data) EXPECT_EQ(std::lround(value * 255.0f), 91);  // 0.356 * 255 = 90.8
+}
+
+TEST(ImageIo, PngClampsAndMapsNanToBlack) {
+  const auto file = test::scratch_dir() / "extremes.png";
+  Image image(6, 1);
+  const float values[6] = {NAN, INFINITY, -INFINITY, -0.5f, 7.0f, 1.0f};
+  for (int x = 0; x < 6; ++x)
+    for (int c = 0; c < 3; ++c) image.at(x, 0, c) = values[x];
+  write_image(file, image, {});
+  const Image back = read_image(file);
+  const int expected[6] = {0, 255, 0, 0, 255, 255};
+  for (int x = 0; x < 6; ++x) EXPECT_EQ(std::lround(back.at(x, 0, 0) * 255.0f), expected[x]) << "pixel " << x;
+}
+
+TEST(ImageIo, PngKeepsOnlyTheFirstThreeChannels) {
+  const auto file = test::scratch_dir() / "aovs.png";
+  Image image(2, 2, {"R", "G", "B", "N.X"});
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 2; ++x) {
+      image.at(x, y, 0) = 1.0f;
+      image.at(x, y, 3) = 0.5f;
+    }
+  write_image(file, image, {});
+  const Image back = read_image(file);
+  EXPECT_EQ(back.channel_count(), 3);
+  EXPECT_EQ(back.at(1, 1, 0), 1.0f);
+  EXPECT_EQ(back.at(1, 1, 1), 0.0f);
+}
+
+TEST(ImageIo, JpegRoundTripIsCloseToTheSrgbValue) {
+  const auto file = test::scratch_dir() / "grey.JPG";
+  write_image(file, grey_image(16, 16, 0.18f), {});
+  EXPECT_EQ(format_of(file), "jpeg") << "format chosen by extension, any case";
+  const Image back = read_image(file);
+  ASSERT_EQ(back.channel_count(), 3);
+  for (float value : back.data) EXPECT_NEAR(value * 255.0f, 118.0f, 1.5f);
+}
+
+TEST(ImageIo, TiffIsSixteenBitDisplayReferred) {
+  const auto file = test::scratch_dir() / "grey.tif";
+  write_image(file, grey_image(3, 3, 0.18f), {});
+  EXPECT_EQ(spec_of(file).format, OIIO::TypeDesc::UINT16);
+  const double expected = 1.055 * std::pow(0.18, 1.0 / 2.4) - 0.055;
+  for (float value : read_image(file).data) EXPECT_NEAR(value, expected, 1.0 / 65535.0);
+}
+
+TEST(ImageIo, OcioConfigOptionChoosesTheConfigForEightBitFormats) {
+  const auto file = test::scratch_dir() / "doubled.png";  // first: scratch_dir() empties the folder
+  const auto config = test::write_file("doubling.ocio", R"(ocio_profile_version: 2
+roles: {default: linear, scene_linear: linear}
+displays:
+  Test Display:
+    - !<View> {name: Doubled, colorspace: doubled}
+colorspaces:
+  - !<ColorSpace> {name: linear}
+  - !<ColorSpace>
+    name: doubled
+    from_scene_reference: !<MatrixTransform> {matrix: [2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1]}
+)");
+  ImageWriteOptions options;
+  options.ocio_config = config;
+  write_image(file, grey_image(1, 1, 0.25f), options);
+  EXPECT_EQ(std::lround(read_image(file).data[0] * 255.0f), 128);  // 0.5 * 255 = 127.5
+}
+
+TEST(ImageIo, UnknownExtensionIsAnInputErrorAndCreatesNothing) {
+  const auto folder = test::scratch_dir();
+  const std::string message =
+      error_message_of<InputError>([&] { write_image(folder / "picture.xyz", grey_image(2, 2, 0.5f), {}); });
+  EXPECT_NE(message.find(".xyz"), std::string::npos) << message;
+  EXPECT_TRUE(folder_listing(folder).empty());
+  EXPECT_THROW(write_image(folder / "no_extension", grey_image(2, 2, 0.5f), {}), InputError);
+  EXPECT_TRUE(folder_listing(folder).empty());
+}
+
+TEST(ImageIo, MissingFolderIsARuntimeErrorNamingIt) {
+  const auto folder = test::scratch_dir() / "not" / "there";
+  const std::string message =
+      error_message_of<RuntimeError>([&] { write_image(folder / "out.png", grey_image(2, 2, 0.5f), {}); });
+  EXPECT_NE(message.find(folder.string()), std::string::npos) << message;
+  EXPECT_FALSE(fs::exists(folder));
+}
+
+TEST(ImageIo, EmptyImageIsRefusedWithoutTouchingTheDisk) {
+  const auto folder = test::scratch_dir();
+  EXPECT_THROW(write_image(folder / "empty.exr", Image(0, 4), {}), RuntimeError);
+  EXPECT_TRUE(folder_listing(folder).empty());
+}
+
+TEST(ImageIo, OverwritingReplacesTheFileAndLeavesNoTemporaryFile) {
+  const auto folder = test::scratch_dir();
+  write_image(folder / "out.exr", grey_image(2, 2, 0.25f), {});
+  write_image(folder / "out.exr", grey_image(3, 1, 0.75f), {});
+  EXPECT_EQ(folder_listing(folder), std::vector<std::string>{"out.exr"});
+  EXPECT_EQ(read_image(folder / "out.exr").data, grey_image(3, 1, 0.75f).data);
+}
+
+TEST(ImageIo, BadViewLeavesTheExistingFileUntouched) {
+  const auto folder = test::scratch_dir();
+  write_image(folder / "out.png", grey_image(2, 2, 0.5f), {});
+  const std::string before = file_bytes(folder / "out.png");
+  ImageWriteOptions options;
+  options.view = "No Such View";
+  EXPECT_THROW(write_image(folder / "out.png", grey_image(2, 2, 0.9f), options), InputError);
+  EXPECT_EQ(file_bytes(folder / "out.png"), before);
+  EXPECT_EQ(folder_listing(folder), std::vector<std::string>{"out.png"});
+}
+
+// A failure in the middle of writing the pixels: the process may not grow any file past a few
+// kilobytes (with SIGXFSZ ignored, write() then fails with EFBIG). Works as root too, unlike a
+// read-only folder.
+TEST(ImageIo, FailedWriteKeepsTheOldFileAndRemovesTheTemporaryOne) {
+  const auto folder = test::scratch_dir();
+  const auto target = folder / "render.exr";
+  write_image(target, grey_image(4, 4, 0.5f), {});
+  const std::string good = file_bytes(target);
+  ASSERT_LT(good.size(), 4096u);
+
+  const auto previous_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit previous_limit{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &previous_limit), 0);
+  rlimit small_limit = previous_limit;
+  small_limit.rlim_cur = 4096;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small_limit), 0);
+  std::string message;
+  try {
+    write_image(target, varied_image(256, 256), {});  // about 700 kB of incompressible floats
+  } catch (const RuntimeError& e) {
+    message = e.what();
+  }
+  setrlimit(RLIMIT_FSIZE, &previous_limit);
+  std::signal(SIGXFSZ, previous_handler);
+
+  EXPECT_NE(message.find(target.string()), std::string::npos) << "expected a RuntimeError naming the file";
+  EXPECT_EQ(file_bytes(target), good);
+  EXPECT_EQ(folder_listing(folder), std::vector<std::string>{"render.exr"});
+}
+
+TEST(ImageIo, FailedRenameRemovesTheTemporaryFile) {
+  const auto folder = test::scratch_dir();
+  fs::create_directories(folder / "taken.png" / "inside");  // a non-empty folder cannot be replaced
+  EXPECT_THROW(write_image(folder / "taken.png", grey_image(2, 2, 0.5f), {}), RuntimeError);
+  EXPECT_EQ(folder_listing(folder), std::vector<std::string>{"taken.png"});
+  EXPECT_TRUE(fs::is_directory(folder / "taken.png" / "inside"));
+}
+
+TEST(ImageIo, ReadingAMissingFileIsAnInputErrorNamingIt) {
+  const auto file = test::scratch_dir() / "absent.exr";
+  const std::string message = error_message_of<InputError>([&] { read_image(file); });
+  EXPECT_NE(message.find(file.string()), std::string::npos) << message;
+}
+
+TEST(ImageIo, ReadingGarbageIsAnInputErrorNamingIt) {
+  const auto file = test::write_file("garbage.png", "this is not a PNG file at all");
+  const std::string message = error_message_of<InputError>([&] { read_image(file); });
+  EXPECT_NE(message.find(file.string()), std::string::npos) << message;
+}
+
+TEST(ImageIo, ReadingATruncatedExrIsAnInputError) {
+  const auto folder = test::scratch_dir();
+  write_image(folder / "whole.exr", varied_image(64, 64), {});
+  const std::string bytes = file_bytes(folder / "whole.exr");
+  std::ofstream(folder / "cut.exr", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  EXPECT_THROW(read_image(folder / "cut.exr"), InputError);
+}
+
+}  // namespace
+}  // namespace rtpro
