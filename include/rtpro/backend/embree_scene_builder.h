@@ -1,0 +1,37 @@
+#pragma once
+// Turns a RenderScene into Embree scenes: one per prototype group plus the top group, whose
+// instance geometries reference the prototypes. Every geometry is attached under its own index in
+// its group, so Embree's geomID and instID map straight back to the RenderScene.
+#include "rtpro/backend/backend.h"
+#include "rtpro/backend/embree_device.h"
+#include "rtpro/backend/embree_handles.h"
+#include "rtpro/scene/render_scene.h"
+
+#include <embree3/rtcore.h>
+
+#include <vector>
+
+namespace rtpro {
+
+struct EmbreeBuildSettings {
+  RTCSceneFlags flags = RTC_SCENE_FLAG_ROBUST;
+  RTCBuildQuality quality = RTC_BUILD_QUALITY_MEDIUM;
+};
+
+// From --embree-quality (low | medium | high) and --embree-robust. Throws InputError for an
+// unknown quality.
+EmbreeBuildSettings embree_build_settings(const BackendOptions& options);
+
+struct EmbreeScenes {
+  std::vector<EmbreeScene> prototypes;
+  EmbreeScene top;
+};
+
+// Builds and commits everything: prototypes first, then the instances referencing them, then the
+// top scene. Triangle and sphere arrays are shared, not copied, so `scene` must outlive the
+// result. Throws RuntimeError for geometry Embree would silently drop (non-finite or beyond its
+// coordinate range) and for every error Embree reports.
+EmbreeScenes build_embree_scenes(EmbreeDevice::Session& session, const RenderScene& scene,
+                                 const EmbreeBuildSettings& settings);
+
+}  // namespace rtpro

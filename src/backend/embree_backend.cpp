@@ -1,0 +1,132 @@
+// The Embree backend: the same answers as the native backend (bit-identical for top-level
+// spheres, within float tolerance for triangles and instances), from Embree 3's BVHs.
+#include "rtpro/backend/embree_backend.h"
+
+#include "rtpro/backend/embree_device.h"
+#include "rtpro/backend/embree_scene_builder.h"
+#include "rtpro/backend/embree_spheres.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+
+namespace rtpro {
+
+namespace {
+
+// Every field Embree reads, set explicitly: a zero mask would hit nothing (Debian's Embree is
+// built with ray masks).
+void to_embree(const Ray& ray, float tfar, unsigned id, RTCRay& r) {
+  r.org_x = ray.org.x;
+  r.org_y = ray.org.y;
+  r.org_z = ray.org.z;
+  r.tnear = ray.tnear;
+  r.dir_x = ray.dir.x;
+  r.dir_y = ray.dir.y;
+  r.dir_z = ray.dir.z;
+  r.time = 0.0f;
+  r.tfar = tfar;
+  r.mask = 0xFFFFFFFFu;
+  r.id = id;
+  r.flags = 0;
+}
+
+// The invalid ids tell a miss apart after the query.
+void to_embree(const Ray& ray, unsigned id, RTCRayHit& out) {
+  to_embree(ray, ray.tfar, id, out.ray);
+  out.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  out.hit.primID = RTC_INVALID_GEOMETRY_ID;
+  out.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+}
+
+bool from_embree(const RTCRayHit& in, Hit& hit) {
+  if (in.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+  hit.t = in.ray.tfar;
+  hit.u = in.hit.u;
+  hit.v = in.hit.v;
+  hit.geom_id = in.hit.geomID;
+  hit.prim_id = in.hit.primID;
+  hit.inst_id = in.hit.instID[0];
+  return true;
+}
+
+Hit no_sphere_yet(const Ray& ray) {
+  Hit closest;
+  closest.t = ray.tfar;
+  return closest;
+}
+
+class EmbreeBackend final : public Backend {
+ public:
+  EmbreeBackend(const RenderScene& scene, const BackendOptions& options)
+      : device_(EmbreeDevice::get(options.threads)) {
+    const EmbreeBuildSettings settings = embree_build_settings(options);
+    EmbreeDevice::Session session(*device_, options.max_memory_bytes);
+    const auto start = std::chrono::steady_clock::now();
+    scenes_ = build_embree_scenes(session, scene, settings);
+    stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats_.acceleration_bytes = static_cast<std::size_t>(std::max<std::int64_t>(0, session.allocated_bytes()));
+  }
+
+  // Releasing frees Embree memory; inside a session so another thread's build does not count it.
+  ~EmbreeBackend() override {
+    EmbreeDevice::Session session(*device_, 0);
+    scenes_ = {};
+  }
+
+  std::string_view name() const override { return "embree"; }
+
+  bool intersect(const Ray& ray, Hit& hit) const override {
+    if (!accept(ray)) return false;
+    Hit closest_sphere = no_sphere_yet(ray);
+    EmbreeIntersectContext context;
+    rtcInitIntersectContext(&context.base);
+    context.closest_spheres = &closest_sphere;
+    alignas(16) RTCRayHit query;
+    to_embree(ray, 0, query);
+    rtcIntersect1(scenes_.top.get(), &context.base, &query);
+    return from_embree(query, hit);
+  }
+
+  // Embree's triangles accept t == tfar; asking for (tnear, previous float below tfar] instead
+  // gives exactly the open interval (tnear, tfar) the interface promises, for every geometry.
+  bool occluded(const Ray& ray) const override {
+    if (!accept(ray)) return false;
+    const float tfar = std::nextafter(ray.tfar, 0.0f);
+    if (!(tfar > ray.tnear)) return false;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    alignas(16) RTCRay query;
+    to_embree(ray, tfar, 0, query);
+    rtcOccluded1(scenes_.top.get(), &context, &query);
+    return query.tfar < 0.0f;
+  }
+
+  BackendStats stats() const override {
+    BackendStats s = stats_;
+    s.rejected_rays = rejected_rays_.load(std::memory_order_relaxed);
+    return s;
+  }
+
+ private:
+  // Debian's Embree asserts (aborting the process) on NaN, huge or negative-tnear rays.
+  bool accept(const Ray& ray) const {
+    if (is_traceable(ray)) return true;
+    rejected_rays_.fetch_add(1, std::memory_order_relaxed);
+    return false;
+  }
+
+  std::shared_ptr<EmbreeDevice> device_;
+  EmbreeScenes scenes_;
+  BackendStats stats_;
+  mutable std::atomic<std::uint64_t> rejected_rays_{0};
+};
+
+}  // namespace
+
+std::unique_ptr<Backend> make_embree_backend(const RenderScene& scene, const BackendOptions& options) {
+  return std::make_unique<EmbreeBackend>(scene, options);
+}
+
+}  // namespace rtpro

@@ -1,0 +1,174 @@
+#include "rtpro/backend/embree_scene_builder.h"
+
+#include "rtpro/backend/embree_spheres.h"
+#include "rtpro/core/error.h"
+
+#include <cmath>
+#include <string>
+
+namespace rtpro {
+
+namespace {
+
+// Embree's commit silently drops primitives with coordinates beyond about 1.8e18 (or NaN/inf);
+// rtpro refuses them instead, with the same margin is_traceable() keeps for rays.
+constexpr float kMaxCoordinate = 1e16f;
+
+bool in_embree_range(const Vec3& p) {
+  return is_finite(p) && std::fabs(p.x) < kMaxCoordinate && std::fabs(p.y) < kMaxCoordinate &&
+         std::fabs(p.z) < kMaxCoordinate;
+}
+
+bool in_embree_range(const BBox& box) { return box.empty() || (in_embree_range(box.lower) && in_embree_range(box.upper)); }
+
+std::string group_name(int group) {
+  return group < 0 ? std::string("the top group") : "prototype group " + std::to_string(group);
+}
+
+[[noreturn]] void refuse(int group, std::uint32_t geometry, const std::string& problem) {
+  throw RuntimeError("cannot build the Embree scene: geometry " + std::to_string(geometry) + " of " +
+                     group_name(group) + " " + problem);
+}
+
+void validate_spheres(const SphereSet& set, int group, std::uint32_t geometry) {
+  for (std::uint32_t i = 0; i < set.spheres.size(); ++i) {
+    const Sphere& s = set.spheres[i];
+    if (!(std::isfinite(s.radius) && s.radius >= 0.0f) || !in_embree_range(set.sphere_bounds(i)))
+      refuse(group, geometry, "has sphere " + std::to_string(i) + " outside Embree's coordinate range");
+  }
+}
+
+void validate_mesh(const TriangleMesh& mesh, int group, std::uint32_t geometry) {
+  for (const PaddedVertex& v : mesh.vertices) {
+    if (!in_embree_range(v.position())) refuse(group, geometry, "has a vertex outside Embree's coordinate range");
+  }
+  const std::size_t vertex_count = mesh.vertices.size();
+  for (const TriangleIndices& t : mesh.triangles) {
+    if (t.v0 >= vertex_count || t.v1 >= vertex_count || t.v2 >= vertex_count)
+      refuse(group, geometry, "has a triangle index past its " + std::to_string(vertex_count) + " vertices");
+  }
+}
+
+void validate_instance(const Instance& instance, const RenderScene& scene, std::uint32_t geometry) {
+  if (instance.prototype >= scene.prototypes.size()) refuse(-1, geometry, "instances a missing prototype");
+  const BBox world = instance.object_to_world.apply(scene.prototypes[instance.prototype].bounds(scene.prototypes));
+  if (!instance.object_to_world.is_finite() || !in_embree_range(world))
+    refuse(-1, geometry, "is placed outside Embree's coordinate range");
+}
+
+void validate_group(const Group& group, int group_index, const RenderScene& scene) {
+  for (std::uint32_t g = 0; g < group.geometries.size(); ++g) {
+    const Geometry& geometry = group.geometries[g];
+    switch (kind_of(geometry)) {
+      case GeometryKind::kSpheres: validate_spheres(std::get<SphereSet>(geometry), group_index, g); break;
+      case GeometryKind::kTriangles: validate_mesh(std::get<TriangleMesh>(geometry), group_index, g); break;
+      case GeometryKind::kInstance:
+        if (group_index >= 0) refuse(group_index, g, "is an instance inside a prototype (one level only)");
+        validate_instance(std::get<Instance>(geometry), scene, g);
+        break;
+    }
+  }
+}
+
+// Shares the mesh arrays with Embree: 16-byte vertex stride (x, y, z, pad) keeps Embree's rule that
+// vertex buffers are readable 16 bytes past the last vertex.
+EmbreeGeometry new_triangle_geometry(RTCDevice device, const TriangleMesh& mesh, RTCBuildQuality quality) {
+  EmbreeGeometry geometry(rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE));
+  if (!geometry) return geometry;
+  RTCGeometry g = geometry.get();
+  rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh.vertices.data(), 0,
+                             sizeof(PaddedVertex), mesh.vertices.size());
+  rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.triangles.data(), 0,
+                             sizeof(TriangleIndices), mesh.triangles.size());
+  rtcSetGeometryBuildQuality(g, quality);
+  rtcCommitGeometry(g);
+  return geometry;
+}
+
+EmbreeGeometry new_instance_geometry(RTCDevice device, const Instance& instance, RTCScene prototype) {
+  static_assert(sizeof(instance.object_to_world.m) == 12 * sizeof(float));
+  EmbreeGeometry geometry(rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE));
+  if (!geometry) return geometry;
+  RTCGeometry g = geometry.get();
+  rtcSetGeometryInstancedScene(g, prototype);
+  // Affine::m is row-major 3×4 (linear part, then translation, per row): Embree's FLOAT3X4_ROW_MAJOR.
+  rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, instance.object_to_world.m.data()->data());
+  rtcCommitGeometry(g);
+  return geometry;
+}
+
+bool is_empty(const Geometry& geometry) {
+  switch (kind_of(geometry)) {
+    case GeometryKind::kSpheres: return std::get<SphereSet>(geometry).spheres.empty();
+    case GeometryKind::kTriangles: return std::get<TriangleMesh>(geometry).triangles.empty();
+    case GeometryKind::kInstance: return false;
+  }
+  return false;
+}
+
+EmbreeScene build_group(EmbreeDevice::Session& session, const Group& group, int group_index,
+                        const std::vector<EmbreeScene>& prototypes, const EmbreeBuildSettings& settings) {
+  RTCDevice device = session.device();
+  const std::string where = group_name(group_index);
+  EmbreeScene scene(rtcNewScene(device));
+  session.check("creation of the scene for " + where);
+  rtcSetSceneFlags(scene.get(), settings.flags);
+  rtcSetSceneBuildQuality(scene.get(), settings.quality);
+
+  for (std::uint32_t g = 0; g < group.geometries.size(); ++g) {
+    const Geometry& geometry = group.geometries[g];
+    if (is_empty(geometry)) continue;  // nothing to hit; ids need not be contiguous
+    EmbreeGeometry embree_geometry;
+    switch (kind_of(geometry)) {
+      case GeometryKind::kSpheres:
+        embree_geometry = new_embree_sphere_geometry(device, std::get<SphereSet>(geometry), settings.quality);
+        break;
+      case GeometryKind::kTriangles:
+        embree_geometry = new_triangle_geometry(device, std::get<TriangleMesh>(geometry), settings.quality);
+        break;
+      case GeometryKind::kInstance: {
+        const Instance& instance = std::get<Instance>(geometry);
+        embree_geometry = new_instance_geometry(device, instance, prototypes[instance.prototype].get());
+        break;
+      }
+    }
+    session.check("creation of geometry " + std::to_string(g) + " of " + where);
+    rtcAttachGeometryByID(scene.get(), embree_geometry.get(), g);
+    session.check("attaching geometry " + std::to_string(g) + " of " + where);
+  }
+  rtcCommitScene(scene.get());
+  session.check("the BVH build of " + where);
+  return scene;
+}
+
+}  // namespace
+
+EmbreeBuildSettings embree_build_settings(const BackendOptions& options) {
+  EmbreeBuildSettings settings;
+  settings.flags = options.embree_robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE;
+  if (options.embree_quality == "low") {
+    settings.quality = RTC_BUILD_QUALITY_LOW;
+  } else if (options.embree_quality == "medium") {
+    settings.quality = RTC_BUILD_QUALITY_MEDIUM;
+  } else if (options.embree_quality == "high") {
+    settings.quality = RTC_BUILD_QUALITY_HIGH;
+  } else {
+    throw InputError("unknown Embree build quality '" + options.embree_quality + "': expected low, medium or high");
+  }
+  return settings;
+}
+
+EmbreeScenes build_embree_scenes(EmbreeDevice::Session& session, const RenderScene& scene,
+                                 const EmbreeBuildSettings& settings) {
+  for (std::size_t p = 0; p < scene.prototypes.size(); ++p) validate_group(scene.prototypes[p], static_cast<int>(p), scene);
+  validate_group(scene.top, -1, scene);
+
+  EmbreeScenes scenes;
+  scenes.prototypes.reserve(scene.prototypes.size());
+  for (std::size_t p = 0; p < scene.prototypes.size(); ++p)
+    scenes.prototypes.push_back(build_group(session, scene.prototypes[p], static_cast<int>(p), {}, settings));
+  scenes.top = build_group(session, scene.top, -1, scenes.prototypes, settings);
+  return scenes;
+}
+
+}  // namespace rtpro

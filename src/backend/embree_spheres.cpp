@@ -1,0 +1,111 @@
+#include "rtpro/backend/embree_spheres.h"
+
+#include "rtpro/geometry/sphere_intersect.h"
+
+#include <cmath>
+#include <limits>
+
+namespace rtpro {
+
+namespace {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// One ulp outwards: centre ± radius is rounded to nearest, and a box even slightly too small
+// would let Embree cull grazing hits that intersect_sphere finds.
+void bound_sphere(const RTCBoundsFunctionArguments* args) {
+  const BBox box = static_cast<const SphereSet*>(args->geometryUserPtr)->sphere_bounds(args->primID);
+  RTCBounds& out = *args->bounds_o;
+  out.lower_x = std::nextafter(box.lower.x, -kInfinity);
+  out.lower_y = std::nextafter(box.lower.y, -kInfinity);
+  out.lower_z = std::nextafter(box.lower.z, -kInfinity);
+  out.upper_x = std::nextafter(box.upper.x, kInfinity);
+  out.upper_y = std::nextafter(box.upper.y, kInfinity);
+  out.upper_z = std::nextafter(box.upper.z, kInfinity);
+}
+
+Vec3 ray_origin(RTCRayN* rays, unsigned n, unsigned i) {
+  return {RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)};
+}
+
+Vec3 ray_direction(RTCRayN* rays, unsigned n, unsigned i) {
+  return {RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)};
+}
+
+// Embree calls this with the ray in the sphere's own space (already transformed when instanced)
+// and tfar = the closest hit so far; the hit part is undefined and is never read. A distance
+// equal to tfar wins only over an equal-distance sphere with a higher (inst, geom, prim) key —
+// which the context remembers — never over a triangle that Embree accepted at that distance.
+void intersect_spheres(const RTCIntersectFunctionNArguments* args) {
+  const Sphere& sphere = static_cast<const SphereSet*>(args->geometryUserPtr)->spheres[args->primID];
+  Hit* const closest_spheres = reinterpret_cast<const EmbreeIntersectContext*>(args->context)->closest_spheres;
+  const std::uint32_t inst = args->context->instID[0];
+  const unsigned n = args->N;
+  RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, n);
+  RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, n);
+
+  for (unsigned i = 0; i < n; ++i) {
+    if (args->valid[i] != -1) continue;
+    const Vec3 org = ray_origin(rays, n, i);
+    const Vec3 dir = ray_direction(rays, n, i);
+    float& tfar = RTCRayN_tfar(rays, n, i);
+    float t;
+    if (!intersect_sphere(sphere.center, sphere.radius, org, dir, RTCRayN_tnear(rays, n, i), tfar, t)) continue;
+
+    Hit& closest = closest_spheres[RTCRayN_id(rays, n, i)];
+    const bool wins_tie = t == closest.t && is_closer(t, inst, args->geomID, args->primID, closest, closest.t);
+    if (!(t < tfar || wins_tie)) continue;
+
+    closest.t = t;
+    closest.inst_id = inst;
+    closest.geom_id = args->geomID;
+    closest.prim_id = args->primID;
+
+    tfar = t;
+    const Vec3 normal = org + dir * t - sphere.center;
+    RTCHitN_Ng_x(hits, n, i) = normal.x;
+    RTCHitN_Ng_y(hits, n, i) = normal.y;
+    RTCHitN_Ng_z(hits, n, i) = normal.z;
+    RTCHitN_u(hits, n, i) = 0.0f;
+    RTCHitN_v(hits, n, i) = 0.0f;
+    RTCHitN_primID(hits, n, i) = args->primID;
+    RTCHitN_geomID(hits, n, i) = args->geomID;
+    RTCHitN_instID(hits, n, i, 0) = inst;
+  }
+}
+
+// Occlusion queries arrive with tfar already lowered by one ulp (see the backend), so the closed
+// interval of intersect_sphere here is exactly the open (tnear, tfar) of Backend::occluded.
+void occlude_spheres(const RTCOccludedFunctionNArguments* args) {
+  const Sphere& sphere = static_cast<const SphereSet*>(args->geometryUserPtr)->spheres[args->primID];
+  const unsigned n = args->N;
+  RTCRayN* rays = args->ray;
+  for (unsigned i = 0; i < n; ++i) {
+    if (args->valid[i] != -1) continue;
+    float& tfar = RTCRayN_tfar(rays, n, i);
+    float t;
+    if (intersect_sphere(sphere.center, sphere.radius, ray_origin(rays, n, i), ray_direction(rays, n, i),
+                         RTCRayN_tnear(rays, n, i), tfar, t)) {
+      tfar = -kInfinity;
+    }
+  }
+}
+
+}  // namespace
+
+EmbreeGeometry new_embree_sphere_geometry(RTCDevice device, const SphereSet& spheres, RTCBuildQuality quality) {
+  EmbreeGeometry geometry(rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER));
+  if (!geometry) return geometry;
+  RTCGeometry g = geometry.get();
+  rtcSetGeometryUserPrimitiveCount(g, static_cast<unsigned>(spheres.spheres.size()));
+  // Embree 3.13.5 ignores the bounds function's own user pointer and passes the geometry's.
+  rtcSetGeometryUserData(g, const_cast<SphereSet*>(&spheres));
+  rtcSetGeometryBoundsFunction(g, &bound_sphere, nullptr);
+  rtcSetGeometryIntersectFunction(g, &intersect_spheres);
+  rtcSetGeometryOccludedFunction(g, &occlude_spheres);
+  rtcSetGeometryBuildQuality(g, quality);
+  rtcCommitGeometry(g);
+  return geometry;
+}
+
+}  // namespace rtpro
