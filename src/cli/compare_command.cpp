@@ -10,7 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -35,6 +37,23 @@ std::string joined(const std::vector<std::string>& names) {
   return text;
 }
 
+// The float's shortest decimal form, so that --fail 1e-6 is reported as 1e-06, not 9.99999997e-07.
+double as_decimal(float value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return std::strtod(std::string(text, end).c_str(), nullptr);
+}
+
+// CLI::NonNegativeNumber's message prints the largest double in full.
+const CLI::Validator kNonNegative(
+    [](const std::string& text) {
+      char* end = nullptr;
+      const double value = std::strtod(text.c_str(), &end);
+      return (end != text.c_str() && *end == '\0' && value >= 0.0) ? std::string()
+                                                                    : "must be a number >= 0, got " + text;
+    },
+    "NONNEGATIVE");
+
 std::string percent_of_pixels(std::size_t pixels, const ImageComparison& comparison) {
   std::ostringstream text;
   text << pixels << " pixels (" << (comparison.pixel_count ? 100.0 * double(pixels) / double(comparison.pixel_count) : 0.0)
@@ -49,8 +68,7 @@ void print_report(const CompareCommandOptions& o, const Image& reference, const 
   if (c.incompatibility.empty()) {
     std::cout << "mean error  " << c.mean_error << "\n"
               << "RMS error   " << c.rms_error << "\n"
-              << "PSNR        " << (std::isinf(c.psnr) ? std::string("inf") : std::to_string(c.psnr) + " dB")
-              << "\n"
+              << "PSNR        " << c.psnr << (std::isinf(c.psnr) ? "" : " dB") << "\n"
               << "max error   " << c.max_error << " at x=" << c.max_x << " y=" << c.max_y << " channel "
               << c.max_channel << "\n"
               << "warn        " << percent_of_pixels(c.warn_pixels, c) << " over " << o.thresholds.warn << "\n"
@@ -72,8 +90,8 @@ void print_json(const CompareCommandOptions& o, const Image& reference, const Im
       {"passed", c.passed},
       {"verdict", c.verdict},
       {"thresholds",
-       {{"fail", o.thresholds.fail},
-        {"warn", o.thresholds.warn},
+       {{"fail", as_decimal(o.thresholds.fail)},
+        {"warn", as_decimal(o.thresholds.warn)},
         {"fail_percent", o.thresholds.fail_percent},
         {"max_mean_error", o.thresholds.max_mean_error ? nlohmann::json(*o.thresholds.max_mean_error) : nullptr}}},
   };
@@ -129,16 +147,16 @@ void add_compare_command(CLI::App& app, Action& action) {
   cmd->add_option("reference", options->reference, "Reference image")->required();
   cmd->add_option("test", options->test, "Image to check against the reference")->required();
   cmd->add_option("--fail", thresholds.fail, "A pixel fails when a channel differs by more than this")
-      ->check(CLI::NonNegativeNumber)
+      ->check(kNonNegative)
       ->capture_default_str();
   cmd->add_option("--warn", thresholds.warn, "A pixel warns when a channel differs by more than this")
-      ->check(CLI::NonNegativeNumber)
+      ->check(kNonNegative)
       ->capture_default_str();
   cmd->add_option("--fail-percent", thresholds.fail_percent, "Percent of pixels allowed to fail")
       ->check(CLI::Range(0.0, 100.0))
       ->capture_default_str();
   cmd->add_option("--max-mean-error", thresholds.max_mean_error, "Also fail when the mean error is higher")
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegative);
   cmd->add_option("--diff", options->diff,
                   "Write a heat map of the differences (white: at or over --fail; magenta: NaN in one image)");
   cmd->add_flag("--json", options->json, "Print the report as JSON");
