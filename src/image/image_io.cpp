@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cctype>
 #include <ctime>
+#include <memory>
 #include <variant>
 
 namespace rtpro {
@@ -48,10 +49,9 @@ std::string oiio_errors(std::string object_error) {
   return global_error.empty() ? object_error : object_error + "; " + global_error;
 }
 
-// Also the check that OpenImageIO has a writer for the extension, done before anything touches
-// the disk.
-bool writer_supports_any_channel_count(const std::filesystem::path& file) {
-  const auto output = OIIO::ImageOutput::create(file.string());
+// Checked before anything touches the disk, so an unknown extension creates no file.
+std::unique_ptr<OIIO::ImageOutput> writer_for(const std::filesystem::path& file) {
+  auto output = OIIO::ImageOutput::create(file.string());
   if (!output) {
     const std::string extension = file.extension().string();
     throw InputError(SourceLocation{file.string()},
@@ -59,7 +59,7 @@ bool writer_supports_any_channel_count(const std::filesystem::path& file) {
                                         : "unsupported image format \"" + extension + "\"") +
                          " (" + oiio_errors("") + ")");
   }
-  return output->supports("nchannels");
+  return output;
 }
 
 void require_writable_image(const std::filesystem::path& file, const Image& image) {
@@ -161,7 +161,7 @@ bool writes_scene_linear(const std::filesystem::path& file) {
 }
 
 void write_image(const std::filesystem::path& file, const Image& image, const ImageWriteOptions& options) {
-  const bool any_channel_count = writer_supports_any_channel_count(file);
+  const bool any_channel_count = writer_for(file)->supports("nchannels");
   require_writable_image(file, image);
   OIIO::ImageSpec spec;
   const PixelEncoding encoding = encoding_for(file);

@@ -82,6 +82,18 @@ TEST(ImageIo, ExrKeepsScenelinearFloatsExactly) {
   EXPECT_EQ(spec_of(file).format, OIIO::TypeDesc::FLOAT);
 }
 
+TEST(ImageIo, ExrKeepsNanAndInfinity) {
+  const auto file = test::scratch_dir() / "broken_pixels.exr";
+  Image image = grey_image(2, 1, 0.5f);
+  image.at(0, 0, 0) = NAN;
+  image.at(1, 0, 2) = -INFINITY;
+  write_image(file, image, {});
+  const Image back = read_image(file);
+  EXPECT_TRUE(std::isnan(back.at(0, 0, 0)));
+  EXPECT_EQ(back.at(1, 0, 2), -INFINITY);
+  EXPECT_EQ(back.at(1, 0, 1), 0.5f);
+}
+
 TEST(ImageIo, ExrKeepsEveryChannelByName) {
   const auto file = test::scratch_dir() / "aovs.exr";
   const std::vector<std::string> names = {"R", "G", "B", "A", "albedo.R", "albedo.G", "albedo.B",
