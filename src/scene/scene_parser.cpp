@@ -45,7 +45,8 @@ void read_version(const YamlNode& root) {
 int read_image_side(const YamlNode& node, const std::string& name) {
   const std::int64_t side = read_integer(node, name);
   if (side < 1 || side > kMaxImageSide)
-    fail_at(node, name + ": each side must be from 1 to " + std::to_string(kMaxImageSide) + " pixels, got " + node.scalar);
+    fail_at(node,
+            name + ": each side must be from 1 to " + std::to_string(kMaxImageSide) + " pixels, got " + node.scalar);
   return static_cast<int>(side);
 }
 
@@ -55,8 +56,8 @@ void read_resolution(const YamlNode& node, CameraDesc& camera) {
   camera.height = read_image_side(*items[1], "camera.resolution");
   const std::int64_t pixels = std::int64_t{camera.width} * camera.height;
   if (pixels > kMaxImagePixels) {
-    fail_at(node, "camera.resolution: " + std::to_string(camera.width) + "x" + std::to_string(camera.height) +
-                      " is " + std::to_string(pixels) + " pixels; the limit is " + std::to_string(kMaxImagePixels) +
+    fail_at(node, "camera.resolution: " + std::to_string(camera.width) + "x" + std::to_string(camera.height) + " is " +
+                      std::to_string(pixels) + " pixels; the limit is " + std::to_string(kMaxImagePixels) +
                       " (2^28, e.g. 16384x16384)");
   }
 }
@@ -118,7 +119,8 @@ RenderSettings read_render(const YamlNode* node) {
     settings.max_depth = static_cast<int>(value);
   }
   if (const YamlNode* seed = render.optional("seed")) settings.seed = read_unsigned(*seed, "render.seed");
-  if (const YamlNode* ambient = render.optional("ambient")) settings.ambient = read_non_negative(*ambient, "render.ambient");
+  if (const YamlNode* ambient = render.optional("ambient"))
+    settings.ambient = read_non_negative(*ambient, "render.ambient");
   if (const YamlNode* background = render.optional("background"))
     settings.background = read_color(*background, "render.background");
   return settings;
@@ -144,7 +146,8 @@ MaterialDesc read_material(const std::string& name, const YamlNode& node) {
 std::vector<MaterialDesc> read_materials(const YamlNode* node) {
   std::vector<MaterialDesc> materials{MaterialDesc{.name = "default"}};
   if (absent(node)) return materials;
-  if (!node->is_mapping()) fail_at(*node, "materials: expected a mapping of name: {color: ...}, got " + node->describe());
+  if (!node->is_mapping())
+    fail_at(*node, "materials: expected a mapping of name: {color: ...}, got " + node->describe());
   for (const YamlEntry& entry : node->entries) {
     MaterialDesc material = read_material(entry.key, *entry.value);
     if (entry.key == "default") {
@@ -189,16 +192,18 @@ std::vector<LightDesc> read_lights(const YamlNode* node) {
 
 void check_scene_root(const YamlNode& root) {
   if (root.is_null()) {
-    fail_at(root, "the scene is empty; it needs at least 'rtpro: " + std::to_string(kSceneFormatVersion) +
-                      "' and a camera");
+    fail_at(root,
+            "the scene is empty; it needs at least 'rtpro: " + std::to_string(kSceneFormatVersion) + "' and a camera");
   }
-  if (!root.is_mapping()) fail_at(root, "expected the scene to be a mapping (rtpro: 1, camera: ...), got " + root.describe());
+  if (!root.is_mapping())
+    fail_at(root, "expected the scene to be a mapping (rtpro: 1, camera: ...), got " + root.describe());
 }
 
 SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& file) {
   check_scene_root(root);
   read_version(root);
-  const MappingReader scene(root, "the scene", {"rtpro", "camera", "render", "materials", "lights", "objects", "world"});
+  const MappingReader scene(root, "the scene",
+                            {"rtpro", "camera", "render", "materials", "lights", "objects", "world"});
 
   SceneDescription desc;
   desc.file = file;
@@ -215,8 +220,7 @@ std::string read_scene_file_text(const std::filesystem::path& file) {
   std::error_code error;
   const std::filesystem::file_status status = std::filesystem::status(file, error);
   if (!std::filesystem::exists(status)) throw InputError(where, "cannot read the scene file: it does not exist");
-  if (std::filesystem::is_directory(status))
-    throw InputError(where, "cannot read the scene file: it is a directory");
+  if (std::filesystem::is_directory(status)) throw InputError(where, "cannot read the scene file: it is a directory");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(where, std::string("cannot read the scene file: ") + std::strerror(errno));
   const std::uintmax_t size = std::filesystem::file_size(file, error);

@@ -12,9 +12,7 @@
 
 namespace rtpro {
 
-SourceLocation YamlPosition::location() const {
-  return SourceLocation{source ? *source : std::string(), line, column};
-}
+SourceLocation YamlPosition::location() const { return SourceLocation{source ? *source : std::string(), line, column}; }
 
 const YamlEntry* YamlNode::find(std::string_view key) const {
   for (const YamlEntry& entry : entries)
@@ -24,14 +22,17 @@ const YamlEntry* YamlNode::find(std::string_view key) const {
 
 std::string YamlNode::describe() const {
   switch (kind) {
-    case Kind::null: return "an empty value";
+    case Kind::null:
+      return "an empty value";
     case Kind::scalar: {
       constexpr std::size_t kShown = 40;
       const std::string shown = scalar.size() > kShown ? scalar.substr(0, kShown) + "..." : scalar;
       return (plain ? "'" : "the quoted string '") + shown + "'";
     }
-    case Kind::sequence: return "a list of " + std::to_string(items.size()) + (items.size() == 1 ? " item" : " items");
-    case Kind::mapping: return "a mapping";
+    case Kind::sequence:
+      return "a list of " + std::to_string(items.size()) + (items.size() == 1 ? " item" : " items");
+    case Kind::mapping:
+      return "a mapping";
   }
   return "a value";
 }
@@ -42,8 +43,7 @@ namespace {
 // 1-based, or 0 when `known_positions` is false (override values).
 class TreeBuilder : public YAML::EventHandler {
  public:
-  TreeBuilder(const std::string* source, bool known_positions)
-      : source_(source), known_positions_(known_positions) {}
+  TreeBuilder(const std::string* source, bool known_positions) : source_(source), known_positions_(known_positions) {}
 
   YamlNodePtr root() const { return root_ ? root_ : null_node(position(YAML::Mark())); }
 
@@ -52,9 +52,7 @@ class TreeBuilder : public YAML::EventHandler {
   }
   void OnDocumentEnd() override {}
 
-  void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override {
-    complete(null_node(position(mark)), anchor);
-  }
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override { complete(null_node(position(mark)), anchor); }
 
   void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
     const auto found = anchors_.find(anchor);

@@ -45,7 +45,8 @@ std::string_view without_plus(std::string_view text) {
 }
 
 const YamlNode& scalar_or_fail(const YamlNode& node, const std::string& name, std::string_view expected) {
-  if (!node.is_scalar() || !node.plain) fail_at(node, name + ": expected " + std::string(expected) + ", got " + node.describe());
+  if (!node.is_scalar() || !node.plain)
+    fail_at(node, name + ": expected " + std::string(expected) + ", got " + node.describe());
   return node;
 }
 

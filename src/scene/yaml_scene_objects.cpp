@@ -91,10 +91,9 @@ void check_instance_graph(const std::vector<std::string>& names, const std::vect
       if (height[node] > kMaxInstanceNesting) {
         std::vector<std::uint32_t> chain{node};
         while (!links[chain.back()].empty()) {
-          const auto next = std::max_element(links[chain.back()].begin(), links[chain.back()].end(),
-                                             [&](const InstanceLink& a, const InstanceLink& b) {
-                                               return height[a.target] < height[b.target];
-                                             });
+          const auto next = std::max_element(
+              links[chain.back()].begin(), links[chain.back()].end(),
+              [&](const InstanceLink& a, const InstanceLink& b) { return height[a.target] < height[b.target]; });
           chain.push_back(next->target);
         }
         fail_at(deepest->at, "instances nest deeper than " + std::to_string(kMaxInstanceNesting) +
@@ -138,7 +137,8 @@ class ObjectsReader {
   }
 
  private:
-  void read_entries(const YamlNode* list, const std::string& what, ObjectDesc& object, std::vector<InstanceLink>& links) {
+  void read_entries(const YamlNode* list, const std::string& what, ObjectDesc& object,
+                    std::vector<InstanceLink>& links) {
     if (!list || list->is_null()) return;
     if (!list->is_sequence())
       fail_at(*list, what + ": expected a list of entries (sphere, mesh, instance), got " + list->describe());
@@ -167,7 +167,8 @@ class ObjectsReader {
       if (!(value > 0.0)) fail_at(*radius, sphere.field("radius") + " must be > 0, got " + radius->scalar);
       desc.radius = static_cast<float>(value);
     }
-    if (const YamlNode* material = sphere.optional("material")) desc.material = material_index(*material, sphere.field("material"));
+    if (const YamlNode* material = sphere.optional("material"))
+      desc.material = material_index(*material, sphere.field("material"));
     return desc;
   }
 
@@ -175,7 +176,8 @@ class ObjectsReader {
     const MappingReader mesh(node, "mesh", {"type", "file", "material"});
     MeshDesc desc;
     desc.file = resolve_mesh_file(mesh.required("file"), mesh.field("file"));
-    if (const YamlNode* material = mesh.optional("material")) desc.material = material_index(*material, mesh.field("material"));
+    if (const YamlNode* material = mesh.optional("material"))
+      desc.material = material_index(*material, mesh.field("material"));
     desc.where = node.at.location();
     return desc;
   }
@@ -219,7 +221,8 @@ class ObjectsReader {
     if (!std::filesystem::exists(status))
       fail_at(node, field + ": mesh file '" + written + "' not found (looked for '" + file.string() + "')");
     if (!std::filesystem::is_regular_file(status)) fail_at(node, field + ": '" + file.string() + "' is not a file");
-    if (!std::ifstream(file, std::ios::binary)) fail_at(node, field + ": cannot open mesh file '" + file.string() + "'");
+    if (!std::ifstream(file, std::ios::binary))
+      fail_at(node, field + ": cannot open mesh file '" + file.string() + "'");
     return file;
   }
 

@@ -18,8 +18,8 @@ Affine read_rotation(const YamlNode& node, const std::string& name) {
                    compose(Affine::rotate({0, 1, 0}, degrees.y), Affine::rotate({1, 0, 0}, degrees.x)));
   }
   if (!node.is_mapping()) {
-    fail_at(node, name + ": expected {axis: [x, y, z], angle: degrees} or Euler angles [x, y, z], got " +
-                      node.describe());
+    fail_at(node,
+            name + ": expected {axis: [x, y, z], angle: degrees} or Euler angles [x, y, z], got " + node.describe());
   }
   const MappingReader rotate(node, name, {"axis", "angle"});
   const YamlNode& axis_node = rotate.required("axis");
@@ -70,8 +70,8 @@ Affine read_step_list(const YamlNode& node, const std::string& name) {
   Affine transform;
   for (const YamlNodePtr& step : node.items) {
     if (!step->is_mapping() || step->entries.size() != 1) {
-      fail_at(*step, name + ": expected a step with one key (translate, rotate, scale or matrix), got " +
-                         step->describe());
+      fail_at(*step,
+              name + ": expected a step with one key (translate, rotate, scale or matrix), got " + step->describe());
     }
     const MappingReader reader(*step, name, kStepKeys);
     const YamlEntry& entry = step->entries.front();
@@ -89,7 +89,8 @@ Affine read_transform_mapping(const YamlNode& node, const std::string& name) {
   }
   Affine transform;
   for (const char* key : {"scale", "rotate", "translate"}) {
-    if (const YamlNode* value = reader.optional(key)) transform = compose(read_step(key, *value, reader.field(key)), transform);
+    if (const YamlNode* value = reader.optional(key))
+      transform = compose(read_step(key, *value, reader.field(key)), transform);
   }
   return transform;
 }

@@ -50,10 +50,10 @@ void check_error(const std::string& text, Position expected, const std::vector<s
     EXPECT_NE(error.message().find(fragment), std::string::npos) << "'" << fragment << "' not in: " << error.what();
 }
 
-#define EXPECT_SCENE_ERROR(text, position, ...)    \
-  do {                                             \
-    SCOPED_TRACE("expected error");                \
-    check_error(text, position, __VA_ARGS__);      \
+#define EXPECT_SCENE_ERROR(text, position, ...) \
+  do {                                          \
+    SCOPED_TRACE("expected error");             \
+    check_error(text, position, __VA_ARGS__);   \
   } while (false)
 
 std::string with_world(const std::string& world_lines) { return kHeader + "world:\n" + world_lines; }
@@ -175,10 +175,11 @@ TEST(SceneParser, EmptySectionsAndAnEmptyWorldAreAllowed) {
 }
 
 TEST(SceneParser, DefaultMaterialCanBeRedefinedAndStaysAtIndexZero) {
-  const SceneDescription scene = parse_scene_text(
-      kHeader + "materials:\n  blue: {color: [0, 0, 1]}\n  default: {color: [0.5, 0.5, 0.5]}\n"
-                "world:\n  - {type: sphere}\n",
-      "test.yaml");
+  const SceneDescription scene =
+      parse_scene_text(kHeader +
+                           "materials:\n  blue: {color: [0, 0, 1]}\n  default: {color: [0.5, 0.5, 0.5]}\n"
+                           "world:\n  - {type: sphere}\n",
+                       "test.yaml");
   ASSERT_EQ(scene.materials.size(), 2u);
   EXPECT_EQ(scene.materials[0].name, "default");
   EXPECT_EQ(scene.materials[0].color, Color(0.5f));
@@ -190,14 +191,15 @@ TEST(SceneParser, DefaultMaterialCanBeRedefinedAndStaysAtIndexZero) {
 
 Affine instance_transform(const std::string& transform) {
   const SceneDescription scene = parse_scene_text(
-      kHeader + "objects: {o: [{type: sphere}]}\nworld:\n  - {type: instance, object: o, transform: " + transform + "}\n",
+      kHeader + "objects: {o: [{type: sphere}]}\nworld:\n  - {type: instance, object: o, transform: " + transform +
+          "}\n",
       "test.yaml");
   return scene.world.instances.at(0).transform;
 }
 
 TEST(SceneParser, TransformMappingAppliesScaleThenRotateThenTranslate) {
-  const Affine expected = compose(Affine::translate({1, 2, 3}),
-                                  compose(Affine::rotate({0, 1, 0}, 90), Affine::scale({2, 2, 2})));
+  const Affine expected =
+      compose(Affine::translate({1, 2, 3}), compose(Affine::rotate({0, 1, 0}, 90), Affine::scale({2, 2, 2})));
   EXPECT_EQ(instance_transform("{translate: [1, 2, 3], rotate: {axis: [0, 1, 0], angle: 90}, scale: 2}"), expected);
   EXPECT_EQ(instance_transform("{scale: 2, translate: [1, 2, 3], rotate: {axis: [0, 1, 0], angle: 90}}"), expected);
 }
@@ -208,8 +210,8 @@ TEST(SceneParser, TransformListAppliesStepsInOrder) {
 }
 
 TEST(SceneParser, TransformEulerRotatesAboutXThenYThenZ) {
-  const Affine expected = compose(Affine::rotate({0, 0, 1}, 30),
-                                  compose(Affine::rotate({0, 1, 0}, 20), Affine::rotate({1, 0, 0}, 10)));
+  const Affine expected =
+      compose(Affine::rotate({0, 0, 1}, 30), compose(Affine::rotate({0, 1, 0}, 20), Affine::rotate({1, 0, 0}, 10)));
   EXPECT_EQ(instance_transform("{rotate: [10, 20, 30]}"), expected);
 }
 
@@ -220,8 +222,8 @@ TEST(SceneParser, TransformMatrixIsRowMajor) {
 }
 
 TEST(SceneParser, AliasesReuseAnchoredValues) {
-  const SceneDescription scene = parse_scene_text(
-      kHeader + "world:\n  - &ball {type: sphere, radius: 2}\n  - *ball\n", "test.yaml");
+  const SceneDescription scene =
+      parse_scene_text(kHeader + "world:\n  - &ball {type: sphere, radius: 2}\n  - *ball\n", "test.yaml");
   ASSERT_EQ(scene.world.spheres.size(), 2u);
   EXPECT_EQ(scene.world.spheres[1].radius, 2.0f);
 }
@@ -400,29 +402,37 @@ TEST(SceneParser, RejectsInstanceNestingDeeperThan16) {
 }
 
 TEST(SceneParser, RejectsBadTransforms) {
-  const std::string singular = with_world("  - {type: instance, object: o, transform: {matrix: [1, 0, 0, 0, 0, 1, 0, 0, 2, 2, 0, 0, 0, 0, 0, 1]}}\n") +
-                               "objects: {o: [{type: sphere}]}\n";
+  const std::string singular =
+      with_world(
+          "  - {type: instance, object: o, transform: {matrix: [1, 0, 0, 0, 0, 1, 0, 0, 2, 2, 0, 0, 0, 0, 0, 1]}}\n") +
+      "objects: {o: [{type: sphere}]}\n";
   EXPECT_SCENE_ERROR(singular, at(singular, 4, "{matrix"), {"instance.transform", "singular"});
-  const std::string row = with_world("  - {type: instance, object: o, transform: {matrix: [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 2, 1]}}\n") +
-                          "objects: {o: [{type: sphere}]}\n";
+  const std::string row =
+      with_world(
+          "  - {type: instance, object: o, transform: {matrix: [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 2, 1]}}\n") +
+      "objects: {o: [{type: sphere}]}\n";
   EXPECT_SCENE_ERROR(row, at(row, 4, "2, 1]"), {"instance.transform.matrix", "last row must be 0 0 0 1"});
   const std::string short_matrix = with_world("  - {type: instance, object: o, transform: {matrix: [1, 0, 0]}}\n") +
                                    "objects: {o: [{type: sphere}]}\n";
   EXPECT_SCENE_ERROR(short_matrix, at(short_matrix, 4, "[1, 0, 0]"), {"instance.transform.matrix", "16 numbers"});
-  const std::string mixed = with_world("  - {type: instance, object: o, transform: {translate: [1, 0, 0], matrix: []}}\n") +
-                            "objects: {o: [{type: sphere}]}\n";
+  const std::string mixed =
+      with_world("  - {type: instance, object: o, transform: {translate: [1, 0, 0], matrix: []}}\n") +
+      "objects: {o: [{type: sphere}]}\n";
   EXPECT_SCENE_ERROR(mixed, at(mixed, 4, "[]"), {"'matrix' cannot be combined"});
   const std::string zero_scale = with_world("  - {type: instance, object: o, transform: {scale: [1, 0, 1]}}\n") +
                                  "objects: {o: [{type: sphere}]}\n";
   EXPECT_SCENE_ERROR(zero_scale, at(zero_scale, 4, "[1, 0, 1]"), {"instance.transform.scale", "non-zero"});
-  const std::string zero_axis = with_world("  - {type: instance, object: o, transform: {rotate: {axis: [0, 0, 0], angle: 5}}}\n") +
-                                "objects: {o: [{type: sphere}]}\n";
+  const std::string zero_axis =
+      with_world("  - {type: instance, object: o, transform: {rotate: {axis: [0, 0, 0], angle: 5}}}\n") +
+      "objects: {o: [{type: sphere}]}\n";
   EXPECT_SCENE_ERROR(zero_axis, at(zero_axis, 4, "[0, 0, 0]"), {"instance.transform.rotate.axis", "must not be zero"});
-  const std::string bad_step = with_world("  - {type: instance, object: o, transform: [{translate: [1, 0, 0], scale: 2}]}\n") +
-                               "objects: {o: [{type: sphere}]}\n";
+  const std::string bad_step =
+      with_world("  - {type: instance, object: o, transform: [{translate: [1, 0, 0], scale: 2}]}\n") +
+      "objects: {o: [{type: sphere}]}\n";
   EXPECT_SCENE_ERROR(bad_step, at(bad_step, 4, "{translate"), {"instance.transform", "one key"});
-  const std::string overflow = with_world("  - {type: instance, object: o, transform: [{scale: 1e9}, {scale: 1e9}]}\n") +
-                               "objects: {o: [{type: sphere}]}\n";
+  const std::string overflow =
+      with_world("  - {type: instance, object: o, transform: [{scale: 1e9}, {scale: 1e9}]}\n") +
+      "objects: {o: [{type: sphere}]}\n";
   EXPECT_SCENE_ERROR(overflow, at(overflow, 4, "[{scale"), {"instance.transform", "beyond"});
 }
 
@@ -541,7 +551,8 @@ TEST(SceneParserOverrides, SetValuesBeforeValidation) {
 }
 
 TEST(SceneParserOverrides, CreateMissingSections) {
-  const SceneDescription scene = parse_scene_text(kHeader, "test.yaml", {"render.max_depth=2", "materials.red.color=[1,0,0]"});
+  const SceneDescription scene =
+      parse_scene_text(kHeader, "test.yaml", {"render.max_depth=2", "materials.red.color=[1,0,0]"});
   EXPECT_EQ(scene.render.max_depth, 2);
   ASSERT_EQ(scene.materials.size(), 2u);
   EXPECT_EQ(scene.materials[1].color, Color(1, 0, 0));

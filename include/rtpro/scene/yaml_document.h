@@ -41,8 +41,8 @@ struct YamlNode {
 
   Kind kind = Kind::null;
   YamlPosition at;
-  std::string scalar;     // scalar text
-  bool plain = true;      // an unquoted scalar: only plain scalars are numbers
+  std::string scalar;              // scalar text
+  bool plain = true;               // an unquoted scalar: only plain scalars are numbers
   std::vector<YamlNodePtr> items;  // sequence
   std::vector<YamlEntry> entries;  // mapping, in document order, keys unique
 
