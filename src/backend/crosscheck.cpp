@@ -1,0 +1,315 @@
+#include "rtpro/backend/crosscheck.h"
+
+#include "rtpro/core/fp_env.h"
+#include "rtpro/core/random.h"
+#include "rtpro/render/camera.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace rtpro {
+
+namespace {
+
+// Tolerances, relative to the magnitude of the coordinates involved (origin, hit point, distance
+// travelled): float rounding errors scale with those, not with t, which is tiny for an origin next
+// to a surface, and barycentrics, which swing widely on small or grazed triangles.
+constexpr double kPointTolerance = 1e-5;  // hit points of the same primitive
+constexpr double kEdgeZone = 1e-5;        // "at an edge": that close to a triangle's edge
+constexpr double kGrazing = 1e-5;         // |line distance − radius| of a tangential sphere hit
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// Occlusion is asked on up to three segments: the whole ray, and (when the reference hits) just
+// short of and just past the reference hit.
+constexpr int kOcclusionSegments = 3;
+
+struct TracedRay {
+  Ray ray;
+  bool reference_found = false, candidate_found = false;
+  Hit reference, candidate;
+  int segments = 0;
+  std::array<bool, kOcclusionSegments> reference_occluded{}, candidate_occluded{};
+};
+
+float unit_random(std::uint64_t seed, std::uint64_t ray, std::uint64_t dimension) {
+  return to_unit_float(hash_combine(hash_combine(seed, ray), dimension));
+}
+
+Ray camera_ray(const Camera& camera, const CameraDesc& desc, std::uint64_t seed, std::size_t i) {
+  return camera.generate(unit_random(seed, i, 0) * static_cast<float>(desc.width),
+                         unit_random(seed, i, 1) * static_cast<float>(desc.height));
+}
+
+// Origin uniform in the scene's bounds, direction uniform on the sphere.
+Ray random_ray(const BBox& bounds, std::uint64_t seed, std::size_t i) {
+  const Vec3 extent = bounds.extent();
+  Ray ray;
+  ray.org = bounds.lower + Vec3(extent.x * unit_random(seed, i, 0), extent.y * unit_random(seed, i, 1),
+                                extent.z * unit_random(seed, i, 2));
+  const double z = 1.0 - 2.0 * unit_random(seed, i, 3);
+  const double phi = 2.0 * std::numbers::pi * unit_random(seed, i, 4);
+  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+  ray.dir = {static_cast<float>(r * std::cos(phi)), static_cast<float>(r * std::sin(phi)), static_cast<float>(z)};
+  return ray;
+}
+
+void trace(const Backend& reference, const Backend& candidate, TracedRay& traced) {
+  const Ray& ray = traced.ray;
+  traced.reference_found = reference.intersect(ray, traced.reference);
+  traced.candidate_found = candidate.intersect(ray, traced.candidate);
+  std::array<float, kOcclusionSegments> ends{kInfinity};
+  traced.segments = 1;
+  if (traced.reference_found) {
+    ends[traced.segments++] = traced.reference.t * 0.999f;
+    ends[traced.segments++] = traced.reference.t * 1.001f;
+  }
+  for (int s = 0; s < traced.segments; ++s) {
+    Ray segment = ray;
+    segment.tfar = ends[s];
+    traced.reference_occluded[s] = reference.occluded(segment);
+    traced.candidate_occluded[s] = candidate.occluded(segment);
+  }
+}
+
+// The geometry a hit names, or null when its ids do not exist in the scene.
+const Geometry* geometry_of(const RenderScene& scene, const Hit& hit) {
+  const Group* group = &scene.top;
+  if (hit.inst_id != kInvalidId) {
+    if (hit.inst_id >= scene.top.geometries.size()) return nullptr;
+    const auto* instance = std::get_if<Instance>(&scene.top.geometries[hit.inst_id]);
+    if (!instance || instance->prototype >= scene.prototypes.size()) return nullptr;
+    group = &scene.prototypes[instance->prototype];
+  }
+  if (hit.geom_id >= group->geometries.size()) return nullptr;
+  const Geometry* geometry = &group->geometries[hit.geom_id];
+  return hit.prim_id < group->primitive_count(hit.geom_id) ? geometry : nullptr;
+}
+
+bool is_top_level_sphere(const RenderScene& scene, const Hit& hit) {
+  const Geometry* geometry = geometry_of(scene, hit);
+  return geometry && hit.inst_id == kInvalidId && kind_of(*geometry) == GeometryKind::kSpheres;
+}
+
+bool same_primitive(const Hit& a, const Hit& b) {
+  return a.inst_id == b.inst_id && a.geom_id == b.geom_id && a.prim_id == b.prim_id;
+}
+
+bool bit_identical(const Hit& a, const Hit& b) {
+  return same_primitive(a, b) && std::bit_cast<std::uint32_t>(a.t) == std::bit_cast<std::uint32_t>(b.t) &&
+         std::bit_cast<std::uint32_t>(a.u) == std::bit_cast<std::uint32_t>(b.u) &&
+         std::bit_cast<std::uint32_t>(a.v) == std::bit_cast<std::uint32_t>(b.v);
+}
+
+double magnitude(const Vec3& v) { return std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z); }
+
+double error_scale(const Ray& ray, float t) {
+  return std::max({std::fabs(double(t)) * magnitude(ray.dir), magnitude(ray.org), magnitude(ray.at(t)), 1e-30});
+}
+
+// How far apart the two hit points lie along the ray, relative to the error scale.
+double relative_t_error(const Ray& ray, float a, float b) {
+  const float far_t = std::max(std::fabs(a), std::fabs(b));
+  return std::fabs(double(a) - double(b)) * magnitude(ray.dir) / error_scale(ray, far_t);
+}
+
+struct WorldTriangle {
+  Vec3 p0, p1, p2;
+  Vec3 at(float u, float v) const { return p0 * (1.0f - u - v) + p1 * u + p2 * v; }
+};
+
+WorldTriangle world_triangle(const RenderScene& scene, const Hit& hit) {
+  const auto& mesh = std::get<TriangleMesh>(*geometry_of(scene, hit));
+  const TriangleIndices& tri = mesh.triangles[hit.prim_id];
+  WorldTriangle world{mesh.vertex(tri.v0), mesh.vertex(tri.v1), mesh.vertex(tri.v2)};
+  if (hit.inst_id != kInvalidId) {
+    const Affine& placement = std::get<Instance>(scene.top.geometries[hit.inst_id]).object_to_world;
+    world = {placement.apply_point(world.p0), placement.apply_point(world.p1), placement.apply_point(world.p2)};
+  }
+  return world;
+}
+
+// Distance from the hit point to the triangle's nearest edge: each barycentric times the height
+// over its opposite edge.
+double edge_distance(const WorldTriangle& tri, float u, float v) {
+  const double twice_area = magnitude(cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
+  const auto height = [&](const Vec3& a, const Vec3& b) {
+    const double base = magnitude(b - a);
+    return base > 0.0 ? twice_area / base : 0.0;
+  };
+  return std::min({(1.0 - u - v) * height(tri.p1, tri.p2), double(u) * height(tri.p2, tri.p0),
+                   double(v) * height(tri.p0, tri.p1)});
+}
+
+// Whether the ray passes an instanced sphere so nearly tangentially that the two backends'
+// different object-space rays may disagree about hitting it at all.
+bool grazes(const Instance& instance, const Sphere& sphere, const Ray& ray) {
+  const Vec3 org = instance.world_to_object.apply_point(ray.org);
+  const Vec3 dir = instance.world_to_object.apply_vector(ray.dir);
+  const double f[3] = {double(org.x) - sphere.center.x, double(org.y) - sphere.center.y,
+                       double(org.z) - sphere.center.z};
+  const double d[3] = {dir.x, dir.y, dir.z};
+  const double s = (f[0] * d[0] + f[1] * d[1] + f[2] * d[2]) / (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  double line2 = 0.0, f2 = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    line2 += (f[a] - s * d[a]) * (f[a] - s * d[a]);
+    f2 += f[a] * f[a];
+  }
+  return std::fabs(std::sqrt(line2) - sphere.radius) <= kGrazing * (sphere.radius + std::sqrt(f2));
+}
+
+// A hit the other backend may legitimately have missed by rounding.
+bool is_borderline(const RenderScene& scene, const Ray& ray, const Hit& hit) {
+  const Geometry& geometry = *geometry_of(scene, hit);
+  if (kind_of(geometry) == GeometryKind::kTriangles)
+    return edge_distance(world_triangle(scene, hit), hit.u, hit.v) <= kEdgeZone * error_scale(ray, hit.t);
+  if (kind_of(geometry) == GeometryKind::kSpheres && hit.inst_id != kInvalidId) {
+    const auto& instance = std::get<Instance>(scene.top.geometries[hit.inst_id]);
+    return grazes(instance, std::get<SphereSet>(geometry).spheres[hit.prim_id], ray);
+  }
+  return false;
+}
+
+void classify_same_primitive(const RenderScene& scene, const TracedRay& traced, CrosscheckCase& c) {
+  const Hit& a = traced.reference;
+  const Hit& b = traced.candidate;
+  c.t_error = relative_t_error(traced.ray, a.t, b.t);
+  if (kind_of(*geometry_of(scene, a)) == GeometryKind::kTriangles) {
+    const WorldTriangle tri = world_triangle(scene, a);
+    c.surface_error = magnitude(tri.at(a.u, a.v) - tri.at(b.u, b.v)) / error_scale(traced.ray, a.t);
+  }
+  if (bit_identical(a, b)) {
+    c.agreement = Agreement::kIdentical;
+  } else if (is_top_level_sphere(scene, a)) {
+    c.agreement = Agreement::kMismatch;
+    c.note = "top-level sphere hit is not bit-identical";
+  } else if (c.t_error <= kPointTolerance && c.surface_error <= kPointTolerance) {
+    c.agreement = Agreement::kWithinTolerance;
+  } else {
+    c.agreement = Agreement::kMismatch;
+    c.note = c.t_error > kPointTolerance ? "distance differs beyond tolerance" : "barycentrics differ beyond tolerance";
+  }
+}
+
+void classify_different_primitives(const RenderScene& scene, const TracedRay& traced, CrosscheckCase& c) {
+  const bool both = traced.reference_found && traced.candidate_found;
+  const bool reference_closer =
+      traced.reference_found && (!traced.candidate_found || traced.reference.t <= traced.candidate.t);
+  const Hit& closer = reference_closer ? traced.reference : traced.candidate;
+  const char* closer_side = reference_closer ? traced.candidate_found ? "reference" : "only the reference"
+                                             : traced.reference_found ? "candidate" : "only the candidate";
+  const bool both_top_spheres =
+      both && is_top_level_sphere(scene, traced.reference) && is_top_level_sphere(scene, traced.candidate);
+  if (both) c.t_error = relative_t_error(traced.ray, traced.reference.t, traced.candidate.t);
+
+  if (both && !both_top_spheres && c.t_error <= kPointTolerance) {
+    c.agreement = Agreement::kAmbiguous;
+    c.note = "different primitives at the same distance (shared edge or touching surfaces)";
+  } else if (!both_top_spheres && is_borderline(scene, traced.ray, closer)) {
+    c.agreement = Agreement::kAmbiguous;
+    c.note = std::string(closer_side) + " hits a primitive at its edge or tangentially";
+  } else {
+    c.agreement = Agreement::kMismatch;
+    c.note = std::string(closer_side) + " hits a primitive the other backend misses";
+  }
+}
+
+CrosscheckCase classify(const RenderScene& scene, const TracedRay& traced, std::size_t index, bool camera) {
+  CrosscheckCase c;
+  c.index = index;
+  c.camera_ray = camera;
+  c.ray = traced.ray;
+  c.reference_found = traced.reference_found;
+  c.candidate_found = traced.candidate_found;
+  c.reference = traced.reference;
+  c.candidate = traced.candidate;
+
+  const bool unknown_ids = (traced.reference_found && !geometry_of(scene, traced.reference)) ||
+                           (traced.candidate_found && !geometry_of(scene, traced.candidate));
+  if (unknown_ids) {
+    c.agreement = Agreement::kMismatch;
+    c.note = "a hit names a primitive that does not exist";
+  } else if (!traced.reference_found && !traced.candidate_found) {
+    c.agreement = Agreement::kIdentical;
+  } else if (traced.reference_found && traced.candidate_found && same_primitive(traced.reference, traced.candidate)) {
+    classify_same_primitive(scene, traced, c);
+  } else {
+    classify_different_primitives(scene, traced, c);
+  }
+
+  for (int s = 0; s < traced.segments; ++s)
+    c.occlusion_differs |= traced.reference_occluded[s] != traced.candidate_occluded[s];
+  return c;
+}
+
+// Mismatches first, then the largest distance errors; ties by ray number for a stable report.
+bool worse(const CrosscheckCase& a, const CrosscheckCase& b) {
+  const auto rank = [](const CrosscheckCase& c) {
+    return c.agreement == Agreement::kMismatch ? 0 : (c.occlusion_differs && c.agreement != Agreement::kAmbiguous ? 1 : 2);
+  };
+  if (rank(a) != rank(b)) return rank(a) < rank(b);
+  if (a.t_error != b.t_error) return a.t_error > b.t_error;
+  return a.index < b.index;
+}
+
+}  // namespace
+
+CrosscheckReport crosscheck(const RenderScene& scene, const Backend& reference, const Backend& candidate,
+                            const CrosscheckOptions& options) {
+  const std::size_t camera_rays = options.rays / 2;
+  const Camera camera(scene.camera, scene.camera.width, scene.camera.height);
+  BBox bounds = scene.bounds();
+  if (bounds.empty()) bounds = {Vec3(-1.0f), Vec3(1.0f)};
+
+  std::vector<TracedRay> traced(options.rays);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, options.rays, 256), [&](const auto& range) {
+    set_tracing_fp_mode();
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      traced[i].ray = i < camera_rays ? camera_ray(camera, scene.camera, options.seed, i)
+                                      : random_ray(bounds, options.seed, i);
+      trace(reference, candidate, traced[i]);
+    }
+  });
+
+  CrosscheckReport report;
+  report.reference_name = reference.name();
+  report.candidate_name = candidate.name();
+  report.rays = options.rays;
+  std::vector<CrosscheckCase> notable;
+  for (std::size_t i = 0; i < traced.size(); ++i) {
+    CrosscheckCase c = classify(scene, traced[i], i, i < camera_rays);
+    switch (c.agreement) {
+      case Agreement::kIdentical: ++report.identical; break;
+      case Agreement::kWithinTolerance: ++report.within_tolerance; break;
+      case Agreement::kAmbiguous: ++report.ambiguous; break;
+      case Agreement::kMismatch: ++report.mismatches; break;
+    }
+    report.occlusion_queries += static_cast<std::size_t>(traced[i].segments);
+    // An ambiguous closest hit makes the occlusion answers just as ambiguous.
+    if (c.occlusion_differs && c.agreement != Agreement::kAmbiguous) ++report.occlusion_mismatches;
+    if (c.reference_found && is_top_level_sphere(scene, c.reference)) ++report.top_level_sphere_hits;
+    if (c.agreement == Agreement::kIdentical || c.agreement == Agreement::kWithinTolerance) {
+      report.max_t_error = std::max(report.max_t_error, c.t_error);
+      report.max_surface_error = std::max(report.max_surface_error, c.surface_error);
+    }
+    if (c.agreement != Agreement::kIdentical || c.occlusion_differs) {
+      notable.push_back(std::move(c));
+      if (notable.size() >= 4 * options.worst_cases + 64) {  // keep memory bounded on bad runs
+        std::sort(notable.begin(), notable.end(), worse);
+        notable.resize(options.worst_cases);
+      }
+    }
+  }
+  std::sort(notable.begin(), notable.end(), worse);
+  if (notable.size() > options.worst_cases) notable.resize(options.worst_cases);
+  report.worst = std::move(notable);
+  return report;
+}
+
+}  // namespace rtpro

@@ -1,0 +1,122 @@
+// `rtpro crosscheck SCENE`: traces the same rays through the native and the Embree backend and
+// compares them under the rules in backend/crosscheck.h. Exit codes: 0 within the rules, 1 for
+// any mismatch, 2 for a bad scene or bad options.
+#include "rtpro/backend/crosscheck.h"
+#include "rtpro/backend/embree_backend.h"
+#include "rtpro/backend/native_backend.h"
+#include "rtpro/cli/command.h"
+#include "rtpro/core/error.h"
+#include "rtpro/scene/build_render_scene.h"
+#include "rtpro/scene/scene_parser.h"
+
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <thread>
+
+namespace rtpro::cli {
+
+namespace {
+
+struct CrosscheckCommandOptions {
+  std::string scene;
+  CrosscheckOptions check;
+  int threads = 0;
+  std::string embree_quality = "medium";
+  bool embree_robust = true;
+};
+
+std::string describe(const Hit& hit, bool found) {
+  if (!found) return "miss";
+  char text[160];
+  std::snprintf(text, sizeof text, "t=%.9g (%a) u=%.6g v=%.6g inst=%d geom=%u prim=%u", hit.t, hit.t, hit.u, hit.v,
+                hit.inst_id == kInvalidId ? -1 : static_cast<int>(hit.inst_id), hit.geom_id, hit.prim_id);
+  return text;
+}
+
+std::string describe(const Ray& ray) {
+  char text[200];
+  std::snprintf(text, sizeof text, "org=(%.9g, %.9g, %.9g) dir=(%.9g, %.9g, %.9g)", ray.org.x, ray.org.y, ray.org.z,
+                ray.dir.x, ray.dir.y, ray.dir.z);
+  return text;
+}
+
+const char* agreement_name(Agreement agreement) {
+  switch (agreement) {
+    case Agreement::kIdentical: return "identical";
+    case Agreement::kWithinTolerance: return "within tolerance";
+    case Agreement::kAmbiguous: return "ambiguous";
+    case Agreement::kMismatch: return "MISMATCH";
+  }
+  return "?";
+}
+
+void print_report(const CrosscheckReport& r) {
+  const auto share = [&](std::size_t n) { return r.rays ? 100.0 * double(n) / double(r.rays) : 0.0; };
+  std::printf("crosscheck %s (reference) vs %s: %zu rays\n", r.reference_name.c_str(), r.candidate_name.c_str(),
+              r.rays);
+  std::printf("  identical          %zu (%.3f%%)\n", r.identical, share(r.identical));
+  std::printf("  within tolerance   %zu (%.3f%%)\n", r.within_tolerance, share(r.within_tolerance));
+  std::printf("  ambiguous          %zu (%.3f%%)\n", r.ambiguous, share(r.ambiguous));
+  std::printf("  mismatches         %zu\n", r.mismatches);
+  std::printf("  top-level spheres  %zu closest hits\n", r.top_level_sphere_hits);
+  std::printf("  occlusion          %zu queries, %zu mismatches\n", r.occlusion_queries, r.occlusion_mismatches);
+  std::printf("  largest errors     distance %.3g, barycentric point %.3g (relative to coordinates)\n",
+              r.max_t_error, r.max_surface_error);
+  if (!r.worst.empty()) std::printf("worst cases:\n");
+  for (const CrosscheckCase& c : r.worst) {
+    std::printf("  ray %zu (%s) %s%s%s%s\n    %s\n    %s: %s\n    %s: %s\n", c.index, c.camera_ray ? "camera" : "random",
+                agreement_name(c.agreement), c.note.empty() ? "" : ": ", c.note.c_str(),
+                c.occlusion_differs ? " [occlusion differs]" : "", describe(c.ray).c_str(),
+                r.reference_name.c_str(), describe(c.reference, c.reference_found).c_str(), r.candidate_name.c_str(),
+                describe(c.candidate, c.candidate_found).c_str());
+  }
+  std::printf("%s\n", r.passed() ? "PASSED: the backends agree within the rules"
+                                 : "FAILED: the backends disagree beyond the rules");
+}
+
+int run_crosscheck(const CrosscheckCommandOptions& o) {
+  const int threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  // Must exist before any TBB or Embree work so the cap really holds.
+  tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+
+  const RenderScene scene = build_render_scene(parse_scene_file(o.scene));
+  BackendOptions backend_options;
+  backend_options.threads = threads;
+  backend_options.embree_quality = o.embree_quality;
+  backend_options.embree_robust = o.embree_robust;
+  const auto native = make_native_backend(scene, backend_options);
+  const auto embree = make_embree_backend(scene, backend_options);
+
+  const CrosscheckReport report = crosscheck(scene, *native, *embree, o.check);
+  print_report(report);
+  std::fflush(stdout);
+  return report.passed() ? kExitOk : kExitRuntimeFailure;
+}
+
+}  // namespace
+
+void add_crosscheck_command(CLI::App& app, Action& action) {
+  auto o = std::make_shared<CrosscheckCommandOptions>();
+  CLI::App* cmd = app.add_subcommand("crosscheck", "Compare the native and Embree backends ray by ray");
+  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
+  cmd->add_option("--rays", o->check.rays, "Number of rays: half camera rays, half random rays")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}))
+      ->capture_default_str();
+  cmd->add_option("--seed", o->check.seed, "Seed of the ray generator")->capture_default_str();
+  cmd->add_option("--worst", o->check.worst_cases, "How many of the worst cases to print")
+      ->check(CLI::Range(std::size_t{0}, std::size_t{1000}))
+      ->capture_default_str();
+  cmd->add_option("--threads", o->threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 4096));
+  cmd->add_option("--embree-quality", o->embree_quality, "Embree BVH build quality: low, medium or high")
+      ->check(CLI::IsMember({"low", "medium", "high"}))
+      ->capture_default_str();
+  cmd->add_option("--embree-robust", o->embree_robust, "Embree robust traversal (true/false)")->capture_default_str();
+  cmd->callback([o, &action] { action = [o] { return run_crosscheck(*o); }; });
+}
+
+}  // namespace rtpro::cli
