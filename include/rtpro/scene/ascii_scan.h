@@ -1,0 +1,182 @@
+#pragma once
+// Scanning words and numbers in ASCII mesh files (OBJ, MTL, ASCII PLY) without allocating:
+// callers walk a [p, end) range. Inline because these run once per number; the digit and
+// newline searches look at 8 bytes at a time (SWAR), which is what makes the OBJ loader fast.
+#include <fast_float/fast_float.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <system_error>
+
+namespace rtpro::ascii {
+
+inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+inline bool is_digit(char c) { return static_cast<unsigned char>(c - '0') < 10u; }
+
+inline const char* skip_blanks(const char* p, const char* end) {
+  while (p != end && is_blank(*p)) ++p;
+  return p;
+}
+
+inline const char* skip_word(const char* p, const char* end) {
+  while (p != end && !is_blank(*p)) ++p;
+  return p;
+}
+
+// The blank-delimited word starting at p (for messages: what was found instead of a number).
+inline std::string_view word_at(const char* p, const char* end) { return {p, std::size_t(skip_word(p, end) - p)}; }
+
+// 'word', for messages.
+inline std::string quoted(std::string_view word) {
+  std::string text;
+  text.reserve(word.size() + 2);
+  text += '\'';
+  text += word;
+  text += '\'';
+  return text;
+}
+
+namespace swar {
+
+inline constexpr bool kAvailable = std::endian::native == std::endian::little;
+inline constexpr std::uint64_t kOnes = 0x0101010101010101ull;
+inline constexpr std::uint64_t kHighBits = 0x8080808080808080ull;
+
+inline std::uint64_t load(const char* p) {
+  std::uint64_t word;
+  std::memcpy(&word, p, sizeof word);
+  return word;
+}
+
+// Index of the first byte of `word` that is not an ASCII digit; 8 if all are.
+inline int leading_digits(std::uint64_t word) {
+  const std::uint64_t t = word ^ (kOnes * '0');  // digits become 0..9
+  // Per byte, without carries between bytes: the high bit ends up set unless the byte is < 10.
+  const std::uint64_t non_digit = (((t & ~kHighBits) + kOnes * (0x80 - 10)) | t) & kHighBits;
+  return non_digit ? std::countr_zero(non_digit) / 8 : 8;
+}
+
+// The value of the first n (1..8) digits of `word`.
+inline std::uint32_t digits_value(std::uint64_t word, int n) {
+  std::uint64_t t = (word ^ (kOnes * '0')) << (8 * (8 - n));  // leading zeros replace later bytes
+  t = (t * (10 * 256 + 1)) >> 8 & 0x00FF00FF00FF00FFull;       // pairs of digits
+  t = (t * (100 * 65536 + 1)) >> 16 & 0x0000FFFF0000FFFFull;   // groups of four
+  return std::uint32_t((t * (10000 * (1ull << 32) + 1)) >> 32);  // all eight
+}
+
+}  // namespace swar
+
+// The end of the line starting at p: the next '\n', or end.
+inline const char* find_line_end(const char* p, const char* end) {
+  if constexpr (swar::kAvailable) {
+    for (; end - p >= 8; p += 8) {
+      const std::uint64_t t = swar::load(p) ^ (swar::kOnes * '\n');
+      // Exact for the lowest zero byte, which is all we need.
+      const std::uint64_t zero = (t - swar::kOnes) & ~t & swar::kHighBits;
+      if (zero) return p + std::countr_zero(zero) / 8;
+    }
+  }
+  while (p != end && *p != '\n') ++p;
+  return p;
+}
+
+inline constexpr std::uint64_t kPowersOf10[] = {1,         10,         100,         1000,        10000,
+                                                100000,    1000000,    10000000,    100000000,   1000000000,
+                                                10000000000ull};
+
+// Up to 18 decimal digits at p into `value` (so it cannot overflow); returns the number read,
+// or -1 past 18.
+inline int scan_digits(const char*& p, const char* end, std::uint64_t& value) {
+  const char* const first = p;
+  if constexpr (swar::kAvailable) {
+    while (end - p >= 8) {
+      const std::uint64_t word = swar::load(p);
+      const int n = swar::leading_digits(word);
+      if (n == 0) break;
+      if (p - first + n > 18) return -1;
+      value = value * kPowersOf10[n] + swar::digits_value(word, n);
+      p += n;
+      if (n < 8) return int(p - first);
+    }
+  }
+  for (; p != end && is_digit(*p); ++p) {
+    if (p - first == 18) return -1;
+    value = value * 10 + std::uint64_t(*p - '0');
+  }
+  return int(p - first);
+}
+
+enum class NumberStatus { kOk, kMalformed, kNotFinite };
+
+struct FloatScan {
+  NumberStatus status;
+  const char* next;  // just past the number when kOk
+};
+
+// Plain decimals with at most 7 significant digits ("-0.0503644", the bulk of scanned meshes)
+// take the exact path fast_float also takes for them: an integer mantissa below 2^24 divided by
+// a power of ten up to 10^10, both exact floats, so the one rounding of the division gives the
+// correctly rounded result. Anything else returns false and goes to fast_float.
+inline bool scan_short_decimal(const char* p, const char* end, float& value, const char*& next) {
+  const bool negative = p != end && *p == '-';
+  if (negative) ++p;
+  std::uint64_t mantissa = 0;
+  const int whole = scan_digits(p, end, mantissa);
+  int fraction = 0;
+  if (whole >= 0 && p != end && *p == '.') {
+    ++p;
+    std::uint64_t digits = 0;
+    fraction = scan_digits(p, end, digits);
+    if (fraction < 0 || fraction > 10) return false;
+    mantissa = mantissa * kPowersOf10[fraction] + digits;
+  }
+  if (whole < 0 || whole + fraction == 0 || mantissa > (1u << 24) || (p != end && !is_blank(*p))) return false;
+  const float magnitude = float(mantissa) / float(kPowersOf10[fraction]);
+  value = negative ? -magnitude : magnitude;
+  next = p;
+  return true;
+}
+
+// A finite number (optionally signed with '+') that ends at a blank or the end of the range.
+// nan, inf and values beyond the type's range (1e999) are kNotFinite; "1,5" and "abc" are
+// kMalformed.
+template <typename Real>
+inline FloatScan scan_real(const char* p, const char* end, Real& value) {
+  if (p != end && *p == '+' && (p + 1 == end || p[1] != '-')) ++p;
+  if constexpr (std::is_same_v<Real, float>) {
+    const char* next = nullptr;
+    if (scan_short_decimal(p, end, value, next)) return {NumberStatus::kOk, next};
+  }
+  const fast_float::from_chars_result result = fast_float::from_chars(p, end, value);
+  if (result.ec == std::errc::result_out_of_range) return {NumberStatus::kNotFinite, result.ptr};
+  if (result.ec != std::errc() || (result.ptr != end && !is_blank(*result.ptr)))
+    return {NumberStatus::kMalformed, p};
+  if (!std::isfinite(value)) return {NumberStatus::kNotFinite, result.ptr};
+  return {NumberStatus::kOk, result.ptr};
+}
+
+struct IntegerScan {
+  bool ok;
+  const char* next;  // just past the digits when ok
+};
+
+// A decimal integer with an optional sign and at most 18 digits, so it always fits int64. The
+// caller checks what follows (a blank, '/', ...).
+inline IntegerScan scan_integer(const char* p, const char* end, std::int64_t& value) {
+  bool negative = false;
+  if (p != end && (*p == '-' || *p == '+')) {
+    negative = *p == '-';
+    ++p;
+  }
+  std::uint64_t magnitude = 0;
+  const int digits = scan_digits(p, end, magnitude);
+  if (digits <= 0) return {false, p};
+  value = negative ? -std::int64_t(magnitude) : std::int64_t(magnitude);
+  return {true, p};
+}
+
+}  // namespace rtpro::ascii

@@ -1,0 +1,20 @@
+#pragma once
+// Per-vertex normals for loaded meshes.
+#include "rtpro/core/vec3.h"
+#include "rtpro/scene/mesh.h"
+
+#include <vector>
+
+namespace rtpro {
+
+// v scaled to unit length, or `fallback` when v is zero or not finite. Scales by the largest
+// component first, so huge vectors (|v|^2 beyond float range) still normalise.
+Vec3 unit_or(const Vec3& v, const Vec3& fallback);
+
+// Smooth normals: each vertex gets the area-weighted mean of the normals of the triangles using
+// it. Vertices used by no triangle, or only by zero-area ones, get +z. The sum runs in triangle
+// order, so the result depends on nothing but the arrays.
+std::vector<Vec3> area_weighted_vertex_normals(const std::vector<PaddedVertex>& vertices,
+                                               const std::vector<TriangleIndices>& triangles);
+
+}  // namespace rtpro

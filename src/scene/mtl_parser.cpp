@@ -1,0 +1,136 @@
+#include "rtpro/scene/mtl_parser.h"
+
+#include "rtpro/core/error.h"
+#include "rtpro/scene/ascii_scan.h"
+#include "rtpro/scene/mapped_file.h"
+
+#include <array>
+#include <cstring>
+#include <map>
+#include <optional>
+
+namespace rtpro {
+
+using ascii::quoted;
+using ascii::skip_blanks;
+using ascii::skip_word;
+using ascii::word_at;
+
+namespace {
+
+struct Ignored {
+  int count = 0;
+  int first_line = 0;
+};
+
+class MtlParser {
+ public:
+  explicit MtlParser(const std::filesystem::path& file) : file_(file.string()) {}
+
+  MaterialLibrary parse(std::string_view text) {
+    const char* p = text.data();
+    const char* const end = p + text.size();
+    while (p != end) {
+      const char* newline = static_cast<const char*>(std::memchr(p, '\n', std::size_t(end - p)));
+      const char* line_end = newline ? newline : end;
+      ++line_;
+      line_begin_ = p;
+      parse_line(p, line_end);
+      p = newline ? newline + 1 : end;
+    }
+    finish_material();
+    for (const auto& [keyword, ignored] : ignored_)
+      library_.warnings.push_back(file_ + ":" + std::to_string(ignored.first_line) + ": ignored '" + keyword +
+                                  "' (" + std::to_string(ignored.count) + " in total): rtpro reads newmtl, Kd, Ks, Ns");
+    return std::move(library_);
+  }
+
+ private:
+  void parse_line(const char* p, const char* end) {
+    p = skip_blanks(p, end);
+    if (p == end || *p == '#') return;
+    const std::string_view keyword = word_at(p, end);
+    const char* rest = skip_blanks(p + keyword.size(), end);
+    if (keyword == "newmtl") return start_material(rest, end);
+    if (keyword == "Kd" || keyword == "Ks" || keyword == "Ns") {
+      if (!current_) fail(p, std::string(keyword) + " before any newmtl");
+      if (keyword == "Kd") current_->color = colour(rest, end, keyword);
+      if (keyword == "Ks") {
+        const Color ks = colour(rest, end, keyword);
+        current_->specular = (ks.x + ks.y + ks.z) / 3.0f;
+      }
+      if (keyword == "Ns") current_->shininess = numbers(rest, end, 1, keyword).values[0];
+      return;
+    }
+    Ignored& ignored = ignored_[std::string(keyword)];
+    if (ignored.count++ == 0) ignored.first_line = line_;
+  }
+
+  void start_material(const char* p, const char* end) {
+    finish_material();
+    while (end != p && ascii::is_blank(end[-1])) --end;
+    if (p == end) fail(p, "newmtl needs a material name");
+    current_ = MaterialDesc{};
+    current_->name.assign(p, end);
+  }
+
+  void finish_material() {
+    if (!current_) return;
+    for (const MaterialDesc& m : library_.materials) {
+      if (m.name == current_->name) {
+        library_.warnings.push_back(file_ + ": material '" + m.name + "' is defined twice; the first one is used");
+        current_.reset();
+        return;
+      }
+    }
+    library_.materials.push_back(std::move(*current_));
+    current_.reset();
+  }
+
+  // "r g b", or a single "r" meaning grey as the MTL specification allows.
+  Color colour(const char* p, const char* end, std::string_view keyword) {
+    const Numbers n = numbers(p, end, 3, keyword);
+    if (n.count == 2) fail(p, std::string(keyword) + " needs 1 or 3 numbers, found 2");
+    return n.count == 1 ? Color(n.values[0]) : Color(n.values[0], n.values[1], n.values[2]);
+  }
+
+  struct Numbers {
+    std::array<float, 3> values{};
+    int count = 0;
+  };
+
+  // 1 to `most` non-negative finite numbers, then the end of the line.
+  Numbers numbers(const char* p, const char* end, int most, std::string_view keyword) {
+    Numbers n;
+    for (p = skip_blanks(p, end); p != end && *p != '#'; p = skip_blanks(skip_word(p, end), end)) {
+      if (n.count == most) fail(p, "unexpected " + quoted(word_at(p, end)) + " after " + std::string(keyword));
+      float value = 0.0f;
+      const ascii::FloatScan scan = ascii::scan_real(p, end, value);
+      if (scan.status != ascii::NumberStatus::kOk || value < 0.0f)
+        fail(p, std::string(keyword) + " needs non-negative finite numbers, found " + quoted(word_at(p, end)));
+      n.values[std::size_t(n.count++)] = value;
+    }
+    if (n.count == 0) fail(p, std::string(keyword) + " needs a number");
+    return n;
+  }
+
+  [[noreturn]] void fail(const char* at, const std::string& message) const {
+    throw InputError(SourceLocation{file_, line_, int(at - line_begin_) + 1}, message);
+  }
+
+  std::string file_;
+  int line_ = 0;
+  const char* line_begin_ = nullptr;
+  std::optional<MaterialDesc> current_;
+  std::map<std::string, Ignored> ignored_;  // ordered: warnings come out the same every time
+  MaterialLibrary library_;
+};
+
+}  // namespace
+
+MaterialLibrary parse_mtl_file(const std::filesystem::path& file) {
+  const MappedFile bytes(file);
+  return MtlParser(file).parse(bytes.text());
+}
+
+}  // namespace rtpro

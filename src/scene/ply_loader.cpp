@@ -1,0 +1,344 @@
+#include "rtpro/scene/ply_parser.h"
+
+#include "rtpro/core/error.h"
+#include "rtpro/scene/ascii_scan.h"
+#include "rtpro/scene/mapped_file.h"
+#include "rtpro/scene/mesh_limits.h"
+#include "rtpro/scene/mesh_normals.h"
+#include "rtpro/scene/ply_header.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace rtpro {
+
+using ascii::quoted;
+
+using namespace ply;
+
+namespace {
+
+bool fits(std::int64_t v, Type type) {
+  switch (type) {
+    case Type::kInt8: return v >= INT8_MIN && v <= INT8_MAX;
+    case Type::kUInt8: return v >= 0 && v <= UINT8_MAX;
+    case Type::kInt16: return v >= INT16_MIN && v <= INT16_MAX;
+    case Type::kUInt16: return v >= 0 && v <= UINT16_MAX;
+    case Type::kInt32: return v >= INT32_MIN && v <= INT32_MAX;
+    case Type::kUInt32: return v >= 0 && v <= UINT32_MAX;
+    case Type::kFloat32: case Type::kFloat64: return true;
+  }
+  return false;
+}
+
+// Reads the values of a binary body in order. Errors name the byte offset of the last value.
+class BinaryReader {
+ public:
+  BinaryReader(std::string_view bytes, std::size_t offset, bool big_endian, const std::string& file)
+      : bytes_(bytes), offset_(offset), swap_(big_endian != (std::endian::native == std::endian::big)), file_(file) {}
+
+  void begin_element() {}
+  void end_element() {}
+
+  double value(Type type) {
+    value_offset_ = offset_;
+    const std::size_t size = size_of(type);
+    if (bytes_.size() - offset_ < size) fail("the file ends before the data its header declares (truncated)");
+    unsigned char raw[8];
+    std::memcpy(raw, bytes_.data() + offset_, size);
+    if (swap_) std::reverse(raw, raw + size);
+    offset_ += size;
+    switch (type) {
+      case Type::kInt8: return as<std::int8_t>(raw);
+      case Type::kUInt8: return as<std::uint8_t>(raw);
+      case Type::kInt16: return as<std::int16_t>(raw);
+      case Type::kUInt16: return as<std::uint16_t>(raw);
+      case Type::kInt32: return as<std::int32_t>(raw);
+      case Type::kUInt32: return as<std::uint32_t>(raw);
+      case Type::kFloat32: return finite(as<float>(raw));
+      case Type::kFloat64: return finite(as<double>(raw));
+    }
+    return 0.0;
+  }
+
+  [[noreturn, gnu::cold, gnu::noinline]] void fail(const std::string& message) const {
+    throw InputError(SourceLocation{file_}, message + " (at byte offset " + std::to_string(value_offset_) + ")");
+  }
+
+ private:
+  template <typename T>
+  static double as(const unsigned char* raw) {
+    T value;
+    std::memcpy(&value, raw, sizeof(T));
+    return double(value);
+  }
+
+  double finite(double value) const {
+    if (!std::isfinite(value)) fail("value is not a finite number");
+    return value;
+  }
+
+  std::string_view bytes_;
+  std::size_t offset_;
+  std::size_t value_offset_ = 0;
+  bool swap_;
+  const std::string& file_;
+};
+
+// Reads the values of an ASCII body: one element per line. Errors name line and column.
+class AsciiReader {
+ public:
+  AsciiReader(std::string_view bytes, std::size_t offset, int first_line, const std::string& file)
+      : next_(bytes.data() + offset), end_(bytes.data() + bytes.size()), line_(first_line - 1), file_(file) {}
+
+  void begin_element() {
+    do {
+      if (next_ == end_) {
+        ++line_;
+        line_begin_ = value_ = end_;
+        fail("the file ends before the elements its header declares");
+      }
+      line_begin_ = next_;
+      line_end_ = ascii::find_line_end(next_, end_);
+      next_ = line_end_ == end_ ? end_ : line_end_ + 1;
+      ++line_;
+      p_ = ascii::skip_blanks(line_begin_, line_end_);
+    } while (p_ == line_end_);  // blank lines carry no element
+  }
+
+  void end_element() {
+    p_ = ascii::skip_blanks(p_, line_end_);
+    value_ = p_;
+    if (p_ != line_end_) fail("unexpected " + quoted(ascii::word_at(p_, line_end_)) + ": more values than the header declares");
+  }
+
+  double value(Type type) {
+    value_ = p_ = ascii::skip_blanks(p_, line_end_);
+    if (p_ == line_end_) fail("too few values on this line for the header's properties");
+    if (is_integer(type)) return integer(type);
+    if (type == Type::kFloat32) return real<float>();
+    return real<double>();
+  }
+
+  [[noreturn, gnu::cold, gnu::noinline]] void fail(const std::string& message) const {
+    throw InputError(SourceLocation{file_, line_, int(value_ - line_begin_) + 1}, message);
+  }
+
+ private:
+  double integer(Type type) {
+    std::int64_t v = 0;
+    const ascii::IntegerScan scan = ascii::scan_integer(p_, line_end_, v);
+    if (!scan.ok || (scan.next != line_end_ && !ascii::is_blank(*scan.next)))
+      fail(quoted(ascii::word_at(p_, line_end_)) + " is not an integer");
+    if (!fits(v, type)) fail(quoted(ascii::word_at(p_, line_end_)) + " is out of range for its property type");
+    p_ = scan.next;
+    return double(v);
+  }
+
+  template <typename Real>
+  double real() {
+    Real v = 0;
+    const ascii::FloatScan scan = ascii::scan_real(p_, line_end_, v);
+    if (scan.status == ascii::NumberStatus::kMalformed) fail(quoted(ascii::word_at(p_, line_end_)) + " is not a number");
+    if (scan.status == ascii::NumberStatus::kNotFinite)
+      fail(quoted(ascii::word_at(p_, line_end_)) + " is not a finite number in range");
+    p_ = scan.next;
+    return double(v);
+  }
+
+  const char* next_;
+  const char* end_;
+  const char* line_begin_ = nullptr;
+  const char* line_end_ = nullptr;
+  const char* p_ = nullptr;
+  const char* value_ = nullptr;
+  int line_;
+  const std::string& file_;
+};
+
+struct PlyMesh {
+  std::vector<PaddedVertex> vertices;
+  std::vector<Vec3> normals;  // per vertex when the file has nx, ny, nz
+  std::vector<TriangleIndices> triangles;
+  std::size_t faces = 0;
+  std::size_t dropped_degenerate = 0;
+};
+
+// Walks the body element by element, keeping vertices and faces, skipping everything else.
+template <typename Reader>
+class BodyReader {
+ public:
+  BodyReader(Reader& reader, const Header& header, const std::string& file) : r_(reader), header_(header), file_(file) {}
+
+  PlyMesh read(std::size_t body_bytes) {
+    const Element* vertex = find_element("vertex");
+    if (!vertex) throw InputError(SourceLocation{file_}, "the PLY file has no vertex element");
+    if (vertex->count > kMaxMeshElements) fail_at(*vertex, "more than 2^32 - 2 vertices");
+    vertex_count_ = vertex->count;
+    for (const Element& element : header_.elements) {
+      if (&element == vertex) read_vertices(element);
+      else if (element.name == "face") read_faces(element, body_bytes);
+      else skip(element);
+    }
+    return std::move(mesh_);
+  }
+
+ private:
+  const Element* find_element(std::string_view name) const {
+    for (const Element& e : header_.elements)
+      if (e.name == name) return &e;
+    return nullptr;
+  }
+
+  int scalar_property(const Element& element, std::string_view name) const {
+    const int index = element.find(name);
+    if (index >= 0 && element.properties[std::size_t(index)].is_list)
+      fail_at(element, "property " + quoted(name) + " must not be a list");
+    return index;
+  }
+
+  void read_vertices(const Element& element) {
+    const int axes[3] = {scalar_property(element, "x"), scalar_property(element, "y"), scalar_property(element, "z")};
+    if (axes[0] < 0 || axes[1] < 0 || axes[2] < 0) fail_at(element, "the vertex element needs properties x, y and z");
+    const int normal_axes[3] = {scalar_property(element, "nx"), scalar_property(element, "ny"), scalar_property(element, "nz")};
+    const bool has_normals = normal_axes[0] >= 0 && normal_axes[1] >= 0 && normal_axes[2] >= 0;
+    std::vector<double> values(element.properties.size());
+    mesh_.vertices.reserve(element.count);
+    if (has_normals) mesh_.normals.reserve(element.count);
+    for (std::uint64_t i = 0; i < element.count; ++i) {
+      r_.begin_element();
+      for (std::size_t k = 0; k < element.properties.size(); ++k) {
+        const Property& property = element.properties[k];
+        if (property.is_list) {
+          skip_list(property);
+          continue;
+        }
+        values[k] = r_.value(property.type);
+        const bool is_position = int(k) == axes[0] || int(k) == axes[1] || int(k) == axes[2];
+        if (is_position && !(std::fabs(float(values[k])) <= kMaxAbsCoordinate))
+          r_.fail("coordinate is beyond the supported magnitude 1e16");
+      }
+      r_.end_element();
+      const auto at = [&values](int k) { return float(values[std::size_t(k)]); };
+      mesh_.vertices.push_back({at(axes[0]), at(axes[1]), at(axes[2]), 0.0f});
+      if (has_normals) mesh_.normals.emplace_back(at(normal_axes[0]), at(normal_axes[1]), at(normal_axes[2]));
+    }
+  }
+
+  void read_faces(const Element& element, std::size_t body_bytes) {
+    int list = element.find("vertex_indices");
+    if (list < 0) list = element.find("vertex_index");
+    if (list < 0) fail_at(element, "the face element needs a list property vertex_indices");
+    const Property& indices = element.properties[std::size_t(list)];
+    if (!indices.is_list || !is_integer(indices.type)) fail_at(element, "vertex_indices must be a list of integers");
+    // A triangle takes at least 4 bytes of body: never reserve beyond what the file can hold.
+    mesh_.triangles.reserve(std::min<std::uint64_t>(element.count, body_bytes / 4));
+    for (std::uint64_t i = 0; i < element.count; ++i) {
+      r_.begin_element();
+      for (std::size_t k = 0; k < element.properties.size(); ++k) {
+        const Property& property = element.properties[k];
+        if (int(k) == list) read_polygon(property);
+        else if (property.is_list) skip_list(property);
+        else r_.value(property.type);
+      }
+      r_.end_element();
+    }
+    if (mesh_.triangles.size() > kMaxMeshElements) fail_at(element, "more than 2^32 - 2 triangles");
+  }
+
+  void read_polygon(const Property& property) {
+    const double count = r_.value(property.count_type);
+    if (count < 3) r_.fail("a face needs at least 3 vertices, this one has " + std::to_string(std::int64_t(count)));
+    corners_.clear();
+    for (double c = 0; c < count; ++c) {
+      const double index = r_.value(property.type);
+      if (index < 0 || index >= double(vertex_count_))
+        r_.fail("vertex index " + std::to_string(std::int64_t(index)) + " is out of range: the file has " +
+                std::to_string(vertex_count_) + " vertices");
+      corners_.push_back(std::uint32_t(index));
+    }
+    ++mesh_.faces;
+    for (std::size_t k = 1; k + 1 < corners_.size(); ++k) {
+      const std::uint32_t a = corners_[0], b = corners_[k], c = corners_[k + 1];
+      if (a == b || b == c || a == c) ++mesh_.dropped_degenerate;
+      else mesh_.triangles.push_back({a, b, c});
+    }
+  }
+
+  void skip_list(const Property& property) {
+    const double count = r_.value(property.count_type);
+    if (count < 0) r_.fail("a list length must not be negative");
+    for (double c = 0; c < count; ++c) r_.value(property.type);
+  }
+
+  void skip(const Element& element) {
+    for (std::uint64_t i = 0; i < element.count; ++i) {
+      r_.begin_element();
+      for (const Property& property : element.properties) {
+        if (property.is_list) skip_list(property);
+        else r_.value(property.type);
+      }
+      r_.end_element();
+    }
+  }
+
+  [[noreturn]] void fail_at(const Element& element, const std::string& message) const {
+    throw InputError(SourceLocation{file_, element.line}, message);
+  }
+
+  Reader& r_;
+  const Header& header_;
+  const std::string& file_;
+  std::uint64_t vertex_count_ = 0;
+  std::vector<std::uint32_t> corners_;
+  PlyMesh mesh_;
+};
+
+PlyMesh read_body(std::string_view bytes, const Header& header, const std::string& file) {
+  const std::size_t body_bytes = bytes.size() - header.body_offset;
+  if (header.encoding == Encoding::kAscii) {
+    AsciiReader reader(bytes, header.body_offset, header.body_line, file);
+    return BodyReader<AsciiReader>(reader, header, file).read(body_bytes);
+  }
+  BinaryReader reader(bytes, header.body_offset, header.encoding == Encoding::kBinaryBigEndian, file);
+  return BodyReader<BinaryReader>(reader, header, file).read(body_bytes);
+}
+
+bool all_nonzero(const std::vector<Vec3>& normals) {
+  return std::all_of(normals.begin(), normals.end(), [](const Vec3& n) { return n.x != 0.0f || n.y != 0.0f || n.z != 0.0f; });
+}
+
+}  // namespace
+
+LoadedMesh load_ply_file(const std::filesystem::path& file) {
+  const MappedFile bytes(file);
+  const std::string file_name = file.string();
+  const Header header = parse_header(bytes.text(), file_name);
+  PlyMesh ply = read_body(bytes.text(), header, file_name);
+
+  LoadedMesh loaded;
+  TriangleMesh& mesh = loaded.mesh;
+  mesh.name = file.stem().string();
+  mesh.material = kNoMaterial;
+  mesh.vertices = std::move(ply.vertices);
+  mesh.triangles = std::move(ply.triangles);
+  if (!ply.normals.empty() && all_nonzero(ply.normals)) {
+    mesh.normals = std::move(ply.normals);
+    for (Vec3& n : mesh.normals) n = unit_or(n, Vec3(0.0f, 0.0f, 1.0f));
+  } else {
+    if (!ply.normals.empty()) loaded.stats.warnings.push_back(file_name + ": some vertex normals have zero length; generating normals instead");
+    mesh.normals = area_weighted_vertex_normals(mesh.vertices, mesh.triangles);
+    loaded.stats.normals_generated = true;
+  }
+  if (mesh.triangles.empty()) loaded.stats.warnings.push_back(file_name + ": no faces");
+  loaded.stats.vertices = mesh.vertices.size();
+  loaded.stats.triangles = mesh.triangles.size();
+  loaded.stats.faces = ply.faces;
+  loaded.stats.dropped_degenerate = ply.dropped_degenerate;
+  return loaded;
+}
+
+}  // namespace rtpro

@@ -1,0 +1,406 @@
+#include "rtpro/core/error.h"
+#include "rtpro/scene/mesh_loader.h"
+#include "rtpro/scene/obj_parser.h"
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace rtpro {
+namespace {
+
+using test::write_file;
+
+// The InputError a load throws; fails the test if none is thrown.
+InputError load_error(const std::filesystem::path& file) {
+  try {
+    load_mesh_file(file);
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no InputError for " << file;
+  return InputError("none");
+}
+
+std::string ErrorOf(const std::string& obj_text) { return load_error(write_file("bad.obj", obj_text)).what(); }
+
+bool has_warning_containing(const MeshLoadStats& stats, const std::string& text) {
+  for (const std::string& w : stats.warnings)
+    if (w.find(text) != std::string::npos) return true;
+  return false;
+}
+
+void expect_unit_normals(const TriangleMesh& mesh) {
+  ASSERT_EQ(mesh.normals.size(), mesh.vertices.size());
+  for (const Vec3& n : mesh.normals) EXPECT_NEAR(length(n), 1.0f, 1e-6f);
+}
+
+Vec3 normal_of_vertex_at(const TriangleMesh& mesh, std::uint32_t triangle, int corner) {
+  const TriangleIndices& t = mesh.triangles[triangle];
+  return mesh.normals[corner == 0 ? t.v0 : corner == 1 ? t.v1 : t.v2];
+}
+
+constexpr const char* kCube = R"(# a unit cube made of quads
+v 0 0 0
+v 1 0 0
+v 1 1 0
+v 0 1 0
+v 0 0 1
+v 1 0 1
+v 1 1 1
+v 0 1 1
+f 1 4 3 2
+f 5 6 7 8
+f 1 2 6 5
+f 2 3 7 6
+f 3 4 8 7
+f 4 1 5 8
+)";
+
+TEST(ObjLoader, CubeOfQuadsBecomesTwelveTrianglesWithSmoothNormals) {
+  const LoadedMesh loaded = load_mesh_file(write_file("cube.obj", kCube));
+  EXPECT_EQ(loaded.mesh.vertices.size(), 8u);
+  EXPECT_EQ(loaded.mesh.triangles.size(), 12u);
+  EXPECT_EQ(loaded.stats.faces, 6u);
+  EXPECT_EQ(loaded.stats.triangles, 12u);
+  EXPECT_EQ(loaded.stats.vertices, 8u);
+  EXPECT_TRUE(loaded.stats.normals_generated);
+  expect_unit_normals(loaded.mesh);
+  // No `s` statements: one smooth group, so the corner (1,1,1) points out along the diagonal.
+  const Vec3 corner = loaded.mesh.normals[6];
+  EXPECT_GT(corner.x, 0.3f);
+  EXPECT_GT(corner.y, 0.3f);
+  EXPECT_GT(corner.z, 0.3f);
+  EXPECT_TRUE(loaded.materials.empty());
+  EXPECT_EQ(loaded.mesh.material, kNoMaterial);
+  EXPECT_TRUE(loaded.mesh.triangle_materials.empty());
+  EXPECT_EQ(loaded.mesh.name, "cube");
+}
+
+TEST(ObjLoader, NegativeIndicesCountBackFromTheirLine) {
+  const LoadedMesh loaded = load_mesh_file(write_file("relative.obj",
+                                                      "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n"
+                                                      "v 1 1 0\nf -3 -1 -2\n"));
+  ASSERT_EQ(loaded.mesh.triangles.size(), 2u);
+  const TriangleIndices& first = loaded.mesh.triangles[0];
+  const TriangleIndices& second = loaded.mesh.triangles[1];
+  EXPECT_EQ((std::array{first.v0, first.v1, first.v2}), (std::array{0u, 1u, 2u}));
+  EXPECT_EQ((std::array{second.v0, second.v1, second.v2}), (std::array{1u, 3u, 2u}));
+}
+
+TEST(ObjLoader, ZeroIndexIsAnErrorNamingItsLine) {
+  const InputError e = load_error(write_file("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"));
+  EXPECT_EQ(e.where().line, 4);
+  EXPECT_EQ(e.where().column, 3);
+  EXPECT_NE(std::string(e.what()).find("zero.obj:4:3"), std::string::npos) << e.what();
+  EXPECT_NE(e.message().find("index 0"), std::string::npos) << e.message();
+}
+
+TEST(ObjLoader, OutOfRangeIndicesAreErrorsNamingTheirLine) {
+  const std::string vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  const InputError past_end = load_error(write_file("past.obj", vertices + "f 1 2 3\nf 1 2 4\n"));
+  EXPECT_EQ(past_end.where().line, 5);
+  EXPECT_NE(past_end.message().find("out of range"), std::string::npos) << past_end.message();
+
+  const InputError before_start = load_error(write_file("before.obj", vertices + "f -1 -2 -4\n"));
+  EXPECT_EQ(before_start.where().line, 4);
+  EXPECT_NE(before_start.message().find("-4"), std::string::npos) << before_start.message();
+
+  // Relative indices count only what precedes their line, even when more vertices follow.
+  const InputError not_yet = load_error(write_file("ahead.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n"));
+  EXPECT_EQ(not_yet.where().line, 3);
+
+  const InputError normal = load_error(write_file("normal.obj", vertices + "vn 0 0 1\nf 1//1 2//2 3//1\n"));
+  EXPECT_EQ(normal.where().line, 5);
+  EXPECT_NE(normal.message().find("normal index 2"), std::string::npos) << normal.message();
+
+  const InputError texcoord = load_error(write_file("texcoord.obj", vertices + "vt 0 0\nf 1/1 2/2 3/1\n"));
+  EXPECT_EQ(texcoord.where().line, 5);
+}
+
+TEST(ObjLoader, MalformedAndNonFiniteNumbersAreErrorsNamingLineAndColumn) {
+  struct Case {
+    const char* line;
+    int column;
+    const char* says;
+  };
+  const Case cases[] = {
+      {"v abc 0 0", 3, "'abc' is not a number"},
+      {"v 1,5 0 0", 3, "'1,5' is not a number"},
+      {"v 1 0", 6, "needs 3 coordinates, found 2"},
+      {"v nan 0 0", 3, "not a finite number"},
+      {"v 0 -inf 0", 5, "not a finite number"},
+      {"v 0 0 1e999", 7, "not a finite number"},
+      {"v 0 0 1e20", 7, "beyond the supported magnitude"},
+      {"vn 0 0 x", 8, "'x' is not a number"},
+      {"vt 0.5 1..0", 8, "is not a number"},
+      {"v 1 2 3 4 5 6 7", 15, "unexpected '7'"},
+  };
+  for (const Case& c : cases) {
+    const InputError e = load_error(write_file("numbers.obj", std::string("v 0 0 0\n") + c.line + "\n"));
+    EXPECT_EQ(e.where().line, 2) << c.line;
+    EXPECT_EQ(e.where().column, c.column) << c.line;
+    EXPECT_NE(e.message().find(c.says), std::string::npos) << c.line << ": " << e.message();
+  }
+}
+
+TEST(ObjLoader, MalformedFacesAreErrors) {
+  const std::string vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  EXPECT_NE(ErrorOf(vertices + "f 1 2\n").find("at least 3 vertices"), std::string::npos);
+  EXPECT_NE(ErrorOf(vertices + "f 1 2 x\n").find("bad.obj:4:7: expected a vertex index"), std::string::npos);
+  EXPECT_NE(ErrorOf(vertices + "f 1 2 3/\n").find("expected a texture coordinate index"), std::string::npos);
+  EXPECT_NE(ErrorOf(vertices + "f 1 2 3.5\n").find("malformed face vertex '3.5'"), std::string::npos);
+  EXPECT_NE(ErrorOf(vertices + "f 1 2 99999999999999999999\n").find("expected a vertex index"), std::string::npos);
+}
+
+TEST(ObjLoader, FileNormalsAreUsedAndSplitVerticesWhereCornersDiffer) {
+  // Two triangles sharing the edge 2-3 but with different normals there: 4 positions, 6 vertices.
+  const LoadedMesh loaded = load_mesh_file(write_file("normals.obj", R"(v 0 0 0
+v 1 0 0
+v 0 1 0
+v 1 1 0
+vt 0 0
+vn 0 0 2
+vn 0 1 1
+f 1//1 2//1 3//1
+f 2/1/2 4/1/2 3/1/2
+)"));
+  EXPECT_FALSE(loaded.stats.normals_generated);
+  EXPECT_EQ(loaded.mesh.vertices.size(), 6u);
+  ASSERT_EQ(loaded.mesh.triangles.size(), 2u);
+  expect_unit_normals(loaded.mesh);
+  EXPECT_EQ(normal_of_vertex_at(loaded.mesh, 0, 1), Vec3(0, 0, 1));
+  const float s = 1.0f / std::sqrt(2.0f);
+  EXPECT_NEAR(normal_of_vertex_at(loaded.mesh, 1, 0).y, s, 1e-6f);
+  EXPECT_NEAR(normal_of_vertex_at(loaded.mesh, 1, 0).z, s, 1e-6f);
+  EXPECT_EQ(loaded.mesh.vertex(loaded.mesh.triangles[1].v0), loaded.mesh.vertex(loaded.mesh.triangles[0].v1));
+}
+
+TEST(ObjLoader, NormalsMissingOnSomeCornersAreGeneratedWithAWarning) {
+  const LoadedMesh loaded = load_mesh_file(write_file("partial.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\n"
+                                                                     "f 1//1 2//1 3//1\nf 2 4 3\n"));
+  EXPECT_TRUE(loaded.stats.normals_generated);
+  EXPECT_TRUE(has_warning_containing(loaded.stats, "generating normals"));
+  expect_unit_normals(loaded.mesh);
+}
+
+TEST(ObjLoader, DegenerateTrianglesAreDroppedAndCounted) {
+  const LoadedMesh loaded = load_mesh_file(write_file("degenerate.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                                                        "f 1 1 2\nf 1 2 2 3\nf 1 2 3\n"));
+  EXPECT_EQ(loaded.stats.faces, 3u);
+  EXPECT_EQ(loaded.mesh.triangles.size(), 2u);
+  EXPECT_EQ(loaded.stats.dropped_degenerate, 2u);
+}
+
+TEST(ObjLoader, MaterialsComeFromTheLibraryPerTriangle) {
+  write_file("two.mtl", "# colours\nnewmtl red\nKd 1 0 0\nKs 0.3 0.6 0.9\nNs 50\nillum 2\n"
+                        "newmtl grey\nKd 0.25\nKa 0 0 0\n");
+  const LoadedMesh loaded = load_mesh_file(write_file("two.obj", R"(mtllib two.mtl
+v 0 0 0
+v 1 0 0
+v 0 1 0
+v 1 1 0
+usemtl grey
+f 1 2 3
+usemtl red
+f 2 4 3
+f 1 2 4
+usemtl grey
+f 1 4 3
+)"));
+  ASSERT_EQ(loaded.materials.size(), 2u);
+  EXPECT_EQ(loaded.materials[0].name, "grey");
+  EXPECT_EQ(loaded.materials[0].color, Color(0.25f, 0.25f, 0.25f));
+  EXPECT_EQ(loaded.materials[1].name, "red");
+  EXPECT_EQ(loaded.materials[1].color, Color(1, 0, 0));
+  EXPECT_NEAR(loaded.materials[1].specular, 0.6f, 1e-6f);
+  EXPECT_EQ(loaded.materials[1].shininess, 50.0f);
+  EXPECT_EQ(loaded.mesh.triangle_materials, (std::vector<std::uint32_t>{0, 1, 1, 0}));
+  EXPECT_EQ(loaded.stats.materials, 2u);
+  // Unused MTL statements are reported once per keyword, with their count.
+  EXPECT_TRUE(has_warning_containing(loaded.stats, "two.mtl:6: ignored 'illum' (1 in total)"));
+  EXPECT_TRUE(has_warning_containing(loaded.stats, "two.mtl:9: ignored 'Ka' (1 in total)"));
+}
+
+TEST(ObjLoader, OneMaterialNeedsNoPerTriangleList) {
+  write_file("one.mtl", "newmtl blue\nKd 0 0 1\n");
+  const LoadedMesh loaded = load_mesh_file(write_file("one.obj", "mtllib one.mtl\nusemtl blue\n"
+                                                                 "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  ASSERT_EQ(loaded.materials.size(), 1u);
+  EXPECT_EQ(loaded.materials[0].color, Color(0, 0, 1));
+  EXPECT_EQ(loaded.mesh.material, 0u);
+  EXPECT_TRUE(loaded.mesh.triangle_materials.empty());
+}
+
+TEST(ObjLoader, FacesBeforeAnyUsemtlShareADefaultMaterial) {
+  write_file("one.mtl", "newmtl blue\nKd 0 0 1\n");
+  const LoadedMesh loaded = load_mesh_file(write_file("mixed.obj", "mtllib one.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                                                   "f 1 2 3\nusemtl blue\nf 1 3 2\n"));
+  ASSERT_EQ(loaded.materials.size(), 2u);
+  EXPECT_EQ(loaded.materials[0].name, "default");
+  EXPECT_EQ(loaded.mesh.triangle_materials, (std::vector<std::uint32_t>{0, 1}));
+}
+
+TEST(ObjLoader, MissingMaterialLibraryIsAWarningAndMaterialsFallBack) {
+  const LoadedMesh loaded = load_mesh_file(write_file("nolib.obj", "mtllib absent.mtl\nusemtl shiny\n"
+                                                                   "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  EXPECT_TRUE(has_warning_containing(loaded.stats, "nolib.obj:1: material library 'absent.mtl' not found"));
+  EXPECT_TRUE(has_warning_containing(loaded.stats, "nolib.obj:2: material 'shiny' is not defined"));
+  ASSERT_EQ(loaded.materials.size(), 1u);
+  EXPECT_EQ(loaded.materials[0].name, "shiny");
+  EXPECT_EQ(loaded.materials[0].color, MaterialDesc{}.color);
+}
+
+TEST(ObjLoader, MaterialLibrariesOutsideTheObjFolderAreRejected) {
+  write_file("x.mtl", "newmtl x\n");
+  const InputError up = load_error(write_file("sub/escape.obj", "v 0 0 0\nmtllib ../x.mtl\n"));
+  EXPECT_EQ(up.where().line, 2);
+  EXPECT_NE(up.message().find("leaves the OBJ's folder"), std::string::npos) << up.message();
+  const InputError sneaky = load_error(write_file("sub/sneaky.obj", "mtllib a/../../x.mtl\n"));
+  EXPECT_NE(sneaky.message().find("leaves the OBJ's folder"), std::string::npos) << sneaky.message();
+  const InputError absolute = load_error(write_file("absolute.obj", "mtllib /etc/passwd\n"));
+  EXPECT_NE(absolute.message().find("must be relative"), std::string::npos) << absolute.message();
+  // Going down and back up inside the folder is fine.
+  write_file("sub/inner/y.mtl", "newmtl y\n");
+  EXPECT_NO_THROW(load_mesh_file(write_file("sub/fine.obj", "mtllib inner/../inner/y.mtl\n")));
+}
+
+TEST(ObjLoader, MalformedMaterialLibraryNamesItsOwnLine) {
+  write_file("bad.mtl", "newmtl a\nKd 1 abc 0\n");
+  const InputError e = load_error(write_file("uses_bad.obj", "mtllib bad.mtl\n"));
+  EXPECT_NE(std::string(e.what()).find("bad.mtl:2:6"), std::string::npos) << e.what();
+  write_file("early.mtl", "Kd 1 1 1\n");
+  EXPECT_NE(std::string(load_error(write_file("uses_early.obj", "mtllib early.mtl\n")).what()).find("before any newmtl"),
+            std::string::npos);
+}
+
+// Two triangles sharing the edge (1,0,0)-(0,1,0), folded along it.
+constexpr const char* kFold = R"(v 0 0 0
+v 1 0 0
+v 0 1 0
+v 1 1 1
+)";
+
+TEST(ObjLoader, OneSmoothingGroupSharesAndAveragesNormalsAlongTheEdge) {
+  const LoadedMesh loaded = load_mesh_file(write_file("smooth.obj", std::string(kFold) + "s 1\nf 1 2 3\nf 2 4 3\n"));
+  EXPECT_EQ(loaded.mesh.vertices.size(), 4u);
+  expect_unit_normals(loaded.mesh);
+  const Vec3 shared_in_first = normal_of_vertex_at(loaded.mesh, 0, 1);
+  const Vec3 shared_in_second = normal_of_vertex_at(loaded.mesh, 1, 0);
+  EXPECT_EQ(shared_in_first, shared_in_second);
+  // The average of the two face normals, (0,0,1) and (-1,-1,1)/sqrt(3), weighted by area.
+  const Vec3 face_a(0, 0, 1), face_b = normalize(Vec3(-1, -1, 1));
+  EXPECT_GT(dot(shared_in_first, face_a), 0.5f);
+  EXPECT_GT(dot(shared_in_first, face_b), 0.5f);
+  EXPECT_LT(dot(shared_in_first, face_a), 0.999f);
+}
+
+TEST(ObjLoader, FlatFacesKeepTheirFaceNormals) {
+  const LoadedMesh loaded = load_mesh_file(write_file("flat.obj", std::string(kFold) + "s 1\nf 1 2 3\ns off\nf 2 4 3\n"));
+  EXPECT_EQ(loaded.mesh.vertices.size(), 6u);
+  expect_unit_normals(loaded.mesh);
+  EXPECT_EQ(normal_of_vertex_at(loaded.mesh, 0, 1), Vec3(0, 0, 1));
+  for (int corner = 0; corner < 3; ++corner) {
+    const Vec3 n = normal_of_vertex_at(loaded.mesh, 1, corner);
+    EXPECT_NEAR(dot(n, normalize(Vec3(-1, -1, 1))), 1.0f, 1e-6f);
+  }
+}
+
+TEST(ObjLoader, DifferentSmoothingGroupsDoNotShareVertices) {
+  const LoadedMesh loaded = load_mesh_file(write_file("groups.obj", std::string(kFold) + "s 1\nf 1 2 3\ns 2\nf 2 4 3\n"));
+  EXPECT_EQ(loaded.mesh.vertices.size(), 6u);
+  EXPECT_EQ(normal_of_vertex_at(loaded.mesh, 0, 1), Vec3(0, 0, 1));
+}
+
+TEST(ObjLoader, AnAllFlatMeshHasNoNormals) {
+  const LoadedMesh loaded = load_mesh_file(write_file("allflat.obj", std::string(kFold) + "s off\nf 1 2 3\nf 2 4 3\n"));
+  EXPECT_TRUE(loaded.mesh.normals.empty());
+  EXPECT_FALSE(loaded.stats.normals_generated);
+  EXPECT_EQ(loaded.mesh.vertices.size(), 4u);
+}
+
+TEST(ObjLoader, UnknownStatementsWarnOncePerKeyword) {
+  const LoadedMesh loaded = load_mesh_file(write_file("unknown.obj", "o thing\ng part\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                                                     "l 1 2\nl 2 3\ncstype bspline\nf 1 2 3\n"));
+  ASSERT_EQ(loaded.stats.warnings.size(), 2u);
+  EXPECT_NE(loaded.stats.warnings[0].find("unknown.obj:6: ignored 'l' statements (2 in total)"), std::string::npos);
+  EXPECT_NE(loaded.stats.warnings[1].find(":8: ignored 'cstype' statements (1 in total)"), std::string::npos);
+  EXPECT_EQ(loaded.mesh.name, "thing");
+}
+
+TEST(ObjLoader, MissingFileAndUnknownExtensionAreInputErrors) {
+  EXPECT_THROW(load_mesh_file(test::scratch_dir() / "absent.obj"), InputError);
+  EXPECT_THROW(load_mesh_file(write_file("mesh.stl", "solid x\n")), InputError);
+}
+
+// A mesh exercising every statement, long enough to span many small chunks.
+std::string varied_obj(int rows) {
+  std::ostringstream obj;
+  obj << "mtllib varied.mtl\n# a grid of quads and triangles\n";
+  for (int y = 0; y <= rows; ++y)
+    for (int x = 0; x <= rows; ++x) obj << "v " << x * 0.25 << ' ' << y * 0.5 << ' ' << (x * y % 7) * 0.1 << "\n";
+  obj << "vn 0 0 1\nvn 0 1 1\nvt 0 0\n";
+  const int row = rows + 1;
+  for (int y = 0; y < rows; ++y) {
+    if (y % 5 == 0) obj << "usemtl " << (y % 2 ? "a" : "b") << "\n";
+    if (y % 3 == 0) obj << (y % 2 ? "s off\n" : "s 4\n");
+    for (int x = 0; x < rows; ++x) {
+      const int i = y * row + x + 1;
+      if (x % 4 == 0) obj << "f " << i << ' ' << i + 1 << ' ' << i + row + 1 << ' ' << i + row << "\n";
+      else if (x % 4 == 1) obj << "f " << i << ' ' << i + 1 << ' ' << i + row << "\nf " << i + 1 << ' ' << i + row + 1 << ' ' << i + row << "\n";
+      else if (x % 4 == 2) obj << "f " << i - (row * (rows + 1) + 1) << " " << i + 1 << ' ' << i + row << "\n";  // relative
+      else obj << "f " << i << ' ' << i << ' ' << i + row << "\nl 1 2\n";  // degenerate, then an ignored line
+    }
+  }
+  return obj.str();
+}
+
+TEST(ObjLoader, ParallelChunkedParseEqualsSerialParse) {
+  write_file("varied.mtl", "newmtl a\nKd 1 0 0\nnewmtl b\nKd 0 1 0\n");
+  const std::string text = varied_obj(50);
+  const auto file = write_file("varied.obj", text);
+  const LoadedMesh serial = load_obj_file(file, text.size() + 1);
+  ASSERT_GT(serial.mesh.triangles.size(), 3000u);
+  ASSERT_EQ(serial.materials.size(), 2u);
+  for (std::size_t chunk_bytes : {std::size_t(1), std::size_t(64), std::size_t(1000), std::size_t(4096)}) {
+    SCOPED_TRACE(chunk_bytes);
+    const LoadedMesh chunked = load_obj_file(file, chunk_bytes);
+    ASSERT_EQ(chunked.mesh.vertices.size(), serial.mesh.vertices.size());
+    for (std::size_t i = 0; i < serial.mesh.vertices.size(); ++i)
+      ASSERT_EQ(chunked.mesh.vertices[i].position(), serial.mesh.vertices[i].position()) << i;
+    ASSERT_EQ(chunked.mesh.triangles.size(), serial.mesh.triangles.size());
+    for (std::size_t i = 0; i < serial.mesh.triangles.size(); ++i) {
+      const TriangleIndices &a = chunked.mesh.triangles[i], &b = serial.mesh.triangles[i];
+      ASSERT_TRUE(a.v0 == b.v0 && a.v1 == b.v1 && a.v2 == b.v2) << i;
+    }
+    EXPECT_EQ(chunked.mesh.normals, serial.mesh.normals);
+    EXPECT_EQ(chunked.mesh.triangle_materials, serial.mesh.triangle_materials);
+    EXPECT_EQ(chunked.stats.dropped_degenerate, serial.stats.dropped_degenerate);
+    EXPECT_EQ(chunked.stats.faces, serial.stats.faces);
+    EXPECT_EQ(chunked.stats.warnings, serial.stats.warnings);
+  }
+}
+
+TEST(ObjLoader, ChunkedParseReportsTheFirstErrorWithItsFileLine) {
+  std::string text = varied_obj(20);
+  const auto lines_before = std::count(text.begin(), text.end(), '\n');
+  text += "f 1 2 0\nv bad 0 0\n";
+  const auto file = write_file("late_error.obj", text);
+  for (std::size_t chunk_bytes : {std::size_t(7), std::size_t(500), text.size()}) {
+    try {
+      load_obj_file(file, chunk_bytes);
+      ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.where().line, lines_before + 1) << chunk_bytes;
+      EXPECT_NE(e.message().find("index 0"), std::string::npos) << e.message();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rtpro
