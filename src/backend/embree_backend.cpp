@@ -89,6 +89,30 @@ class EmbreeBackend final : public Backend {
     return from_embree(query, hit);
   }
 
+  void intersect(std::span<const Ray> rays, std::span<Hit> hits, std::span<bool> found) const override {
+    constexpr std::size_t kChunk = 64;
+    alignas(16) RTCRayHit queries[kChunk];
+    Hit closest_spheres[kChunk];
+    std::size_t slots[kChunk];
+    for (std::size_t begin = 0; begin < rays.size(); begin += kChunk) {
+      const std::size_t end = std::min(rays.size(), begin + kChunk);
+      unsigned count = 0;
+      for (std::size_t i = begin; i < end; ++i) {
+        found[i] = false;
+        if (!accept(rays[i])) continue;
+        closest_spheres[count] = no_sphere_yet(rays[i]);
+        to_embree(rays[i], count, queries[count]);
+        slots[count++] = i;
+      }
+      EmbreeIntersectContext context;
+      rtcInitIntersectContext(&context.base);
+      context.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+      context.closest_spheres = closest_spheres;
+      rtcIntersect1M(scenes_.top.get(), &context.base, queries, count, sizeof(RTCRayHit));
+      for (unsigned k = 0; k < count; ++k) found[slots[k]] = from_embree(queries[k], hits[slots[k]]);
+    }
+  }
+
   // Embree's triangles accept t == tfar; asking for (tnear, previous float below tfar] instead
   // gives exactly the open interval (tnear, tfar) the interface promises, for every geometry.
   bool occluded(const Ray& ray) const override {

@@ -18,6 +18,7 @@
 #include <optional>
 #include <random>
 #include <span>
+#include <thread>
 #include <vector>
 
 namespace rtpro {
@@ -255,6 +256,33 @@ TEST_F(EmbreeBackendTest, MemoryLimitMakesTheBuildFail) {
   const auto backend = make_embree_backend(scene, options);
   EXPECT_GT(backend->stats().acceleration_bytes, 5000u * 16u);
   EXPECT_LT(backend->stats().acceleration_bytes, options.max_memory_bytes);
+}
+
+TEST_F(EmbreeBackendTest, ConcurrentBuildsKeepTheirOwnFailuresAndBytes) {
+  const RenderScene scene = test::random_mixed_scene(4, 3000, 3000, 5);
+  const std::size_t alone = make_embree_backend(scene, {})->stats().acceleration_bytes;
+  constexpr int kThreads = 6;
+  std::vector<std::size_t> bytes(kThreads, 0);
+  std::vector<int> failures(kThreads, 0);
+  std::vector<std::thread> threads;
+  for (int i = 0; i < kThreads; ++i) {
+    threads.emplace_back([&, i] {
+      BackendOptions options;
+      options.max_memory_bytes = i % 2 ? 4096 : 0;  // every other build must fail, alone
+      try {
+        bytes[i] = make_embree_backend(scene, options)->stats().acceleration_bytes;
+      } catch (const RuntimeError&) {
+        ++failures[i];
+      }
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  for (int i = 0; i < kThreads; ++i) {
+    EXPECT_EQ(failures[i], i % 2) << i;
+    if (i % 2 == 0) {
+      EXPECT_EQ(bytes[i], alone) << i;
+    }
+  }
 }
 
 TEST_F(EmbreeBackendTest, GeometryEmbreeWouldDropIsRefused) {
