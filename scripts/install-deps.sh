@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs every build and test dependency of rtpro from Debian 12 packages.
+# Safe to run repeatedly; uses sudo when not root.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  libembree-dev libtbb-dev
+  libopenimageio-dev openimageio-tools python3-imath
+  libopencolorio-dev opencolorio-tools
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libtinyobjloader-dev libcli11-dev libyaml-cpp-dev libfmt-dev libfast-float-dev
+  nlohmann-json3-dev
+)
+
+as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "rtpro: installing ${#missing[@]} Debian packages: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  as_root apt-get update -qq
+  as_root apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+else
+  echo "rtpro: all Debian packages already installed"
+fi

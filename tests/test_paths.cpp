@@ -1,0 +1,52 @@
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <sys/wait.h>
+
+namespace rtpro::test {
+
+std::filesystem::path source_dir() { return RTPRO_SOURCE_DIR; }
+std::filesystem::path scenes_dir() { return source_dir() / "scenes"; }
+std::filesystem::path rtpro_executable() { return RTPRO_EXECUTABLE; }
+
+std::filesystem::path scratch_dir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "no_test";
+  for (char& c : name)
+    if (c == '/') c = '_';
+  const auto dir = std::filesystem::path(RTPRO_BINARY_DIR) / "test_scratch" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+std::filesystem::path write_file(const std::string& name, const std::string& text) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string test = info ? std::string(info->test_suite_name()) + "." + info->name() : "no_test";
+  for (char& c : test)
+    if (c == '/') c = '_';
+  const auto dir = std::filesystem::path(RTPRO_BINARY_DIR) / "test_scratch" / test;
+  std::filesystem::create_directories(dir);
+  const auto path = dir / name;
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+int run_command(const std::string& command_line, std::string* output) {
+  const std::string full = command_line + " 2>&1";
+  FILE* pipe = popen(full.c_str(), "r");
+  if (!pipe) return -1;
+  std::array<char, 4096> buffer{};
+  std::string text;
+  while (std::fgets(buffer.data(), buffer.size(), pipe)) text += buffer.data();
+  const int status = pclose(pipe);
+  if (output) *output = text;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+}  // namespace rtpro::test

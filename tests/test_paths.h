@@ -1,0 +1,19 @@
+#pragma once
+// Paths the tests need: the source tree (scenes, fixtures), a scratch folder, the rtpro binary.
+#include <filesystem>
+#include <string>
+
+namespace rtpro::test {
+
+std::filesystem::path source_dir();
+std::filesystem::path scenes_dir();
+std::filesystem::path rtpro_executable();
+// A fresh, empty folder under the build tree named after the running test.
+std::filesystem::path scratch_dir();
+// Writes `text` to scratch_dir()/name and returns the path.
+std::filesystem::path write_file(const std::string& name, const std::string& text);
+
+// Runs a shell command line; returns its exit code, and stderr+stdout in `output`.
+int run_command(const std::string& command_line, std::string* output = nullptr);
+
+}  // namespace rtpro::test
