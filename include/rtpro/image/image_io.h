@@ -1,0 +1,34 @@
+#pragma once
+// Reading and writing images through OpenImageIO. The format follows the file extension; EXR
+// keeps scene-linear floats, 8-bit formats go through an OpenColorIO display/view transform.
+// Writes are atomic: a temporary file in the same folder, renamed over the target on success.
+#include "rtpro/image/image.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rtpro {
+
+struct ImageWriteOptions {
+  std::optional<std::filesystem::path> ocio_config;  // --ocio-config; else $OCIO; else bundled
+  std::string display;                               // empty: the config's default display
+  std::string view;                                  // empty: the display's default view
+  // Key/value metadata, e.g. {"Software", "rtpro 0.1.0"}, {"rtpro:backend", "native"}.
+  std::vector<std::pair<std::string, std::string>> metadata;
+};
+
+// Throws InputError for an unsupported extension or unknown view/display, RuntimeError when the
+// file cannot be written; in both cases an existing file at `file` is left untouched.
+void write_image(const std::filesystem::path& file, const Image& image, const ImageWriteOptions& options);
+
+// Whether write_image keeps scene-linear floats for this file's format (EXR and the other float
+// formats) rather than encoding it for a display.
+bool writes_scene_linear(const std::filesystem::path& file);
+
+// Throws InputError when the file is missing or unreadable.
+Image read_image(const std::filesystem::path& file);
+
+}  // namespace rtpro

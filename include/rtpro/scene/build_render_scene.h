@@ -1,0 +1,30 @@
+#pragma once
+// Turns a scene description into the immutable render scene: loads meshes (each file once),
+// merges their MTL materials, and flattens nested instances to the single level both backends
+// support (Debian's Embree allows one instance level).
+#include "rtpro/scene/description.h"
+#include "rtpro/scene/mesh_loader.h"
+#include "rtpro/scene/render_scene.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace rtpro {
+
+struct SceneBuildReport {
+  struct MeshFile {
+    std::string file;
+    MeshLoadStats stats;
+    double load_seconds = 0.0;
+  };
+  std::vector<MeshFile> meshes;
+  std::size_t flattened_instances = 0;
+};
+
+// Upper bound on instances after flattening; deeper or wider nesting is an input error.
+inline constexpr std::size_t kMaxFlattenedInstances = 10'000'000;
+
+RenderScene build_render_scene(const SceneDescription& description, SceneBuildReport* report = nullptr);
+
+}  // namespace rtpro

@@ -1,0 +1,97 @@
+#pragma once
+// The scene description: what a scene file says, validated and with names resolved, but nothing
+// loaded yet (meshes are still paths). Produced by the scene parser, consumed by
+// build_render_scene().
+#include "rtpro/core/error.h"
+#include "rtpro/core/transform.h"
+#include "rtpro/core/vec3.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace rtpro {
+
+inline constexpr int kSceneFormatVersion = 1;
+
+struct CameraDesc {
+  Vec3 position{0.0f, 0.0f, -5.0f};
+  Vec3 look_at{0.0f, 0.0f, 0.0f};
+  Vec3 up{0.0f, 1.0f, 0.0f};
+  float fov_degrees = 45.0f;  // vertical field of view
+  int width = 640;
+  int height = 480;
+};
+
+struct RenderSettings {
+  int spp = 16;        // samples per pixel; a perfect square n×n (stratified)
+  int max_depth = 5;   // mirror bounces after the camera ray
+  std::uint64_t seed = 0;
+  float ambient = 0.2f;
+  Color background{0.0f, 0.0f, 0.0f};
+};
+
+struct MaterialDesc {
+  std::string name;
+  Color color{0.8f, 0.8f, 0.8f};  // diffuse (and ambient) colour
+  float specular = 0.5f;          // Phong highlight weight
+  float shininess = 10.0f;        // Phong exponent
+  float reflectivity = 0.0f;      // weight of the mirror reflection
+};
+
+struct PointLightDesc {
+  Vec3 position;
+  Color color{1.0f, 1.0f, 1.0f};
+  float intensity = 1.0f;
+};
+
+struct DirectionalLightDesc {
+  Vec3 direction{0.0f, -1.0f, 0.0f};  // the direction light travels in
+  Color color{1.0f, 1.0f, 1.0f};
+  float intensity = 1.0f;
+};
+
+using LightDesc = std::variant<PointLightDesc, DirectionalLightDesc>;
+
+inline constexpr std::uint32_t kNoMaterial = ~0u;
+
+struct SphereDesc {
+  Vec3 center;
+  float radius = 1.0f;
+  std::uint32_t material = 0;  // index into SceneDescription::materials
+};
+
+struct MeshDesc {
+  std::filesystem::path file;               // resolved against the scene file's folder
+  std::uint32_t material = kNoMaterial;     // overrides the OBJ's own materials when set
+  SourceLocation where;                     // of the entry in the scene file, for load errors
+};
+
+struct InstanceDesc {
+  std::uint32_t object = 0;  // index into SceneDescription::objects
+  Affine transform;          // object to parent
+  SourceLocation where;
+};
+
+// A set of shapes: either a named object (instanced by name) or the world itself.
+struct ObjectDesc {
+  std::string name;
+  std::vector<SphereDesc> spheres;
+  std::vector<MeshDesc> meshes;
+  std::vector<InstanceDesc> instances;
+};
+
+struct SceneDescription {
+  std::filesystem::path file;
+  CameraDesc camera;
+  RenderSettings render;
+  std::vector<MaterialDesc> materials;  // index 0 is always "default"
+  std::vector<LightDesc> lights;
+  std::vector<ObjectDesc> objects;      // named, reachable only through instances
+  ObjectDesc world;                     // what is rendered
+};
+
+}  // namespace rtpro

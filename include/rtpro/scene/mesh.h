@@ -1,0 +1,43 @@
+#pragma once
+// A triangle mesh in the one layout both backends use: Embree shares these arrays directly
+// (16-byte vertex stride keeps its "readable 16 bytes past the last vertex" rule).
+#include "rtpro/core/bbox.h"
+#include "rtpro/core/vec3.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rtpro {
+
+struct alignas(16) PaddedVertex {
+  float x, y, z, pad;
+  Vec3 position() const { return {x, y, z}; }
+};
+static_assert(sizeof(PaddedVertex) == 16);
+
+struct TriangleIndices {
+  std::uint32_t v0, v1, v2;
+};
+static_assert(sizeof(TriangleIndices) == 12);
+
+struct TriangleMesh {
+  std::string name;
+  std::vector<PaddedVertex> vertices;
+  std::vector<TriangleIndices> triangles;
+  std::vector<Vec3> normals;                     // per vertex, unit length; empty: flat shading
+  std::vector<std::uint32_t> triangle_materials; // per triangle; empty: `material` for all
+  std::uint32_t material = 0;
+
+  std::size_t triangle_count() const { return triangles.size(); }
+  std::uint32_t material_of(std::uint32_t triangle) const {
+    return triangle_materials.empty() ? material : triangle_materials[triangle];
+  }
+  Vec3 vertex(std::uint32_t i) const { return vertices[i].position(); }
+  BBox triangle_bounds(std::uint32_t t) const;
+  BBox bounds() const;
+  std::size_t memory_bytes() const;
+};
+
+}  // namespace rtpro

@@ -1,0 +1,33 @@
+#pragma once
+// Loading triangle meshes from files (OBJ with MTL, PLY). Every index is bounds-checked and every
+// number validated; a malformed file is one InputError naming file:line.
+#include "rtpro/scene/description.h"
+#include "rtpro/scene/mesh.h"
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace rtpro {
+
+struct MeshLoadStats {
+  std::size_t vertices = 0;
+  std::size_t triangles = 0;
+  std::size_t faces = 0;              // polygons read before triangulation
+  std::size_t materials = 0;
+  std::size_t dropped_degenerate = 0; // faces with repeated vertices or zero area
+  bool normals_generated = false;
+  std::vector<std::string> warnings;  // one line each, already "file:line: ..." formatted
+};
+
+struct LoadedMesh {
+  TriangleMesh mesh;                    // triangle_materials index into `materials` (may be empty)
+  std::vector<MaterialDesc> materials;  // from MTL files, in first-use order
+  MeshLoadStats stats;
+};
+
+// Chooses the format by extension (.obj, .ply). Throws InputError for missing or malformed files.
+LoadedMesh load_mesh_file(const std::filesystem::path& file);
+
+}  // namespace rtpro

@@ -1,0 +1,65 @@
+#pragma once
+// The immutable render scene: everything a backend and the shading need, fully loaded, with
+// instances flattened to one level (top-level group → prototype groups).
+#include "rtpro/core/bbox.h"
+#include "rtpro/core/transform.h"
+#include "rtpro/scene/description.h"
+#include "rtpro/scene/mesh.h"
+
+#include <cstdint>
+#include <variant>
+#include <vector>
+
+namespace rtpro {
+
+struct Sphere {
+  Vec3 center;
+  float radius;
+  std::uint32_t material;
+};
+
+struct SphereSet {
+  std::vector<Sphere> spheres;
+  BBox sphere_bounds(std::uint32_t i) const;
+};
+
+struct Instance {
+  std::uint32_t prototype;  // index into RenderScene::prototypes
+  Affine object_to_world;
+  Affine world_to_object;
+};
+
+// One geometry of a group; its index in the group is the geometry id a hit reports.
+using Geometry = std::variant<SphereSet, TriangleMesh, Instance>;
+
+enum class GeometryKind : std::uint8_t { kSpheres = 0, kTriangles = 1, kInstance = 2 };
+inline GeometryKind kind_of(const Geometry& g) { return static_cast<GeometryKind>(g.index()); }
+
+struct Group {
+  std::vector<Geometry> geometries;
+  // Primitive count of geometry g (spheres, triangles, or 1 for an instance).
+  std::uint32_t primitive_count(std::uint32_t g) const;
+  BBox primitive_bounds(std::uint32_t g, std::uint32_t prim, const std::vector<Group>& prototypes) const;
+  BBox bounds(const std::vector<Group>& prototypes) const;
+};
+
+struct Material {
+  Color color;
+  float specular;
+  float shininess;
+  float reflectivity;
+};
+
+struct RenderScene {
+  CameraDesc camera;
+  RenderSettings render;
+  std::vector<Material> materials;
+  std::vector<std::string> material_names;
+  std::vector<LightDesc> lights;
+  Group top;                     // may contain instances
+  std::vector<Group> prototypes; // never contain instances
+
+  BBox bounds() const { return top.bounds(prototypes); }
+};
+
+}  // namespace rtpro

@@ -1,0 +1,30 @@
+#pragma once
+// What a render scene holds, counted without rendering: for `rtpro info` and statistics.
+#include "rtpro/core/bbox.h"
+#include "rtpro/scene/render_scene.h"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace rtpro {
+
+struct SceneSummary {
+  std::size_t materials = 0;
+  std::size_t point_lights = 0;
+  std::size_t directional_lights = 0;
+  std::size_t prototypes = 0;
+  std::size_t instances = 0;
+  std::size_t meshes = 0;                 // stored meshes (top level and in prototypes)
+  std::uint64_t spheres_stored = 0;       // each stored once
+  std::uint64_t triangles_stored = 0;
+  std::uint64_t vertices_stored = 0;
+  std::uint64_t spheres_rendered = 0;     // after instancing: what the camera can see
+  std::uint64_t triangles_rendered = 0;
+  BBox bounds;
+  std::size_t geometry_bytes = 0;         // spheres, vertices, indices, normals, materials
+  std::size_t estimated_bvh_bytes = 0;    // native BVH, from primitive counts
+};
+
+SceneSummary summarize(const RenderScene& scene);
+
+}  // namespace rtpro

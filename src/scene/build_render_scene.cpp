@@ -1,0 +1,127 @@
+#include "rtpro/scene/build_render_scene.h"
+
+#include "rtpro/core/error.h"
+
+#include <chrono>
+#include <map>
+#include <optional>
+
+namespace rtpro {
+
+namespace {
+
+class RenderSceneBuilder {
+ public:
+  RenderSceneBuilder(const SceneDescription& description, SceneBuildReport* report)
+      : description_(description), report_(report) {}
+
+  RenderScene build() {
+    scene_.camera = description_.camera;
+    scene_.render = description_.render;
+    scene_.lights = description_.lights;
+    for (const MaterialDesc& m : description_.materials) add_material(m, m.name);
+
+    prototype_of_object_.assign(description_.objects.size(), std::nullopt);
+    add_own_shapes(description_.world, scene_.top);
+    for (const InstanceDesc& instance : description_.world.instances)
+      flatten_instance(instance.object, instance.transform, instance.where);
+    if (report_) report_->flattened_instances = flattened_;
+    return std::move(scene_);
+  }
+
+ private:
+  std::uint32_t add_material(const MaterialDesc& m, const std::string& name) {
+    scene_.materials.push_back({m.color, m.specular, m.shininess, m.reflectivity});
+    scene_.material_names.push_back(name);
+    return static_cast<std::uint32_t>(scene_.materials.size() - 1);
+  }
+
+  // Spheres and meshes that belong to `object` itself (not through its instances).
+  void add_own_shapes(const ObjectDesc& object, Group& group) {
+    if (!object.spheres.empty()) {
+      SphereSet set;
+      set.spheres.reserve(object.spheres.size());
+      for (const SphereDesc& s : object.spheres) set.spheres.push_back({s.center, s.radius, s.material});
+      group.geometries.emplace_back(std::move(set));
+    }
+    for (const MeshDesc& mesh : object.meshes) group.geometries.emplace_back(load_mesh(mesh));
+  }
+
+  TriangleMesh load_mesh(const MeshDesc& desc) {
+    const auto start = std::chrono::steady_clock::now();
+    LoadedMesh loaded = [&] {
+      try {
+        return load_mesh_file(desc.file);
+      } catch (const InputError& e) {
+        if (!e.where().file.empty()) throw;
+        throw InputError(desc.where, e.message());
+      }
+    }();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    TriangleMesh mesh = std::move(loaded.mesh);
+    if (desc.material != kNoMaterial) {
+      mesh.triangle_materials.clear();
+      mesh.triangle_materials.shrink_to_fit();
+      mesh.material = desc.material;
+    } else if (loaded.materials.empty()) {
+      mesh.triangle_materials.clear();
+      mesh.material = 0;  // the scene's "default" material
+    } else {
+      // The file's MTL materials join the scene's list; remap the mesh's local indices.
+      std::vector<std::uint32_t> remap;
+      for (const MaterialDesc& m : loaded.materials)
+        remap.push_back(add_material(m, desc.file.filename().string() + ":" + m.name));
+      mesh.material = remap[std::min<std::size_t>(mesh.material, remap.size() - 1)];
+      for (std::uint32_t& m : mesh.triangle_materials) m = remap[m];
+    }
+    if (report_) report_->meshes.push_back({desc.file.string(), loaded.stats, seconds});
+    return mesh;
+  }
+
+  // The prototype holding an object's own shapes, created on first use; none if it has none.
+  std::optional<std::uint32_t> prototype_of(std::uint32_t object) {
+    if (!prototype_of_object_[object]) {
+      Group group;
+      add_own_shapes(description_.objects[object], group);
+      if (group.geometries.empty()) {
+        prototype_of_object_[object] = kInvalidPrototype;
+      } else {
+        scene_.prototypes.push_back(std::move(group));
+        prototype_of_object_[object] = static_cast<std::uint32_t>(scene_.prototypes.size() - 1);
+      }
+    }
+    const std::uint32_t id = *prototype_of_object_[object];
+    if (id == kInvalidPrototype) return std::nullopt;
+    return id;
+  }
+
+  void flatten_instance(std::uint32_t object, const Affine& to_world, const SourceLocation& where) {
+    if (const auto prototype = prototype_of(object)) {
+      if (++flattened_ > kMaxFlattenedInstances)
+        throw InputError(where, "instancing expands to more than " + std::to_string(kMaxFlattenedInstances) +
+                                    " instances after flattening nested instances");
+      const auto inverse_transform = inverse(to_world);
+      if (!inverse_transform)
+        throw InputError(where, "instance transform (combined with its parents) is singular or not finite");
+      scene_.top.geometries.emplace_back(Instance{*prototype, to_world, *inverse_transform});
+    }
+    for (const InstanceDesc& nested : description_.objects[object].instances)
+      flatten_instance(nested.object, compose(to_world, nested.transform), nested.where);
+  }
+
+  static constexpr std::uint32_t kInvalidPrototype = ~0u;
+  const SceneDescription& description_;
+  SceneBuildReport* report_;
+  RenderScene scene_;
+  std::vector<std::optional<std::uint32_t>> prototype_of_object_;
+  std::size_t flattened_ = 0;
+};
+
+}  // namespace
+
+RenderScene build_render_scene(const SceneDescription& description, SceneBuildReport* report) {
+  return RenderSceneBuilder(description, report).build();
+}
+
+}  // namespace rtpro

@@ -1,0 +1,68 @@
+#include "rtpro/scene/scene_summary.h"
+
+#include <variant>
+
+namespace rtpro {
+
+namespace {
+
+struct GroupCounts {
+  std::uint64_t spheres = 0, triangles = 0;
+};
+
+GroupCounts count_shapes(const Group& group, SceneSummary& summary, std::size_t& primitives) {
+  GroupCounts counts;
+  for (const Geometry& g : group.geometries) {
+    if (const auto* set = std::get_if<SphereSet>(&g)) {
+      counts.spheres += set->spheres.size();
+      summary.geometry_bytes += set->spheres.capacity() * sizeof(Sphere);
+      primitives += set->spheres.size();
+    } else if (const auto* mesh = std::get_if<TriangleMesh>(&g)) {
+      ++summary.meshes;
+      counts.triangles += mesh->triangles.size();
+      summary.vertices_stored += mesh->vertices.size();
+      summary.geometry_bytes += mesh->memory_bytes();
+      primitives += mesh->triangles.size();
+    } else {
+      ++primitives;
+    }
+  }
+  return counts;
+}
+
+}  // namespace
+
+SceneSummary summarize(const RenderScene& scene) {
+  SceneSummary s;
+  s.materials = scene.materials.size();
+  for (const LightDesc& light : scene.lights) {
+    if (std::holds_alternative<PointLightDesc>(light)) ++s.point_lights;
+    else ++s.directional_lights;
+  }
+  s.prototypes = scene.prototypes.size();
+
+  std::size_t primitives = 0;
+  const GroupCounts top = count_shapes(scene.top, s, primitives);
+  std::vector<GroupCounts> per_prototype;
+  for (const Group& prototype : scene.prototypes) per_prototype.push_back(count_shapes(prototype, s, primitives));
+
+  s.spheres_stored = s.spheres_rendered = top.spheres;
+  s.triangles_stored = s.triangles_rendered = top.triangles;
+  for (const GroupCounts& c : per_prototype) {
+    s.spheres_stored += c.spheres;
+    s.triangles_stored += c.triangles;
+  }
+  for (const Geometry& g : scene.top.geometries) {
+    if (const auto* instance = std::get_if<Instance>(&g)) {
+      ++s.instances;
+      s.spheres_rendered += per_prototype[instance->prototype].spheres;
+      s.triangles_rendered += per_prototype[instance->prototype].triangles;
+    }
+  }
+  s.bounds = scene.bounds();
+  // The native BVH: one 8-byte reference per primitive and about one 32-byte node per two.
+  s.estimated_bvh_bytes = primitives * (8 + 16);
+  return s;
+}
+
+}  // namespace rtpro
