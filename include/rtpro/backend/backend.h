@@ -1,0 +1,56 @@
+#pragma once
+// The backend interface: the only thing that differs between `native` and `embree`. A backend
+// is built once from an immutable render scene and answers "closest hit" and "any hit".
+#include "rtpro/backend/hit.h"
+#include "rtpro/core/ray.h"
+#include "rtpro/scene/render_scene.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace rtpro {
+
+struct BackendStats {
+  double build_seconds = 0.0;
+  std::size_t acceleration_bytes = 0;  // BVH and backend-side copies; not the shared mesh arrays
+  std::uint64_t rejected_rays = 0;     // rays refused by is_traceable()
+};
+
+enum class BackendKind { kNative, kEmbree };
+
+struct BackendOptions {
+  int threads = 0;                 // 0: all cores
+  std::string embree_quality = "medium";  // low | medium | high
+  bool embree_robust = true;
+  std::size_t max_memory_bytes = 0;       // 0: no limit
+};
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+  virtual std::string_view name() const = 0;
+
+  // Closest hit in (ray.tnear, ray.tfar]; false when nothing is hit. Untraceable rays miss and
+  // are counted as rejected.
+  virtual bool intersect(const Ray& ray, Hit& hit) const = 0;
+  // Whether anything lies in (ray.tnear, ray.tfar).
+  virtual bool occluded(const Ray& ray) const = 0;
+
+  // Batched closest hits (e.g. a tile of camera rays); backends may override with packets.
+  virtual void intersect(std::span<const Ray> rays, std::span<Hit> hits, std::span<bool> found) const {
+    for (std::size_t i = 0; i < rays.size(); ++i) found[i] = intersect(rays[i], hits[i]);
+  }
+
+  virtual BackendStats stats() const = 0;
+};
+
+// Builds the chosen backend for `scene`, which must outlive it.
+std::unique_ptr<Backend> make_backend(BackendKind kind, const RenderScene& scene, const BackendOptions& options);
+BackendKind parse_backend_kind(std::string_view name);  // throws InputError
+std::string_view backend_name(BackendKind kind);
+
+}  // namespace rtpro

@@ -1,0 +1,10 @@
+#pragma once
+#include "rtpro/backend/backend.h"
+
+#include <memory>
+
+namespace rtpro {
+
+std::unique_ptr<Backend> make_native_backend(const RenderScene& scene, const BackendOptions& options);
+
+}  // namespace rtpro

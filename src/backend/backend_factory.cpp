@@ -1,0 +1,25 @@
+#include "rtpro/backend/backend.h"
+
+#include "rtpro/backend/embree_backend.h"
+#include "rtpro/backend/native_backend.h"
+#include "rtpro/core/error.h"
+
+namespace rtpro {
+
+std::unique_ptr<Backend> make_backend(BackendKind kind, const RenderScene& scene, const BackendOptions& options) {
+  switch (kind) {
+    case BackendKind::kNative: return make_native_backend(scene, options);
+    case BackendKind::kEmbree: return make_embree_backend(scene, options);
+  }
+  throw RuntimeError("unknown backend");
+}
+
+BackendKind parse_backend_kind(std::string_view name) {
+  if (name == "native") return BackendKind::kNative;
+  if (name == "embree") return BackendKind::kEmbree;
+  throw InputError("unknown backend '" + std::string(name) + "': expected 'embree' or 'native'");
+}
+
+std::string_view backend_name(BackendKind kind) { return kind == BackendKind::kNative ? "native" : "embree"; }
+
+}  // namespace rtpro

@@ -1,0 +1,220 @@
+// The native backend: the reference answer. One BVH per group; instances transform the ray into
+// object space and descend into their prototype's BVH. Kept simple and plainly correct.
+#include "rtpro/backend/native_backend.h"
+
+#include "rtpro/backend/bvh.h"
+#include "rtpro/geometry/sphere_intersect.h"
+#include "rtpro/geometry/triangle_intersect.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace rtpro {
+
+namespace {
+
+// Precomputed per-ray data for the slab test.
+struct RayBoxData {
+  Vec3 inv_dir;
+  int dir_negative[3];
+};
+
+RayBoxData prepare(const Ray& ray) {
+  RayBoxData d;
+  d.inv_dir = {1.0f / ray.dir.x, 1.0f / ray.dir.y, 1.0f / ray.dir.z};
+  for (int a = 0; a < 3; ++a) d.dir_negative[a] = d.inv_dir[a] < 0.0f;
+  return d;
+}
+
+// Slab test; NaNs from 0·∞ are ignored by the comparison order. The far distance is enlarged by
+// 2·gamma(3) (pbrt) so float rounding never culls a box that the ray actually touches.
+bool hits_box(const BBox& box, const Ray& ray, const RayBoxData& d, float tmax) {
+  constexpr float kRoundingSlack = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
+  float t0 = ray.tnear, t1 = tmax;
+  for (int a = 0; a < 3; ++a) {
+    float tn = (box.lower[a] - ray.org[a]) * d.inv_dir[a];
+    float tf = (box.upper[a] - ray.org[a]) * d.inv_dir[a];
+    if (tn > tf) std::swap(tn, tf);
+    tf *= kRoundingSlack;
+    t0 = tn > t0 ? tn : t0;
+    t1 = tf < t1 ? tf : t1;
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+class NativeBackend final : public Backend {
+ public:
+  NativeBackend(const RenderScene& scene) : scene_(scene) {
+    const auto start = std::chrono::steady_clock::now();
+    top_bvh_ = build_bvh(scene.top, scene.prototypes);
+    prototype_bvhs_.reserve(scene.prototypes.size());
+    for (const Group& prototype : scene.prototypes) prototype_bvhs_.push_back(build_bvh(prototype, scene.prototypes));
+    build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  std::string_view name() const override { return "native"; }
+
+  bool intersect(const Ray& ray, Hit& hit) const override {
+    if (!accept(ray)) return false;
+    Hit best;
+    float best_t = ray.tfar;
+    closest_in_group(scene_.top, top_bvh_, ray, kInvalidId, best, best_t);
+    if (!best.valid()) return false;
+    best.t = best_t;
+    hit = best;
+    return true;
+  }
+
+  bool occluded(const Ray& ray) const override {
+    if (!accept(ray)) return false;
+    return any_in_group(scene_.top, top_bvh_, ray);
+  }
+
+  BackendStats stats() const override {
+    BackendStats s;
+    s.build_seconds = build_seconds_;
+    s.acceleration_bytes = top_bvh_.memory_bytes();
+    for (const Bvh& bvh : prototype_bvhs_) s.acceleration_bytes += bvh.memory_bytes();
+    s.rejected_rays = rejected_rays_.load(std::memory_order_relaxed);
+    return s;
+  }
+
+ private:
+  bool accept(const Ray& ray) const {
+    if (is_traceable(ray)) return true;
+    rejected_rays_.fetch_add(1, std::memory_order_relaxed);
+    return false;
+  }
+
+  static Ray to_object_space(const Instance& instance, const Ray& ray, float tfar) {
+    // The direction is not renormalised, so distances t mean the same in both spaces.
+    return {instance.world_to_object.apply_point(ray.org), ray.tnear,
+            instance.world_to_object.apply_vector(ray.dir), tfar};
+  }
+
+  // Visits every leaf reference whose node box the ray enters, nearest child first;
+  // `visit(ref, tmax)` returns false to stop early. `tmax` is re-read after each leaf.
+  template <typename Visit>
+  static void traverse(const Bvh& bvh, const Ray& ray, const float& tmax, Visit&& visit) {
+    if (bvh.nodes.empty()) return;
+    const RayBoxData box_data = prepare(ray);
+    std::uint32_t stack[kBvhMaxDepth + 1];
+    int top = 0;
+    std::uint32_t node_index = 0;
+    for (;;) {
+      const BvhNode& node = bvh.nodes[node_index];
+      if (hits_box(node.bounds, ray, box_data, tmax)) {
+        if (node.is_leaf()) {
+          for (std::uint32_t i = 0; i < node.count; ++i)
+            if (!visit(bvh.refs[node.index + i])) return;
+        } else {
+          // Descend into the child on the ray's near side first.
+          const std::uint32_t near_child = node.index + box_data.dir_negative[node.axis];
+          stack[top++] = node.index + 1 - box_data.dir_negative[node.axis];
+          node_index = near_child;
+          continue;
+        }
+      }
+      if (top == 0) return;
+      node_index = stack[--top];
+    }
+  }
+
+  void closest_in_group(const Group& group, const Bvh& bvh, const Ray& ray, std::uint32_t inst, Hit& best,
+                        float& best_t) const {
+    traverse(bvh, ray, best_t, [&](const PrimitiveRef& ref) {
+      const Geometry& geometry = group.geometries[ref.geom];
+      switch (kind_of(geometry)) {
+        case GeometryKind::kSpheres: {
+          const Sphere& s = std::get<SphereSet>(geometry).spheres[ref.prim];
+          float t;
+          if (intersect_sphere(s.center, s.radius, ray.org, ray.dir, ray.tnear, best_t, t) &&
+              is_closer(t, inst, ref.geom, ref.prim, best, best_t)) {
+            best_t = t;
+            best.u = best.v = 0.0f;
+            best.inst_id = inst;
+            best.geom_id = ref.geom;
+            best.prim_id = ref.prim;
+          }
+          break;
+        }
+        case GeometryKind::kTriangles: {
+          const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
+          const TriangleIndices& tri = mesh.triangles[ref.prim];
+          TriangleHit th;
+          if (intersect_triangle(mesh.vertex(tri.v0), mesh.vertex(tri.v1), mesh.vertex(tri.v2), ray.org, ray.dir,
+                                 ray.tnear, best_t, th) &&
+              is_closer(th.t, inst, ref.geom, ref.prim, best, best_t)) {
+            best_t = th.t;
+            best.u = th.u;
+            best.v = th.v;
+            best.inst_id = inst;
+            best.geom_id = ref.geom;
+            best.prim_id = ref.prim;
+          }
+          break;
+        }
+        case GeometryKind::kInstance: {
+          const Instance& instance = std::get<Instance>(geometry);
+          const Ray local = to_object_space(instance, ray, best_t);
+          if (is_traceable(local))
+            closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local,
+                             ref.geom, best, best_t);
+          break;
+        }
+      }
+      return true;
+    });
+  }
+
+  bool any_in_group(const Group& group, const Bvh& bvh, const Ray& ray) const {
+    bool found = false;
+    const float tfar = ray.tfar;
+    traverse(bvh, ray, tfar, [&](const PrimitiveRef& ref) {
+      const Geometry& geometry = group.geometries[ref.geom];
+      switch (kind_of(geometry)) {
+        case GeometryKind::kSpheres: {
+          const Sphere& s = std::get<SphereSet>(geometry).spheres[ref.prim];
+          float t;
+          found = intersect_sphere(s.center, s.radius, ray.org, ray.dir, ray.tnear, tfar, t) && t < tfar;
+          break;
+        }
+        case GeometryKind::kTriangles: {
+          const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
+          const TriangleIndices& tri = mesh.triangles[ref.prim];
+          TriangleHit th;
+          found = intersect_triangle(mesh.vertex(tri.v0), mesh.vertex(tri.v1), mesh.vertex(tri.v2), ray.org, ray.dir,
+                                     ray.tnear, tfar, th) &&
+                  th.t < tfar;
+          break;
+        }
+        case GeometryKind::kInstance: {
+          const Instance& instance = std::get<Instance>(geometry);
+          const Ray local = to_object_space(instance, ray, tfar);
+          found = is_traceable(local) && any_in_group(scene_.prototypes[instance.prototype],
+                                                      prototype_bvhs_[instance.prototype], local);
+          break;
+        }
+      }
+      return !found;
+    });
+    return found;
+  }
+
+  const RenderScene& scene_;
+  Bvh top_bvh_;
+  std::vector<Bvh> prototype_bvhs_;
+  double build_seconds_ = 0.0;
+  mutable std::atomic<std::uint64_t> rejected_rays_{0};
+};
+
+}  // namespace
+
+std::unique_ptr<Backend> make_native_backend(const RenderScene& scene, const BackendOptions&) {
+  return std::make_unique<NativeBackend>(scene);
+}
+
+}  // namespace rtpro
