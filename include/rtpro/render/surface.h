@@ -1,0 +1,23 @@
+#pragma once
+// Shared after-the-hit code: turns a backend's compact hit record into a shading point.
+// Both backends feed the same function, so everything downstream of the hit is identical.
+#include "rtpro/backend/hit.h"
+#include "rtpro/core/ray.h"
+#include "rtpro/scene/render_scene.h"
+
+#include <cstdint>
+
+namespace rtpro {
+
+struct SurfacePoint {
+  Vec3 position;
+  Vec3 geometric_normal;  // unit, facing the side the ray came from
+  Vec3 shading_normal;    // unit, in the same hemisphere as geometric_normal
+  float position_error;   // conservative bound on the rounding error of each coordinate
+  std::uint32_t material;
+  std::uint32_t object_id;  // top-level geometry (the instance, for instanced hits)
+};
+
+SurfacePoint make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit);
+
+}  // namespace rtpro

@@ -1,0 +1,80 @@
+#include "rtpro/render/film.h"
+
+#include "rtpro/core/error.h"
+
+#include <cmath>
+
+namespace rtpro {
+
+Aov parse_aov(std::string_view name) {
+  if (name == "albedo") return Aov::kAlbedo;
+  if (name == "normal") return Aov::kNormal;
+  if (name == "depth") return Aov::kDepth;
+  if (name == "object-id") return Aov::kObjectId;
+  throw InputError("unknown AOV '" + std::string(name) + "': expected albedo, normal, depth or object-id");
+}
+
+std::vector<std::string> aov_channel_names(Aov aov) {
+  switch (aov) {
+    case Aov::kAlbedo: return {"albedo.R", "albedo.G", "albedo.B"};
+    case Aov::kNormal: return {"N.X", "N.Y", "N.Z"};
+    case Aov::kDepth: return {"depth.Z"};
+    case Aov::kObjectId: return {"object_id.id"};
+  }
+  return {};
+}
+
+void PixelAccumulator::add(const Color& sample_radiance, const PrimaryHit& primary) {
+  radiance += sample_radiance;
+  if (!has_first) {
+    has_first = true;
+    first_object_id = primary.hit ? primary.object_id + 1 : 0;
+  }
+  if (!primary.hit) return;
+  albedo += primary.albedo;
+  normal += primary.normal;
+  depth_sum += primary.depth;
+  ++hits;
+}
+
+namespace {
+std::vector<std::string> channels_for(const std::vector<Aov>& aovs) {
+  std::vector<std::string> channels{"R", "G", "B"};
+  for (Aov aov : aovs)
+    for (std::string& name : aov_channel_names(aov)) channels.push_back(std::move(name));
+  return channels;
+}
+}  // namespace
+
+Film::Film(int width, int height, std::vector<Aov> aovs)
+    : image_(width, height, channels_for(aovs)), aovs_(std::move(aovs)) {}
+
+void Film::set_pixel(int x, int y, const PixelAccumulator& acc, int samples) {
+  const float inv = 1.0f / static_cast<float>(samples);
+  float* out = &image_.at(x, y, 0);
+  *out++ = acc.radiance.x * inv;
+  *out++ = acc.radiance.y * inv;
+  *out++ = acc.radiance.z * inv;
+  for (Aov aov : aovs_) {
+    switch (aov) {
+      case Aov::kAlbedo:
+        // Averaged over all samples: background counts as black albedo, like coverage.
+        *out++ = acc.albedo.x * inv;
+        *out++ = acc.albedo.y * inv;
+        *out++ = acc.albedo.z * inv;
+        break;
+      case Aov::kNormal: {
+        const float len = length(acc.normal);
+        const Vec3 n = len > 0.0f ? acc.normal / len : Vec3(0.0f);
+        *out++ = n.x;
+        *out++ = n.y;
+        *out++ = n.z;
+        break;
+      }
+      case Aov::kDepth: *out++ = acc.hits > 0 ? acc.depth_sum / static_cast<float>(acc.hits) : 0.0f; break;
+      case Aov::kObjectId: *out++ = static_cast<float>(acc.first_object_id); break;
+    }
+  }
+}
+
+}  // namespace rtpro

@@ -1,0 +1,92 @@
+#include "rtpro/render/surface.h"
+
+#include <cmath>
+
+namespace rtpro {
+
+namespace {
+
+// Relative rounding error allowed for a computed surface point: covers the float rounding of the
+// hit distance, the re-projection onto the sphere, barycentric interpolation and an instance
+// transform, each a handful of ulps of the largest magnitude involved.
+constexpr float kRelativePositionError = 0x1p-18f;
+
+float magnitude(const Vec3& v) { return max_component(abs(v)); }
+
+struct LocalSurface {
+  Vec3 position;
+  Vec3 geometric_normal;  // not necessarily unit
+  Vec3 shading_normal;    // not necessarily unit
+  float magnitude;        // largest coordinate magnitude that fed the computation
+  std::uint32_t material;
+};
+
+LocalSurface sphere_surface(const Sphere& s, const Ray& ray, float t) {
+  // Re-project onto the sphere: removes most of the error of org + t·dir.
+  const Vec3 p = ray.at(t);
+  const Vec3 from_center = p - s.center;
+  const float len = length(from_center);
+  const Vec3 n = len > 0.0f ? from_center / len : Vec3(0.0f, 1.0f, 0.0f);
+  const Vec3 on_surface = s.center + n * s.radius;
+  return {on_surface, n, n, std::max(magnitude(on_surface), magnitude(s.center) + s.radius), s.material};
+}
+
+LocalSurface triangle_surface(const TriangleMesh& mesh, std::uint32_t prim, float u, float v) {
+  const TriangleIndices& tri = mesh.triangles[prim];
+  const Vec3 p0 = mesh.vertex(tri.v0), p1 = mesh.vertex(tri.v1), p2 = mesh.vertex(tri.v2);
+  const float w = 1.0f - u - v;
+  const Vec3 p = p0 * w + p1 * u + p2 * v;
+  const Vec3 ng = cross(p1 - p0, p2 - p0);
+  Vec3 ns = ng;
+  if (!mesh.normals.empty()) ns = mesh.normals[tri.v0] * w + mesh.normals[tri.v1] * u + mesh.normals[tri.v2] * v;
+  const float mag = std::max(magnitude(p0), std::max(magnitude(p1), magnitude(p2)));
+  return {p, ng, ns, mag, mesh.material_of(prim)};
+}
+
+LocalSurface local_surface(const Group& group, const Hit& hit, const Ray& local_ray) {
+  const Geometry& geometry = group.geometries[hit.geom_id];
+  if (kind_of(geometry) == GeometryKind::kSpheres)
+    return sphere_surface(std::get<SphereSet>(geometry).spheres[hit.prim_id], local_ray, hit.t);
+  return triangle_surface(std::get<TriangleMesh>(geometry), hit.prim_id, hit.u, hit.v);
+}
+
+Vec3 safe_normalize(const Vec3& v, const Vec3& fallback) {
+  const float len = length(v);
+  return len > 0.0f && std::isfinite(len) ? v / len : fallback;
+}
+
+}  // namespace
+
+SurfacePoint make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit) {
+  SurfacePoint sp;
+  LocalSurface local;
+  if (hit.inst_id == kInvalidId) {
+    local = local_surface(scene.top, hit, ray);
+    sp.object_id = hit.geom_id;
+  } else {
+    const Instance& instance = std::get<Instance>(scene.top.geometries[hit.inst_id]);
+    const Ray object_ray{instance.world_to_object.apply_point(ray.org), ray.tnear,
+                         instance.world_to_object.apply_vector(ray.dir), ray.tfar};
+    local = local_surface(scene.prototypes[instance.prototype], hit, object_ray);
+    local.position = instance.object_to_world.apply_point(local.position);
+    local.geometric_normal = instance.world_to_object.apply_normal_of_inverse(local.geometric_normal);
+    local.shading_normal = instance.world_to_object.apply_normal_of_inverse(local.shading_normal);
+    // The transform adds error proportional to the translation and the transformed magnitude.
+    local.magnitude = std::max(local.magnitude, magnitude(local.position)) * 4.0f;
+    sp.object_id = hit.inst_id;
+  }
+
+  sp.position = local.position;
+  sp.material = local.material;
+  sp.position_error = kRelativePositionError * std::max(local.magnitude, magnitude(local.position));
+
+  Vec3 ng = safe_normalize(local.geometric_normal, -normalize(ray.dir));
+  if (dot(ng, ray.dir) > 0.0f) ng = -ng;
+  Vec3 ns = safe_normalize(local.shading_normal, ng);
+  if (dot(ns, ng) < 0.0f) ns = -ns;
+  sp.geometric_normal = ng;
+  sp.shading_normal = ns;
+  return sp;
+}
+
+}  // namespace rtpro

@@ -1,0 +1,115 @@
+// Spawned rays must never re-hit the surface they leave ("shadow acne"), at any scene scale and
+// distance from the origin, for spheres, triangles and instances alike.
+#include "rtpro/render/ray_offset.h"
+
+#include "rtpro/backend/native_backend.h"
+#include "rtpro/render/surface.h"
+#include "test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace rtpro {
+namespace {
+
+struct ScaleCase {
+  float extent;
+  float offset;  // distance of the whole scene from the world origin
+};
+
+RenderScene scene_at_scale(const ScaleCase& c, std::uint32_t seed) {
+  RenderScene scene = test::random_mixed_scene(seed, 200, 200, 20);
+  const Affine placement = compose(Affine::translate(Vec3(c.offset)), Affine::scale(Vec3(c.extent / 4.0f)));
+  // Re-home every top-level geometry by wrapping the whole scene in one placement.
+  for (Geometry& g : scene.top.geometries) {
+    if (auto* set = std::get_if<SphereSet>(&g)) {
+      for (Sphere& s : set->spheres) {
+        s.center = placement.apply_point(s.center);
+        s.radius *= c.extent / 4.0f;
+      }
+    } else if (auto* mesh = std::get_if<TriangleMesh>(&g)) {
+      for (PaddedVertex& v : mesh->vertices) {
+        const Vec3 p = placement.apply_point(v.position());
+        v = {p.x, p.y, p.z, 0.0f};
+      }
+    } else if (auto* instance = std::get_if<Instance>(&g)) {
+      instance->object_to_world = compose(placement, instance->object_to_world);
+      instance->world_to_object = *inverse(instance->object_to_world);
+    }
+  }
+  return scene;
+}
+
+// Whether `org` lies outside the sphere the hit refers to (re-hits from inside are legitimate).
+bool started_outside_hit_sphere(const RenderScene& scene, const Ray& ray, const Hit& hit) {
+  const Group& group = hit.inst_id == kInvalidId
+                           ? scene.top
+                           : scene.prototypes[std::get<Instance>(scene.top.geometries[hit.inst_id]).prototype];
+  const auto* set = std::get_if<SphereSet>(&group.geometries[hit.geom_id]);
+  if (!set) return true;
+  Vec3 org = ray.org;
+  if (hit.inst_id != kInvalidId)
+    org = std::get<Instance>(scene.top.geometries[hit.inst_id]).world_to_object.apply_point(org);
+  const Sphere& s = set->spheres[hit.prim_id];
+  return length(org - s.center) > s.radius * 1.001f;
+}
+
+bool same_primitive(const Hit& a, const Hit& b) {
+  return a.inst_id == b.inst_id && a.geom_id == b.geom_id && a.prim_id == b.prim_id;
+}
+
+class RayOffsetTest : public ::testing::TestWithParam<ScaleCase> {};
+
+TEST_P(RayOffsetTest, SpawnedRaysNeverReHitTheirOwnSurface) {
+  const ScaleCase c = GetParam();
+  const RenderScene scene = scene_at_scale(c, 11);
+  const auto backend = make_native_backend(scene, {});
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  int surfaces = 0, spawned = 0;
+  for (int i = 0; i < 4000; ++i) {
+    Ray ray = test::random_ray(rng, c.extent);
+    ray.org = ray.org + Vec3(c.offset);
+    Hit hit;
+    if (!backend->intersect(ray, hit) || !started_outside_hit_sphere(scene, ray, hit)) continue;
+    ++surfaces;
+    const SurfacePoint sp = make_surface(scene, ray, hit);
+    for (int k = 0; k < 8; ++k) {
+      Vec3 d{unit(rng), unit(rng), unit(rng)};
+      if (length(d) < 1e-3f) continue;
+      d = normalize(d);
+      if (dot(d, sp.geometric_normal) < 0.0f) d = -d;
+      Hit again;
+      ++spawned;
+      const Ray leaving = spawn_ray(sp, d);
+      ASSERT_FALSE(backend->intersect(leaving, again) && same_primitive(again, hit))
+          << "re-hit at t=" << again.t << " scale " << c.extent << " offset " << c.offset;
+      // Shadow rays towards a point up to 100 extents away must not be blocked by the surface.
+      const Vec3 target = sp.position + d * (c.extent * 100.0f * (0.5f + 0.5f * unit(rng)));
+      const Ray to_light = spawn_ray_to(sp, target);
+      if (backend->intersect(to_light, again)) {
+        ASSERT_FALSE(same_primitive(again, hit));
+      }
+    }
+  }
+  EXPECT_GT(surfaces, 500);
+  EXPECT_GT(spawned, 4000);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scales, RayOffsetTest,
+                         ::testing::Values(ScaleCase{1.0f, 0.0f}, ScaleCase{0.01f, 0.0f}, ScaleCase{1000.0f, 0.0f},
+                                           ScaleCase{1.0f, 10000.0f}, ScaleCase{50.0f, -2.0e5f}));
+
+TEST(RayOffset, OriginMovesToTheSideTheRayLeavesFrom) {
+  SurfacePoint sp{};
+  sp.position = {0, 0, 0};
+  sp.geometric_normal = {0, 0, 1};
+  sp.shading_normal = {0, 0, 1};
+  sp.position_error = 1e-4f;
+  EXPECT_GT(offset_ray_origin(sp, {0, 0, 1}).z, 0.0f);
+  EXPECT_LT(offset_ray_origin(sp, {0, 0, -1}).z, 0.0f);
+}
+
+}  // namespace
+}  // namespace rtpro

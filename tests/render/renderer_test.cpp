@@ -1,0 +1,115 @@
+#include "rtpro/render/renderer.h"
+
+#include "rtpro/backend/native_backend.h"
+#include "test_scenes.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cstring>
+
+namespace rtpro {
+namespace {
+
+RenderScene test_scene() {
+  RenderScene scene = test::random_mixed_scene(21, 300, 300, 10);
+  scene.camera.width = 48;
+  scene.camera.height = 32;
+  scene.render.spp = 4;
+  return scene;
+}
+
+RenderResult render_with(const RenderScene& scene, int threads, int tile_size, std::vector<Aov> aovs = {}) {
+  tbb::global_control cap(tbb::global_control::max_allowed_parallelism, threads);
+  const auto backend = make_native_backend(scene, {});
+  RenderOptions options;
+  options.tile_size = tile_size;
+  options.aovs = std::move(aovs);
+  return render_image(scene, *backend, options);
+}
+
+bool bit_identical(const Image& a, const Image& b) {
+  return a.width == b.width && a.height == b.height && a.channels == b.channels &&
+         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
+}
+
+TEST(Renderer, ImageIsIndependentOfThreadsAndTiles) {
+  const RenderScene scene = test_scene();
+  const RenderResult one = render_with(scene, 1, 32);
+  const RenderResult two = render_with(scene, 2, 32);
+  const RenderResult odd_tiles = render_with(scene, 2, 7);
+  EXPECT_TRUE(bit_identical(one.image, two.image));
+  EXPECT_TRUE(bit_identical(one.image, odd_tiles.image));
+  EXPECT_EQ(one.rays.total(), two.rays.total());
+  EXPECT_EQ(one.rays.camera, 48u * 32u * 4u);
+  EXPECT_GT(one.rays.shadow, 0u);
+  EXPECT_GT(one.rays.reflection, 0u);
+  EXPECT_TRUE(one.complete());
+}
+
+TEST(Renderer, ImageIsNotBlankAndSeedChangesTheNoise) {
+  RenderScene scene = test_scene();
+  const RenderResult a = render_with(scene, 2, 16);
+  scene.render.seed = 99;
+  const RenderResult b = render_with(scene, 2, 16);
+  float sum = 0.0f;
+  for (float v : a.image.data) sum += v;
+  EXPECT_GT(sum, 1.0f);
+  EXPECT_FALSE(bit_identical(a.image, b.image));
+}
+
+TEST(Renderer, RegionPixelsEqualTheFullRender) {
+  const RenderScene scene = test_scene();
+  const RenderResult full = render_with(scene, 2, 16);
+  const auto backend = make_native_backend(scene, {});
+  RenderOptions options;
+  options.region = PixelRegion{5, 3, 29, 20};
+  const RenderResult part = render_image(scene, *backend, options);
+  for (int y = 0; y < scene.camera.height; ++y)
+    for (int x = 0; x < scene.camera.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const bool inside = x >= 5 && x < 29 && y >= 3 && y < 20;
+        ASSERT_EQ(part.image.at(x, y, c), inside ? full.image.at(x, y, c) : 0.0f) << x << "," << y;
+      }
+  options.region = PixelRegion{0, 0, 49, 10};
+  EXPECT_THROW(render_image(scene, *backend, options), InputError);
+}
+
+TEST(Renderer, CancellationStopsBeforeTheRemainingTiles) {
+  const RenderScene scene = test_scene();
+  const auto backend = make_native_backend(scene, {});
+  std::atomic<bool> cancel{false};
+  RenderOptions options;
+  options.tile_size = 8;
+  options.cancel = &cancel;
+  options.on_tile_done = [&](std::size_t done, std::size_t) {
+    if (done >= 3) cancel = true;
+  };
+  tbb::global_control cap(tbb::global_control::max_allowed_parallelism, 1);
+  const RenderResult result = render_image(scene, *backend, options);
+  EXPECT_FALSE(result.complete());
+  EXPECT_GE(result.tiles_done, 3u);
+  EXPECT_LT(result.tiles_done, result.tiles_total);
+}
+
+TEST(Renderer, AovLayersHavePlausibleValues) {
+  const RenderScene scene = test_scene();
+  const RenderResult r = render_with(scene, 2, 16, {Aov::kAlbedo, Aov::kNormal, Aov::kDepth, Aov::kObjectId});
+  const std::vector<std::string> expected{"R",   "G",   "B",   "albedo.R", "albedo.G",    "albedo.B",
+                                          "N.X", "N.Y", "N.Z", "depth.Z",  "object_id.id"};
+  ASSERT_EQ(r.image.channels, expected);
+  int hit_pixels = 0;
+  for (int y = 0; y < r.image.height; ++y)
+    for (int x = 0; x < r.image.width; ++x) {
+      const float depth = r.image.at(x, y, 9);
+      if (depth <= 0.0f) continue;
+      ++hit_pixels;
+      const Vec3 n{r.image.at(x, y, 6), r.image.at(x, y, 7), r.image.at(x, y, 8)};
+      EXPECT_NEAR(length(n), 1.0f, 1e-4f);
+      EXPECT_LT(depth, 40.0f);
+    }
+  EXPECT_GT(hit_pixels, 100);
+}
+
+}  // namespace
+}  // namespace rtpro
