@@ -1,0 +1,39 @@
+#pragma once
+// Render progress on stderr: a redrawn bar with percent, elapsed time and ETA on a terminal
+// (a few updates a second), plain periodic lines otherwise. Called from worker threads after each
+// tile; the cost per call is one atomic load unless an update is due.
+#include <atomic>
+#include <chrono>
+#include <cstddef>
+#include <mutex>
+#include <string>
+
+namespace rtpro::cli {
+
+enum class ProgressMode { kNever, kAuto, kAlways };
+
+ProgressMode parse_progress_mode(const std::string& text);  // never | auto | always
+
+class ProgressReporter {
+ public:
+  // kAuto draws a bar on a terminal and prints lines otherwise; kAlways forces the bar.
+  ProgressReporter(ProgressMode mode, bool stderr_is_terminal);
+
+  void tile_done(std::size_t done, std::size_t total);
+  void finish(std::size_t done, std::size_t total);  // final state, ends the bar's line
+
+ private:
+  void draw(std::size_t done, std::size_t total, bool final);
+
+  bool enabled_;
+  bool bar_;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::duration interval_;
+  std::atomic<std::int64_t> next_update_ns_{0};
+  std::mutex mutex_;
+};
+
+// "1m05s" style durations for humans.
+std::string format_duration(double seconds);
+
+}  // namespace rtpro::cli

@@ -1,0 +1,36 @@
+#pragma once
+// End-of-render statistics (`--stats`, `--stats-json FILE`).
+#include "rtpro/backend/backend.h"
+#include "rtpro/render/renderer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstddef>
+#include <string>
+
+namespace rtpro::cli {
+
+struct RenderStatistics {
+  std::string scene;
+  std::string output;
+  std::string backend;
+  int threads = 0;
+  int spp = 0;
+  int width = 0, height = 0;
+  double load_seconds = 0, build_seconds = 0, render_seconds = 0, write_seconds = 0, total_seconds = 0;
+  RayCounts rays;
+  std::uint64_t rejected_rays = 0;
+  std::uint64_t nan_samples = 0;
+  std::size_t acceleration_bytes = 0;
+  std::size_t peak_rss_bytes = 0;
+  bool complete = true;
+
+  double mrays_per_second() const { return render_seconds > 0 ? rays.total() / render_seconds * 1e-6 : 0.0; }
+  std::string text() const;
+  nlohmann::json json() const;
+};
+
+// Peak resident set size of this process so far.
+std::size_t peak_rss_bytes();
+
+}  // namespace rtpro::cli

@@ -1,0 +1,57 @@
+// rtpro's command line: subcommands register themselves (see cli/command.h); main parses,
+// runs the chosen action and maps rtpro's error kinds to exit codes.
+#include "rtpro/cli/command.h"
+#include "rtpro/core/error.h"
+
+#include <embree3/rtcore_config.h>
+#include <OpenColorIO/OpenColorIO.h>
+#include <OpenImageIO/oiioversion.h>
+
+#include <iostream>
+#include <string>
+
+namespace {
+
+std::string version_text() {
+  return std::string("rtpro ") + RTPRO_VERSION + " (Embree " + RTC_VERSION_STRING + ", OpenImageIO " +
+         OIIO_VERSION_STRING + ", OpenColorIO " + OCIO_NAMESPACE::GetVersion() + ")";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"rtpro: a production-style CPU ray tracer"};
+  app.set_version_flag("--version", version_text());
+  app.require_subcommand(1);
+  app.fallthrough(false);
+
+  rtpro::cli::Action action;
+  rtpro::cli::add_render_command(app, action);
+  rtpro::cli::add_compare_command(app, action);
+  rtpro::cli::add_crosscheck_command(app, action);
+  rtpro::cli::add_info_command(app, action);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    // CLI11 uses its own codes (e.g. 105 for validation); usage errors are exit 2 by custom.
+    return code == 0 ? rtpro::kExitOk : rtpro::kExitInputError;
+  }
+
+  try {
+    return action ? action() : rtpro::kExitInputError;
+  } catch (const rtpro::InputError& e) {
+    std::cerr << "rtpro: error: " << e.what() << "\n";
+    return rtpro::kExitInputError;
+  } catch (const rtpro::RuntimeError& e) {
+    std::cerr << "rtpro: error: " << e.what() << "\n";
+    return rtpro::kExitRuntimeFailure;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "rtpro: error: out of memory\n";
+    return rtpro::kExitRuntimeFailure;
+  } catch (const std::exception& e) {
+    std::cerr << "rtpro: error: " << e.what() << "\n";
+    return rtpro::kExitRuntimeFailure;
+  }
+}

@@ -1,0 +1,259 @@
+// `rtpro render`: scene file → render scene → backend → renderer → image file.
+#include "rtpro/backend/backend.h"
+#include "rtpro/cli/command.h"
+#include "rtpro/cli/interrupt.h"
+#include "rtpro/cli/log.h"
+#include "rtpro/cli/progress.h"
+#include "rtpro/cli/render_stats.h"
+#include "rtpro/core/error.h"
+#include "rtpro/image/color_config.h"
+#include "rtpro/image/image_io.h"
+#include "rtpro/image/output_check.h"
+#include "rtpro/render/renderer.h"
+#include "rtpro/scene/build_render_scene.h"
+#include "rtpro/scene/scene_parser.h"
+
+#include <tbb/global_control.h>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <thread>
+
+namespace rtpro::cli {
+
+namespace {
+
+struct RenderCommandOptions {
+  std::string scene;
+  std::string output;
+  std::string backend = "native";
+  std::optional<int> spp, threads, max_depth;
+  std::optional<std::uint64_t> seed;
+  std::string size;
+  std::string ocio_config, display, view;
+  std::vector<std::string> overrides;
+  std::string region;
+  bool crop = false;
+  std::vector<std::string> aovs;
+  int tile_size = 32;
+  std::string progress = "auto";
+  bool quiet = false;
+  int verbose = 0;
+  bool stats = false;
+  std::string stats_json;
+  std::string embree_quality = "medium";
+  bool embree_robust = true;
+  std::size_t max_memory_mb = 0;
+};
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// Command-line values become scene overrides, so they are validated exactly like the file's.
+std::vector<std::string> scene_overrides(const RenderCommandOptions& o) {
+  std::vector<std::string> overrides = o.overrides;
+  if (o.spp) overrides.push_back("render.spp=" + std::to_string(*o.spp));
+  if (o.max_depth) overrides.push_back("render.max_depth=" + std::to_string(*o.max_depth));
+  if (o.seed) overrides.push_back("render.seed=" + std::to_string(*o.seed));
+  if (!o.size.empty()) {
+    int w = 0, h = 0;
+    char extra = 0;
+    if (std::sscanf(o.size.c_str(), "%dx%d%c", &w, &h, &extra) != 2)
+      throw InputError("--size '" + o.size + "': expected WIDTHxHEIGHT, e.g. 640x480");
+    overrides.push_back("camera.resolution=[" + std::to_string(w) + "," + std::to_string(h) + "]");
+  }
+  return overrides;
+}
+
+std::optional<PixelRegion> parse_region(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  PixelRegion r;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%d,%d,%d,%d%c", &r.x0, &r.y0, &r.x1, &r.y1, &extra) != 4)
+    throw InputError("--region '" + text + "': expected x0,y0,x1,y1 in pixels (x1 and y1 exclusive)");
+  return r;
+}
+
+Image crop_image(const Image& full, const PixelRegion& r) {
+  Image out(r.width(), r.height(), full.channels);
+  for (int y = 0; y < r.height(); ++y)
+    for (int x = 0; x < r.width(); ++x)
+      for (int c = 0; c < full.channel_count(); ++c) out.at(x, y, c) = full.at(r.x0 + x, r.y0 + y, c);
+  return out;
+}
+
+// "out.png" → "out.partial.png": an interrupted render never replaces a finished image.
+std::filesystem::path partial_path(const std::filesystem::path& output) {
+  std::filesystem::path p = output;
+  p.replace_filename(output.stem().string() + ".partial" + output.extension().string());
+  return p;
+}
+
+void write_text_file(const std::filesystem::path& file, const std::string& text) {
+  const std::filesystem::path temporary = file.string() + ".tmp";
+  {
+    std::ofstream out(temporary);
+    out << text;
+    if (!out.flush()) throw RuntimeError("cannot write '" + file.string() + "'");
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, file, error);
+  if (error) {
+    std::filesystem::remove(temporary, error);
+    throw RuntimeError("cannot write '" + file.string() + "': " + error.message());
+  }
+}
+
+int run_render(const RenderCommandOptions& o) {
+  const auto start = Clock::now();
+  Log log(o.quiet ? LogLevel::kQuiet : (o.verbose > 0 ? LogLevel::kVerbose : LogLevel::kNormal));
+  const BackendKind kind = parse_backend_kind(o.backend);
+  if (o.threads && *o.threads < 0) throw InputError("--threads must be >= 0 (0: all cores)");
+  const int threads = o.threads.value_or(0) > 0 ? *o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  RenderOptions render_options;
+  render_options.region = parse_region(o.region);
+  render_options.tile_size = o.tile_size;
+  for (const std::string& name : o.aovs) render_options.aovs.push_back(parse_aov(name));
+  const ProgressMode progress_mode = o.quiet ? ProgressMode::kNever : parse_progress_mode(o.progress);
+  if (o.crop && !render_options.region) throw InputError("--crop needs --region");
+
+  // Fail before the render, not after it: output folder, format, colour config and view.
+  check_image_output(o.output);
+  ImageWriteOptions write_options;
+  if (!o.ocio_config.empty()) write_options.ocio_config = o.ocio_config;
+  write_options.display = o.display;
+  write_options.view = o.view;
+  if (!writes_scene_linear(o.output)) {
+    const ColorConfig colors = ColorConfig::load(write_options.ocio_config);
+    const DisplayTransform transform = colors.display_transform(o.display, o.view);
+    log.verbose("colour: OCIO config " + colors.source() + ", display '" + transform.display() + "', view '" +
+                transform.view() + "'");
+  }
+
+  // Must exist before any TBB or Embree work so the cap really holds.
+  tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+
+  const SceneDescription description = parse_scene_file(o.scene, scene_overrides(o));
+  SceneBuildReport report;
+  const RenderScene scene = build_render_scene(description, &report);
+  for (const auto& mesh : report.meshes) {
+    log.verbose("loaded " + mesh.file + ": " + std::to_string(mesh.stats.triangles) + " triangles in " +
+                std::to_string(mesh.load_seconds) + " s");
+    for (const std::string& warning : mesh.stats.warnings) log.warning(warning);
+  }
+  RenderStatistics stats;
+  stats.scene = o.scene;
+  stats.output = o.output;
+  stats.threads = threads;
+  stats.spp = scene.render.spp;
+  stats.width = scene.camera.width;
+  stats.height = scene.camera.height;
+  stats.load_seconds = seconds_since(start);
+
+  BackendOptions backend_options;
+  backend_options.threads = threads;
+  backend_options.embree_quality = o.embree_quality;
+  backend_options.embree_robust = o.embree_robust;
+  backend_options.max_memory_bytes = o.max_memory_mb * 1024 * 1024;
+  const std::unique_ptr<Backend> backend = make_backend(kind, scene, backend_options);
+  stats.backend = std::string(backend->name());
+  stats.build_seconds = backend->stats().build_seconds;
+  log.verbose("built " + stats.backend + " acceleration structure in " + std::to_string(stats.build_seconds) + " s");
+
+  const InterruptGuard interrupt;
+  ProgressReporter progress(progress_mode, isatty(STDERR_FILENO) == 1);
+  render_options.cancel = &InterruptGuard::requested();
+  render_options.on_tile_done = [&progress](std::size_t done, std::size_t total) { progress.tile_done(done, total); };
+  const RenderResult result = render_image(scene, *backend, render_options);
+  progress.finish(result.tiles_done, result.tiles_total);
+  stats.render_seconds = result.seconds;
+  stats.rays = result.rays;
+  stats.nan_samples = result.nan_samples;
+  stats.complete = result.complete();
+
+  const auto write_start = Clock::now();
+  const std::filesystem::path target = result.complete() ? std::filesystem::path(o.output) : partial_path(o.output);
+  write_options.metadata = {
+      {"Software", std::string("rtpro ") + RTPRO_VERSION},
+      {"rtpro:backend", stats.backend},
+      {"rtpro:spp", std::to_string(scene.render.spp)},
+      {"rtpro:seed", std::to_string(scene.render.seed)},
+      {"rtpro:max_depth", std::to_string(scene.render.max_depth)},
+      {"rtpro:render_seconds", std::to_string(result.seconds)},
+      {"rtpro:scene", o.scene},
+  };
+  if (render_options.region) write_options.metadata.push_back({"rtpro:region", o.region});
+  if (!result.complete())
+    write_options.metadata.push_back({"rtpro:partial", std::to_string(result.tiles_done) + " of " +
+                                                           std::to_string(result.tiles_total) + " tiles"});
+  write_image(target, o.crop ? crop_image(result.image, *render_options.region) : result.image, write_options);
+  stats.write_seconds = seconds_since(write_start);
+
+  const BackendStats backend_stats = backend->stats();
+  stats.rejected_rays = backend_stats.rejected_rays;
+  stats.acceleration_bytes = backend_stats.acceleration_bytes;
+  stats.peak_rss_bytes = peak_rss_bytes();
+  stats.total_seconds = seconds_since(start);
+  if (stats.rejected_rays > 0) log.warning(std::to_string(stats.rejected_rays) + " rays were rejected as untraceable");
+  if (stats.nan_samples > 0) log.warning(std::to_string(stats.nan_samples) + " samples were NaN or infinite");
+  log.summarise_repeats();
+  if (o.stats) std::fputs(stats.text().c_str(), stderr);
+  if (!o.stats_json.empty()) write_text_file(o.stats_json, stats.json().dump(2) + "\n");
+
+  if (!result.complete()) {
+    std::fprintf(stderr, "rtpro: interrupted: wrote the %zu of %zu finished tiles to %s\n", result.tiles_done,
+                 result.tiles_total, target.c_str());
+    return kExitInterrupted;
+  }
+  std::ostringstream line;
+  line << "wrote " << o.output << " (" << scene.camera.width << "x" << scene.camera.height << ", "
+       << scene.render.spp << " spp, " << stats.backend << ") in " << format_duration(stats.total_seconds);
+  log.info(line.str());
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app, Action& action) {
+  auto o = std::make_shared<RenderCommandOptions>();
+  CLI::App* cmd = app.add_subcommand("render", "Render a scene file to an image");
+  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
+  cmd->add_option("-o,--output", o->output, "Output image; format from the extension (.exr .png .jpg .tif)")
+      ->required();
+  cmd->add_option("--backend", o->backend, "Ray tracing backend: embree or native")
+      ->check(CLI::IsMember({"native", "embree"}))
+      ->capture_default_str();
+  cmd->add_option("--spp", o->spp, "Samples per pixel, a perfect square (1, 4, 16, 64, ...)");
+  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
+  cmd->add_option("--threads", o->threads, "Worker threads (0: all cores)");
+  cmd->add_option("--seed", o->seed, "Seed of the pixel sampler");
+  cmd->add_option("--max-depth", o->max_depth, "Maximum number of mirror bounces");
+  cmd->add_option("--set", o->overrides, "Override a scene value, e.g. --set render.spp=64 (repeatable)");
+  cmd->add_option("--region", o->region, "Render only pixels x0,y0,x1,y1 (x1, y1 exclusive)");
+  cmd->add_flag("--crop", o->crop, "With --region: write only the region instead of a full-size image");
+  cmd->add_option("--aov", o->aovs, "Extra EXR layers: albedo,normal,depth,object-id")->delimiter(',');
+  cmd->add_option("--tile-size", o->tile_size, "Tile edge in pixels")->capture_default_str();
+  cmd->add_option("--ocio-config", o->ocio_config, "OpenColorIO config (default: $OCIO, else bundled)");
+  cmd->add_option("--display", o->display, "OCIO display for 8-bit outputs (default: the config's)");
+  cmd->add_option("--view", o->view, "OCIO view for 8-bit outputs (default: the display's)");
+  cmd->add_option("--progress", o->progress, "Progress on stderr: never, auto (bar on a terminal) or always")
+      ->capture_default_str();
+  cmd->add_flag("-q,--quiet", o->quiet, "Print only errors");
+  cmd->add_flag("-v,--verbose", o->verbose, "Print more detail");
+  cmd->add_flag("--stats", o->stats, "Print statistics at the end");
+  cmd->add_option("--stats-json", o->stats_json, "Write statistics as JSON to this file");
+  cmd->add_option("--embree-quality", o->embree_quality, "Embree BVH build quality: low, medium or high")
+      ->check(CLI::IsMember({"low", "medium", "high"}))
+      ->capture_default_str();
+  cmd->add_option("--embree-robust", o->embree_robust, "Embree robust traversal (true/false)")->capture_default_str();
+  cmd->add_option("--max-memory", o->max_memory_mb, "Embree BVH memory limit in MiB (0: none)");
+  cmd->callback([o, &action] { action = [o] { return run_render(*o); }; });
+}
+
+}  // namespace rtpro::cli

@@ -1,0 +1,58 @@
+#include "rtpro/cli/render_stats.h"
+
+#include <sys/resource.h>
+
+#include <cstdio>
+
+namespace rtpro::cli {
+
+std::size_t peak_rss_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports KiB
+}
+
+std::string RenderStatistics::text() const {
+  const auto mib = [](std::size_t b) { return static_cast<double>(b) / (1024.0 * 1024.0); };
+  char buffer[2048];
+  std::snprintf(buffer, sizeof buffer,
+                "statistics\n"
+                "  image         %dx%d, %d spp%s\n"
+                "  backend       %s, %d threads\n"
+                "  time          load %.3fs  build %.3fs  render %.3fs  write %.3fs  total %.3fs\n"
+                "  rays          %llu camera  %llu shadow  %llu reflection  (%llu total)\n"
+                "  speed         %.2f Mrays/s\n"
+                "  rejected      %llu rays,  %llu NaN samples\n"
+                "  memory        peak RSS %.1f MiB, acceleration structure %.1f MiB\n",
+                width, height, spp, complete ? "" : " (interrupted: partial)", backend.c_str(), threads,
+                load_seconds, build_seconds, render_seconds, write_seconds, total_seconds,
+                static_cast<unsigned long long>(rays.camera), static_cast<unsigned long long>(rays.shadow),
+                static_cast<unsigned long long>(rays.reflection), static_cast<unsigned long long>(rays.total()),
+                mrays_per_second(), static_cast<unsigned long long>(rejected_rays),
+                static_cast<unsigned long long>(nan_samples), mib(peak_rss_bytes), mib(acceleration_bytes));
+  return buffer;
+}
+
+nlohmann::json RenderStatistics::json() const {
+  return {{"scene", scene},
+          {"output", output},
+          {"backend", backend},
+          {"threads", threads},
+          {"spp", spp},
+          {"resolution", {width, height}},
+          {"complete", complete},
+          {"seconds",
+           {{"load", load_seconds},
+            {"build", build_seconds},
+            {"render", render_seconds},
+            {"write", write_seconds},
+            {"total", total_seconds}}},
+          {"rays",
+           {{"camera", rays.camera}, {"shadow", rays.shadow}, {"reflection", rays.reflection}, {"total", rays.total()}}},
+          {"mrays_per_second", mrays_per_second()},
+          {"rejected_rays", rejected_rays},
+          {"nan_samples", nan_samples},
+          {"memory_bytes", {{"peak_rss", peak_rss_bytes}, {"acceleration", acceleration_bytes}}}};
+}
+
+}  // namespace rtpro::cli
