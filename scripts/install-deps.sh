@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git python3 time
   libembree-dev libtbb-dev
   libopenimageio-dev openimageio-tools python3-imath
   libopencolorio-dev opencolorio-tools

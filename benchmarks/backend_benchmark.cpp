@@ -1,0 +1,136 @@
+// Backend speed, native vs embree on the same scenes in the same run: BVH build time, primary-ray
+// throughput (closest hit only) and whole-render throughput (camera + shadow + reflection rays).
+// Scenes: every scenes/*.yaml whose meshes are present, or those named in $RTPRO_BENCH_SCENES
+// (colon separated). Run a Release build; `benchmarks/run_benchmarks.sh` prints the table.
+#include "rtpro/backend/backend.h"
+#include "rtpro/core/fp_env.h"
+#include "rtpro/render/camera.h"
+#include "rtpro/render/renderer.h"
+#include "rtpro/scene/build_render_scene.h"
+#include "rtpro/scene/scene_parser.h"
+
+#include <benchmark/benchmark.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace rtpro;
+
+std::vector<std::filesystem::path> benchmark_scenes() {
+  std::vector<std::filesystem::path> scenes;
+  if (const char* list = std::getenv("RTPRO_BENCH_SCENES")) {
+    std::stringstream stream(list);
+    for (std::string item; std::getline(stream, item, ':');)
+      if (!item.empty()) scenes.emplace_back(item);
+    return scenes;
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(RTPRO_SOURCE_DIR) / "scenes"))
+    if (entry.path().extension() == ".yaml") scenes.push_back(entry.path());
+  std::sort(scenes.begin(), scenes.end());
+  return scenes;
+}
+
+struct LoadedScene {
+  std::string name;
+  RenderScene scene;
+};
+
+// Scenes are parsed and loaded once per process; benchmarks only time backends and rendering.
+const std::vector<std::unique_ptr<LoadedScene>>& loaded_scenes() {
+  static const auto scenes = [] {
+    std::vector<std::unique_ptr<LoadedScene>> out;
+    for (const auto& file : benchmark_scenes()) {
+      try {
+        auto loaded = std::make_unique<LoadedScene>();
+        loaded->name = file.stem().string();
+        loaded->scene = build_render_scene(parse_scene_file(file, {"render.spp=1"}));
+        out.push_back(std::move(loaded));
+      } catch (const std::exception& e) {
+        std::cerr << "skipping " << file << ": " << e.what() << "\n";
+      }
+    }
+    return out;
+  }();
+  return scenes;
+}
+
+std::vector<Ray> camera_rays(const RenderScene& scene) {
+  const Camera camera(scene.camera, scene.camera.width, scene.camera.height);
+  std::vector<Ray> rays;
+  rays.reserve(static_cast<std::size_t>(scene.camera.width) * scene.camera.height);
+  for (int y = 0; y < scene.camera.height; ++y)
+    for (int x = 0; x < scene.camera.width; ++x)
+      rays.push_back(camera.generate(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
+  return rays;
+}
+
+void build(benchmark::State& state, const LoadedScene* loaded, BackendKind kind) {
+  for (auto _ : state) {
+    auto backend = make_backend(kind, loaded->scene, {});
+    benchmark::DoNotOptimize(backend.get());
+  }
+}
+
+void primary_rays(benchmark::State& state, const LoadedScene* loaded, BackendKind kind) {
+  const auto backend = make_backend(kind, loaded->scene, {});
+  const std::vector<Ray> rays = camera_rays(loaded->scene);
+  std::vector<Hit> hits(rays.size());
+  std::unique_ptr<bool[]> found(new bool[rays.size()]);
+  constexpr std::size_t kBlock = 4096;  // like a tile of camera rays, traced as one batch
+  for (auto _ : state) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), kBlock), [&](const auto& r) {
+      set_tracing_fp_mode();
+      backend->intersect(std::span(rays).subspan(r.begin(), r.size()), std::span(hits).subspan(r.begin(), r.size()),
+                         std::span(found.get() + r.begin(), r.size()));
+    });
+    benchmark::ClobberMemory();
+  }
+  state.counters["Mrays/s"] =
+      benchmark::Counter(static_cast<double>(rays.size()) * state.iterations() * 1e-6, benchmark::Counter::kIsRate);
+}
+
+void whole_render(benchmark::State& state, const LoadedScene* loaded, BackendKind kind) {
+  const auto backend = make_backend(kind, loaded->scene, {});
+  std::uint64_t rays = 0;
+  for (auto _ : state) {
+    const RenderResult result = render_image(loaded->scene, *backend, {});
+    rays += result.rays.total();
+  }
+  state.counters["Mrays/s"] = benchmark::Counter(static_cast<double>(rays) * 1e-6, benchmark::Counter::kIsRate);
+}
+
+void register_benchmarks() {
+  for (const auto& loaded : loaded_scenes()) {
+    for (BackendKind kind : {BackendKind::kNative, BackendKind::kEmbree}) {
+      const std::string suffix = loaded->name + "/" + std::string(backend_name(kind));
+      benchmark::RegisterBenchmark(("build/" + suffix).c_str(), build, loaded.get(), kind)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+      benchmark::RegisterBenchmark(("primary/" + suffix).c_str(), primary_rays, loaded.get(), kind)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+      benchmark::RegisterBenchmark(("render_1spp/" + suffix).c_str(), whole_render, loaded.get(), kind)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  register_benchmarks();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
