@@ -251,11 +251,36 @@ CrosscheckCase classify(const RenderScene& scene, const TracedRay& traced, std::
 // Mismatches first, then the largest distance errors; ties by ray number for a stable report.
 bool worse(const CrosscheckCase& a, const CrosscheckCase& b) {
   const auto rank = [](const CrosscheckCase& c) {
-    return c.agreement == Agreement::kMismatch ? 0 : (c.occlusion_differs && c.agreement != Agreement::kAmbiguous ? 1 : 2);
+    if (c.agreement == Agreement::kMismatch) return 0;
+    return c.occlusion_differs && c.agreement != Agreement::kAmbiguous ? 1 : 2;
   };
   if (rank(a) != rank(b)) return rank(a) < rank(b);
   if (a.t_error != b.t_error) return a.t_error > b.t_error;
   return a.index < b.index;
+}
+
+void tally(const RenderScene& scene, CrosscheckCase c, int occlusion_queries, std::size_t worst_cases,
+           CrosscheckReport& report, std::vector<CrosscheckCase>& notable) {
+  switch (c.agreement) {
+    case Agreement::kIdentical: ++report.identical; break;
+    case Agreement::kWithinTolerance: ++report.within_tolerance; break;
+    case Agreement::kAmbiguous: ++report.ambiguous; break;
+    case Agreement::kMismatch: ++report.mismatches; break;
+  }
+  report.occlusion_queries += static_cast<std::size_t>(occlusion_queries);
+  // An ambiguous closest hit makes the occlusion answers just as ambiguous.
+  if (c.occlusion_differs && c.agreement != Agreement::kAmbiguous) ++report.occlusion_mismatches;
+  if (c.reference_found && is_top_level_sphere(scene, c.reference)) ++report.top_level_sphere_hits;
+  if (c.agreement == Agreement::kIdentical || c.agreement == Agreement::kWithinTolerance) {
+    report.max_t_error = std::max(report.max_t_error, c.t_error);
+    report.max_surface_error = std::max(report.max_surface_error, c.surface_error);
+  }
+  if (c.agreement == Agreement::kIdentical && !c.occlusion_differs) return;
+  notable.push_back(std::move(c));
+  if (notable.size() >= 4 * worst_cases + 64) {  // keep memory bounded on bad runs
+    std::sort(notable.begin(), notable.end(), worse);
+    notable.resize(worst_cases);
+  }
 }
 
 }  // namespace
@@ -267,43 +292,32 @@ CrosscheckReport crosscheck(const RenderScene& scene, const Backend& reference, 
   BBox bounds = scene.bounds();
   if (bounds.empty()) bounds = {Vec3(-1.0f), Vec3(1.0f)};
 
-  std::vector<TracedRay> traced(options.rays);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, options.rays, 256), [&](const auto& range) {
-    set_tracing_fp_mode();
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      traced[i].ray = i < camera_rays ? camera_ray(camera, scene.camera, options.seed, i)
-                                      : random_ray(bounds, options.seed, i);
-      trace(reference, candidate, traced[i]);
-    }
-  });
-
   CrosscheckReport report;
   report.reference_name = reference.name();
   report.candidate_name = candidate.name();
   report.rays = options.rays;
   std::vector<CrosscheckCase> notable;
-  for (std::size_t i = 0; i < traced.size(); ++i) {
-    CrosscheckCase c = classify(scene, traced[i], i, i < camera_rays);
-    switch (c.agreement) {
-      case Agreement::kIdentical: ++report.identical; break;
-      case Agreement::kWithinTolerance: ++report.within_tolerance; break;
-      case Agreement::kAmbiguous: ++report.ambiguous; break;
-      case Agreement::kMismatch: ++report.mismatches; break;
-    }
-    report.occlusion_queries += static_cast<std::size_t>(traced[i].segments);
-    // An ambiguous closest hit makes the occlusion answers just as ambiguous.
-    if (c.occlusion_differs && c.agreement != Agreement::kAmbiguous) ++report.occlusion_mismatches;
-    if (c.reference_found && is_top_level_sphere(scene, c.reference)) ++report.top_level_sphere_hits;
-    if (c.agreement == Agreement::kIdentical || c.agreement == Agreement::kWithinTolerance) {
-      report.max_t_error = std::max(report.max_t_error, c.t_error);
-      report.max_surface_error = std::max(report.max_surface_error, c.surface_error);
-    }
-    if (c.agreement != Agreement::kIdentical || c.occlusion_differs) {
-      notable.push_back(std::move(c));
-      if (notable.size() >= 4 * options.worst_cases + 64) {  // keep memory bounded on bad runs
-        std::sort(notable.begin(), notable.end(), worse);
-        notable.resize(options.worst_cases);
+
+  // Traced in parallel a block at a time, classified in ray order: memory stays bounded and the
+  // report does not depend on scheduling.
+  constexpr std::size_t kBlock = 1 << 16;
+  std::vector<TracedRay> traced(std::min(options.rays, kBlock));
+  for (std::size_t first = 0; first < options.rays; first += kBlock) {
+    const std::size_t count = std::min(kBlock, options.rays - first);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 256), [&](const auto& range) {
+      set_tracing_fp_mode();
+      for (std::size_t k = range.begin(); k != range.end(); ++k) {
+        const std::size_t i = first + k;
+        traced[k] = TracedRay{};
+        traced[k].ray = i < camera_rays ? camera_ray(camera, scene.camera, options.seed, i)
+                                        : random_ray(bounds, options.seed, i);
+        trace(reference, candidate, traced[k]);
       }
+    });
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t i = first + k;
+      tally(scene, classify(scene, traced[k], i, i < camera_rays), traced[k].segments, options.worst_cases, report,
+            notable);
     }
   }
   std::sort(notable.begin(), notable.end(), worse);

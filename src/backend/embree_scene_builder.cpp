@@ -19,7 +19,9 @@ bool in_embree_range(const Vec3& p) {
          std::fabs(p.z) < kMaxCoordinate;
 }
 
-bool in_embree_range(const BBox& box) { return box.empty() || (in_embree_range(box.lower) && in_embree_range(box.upper)); }
+bool in_embree_range(const BBox& box) {
+  return box.empty() || (in_embree_range(box.lower) && in_embree_range(box.upper));
+}
 
 std::string group_name(int group) {
   return group < 0 ? std::string("the top group") : "prototype group " + std::to_string(group);
@@ -160,7 +162,8 @@ EmbreeBuildSettings embree_build_settings(const BackendOptions& options) {
 
 EmbreeScenes build_embree_scenes(EmbreeDevice::Session& session, const RenderScene& scene,
                                  const EmbreeBuildSettings& settings) {
-  for (std::size_t p = 0; p < scene.prototypes.size(); ++p) validate_group(scene.prototypes[p], static_cast<int>(p), scene);
+  for (std::size_t p = 0; p < scene.prototypes.size(); ++p)
+    validate_group(scene.prototypes[p], static_cast<int>(p), scene);
   validate_group(scene.top, -1, scene);
 
   EmbreeScenes scenes;

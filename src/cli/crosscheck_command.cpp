@@ -69,11 +69,11 @@ void print_report(const CrosscheckReport& r) {
               r.max_t_error, r.max_surface_error);
   if (!r.worst.empty()) std::printf("worst cases:\n");
   for (const CrosscheckCase& c : r.worst) {
-    std::printf("  ray %zu (%s) %s%s%s%s\n    %s\n    %s: %s\n    %s: %s\n", c.index, c.camera_ray ? "camera" : "random",
-                agreement_name(c.agreement), c.note.empty() ? "" : ": ", c.note.c_str(),
-                c.occlusion_differs ? " [occlusion differs]" : "", describe(c.ray).c_str(),
-                r.reference_name.c_str(), describe(c.reference, c.reference_found).c_str(), r.candidate_name.c_str(),
-                describe(c.candidate, c.candidate_found).c_str());
+    std::printf("  ray %zu (%s) %s%s%s%s\n", c.index, c.camera_ray ? "camera" : "random", agreement_name(c.agreement),
+                c.note.empty() ? "" : ": ", c.note.c_str(), c.occlusion_differs ? " [occlusion differs]" : "");
+    std::printf("    %s\n", describe(c.ray).c_str());
+    std::printf("    %s: %s\n", r.reference_name.c_str(), describe(c.reference, c.reference_found).c_str());
+    std::printf("    %s: %s\n", r.candidate_name.c_str(), describe(c.candidate, c.candidate_found).c_str());
   }
   std::printf("%s\n", r.passed() ? "PASSED: the backends agree within the rules"
                                  : "FAILED: the backends disagree beyond the rules");

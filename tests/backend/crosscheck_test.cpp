@@ -157,15 +157,14 @@ TEST(Crosscheck, EveryShippedSceneAgrees) {
 TEST(Crosscheck, CommandExitsZeroWhenTheBackendsAgree) {
   std::string output;
   const std::string scene = (test::scenes_dir() / "many_spheres.yaml").string();
-  const int code = test::run_command(test::rtpro_executable().string() + " crosscheck '" + scene + "' --rays 4000", &output);
+  const std::string rtpro = test::rtpro_executable().string();
+  const int code = test::run_command(rtpro + " crosscheck '" + scene + "' --rays 4000", &output);
   EXPECT_EQ(code, 0) << output;
   EXPECT_NE(output.find("mismatches         0"), std::string::npos) << output;
   EXPECT_NE(output.find("PASSED"), std::string::npos) << output;
 
-  EXPECT_EQ(test::run_command(test::rtpro_executable().string() + " crosscheck /nonexistent.yaml", &output), 2)
-      << output;
-  EXPECT_EQ(test::run_command(test::rtpro_executable().string() + " crosscheck '" + scene + "' --rays 0", &output), 2)
-      << output;
+  EXPECT_EQ(test::run_command(rtpro + " crosscheck /nonexistent.yaml", &output), 2) << output;
+  EXPECT_EQ(test::run_command(rtpro + " crosscheck '" + scene + "' --rays 0", &output), 2) << output;
 }
 
 TEST(TracingFpMode, FlushesDenormalsToZero) {
