@@ -89,6 +89,8 @@ class EmbreeBackend final : public Backend {
     return from_embree(query, hit);
   }
 
+  // A ray stream with the coherent flag: Embree regroups the rays into packets, which traced
+  // camera tiles 1.3–2.4× faster than one rtcIntersect1 per ray (third_party_notes/embree.md).
   void intersect(std::span<const Ray> rays, std::span<Hit> hits, std::span<bool> found) const override {
     constexpr std::size_t kChunk = 64;
     alignas(16) RTCRayHit queries[kChunk];
@@ -104,6 +106,7 @@ class EmbreeBackend final : public Backend {
         to_embree(rays[i], count, queries[count]);
         slots[count++] = i;
       }
+      if (count == 0) continue;
       EmbreeIntersectContext context;
       rtcInitIntersectContext(&context.base);
       context.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
