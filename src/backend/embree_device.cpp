@@ -51,7 +51,7 @@ std::shared_ptr<EmbreeDevice> EmbreeDevice::get(int threads) {
   return device;
 }
 
-EmbreeDevice::EmbreeDevice(int threads) : threads_(threads) {
+EmbreeDevice::EmbreeDevice(int threads) {
   device_ = rtcNewDevice(device_config(threads).c_str());
   if (!device_) {
     throw RuntimeError(std::string("cannot start Embree: ") + error_name(rtcGetDeviceError(nullptr)));

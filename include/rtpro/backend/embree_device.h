@@ -26,7 +26,6 @@ class EmbreeDevice {
   EmbreeDevice& operator=(const EmbreeDevice&) = delete;
 
   RTCDevice handle() const { return device_; }
-  int threads() const { return threads_; }
 
   // Exclusive use of the device for creating, committing and releasing scenes. Sessions are
   // serialised, so every error and every byte Embree reports during one belongs to it: builds of
@@ -56,7 +55,6 @@ class EmbreeDevice {
   static void record_error(void* device, RTCError code, const char* message);
   static bool monitor_memory(void* device, ssize_t bytes, bool post);
 
-  int threads_;
   RTCDevice device_ = nullptr;
   std::mutex session_mutex_;
 
