@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <sys/wait.h>
 
 namespace rtpro::test {
@@ -36,6 +37,14 @@ std::filesystem::path write_file(const std::string& name, const std::string& tex
   std::ofstream(path, std::ios::binary) << text;
   return path;
 }
+
+bool uses_fetched_assets(const std::filesystem::path& scene) {
+  std::ifstream in(scene);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return text.find("assets/") != std::string::npos;
+}
+
+bool fetched_assets_present() { return std::filesystem::is_regular_file(source_dir() / "assets" / "dragon.obj"); }
 
 int run_command(const std::string& command_line, std::string* output) {
   const std::string full = command_line + " 2>&1";

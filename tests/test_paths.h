@@ -13,6 +13,11 @@ std::filesystem::path scratch_dir();
 // Writes `text` to scratch_dir()/name and returns the path.
 std::filesystem::path write_file(const std::string& name, const std::string& text);
 
+// Whether `scene` refers to meshes fetched by scripts/fetch-dragon.sh (under assets/), and
+// whether those have been fetched: tests skip such scenes until they are.
+bool uses_fetched_assets(const std::filesystem::path& scene);
+bool fetched_assets_present();
+
 // Runs a shell command line; returns its exit code, and stderr+stdout in `output`.
 int run_command(const std::string& command_line, std::string* output = nullptr);
 

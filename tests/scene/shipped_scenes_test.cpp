@@ -1,4 +1,6 @@
+#include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
+#include "rtpro/scene/scene_summary.h"
 
 #include "test_paths.h"
 
@@ -24,8 +26,18 @@ TEST(ShippedScenes, EveryYamlFileParses) {
   EXPECT_GE(scenes.size(), 4u);
   for (const auto& scene : scenes) {
     SCOPED_TRACE(scene.string());
+    if (test::uses_fetched_assets(scene) && !test::fetched_assets_present()) continue;
     EXPECT_NO_THROW(parse_scene_file(scene));
   }
+}
+
+TEST(ShippedScenes, DragonFieldHasABillionTrianglesFromOneStoredMesh) {
+  if (!test::fetched_assets_present()) GTEST_SKIP() << "run scripts/fetch-dragon.sh to fetch the dragon";
+  const RenderScene scene = build_render_scene(parse_scene_file(test::scenes_dir() / "dragon_field.yaml"));
+  const SceneSummary summary = summarize(scene);
+  EXPECT_GE(summary.triangles_rendered, 1'000'000'000u);
+  EXPECT_EQ(summary.triangles_stored, 871'414u);
+  EXPECT_EQ(summary.meshes, 1u);
 }
 
 TEST(ShippedScenes, DemoIsTheSeedScene) {
