@@ -10,6 +10,7 @@
 namespace rtpro::obj {
 
 using ascii::is_blank;
+using ascii::is_word_end;
 using ascii::quoted;
 using ascii::skip_blanks;
 using ascii::skip_word;
@@ -19,30 +20,11 @@ namespace {
 
 inline constexpr std::uint32_t kNoIndex = ~0u;
 
-// Calls visit(begin, end) for every line of text, without its '\n'.
-template <typename Visit>
-void for_each_line(std::string_view text, Visit&& visit) {
-  const char* p = text.data();
-  const char* const end = p + text.size();
-  while (p != end) {
-    const char* line_end = ascii::find_line_end(p, end);
-    visit(p, line_end);
-    p = line_end == end ? end : line_end + 1;
-  }
-}
-
-// The statement keyword of a line ("v", "f", ...); empty for blank and comment lines.
-std::string_view keyword_of(const char* p, const char* end) {
+// The statement keyword of the line starting at p ("v", "f", ...); empty for blank lines. Both
+// passes classify lines with it, so they always agree.
+std::string_view keyword_at(const char* p, const char* end) {
   p = skip_blanks(p, end);
-  if (p == end || *p == '#') return {};
   return word_at(p, end);
-}
-
-// A line's text after its keyword, without surrounding blanks.
-std::string_view argument_text(const char* p, const char* end) {
-  p = skip_blanks(p, end);
-  while (end != p && is_blank(end[-1])) --end;
-  return {p, std::size_t(end - p)};
 }
 
 struct Corner {
@@ -50,75 +32,78 @@ struct Corner {
   std::uint32_t normal;  // kNoIndex without one
 };
 
+// Parses one chunk in a single pass: every statement handler starts after its keyword and
+// returns the end of its line (the '\n' or the chunk's end), so no line is scanned twice.
 class ChunkParser {
  public:
-  ChunkParser(Chunk& chunk, const Destination& out) : chunk_(chunk), out_(out), seen_(chunk.start) {}
+  ChunkParser(Chunk& chunk, const Destination& out)
+      : chunk_(chunk), out_(out), seen_(chunk.start), end_(chunk.text.data() + chunk.text.size()) {}
 
   void parse() {
     chunk_.triangle_positions.reserve(chunk_.counts.faces);  // exact when every face is a triangle
-    for_each_line(chunk_.text, [this](const char* begin, const char* end) {
-      line_begin_ = begin;
+    for (const char* p = chunk_.text.data(); p != end_;) {
+      line_begin_ = p;
       ++seen_.lines;
-      parse_line(begin, end);
-    });
+      p = parse_line(p);
+      if (p != end_) ++p;
+    }
   }
 
  private:
-  void parse_line(const char* p, const char* end) {
-    const std::string_view keyword = keyword_of(p, end);
-    if (keyword.empty()) return;
-    const char* rest = skip_blanks(keyword.data() + keyword.size(), end);
-    if (keyword == "v") return parse_position(rest, end);
-    if (keyword == "f") return parse_face(rest, end);
-    if (keyword == "vn") return parse_normal(rest, end);
-    if (keyword == "vt") return parse_texcoord(rest, end);
-    if (keyword == "s") return parse_smoothing(rest, end);
-    if (keyword == "usemtl") return parse_usemtl(rest, end);
-    if (keyword == "mtllib") return parse_mtllib(rest, end);
-    if (keyword == "o") return parse_object_name(rest, end);
-    if (keyword == "g") return;  // groups name parts of one mesh: nothing to keep
-    tally_ignored(keyword);
+  const char* parse_line(const char* p) {
+    const std::string_view keyword = keyword_at(p, end_);
+    const char* rest = skip_blanks(keyword.data() + keyword.size(), end_);
+    if (keyword == "v") return parse_position(rest);
+    if (keyword == "f") return parse_face(rest);
+    if (keyword.empty() || keyword[0] == '#') return ascii::find_line_end(rest, end_);
+    if (keyword == "vn") return parse_normal(rest);
+    if (keyword == "vt") return parse_texcoord(rest);
+    if (keyword == "s") return parse_smoothing(rest);
+    if (keyword == "usemtl") return parse_usemtl(rest);
+    if (keyword == "mtllib") return parse_mtllib(rest);
+    if (keyword == "o") return parse_object_name(rest);
+    if (keyword != "g") tally_ignored(keyword);  // g names parts of one mesh: nothing to keep
+    return ascii::find_line_end(rest, end_);
   }
 
-  void parse_position(const char* p, const char* end) {
+  const char* parse_position(const char* p) {
     float xyz[3];
     for (int axis = 0; axis < 3; ++axis) {
-      p = skip_blanks(p, end);
-      if (at_line_end(p, end)) fail(p, "vertex needs 3 coordinates, found " + std::to_string(axis));
-      xyz[axis] = number(p, end);
+      p = skip_blanks(p, end_);
+      if (at_line_end(p)) fail(p, "vertex needs 3 coordinates, found " + std::to_string(axis));
+      const char* number_begin = p;
+      p = number(p, xyz[axis]);
       if (!(std::fabs(xyz[axis]) <= kMaxAbsCoordinate))
-        fail(p, "coordinate " + std::string(word_at(p, end)) + " is beyond the supported magnitude 1e16");
-      p = skip_word(p, end);
+        fail(number_begin, "coordinate " + std::string(word_at(number_begin, end_)) + " is beyond the supported magnitude 1e16");
     }
+    out_.positions[seen_.positions++] = PaddedVertex{xyz[0], xyz[1], xyz[2], 0.0f};
     // A 4th number is the rational weight w, 3 more a vertex colour (a common extension):
     // validated, not used.
-    expect_numbers_then_end(p, end, 3, "after the vertex coordinates");
-    out_.positions[seen_.positions++] = PaddedVertex{xyz[0], xyz[1], xyz[2], 0.0f};
+    return numbers_then_line_end(p, 3, "after the vertex coordinates");
   }
 
-  void parse_normal(const char* p, const char* end) {
+  const char* parse_normal(const char* p) {
     float xyz[3];
     for (int axis = 0; axis < 3; ++axis) {
-      p = skip_blanks(p, end);
-      if (at_line_end(p, end)) fail(p, "normal needs 3 components, found " + std::to_string(axis));
-      xyz[axis] = number(p, end);
-      p = skip_word(p, end);
+      p = skip_blanks(p, end_);
+      if (at_line_end(p)) fail(p, "normal needs 3 components, found " + std::to_string(axis));
+      p = number(p, xyz[axis]);
     }
-    expect_numbers_then_end(p, end, 0, "after the normal");
     if (xyz[0] == 0.0f && xyz[1] == 0.0f && xyz[2] == 0.0f && chunk_.first_zero_normal_line == 0)
       chunk_.first_zero_normal_line = seen_.lines;
     out_.normals[seen_.normals++] = Vec3(xyz[0], xyz[1], xyz[2]);
+    return numbers_then_line_end(p, 0, "after the normal");
   }
 
-  void parse_texcoord(const char* p, const char* end) {
-    if (at_line_end(skip_blanks(p, end), end)) fail(p, "texture coordinate needs 1 to 3 numbers");
-    expect_numbers_then_end(p, end, 3, "after the texture coordinate");
+  const char* parse_texcoord(const char* p) {
+    if (at_line_end(p)) fail(p, "texture coordinate needs 1 to 3 numbers");
     ++seen_.texcoords;
+    return numbers_then_line_end(p, 3, "after the texture coordinate");
   }
 
-  void parse_face(const char* p, const char* end) {
+  const char* parse_face(const char* p) {
     corners_.clear();
-    for (p = skip_blanks(p, end); !at_line_end(p, end); p = skip_blanks(p, end)) corners_.push_back(corner(p, end));
+    for (; !at_line_end(p); p = skip_blanks(p, end_)) corners_.push_back(corner(p));
     if (corners_.size() < 3)
       fail(line_begin_, "face needs at least 3 vertices, found " + std::to_string(corners_.size()));
     ++chunk_.faces;
@@ -135,6 +120,7 @@ class ChunkParser {
       chunk_.triangle_positions.push_back({a.position, b.position, c.position});
       if (chunk_.every_corner_has_normal) chunk_.triangle_normals.push_back({a.normal, b.normal, c.normal});
     }
+    return line_end(p);
   }
 
   void keep_normals_while_complete() {
@@ -149,81 +135,92 @@ class ChunkParser {
   }
 
   // One face vertex: v, v/vt, v//vn or v/vt/vn. Advances p past it.
-  Corner corner(const char*& p, const char* end) {
+  Corner corner(const char*& p) {
     const char* token = p;
-    Corner result{index(p, end, seen_.positions, out_.totals.positions, "vertex"), kNoIndex};
-    if (p != end && *p == '/') {
+    Corner result{index(p, seen_.positions, out_.totals.positions, "vertex"), kNoIndex};
+    if (p != end_ && *p == '/') {
       ++p;
-      if (p == end || *p != '/') index(p, end, seen_.texcoords, out_.totals.texcoords, "texture coordinate");
-      if (p != end && *p == '/') {
+      if (p == end_ || *p != '/') index(p, seen_.texcoords, out_.totals.texcoords, "texture coordinate");
+      if (p != end_ && *p == '/') {
         ++p;
-        result.normal = index(p, end, seen_.normals, out_.totals.normals, "normal");
+        result.normal = index(p, seen_.normals, out_.totals.normals, "normal");
       }
     }
-    if (p != end && !is_blank(*p) && *p != '#') fail(token, "malformed face vertex " + quoted(word_at(token, end)));
+    if (p != end_ && !is_word_end(*p) && *p != '#') fail(token, "malformed face vertex " + quoted(word_at(token, end_)));
     return result;
   }
 
   // A 1-based index, or a negative one relative to the `declared` elements read so far; returns
   // the 0-based index. Positive indices may point forward, up to the file's total.
-  std::uint32_t index(const char*& p, const char* end, std::uint64_t declared, std::uint64_t total,
-                      const char* what) {
+  std::uint32_t index(const char*& p, std::uint64_t declared, std::uint64_t total, const char* what) const {
     std::int64_t raw = 0;
-    const ascii::IntegerScan scan = ascii::scan_integer(p, end, raw);
-    if (!scan.ok) fail(p, std::string("expected a ") + what + " index, found " + quoted(word_at(p, end)));
-    if (raw == 0) fail(p, std::string(what) + " index 0 is invalid: OBJ indices start at 1");
-    std::uint64_t resolved = 0;
-    if (raw > 0) {
-      if (std::uint64_t(raw) > total)
-        fail(p, std::string(what) + " index " + std::to_string(raw) + " is out of range: the file has " +
-                    std::to_string(total));
-      resolved = std::uint64_t(raw) - 1;
-    } else {
-      if (std::uint64_t(-raw) > declared)
-        fail(p, std::string(what) + " index " + std::to_string(raw) + " is out of range: only " +
-                    std::to_string(declared) + " declared before this line");
-      resolved = declared - std::uint64_t(-raw);
+    const ascii::IntegerScan scan = ascii::scan_integer(p, end_, raw);
+    if (scan.ok && raw > 0 && std::uint64_t(raw) <= total) {
+      p = scan.next;
+      return std::uint32_t(raw - 1);
     }
-    p = scan.next;
-    return std::uint32_t(resolved);
+    if (scan.ok && raw < 0 && std::uint64_t(-raw) <= declared) {
+      p = scan.next;
+      return std::uint32_t(declared - std::uint64_t(-raw));
+    }
+    fail_index(p, scan.ok, raw, declared, total, what);
   }
 
-  void parse_smoothing(const char* p, const char* end) {
-    const std::string_view word = word_at(p, end);
+  [[noreturn, gnu::cold, gnu::noinline]] void fail_index(const char* p, bool is_integer, std::int64_t raw, std::uint64_t declared,
+                                                         std::uint64_t total, const char* what) const {
+    if (!is_integer) fail(p, std::string("expected a ") + what + " index, found " + quoted(word_at(p, end_)));
+    if (raw == 0) fail(p, std::string(what) + " index 0 is invalid: OBJ indices start at 1");
+    if (raw > 0)
+      fail(p, std::string(what) + " index " + std::to_string(raw) + " is out of range: the file has " + std::to_string(total));
+    fail(p, std::string(what) + " index " + std::to_string(raw) + " is out of range: only " + std::to_string(declared) +
+                " declared before this line");
+  }
+
+  const char* parse_smoothing(const char* p) {
+    const std::string_view word = word_at(p, end_);
     std::uint32_t group = kFlat;
     std::int64_t number = 0;
-    const ascii::IntegerScan scan = ascii::scan_integer(p, end, number);
+    const ascii::IntegerScan scan = ascii::scan_integer(p, end_, number);
     if (word == "off") {
       group = kFlat;
     } else if (word == "on") {
       group = 1;  // not in the specification, but written by some exporters
-    } else if (scan.ok && scan.next == word.data() + word.size() && number >= 0 &&
-               std::uint64_t(number) < kInherited) {
+    } else if (scan.ok && scan.next == word.data() + word.size() && number >= 0 && std::uint64_t(number) < kInherited) {
       group = std::uint32_t(number);
     } else {
       fail(p, "expected 'off' or a smoothing group number, found " + quoted(word));
     }
-    expect_numbers_then_end(skip_word(p, end), end, 0, "after the smoothing group");
     chunk_.has_smoothing_statement = true;
     change_state().smoothing = group;
+    return numbers_then_line_end(skip_word(p, end_), 0, "after the smoothing group");
   }
 
-  void parse_usemtl(const char* p, const char* end) {
-    const std::string_view name = argument_text(p, end);
+  const char* parse_usemtl(const char* p) {
+    const char* end = ascii::find_line_end(p, end_);
+    const std::string_view name = trimmed(p, end);
     if (name.empty()) fail(p, "usemtl needs a material name");
-    auto [slot, inserted] = material_slots_.try_emplace(name, std::uint32_t(chunk_.material_names.size()));
+    const auto [slot, inserted] = material_slots_.try_emplace(name, std::uint32_t(chunk_.material_names.size()));
     if (inserted) chunk_.material_names.push_back({name, seen_.lines});
     change_state().material_slot = slot->second;
+    return end;
   }
 
-  void parse_mtllib(const char* p, const char* end) {
-    if (at_line_end(p, end)) fail(p, "mtllib needs a file name");
-    for (; !at_line_end(p, end); p = skip_blanks(skip_word(p, end), end))
-      chunk_.material_libraries.push_back({word_at(p, end), seen_.lines});
+  const char* parse_mtllib(const char* p) {
+    if (at_line_end(p)) fail(p, "mtllib needs a file name");
+    for (; !at_line_end(p); p = skip_blanks(skip_word(p, end_), end_))
+      chunk_.material_libraries.push_back({word_at(p, end_), seen_.lines});
+    return line_end(p);
   }
 
-  void parse_object_name(const char* p, const char* end) {
-    if (chunk_.object_name.name.empty()) chunk_.object_name = {argument_text(p, end), seen_.lines};
+  const char* parse_object_name(const char* p) {
+    const char* end = ascii::find_line_end(p, end_);
+    if (chunk_.object_name.name.empty()) chunk_.object_name = {trimmed(p, end), seen_.lines};
+    return end;
+  }
+
+  static std::string_view trimmed(const char* p, const char* end) {
+    while (end != p && is_blank(end[-1])) --end;
+    return {p, std::size_t(end - p)};
   }
 
   // The state entry for the next triangle, carrying over what earlier statements set.
@@ -247,25 +244,31 @@ class ChunkParser {
     chunk_.ignored.push_back({keyword, 1, seen_.lines});
   }
 
-  float number(const char* p, const char* end) {
-    float value = 0.0f;
-    const ascii::FloatScan scan = ascii::scan_real(p, end, value);
-    if (scan.status == ascii::NumberStatus::kMalformed)
-      fail(p, quoted(word_at(p, end)) + " is not a number");
-    if (scan.status == ascii::NumberStatus::kNotFinite)
-      fail(p, quoted(word_at(p, end)) + " is not a finite number in float range");
-    return value;
+  // A finite float at p; returns the position after it.
+  const char* number(const char* p, float& value) const {
+    const ascii::FloatScan scan = ascii::scan_real(p, end_, value);
+    if (scan.status != ascii::NumberStatus::kOk) fail_number(p, scan.status);
+    return scan.next;
+  }
+
+  [[noreturn, gnu::cold, gnu::noinline]] void fail_number(const char* p, ascii::NumberStatus status) const {
+    if (status == ascii::NumberStatus::kMalformed) fail(p, quoted(word_at(p, end_)) + " is not a number");
+    fail(p, quoted(word_at(p, end_)) + " is not a finite number in float range");
   }
 
   // Up to `allowed` more numbers (validated, unused), then the end of the line.
-  void expect_numbers_then_end(const char* p, const char* end, int allowed, const char* where) {
-    for (p = skip_blanks(p, end); !at_line_end(p, end); p = skip_blanks(skip_word(p, end), end)) {
-      if (allowed-- == 0) fail(p, "unexpected " + quoted(word_at(p, end)) + " " + where);
-      number(p, end);
+  const char* numbers_then_line_end(const char* p, int allowed, const char* where) const {
+    for (p = skip_blanks(p, end_); !at_line_end(p); p = skip_blanks(p, end_)) {
+      if (allowed-- == 0) fail(p, "unexpected " + quoted(word_at(p, end_)) + " " + where);
+      float unused;
+      p = number(p, unused);
     }
+    return line_end(p);
   }
 
-  static bool at_line_end(const char* p, const char* end) { return p == end || *p == '#'; }
+  // A statement ends at the end of its line or at a comment.
+  bool at_line_end(const char* p) const { return p == end_ || *p == '\n' || *p == '#'; }
+  const char* line_end(const char* p) const { return p != end_ && *p == '#' ? ascii::find_line_end(p, end_) : p; }
 
   [[noreturn, gnu::cold, gnu::noinline]] void fail(const char* at, const std::string& message) const {
     throw InputError(SourceLocation{out_.file, int(seen_.lines), int(at - line_begin_) + 1}, message);
@@ -274,10 +277,26 @@ class ChunkParser {
   Chunk& chunk_;
   const Destination& out_;
   Counts seen_;  // everything declared up to the current line, file-wide
+  const char* const end_;
   const char* line_begin_ = nullptr;
   std::vector<Corner> corners_;  // of the current face; reused to avoid an allocation per face
   std::unordered_map<std::string_view, std::uint32_t> material_slots_;
 };
+
+// Counts the line starting at p, classified exactly as keyword_at() classifies it for the parse,
+// but looking at no more than three bytes.
+void count_line(const char* p, const char* end, Counts& counts) {
+  ++counts.lines;
+  p = skip_blanks(p, end);
+  const auto at = [p, end](int i) { return p + i < end ? p[i] : '\n'; };  // the end ends a word too
+  if (at(0) == 'f') {
+    if (is_word_end(at(1))) ++counts.faces;
+  } else if (at(0) == 'v') {
+    if (is_word_end(at(1))) ++counts.positions;
+    else if (at(1) == 'n' && is_word_end(at(2))) ++counts.normals;
+    else if (at(1) == 't' && is_word_end(at(2))) ++counts.texcoords;
+  }
+}
 
 }  // namespace
 
@@ -299,14 +318,22 @@ std::vector<Chunk> split_into_chunks(std::string_view text, std::size_t chunk_by
 
 void count_chunk(Chunk& chunk) {
   Counts counts;
-  for_each_line(chunk.text, [&counts](const char* begin, const char* end) {
-    ++counts.lines;
-    const std::string_view keyword = keyword_of(begin, end);
-    if (keyword.size() == 1 && keyword[0] == 'v') ++counts.positions;
-    else if (keyword == "vn") ++counts.normals;
-    else if (keyword == "vt") ++counts.texcoords;
-    else if (keyword.size() == 1 && keyword[0] == 'f') ++counts.faces;
-  });
+  const char* p = chunk.text.data();
+  const char* const end = p + chunk.text.size();
+  if (p != end) count_line(p, end, counts);
+  // Every newline not at the very end starts a line; find them 8 bytes at a time.
+  const char* block = p;
+  if constexpr (ascii::swar::kAvailable) {
+    for (; end - block >= 8; block += 8) {
+      for (std::uint64_t newlines = ascii::swar::bytes_equal(ascii::swar::load(block), '\n'); newlines;
+           newlines &= newlines - 1) {
+        const char* next_line = block + std::countr_zero(newlines) / 8 + 1;
+        if (next_line != end) count_line(next_line, end, counts);
+      }
+    }
+  }
+  for (; block != end; ++block)
+    if (*block == '\n' && block + 1 != end) count_line(block + 1, end, counts);
   chunk.counts = counts;
 }
 

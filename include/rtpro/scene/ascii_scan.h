@@ -14,7 +14,13 @@
 
 namespace rtpro::ascii {
 
-inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+// Blanks separate words within a line; a word ends at a blank, a newline or the end. Parsers
+// that walk a whole buffer (OBJ) stop at '\n' themselves; line-at-a-time parsers never see one.
+// One bit per character code below 64: a shift and a mask instead of a chain of comparisons.
+inline bool in_set(char c, std::uint64_t set) { return static_cast<unsigned char>(c) < 64 && (set >> c & 1); }
+inline constexpr std::uint64_t kBlanks = 1ull << ' ' | 1ull << '\t' | 1ull << '\r' | 1ull << '\v' | 1ull << '\f';
+inline bool is_blank(char c) { return in_set(c, kBlanks); }
+inline bool is_word_end(char c) { return in_set(c, kBlanks | 1ull << '\n'); }
 inline bool is_digit(char c) { return static_cast<unsigned char>(c - '0') < 10u; }
 
 inline const char* skip_blanks(const char* p, const char* end) {
@@ -23,7 +29,7 @@ inline const char* skip_blanks(const char* p, const char* end) {
 }
 
 inline const char* skip_word(const char* p, const char* end) {
-  while (p != end && !is_blank(*p)) ++p;
+  while (p != end && !is_word_end(*p)) ++p;
   return p;
 }
 
@@ -52,6 +58,13 @@ inline std::uint64_t load(const char* p) {
   return word;
 }
 
+// One bit (the high bit of the byte) for every byte of `word` equal to `byte`, exactly: the
+// sums stay inside each byte, so no carry can fake a match.
+inline std::uint64_t bytes_equal(std::uint64_t word, char byte) {
+  const std::uint64_t t = word ^ (kOnes * static_cast<unsigned char>(byte));
+  return ~(((t & ~kHighBits) + ~kHighBits) | t) & kHighBits;
+}
+
 // Index of the first byte of `word` that is not an ASCII digit; 8 if all are.
 inline int leading_digits(std::uint64_t word) {
   const std::uint64_t t = word ^ (kOnes * '0');  // digits become 0..9
@@ -74,10 +87,8 @@ inline std::uint32_t digits_value(std::uint64_t word, int n) {
 inline const char* find_line_end(const char* p, const char* end) {
   if constexpr (swar::kAvailable) {
     for (; end - p >= 8; p += 8) {
-      const std::uint64_t t = swar::load(p) ^ (swar::kOnes * '\n');
-      // Exact for the lowest zero byte, which is all we need.
-      const std::uint64_t zero = (t - swar::kOnes) & ~t & swar::kHighBits;
-      if (zero) return p + std::countr_zero(zero) / 8;
+      const std::uint64_t newlines = swar::bytes_equal(swar::load(p), '\n');
+      if (newlines) return p + std::countr_zero(newlines) / 8;
     }
   }
   while (p != end && *p != '\n') ++p;
@@ -134,14 +145,14 @@ inline bool scan_short_decimal(const char* p, const char* end, float& value, con
     if (fraction < 0 || fraction > 10) return false;
     mantissa = mantissa * kPowersOf10[fraction] + digits;
   }
-  if (whole < 0 || whole + fraction == 0 || mantissa > (1u << 24) || (p != end && !is_blank(*p))) return false;
+  if (whole < 0 || whole + fraction == 0 || mantissa > (1u << 24) || (p != end && !is_word_end(*p))) return false;
   const float magnitude = float(mantissa) / float(kPowersOf10[fraction]);
   value = negative ? -magnitude : magnitude;
   next = p;
   return true;
 }
 
-// A finite number (optionally signed with '+') that ends at a blank or the end of the range.
+// A finite number (optionally signed with '+') that ends where a word ends.
 // nan, inf and values beyond the type's range (1e999) are kNotFinite; "1,5" and "abc" are
 // kMalformed.
 template <typename Real>
@@ -153,7 +164,7 @@ inline FloatScan scan_real(const char* p, const char* end, Real& value) {
   }
   const fast_float::from_chars_result result = fast_float::from_chars(p, end, value);
   if (result.ec == std::errc::result_out_of_range) return {NumberStatus::kNotFinite, result.ptr};
-  if (result.ec != std::errc() || (result.ptr != end && !is_blank(*result.ptr)))
+  if (result.ec != std::errc() || (result.ptr != end && !is_word_end(*result.ptr)))
     return {NumberStatus::kMalformed, p};
   if (!std::isfinite(value)) return {NumberStatus::kNotFinite, result.ptr};
   return {NumberStatus::kOk, result.ptr};
