@@ -1,0 +1,78 @@
+#pragma once
+// What a failing regression test leaves in the build tree, one folder per scene and backend:
+// reference.png, rendered.png and diff.png to look at, rendered.exr to inspect or adopt, and
+// figures.json with the numbers. figures.json is written last and atomically: a folder without it
+// is incomplete and the report ignores it.
+#include "rtpro/image/diff_image.h"
+#include "rtpro/image/image_compare.h"
+#include "rtpro/image/image_io.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include <unistd.h>
+
+namespace rtpro::regression {
+
+// Infinity and NaN have no JSON spelling; null stands for "not finite".
+inline nlohmann::json finite_or_null(double value) {
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
+inline nlohmann::json comparison_figures(const ImageComparison& comparison, const CompareThresholds& thresholds) {
+  nlohmann::json figures;
+  figures["verdict"] = comparison.verdict;
+  figures["incompatibility"] = comparison.incompatibility;
+  figures["pixels"] = comparison.pixel_count;
+  figures["fail_pixels"] = comparison.fail_pixels;
+  figures["fail_percent"] = 100.0 * comparison.fail_fraction();
+  figures["nonfinite_mismatch_pixels"] = comparison.nonfinite_mismatch_pixels;
+  figures["mean_error"] = comparison.mean_error;
+  figures["rms_error"] = comparison.rms_error;
+  figures["psnr"] = finite_or_null(comparison.psnr);
+  figures["max_error"] = finite_or_null(comparison.max_error);
+  figures["max_error_at"] = {{"x", comparison.max_x}, {"y", comparison.max_y}, {"channel", comparison.max_channel}};
+  figures["thresholds"] = {{"fail", thresholds.fail},
+                           {"fail_percent", thresholds.fail_percent},
+                           {"max_mean_error", thresholds.max_mean_error ? nlohmann::json(*thresholds.max_mean_error)
+                                                                        : nlohmann::json(nullptr)}};
+  return figures;
+}
+
+// Temporary file beside the target, then rename: readers see the old file or the whole new one.
+inline void write_text_atomically(const std::filesystem::path& file, const std::string& text) {
+  const std::filesystem::path temporary = file.string() + ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    out << text;
+    if (!out.flush()) throw std::runtime_error("cannot write " + temporary.string());
+  }
+  std::filesystem::rename(temporary, file);
+}
+
+// `figures` gets the image names added. The diff is scaled to the largest difference, so its
+// shape shows even when the error is small; the figures give the size.
+inline void write_failure_folder(const std::filesystem::path& folder, const Image& reference, const Image& rendered,
+                                 nlohmann::json figures) {
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  const ImageWriteOptions display_options;
+  write_image(folder / "reference.png", reference, display_options);
+  write_image(folder / "rendered.png", rendered, display_options);
+  write_image(folder / "rendered.exr", rendered, display_options);
+  figures["images"] = {{"reference", "reference.png"}, {"rendered", "rendered.png"}, {"rendered_exr", "rendered.exr"}};
+  const bool comparable = reference.width == rendered.width && reference.height == rendered.height &&
+                          reference.channel_count() == rendered.channel_count();
+  if (comparable) {
+    write_diff_image(folder / "diff.png", reference, rendered, 0.0f);
+    figures["images"]["diff"] = "diff.png";
+  }
+  write_text_atomically(folder / "figures.json", figures.dump(2) + "\n");
+}
+
+}  // namespace rtpro::regression

@@ -1,0 +1,89 @@
+// The failure folders and the HTML report that the regression tests leave behind.
+#include "html_report.h"
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace rtpro::regression {
+namespace {
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+Image flat(int width, int height, float value) {
+  Image image(width, height);
+  for (float& v : image.data) v = value;
+  return image;
+}
+
+nlohmann::json failing_figures(const std::string& scene, const Image& reference, const Image& rendered) {
+  CompareThresholds thresholds;
+  thresholds.fail = thresholds.warn = 1e-5f;
+  nlohmann::json figures = comparison_figures(compare_images(reference, rendered, thresholds), thresholds);
+  figures["scene"] = scene;
+  figures["backend"] = "native";
+  return figures;
+}
+
+TEST(RegressionReport, ListsEveryFailureWithItsImagesAndFigures) {
+  const auto root = test::scratch_dir();
+  const Image reference = flat(8, 6, 0.5f);
+  Image brighter = reference;
+  brighter.at(3, 2, 1) = 0.75f;
+  write_failure_folder(root / "a-native", reference, brighter, failing_figures("scenes/a.yaml", reference, brighter));
+  write_failure_folder(root / "b-native", reference, flat(8, 6, 0.6f),
+                       failing_figures("scenes/b.yaml", reference, flat(8, 6, 0.6f)));
+
+  const std::string html = read_text(regenerate_report(root, "make references"));
+  for (const char* file : {"reference.png", "rendered.png", "diff.png", "rendered.exr", "figures.json"}) {
+    EXPECT_TRUE(std::filesystem::is_regular_file(root / "a-native" / file)) << file;
+    EXPECT_NE(html.find(std::string("a-native/") + file), std::string::npos) << file;
+    EXPECT_NE(html.find(std::string("b-native/") + file), std::string::npos) << file;
+  }
+  EXPECT_LT(html.find("scenes/a.yaml"), html.find("scenes/b.yaml"));
+  EXPECT_NE(html.find("1 of 48"), std::string::npos) << "a's one failing pixel";
+  EXPECT_NE(html.find("at (3, 2) channel G"), std::string::npos) << "where a's max error is";
+  EXPECT_NE(html.find("make references"), std::string::npos);
+}
+
+TEST(RegressionReport, ClearingTheLastFailureLeavesAReportSayingSo) {
+  const auto root = test::scratch_dir();
+  const Image reference = flat(4, 4, 0.2f);
+  write_failure_folder(root / "a-embree", reference, flat(4, 4, 0.3f),
+                       failing_figures("scenes/a.yaml", reference, flat(4, 4, 0.3f)));
+  regenerate_report(root, "");
+  clear_failure(root, "a-embree", "");
+  EXPECT_FALSE(std::filesystem::exists(root / "a-embree"));
+  EXPECT_NE(read_text(root / "report.html").find("No failing regression tests."), std::string::npos);
+}
+
+TEST(RegressionReport, IgnoresAFolderWithoutFiguresAndEscapesText) {
+  const auto root = test::scratch_dir();
+  std::filesystem::create_directories(root / "half-written");
+  const Image reference = flat(4, 4, 0.2f);
+  write_failure_folder(root / "x-native", reference, flat(4, 4, 0.3f),
+                       failing_figures("scenes/<x>&.yaml", reference, flat(4, 4, 0.3f)));
+  const std::string html = read_text(regenerate_report(root, ""));
+  EXPECT_EQ(html.find("half-written"), std::string::npos);
+  EXPECT_NE(html.find("scenes/&lt;x&gt;&amp;.yaml"), std::string::npos);
+  EXPECT_EQ(html.find("<x>"), std::string::npos);
+}
+
+TEST(RegressionReport, ImagesOfDifferentSizesGetNoDiff) {
+  const auto root = test::scratch_dir();
+  const Image reference = flat(4, 4, 0.2f);
+  write_failure_folder(root / "s-native", reference, flat(4, 3, 0.2f),
+                       failing_figures("scenes/s.yaml", reference, flat(4, 3, 0.2f)));
+  EXPECT_FALSE(std::filesystem::exists(root / "s-native" / "diff.png"));
+  EXPECT_NE(read_text(regenerate_report(root, "")).find("(none: the images differ in size)"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rtpro::regression
