@@ -172,7 +172,7 @@ class BvhBuilder {
 
 }  // namespace
 
-Bvh build_bvh(const Group& group, const std::vector<Group>& prototypes) {
+Bvh build_bvh(const Group& group, std::span<const BBox> prototype_bounds) {
   std::size_t total = 0;
   for (std::uint32_t g = 0; g < group.geometries.size(); ++g) total += group.primitive_count(g);
   std::vector<BuildPrimitive> primitives;
@@ -180,7 +180,7 @@ Bvh build_bvh(const Group& group, const std::vector<Group>& prototypes) {
   for (std::uint32_t g = 0; g < group.geometries.size(); ++g) {
     const std::uint32_t count = group.primitive_count(g);
     for (std::uint32_t p = 0; p < count; ++p) {
-      const BBox b = group.primitive_bounds(g, p, prototypes);
+      const BBox b = group.primitive_bounds(g, p, prototype_bounds);
       if (b.empty()) continue;  // e.g. an instance of an empty prototype
       primitives.push_back({b, b.center(), {g, p}});
     }

@@ -51,14 +51,14 @@ void validate_mesh(const TriangleMesh& mesh, int group, std::uint32_t geometry) 
   }
 }
 
-void validate_instance(const Instance& instance, const RenderScene& scene, std::uint32_t geometry) {
-  if (instance.prototype >= scene.prototypes.size()) refuse(-1, geometry, "instances a missing prototype");
-  const BBox world = instance.object_to_world.apply(scene.prototypes[instance.prototype].bounds(scene.prototypes));
+void validate_instance(const Instance& instance, std::span<const BBox> prototype_bounds, std::uint32_t geometry) {
+  if (instance.prototype >= prototype_bounds.size()) refuse(-1, geometry, "instances a missing prototype");
+  const BBox world = instance.object_to_world.apply(prototype_bounds[instance.prototype]);
   if (!instance.object_to_world.is_finite() || !in_embree_range(world))
     refuse(-1, geometry, "is placed outside Embree's coordinate range");
 }
 
-void validate_group(const Group& group, int group_index, const RenderScene& scene) {
+void validate_group(const Group& group, int group_index, std::span<const BBox> prototype_bounds) {
   for (std::uint32_t g = 0; g < group.geometries.size(); ++g) {
     const Geometry& geometry = group.geometries[g];
     switch (kind_of(geometry)) {
@@ -66,7 +66,7 @@ void validate_group(const Group& group, int group_index, const RenderScene& scen
       case GeometryKind::kTriangles: validate_mesh(std::get<TriangleMesh>(geometry), group_index, g); break;
       case GeometryKind::kInstance:
         if (group_index >= 0) refuse(group_index, g, "is an instance inside a prototype (one level only)");
-        validate_instance(std::get<Instance>(geometry), scene, g);
+        validate_instance(std::get<Instance>(geometry), prototype_bounds, g);
         break;
     }
   }
@@ -163,8 +163,8 @@ EmbreeBuildSettings embree_build_settings(const BackendOptions& options) {
 EmbreeScenes build_embree_scenes(EmbreeDevice::Session& session, const RenderScene& scene,
                                  const EmbreeBuildSettings& settings) {
   for (std::size_t p = 0; p < scene.prototypes.size(); ++p)
-    validate_group(scene.prototypes[p], static_cast<int>(p), scene);
-  validate_group(scene.top, -1, scene);
+    validate_group(scene.prototypes[p], static_cast<int>(p), {});
+  validate_group(scene.top, -1, scene.prototype_bounds());
 
   EmbreeScenes scenes;
   scenes.prototypes.reserve(scene.prototypes.size());

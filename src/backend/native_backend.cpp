@@ -49,9 +49,9 @@ class NativeBackend final : public Backend {
  public:
   NativeBackend(const RenderScene& scene) : scene_(scene) {
     const auto start = std::chrono::steady_clock::now();
-    top_bvh_ = build_bvh(scene.top, scene.prototypes);
+    top_bvh_ = build_bvh(scene.top, scene.prototype_bounds());
     prototype_bvhs_.reserve(scene.prototypes.size());
-    for (const Group& prototype : scene.prototypes) prototype_bvhs_.push_back(build_bvh(prototype, scene.prototypes));
+    for (const Group& prototype : scene.prototypes) prototype_bvhs_.push_back(build_bvh(prototype, {}));
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 

@@ -17,20 +17,20 @@ std::uint32_t Group::primitive_count(std::uint32_t g) const {
   return 0;
 }
 
-BBox Group::primitive_bounds(std::uint32_t g, std::uint32_t prim, const std::vector<Group>& prototypes) const {
+BBox Group::primitive_bounds(std::uint32_t g, std::uint32_t prim, std::span<const BBox> prototype_bounds) const {
   const Geometry& geometry = geometries[g];
   switch (kind_of(geometry)) {
     case GeometryKind::kSpheres: return std::get<SphereSet>(geometry).sphere_bounds(prim);
     case GeometryKind::kTriangles: return std::get<TriangleMesh>(geometry).triangle_bounds(prim);
     case GeometryKind::kInstance: {
       const Instance& instance = std::get<Instance>(geometry);
-      return instance.object_to_world.apply(prototypes[instance.prototype].bounds(prototypes));
+      return instance.object_to_world.apply(prototype_bounds[instance.prototype]);
     }
   }
   return {};
 }
 
-BBox Group::bounds(const std::vector<Group>& prototypes) const {
+BBox Group::bounds(std::span<const BBox> prototype_bounds) const {
   BBox b;
   for (std::uint32_t g = 0; g < geometries.size(); ++g) {
     const Geometry& geometry = geometries[g];
@@ -39,10 +39,17 @@ BBox Group::bounds(const std::vector<Group>& prototypes) const {
         for (std::uint32_t i = 0; i < primitive_count(g); ++i) b.extend(std::get<SphereSet>(geometry).sphere_bounds(i));
         break;
       case GeometryKind::kTriangles: b.extend(std::get<TriangleMesh>(geometry).bounds()); break;
-      case GeometryKind::kInstance: b.extend(primitive_bounds(g, 0, prototypes)); break;
+      case GeometryKind::kInstance: b.extend(primitive_bounds(g, 0, prototype_bounds)); break;
     }
   }
   return b;
+}
+
+std::vector<BBox> RenderScene::prototype_bounds() const {
+  std::vector<BBox> result;
+  result.reserve(prototypes.size());
+  for (const Group& prototype : prototypes) result.push_back(prototype.bounds({}));  // prototypes hold no instances
+  return result;
 }
 
 }  // namespace rtpro

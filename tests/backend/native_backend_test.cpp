@@ -109,8 +109,8 @@ TEST(NativeBackend, RejectsAndCountsUntraceableRays) {
 
 TEST(Bvh, IsDeterministicAndBoundsItsDepth) {
   const RenderScene scene = test::random_mixed_scene(9, 5000, 5000, 0);
-  const Bvh a = build_bvh(scene.top, scene.prototypes);
-  const Bvh b = build_bvh(scene.top, scene.prototypes);
+  const Bvh a = build_bvh(scene.top, scene.prototype_bounds());
+  const Bvh b = build_bvh(scene.top, scene.prototype_bounds());
   ASSERT_EQ(a.nodes.size(), b.nodes.size());
   for (std::size_t i = 0; i < a.refs.size(); ++i) {
     ASSERT_EQ(a.refs[i].geom, b.refs[i].geom);

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace rtpro {
@@ -35,6 +36,6 @@ struct Bvh {
 inline constexpr int kBvhMaxDepth = 128;
 
 // Deterministic: the same group always gives the same tree.
-Bvh build_bvh(const Group& group, const std::vector<Group>& prototypes);
+Bvh build_bvh(const Group& group, std::span<const BBox> prototype_bounds);
 
 }  // namespace rtpro

@@ -7,6 +7,7 @@
 #include "rtpro/scene/mesh.h"
 
 #include <cstdint>
+#include <span>
 #include <variant>
 #include <vector>
 
@@ -39,8 +40,10 @@ struct Group {
   std::vector<Geometry> geometries;
   // Primitive count of geometry g (spheres, triangles, or 1 for an instance).
   std::uint32_t primitive_count(std::uint32_t g) const;
-  BBox primitive_bounds(std::uint32_t g, std::uint32_t prim, const std::vector<Group>& prototypes) const;
-  BBox bounds(const std::vector<Group>& prototypes) const;
+  // Instances need their prototype's bounds: callers compute RenderScene::prototype_bounds()
+  // once rather than walking a large prototype again for every instance of it.
+  BBox primitive_bounds(std::uint32_t g, std::uint32_t prim, std::span<const BBox> prototype_bounds) const;
+  BBox bounds(std::span<const BBox> prototype_bounds) const;
 };
 
 struct Material {
@@ -59,7 +62,8 @@ struct RenderScene {
   Group top;                     // may contain instances
   std::vector<Group> prototypes; // never contain instances
 
-  BBox bounds() const { return top.bounds(prototypes); }
+  std::vector<BBox> prototype_bounds() const;
+  BBox bounds() const { return top.bounds(prototype_bounds()); }
 };
 
 }  // namespace rtpro
