@@ -32,7 +32,7 @@ namespace {
 struct RenderCommandOptions {
   std::string scene;
   std::string output;
-  std::string backend = "native";
+  std::string backend = "embree";
   std::optional<int> spp, threads, max_depth;
   std::optional<std::uint64_t> seed;
   std::string size;
