@@ -9,6 +9,8 @@
 #include <tbb/parallel_for.h>
 
 #include <chrono>
+#include <memory>
+#include <span>
 #include <cmath>
 
 namespace rtpro {
@@ -20,19 +22,38 @@ struct TileStats {
   std::uint64_t nan_samples = 0;
 };
 
+// Camera rays of one tile row, traced as one batch (Embree streams them coherently).
+struct RowBatch {
+  std::vector<Ray> rays;
+  std::vector<Hit> hits;
+  std::unique_ptr<bool[]> found;
+  explicit RowBatch(std::size_t capacity) : rays(capacity), hits(capacity), found(new bool[capacity]) {}
+};
+
 void render_tile(const RenderScene& scene, const Backend& backend, const Camera& camera,
                  const StratifiedSampler& sampler, const PixelRegion& tile, Film& film, TileStats& stats) {
   const int spp = sampler.samples_per_pixel();
   const int width = scene.camera.width;
+  const std::size_t row_rays = static_cast<std::size_t>(tile.width()) * spp;
+  RowBatch batch(row_rays);
   for (int y = tile.y0; y < tile.y1; ++y) {
+    std::size_t i = 0;
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      const std::uint64_t pixel_key = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(width) + x;
+      for (int s = 0; s < spp; ++s, ++i) {
+        const PixelOffset offset = sampler.sample(pixel_key, s);
+        batch.rays[i] = camera.generate(static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y);
+      }
+    }
+    backend.intersect(std::span<const Ray>(batch.rays.data(), row_rays), std::span<Hit>(batch.hits.data(), row_rays),
+                      std::span<bool>(batch.found.get(), row_rays));
+    i = 0;
     for (int x = tile.x0; x < tile.x1; ++x) {
       PixelAccumulator acc;
-      const std::uint64_t pixel_key = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(width) + x;
-      for (int s = 0; s < spp; ++s) {
-        const PixelOffset offset = sampler.sample(pixel_key, s);
-        const Ray ray = camera.generate(static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y);
+      for (int s = 0; s < spp; ++s, ++i) {
         PrimaryHit primary;
-        Color radiance = trace_radiance(scene, backend, ray, stats.rays, &primary);
+        Color radiance = trace_radiance_from(scene, backend, batch.rays[i], batch.found[i], batch.hits[i], stats.rays,
+                                             &primary);
         if (!is_finite(radiance)) {
           ++stats.nan_samples;
           radiance = Color(0.0f);

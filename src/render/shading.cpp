@@ -34,13 +34,21 @@ Color direct_light(const RenderScene& scene, const Backend& backend, const Surfa
 
 Color trace_radiance(const RenderScene& scene, const Backend& backend, const Ray& camera_ray, RayCounts& counts,
                      PrimaryHit* primary) {
+  Hit hit;
+  const bool found = backend.intersect(camera_ray, hit);
+  return trace_radiance_from(scene, backend, camera_ray, found, hit, counts, primary);
+}
+
+Color trace_radiance_from(const RenderScene& scene, const Backend& backend, const Ray& camera_ray,
+                          bool camera_hit_found, const Hit& camera_hit, RayCounts& counts, PrimaryHit* primary) {
   Color result(0.0f);
   Color weight(1.0f);
   Ray ray = camera_ray;
   for (int depth = 0;; ++depth) {
-    Hit hit;
+    Hit hit = camera_hit;
     ++(depth == 0 ? counts.camera : counts.reflection);
-    if (!backend.intersect(ray, hit)) {
+    const bool found = depth == 0 ? camera_hit_found : backend.intersect(ray, hit);
+    if (!found) {
       result += weight * scene.render.background;
       break;
     }

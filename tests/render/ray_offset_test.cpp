@@ -113,3 +113,27 @@ TEST(RayOffset, OriginMovesToTheSideTheRayLeavesFrom) {
 
 }  // namespace
 }  // namespace rtpro
+
+namespace rtpro {
+namespace {
+
+TEST(RayOffset, RoundsAwayFromTheSurfaceIncludingAtZero) {
+  SurfacePoint sp{};
+  sp.geometric_normal = {1, 0, 0};
+  sp.shading_normal = {1, 0, 0};
+  sp.position_error = 1e-38f;  // far below one ulp of x: only the rounding step moves the origin
+  for (float x : {1.0f, -1.0f, 1e-30f, -3.5e7f}) {
+    sp.position = {x, 2.0f, -2.0f};
+    const Vec3 out = offset_ray_origin(sp, {1, 0, 0});
+    const Vec3 in = offset_ray_origin(sp, {-1, 0, 0});
+    EXPECT_EQ(out.x, std::nextafter(x, 1e38f)) << x;
+    EXPECT_EQ(in.x, std::nextafter(x, -1e38f)) << x;
+    EXPECT_EQ(out.y, 2.0f);
+  }
+  sp.position = {0.0f, 0.0f, 0.0f};
+  EXPECT_GT(offset_ray_origin(sp, {1, 0, 0}).x, 0.0f);
+  EXPECT_LT(offset_ray_origin(sp, {-1, 0, 0}).x, 0.0f);
+}
+
+}  // namespace
+}  // namespace rtpro

@@ -35,4 +35,9 @@ struct PrimaryHit {
 Color trace_radiance(const RenderScene& scene, const Backend& backend, const Ray& camera_ray, RayCounts& counts,
                      PrimaryHit* primary = nullptr);
 
+// The same, for a camera ray whose closest hit was already traced (camera rays go to the backend
+// in batches); `camera_hit` is used only when `camera_hit_found`.
+Color trace_radiance_from(const RenderScene& scene, const Backend& backend, const Ray& camera_ray,
+                          bool camera_hit_found, const Hit& camera_hit, RayCounts& counts, PrimaryHit* primary);
+
 }  // namespace rtpro
