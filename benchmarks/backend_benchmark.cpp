@@ -1,10 +1,14 @@
 // Backend speed, native vs embree on the same scenes in the same run: BVH build time, primary-ray
 // throughput (closest hit only) and whole-render throughput (camera + shadow + reflection rays).
 // Scenes: every scenes/*.yaml whose meshes are present, or those named in $RTPRO_BENCH_SCENES
-// (colon separated). Run a Release build; `benchmarks/run_benchmarks.sh` prints the table.
+// (colon separated); $RTPRO_BENCH_SIZE=WxH overrides every scene's resolution. Run a Release build;
+// `benchmarks/run_benchmarks.sh` and `benchmarks/dragon_benchmark.sh` print the tables.
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/fp_env.h"
 #include "rtpro/render/camera.h"
+#include "rtpro/render/light_sample.h"
+#include "rtpro/render/ray_offset.h"
+#include "rtpro/render/surface.h"
 #include "rtpro/render/renderer.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
@@ -13,6 +17,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -52,7 +58,13 @@ const std::vector<std::unique_ptr<LoadedScene>>& loaded_scenes() {
       try {
         auto loaded = std::make_unique<LoadedScene>();
         loaded->name = file.stem().string();
-        loaded->scene = build_render_scene(parse_scene_file(file, {"render.spp=1"}));
+        std::vector<std::string> overrides{"render.spp=1"};
+        if (const char* size = std::getenv("RTPRO_BENCH_SIZE")) {
+          std::string resolution(size);
+          resolution.replace(resolution.find('x'), 1, ",");
+          overrides.push_back("camera.resolution=[" + resolution + "]");
+        }
+        loaded->scene = build_render_scene(parse_scene_file(file, overrides));
         out.push_back(std::move(loaded));
       } catch (const std::exception& e) {
         std::cerr << "skipping " << file << ": " << e.what() << "\n";
@@ -98,6 +110,41 @@ void primary_rays(benchmark::State& state, const LoadedScene* loaded, BackendKin
       benchmark::Counter(static_cast<double>(rays.size()) * state.iterations() * 1e-6, benchmark::Counter::kIsRate);
 }
 
+// Camera rays plus one shadow ray per hit towards the scene's first light: the two queries a
+// direct-lighting renderer makes, without shading cost.
+void primary_and_shadow_rays(benchmark::State& state, const LoadedScene* loaded, BackendKind kind) {
+  const auto backend = make_backend(kind, loaded->scene, {});
+  const std::vector<Ray> rays = camera_rays(loaded->scene);
+  if (loaded->scene.lights.empty()) {
+    state.SkipWithError("scene has no light");
+    return;
+  }
+  const LightDesc& light = loaded->scene.lights.front();
+  std::vector<Hit> hits(rays.size());
+  std::unique_ptr<bool[]> found(new bool[rays.size()]);
+  std::atomic<std::uint64_t> traced{0};
+  constexpr std::size_t kBlock = 4096;
+  for (auto _ : state) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), kBlock), [&](const auto& r) {
+      set_tracing_fp_mode();
+      backend->intersect(std::span(rays).subspan(r.begin(), r.size()), std::span(hits).subspan(r.begin(), r.size()),
+                         std::span(found.get() + r.begin(), r.size()));
+      std::uint64_t shadow_rays = 0;
+      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+        if (!found[i]) continue;
+        const SurfacePoint sp = make_surface(loaded->scene, rays[i], hits[i]);
+        const LightSample ls = sample_light(light, sp.position);
+        const Ray shadow = std::isinf(ls.distance) ? spawn_ray(sp, ls.direction)
+                                                   : spawn_ray_to(sp, sp.position + ls.direction * ls.distance);
+        benchmark::DoNotOptimize(backend->occluded(shadow));
+        ++shadow_rays;
+      }
+      traced += r.size() + shadow_rays;
+    });
+  }
+  state.counters["Mrays/s"] = benchmark::Counter(static_cast<double>(traced.load()) * 1e-6, benchmark::Counter::kIsRate);
+}
+
 void whole_render(benchmark::State& state, const LoadedScene* loaded, BackendKind kind) {
   const auto backend = make_backend(kind, loaded->scene, {});
   std::uint64_t rays = 0;
@@ -112,13 +159,16 @@ void register_benchmarks() {
   for (const auto& loaded : loaded_scenes()) {
     for (BackendKind kind : {BackendKind::kNative, BackendKind::kEmbree}) {
       const std::string suffix = loaded->name + "/" + std::string(backend_name(kind));
-      benchmark::RegisterBenchmark(("build/" + suffix).c_str(), build, loaded.get(), kind)
+      benchmark::RegisterBenchmark((std::string("build/") + suffix).c_str(), build, loaded.get(), kind)
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime();
-      benchmark::RegisterBenchmark(("primary/" + suffix).c_str(), primary_rays, loaded.get(), kind)
+      benchmark::RegisterBenchmark((std::string("primary/") + suffix).c_str(), primary_rays, loaded.get(), kind)
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime();
-      benchmark::RegisterBenchmark(("render_1spp/" + suffix).c_str(), whole_render, loaded.get(), kind)
+      benchmark::RegisterBenchmark((std::string("primary_shadow/") + suffix).c_str(), primary_and_shadow_rays, loaded.get(), kind)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+      benchmark::RegisterBenchmark((std::string("render_1spp/") + suffix).c_str(), whole_render, loaded.get(), kind)
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime();
     }
