@@ -136,6 +136,11 @@ class ChunkParser {
 
   // One face vertex: v, v/vt, v//vn or v/vt/vn. Advances p past it.
   Corner corner(const char*& p) {
+    std::uint32_t plain = 0;
+    if (const int digits = ascii::scan_short_unsigned(p, end_, plain); digits > 0 && plain - 1u < out_.totals.positions) {
+      p += digits;
+      return {plain - 1, kNoIndex};
+    }
     const char* token = p;
     Corner result{index(p, seen_.positions, out_.totals.positions, "vertex"), kNoIndex};
     if (p != end_ && *p == '/') {
@@ -284,17 +289,23 @@ class ChunkParser {
 };
 
 // Counts the line starting at p, classified exactly as keyword_at() classifies it for the parse,
-// but looking at no more than three bytes.
-void count_line(const char* p, const char* end, Counts& counts) {
+// but from its first three bytes when it can.
+[[gnu::always_inline]] inline void count_line(const char* p, const char* end, Counts& counts) {
   ++counts.lines;
-  p = skip_blanks(p, end);
-  const auto at = [p, end](int i) { return p + i < end ? p[i] : '\n'; };  // the end ends a word too
-  if (at(0) == 'f') {
-    if (is_word_end(at(1))) ++counts.faces;
-  } else if (at(0) == 'v') {
-    if (is_word_end(at(1))) ++counts.positions;
-    else if (at(1) == 'n' && is_word_end(at(2))) ++counts.normals;
-    else if (at(1) == 't' && is_word_end(at(2))) ++counts.texcoords;
+  if (end - p < 3 || is_blank(*p)) {
+    const std::string_view keyword = keyword_at(p, end);
+    if (keyword == "v") ++counts.positions;
+    else if (keyword == "f") ++counts.faces;
+    else if (keyword == "vn") ++counts.normals;
+    else if (keyword == "vt") ++counts.texcoords;
+    return;
+  }
+  if (p[0] == 'f') {
+    counts.faces += is_word_end(p[1]);
+  } else if (p[0] == 'v') {
+    if (is_word_end(p[1])) ++counts.positions;
+    else if (p[1] == 'n') counts.normals += is_word_end(p[2]);
+    else if (p[1] == 't') counts.texcoords += is_word_end(p[2]);
   }
 }
 
@@ -318,22 +329,12 @@ std::vector<Chunk> split_into_chunks(std::string_view text, std::size_t chunk_by
 
 void count_chunk(Chunk& chunk) {
   Counts counts;
-  const char* p = chunk.text.data();
-  const char* const end = p + chunk.text.size();
-  if (p != end) count_line(p, end, counts);
-  // Every newline not at the very end starts a line; find them 8 bytes at a time.
-  const char* block = p;
-  if constexpr (ascii::swar::kAvailable) {
-    for (; end - block >= 8; block += 8) {
-      for (std::uint64_t newlines = ascii::swar::bytes_equal(ascii::swar::load(block), '\n'); newlines;
-           newlines &= newlines - 1) {
-        const char* next_line = block + std::countr_zero(newlines) / 8 + 1;
-        if (next_line != end) count_line(next_line, end, counts);
-      }
-    }
-  }
-  for (; block != end; ++block)
-    if (*block == '\n' && block + 1 != end) count_line(block + 1, end, counts);
+  const char* const begin = chunk.text.data();
+  const char* const end = begin + chunk.text.size();
+  if (begin != end) count_line(begin, end, counts);
+  ascii::for_each_newline(begin, end, [&counts, end](const char* newline) {
+    if (newline + 1 != end) count_line(newline + 1, end, counts);
+  });
   chunk.counts = counts;
 }
 

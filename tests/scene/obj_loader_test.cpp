@@ -93,6 +93,17 @@ TEST(ObjLoader, NegativeIndicesCountBackFromTheirLine) {
   EXPECT_EQ((std::array{second.v0, second.v1, second.v2}), (std::array{1u, 3u, 2u}));
 }
 
+TEST(ObjLoader, ReadsTheSameNumbersNearTheEndOfTheFile) {
+  // Numbers close to the end of the buffer take the general (not the 8-byte-load) path.
+  const std::string lines = "v 0.0503644 -1.5 7\nv 1 0 0\nv 0 1 0\n";
+  const LoadedMesh early = load_mesh_file(write_file("early.obj", lines + "f 1 2 3\n# padding for the fast paths\n"));
+  const LoadedMesh late = load_mesh_file(write_file("late.obj", "# the same mesh\n" + lines + "f 1 2 3"));
+  ASSERT_EQ(late.mesh.triangles.size(), 1u);
+  EXPECT_EQ(late.mesh.vertex(0), Vec3(0.0503644f, -1.5f, 7.0f));
+  EXPECT_EQ(late.mesh.vertex(0), early.mesh.vertex(0));
+  EXPECT_EQ(late.mesh.triangles[0].v2, 2u);
+}
+
 TEST(ObjLoader, ZeroIndexIsAnErrorNamingItsLine) {
   const InputError e = load_error(write_file("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"));
   EXPECT_EQ(e.where().line, 4);
