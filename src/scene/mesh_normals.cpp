@@ -1,31 +1,18 @@
 #include "rtpro/scene/mesh_normals.h"
 
+#include "rtpro/scene/large_buffer.h"
+
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 
 #include <cmath>
 
 namespace rtpro {
 
-namespace {
-
-// Adds each triangle's area-weighted normal to its three vertices, in triangle order.
-void accumulate(const std::vector<PaddedVertex>& vertices, const TriangleIndices* begin, const TriangleIndices* end,
-                std::vector<Vec3>& sums) {
-  for (const TriangleIndices* t = begin; t != end; ++t) {
-    const Vec3 p0 = vertices[t->v0].position();
-    // The unnormalised cross product is twice the area times the unit normal: area weighting
-    // comes for free.
-    const Vec3 weighted = cross(vertices[t->v1].position() - p0, vertices[t->v2].position() - p0);
-    sums[t->v0] += weighted;
-    sums[t->v1] += weighted;
-    sums[t->v2] += weighted;
-  }
-}
-
-}  // namespace
-
 Vec3 unit_or(const Vec3& v, const Vec3& fallback) {
+  const float squared = dot(v, v);
+  if (squared > 1e-30f && squared < 1e30f) return v * (1.0f / std::sqrt(squared));
+  // Tiny, huge or not finite: scale by the largest component first, so the square cannot
+  // underflow or overflow.
   const float largest = max_component(abs(v));
   if (!(largest > 0.0f) || !std::isfinite(largest)) return fallback;
   const Vec3 scaled = v / largest;
@@ -34,17 +21,21 @@ Vec3 unit_or(const Vec3& v, const Vec3& fallback) {
 
 std::vector<Vec3> area_weighted_vertex_normals(const std::vector<PaddedVertex>& vertices,
                                                const std::vector<TriangleIndices>& triangles) {
-  // Two fixed halves of the triangle list sum into separate arrays on two cores; the halves are
-  // added in a fixed order, so the result never depends on the number of threads.
-  const TriangleIndices* begin = triangles.data();
-  const TriangleIndices* middle = begin + triangles.size() / 2;
-  std::vector<Vec3> normals(vertices.size(), Vec3(0.0f));
-  std::vector<Vec3> second_half(vertices.size(), Vec3(0.0f));
-  tbb::parallel_invoke([&] { accumulate(vertices, begin, middle, normals); },
-                       [&] { accumulate(vertices, middle, begin + triangles.size(), second_half); });
-  tbb::parallel_for(std::size_t(0), normals.size(), [&](std::size_t i) {
-    normals[i] = unit_or(normals[i] + second_half[i], Vec3(0.0f, 0.0f, 1.0f));
-  });
+  std::vector<Vec3> normals;
+  resize_large(normals, vertices.size());
+  // One serial pass: the scattered additions are cheap next to the parse, and summing in triangle
+  // order makes every normal independent of the thread count.
+  for (const TriangleIndices& t : triangles) {
+    const Vec3 p0 = vertices[t.v0].position();
+    // The unnormalised cross product is twice the area times the unit normal: area weighting
+    // comes for free.
+    const Vec3 weighted = cross(vertices[t.v1].position() - p0, vertices[t.v2].position() - p0);
+    normals[t.v0] += weighted;
+    normals[t.v1] += weighted;
+    normals[t.v2] += weighted;
+  }
+  tbb::parallel_for(std::size_t(0), normals.size(),
+                    [&normals](std::size_t v) { normals[v] = unit_or(normals[v], Vec3(0.0f, 0.0f, 1.0f)); });
   return normals;
 }
 

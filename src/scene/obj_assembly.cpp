@@ -1,6 +1,7 @@
 #include "rtpro/scene/obj_assembly.h"
 
 #include "rtpro/core/error.h"
+#include "rtpro/scene/large_buffer.h"
 #include "rtpro/scene/mesh_limits.h"
 #include "rtpro/scene/mesh_normals.h"
 #include "rtpro/scene/obj_chunk.h"
@@ -55,7 +56,7 @@ class CornerVertices {
 std::vector<PaddedVertex> gather_positions(const std::vector<PaddedVertex>& positions,
                                            const std::vector<std::uint32_t>& position_of) {
   std::vector<PaddedVertex> vertices;
-  vertices.reserve(position_of.size());
+  reserve_large(vertices, position_of.size());
   for (std::uint32_t p : position_of) vertices.push_back(positions[p]);
   return vertices;
 }

@@ -40,7 +40,6 @@ class ChunkParser {
       : chunk_(chunk), out_(out), seen_(chunk.start), end_(chunk.text.data() + chunk.text.size()) {}
 
   void parse() {
-    chunk_.triangle_positions.reserve(chunk_.counts.faces);  // exact when every face is a triangle
     for (const char* p = chunk_.text.data(); p != end_;) {
       line_begin_ = p;
       ++seen_.lines;
@@ -117,10 +116,15 @@ class ChunkParser {
         ++chunk_.dropped_degenerate;
         continue;
       }
-      chunk_.triangle_positions.push_back({a.position, b.position, c.position});
+      add_triangle({a.position, b.position, c.position});
       if (chunk_.every_corner_has_normal) chunk_.triangle_normals.push_back({a.normal, b.normal, c.normal});
     }
     return line_end(p);
+  }
+
+  void add_triangle(const TriangleIndices& triangle) {
+    if (chunk_.triangles_in_slots < chunk_.counts.faces) out_.triangles[chunk_.start.faces + chunk_.triangles_in_slots++] = triangle;
+    else chunk_.more_triangles.push_back(triangle);
   }
 
   void keep_normals_while_complete() {
@@ -231,7 +235,7 @@ class ChunkParser {
   // The state entry for the next triangle, carrying over what earlier statements set.
   StateChange& change_state() {
     auto& changes = chunk_.state_changes;
-    const auto next_triangle = std::uint32_t(chunk_.triangle_positions.size());
+    const auto next_triangle = std::uint32_t(chunk_.triangle_count());
     if (changes.empty()) {
       changes.push_back({next_triangle, kInherited, kInherited});
     } else if (changes.back().first_triangle != next_triangle) {
@@ -288,25 +292,22 @@ class ChunkParser {
   std::unordered_map<std::string_view, std::uint32_t> material_slots_;
 };
 
-// Counts the line starting at p, classified exactly as keyword_at() classifies it for the parse,
-// but from its first three bytes when it can.
+// Counts the line [p, end) as keyword_at() classifies it for the parse. A valid line is at least
+// as long as "v 0 0 0", "vn 0 0 0", "vt 0" or "f 1 2 3"; shorter ones are left uncounted.
 [[gnu::always_inline]] inline void count_line(const char* p, const char* end, Counts& counts) {
   ++counts.lines;
-  if (end - p < 3 || is_blank(*p)) {
-    const std::string_view keyword = keyword_at(p, end);
-    if (keyword == "v") ++counts.positions;
-    else if (keyword == "f") ++counts.faces;
-    else if (keyword == "vn") ++counts.normals;
-    else if (keyword == "vt") ++counts.texcoords;
+  const std::ptrdiff_t length = end - p;
+  if (length < 4) return;
+  if (!is_blank(p[0]) && is_word_end(p[1])) {  // a one-letter keyword: the common case, quickly
+    if (p[0] == 'v') counts.positions += length >= 7;
+    else if (p[0] == 'f') counts.faces += length >= 7;
     return;
   }
-  if (p[0] == 'f') {
-    counts.faces += is_word_end(p[1]);
-  } else if (p[0] == 'v') {
-    if (is_word_end(p[1])) ++counts.positions;
-    else if (p[1] == 'n') counts.normals += is_word_end(p[2]);
-    else if (p[1] == 't') counts.texcoords += is_word_end(p[2]);
-  }
+  const std::string_view keyword = keyword_at(p, end);
+  if (keyword == "v") counts.positions += length >= 7;
+  else if (keyword == "f") counts.faces += length >= 7;
+  else if (keyword == "vn") counts.normals += length >= 8;
+  else if (keyword == "vt") ++counts.texcoords;
 }
 
 }  // namespace
@@ -329,12 +330,13 @@ std::vector<Chunk> split_into_chunks(std::string_view text, std::size_t chunk_by
 
 void count_chunk(Chunk& chunk) {
   Counts counts;
-  const char* const begin = chunk.text.data();
-  const char* const end = begin + chunk.text.size();
-  if (begin != end) count_line(begin, end, counts);
-  ascii::for_each_newline(begin, end, [&counts, end](const char* newline) {
-    if (newline + 1 != end) count_line(newline + 1, end, counts);
+  const char* line = chunk.text.data();
+  const char* const end = line + chunk.text.size();
+  ascii::for_each_newline(line, end, [&](const char* newline) {
+    count_line(line, newline, counts);
+    line = newline + 1;
   });
+  if (line != end) count_line(line, end, counts);
   chunk.counts = counts;
 }
 

@@ -2,6 +2,7 @@
 
 #include "rtpro/core/error.h"
 #include "rtpro/scene/ascii_scan.h"
+#include "rtpro/scene/large_buffer.h"
 #include "rtpro/scene/mapped_file.h"
 #include "rtpro/scene/mesh_limits.h"
 #include "rtpro/scene/mtl_parser.h"
@@ -47,14 +48,35 @@ void for_each_chunk(std::vector<Chunk>& chunks, Visit&& visit) {
   tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t i) { visit(chunks[i]); });
 }
 
-// Concatenates one per-chunk triangle array in file order; chunks are copied in parallel.
-std::vector<TriangleIndices> concatenate(std::vector<Chunk>& chunks, const std::vector<std::size_t>& offsets,
-                                         std::vector<TriangleIndices> Chunk::*member) {
-  std::vector<TriangleIndices> all(offsets.back());
+// Concatenates the per-chunk triangle normal indices in file order, chunks copied in parallel.
+std::vector<TriangleIndices> concatenate_normals(std::vector<Chunk>& chunks, const std::vector<std::size_t>& offsets) {
+  std::vector<TriangleIndices> all;
+  resize_large(all, offsets.back());
   tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t i) {
-    std::vector<TriangleIndices>& part = chunks[i].*member;
+    std::vector<TriangleIndices>& part = chunks[i].triangle_normals;
     std::copy(part.begin(), part.end(), all.begin() + std::ptrdiff_t(offsets[i]));
     part = {};
+  });
+  return all;
+}
+
+// The triangles in file order. When every `f` line gave exactly one triangle the chunks filled
+// `slots` completely and it is the answer; polygons and dropped faces leave gaps or extras, and
+// the triangles are gathered into a new array.
+std::vector<TriangleIndices> gather_triangles(std::vector<Chunk>& chunks, const std::vector<std::size_t>& offsets,
+                                              std::vector<TriangleIndices> slots) {
+  const bool slots_are_exact = std::all_of(chunks.begin(), chunks.end(), [](const Chunk& c) {
+    return c.triangles_in_slots == c.counts.faces && c.more_triangles.empty();
+  });
+  if (slots_are_exact) return slots;
+  std::vector<TriangleIndices> all;
+  resize_large(all, offsets.back());
+  tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t i) {
+    const Chunk& chunk = chunks[i];
+    const auto first_slot = slots.begin() + std::ptrdiff_t(chunk.start.faces);
+    const auto next = std::copy(first_slot, first_slot + std::ptrdiff_t(chunk.triangles_in_slots),
+                                all.begin() + std::ptrdiff_t(offsets[i]));
+    std::copy(chunk.more_triangles.begin(), chunk.more_triangles.end(), next);
   });
   return all;
 }
@@ -176,19 +198,22 @@ LoadedMesh load_obj_file(const fs::path& file, std::size_t chunk_bytes) {
   std::vector<Chunk> chunks = split_into_chunks(bytes.text(), chunk_bytes);
   for_each_chunk(chunks, count_chunk);
   const Counts totals = assign_chunk_starts(chunks);
-  if (totals.positions > kMaxMeshElements || totals.normals > kMaxMeshElements || totals.texcoords > kMaxMeshElements)
-    throw InputError(SourceLocation{file_name}, "more than 2^32 - 2 vertices, normals or texture coordinates");
+  if (totals.positions > kMaxMeshElements || totals.normals > kMaxMeshElements || totals.texcoords > kMaxMeshElements ||
+      totals.faces > kMaxMeshElements)
+    throw InputError(SourceLocation{file_name}, "more than 2^32 - 2 vertices, normals, texture coordinates or faces");
 
   obj::MeshParts parts;
-  parts.positions.resize(totals.positions);
-  parts.normals.resize(totals.normals);
-  const Destination out{parts.positions.data(), parts.normals.data(), totals, file_name};
+  resize_large(parts.positions, totals.positions);
+  resize_large(parts.normals, totals.normals);
+  std::vector<TriangleIndices> triangle_slots;
+  resize_large(triangle_slots, totals.faces);
+  const Destination out{parts.positions.data(), parts.normals.data(), triangle_slots.data(), totals, file_name};
   for_each_chunk(chunks, [&out](Chunk& chunk) { parse_chunk(chunk, out); });
   for (const Chunk& chunk : chunks)
     if (chunk.error) std::rethrow_exception(chunk.error);
 
   std::vector<std::size_t> offsets{0};
-  for (const Chunk& chunk : chunks) offsets.push_back(offsets.back() + chunk.triangle_positions.size());
+  for (const Chunk& chunk : chunks) offsets.push_back(offsets.back() + chunk.triangle_count());
   if (offsets.back() > kMaxMeshElements) throw InputError(SourceLocation{file_name}, "more than 2^32 - 2 triangles");
 
   LoadedMesh loaded;
@@ -199,8 +224,8 @@ LoadedMesh load_obj_file(const fs::path& file, std::size_t chunk_bytes) {
   warn_about_ignored_statements(file_name, chunks, warnings);
 
   const bool file_normals = use_file_normals(file_name, chunks, totals, offsets.back(), warnings);
-  parts.triangle_positions = concatenate(chunks, offsets, &Chunk::triangle_positions);
-  if (file_normals) parts.triangle_normals = concatenate(chunks, offsets, &Chunk::triangle_normals);
+  parts.triangle_positions = gather_triangles(chunks, offsets, std::move(triangle_slots));
+  if (file_normals) parts.triangle_normals = concatenate_normals(chunks, offsets);
   parts.runs = std::move(state.runs);
 
   TriangleMesh& mesh = loaded.mesh;

@@ -2,6 +2,7 @@
 
 #include "rtpro/core/error.h"
 #include "rtpro/scene/ascii_scan.h"
+#include "rtpro/scene/large_buffer.h"
 #include "rtpro/scene/mapped_file.h"
 #include "rtpro/scene/mesh_limits.h"
 #include "rtpro/scene/mesh_normals.h"
@@ -206,8 +207,8 @@ class BodyReader {
     const int normal_axes[3] = {scalar_property(element, "nx"), scalar_property(element, "ny"), scalar_property(element, "nz")};
     const bool has_normals = normal_axes[0] >= 0 && normal_axes[1] >= 0 && normal_axes[2] >= 0;
     std::vector<double> values(element.properties.size());
-    mesh_.vertices.reserve(element.count);
-    if (has_normals) mesh_.normals.reserve(element.count);
+    reserve_large(mesh_.vertices, element.count);
+    if (has_normals) reserve_large(mesh_.normals, element.count);
     for (std::uint64_t i = 0; i < element.count; ++i) {
       r_.begin_element();
       for (std::size_t k = 0; k < element.properties.size(); ++k) {
@@ -235,7 +236,7 @@ class BodyReader {
     const Property& indices = element.properties[std::size_t(list)];
     if (!indices.is_list || !is_integer(indices.type)) fail_at(element, "vertex_indices must be a list of integers");
     // A triangle takes at least 4 bytes of body: never reserve beyond what the file can hold.
-    mesh_.triangles.reserve(std::min<std::uint64_t>(element.count, body_bytes / 4));
+    reserve_large(mesh_.triangles, std::min<std::uint64_t>(element.count, body_bytes / 4));
     for (std::uint64_t i = 0; i < element.count; ++i) {
       r_.begin_element();
       for (std::size_t k = 0; k < element.properties.size(); ++k) {

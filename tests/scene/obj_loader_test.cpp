@@ -335,6 +335,16 @@ TEST(ObjLoader, AnAllFlatMeshHasNoNormals) {
   EXPECT_EQ(loaded.mesh.vertices.size(), 4u);
 }
 
+TEST(ObjLoader, HugeAndTinyTrianglesStillGetUnitNormals) {
+  // Cross products of 1e15 and 1e-19 coordinates square beyond and below float range.
+  const LoadedMesh huge = load_mesh_file(write_file("huge.obj", "v 0 0 0\nv 1e15 0 0\nv 0 1e15 0\nf 1 2 3\n"));
+  const LoadedMesh tiny = load_mesh_file(write_file("tiny.obj", "v 0 0 0\nv 1e-19 0 0\nv 0 1e-19 0\nf 1 2 3\n"));
+  for (const LoadedMesh* loaded : {&huge, &tiny}) {
+    ASSERT_EQ(loaded->mesh.normals.size(), 3u);
+    for (const Vec3& n : loaded->mesh.normals) EXPECT_EQ(n, Vec3(0, 0, 1));
+  }
+}
+
 TEST(ObjLoader, UnknownStatementsWarnOncePerKeyword) {
   const LoadedMesh loaded = load_mesh_file(write_file("unknown.obj", "o thing\ng part\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
                                                                      "l 1 2\nl 2 3\ncstype bspline\nf 1 2 3\n"));

@@ -58,8 +58,11 @@ struct Chunk {
   Counts counts;  // this chunk's own, from count_chunk()
   Counts start;   // the sum over all earlier chunks
 
-  // From parse_chunk(); positions and normals go straight to the file-wide arrays.
-  std::vector<TriangleIndices> triangle_positions;
+  // From parse_chunk(); positions and normals go straight to the file-wide arrays. So do the first
+  // triangles (as position indices), one slot per `f` line, so a file of triangles needs no copy;
+  // the extra triangles of polygons go to more_triangles.
+  std::size_t triangles_in_slots = 0;
+  std::vector<TriangleIndices> more_triangles;
   std::vector<TriangleIndices> triangle_normals;  // kept only while every corner has a normal
   bool every_corner_has_normal = true;
   std::uint64_t first_zero_normal_line = 0;       // a `vn 0 0 0`; 0: none
@@ -72,18 +75,23 @@ struct Chunk {
   std::uint64_t dropped_degenerate = 0;
   std::vector<IgnoredKeyword> ignored;
   std::exception_ptr error;  // an InputError naming file:line:column; parsing stopped there
+
+  std::size_t triangle_count() const { return triangles_in_slots + more_triangles.size(); }
 };
 
 // Chunks of about chunk_bytes, each ending just after a newline (the last one at the end).
 std::vector<Chunk> split_into_chunks(std::string_view text, std::size_t chunk_bytes);
 
-// Fills chunk.counts. Classifies lines exactly as parse_chunk() does.
+// Fills chunk.counts. Classifies lines exactly as parse_chunk() does, except that lines too short
+// to be valid are not counted: parse_chunk() rejects them, and no input can make the file-wide
+// arrays larger than one element per 7 bytes.
 void count_chunk(Chunk& chunk);
 
-// Where parse_chunk() writes vertex data: slot chunk.start.positions + i for the chunk's i-th `v`.
+// Where parse_chunk() writes: slot chunk.start.positions + i for the chunk's i-th `v`, and so on.
 struct Destination {
   PaddedVertex* positions;
   Vec3* normals;
+  TriangleIndices* triangles;  // chunk.counts.faces slots from chunk.start.faces
   Counts totals;  // of the whole file: positive indices may point forward
   std::string file;
 };
