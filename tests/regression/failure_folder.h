@@ -9,11 +9,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -55,8 +58,23 @@ inline void write_text_atomically(const std::filesystem::path& file, const std::
   std::filesystem::rename(temporary, file);
 }
 
-// `figures` gets the image names added. The diff is scaled to the largest difference, so its
-// shape shows even when the error is small; the figures give the size.
+// What white stands for in diff.png: the 99th percentile of the per-pixel error (the largest
+// channel difference), so that a handful of edge pixels cannot turn a change of the whole image
+// black; the largest difference when fewer than 1% of the pixels differ at all.
+inline float diff_full_scale(const Image& reference, const Image& rendered) {
+  std::vector<float> errors(static_cast<std::size_t>(reference.width) * reference.height, 0.0f);
+  const std::size_t channels = reference.channels.size();
+  for (std::size_t pixel = 0; pixel < errors.size(); ++pixel)
+    for (std::size_t c = 0; c < channels; ++c) {
+      const float error = std::abs(reference.data[pixel * channels + c] - rendered.data[pixel * channels + c]);
+      if (std::isfinite(error)) errors[pixel] = std::max(errors[pixel], error);
+    }
+  const auto percentile = errors.begin() + static_cast<std::ptrdiff_t>(errors.size() * 99 / 100);
+  std::nth_element(errors.begin(), percentile, errors.end());
+  return percentile == errors.end() ? 0.0f : *percentile;  // 0: write_diff_image takes the largest
+}
+
+// `figures` gets the image names and the diff's full scale added.
 inline void write_failure_folder(const std::filesystem::path& folder, const Image& reference, const Image& rendered,
                                  nlohmann::json figures) {
   std::filesystem::remove_all(folder);
@@ -69,8 +87,10 @@ inline void write_failure_folder(const std::filesystem::path& folder, const Imag
   const bool comparable = reference.width == rendered.width && reference.height == rendered.height &&
                           reference.channel_count() == rendered.channel_count();
   if (comparable) {
-    write_diff_image(folder / "diff.png", reference, rendered, 0.0f);
+    const float full_scale = diff_full_scale(reference, rendered);
+    write_diff_image(folder / "diff.png", reference, rendered, full_scale);
     figures["images"]["diff"] = "diff.png";
+    figures["diff_full_scale"] = full_scale > 0.0f ? nlohmann::json(full_scale) : figures["max_error"];
   }
   write_text_atomically(folder / "figures.json", figures.dump(2) + "\n");
 }

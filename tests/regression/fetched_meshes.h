@@ -19,7 +19,7 @@
 namespace rtpro::regression {
 
 struct MissingMesh {
-  std::filesystem::path file;                        // as resolved against the scene's folder
+  std::filesystem::path file;                         // as resolved against the scene's folder
   std::optional<std::filesystem::path> fetch_script;  // the scripts/fetch-*.sh that names it
 };
 

@@ -27,11 +27,20 @@ inline std::string html_escaped(std::string_view text) {
   std::string out;
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -45,6 +54,15 @@ inline std::string figure_text(const nlohmann::json& value, std::string_view whe
   return text;
 }
 
+// A member, or null when it is missing (const operator[] must not be used on a missing key).
+inline nlohmann::json field(const nlohmann::json& object, const char* key) {
+  return object.is_object() && object.contains(key) ? object.at(key) : nlohmann::json(nullptr);
+}
+
+inline std::string integer_text(const nlohmann::json& value) {
+  return value.is_number_integer() ? std::to_string(value.get<long long>()) : "?";
+}
+
 inline std::string image_cell(const nlohmann::json& figures, const char* image) {
   const nlohmann::json& images = figures.value("images", nlohmann::json::object());
   if (!images.contains(image)) return "<td>(none: the images differ in size)</td>";
@@ -53,22 +71,26 @@ inline std::string image_cell(const nlohmann::json& figures, const char* image) 
 }
 
 inline std::string figures_cell(const nlohmann::json& f) {
-  const nlohmann::json& limits = f["thresholds"];
-  const nlohmann::json& at = f["max_error_at"];
+  const nlohmann::json limits = field(f, "thresholds");
+  const nlohmann::json at = field(f, "max_error_at");
   const std::string folder = html_escaped(f.value("folder", ""));
   std::string cell = "<td><table class=\"figures\">";
   const auto row = [&cell](std::string_view name, const std::string& value) {
     cell += "<tr><th>" + std::string(name) + "</th><td>" + value + "</td></tr>";
   };
   row("verdict", "<b>" + html_escaped(f.value("verdict", "")) + "</b>");
-  row("failing pixels", std::to_string(f.value("fail_pixels", 0)) + " of " + std::to_string(f.value("pixels", 0)) +
-                            " (" + figure_text(f["fail_percent"]) + "%; allowed " +
-                            figure_text(limits["fail_percent"]) + "% over " + figure_text(limits["fail"]) + ")");
-  row("mean error", figure_text(f["mean_error"]) + " (limit " + figure_text(limits["max_mean_error"], "none") + ")");
-  row("RMS error", figure_text(f["rms_error"]));
-  row("PSNR", figure_text(f["psnr"]) + " dB");
-  row("max error", figure_text(f["max_error"]) + " at (" + std::to_string(at.value("x", 0)) + ", " +
-                       std::to_string(at.value("y", 0)) + ") channel " + html_escaped(at.value("channel", "")));
+  row("failing pixels", integer_text(field(f, "fail_pixels")) + " of " + integer_text(field(f, "pixels")) + " (" +
+                            figure_text(field(f, "fail_percent")) + "%; allowed " +
+                            figure_text(field(limits, "fail_percent")) + "% over " +
+                            figure_text(field(limits, "fail")) + ")");
+  row("mean error",
+      figure_text(field(f, "mean_error")) + " (limit " + figure_text(field(limits, "max_mean_error"), "none") + ")");
+  row("RMS error", figure_text(field(f, "rms_error")));
+  row("PSNR", figure_text(field(f, "psnr")) + " dB");
+  row("max error", figure_text(field(f, "max_error")) + " at (" + integer_text(field(at, "x")) + ", " +
+                       integer_text(field(at, "y")) + ") channel " +
+                       html_escaped(field(at, "channel").is_string() ? field(at, "channel").get<std::string>() : ""));
+  row("diff white at", figure_text(field(f, "diff_full_scale"), "-"));
   row("files", "<a href=\"" + folder + "/rendered.exr\">rendered.exr</a> <a href=\"" + folder +
                    "/figures.json\">figures.json</a> reference: " + html_escaped(f.value("reference", "")));
   return cell + "</table></td>";
@@ -80,22 +102,30 @@ inline std::string report_html(const std::vector<nlohmann::json>& failures, cons
 <style>
 body { font-family: sans-serif; margin: 1.5em; }
 table.cases { border-collapse: collapse; }
-table.cases > tbody > tr > td, table.cases > tbody > tr > th { border: 1px solid #bbb; padding: 6px; vertical-align: top; }
-img { width: 320px; image-rendering: pixelated; display: block; }
+table.cases > tbody > tr > td, table.cases > tbody > tr > th {
+  border: 1px solid #bbb; padding: 6px; vertical-align: top;
+}
+img { width: 240px; image-rendering: pixelated; display: block; }
+table.figures { font-size: 90%; min-width: 360px; }
 table.figures th { text-align: left; padding-right: 10px; font-weight: normal; color: #555; }
 </style></head><body>
 <h1>rtpro regression report</h1>
 )";
   if (failures.empty()) return html + "<p>No failing regression tests.</p>\n</body></html>\n";
   html += "<p>" + std::to_string(failures.size()) +
-          " failing (scene, backend) pairs. Images are shown through the default OpenColorIO view; the diff is "
-          "black where the images agree and white at the largest difference. If the change is intended, "
-          "regenerate the references with <code>" + html_escaped(update_command) + "</code>.</p>\n";
-  html += "<table class=\"cases\"><tr><th>scene</th><th>reference</th><th>rendered</th><th>diff</th><th>figures</th></tr>\n";
+          " failing (scene, backend) pairs. Images are shown through the default OpenColorIO view. The diff "
+          "is black where the images agree, rising through blue and red to white at the error its figures "
+          "name (the 99th percentile of the per-pixel error, or the largest error when fewer than 1% of the "
+          "pixels differ). If the change is intended, regenerate the references with <code>" +
+          html_escaped(update_command) + "</code>.</p>\n";
+  html +=
+      "<table "
+      "class=\"cases\"><tr><th>scene</th><th>reference</th><th>rendered</th><th>diff</th><th>figures</th></tr>\n";
   for (const nlohmann::json& f : failures) {
     html += "<tr><td><b>" + html_escaped(f.value("scene", "")) + "</b><br>" + html_escaped(f.value("backend", "")) +
             "<br><small>rule: " + html_escaped(f.value("rule", "")) + "</small></td>";
-    html += image_cell(f, "reference") + image_cell(f, "rendered") + image_cell(f, "diff") + figures_cell(f) + "</tr>\n";
+    html +=
+        image_cell(f, "reference") + image_cell(f, "rendered") + image_cell(f, "diff") + figures_cell(f) + "</tr>\n";
   }
   return html + "</table>\n</body></html>\n";
 }
@@ -120,7 +150,8 @@ inline std::vector<nlohmann::json> collect_failures(const std::filesystem::path&
 
 class ReportLock {
  public:
-  explicit ReportLock(const std::filesystem::path& file) : fd_(::open(file.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644)) {
+  explicit ReportLock(const std::filesystem::path& file)
+      : fd_(::open(file.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644)) {
     if (fd_ >= 0) ::flock(fd_, LOCK_EX);
   }
   ~ReportLock() {

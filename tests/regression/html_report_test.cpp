@@ -76,6 +76,14 @@ TEST(RegressionReport, IgnoresAFolderWithoutFiguresAndEscapesText) {
   EXPECT_EQ(html.find("<x>"), std::string::npos);
 }
 
+TEST(RegressionReport, FiguresMissingFieldsStillGetARow) {
+  const auto root = test::scratch_dir();
+  std::filesystem::create_directories(root / "old-native");
+  std::ofstream(root / "old-native" / "figures.json") << R"({"scene": "scenes/old.yaml"})";
+  const std::string html = read_text(regenerate_report(root, ""));
+  EXPECT_NE(html.find("scenes/old.yaml"), std::string::npos);
+}
+
 TEST(RegressionReport, ImagesOfDifferentSizesGetNoDiff) {
   const auto root = test::scratch_dir();
   const Image reference = flat(4, 4, 0.2f);

@@ -1,10 +1,12 @@
 // Golden-image regression tests: every scene in scenes/ is rendered small (160 pixels wide,
 // 4 spp) with each backend, in process, and compared with its reference in tests/references/,
-// a native render. The cases are listed from the scenes folder when ctest runs, so a new scene
-// without a reference fails until one is made. Tolerances, measurements and how to regenerate:
+// a native render. The cases are listed from the scenes folder whenever the test binary lists
+// its tests (the build relinks it when a scene file is added or removed), so a new scene without a
+// reference fails until one is made. Tolerances, measurements and how to regenerate:
 // tests/references/README.md.
 #include "fetched_meshes.h"
 #include "html_report.h"
+#include "regression_paths.h"
 #include "regression_tolerance.h"
 #include "test_paths.h"
 
@@ -31,7 +33,11 @@ namespace rtpro {
 namespace {
 
 namespace fs = std::filesystem;
+using regression::reference_file;
+using regression::results_root;
+using regression::source_relative;
 using regression::Tolerance;
+using regression::update_command;
 
 constexpr int kReferenceWidth = 160;  // the height keeps the scene's aspect
 constexpr int kReferenceSpp = 4;
@@ -42,12 +48,8 @@ struct RegressionCase {
 };
 
 std::vector<RegressionCase> regression_cases() {
-  std::vector<fs::path> scenes;
-  for (const auto& entry : fs::directory_iterator(test::scenes_dir()))
-    if (entry.path().extension() == ".yaml") scenes.push_back(entry.path());
-  std::sort(scenes.begin(), scenes.end());
   std::vector<RegressionCase> cases;
-  for (const fs::path& scene : scenes)
+  for (const fs::path& scene : regression::scene_files())
     for (const BackendKind backend : {BackendKind::kNative, BackendKind::kEmbree}) cases.push_back({scene, backend});
   return cases;
 }
@@ -68,16 +70,6 @@ std::string case_test_name(const testing::TestParamInfo<RegressionCase>& info) {
     if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
   return name;
 }
-
-std::string source_relative(const fs::path& file) { return fs::relative(file, test::source_dir()).generic_string(); }
-
-fs::path reference_file(const fs::path& scene) {
-  return test::source_dir() / "tests" / "references" / (scene.stem().string() + ".exr");
-}
-
-fs::path results_root() { return fs::path(RTPRO_BINARY_DIR) / "regression"; }
-
-std::string update_command() { return "cmake --build " + std::string(RTPRO_BINARY_DIR) + " --target update-references"; }
 
 bool updating_references() {
   const char* value = std::getenv("RTPRO_UPDATE_REFERENCES");
@@ -113,10 +105,12 @@ void update_reference(const fs::path& scene, const Image& rendered) {
       std::cout << source_relative(reference) << ": unchanged" << std::endl;
       return;
     }
-    outcome = comparison.incompatibility.empty()
-                  ? "changed: max error " + std::to_string(comparison.max_error) + ", " +
-                        std::to_string(comparison.fail_pixels) + " pixels differ"
-                  : "changed: " + comparison.incompatibility;
+    std::ostringstream change;
+    if (comparison.incompatibility.empty())
+      change << "changed: max error " << comparison.max_error << ", " << comparison.fail_pixels << " pixels differ";
+    else
+      change << "changed: " << comparison.incompatibility;
+    outcome = change.str();
   }
   fs::create_directories(reference.parent_path());
   ImageWriteOptions options;
@@ -145,7 +139,8 @@ TEST_P(RegressionTest, MatchesReference) {
   const auto missing = regression::missing_meshes(c.scene, test::source_dir() / "scripts");
   for (const auto& mesh : missing)
     if (!mesh.fetch_script)
-      FAIL() << scene_name << " uses " << mesh.file.string() << ", which does not exist and no scripts/fetch-*.sh provides it";
+      FAIL() << scene_name << " uses " << mesh.file.string()
+             << ", which does not exist and no scripts/fetch-*.sh provides it";
   if (!missing.empty())
     GTEST_SKIP() << scene_name << " needs " << missing.front().file.string()
                  << ", which is fetched, not committed: run " << source_relative(*missing.front().fetch_script);
