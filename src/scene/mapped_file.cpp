@@ -41,8 +41,10 @@ MappedFile::MappedFile(const std::filesystem::path& file) {
   if (!S_ISREG(info.st_mode)) fail(file, "not a regular file");
   size_ = static_cast<std::size_t>(info.st_size);
   if (size_ == 0) return;  // mmap rejects empty mappings; an empty view is all we need
-  // MAP_POPULATE faults the whole file in at once: one kernel call instead of one fault per page.
-  void* mapping = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd.get(), 0);
+  // No MAP_POPULATE: mapping every page up front is one serial kernel call, while faults taken by
+  // the parallel readers (the kernel maps 16 cached pages per fault) overlap. Measured on the
+  // dragon: 2 ms faster without it.
+  void* mapping = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, fd.get(), 0);
   if (mapping == MAP_FAILED) fail(file, std::string("cannot map: ") + std::strerror(errno));
   data_ = static_cast<const char*>(mapping);
 }

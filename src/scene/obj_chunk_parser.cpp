@@ -100,42 +100,35 @@ class ChunkParser {
     return numbers_then_line_end(p, 3, "after the texture coordinate");
   }
 
+  // Fan-triangulates as it reads (exact for the convex polygons OBJ exporters write): every
+  // corner after the second closes the triangle (first, previous, this one).
   const char* parse_face(const char* p) {
-    corners_.clear();
-    for (; !at_line_end(p); p = skip_blanks(p, end_)) corners_.push_back(corner(p));
-    if (corners_.size() < 3)
-      fail(line_begin_, "face needs at least 3 vertices, found " + std::to_string(corners_.size()));
-    ++chunk_.faces;
-    keep_normals_while_complete();
-    // Fan triangulation: exact for the convex polygons OBJ exporters write.
-    for (std::size_t i = 1; i + 1 < corners_.size(); ++i) {
-      const Corner& a = corners_[0];
-      const Corner& b = corners_[i];
-      const Corner& c = corners_[i + 1];
-      if (a.position == b.position || b.position == c.position || a.position == c.position) {
-        ++chunk_.dropped_degenerate;
-        continue;
+    Corner first{}, previous{};
+    std::size_t corners = 0;
+    for (; !at_line_end(p); p = skip_blanks(p, end_), ++corners) {
+      const Corner current = corner(p);
+      if (current.normal == kNoIndex && chunk_.every_corner_has_normal) {
+        chunk_.every_corner_has_normal = false;
+        chunk_.triangle_normals = {};
       }
-      add_triangle({a.position, b.position, c.position});
-      if (chunk_.every_corner_has_normal) chunk_.triangle_normals.push_back({a.normal, b.normal, c.normal});
+      if (corners >= 2) add_triangle(first, previous, current);
+      if (corners == 0) first = current;
+      previous = current;
     }
+    if (corners < 3) fail(line_begin_, "face needs at least 3 vertices, found " + std::to_string(corners));
+    ++chunk_.faces;
     return line_end(p);
   }
 
-  void add_triangle(const TriangleIndices& triangle) {
+  void add_triangle(const Corner& a, const Corner& b, const Corner& c) {
+    if (a.position == b.position || b.position == c.position || a.position == c.position) {
+      ++chunk_.dropped_degenerate;
+      return;
+    }
+    const TriangleIndices triangle{a.position, b.position, c.position};
     if (chunk_.triangles_in_slots < chunk_.counts.faces) out_.triangles[chunk_.start.faces + chunk_.triangles_in_slots++] = triangle;
     else chunk_.more_triangles.push_back(triangle);
-  }
-
-  void keep_normals_while_complete() {
-    if (!chunk_.every_corner_has_normal) return;
-    for (const Corner& c : corners_) {
-      if (c.normal == kNoIndex) {
-        chunk_.every_corner_has_normal = false;
-        chunk_.triangle_normals = {};
-        return;
-      }
-    }
+    if (chunk_.every_corner_has_normal) chunk_.triangle_normals.push_back({a.normal, b.normal, c.normal});
   }
 
   // One face vertex: v, v/vt, v//vn or v/vt/vn. Advances p past it.
@@ -288,7 +281,6 @@ class ChunkParser {
   Counts seen_;  // everything declared up to the current line, file-wide
   const char* const end_;
   const char* line_begin_ = nullptr;
-  std::vector<Corner> corners_;  // of the current face; reused to avoid an allocation per face
   std::unordered_map<std::string_view, std::uint32_t> material_slots_;
 };
 
