@@ -3,7 +3,10 @@
 #include "rtpro/scene/large_buffer.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rtpro {
@@ -23,19 +26,28 @@ std::vector<Vec3> area_weighted_vertex_normals(const std::vector<PaddedVertex>& 
                                                const std::vector<TriangleIndices>& triangles) {
   std::vector<Vec3> normals;
   resize_large(normals, vertices.size());
-  // One serial pass: the scattered additions are cheap next to the parse, and summing in triangle
-  // order makes every normal independent of the thread count.
-  for (const TriangleIndices& t : triangles) {
-    const Vec3 p0 = vertices[t.v0].position();
-    // The unnormalised cross product is twice the area times the unit normal: area weighting
-    // comes for free.
-    const Vec3 weighted = cross(vertices[t.v1].position() - p0, vertices[t.v2].position() - p0);
-    normals[t.v0] += weighted;
-    normals[t.v1] += weighted;
-    normals[t.v2] += weighted;
-  }
-  tbb::parallel_for(std::size_t(0), normals.size(),
-                    [&normals](std::size_t v) { normals[v] = unit_or(normals[v], Vec3(0.0f, 0.0f, 1.0f)); });
+  // Each task owns a range of vertices and walks every triangle, adding only to its own vertices.
+  // So every vertex sums its triangles in triangle order, exactly as one serial loop would, however
+  // many tasks share the work, and no task needs memory of its own.
+  const std::size_t tasks = std::size_t(std::max(1, tbb::this_task_arena::max_concurrency()));
+  const auto sum_and_normalise = [&](std::size_t task) {
+    const std::size_t first = vertices.size() * task / tasks;
+    const std::size_t count = vertices.size() * (task + 1) / tasks - first;
+    const auto owned = [first, count](std::uint32_t v) { return v - first < count; };
+    for (const TriangleIndices& t : triangles) {
+      const bool own0 = owned(t.v0), own1 = owned(t.v1), own2 = owned(t.v2);
+      if (!(own0 || own1 || own2)) continue;
+      const Vec3 p0 = vertices[t.v0].position();
+      // The unnormalised cross product is twice the area times the unit normal: area weighting
+      // comes for free.
+      const Vec3 weighted = cross(vertices[t.v1].position() - p0, vertices[t.v2].position() - p0);
+      if (own0) normals[t.v0] += weighted;
+      if (own1) normals[t.v1] += weighted;
+      if (own2) normals[t.v2] += weighted;
+    }
+    for (std::size_t v = first; v < first + count; ++v) normals[v] = unit_or(normals[v], Vec3(0.0f, 0.0f, 1.0f));
+  };
+  tbb::parallel_for(std::size_t(0), tasks, sum_and_normalise, tbb::static_partitioner());
   return normals;
 }
 

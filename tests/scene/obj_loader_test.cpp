@@ -4,6 +4,7 @@
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <array>
@@ -405,6 +406,19 @@ TEST(ObjLoader, ParallelChunkedParseEqualsSerialParse) {
     EXPECT_EQ(chunked.stats.faces, serial.stats.faces);
     EXPECT_EQ(chunked.stats.warnings, serial.stats.warnings);
   }
+}
+
+TEST(ObjLoader, ResultsDoNotDependOnTheThreadCount) {
+  write_file("varied.mtl", "newmtl a\nnewmtl b\n");
+  const auto file = write_file("threads.obj", varied_obj(30));
+  const LoadedMesh parallel = load_obj_file(file, 512);
+  const LoadedMesh serial = [&] {
+    const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+    return load_obj_file(file, 512);
+  }();
+  ASSERT_FALSE(serial.mesh.normals.empty());
+  EXPECT_EQ(parallel.mesh.normals, serial.mesh.normals);
+  EXPECT_EQ(parallel.mesh.triangle_materials, serial.mesh.triangle_materials);
 }
 
 TEST(ObjLoader, ChunkedParseReportsTheFirstErrorWithItsFileLine) {

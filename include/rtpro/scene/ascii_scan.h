@@ -174,9 +174,9 @@ struct FloatScan {
   const char* next;  // just past the number when kOk
 };
 
-// Plain decimals like "-0.0503644" (the bulk of scanned meshes), read with two 8-byte loads:
-// at most 7 digits before and after the point, and a mantissa below 2^24. That is the exact path
-// fast_float also takes for them: the mantissa and a power of ten up to 10^7 are exact floats, so
+// Plain decimals like "-0.0503644" (the bulk of scanned meshes), read with 8-byte loads: at most
+// 7 digits before the point and 10 after it, and a mantissa below 2^24. That is the exact path
+// fast_float also takes for them: the mantissa and a power of ten up to 10^10 are exact floats, so
 // the one rounding of the division gives the correctly rounded result. Anything else returns false
 // and goes to fast_float.
 inline bool scan_short_decimal(const char* p, const char* end, float& value, const char*& next) {
@@ -192,9 +192,17 @@ inline bool scan_short_decimal(const char* p, const char* end, float& value, con
   if (*p == '.') {
     const std::uint64_t tail = swar::load(++p);
     fraction = swar::leading_digits(tail);
-    if (fraction == 8) return false;
     if (fraction) mantissa = mantissa * kPowersOf10[fraction] + swar::digits_value(tail, fraction);
     p += fraction;
+    if (fraction == 8) {  // "0.00531858": leading zeros make long fractions common
+      if (end - p < 8) return false;
+      const std::uint64_t more = swar::load(p);
+      const int extra = swar::leading_digits(more);
+      if (fraction + extra > 10) return false;
+      if (extra) mantissa = mantissa * kPowersOf10[extra] + swar::digits_value(more, extra);
+      fraction += extra;
+      p += extra;
+    }
   }
   if (whole + fraction == 0 || mantissa > (1u << 24) || !is_word_end(*p)) return false;
   const float magnitude = float(mantissa) / float(kPowersOf10[fraction]);
