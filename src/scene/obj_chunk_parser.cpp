@@ -241,7 +241,10 @@ class ChunkParser {
 
   void tally_ignored(std::string_view keyword) {
     for (IgnoredKeyword& k : chunk_.ignored) {
-      if (k.keyword == keyword) return void(++k.count);
+      if (k.keyword == keyword) {
+        ++k.count;
+        return;
+      }
     }
     chunk_.ignored.push_back({keyword, 1, seen_.lines});
   }
