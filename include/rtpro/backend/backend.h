@@ -26,6 +26,7 @@ struct BackendOptions {
   int threads = 0;                 // 0: all cores
   std::string embree_quality = "medium";  // low | medium | high
   bool embree_robust = true;
+  bool embree_compact = false;            // smaller, slower BVH
   std::size_t max_memory_bytes = 0;       // 0: no limit
 };
 
