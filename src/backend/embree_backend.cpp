@@ -5,6 +5,7 @@
 #include "rtpro/backend/embree_device.h"
 #include "rtpro/backend/embree_scene_builder.h"
 #include "rtpro/backend/embree_spheres.h"
+#include "rtpro/backend/ray_gate.h"
 
 #include <algorithm>
 #include <atomic>
@@ -78,7 +79,7 @@ class EmbreeBackend final : public Backend {
   std::string_view name() const override { return "embree"; }
 
   bool intersect(const Ray& ray, Hit& hit) const override {
-    if (!accept(ray)) return false;
+    if (!gate_.admit(ray)) return false;
     Hit closest_sphere = no_sphere_yet(ray);
     EmbreeIntersectContext context;
     rtcInitIntersectContext(&context.base);
@@ -101,7 +102,7 @@ class EmbreeBackend final : public Backend {
       unsigned count = 0;
       for (std::size_t i = begin; i < end; ++i) {
         found[i] = false;
-        if (!accept(rays[i])) continue;
+        if (!gate_.admit(rays[i])) continue;
         closest_spheres[count] = no_sphere_yet(rays[i]);
         to_embree(rays[i], count, queries[count]);
         slots[count++] = i;
@@ -119,7 +120,7 @@ class EmbreeBackend final : public Backend {
   // Embree's triangles accept t == tfar; asking for (tnear, previous float below tfar] instead
   // gives exactly the open interval (tnear, tfar) the interface promises, for every geometry.
   bool occluded(const Ray& ray) const override {
-    if (!accept(ray)) return false;
+    if (!gate_.admit(ray)) return false;
     const float tfar = std::nextafter(ray.tfar, 0.0f);
     if (!(tfar > ray.tnear)) return false;
     RTCIntersectContext context;
@@ -132,22 +133,15 @@ class EmbreeBackend final : public Backend {
 
   BackendStats stats() const override {
     BackendStats s = stats_;
-    s.rejected_rays = rejected_rays_.load(std::memory_order_relaxed);
+    s.rejected_rays = gate_.rejected();
     return s;
   }
 
  private:
-  // Debian's Embree asserts (aborting the process) on NaN, huge or negative-tnear rays.
-  bool accept(const Ray& ray) const {
-    if (is_traceable(ray)) return true;
-    rejected_rays_.fetch_add(1, std::memory_order_relaxed);
-    return false;
-  }
-
   std::shared_ptr<EmbreeDevice> device_;
   EmbreeScenes scenes_;
   BackendStats stats_;
-  mutable std::atomic<std::uint64_t> rejected_rays_{0};
+  RayGate gate_;
 };
 
 }  // namespace

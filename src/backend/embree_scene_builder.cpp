@@ -2,6 +2,7 @@
 
 #include "rtpro/backend/embree_spheres.h"
 #include "rtpro/core/error.h"
+#include "rtpro/core/ray.h"
 
 #include <cmath>
 #include <string>
@@ -12,12 +13,7 @@ namespace {
 
 // Embree's commit silently drops primitives with coordinates beyond about 1.8e18 (or NaN/inf);
 // rtpro refuses them instead, with the same margin is_traceable() keeps for rays.
-constexpr float kMaxCoordinate = 1e16f;
-
-bool in_embree_range(const Vec3& p) {
-  return is_finite(p) && std::fabs(p.x) < kMaxCoordinate && std::fabs(p.y) < kMaxCoordinate &&
-         std::fabs(p.z) < kMaxCoordinate;
-}
+bool in_embree_range(const Vec3& p) { return within_traceable_range(p); }
 
 bool in_embree_range(const BBox& box) {
   return box.empty() || (in_embree_range(box.lower) && in_embree_range(box.upper));

@@ -3,6 +3,7 @@
 #include "rtpro/backend/native_backend.h"
 
 #include "rtpro/backend/bvh.h"
+#include "rtpro/backend/ray_gate.h"
 #include "rtpro/geometry/sphere_intersect.h"
 #include "rtpro/geometry/triangle_intersect.h"
 
@@ -58,7 +59,7 @@ class NativeBackend final : public Backend {
   std::string_view name() const override { return "native"; }
 
   bool intersect(const Ray& ray, Hit& hit) const override {
-    if (!accept(ray)) return false;
+    if (!gate_.admit(ray)) return false;
     Hit best;
     float best_t = ray.tfar;
     closest_in_group(scene_.top, top_bvh_, ray, kInvalidId, best, best_t);
@@ -69,7 +70,7 @@ class NativeBackend final : public Backend {
   }
 
   bool occluded(const Ray& ray) const override {
-    if (!accept(ray)) return false;
+    if (!gate_.admit(ray)) return false;
     return any_in_group(scene_.top, top_bvh_, ray);
   }
 
@@ -78,16 +79,11 @@ class NativeBackend final : public Backend {
     s.build_seconds = build_seconds_;
     s.acceleration_bytes = top_bvh_.memory_bytes();
     for (const Bvh& bvh : prototype_bvhs_) s.acceleration_bytes += bvh.memory_bytes();
-    s.rejected_rays = rejected_rays_.load(std::memory_order_relaxed);
+    s.rejected_rays = gate_.rejected();
     return s;
   }
 
  private:
-  bool accept(const Ray& ray) const {
-    if (is_traceable(ray)) return true;
-    rejected_rays_.fetch_add(1, std::memory_order_relaxed);
-    return false;
-  }
 
   static Ray to_object_space(const Instance& instance, const Ray& ray, float tfar) {
     // The direction is not renormalised, so distances t mean the same in both spaces.
@@ -208,7 +204,7 @@ class NativeBackend final : public Backend {
   Bvh top_bvh_;
   std::vector<Bvh> prototype_bvhs_;
   double build_seconds_ = 0.0;
-  mutable std::atomic<std::uint64_t> rejected_rays_{0};
+  RayGate gate_;
 };
 
 }  // namespace
