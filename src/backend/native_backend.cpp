@@ -84,7 +84,6 @@ class NativeBackend final : public Backend {
   }
 
  private:
-
   static Ray to_object_space(const Instance& instance, const Ray& ray, float tfar) {
     // The direction is not renormalised, so distances t mean the same in both spaces.
     return {instance.world_to_object.apply_point(ray.org), ray.tnear,
