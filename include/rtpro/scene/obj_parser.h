@@ -7,10 +7,12 @@
 //   unused), f in the forms v, v/vt, v//vn, v/vt/vn. Negative indices count back from the elements
 //   declared before their line; positive ones may point forward, up to the file's total. Index 0,
 //   out-of-range indices and numbers that are malformed, NaN, infinite or beyond float range are
-//   InputErrors naming file:line:column. Line continuations ('\') are not supported.
+//   InputErrors naming file:line:column, and so are coordinates beyond kMaxAbsCoordinate. Line
+//   continuations ('\') are not supported; a '#' after numbers or indices starts a comment.
 // - Polygons are fan-triangulated (exact for convex ones). A triangle with a repeated position
 //   index is dropped and counted in stats.dropped_degenerate.
-// - Normals: the file's vn when every face corner has one (normalised). Otherwise generated as
+// - Normals: the file's vn when every face corner has one (normalised); when some corner lacks one
+//   or a vn has zero length, the file's normals are set aside with a warning. Otherwise generated as
 //   area-weighted smooth normals per smoothing group. A file with no `s` statement at all is
 //   treated as one smooth group (scanned models like the Stanford dragon have none and need
 //   smooth shading); once any `s` appears, faces before it and under `s off` / `s 0` are flat:
