@@ -123,9 +123,14 @@ DisplayTransform::DisplayTransform(std::string display, std::string view, std::s
     : display_(std::move(display)), view_(std::move(view)), processor_(std::move(processor)) {}
 
 void DisplayTransform::apply(float* rgb, std::size_t pixel_count) const {
-  if (pixel_count == 0) return;
-  OCIO::PackedImageDesc pixels(rgb, static_cast<long>(pixel_count), 1, 3);
-  processor_->cpu->apply(pixels);
+  // OpenColorIO converts whatever it is given into scratch RGBA float buffers first: a 1024×1024
+  // image in one call cost 50 MB of peak memory. Bounded chunks keep that to a few hundred KB.
+  constexpr std::size_t kChunkPixels = 16384;
+  for (std::size_t first = 0; first < pixel_count; first += kChunkPixels) {
+    const std::size_t count = std::min(kChunkPixels, pixel_count - first);
+    OCIO::PackedImageDesc pixels(rgb + 3 * first, static_cast<long>(count), 1, 3);
+    processor_->cpu->apply(pixels);
+  }
 }
 
 }  // namespace rtpro
