@@ -18,7 +18,7 @@ else
 fi
 RTPRO_BENCH_SCENES=$(IFS=:; echo "${scenes[*]}") \
   "$build/benchmarks/rtpro_backend_benchmark" --benchmark_min_time=0.5 \
-  --benchmark_out="$out/backend.json" --benchmark_out_format=json >/dev/null
+  --benchmark_out="$out/backend.json" --benchmark_out_format=json >"$out/backend.log" 2>&1
 
 for scene in "${scenes[@]}"; do
   name=$(basename "$scene" .yaml)

@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# The large-mesh benchmark on the Stanford dragon (871,414 triangles), all measured in one run:
+# OBJ load time (rtpro vs tinyobjloader), BVH build per backend, Mrays/s for primary and
+# primary + shadow rays at 1024×1024, time to first image of the whole process, peak RSS and bytes
+# per triangle, and Embree's own `viewer` (Debian package embree-tools) on the same model and
+# camera when it is installed. Usage: benchmarks/dragon_benchmark.sh
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build="$root/build-release"
+out="$build/benchmark-results/dragon"
+threads=${RTPRO_BENCH_THREADS:-$(nproc)}
+
+"$root/scripts/fetch-dragon.sh" >/dev/null
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTPRO_BUILD_TESTS=OFF >/dev/null
+cmake --build "$build" --target rtpro rtpro_backend_benchmark rtpro_mesh_load_benchmark >/dev/null
+mkdir -p "$out"
+
+"$build/benchmarks/rtpro_mesh_load_benchmark" --benchmark_min_time=2 \
+  --benchmark_out="$out/load.json" --benchmark_out_format=json >"$out/load.log" 2>&1
+RTPRO_BENCH_SCENES="$root/scenes/dragon.yaml" RTPRO_BENCH_SIZE=1024x1024 \
+  "$build/benchmarks/rtpro_backend_benchmark" --benchmark_min_time=1 \
+  --benchmark_filter='^(build|primary|primary_shadow)/' \
+  --benchmark_out="$out/backend.json" --benchmark_out_format=json >"$out/backend.log" 2>&1
+
+# Time to first image: the whole process, from start to a written 1024×1024 PNG at 1 spp.
+# The baseline is the same command on a scene without the mesh (libraries and image only).
+baseline_scene="$out/baseline.yaml"
+sed '/dragon.obj/d' "$root/scenes/dragon.yaml" >"$baseline_scene"
+for backend in embree native; do
+  for scene in dragon baseline; do
+    file="$root/scenes/dragon.yaml"; [ "$scene" = baseline ] && file="$baseline_scene"
+    /usr/bin/time -f "%e %M" -o "$out/$scene-$backend.time" "$build/rtpro" render "$file" -o "$out/$scene-$backend.png" \
+      --backend "$backend" --size 1024x1024 --spp 1 --threads "$threads" --quiet
+  done
+done
+
+viewer_line="not run: install Debian's embree-tools for Embree's own viewer"
+if command -v viewer >/dev/null 2>&1; then
+  /usr/bin/time -f "%e %M" -o "$out/viewer.time" viewer -i "$root/assets/dragon.obj" --size 1024 1024 \
+    --vp -0.16 0.2 0.3 --vi 0 0.115 0 --vu 0 1 0 --fov 38 --threads "$threads" --benchmark 2 10 >"$out/viewer.log" 2>&1 || true
+  viewer_line=""
+fi
+
+python3 - "$out" "$viewer_line" <<'PY'
+import json, sys
+out, viewer_line = sys.argv[1], sys.argv[2]
+triangles = 871414
+load = {b["name"].split("/")[0]: b for b in json.load(open(f"{out}/load.json"))["benchmarks"]}
+back = {b["name"].replace("/real_time", ""): b for b in json.load(open(f"{out}/backend.json"))["benchmarks"]}
+def timed(name):
+    seconds, kb = open(f"{out}/{name}.time").read().split()
+    return float(seconds), int(kb) / 1024
+print("dragon.obj: load")
+rt, tiny = load.get("BM_RtproObj"), load.get("BM_TinyObjLoader")
+for label, b in (("rtpro", rt), ("rtpro, 1 thread", load.get("BM_RtproObjOneThread")), ("tinyobjloader", tiny),
+                 ("rtpro PLY (ascii)", load.get("BM_RtproAsciiPly"))):
+    if b: print(f"  {label:20} {b['real_time']:8.1f} ms  {b['bytes_per_second'] / 1e6:8.1f} MB/s")
+if rt and tiny: print(f"  speed-up over tinyobjloader: {tiny['real_time'] / rt['real_time']:.1f}x")
+print("\ndragon at 1024x1024 (Mrays/s; build in ms)")
+print(f"  {'backend':8} {'build':>8} {'primary':>9} {'prim+shadow':>12} {'first image s':>14} {'peak MiB':>9} {'B/tri':>7} {'B/tri>base':>11}")
+rows = {}
+for backend in ("native", "embree"):
+    g = lambda k: back.get(f"{k}/dragon/{backend}")
+    first_s, peak = timed(f"dragon-{backend}")
+    _, base = timed(f"baseline-{backend}")
+    rows[backend] = (g("build")["real_time"], g("primary")["Mrays/s"], g("primary_shadow")["Mrays/s"], first_s, peak)
+    print(f"  {backend:8} {rows[backend][0]:8.1f} {rows[backend][1]:9.2f} {rows[backend][2]:12.2f} {first_s:14.2f} {peak:9.0f}"
+          f" {peak * 1048576 / triangles:7.0f} {(peak - base) * 1048576 / triangles:11.0f}")
+n, e = rows["native"], rows["embree"]
+print(f"  {'e/n':8} {e[0] / n[0]:7.2f}x {e[1] / n[1]:8.2f}x {e[2] / n[2]:11.2f}x {e[3] / n[3]:13.2f}x {e[4] / n[4]:8.2f}x")
+if viewer_line:
+    print(f"\nEmbree viewer: {viewer_line}")
+else:
+    log = open(f"{out}/viewer.log").read()
+    mrays = next((l.split()[-1] for l in log.splitlines() if l.startswith("BENCHMARK_RENDER_MRAYPS_AVG ")), "?")
+    seconds, peak = timed("viewer")
+    print(f"\nEmbree viewer (same model, camera, 1024x1024, primary rays): {float(mrays):.2f} Mrays/s,"
+          f" peak {peak:.0f} MiB, {seconds:.2f} s for load + build + 12 frames")
+    print(f"  rtpro embree / viewer: primary {e[1] / float(mrays):.2f}x, peak RSS {e[4] / peak:.2f}x")
+PY
