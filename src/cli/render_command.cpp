@@ -56,20 +56,44 @@ struct RenderCommandOptions {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+// A scene override together with the command-line text it came from, so errors name the flag
+// the user typed (--spp 10) rather than the override it became (--set render.spp=10).
+struct SceneOverride {
+  std::string assignment;
+  std::string flag;
+};
+
 // Command-line values become scene overrides, so they are validated exactly like the file's.
-std::vector<std::string> scene_overrides(const RenderCommandOptions& o) {
-  std::vector<std::string> overrides = o.overrides;
-  if (o.spp) overrides.push_back("render.spp=" + std::to_string(*o.spp));
-  if (o.max_depth) overrides.push_back("render.max_depth=" + std::to_string(*o.max_depth));
-  if (o.seed) overrides.push_back("render.seed=" + std::to_string(*o.seed));
+std::vector<SceneOverride> scene_overrides(const RenderCommandOptions& o) {
+  std::vector<SceneOverride> overrides;
+  for (const std::string& set : o.overrides) overrides.push_back({set, "--set " + set});
+  if (o.spp) overrides.push_back({"render.spp=" + std::to_string(*o.spp), "--spp " + std::to_string(*o.spp)});
+  if (o.max_depth)
+    overrides.push_back({"render.max_depth=" + std::to_string(*o.max_depth), "--max-depth " + std::to_string(*o.max_depth)});
+  if (o.seed) overrides.push_back({"render.seed=" + std::to_string(*o.seed), "--seed " + std::to_string(*o.seed)});
   if (!o.size.empty()) {
     int w = 0, h = 0;
     char extra = 0;
     if (std::sscanf(o.size.c_str(), "%dx%d%c", &w, &h, &extra) != 2)
       throw InputError("--size '" + o.size + "': expected WIDTHxHEIGHT, e.g. 640x480");
-    overrides.push_back("camera.resolution=[" + std::to_string(w) + "," + std::to_string(h) + "]");
+    overrides.push_back({"camera.resolution=[" + std::to_string(w) + "," + std::to_string(h) + "]", "--size " + o.size});
   }
   return overrides;
+}
+
+SceneDescription parse_with_overrides(const std::string& scene, const std::vector<SceneOverride>& overrides) {
+  std::vector<std::string> assignments;
+  for (const SceneOverride& o : overrides) assignments.push_back(o.assignment);
+  try {
+    return parse_scene_file(scene, assignments);
+  } catch (const InputError& e) {
+    for (const SceneOverride& o : overrides) {
+      const std::string prefix = "--set " + o.assignment + ":";
+      const std::string message = e.what();
+      if (message.rfind(prefix, 0) == 0) throw InputError(o.flag + ":" + message.substr(prefix.size()));
+    }
+    throw;
+  }
 }
 
 std::optional<PixelRegion> parse_region(const std::string& text) {
@@ -140,7 +164,7 @@ int run_render(const RenderCommandOptions& o) {
   // Must exist before any TBB or Embree work so the cap really holds.
   tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
-  const SceneDescription description = parse_scene_file(o.scene, scene_overrides(o));
+  const SceneDescription description = parse_with_overrides(o.scene, scene_overrides(o));
   SceneBuildReport report;
   const RenderScene scene = build_render_scene(description, &report);
   for (const auto& mesh : report.meshes) {

@@ -148,6 +148,7 @@ TEST(RenderCommand, BadInputsFailCleanlyAndLeaveNoFile) {
   EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o " + (dir / "x.unknownformat").string()), &out), 2);
   EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o /nonexistent-folder/x.png"), &out), 1) << out;
   EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o " + target.string() + " --spp 10"), &out), 2);
+  EXPECT_NE(out.find("--spp 10: render.spp must be a perfect square"), std::string::npos) << out;
   EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o " + target.string() + " --no-such-flag"), &out), 2);
   EXPECT_FALSE(std::filesystem::exists(target));
 }
