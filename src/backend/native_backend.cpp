@@ -118,6 +118,18 @@ class NativeBackend final : public Backend {
     }
   }
 
+  // Keeps the candidate when the shared tie rule says it is closer than the best so far.
+  static void offer_hit(float t, float u, float v, std::uint32_t inst, const PrimitiveRef& ref, Hit& best,
+                        float& best_t) {
+    if (!is_closer(t, inst, ref.geom, ref.prim, best, best_t)) return;
+    best_t = t;
+    best.u = u;
+    best.v = v;
+    best.inst_id = inst;
+    best.geom_id = ref.geom;
+    best.prim_id = ref.prim;
+  }
+
   void closest_in_group(const Group& group, const Bvh& bvh, const Ray& ray, std::uint32_t inst, Hit& best,
                         float& best_t) const {
     traverse(bvh, ray, best_t, [&](const PrimitiveRef& ref) {
@@ -126,14 +138,8 @@ class NativeBackend final : public Backend {
         case GeometryKind::kSpheres: {
           const Sphere& s = std::get<SphereSet>(geometry).spheres[ref.prim];
           float t;
-          if (intersect_sphere(s.center, s.radius, ray.org, ray.dir, ray.tnear, best_t, t) &&
-              is_closer(t, inst, ref.geom, ref.prim, best, best_t)) {
-            best_t = t;
-            best.u = best.v = 0.0f;
-            best.inst_id = inst;
-            best.geom_id = ref.geom;
-            best.prim_id = ref.prim;
-          }
+          if (intersect_sphere(s.center, s.radius, ray.org, ray.dir, ray.tnear, best_t, t))
+            offer_hit(t, 0.0f, 0.0f, inst, ref, best, best_t);
           break;
         }
         case GeometryKind::kTriangles: {
@@ -141,15 +147,8 @@ class NativeBackend final : public Backend {
           const TriangleIndices& tri = mesh.triangles[ref.prim];
           TriangleHit th;
           if (intersect_triangle(mesh.vertex(tri.v0), mesh.vertex(tri.v1), mesh.vertex(tri.v2), ray.org, ray.dir,
-                                 ray.tnear, best_t, th) &&
-              is_closer(th.t, inst, ref.geom, ref.prim, best, best_t)) {
-            best_t = th.t;
-            best.u = th.u;
-            best.v = th.v;
-            best.inst_id = inst;
-            best.geom_id = ref.geom;
-            best.prim_id = ref.prim;
-          }
+                                 ray.tnear, best_t, th))
+            offer_hit(th.t, th.u, th.v, inst, ref, best, best_t);
           break;
         }
         case GeometryKind::kInstance: {

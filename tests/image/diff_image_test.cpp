@@ -3,6 +3,8 @@
 #include "rtpro/image/image_io.h"
 #include "test_paths.h"
 
+#include "test_fixtures.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,13 +12,7 @@
 namespace rtpro {
 namespace {
 
-Image gradient(int width, int height) {
-  Image image(width, height);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
-      for (int c = 0; c < 3; ++c) image.at(x, y, c) = 0.1f * x + 0.01f * y + 0.3f * c;
-  return image;
-}
+using test::gradient_image;
 
 // Where the heat map is brightest (the ramp's brightness rises with the error).
 std::pair<int, int> hottest_pixel(const Image& image) {
@@ -31,7 +27,7 @@ std::pair<int, int> hottest_pixel(const Image& image) {
 }
 
 TEST(DiffImage, HottestPixelIsWhereTheErrorIs) {
-  const Image reference = gradient(9, 7);
+  const Image reference = gradient_image(9, 7);
   Image test = reference;
   test.at(7, 2, 0) += 0.4f;
   test.at(1, 5, 1) += 0.1f;
@@ -46,7 +42,7 @@ TEST(DiffImage, HottestPixelIsWhereTheErrorIs) {
 }
 
 TEST(DiffImage, ErrorsAtTheFailThresholdAreWhiteAndNanIsMagenta) {
-  const Image reference = gradient(4, 4);
+  const Image reference = gradient_image(4, 4);
   Image test = reference;
   test.at(0, 0, 0) += 0.01f;
   test.at(3, 3, 1) = NAN;
@@ -59,7 +55,7 @@ TEST(DiffImage, ErrorsAtTheFailThresholdAreWhiteAndNanIsMagenta) {
 
 TEST(DiffImage, WrittenPngAndExrShowTheSameHotSpot) {
   const auto folder = test::scratch_dir();
-  const Image reference = gradient(9, 7);
+  const Image reference = gradient_image(9, 7);
   Image test = reference;
   test.at(4, 6, 2) -= 0.3f;
   for (const char* name : {"diff.png", "diff.exr"}) {

@@ -1,5 +1,7 @@
 #include "rtpro/image/image_compare.h"
 
+#include "test_fixtures.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,16 +9,10 @@
 namespace rtpro {
 namespace {
 
-Image gradient(int width, int height) {
-  Image image(width, height);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
-      for (int c = 0; c < 3; ++c) image.at(x, y, c) = 0.1f * x + 0.01f * y + 0.3f * c;
-  return image;
-}
+using test::gradient_image;
 
 TEST(ImageCompare, IdenticalImagesHaveNoErrorAndInfinitePsnr) {
-  const Image image = gradient(8, 5);
+  const Image image = gradient_image(8, 5);
   const ImageComparison result = compare_images(image, image, {});
   EXPECT_TRUE(result.incompatibility.empty());
   EXPECT_EQ(result.pixel_count, 40u);
@@ -30,7 +26,7 @@ TEST(ImageCompare, IdenticalImagesHaveNoErrorAndInfinitePsnr) {
 }
 
 TEST(ImageCompare, OnePixelOffIsFoundAndCounted) {
-  const Image reference = gradient(8, 5);
+  const Image reference = gradient_image(8, 5);
   Image test = reference;
   test.at(6, 3, 1) += 0.5f;
   test.at(2, 1, 2) += 1e-7f;  // below the default thresholds
@@ -47,7 +43,7 @@ TEST(ImageCompare, OnePixelOffIsFoundAndCounted) {
 }
 
 TEST(ImageCompare, FailPercentAllowsSomeFailingPixels) {
-  const Image reference = gradient(10, 10);
+  const Image reference = gradient_image(10, 10);
   Image test = reference;
   test.at(0, 0, 0) += 0.5f;
   test.at(9, 9, 2) += 0.5f;
@@ -59,7 +55,7 @@ TEST(ImageCompare, FailPercentAllowsSomeFailingPixels) {
 }
 
 TEST(ImageCompare, WarningsAloneDoNotFail) {
-  const Image reference = gradient(4, 4);
+  const Image reference = gradient_image(4, 4);
   Image test = reference;
   test.at(1, 1, 0) += 0.05f;
   CompareThresholds thresholds;
@@ -73,7 +69,7 @@ TEST(ImageCompare, WarningsAloneDoNotFail) {
 }
 
 TEST(ImageCompare, UniformOffsetGivesEqualMeanAndRms) {
-  const Image reference = gradient(6, 6);
+  const Image reference = gradient_image(6, 6);
   Image test = reference;
   for (float& value : test.data) value += 0.25f;
   CompareThresholds thresholds;
@@ -89,8 +85,8 @@ TEST(ImageCompare, UniformOffsetGivesEqualMeanAndRms) {
 }
 
 TEST(ImageCompare, DifferentSizesAreAFailureNotAUnion) {
-  const Image reference = gradient(8, 5);
-  Image test = gradient(8, 6);
+  const Image reference = gradient_image(8, 5);
+  Image test = gradient_image(8, 6);
   const ImageComparison result = compare_images(reference, test, {});
   EXPECT_FALSE(result.passed);
   EXPECT_NE(result.incompatibility.find("8x5"), std::string::npos) << result.incompatibility;
@@ -106,7 +102,7 @@ TEST(ImageCompare, DifferentChannelsAreAFailure) {
 }
 
 TEST(ImageCompare, NanInOneImageIsAFailingPixelWithInfiniteError) {
-  const Image reference = gradient(5, 5);
+  const Image reference = gradient_image(5, 5);
   Image test = reference;
   test.at(2, 4, 0) = NAN;
   const ImageComparison result = compare_images(reference, test, {});
@@ -123,7 +119,7 @@ TEST(ImageCompare, NanInOneImageIsAFailingPixelWithInfiniteError) {
 }
 
 TEST(ImageCompare, NanPixelThatAlsoDiffersIsCountedOnce) {
-  const Image reference = gradient(5, 5);
+  const Image reference = gradient_image(5, 5);
   Image test = reference;
   test.at(1, 1, 0) = INFINITY;
   test.at(1, 1, 2) += 0.5f;
@@ -134,7 +130,7 @@ TEST(ImageCompare, NanPixelThatAlsoDiffersIsCountedOnce) {
 }
 
 TEST(ImageCompare, NanAtTheSamePlaceInBothImagesMatches) {
-  Image reference = gradient(5, 5);
+  Image reference = gradient_image(5, 5);
   reference.at(3, 0, 1) = NAN;
   const ImageComparison result = compare_images(reference, reference, {});
   EXPECT_EQ(result.nan_pixels_reference, 1u);

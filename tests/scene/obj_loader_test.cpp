@@ -1,6 +1,7 @@
 #include "rtpro/core/error.h"
 #include "rtpro/scene/mesh_loader.h"
 #include "rtpro/scene/obj_parser.h"
+#include "test_fixtures.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -15,20 +16,10 @@
 namespace rtpro {
 namespace {
 
+using test::mesh_load_error;
 using test::write_file;
 
-// The InputError a load throws; fails the test if none is thrown.
-InputError load_error(const std::filesystem::path& file) {
-  try {
-    load_mesh_file(file);
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError for " << file;
-  return InputError("none");
-}
-
-std::string ErrorOf(const std::string& obj_text) { return load_error(write_file("bad.obj", obj_text)).what(); }
+std::string ErrorOf(const std::string& obj_text) { return mesh_load_error(write_file("bad.obj", obj_text)).what(); }
 
 bool has_warning_containing(const MeshLoadStats& stats, const std::string& text) {
   for (const std::string& w : stats.warnings)
@@ -106,7 +97,7 @@ TEST(ObjLoader, ReadsTheSameNumbersNearTheEndOfTheFile) {
 }
 
 TEST(ObjLoader, ZeroIndexIsAnErrorNamingItsLine) {
-  const InputError e = load_error(write_file("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"));
+  const InputError e = mesh_load_error(write_file("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"));
   EXPECT_EQ(e.where().line, 4);
   EXPECT_EQ(e.where().column, 3);
   EXPECT_NE(std::string(e.what()).find("zero.obj:4:3"), std::string::npos) << e.what();
@@ -115,23 +106,23 @@ TEST(ObjLoader, ZeroIndexIsAnErrorNamingItsLine) {
 
 TEST(ObjLoader, OutOfRangeIndicesAreErrorsNamingTheirLine) {
   const std::string vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-  const InputError past_end = load_error(write_file("past.obj", vertices + "f 1 2 3\nf 1 2 4\n"));
+  const InputError past_end = mesh_load_error(write_file("past.obj", vertices + "f 1 2 3\nf 1 2 4\n"));
   EXPECT_EQ(past_end.where().line, 5);
   EXPECT_NE(past_end.message().find("out of range"), std::string::npos) << past_end.message();
 
-  const InputError before_start = load_error(write_file("before.obj", vertices + "f -1 -2 -4\n"));
+  const InputError before_start = mesh_load_error(write_file("before.obj", vertices + "f -1 -2 -4\n"));
   EXPECT_EQ(before_start.where().line, 4);
   EXPECT_NE(before_start.message().find("-4"), std::string::npos) << before_start.message();
 
   // Relative indices count only what precedes their line, even when more vertices follow.
-  const InputError not_yet = load_error(write_file("ahead.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n"));
+  const InputError not_yet = mesh_load_error(write_file("ahead.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n"));
   EXPECT_EQ(not_yet.where().line, 3);
 
-  const InputError normal = load_error(write_file("normal.obj", vertices + "vn 0 0 1\nf 1//1 2//2 3//1\n"));
+  const InputError normal = mesh_load_error(write_file("normal.obj", vertices + "vn 0 0 1\nf 1//1 2//2 3//1\n"));
   EXPECT_EQ(normal.where().line, 5);
   EXPECT_NE(normal.message().find("normal index 2"), std::string::npos) << normal.message();
 
-  const InputError texcoord = load_error(write_file("texcoord.obj", vertices + "vt 0 0\nf 1/1 2/2 3/1\n"));
+  const InputError texcoord = mesh_load_error(write_file("texcoord.obj", vertices + "vt 0 0\nf 1/1 2/2 3/1\n"));
   EXPECT_EQ(texcoord.where().line, 5);
 }
 
@@ -154,7 +145,7 @@ TEST(ObjLoader, MalformedAndNonFiniteNumbersAreErrorsNamingLineAndColumn) {
       {"v 1 2 3 4 5 6 7", 15, "unexpected '7'"},
   };
   for (const Case& c : cases) {
-    const InputError e = load_error(write_file("numbers.obj", std::string("v 0 0 0\n") + c.line + "\n"));
+    const InputError e = mesh_load_error(write_file("numbers.obj", std::string("v 0 0 0\n") + c.line + "\n"));
     EXPECT_EQ(e.where().line, 2) << c.line;
     EXPECT_EQ(e.where().column, c.column) << c.line;
     EXPECT_NE(e.message().find(c.says), std::string::npos) << c.line << ": " << e.message();
@@ -270,12 +261,12 @@ TEST(ObjLoader, MissingMaterialLibraryIsAWarningAndMaterialsFallBack) {
 
 TEST(ObjLoader, MaterialLibrariesOutsideTheObjFolderAreRejected) {
   write_file("x.mtl", "newmtl x\n");
-  const InputError up = load_error(write_file("sub/escape.obj", "v 0 0 0\nmtllib ../x.mtl\n"));
+  const InputError up = mesh_load_error(write_file("sub/escape.obj", "v 0 0 0\nmtllib ../x.mtl\n"));
   EXPECT_EQ(up.where().line, 2);
   EXPECT_NE(up.message().find("leaves the OBJ's folder"), std::string::npos) << up.message();
-  const InputError sneaky = load_error(write_file("sub/sneaky.obj", "mtllib a/../../x.mtl\n"));
+  const InputError sneaky = mesh_load_error(write_file("sub/sneaky.obj", "mtllib a/../../x.mtl\n"));
   EXPECT_NE(sneaky.message().find("leaves the OBJ's folder"), std::string::npos) << sneaky.message();
-  const InputError absolute = load_error(write_file("absolute.obj", "mtllib /etc/passwd\n"));
+  const InputError absolute = mesh_load_error(write_file("absolute.obj", "mtllib /etc/passwd\n"));
   EXPECT_NE(absolute.message().find("must be relative"), std::string::npos) << absolute.message();
   // Going down and back up inside the folder is fine.
   write_file("sub/inner/y.mtl", "newmtl y\n");
@@ -284,10 +275,10 @@ TEST(ObjLoader, MaterialLibrariesOutsideTheObjFolderAreRejected) {
 
 TEST(ObjLoader, MalformedMaterialLibraryNamesItsOwnLine) {
   write_file("bad.mtl", "newmtl a\nKd 1 abc 0\n");
-  const InputError e = load_error(write_file("uses_bad.obj", "mtllib bad.mtl\n"));
+  const InputError e = mesh_load_error(write_file("uses_bad.obj", "mtllib bad.mtl\n"));
   EXPECT_NE(std::string(e.what()).find("bad.mtl:2:6"), std::string::npos) << e.what();
   write_file("early.mtl", "Kd 1 1 1\n");
-  EXPECT_NE(std::string(load_error(write_file("uses_early.obj", "mtllib early.mtl\n")).what()).find("before any newmtl"),
+  EXPECT_NE(std::string(mesh_load_error(write_file("uses_early.obj", "mtllib early.mtl\n")).what()).find("before any newmtl"),
             std::string::npos);
 }
 

@@ -1,5 +1,6 @@
 #include "rtpro/core/error.h"
 #include "rtpro/scene/mesh_loader.h"
+#include "test_fixtures.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -14,17 +15,8 @@
 namespace rtpro {
 namespace {
 
+using test::mesh_load_error;
 using test::write_file;
-
-InputError load_error(const std::filesystem::path& file) {
-  try {
-    load_mesh_file(file);
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError for " << file;
-  return InputError("none");
-}
 
 struct Vertex {
   float x, y, z;
@@ -136,7 +128,7 @@ TEST(PlyLoader, HugeDeclaredCountsInATinyFileAreRejectedBeforeAllocating) {
                        "property float x\nproperty float y\nproperty float z\n"
                        "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
   header.resize(200, '\0');
-  const InputError e = load_error(write_file("huge.ply", header));
+  const InputError e = mesh_load_error(write_file("huge.ply", header));
   EXPECT_EQ(e.where().line, 3);
   EXPECT_NE(e.message().find("declares 1099511627776"), std::string::npos) << e.message();
 
@@ -148,7 +140,7 @@ TEST(PlyLoader, HugeDeclaredCountsInATinyFileAreRejectedBeforeAllocating) {
 TEST(PlyLoader, TruncatedBinaryBodyIsAnErrorNamingTheByteOffset) {
   std::string ply = sample_ply(Encoding::kLittleEndian);
   ply.resize(ply.size() - 3);
-  const InputError e = load_error(write_file("truncated.ply", ply));
+  const InputError e = mesh_load_error(write_file("truncated.ply", ply));
   EXPECT_NE(e.message().find("truncated"), std::string::npos) << e.message();
   EXPECT_NE(e.message().find("byte offset " + std::to_string(ply.size() - 1)), std::string::npos) << e.message();
 }
@@ -158,7 +150,7 @@ TEST(PlyLoader, NonFiniteBinaryCoordinateIsAnError) {
   const std::size_t body = ply.find("end_header\n") + 11;
   const float nan = std::numeric_limits<float>::quiet_NaN();
   std::memcpy(&ply[body + 13 + 4], &nan, sizeof nan);  // vertex 1, y
-  const InputError e = load_error(write_file("nan.ply", ply));
+  const InputError e = mesh_load_error(write_file("nan.ply", ply));
   EXPECT_NE(e.message().find("not a finite number (at byte offset " + std::to_string(body + 17) + ")"), std::string::npos)
       << e.message();
 }
@@ -186,7 +178,7 @@ TEST(PlyLoader, AsciiErrorsNameLineAndColumn) {
       {"0 0 0\n1 0 0\n\n\n\n\n\n\n\n\n\n", 21, 1, "ends before the elements"},  // blank lines hold no element
   };
   for (const Case& c : cases) {
-    const InputError e = load_error(write_file("bad.ply", ascii_ply(c.body)));
+    const InputError e = mesh_load_error(write_file("bad.ply", ascii_ply(c.body)));
     EXPECT_EQ(e.where().line, c.line) << c.body;
     EXPECT_EQ(e.where().column, c.column) << c.body;
     EXPECT_NE(e.message().find(c.says), std::string::npos) << c.body << ": " << e.message();
@@ -194,18 +186,18 @@ TEST(PlyLoader, AsciiErrorsNameLineAndColumn) {
 }
 
 TEST(PlyLoader, MalformedHeadersAreErrors) {
-  EXPECT_NE(load_error(write_file("a.ply", "solid\n")).message().find("not a PLY file"), std::string::npos);
-  EXPECT_NE(load_error(write_file("b.ply", "ply\nformat ascii 1.0\nelement vertex 0\n")).message().find("no end_header"),
+  EXPECT_NE(mesh_load_error(write_file("a.ply", "solid\n")).message().find("not a PLY file"), std::string::npos);
+  EXPECT_NE(mesh_load_error(write_file("b.ply", "ply\nformat ascii 1.0\nelement vertex 0\n")).message().find("no end_header"),
             std::string::npos);
-  EXPECT_NE(load_error(write_file("c.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n"))
+  EXPECT_NE(mesh_load_error(write_file("c.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n"))
                 .message()
                 .find("unknown property type 'quad'"),
             std::string::npos);
-  EXPECT_NE(load_error(write_file("d.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n1\n"))
+  EXPECT_NE(mesh_load_error(write_file("d.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n1\n"))
                 .message()
                 .find("needs properties x, y and z"),
             std::string::npos);
-  const InputError e = load_error(write_file("e.ply", "ply\nformat ascii 1.0\nelement vertex -1\nend_header\n"));
+  const InputError e = mesh_load_error(write_file("e.ply", "ply\nformat ascii 1.0\nelement vertex -1\nend_header\n"));
   EXPECT_EQ(e.where().line, 3);
 }
 

@@ -1,0 +1,16 @@
+#pragma once
+// Small fixtures several test files share.
+#include "rtpro/core/error.h"
+#include "rtpro/image/image.h"
+
+#include <filesystem>
+
+namespace rtpro::test {
+
+// An RGB image whose every pixel and channel differs: 0.1·x + 0.01·y + 0.3·c.
+Image gradient_image(int width, int height);
+
+// The InputError load_mesh_file throws for `file`; records a test failure if none is thrown.
+InputError mesh_load_error(const std::filesystem::path& file);
+
+}  // namespace rtpro::test
