@@ -155,24 +155,19 @@ void whole_render(benchmark::State& state, const LoadedScene* loaded, BackendKin
   state.counters["Mrays/s"] = benchmark::Counter(static_cast<double>(rays) * 1e-6, benchmark::Counter::kIsRate);
 }
 
+using BackendBenchmark = void (*)(benchmark::State&, const LoadedScene*, BackendKind);
+
 void register_benchmarks() {
-  for (const auto& loaded : loaded_scenes()) {
-    for (BackendKind kind : {BackendKind::kNative, BackendKind::kEmbree}) {
-      const std::string suffix = loaded->name + "/" + std::string(backend_name(kind));
-      benchmark::RegisterBenchmark((std::string("build/") + suffix).c_str(), build, loaded.get(), kind)
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
-      benchmark::RegisterBenchmark((std::string("primary/") + suffix).c_str(), primary_rays, loaded.get(), kind)
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
-      benchmark::RegisterBenchmark((std::string("primary_shadow/") + suffix).c_str(), primary_and_shadow_rays, loaded.get(), kind)
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
-      benchmark::RegisterBenchmark((std::string("render_1spp/") + suffix).c_str(), whole_render, loaded.get(), kind)
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
-    }
-  }
+  const std::pair<const char*, BackendBenchmark> kinds[] = {
+      {"build", build}, {"primary", primary_rays}, {"primary_shadow", primary_and_shadow_rays}, {"render_1spp", whole_render}};
+  for (const auto& loaded : loaded_scenes())
+    for (BackendKind kind : {BackendKind::kNative, BackendKind::kEmbree})
+      for (const auto& [label, function] : kinds) {
+        const std::string name = std::string(label) + "/" + loaded->name + "/" + std::string(backend_name(kind));
+        benchmark::RegisterBenchmark(name.c_str(), function, loaded.get(), kind)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+      }
 }
 
 }  // namespace
