@@ -1,4 +1,4 @@
-#include "rtpro/backend/bvh.h"
+#include "bvh.h"
 
 #include <algorithm>
 #include <array>

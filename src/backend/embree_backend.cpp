@@ -1,11 +1,11 @@
 // The Embree backend: the same answers as the native backend (bit-identical for top-level
 // spheres, within float tolerance for triangles and instances), from Embree 3's BVHs.
-#include "rtpro/backend/embree_backend.h"
+#include "embree_backend.h"
 
-#include "rtpro/backend/embree_device.h"
-#include "rtpro/backend/embree_scene_builder.h"
-#include "rtpro/backend/embree_spheres.h"
-#include "rtpro/backend/ray_gate.h"
+#include "embree_device.h"
+#include "embree_scene_builder.h"
+#include "embree_spheres.h"
+#include "ray_gate.h"
 
 #include <algorithm>
 #include <atomic>

@@ -1,4 +1,4 @@
-#include "rtpro/backend/embree_device.h"
+#include "embree_device.h"
 
 #include "rtpro/core/error.h"
 

@@ -1,6 +1,6 @@
-#include "rtpro/backend/embree_scene_builder.h"
+#include "embree_scene_builder.h"
 
-#include "rtpro/backend/embree_spheres.h"
+#include "embree_spheres.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/ray.h"
 

@@ -1,4 +1,4 @@
-#include "rtpro/backend/embree_spheres.h"
+#include "embree_spheres.h"
 
 #include "rtpro/geometry/sphere_intersect.h"
 

@@ -1,9 +1,9 @@
 // The native backend: the reference answer. One BVH per group; instances transform the ray into
 // object space and descend into their prototype's BVH. Kept simple and plainly correct.
-#include "rtpro/backend/native_backend.h"
+#include "native_backend.h"
 
-#include "rtpro/backend/bvh.h"
-#include "rtpro/backend/ray_gate.h"
+#include "bvh.h"
+#include "ray_gate.h"
 #include "rtpro/geometry/sphere_intersect.h"
 #include "rtpro/geometry/triangle_intersect.h"
 

@@ -2,7 +2,7 @@
 // Exit codes: 0 within tolerance; 1 outside it, including images of different size or channels
 // (a real regression, not a usage mistake); 2 for an unreadable file or bad options.
 // Warnings never change the exit code; they are reported.
-#include "rtpro/cli/command.h"
+#include "command.h"
 #include "rtpro/core/error.h"
 #include "rtpro/image/diff_image.h"
 #include "rtpro/image/image_compare.h"

@@ -1,10 +1,10 @@
 // `rtpro crosscheck SCENE`: traces the same rays through the native and the Embree backend and
 // compares them under the rules in backend/crosscheck.h. Exit codes: 0 within the rules, 1 for
 // any mismatch, 2 for a bad scene or bad options.
-#include "rtpro/backend/crosscheck.h"
-#include "rtpro/backend/embree_backend.h"
-#include "rtpro/backend/native_backend.h"
-#include "rtpro/cli/command.h"
+#include "rtpro/crosscheck/crosscheck.h"
+#include "rtpro/backend/backend.h"
+#include "rtpro/backend/backend.h"
+#include "command.h"
 #include "rtpro/core/error.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
@@ -89,8 +89,8 @@ int run_crosscheck(const CrosscheckCommandOptions& o) {
   backend_options.threads = threads;
   backend_options.embree_quality = o.embree_quality;
   backend_options.embree_robust = o.embree_robust;
-  const auto native = make_native_backend(scene, backend_options);
-  const auto embree = make_embree_backend(scene, backend_options);
+  const auto native = make_backend(BackendKind::kNative, scene, backend_options);
+  const auto embree = make_backend(BackendKind::kEmbree, scene, backend_options);
 
   const CrosscheckReport report = crosscheck(scene, *native, *embree, o.check);
   print_report(report);

@@ -1,5 +1,5 @@
 // `rtpro info SCENE`: what a scene holds, without rendering it.
-#include "rtpro/cli/command.h"
+#include "command.h"
 #include "rtpro/core/error.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"

@@ -1,4 +1,4 @@
-#include "rtpro/cli/interrupt.h"
+#include "interrupt.h"
 
 #include <csignal>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "rtpro/cli/log.h"
+#include "log.h"
 
 #include <iostream>
 

@@ -1,6 +1,6 @@
 // rtpro's command line: subcommands register themselves (see cli/command.h); main parses,
 // runs the chosen action and maps rtpro's error kinds to exit codes.
-#include "rtpro/cli/command.h"
+#include "command.h"
 #include "rtpro/core/error.h"
 
 #include <embree3/rtcore_config.h>

@@ -1,4 +1,4 @@
-#include "rtpro/cli/progress.h"
+#include "progress.h"
 
 #include "rtpro/core/error.h"
 

@@ -1,4 +1,4 @@
-#include "rtpro/cli/render_stats.h"
+#include "render_stats.h"
 
 #include <sys/resource.h>
 

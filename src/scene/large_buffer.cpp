@@ -1,4 +1,4 @@
-#include "rtpro/scene/large_buffer.h"
+#include "large_buffer.h"
 
 #include <cstdint>
 #include <sys/mman.h>

@@ -1,4 +1,4 @@
-#include "rtpro/scene/mapped_file.h"
+#include "mapped_file.h"
 
 #include "rtpro/core/error.h"
 

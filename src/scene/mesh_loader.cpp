@@ -1,8 +1,8 @@
 #include "rtpro/scene/mesh_loader.h"
 
 #include "rtpro/core/error.h"
-#include "rtpro/scene/obj_parser.h"
-#include "rtpro/scene/ply_parser.h"
+#include "obj_parser.h"
+#include "ply_parser.h"
 
 #include <algorithm>
 #include <cctype>

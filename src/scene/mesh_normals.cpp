@@ -1,6 +1,6 @@
-#include "rtpro/scene/mesh_normals.h"
+#include "mesh_normals.h"
 
-#include "rtpro/scene/large_buffer.h"
+#include "large_buffer.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>

@@ -1,8 +1,8 @@
-#include "rtpro/scene/mtl_parser.h"
+#include "mtl_parser.h"
 
 #include "rtpro/core/error.h"
-#include "rtpro/scene/ascii_scan.h"
-#include "rtpro/scene/mapped_file.h"
+#include "ascii_scan.h"
+#include "mapped_file.h"
 
 #include <array>
 #include <cstring>

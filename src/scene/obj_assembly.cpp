@@ -1,10 +1,10 @@
-#include "rtpro/scene/obj_assembly.h"
+#include "obj_assembly.h"
 
 #include "rtpro/core/error.h"
-#include "rtpro/scene/large_buffer.h"
-#include "rtpro/scene/mesh_limits.h"
-#include "rtpro/scene/mesh_normals.h"
-#include "rtpro/scene/obj_chunk.h"
+#include "large_buffer.h"
+#include "mesh_limits.h"
+#include "mesh_normals.h"
+#include "obj_chunk.h"
 
 #include <algorithm>
 #include <unordered_map>

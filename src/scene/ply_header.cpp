@@ -1,7 +1,7 @@
-#include "rtpro/scene/ply_header.h"
+#include "ply_header.h"
 
 #include "rtpro/core/error.h"
-#include "rtpro/scene/ascii_scan.h"
+#include "ascii_scan.h"
 
 #include <array>
 #include <utility>

@@ -1,8 +1,8 @@
 #include "rtpro/scene/scene_parser.h"
 
-#include "rtpro/scene/yaml_document.h"
-#include "rtpro/scene/yaml_reader.h"
-#include "rtpro/scene/yaml_scene_objects.h"
+#include "yaml_document.h"
+#include "yaml_reader.h"
+#include "yaml_scene_objects.h"
 
 #include <cerrno>
 #include <cmath>

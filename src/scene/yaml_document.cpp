@@ -1,4 +1,4 @@
-#include "rtpro/scene/yaml_document.h"
+#include "yaml_document.h"
 
 #include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/exceptions.h>

@@ -1,4 +1,4 @@
-#include "rtpro/scene/yaml_reader.h"
+#include "yaml_reader.h"
 
 #include <algorithm>
 #include <charconv>

@@ -1,7 +1,7 @@
-#include "rtpro/scene/yaml_scene_objects.h"
+#include "yaml_scene_objects.h"
 
-#include "rtpro/scene/yaml_reader.h"
-#include "rtpro/scene/yaml_transform.h"
+#include "yaml_reader.h"
+#include "yaml_transform.h"
 
 #include <algorithm>
 #include <cctype>

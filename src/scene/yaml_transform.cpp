@@ -1,6 +1,6 @@
-#include "rtpro/scene/yaml_transform.h"
+#include "yaml_transform.h"
 
-#include "rtpro/scene/yaml_reader.h"
+#include "yaml_reader.h"
 
 #include <cmath>
 #include <sstream>

@@ -2,7 +2,7 @@
 // shares the scene's arrays) whose answers are known: sphere distances must be
 // bit-identical to intersect_sphere's, triangle hits exact where the arithmetic is exact, and
 // bad rays or budgets must become counted misses or RuntimeErrors, never an abort.
-#include "rtpro/backend/embree_backend.h"
+#include "rtpro/backend/backend.h"
 
 #include "rtpro/core/error.h"
 #include "rtpro/core/fp_env.h"
@@ -61,7 +61,7 @@ TEST_F(EmbreeBackendTest, SphereDistancesAreBitIdenticalToIntersectSphere) {
   const Sphere near_sphere{{0.1f, -0.2f, 3.0f}, 1.0f, 0};
   const Sphere far_small{{-3000.0f, 1000.0f, -20000.0f}, 0.001f, 0};
   const RenderScene scene = scene_with({spheres({near_sphere, far_small})});
-  const auto backend = make_embree_backend(scene, {});
+  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
 
   const Vec3 to_far = far_small.center - Vec3(0.0f, 0.0f, -1.0f);
   const std::vector<std::pair<Ray, std::uint32_t>> cases = {
@@ -91,7 +91,7 @@ TEST_F(EmbreeBackendTest, SphereDistancesAreBitIdenticalToIntersectSphere) {
 TEST_F(EmbreeBackendTest, HitsExactlyAtTfarCountButNotBeyondIt) {
   const Sphere s{{0.0f, 0.0f, 5.0f}, 1.0f, 0};
   const RenderScene scene = scene_with({spheres({s})});
-  const auto backend = make_embree_backend(scene, {});
+  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
   Hit hit;
   ASSERT_TRUE(backend->intersect(make_ray({0, 0, 0}, {0, 0, 1}), hit));
   ASSERT_EQ(hit.t, 4.0f);
@@ -108,7 +108,7 @@ TEST_F(EmbreeBackendTest, EqualDistancesFollowTheTieRule) {
   const Sphere s{{0.0f, 0.0f, 5.0f}, 1.0f, 0};
   for (std::size_t n : {2u, 5u, 9u, 33u}) {
     const RenderScene scene = scene_with({spheres(std::vector<Sphere>(n, s)), spheres({s})});
-    const auto backend = make_embree_backend(scene, {});
+    const auto backend = make_backend(BackendKind::kEmbree, scene, {});
     for (int i = 0; i < 20; ++i) {
       const float x = -0.9f + 0.09f * static_cast<float>(i);
       Hit hit;
@@ -122,7 +122,7 @@ TEST_F(EmbreeBackendTest, EqualDistancesFollowTheTieRule) {
 TEST_F(EmbreeBackendTest, TrianglesReportTheirGroupIndexAndBarycentrics) {
   // Geometry 0 is an empty sphere set: ids must still be the group's indices.
   const RenderScene scene = scene_with({SphereSet{}, unit_square()});
-  const auto backend = make_embree_backend(scene, {});
+  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
   Hit hit;
   ASSERT_TRUE(backend->intersect(make_ray({0.25f, 0.5f, -2.0f}, {0, 0, 1}), hit));
   EXPECT_FLOAT_EQ(hit.t, 2.0f);  // Embree divides with a refined reciprocal: a few ulps, not exact
@@ -148,7 +148,7 @@ TEST_F(EmbreeBackendTest, InstancedHitsNameTheInstanceAndThePrototypeGeometry) {
                                    compose(Affine::scale({2, 2, 2}), Affine::rotate({0, 0, 1}, 90.0f)));
   const Instance instance{0, placement, *inverse(placement)};
   const RenderScene scene = scene_with({spheres({{{-10.0f, 0.0f, 0.0f}, 1.0f, 0}}), instance, instance}, {prototype});
-  const auto backend = make_embree_backend(scene, {});
+  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
 
   Hit hit;
   ASSERT_TRUE(backend->intersect(make_ray({10.0f, 0.0f, -5.0f}, {0, 0, 1}), hit));
@@ -179,7 +179,7 @@ TEST_F(EmbreeBackendTest, InstancedHitsNameTheInstanceAndThePrototypeGeometry) {
 
 TEST_F(EmbreeBackendTest, OcclusionCoversTheOpenInterval) {
   const RenderScene scene = scene_with({spheres({{{-3, -3, 5}, 1.0f, 0}}), unit_square()});
-  const auto backend = make_embree_backend(scene, {});
+  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
   const Vec3 org{-3, -3, 0};
   EXPECT_TRUE(backend->occluded(make_ray(org, {0, 0, 1})));
   EXPECT_FALSE(backend->occluded(make_ray(org, {0, 0, 1}, 0.0f, 3.9f)));
@@ -194,7 +194,7 @@ TEST_F(EmbreeBackendTest, OcclusionCoversTheOpenInterval) {
 
 TEST_F(EmbreeBackendTest, UntraceableRaysAreCountedMisses) {
   const RenderScene scene = scene_with({spheres({{{0, 0, 5}, 1.0f, 0}})});
-  const auto backend = make_embree_backend(scene, {});
+  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const std::vector<Ray> bad = {
       make_ray({nan, 0, 0}, {0, 0, 1}),
@@ -217,7 +217,7 @@ TEST_F(EmbreeBackendTest, UntraceableRaysAreCountedMisses) {
 
 TEST_F(EmbreeBackendTest, BatchedIntersectMatchesSingleRays) {
   const RenderScene scene = test::random_mixed_scene(7, 500, 500, 10);
-  const auto backend = make_embree_backend(scene, {});
+  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
   std::mt19937 rng(11);
   std::vector<Ray> rays;
   for (int i = 0; i < 1000; ++i) rays.push_back(test::random_ray(rng, 6.0f));
@@ -246,21 +246,21 @@ TEST_F(EmbreeBackendTest, MemoryLimitMakesTheBuildFail) {
   BackendOptions options;
   options.max_memory_bytes = 1024;
   try {
-    make_embree_backend(scene, options);
+    make_backend(BackendKind::kEmbree, scene, options);
     FAIL() << "a 1 KB budget cannot hold a BVH of 5000 primitives";
   } catch (const RuntimeError& e) {
     EXPECT_NE(std::string(e.what()).find("--max-memory limit"), std::string::npos) << e.what();
   }
   // The device is fine afterwards, and a generous budget is not in the way.
   options.max_memory_bytes = std::size_t{1} << 30;
-  const auto backend = make_embree_backend(scene, options);
+  const auto backend = make_backend(BackendKind::kEmbree, scene, options);
   EXPECT_GT(backend->stats().acceleration_bytes, 5000u * 16u);
   EXPECT_LT(backend->stats().acceleration_bytes, options.max_memory_bytes);
 }
 
 TEST_F(EmbreeBackendTest, ConcurrentBuildsKeepTheirOwnFailuresAndBytes) {
   const RenderScene scene = test::random_mixed_scene(4, 3000, 3000, 5);
-  const std::size_t alone = make_embree_backend(scene, {})->stats().acceleration_bytes;
+  const std::size_t alone = make_backend(BackendKind::kEmbree, scene, {})->stats().acceleration_bytes;
   constexpr int kThreads = 6;
   std::vector<std::size_t> bytes(kThreads, 0);
   std::vector<int> failures(kThreads, 0);
@@ -270,7 +270,7 @@ TEST_F(EmbreeBackendTest, ConcurrentBuildsKeepTheirOwnFailuresAndBytes) {
       BackendOptions options;
       options.max_memory_bytes = i % 2 ? 4096 : 0;  // every other build must fail, alone
       try {
-        bytes[i] = make_embree_backend(scene, options)->stats().acceleration_bytes;
+        bytes[i] = make_backend(BackendKind::kEmbree, scene, options)->stats().acceleration_bytes;
       } catch (const RuntimeError&) {
         ++failures[i];
       }
@@ -288,14 +288,14 @@ TEST_F(EmbreeBackendTest, ConcurrentBuildsKeepTheirOwnFailuresAndBytes) {
 TEST_F(EmbreeBackendTest, GeometryEmbreeWouldDropIsRefused) {
   TriangleMesh bad_vertex = unit_square();
   bad_vertex.vertices[2].y = std::numeric_limits<float>::quiet_NaN();
-  EXPECT_THROW(make_embree_backend(scene_with({bad_vertex}), {}), RuntimeError);
+  EXPECT_THROW(make_backend(BackendKind::kEmbree, scene_with({bad_vertex}), {}), RuntimeError);
 
   TriangleMesh bad_index = unit_square();
   bad_index.triangles[1].v2 = 4;
-  EXPECT_THROW(make_embree_backend(scene_with({bad_index}), {}), RuntimeError);
+  EXPECT_THROW(make_backend(BackendKind::kEmbree, scene_with({bad_index}), {}), RuntimeError);
 
-  EXPECT_THROW(make_embree_backend(scene_with({spheres({{{1e20f, 0, 0}, 1.0f, 0}})}), {}), RuntimeError);
-  EXPECT_THROW(make_embree_backend(scene_with({Instance{3, {}, {}}}), {}), RuntimeError);
+  EXPECT_THROW(make_backend(BackendKind::kEmbree, scene_with({spheres({{{1e20f, 0, 0}, 1.0f, 0}})}), {}), RuntimeError);
+  EXPECT_THROW(make_backend(BackendKind::kEmbree, scene_with({Instance{3, {}, {}}}), {}), RuntimeError);
 }
 
 TEST_F(EmbreeBackendTest, OptionsChooseQualityAndThreads) {
@@ -304,12 +304,12 @@ TEST_F(EmbreeBackendTest, OptionsChooseQualityAndThreads) {
   std::vector<Ray> rays;
   for (int i = 0; i < 300; ++i) rays.push_back(test::random_ray(rng, 6.0f));
 
-  const auto reference = make_embree_backend(scene, {});
+  const auto reference = make_backend(BackendKind::kEmbree, scene, {});
   for (const char* quality : {"low", "high"}) {
     BackendOptions options;
     options.embree_quality = quality;
     options.threads = 1;
-    const auto backend = make_embree_backend(scene, options);
+    const auto backend = make_backend(BackendKind::kEmbree, scene, options);
     for (const Ray& ray : rays) {
       Hit a, b;
       ASSERT_EQ(reference->intersect(ray, a), backend->intersect(ray, b)) << quality;
@@ -319,12 +319,12 @@ TEST_F(EmbreeBackendTest, OptionsChooseQualityAndThreads) {
   }
   BackendOptions unknown;
   unknown.embree_quality = "ultra";
-  EXPECT_THROW(make_embree_backend(scene, unknown), InputError);
+  EXPECT_THROW(make_backend(BackendKind::kEmbree, scene, unknown), InputError);
 }
 
 TEST_F(EmbreeBackendTest, EmptySceneMissesEverything) {
   const RenderScene scene = scene_with({});
-  const auto backend = make_embree_backend(scene, {});
+  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
   Hit hit;
   EXPECT_FALSE(backend->intersect(make_ray({0, 0, 0}, {0, 0, 1}), hit));
   EXPECT_FALSE(backend->occluded(make_ray({0, 0, 0}, {0, 0, 1})));

@@ -1,8 +1,8 @@
 // The native backend is the reference, so it is checked against the plainest possible answer:
 // a loop over every primitive with the same intersectors and tie rule.
-#include "rtpro/backend/native_backend.h"
+#include "rtpro/backend/backend.h"
 
-#include "rtpro/backend/bvh.h"
+#include "bvh.h"
 #include "rtpro/geometry/sphere_intersect.h"
 #include "rtpro/geometry/triangle_intersect.h"
 #include "test_scenes.h"
@@ -52,7 +52,7 @@ void brute_force(const RenderScene& scene, const Group& group, const Ray& ray, s
 TEST(NativeBackend, AgreesExactlyWithBruteForce) {
   for (std::uint32_t seed : {1u, 2u, 3u}) {
     const RenderScene scene = test::random_mixed_scene(seed, 2000, 2000, 30);
-    const auto backend = make_native_backend(scene, {});
+    const auto backend = make_backend(BackendKind::kNative, scene, {});
     std::mt19937 rng(seed * 100);
     int hits = 0;
     for (int i = 0; i < 3000; ++i) {
@@ -88,7 +88,7 @@ TEST(NativeBackend, InstancedHitReportsInstanceAndPrototypeIds) {
   scene.top.geometries.emplace_back(SphereSet{{{{0, 0, -100}, 1.0f, 0}}});
   const Affine placement = compose(Affine::translate({5, 0, 0}), Affine::scale({2, 2, 2}));
   scene.top.geometries.emplace_back(Instance{0, placement, *inverse(placement)});
-  const auto backend = make_native_backend(scene, {});
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
   Hit hit;
   ASSERT_TRUE(backend->intersect(Ray{{5, 0, 10}, 0.0f, {0, 0, -1}}, hit));
   EXPECT_EQ(hit.inst_id, 1u);
@@ -99,7 +99,7 @@ TEST(NativeBackend, InstancedHitReportsInstanceAndPrototypeIds) {
 
 TEST(NativeBackend, RejectsAndCountsUntraceableRays) {
   const RenderScene scene = test::random_mixed_scene(4, 10, 10, 1);
-  const auto backend = make_native_backend(scene, {});
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
   const float nan = std::numeric_limits<float>::quiet_NaN();
   Hit hit;
   EXPECT_FALSE(backend->intersect(Ray{{nan, 0, 0}, 0.0f, {0, 0, 1}}, hit));
@@ -120,7 +120,7 @@ TEST(Bvh, IsDeterministicAndBoundsItsDepth) {
   // Many identical spheres cannot be separated by SAH; the tree must still be finite and valid.
   RenderScene stacked = test::empty_scene();
   stacked.top.geometries.emplace_back(SphereSet{std::vector<Sphere>(20000, Sphere{{0, 0, 0}, 1.0f, 0})});
-  const auto backend = make_native_backend(stacked, {});
+  const auto backend = make_backend(BackendKind::kNative, stacked, {});
   Hit hit;
   ASSERT_TRUE(backend->intersect(Ray{{0, 0, 5}, 0.0f, {0, 0, -1}}, hit));
   EXPECT_EQ(hit.prim_id, 0u);  // the tie rule picks the lowest id

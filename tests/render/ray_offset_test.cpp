@@ -2,7 +2,7 @@
 // distance from the origin, for spheres, triangles and instances alike.
 #include "rtpro/render/ray_offset.h"
 
-#include "rtpro/backend/native_backend.h"
+#include "rtpro/backend/backend.h"
 #include "rtpro/render/surface.h"
 #include "test_scenes.h"
 
@@ -64,7 +64,7 @@ class RayOffsetTest : public ::testing::TestWithParam<ScaleCase> {};
 TEST_P(RayOffsetTest, SpawnedRaysNeverReHitTheirOwnSurface) {
   const ScaleCase c = GetParam();
   const RenderScene scene = scene_at_scale(c, 11);
-  const auto backend = make_native_backend(scene, {});
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   int surfaces = 0, spawned = 0;

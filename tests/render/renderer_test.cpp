@@ -1,6 +1,6 @@
 #include "rtpro/render/renderer.h"
 
-#include "rtpro/backend/native_backend.h"
+#include "rtpro/backend/backend.h"
 #include "test_scenes.h"
 
 #include <gtest/gtest.h>
@@ -21,7 +21,7 @@ RenderScene test_scene() {
 
 RenderResult render_with(const RenderScene& scene, int threads, int tile_size, std::vector<Aov> aovs = {}) {
   tbb::global_control cap(tbb::global_control::max_allowed_parallelism, threads);
-  const auto backend = make_native_backend(scene, {});
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
   RenderOptions options;
   options.tile_size = tile_size;
   options.aovs = std::move(aovs);
@@ -61,7 +61,7 @@ TEST(Renderer, ImageIsNotBlankAndSeedChangesTheNoise) {
 TEST(Renderer, RegionPixelsEqualTheFullRender) {
   const RenderScene scene = test_scene();
   const RenderResult full = render_with(scene, 2, 16);
-  const auto backend = make_native_backend(scene, {});
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
   RenderOptions options;
   options.region = PixelRegion{5, 3, 29, 20};
   const RenderResult part = render_image(scene, *backend, options);
@@ -77,7 +77,7 @@ TEST(Renderer, RegionPixelsEqualTheFullRender) {
 
 TEST(Renderer, CancellationStopsBeforeTheRemainingTiles) {
   const RenderScene scene = test_scene();
-  const auto backend = make_native_backend(scene, {});
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
   std::atomic<bool> cancel{false};
   RenderOptions options;
   options.tile_size = 8;

@@ -3,7 +3,7 @@
 // whose materials are already read, resolving names to indices and checking the instance graph
 // for cycles and nesting depth.
 #include "rtpro/scene/description.h"
-#include "rtpro/scene/yaml_document.h"
+#include "yaml_document.h"
 
 #include <cstddef>
 #include <filesystem>

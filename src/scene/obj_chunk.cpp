@@ -1,7 +1,7 @@
 #include "rtpro/core/error.h"
-#include "rtpro/scene/ascii_scan.h"
-#include "rtpro/scene/mesh_limits.h"
-#include "rtpro/scene/obj_chunk.h"
+#include "ascii_scan.h"
+#include "mesh_limits.h"
+#include "obj_chunk.h"
 
 #include <cmath>
 #include <string>

@@ -3,7 +3,7 @@
 // applied as scale, then rotate, then translate; a mapping with a row-major 4×4 `matrix`; or a
 // list of single-key steps applied in order.
 #include "rtpro/core/transform.h"
-#include "rtpro/scene/yaml_document.h"
+#include "yaml_document.h"
 
 #include <string>
 

@@ -1,4 +1,4 @@
-#include "rtpro/backend/crosscheck.h"
+#include "rtpro/crosscheck/crosscheck.h"
 
 #include "rtpro/core/fp_env.h"
 #include "rtpro/core/random.h"

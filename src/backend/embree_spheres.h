@@ -7,7 +7,7 @@
 // Equal distances follow the shared tie rule (is_closer in hit.h): the lower (instance, geometry,
 // primitive) wins. Embree leaves the hit record undefined inside callbacks, so the closest sphere
 // hit of each ray is kept beside it, in a context that extends RTCIntersectContext.
-#include "rtpro/backend/embree_handles.h"
+#include "embree_handles.h"
 #include "rtpro/backend/hit.h"
 #include "rtpro/scene/render_scene.h"
 

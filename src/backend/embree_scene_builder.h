@@ -3,8 +3,8 @@
 // instance geometries reference the prototypes. Every geometry is attached under its own index in
 // its group, so Embree's geomID and instID map straight back to the RenderScene.
 #include "rtpro/backend/backend.h"
-#include "rtpro/backend/embree_device.h"
-#include "rtpro/backend/embree_handles.h"
+#include "embree_device.h"
+#include "embree_handles.h"
 #include "rtpro/scene/render_scene.h"
 
 #include <embree3/rtcore.h>

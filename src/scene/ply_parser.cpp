@@ -1,12 +1,12 @@
-#include "rtpro/scene/ply_parser.h"
+#include "ply_parser.h"
 
 #include "rtpro/core/error.h"
-#include "rtpro/scene/ascii_scan.h"
-#include "rtpro/scene/large_buffer.h"
-#include "rtpro/scene/mapped_file.h"
-#include "rtpro/scene/mesh_limits.h"
-#include "rtpro/scene/mesh_normals.h"
-#include "rtpro/scene/ply_header.h"
+#include "ascii_scan.h"
+#include "large_buffer.h"
+#include "mapped_file.h"
+#include "mesh_limits.h"
+#include "mesh_normals.h"
+#include "ply_header.h"
 
 #include <algorithm>
 #include <bit>

@@ -1,9 +1,9 @@
 // Native vs Embree on random scenes and on every shipped scene, plus proof that the checker
 // itself notices a backend that is off by one ulp or loses hits.
-#include "rtpro/backend/crosscheck.h"
+#include "rtpro/crosscheck/crosscheck.h"
 
-#include "rtpro/backend/embree_backend.h"
-#include "rtpro/backend/native_backend.h"
+#include "rtpro/backend/backend.h"
+#include "rtpro/backend/backend.h"
 #include "rtpro/core/fp_env.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
@@ -31,8 +31,8 @@ std::string summary(const CrosscheckReport& r) {
 }
 
 CrosscheckReport check_backends(const RenderScene& scene, std::size_t rays, std::uint64_t seed) {
-  const auto native = make_native_backend(scene, {});
-  const auto embree = make_embree_backend(scene, {});
+  const auto native = make_backend(BackendKind::kNative, scene, {});
+  const auto embree = make_backend(BackendKind::kEmbree, scene, {});
   CrosscheckOptions options;
   options.rays = rays;
   options.seed = seed;
@@ -102,8 +102,8 @@ TEST(Crosscheck, NoticesAnUlpOnSpheresAndLostHits) {
   options.rays = 5000;
 
   const RenderScene spheres = test::random_mixed_scene(8, 2000, 0, 0);
-  const auto native_spheres = make_native_backend(spheres, {});
-  const auto embree_spheres = make_embree_backend(spheres, {});
+  const auto native_spheres = make_backend(BackendKind::kNative, spheres, {});
+  const auto embree_spheres = make_backend(BackendKind::kEmbree, spheres, {});
   const CrosscheckReport ulp =
       crosscheck(spheres, *native_spheres, Perturbed(*embree_spheres, Perturbed::Fault::kSphereUlp), options);
   EXPECT_FALSE(ulp.passed());
@@ -113,8 +113,8 @@ TEST(Crosscheck, NoticesAnUlpOnSpheresAndLostHits) {
   EXPECT_EQ(ulp.worst.front().note, "top-level sphere hit is not bit-identical");
 
   const RenderScene mixed = test::random_mixed_scene(8, 2000, 2000, 10);
-  const auto native = make_native_backend(mixed, {});
-  const auto embree = make_embree_backend(mixed, {});
+  const auto native = make_backend(BackendKind::kNative, mixed, {});
+  const auto embree = make_backend(BackendKind::kEmbree, mixed, {});
   const CrosscheckReport lost = crosscheck(mixed, *native, Perturbed(*embree, Perturbed::Fault::kLostHits), options);
   EXPECT_FALSE(lost.passed());
   EXPECT_GT(lost.mismatches, 50u);
@@ -127,8 +127,8 @@ TEST(Crosscheck, NoticesAnUlpOnSpheresAndLostHits) {
 
 TEST(Crosscheck, SameRaysForTheSameSeed) {
   const RenderScene scene = test::random_mixed_scene(9, 500, 500, 5);
-  const auto native = make_native_backend(scene, {});
-  const auto embree = make_embree_backend(scene, {});
+  const auto native = make_backend(BackendKind::kNative, scene, {});
+  const auto embree = make_backend(BackendKind::kEmbree, scene, {});
   CrosscheckOptions options;
   options.rays = 3000;
   const CrosscheckReport a = crosscheck(scene, *native, Perturbed(*embree, Perturbed::Fault::kLostHits), options);

@@ -1,13 +1,13 @@
-#include "rtpro/scene/obj_parser.h"
+#include "obj_parser.h"
 
 #include "rtpro/core/error.h"
-#include "rtpro/scene/ascii_scan.h"
-#include "rtpro/scene/large_buffer.h"
-#include "rtpro/scene/mapped_file.h"
-#include "rtpro/scene/mesh_limits.h"
-#include "rtpro/scene/mtl_parser.h"
-#include "rtpro/scene/obj_assembly.h"
-#include "rtpro/scene/obj_chunk.h"
+#include "ascii_scan.h"
+#include "large_buffer.h"
+#include "mapped_file.h"
+#include "mesh_limits.h"
+#include "mtl_parser.h"
+#include "obj_assembly.h"
+#include "obj_chunk.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>

@@ -1,6 +1,6 @@
 #include "rtpro/core/error.h"
 #include "rtpro/scene/mesh_loader.h"
-#include "rtpro/scene/obj_parser.h"
+#include "obj_parser.h"
 #include "test_fixtures.h"
 #include "test_paths.h"
 

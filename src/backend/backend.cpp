@@ -1,7 +1,7 @@
 #include "rtpro/backend/backend.h"
 
-#include "rtpro/backend/embree_backend.h"
-#include "rtpro/backend/native_backend.h"
+#include "embree_backend.h"
+#include "native_backend.h"
 #include "rtpro/core/error.h"
 
 namespace rtpro {

@@ -2,7 +2,7 @@
 // Typed, validated reads from a YamlDocument. Every failure is an InputError at the offending
 // node that names the field ("camera.fov: expected a number, got 'wide'").
 #include "rtpro/core/vec3.h"
-#include "rtpro/scene/yaml_document.h"
+#include "yaml_document.h"
 
 #include <cstdint>
 #include <optional>
