@@ -76,12 +76,11 @@ const std::vector<std::unique_ptr<LoadedScene>>& loaded_scenes() {
 }
 
 std::vector<Ray> camera_rays(const RenderScene& scene) {
-  const Camera camera(scene.camera, scene.camera.width, scene.camera.height);
   std::vector<Ray> rays;
   rays.reserve(static_cast<std::size_t>(scene.camera.width) * scene.camera.height);
   for (int y = 0; y < scene.camera.height; ++y)
     for (int x = 0; x < scene.camera.width; ++x)
-      rays.push_back(camera.generate(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
+      rays.push_back(camera_ray(scene.camera, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
   return rays;
 }
 
@@ -96,13 +95,12 @@ void primary_rays(benchmark::State& state, const LoadedScene* loaded, BackendKin
   const auto backend = make_backend(kind, loaded->scene, {});
   const std::vector<Ray> rays = camera_rays(loaded->scene);
   std::vector<Hit> hits(rays.size());
-  std::unique_ptr<bool[]> found(new bool[rays.size()]);
   constexpr std::size_t kBlock = 4096;  // like a tile of camera rays, traced as one batch
   for (auto _ : state) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), kBlock), [&](const auto& r) {
       set_tracing_fp_mode();
       backend->intersect(std::span(rays).subspan(r.begin(), r.size()), std::span(hits).subspan(r.begin(), r.size()),
-                         std::span(found.get() + r.begin(), r.size()));
+                         RayCoherence::kCoherent);
     });
     benchmark::ClobberMemory();
   }
@@ -119,27 +117,27 @@ void primary_and_shadow_rays(benchmark::State& state, const LoadedScene* loaded,
     state.SkipWithError("scene has no light");
     return;
   }
-  const LightDesc& light = loaded->scene.lights.front();
+  const Light& light = loaded->scene.lights.front();
   std::vector<Hit> hits(rays.size());
-  std::unique_ptr<bool[]> found(new bool[rays.size()]);
   std::atomic<std::uint64_t> traced{0};
   constexpr std::size_t kBlock = 4096;
   for (auto _ : state) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), kBlock), [&](const auto& r) {
       set_tracing_fp_mode();
       backend->intersect(std::span(rays).subspan(r.begin(), r.size()), std::span(hits).subspan(r.begin(), r.size()),
-                         std::span(found.get() + r.begin(), r.size()));
-      std::uint64_t shadow_rays = 0;
+                         RayCoherence::kCoherent);
+      std::vector<Ray> shadow_rays;
       for (std::size_t i = r.begin(); i != r.end(); ++i) {
-        if (!found[i]) continue;
+        if (!hits[i].valid()) continue;
         const SurfacePoint sp = make_surface(loaded->scene, rays[i], hits[i]);
         const LightSample ls = sample_light(light, sp.position);
-        const Ray shadow = std::isinf(ls.distance) ? spawn_ray(sp, ls.direction)
-                                                   : spawn_ray_to(sp, sp.position + ls.direction * ls.distance);
-        benchmark::DoNotOptimize(backend->occluded(shadow));
-        ++shadow_rays;
+        shadow_rays.push_back(std::isinf(ls.distance) ? spawn_ray(sp, ls.direction)
+                                                      : spawn_ray_to(sp, sp.position + ls.direction * ls.distance));
       }
-      traced += r.size() + shadow_rays;
+      std::vector<std::uint8_t> occluded(shadow_rays.size());
+      backend->occluded(shadow_rays, occluded, RayCoherence::kIncoherent);
+      benchmark::DoNotOptimize(occluded.data());
+      traced += r.size() + shadow_rays.size();
     });
   }
   state.counters["Mrays/s"] = benchmark::Counter(static_cast<double>(traced.load()) * 1e-6, benchmark::Counter::kIsRate);

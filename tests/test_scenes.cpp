@@ -1,5 +1,7 @@
 #include "test_scenes.h"
 
+#include "rtpro/scene/build_render_scene.h"
+
 #include <cmath>
 
 namespace rtpro::test {
@@ -18,19 +20,25 @@ Vec3 uniform_direction(std::mt19937& rng) {
 }
 }  // namespace
 
+void set_camera(RenderScene& scene, int width, int height) {
+  CameraDesc camera;
+  camera.position = {0.0f, 0.0f, 10.0f};
+  camera.look_at = {0.0f, 0.0f, 0.0f};
+  camera.width = width;
+  camera.height = height;
+  scene.camera = make_render_camera(camera);
+}
+
 RenderScene empty_scene(int width, int height) {
   RenderScene scene;
-  scene.camera.position = {0.0f, 0.0f, 10.0f};
-  scene.camera.look_at = {0.0f, 0.0f, 0.0f};
-  scene.camera.width = width;
-  scene.camera.height = height;
+  set_camera(scene, width, height);
   scene.render.spp = 4;
   scene.render.max_depth = 3;
   scene.materials.push_back({{0.8f, 0.8f, 0.8f}, 0.5f, 10.0f, 0.0f});
   scene.materials.push_back({{0.9f, 0.2f, 0.2f}, 0.8f, 20.0f, 0.5f});
   scene.material_names = {"default", "mirror-red"};
-  scene.lights.push_back(PointLightDesc{{5.0f, 8.0f, 10.0f}, {1.0f, 1.0f, 1.0f}, 1.0f});
-  scene.lights.push_back(DirectionalLightDesc{{-1.0f, -1.0f, -0.5f}, {0.4f, 0.4f, 0.5f}, 1.0f});
+  scene.lights.push_back(make_light(PointLightDesc{{5.0f, 8.0f, 10.0f}, {1.0f, 1.0f, 1.0f}, 1.0f}));
+  scene.lights.push_back(make_light(DirectionalLightDesc{{-1.0f, -1.0f, -0.5f}, {0.4f, 0.4f, 0.5f}, 1.0f}));
   return scene;
 }
 

@@ -8,6 +8,9 @@
 
 namespace rtpro::test {
 
+// A camera at (0, 0, 10) looking at the origin, `width`×`height` pixels.
+void set_camera(RenderScene& scene, int width, int height);
+
 // A render scene with one default material, one point light and a camera looking at the origin.
 RenderScene empty_scene(int width = 32, int height = 24);
 

@@ -6,6 +6,15 @@
 
 namespace rtpro {
 
+void Backend::intersect(std::span<const Ray> rays, std::span<Hit> hits, RayCoherence) const {
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    if (!intersect(rays[i], hits[i])) hits[i] = Hit{};
+}
+
+void Backend::occluded(std::span<const Ray> rays, std::span<std::uint8_t> result, RayCoherence) const {
+  for (std::size_t i = 0; i < rays.size(); ++i) result[i] = occluded(rays[i]) ? 1 : 0;
+}
+
 std::unique_ptr<Backend> make_backend(BackendKind kind, const RenderScene& scene, const BackendOptions& options) {
   switch (kind) {
     case BackendKind::kNative: return make_native_backend(scene, options);

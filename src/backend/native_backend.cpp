@@ -57,6 +57,8 @@ class NativeBackend final : public Backend {
   }
 
   std::string_view name() const override { return "native"; }
+  using Backend::intersect;
+  using Backend::occluded;
 
   bool intersect(const Ray& ray, Hit& hit) const override {
     if (!gate_.admit(ray)) return false;

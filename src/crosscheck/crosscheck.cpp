@@ -42,9 +42,9 @@ float unit_random(std::uint64_t seed, std::uint64_t ray, std::uint64_t dimension
   return to_unit_float(hash_combine(hash_combine(seed, ray), dimension));
 }
 
-Ray camera_ray(const Camera& camera, const CameraDesc& desc, std::uint64_t seed, std::size_t i) {
-  return camera.generate(unit_random(seed, i, 0) * static_cast<float>(desc.width),
-                         unit_random(seed, i, 1) * static_cast<float>(desc.height));
+Ray random_camera_ray(const RenderCamera& camera, std::uint64_t seed, std::size_t i) {
+  return camera_ray(camera, unit_random(seed, i, 0) * static_cast<float>(camera.width),
+                    unit_random(seed, i, 1) * static_cast<float>(camera.height));
 }
 
 // Origin uniform in the scene's bounds, direction uniform on the sphere.
@@ -288,7 +288,6 @@ void tally(const RenderScene& scene, CrosscheckCase c, int occlusion_queries, st
 CrosscheckReport crosscheck(const RenderScene& scene, const Backend& reference, const Backend& candidate,
                             const CrosscheckOptions& options) {
   const std::size_t camera_rays = options.rays / 2;
-  const Camera camera(scene.camera, scene.camera.width, scene.camera.height);
   BBox bounds = scene.bounds();
   if (bounds.empty()) bounds = {Vec3(-1.0f), Vec3(1.0f)};
 
@@ -309,7 +308,7 @@ CrosscheckReport crosscheck(const RenderScene& scene, const Backend& reference, 
       for (std::size_t k = range.begin(); k != range.end(); ++k) {
         const std::size_t i = first + k;
         traced[k] = TracedRay{};
-        traced[k].ray = i < camera_rays ? camera_ray(camera, scene.camera, options.seed, i)
+        traced[k].ray = i < camera_rays ? random_camera_ray(scene.camera, options.seed, i)
                                         : random_ray(bounds, options.seed, i);
         trace(reference, candidate, traced[k]);
       }

@@ -21,7 +21,7 @@ std::vector<std::string> aov_channel_names(Aov aov) {
     case Aov::kDepth: return {"depth.Z"};
     case Aov::kObjectId: return {"object_id.id"};
   }
-  return {};
+  throw InputError("unknown AOV");
 }
 
 void PixelAccumulator::add(const Color& sample_radiance, const PrimaryHit& primary) {
@@ -46,12 +46,11 @@ std::vector<std::string> channels_for(const std::vector<Aov>& aovs) {
 }
 }  // namespace
 
-Film::Film(int width, int height, std::vector<Aov> aovs)
-    : image_(width, height, channels_for(aovs)), aovs_(std::move(aovs)) {}
+FilmLayout::FilmLayout(std::vector<Aov> aovs) : aovs_(std::move(aovs)), channels_(channels_for(aovs_)) {}
 
-void Film::set_pixel(int x, int y, const PixelAccumulator& acc, int samples) {
+void FilmLayout::resolve(const PixelAccumulator& acc, int samples, std::span<float> pixel) const {
   const float inv = 1.0f / static_cast<float>(samples);
-  float* out = &image_.at(x, y, 0);
+  float* out = pixel.data();
   *out++ = acc.radiance.x * inv;
   *out++ = acc.radiance.y * inv;
   *out++ = acc.radiance.z * inv;

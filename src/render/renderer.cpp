@@ -2,81 +2,60 @@
 
 #include "rtpro/core/error.h"
 #include "rtpro/core/fp_env.h"
-#include "rtpro/render/camera.h"
-#include "rtpro/render/sampler.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <chrono>
-#include <memory>
-#include <span>
-#include <cmath>
+#include <string>
 
 namespace rtpro {
 
-namespace {
+void render_tiles(const TileRenderer& renderer, const TileGrid& grid, TileSource& source, TileSink& sink) {
+  // One long-lived task per worker, each pulling tiles until the source runs dry: the source, not
+  // TBB's partitioner, decides the order, which is what a distributed scheduler needs.
+  const int workers = tbb::this_task_arena::max_concurrency();
+  tbb::parallel_for(tbb::blocked_range<int>(0, workers, 1), [&](const tbb::blocked_range<int>& slots) {
+    set_tracing_fp_mode();
+    TileRenderer::Workspace workspace;
+    for (int slot = slots.begin(); slot != slots.end(); ++slot)
+      while (const std::optional<std::size_t> index = source.next())
+        sink.put(renderer.render(*index, grid.tile(*index), workspace));
+  });
+}
 
-struct TileStats {
-  RayCounts rays;
-  std::uint64_t nan_samples = 0;
-};
+ImageTileSink::ImageTileSink(Image& image, std::size_t tile_count) : image_(image), stats_(tile_count) {}
 
-// Camera rays of one tile row, traced as one batch (Embree streams them coherently).
-struct RowBatch {
-  std::vector<Ray> rays;
-  std::vector<Hit> hits;
-  std::unique_ptr<bool[]> found;
-  explicit RowBatch(std::size_t capacity) : rays(capacity), hits(capacity), found(new bool[capacity]) {}
-};
-
-void render_tile(const RenderScene& scene, const Backend& backend, const Camera& camera,
-                 const StratifiedSampler& sampler, const PixelRegion& tile, Film& film, TileStats& stats) {
-  const int spp = sampler.samples_per_pixel();
-  const int width = scene.camera.width;
-  const std::size_t row_rays = static_cast<std::size_t>(tile.width()) * spp;
-  RowBatch batch(row_rays);
-  for (int y = tile.y0; y < tile.y1; ++y) {
-    std::size_t i = 0;
-    for (int x = tile.x0; x < tile.x1; ++x) {
-      const std::uint64_t pixel_key = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(width) + x;
-      for (int s = 0; s < spp; ++s, ++i) {
-        const PixelOffset offset = sampler.sample(pixel_key, s);
-        batch.rays[i] = camera.generate(static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y);
-      }
-    }
-    backend.intersect(std::span<const Ray>(batch.rays.data(), row_rays), std::span<Hit>(batch.hits.data(), row_rays),
-                      std::span<bool>(batch.found.get(), row_rays));
-    i = 0;
-    for (int x = tile.x0; x < tile.x1; ++x) {
-      PixelAccumulator acc;
-      for (int s = 0; s < spp; ++s, ++i) {
-        PrimaryHit primary;
-        Color radiance = trace_radiance_from(scene, backend, batch.rays[i], batch.found[i], batch.hits[i], stats.rays,
-                                             &primary);
-        if (!is_finite(radiance)) {
-          ++stats.nan_samples;
-          radiance = Color(0.0f);
-        }
-        acc.add(radiance, primary);
-      }
-      film.set_pixel(x, y, acc, spp);
-    }
+void ImageTileSink::put(TileResult&& tile) {
+  const auto channels = static_cast<std::size_t>(image_.channel_count());
+  const auto row_floats = static_cast<std::size_t>(tile.region.width()) * channels;
+  for (int y = tile.region.y0; y < tile.region.y1; ++y) {
+    const float* from = tile.pixels.data() + static_cast<std::size_t>(y - tile.region.y0) * row_floats;
+    std::copy(from, from + row_floats, &image_.at(tile.region.x0, y, 0));
   }
+  stats_[tile.index] = {true, tile.rays, tile.nan_samples};
+  const std::size_t done = done_.fetch_add(1) + 1;
+  if (on_tile_done) on_tile_done(done);
 }
 
-std::vector<PixelRegion> make_tiles(const PixelRegion& region, int tile_size) {
-  std::vector<PixelRegion> tiles;
-  for (int y = region.y0; y < region.y1; y += tile_size)
-    for (int x = region.x0; x < region.x1; x += tile_size)
-      tiles.push_back({x, y, std::min(x + tile_size, region.x1), std::min(y + tile_size, region.y1)});
-  return tiles;
+std::size_t ImageTileSink::tiles_done() const { return done_.load(); }
+
+RayCounts ImageTileSink::rays() const {
+  RayCounts total;
+  for (const TileStats& s : stats_)
+    if (s.done) total += s.rays;
+  return total;
 }
 
-}  // namespace
+std::uint64_t ImageTileSink::nan_samples() const {
+  std::uint64_t total = 0;
+  for (const TileStats& s : stats_)
+    if (s.done) total += s.nan_samples;
+  return total;
+}
 
-RenderResult render_image(const RenderScene& scene, const Backend& backend, const RenderOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+PixelRegion checked_region(const RenderScene& scene, const RenderOptions& options) {
   const int width = scene.camera.width, height = scene.camera.height;
   const PixelRegion region = options.region.value_or(PixelRegion{0, 0, width, height});
   if (region.x0 < 0 || region.y0 < 0 || region.x1 > width || region.y1 > height || region.width() <= 0 ||
@@ -85,36 +64,27 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
                      std::to_string(region.x1) + "," + std::to_string(region.y1) + " is empty or outside the " +
                      std::to_string(width) + "x" + std::to_string(height) + " image");
   if (options.tile_size <= 0) throw InputError("tile size must be positive");
+  return region;
+}
 
-  const Camera camera(scene.camera, width, height);
-  const StratifiedSampler sampler(scene.render.spp, scene.render.seed);
-  Film film(width, height, options.aovs);
-  const std::vector<PixelRegion> tiles = make_tiles(region, options.tile_size);
-  std::vector<TileStats> tile_stats(tiles.size());
-  std::vector<char> tile_done(tiles.size(), 0);
-  std::atomic<std::size_t> done{0};
-
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
-    set_tracing_fp_mode();
-    for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return;
-      render_tile(scene, backend, camera, sampler, tiles[i], film, tile_stats[i]);
-      tile_done[i] = 1;
-      const std::size_t finished = done.fetch_add(1) + 1;
-      if (options.on_tile_done) options.on_tile_done(finished, tiles.size());
-    }
-  });
+RenderResult render_image(const RenderScene& scene, const Backend& backend, const RenderOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const TileGrid grid(checked_region(scene, options), options.tile_size);
+  const FilmLayout layout(options.aovs);
+  const TileRenderer renderer(scene, backend, layout);
 
   RenderResult result;
-  result.tiles_total = tiles.size();
-  // Summed in tile order so the totals never depend on scheduling.
-  for (std::size_t i = 0; i < tiles.size(); ++i) {
-    if (!tile_done[i]) continue;
-    ++result.tiles_done;
-    result.rays += tile_stats[i].rays;
-    result.nan_samples += tile_stats[i].nan_samples;
-  }
-  result.image = std::move(film.image());
+  result.image = Image(scene.camera.width, scene.camera.height, layout.channels());
+  result.tiles_total = grid.count();
+  AllTilesSource source(grid.count(), options.cancel);
+  ImageTileSink sink(result.image, grid.count());
+  if (options.on_tile_done)
+    sink.on_tile_done = [&](std::size_t done) { options.on_tile_done(done, grid.count()); };
+  render_tiles(renderer, grid, source, sink);
+
+  result.tiles_done = sink.tiles_done();
+  result.rays = sink.rays();
+  result.nan_samples = sink.nan_samples();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

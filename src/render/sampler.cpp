@@ -14,19 +14,81 @@ int perfect_square_root(int spp) {
   return n * n == spp ? n : 0;
 }
 
+std::uint32_t permutation_element(std::uint32_t index, std::uint32_t count, std::uint32_t key) {
+  if (count <= 1) return 0;
+  // The smallest all-ones mask covering count − 1: the hash permutes [0, mask] and walks the
+  // cycle until it lands inside [0, count).
+  std::uint32_t mask = count - 1;
+  mask |= mask >> 1;
+  mask |= mask >> 2;
+  mask |= mask >> 4;
+  mask |= mask >> 8;
+  mask |= mask >> 16;
+  std::uint32_t i = index;
+  do {
+    i ^= key;
+    i *= 0xe170893du;
+    i ^= key >> 16;
+    i ^= (i & mask) >> 4;
+    i ^= key >> 8;
+    i *= 0x0929eb3fu;
+    i ^= key >> 23;
+    i ^= (i & mask) >> 1;
+    i *= 1u | key >> 27;
+    i *= 0x6935fa69u;
+    i ^= (i & mask) >> 11;
+    i *= 0x74dcb303u;
+    i ^= (i & mask) >> 2;
+    i *= 0x9e501cc3u;
+    i ^= (i & mask) >> 2;
+    i *= 0xc860a3dfu;
+    i &= mask;
+    i ^= i >> 5;
+  } while (i >= count);
+  return (i + key) % count;
+}
+
 StratifiedSampler::StratifiedSampler(int spp, std::uint64_t seed) : strata_(perfect_square_root(spp)), seed_(seed) {
   if (strata_ == 0) throw InputError("samples per pixel must be a perfect square n×n, got " + std::to_string(spp));
   inv_strata_ = 1.0f / static_cast<float>(strata_);
 }
 
-PixelOffset StratifiedSampler::sample(std::uint64_t pixel_key, int sample_index) const {
-  const std::uint64_t bits = hash_combine(hash_combine(seed_, pixel_key), static_cast<std::uint64_t>(sample_index));
+std::uint64_t StratifiedSampler::sample_bits(std::uint64_t pixel_key, int sample_index) const {
+  return hash_combine(hash_combine(seed_, pixel_key), static_cast<std::uint64_t>(sample_index));
+}
+
+PixelOffset StratifiedSampler::pixel_offset(std::uint64_t pixel_key, int sample_index) const {
+  const std::uint64_t bits = sample_bits(pixel_key, sample_index);
   const float jitter_x = to_unit_float(bits);
   const float jitter_y = to_unit_float(bits << 24);
   const int sx = sample_index % strata_;
   const int sy = sample_index / strata_;
   // (s + jitter) / n stays below 1 because jitter <= 1 − 2⁻²⁴.
   return {(static_cast<float>(sx) + jitter_x) * inv_strata_, (static_cast<float>(sy) + jitter_y) * inv_strata_};
+}
+
+Sample2D StratifiedSampler::sample_2d(std::uint64_t pixel_key, int sample_index, int dimension) const {
+  const std::uint64_t pixel_dimension = hash_combine(hash_combine(seed_, pixel_key), 0x5eed0000ull + dimension);
+  const auto count = static_cast<std::uint32_t>(strata_ * strata_);
+  const std::uint32_t stratum =
+      permutation_element(static_cast<std::uint32_t>(sample_index), count, static_cast<std::uint32_t>(pixel_dimension));
+  const std::uint64_t bits = hash_combine(pixel_dimension, static_cast<std::uint64_t>(sample_index));
+  const float jitter_x = to_unit_float(bits);
+  const float jitter_y = to_unit_float(bits << 24);
+  const auto sx = static_cast<int>(stratum % static_cast<std::uint32_t>(strata_));
+  const auto sy = static_cast<int>(stratum / static_cast<std::uint32_t>(strata_));
+  return {(static_cast<float>(sx) + jitter_x) * inv_strata_, (static_cast<float>(sy) + jitter_y) * inv_strata_};
+}
+
+float StratifiedSampler::sample_1d(std::uint64_t pixel_key, int sample_index, int dimension) const {
+  const std::uint64_t pixel_dimension = hash_combine(hash_combine(seed_, pixel_key), 0x5eed0000ull + dimension);
+  const auto count = static_cast<std::uint32_t>(strata_ * strata_);
+  const std::uint32_t stratum =
+      permutation_element(static_cast<std::uint32_t>(sample_index), count, static_cast<std::uint32_t>(pixel_dimension));
+  const float jitter = to_unit_float(hash_combine(pixel_dimension, static_cast<std::uint64_t>(sample_index)));
+  // (s + jitter) / count < 1: jitter <= 1 − 2⁻²⁴ and the float product rounds at most to 1 − 2⁻²⁴.
+  const float value = (static_cast<float>(stratum) + jitter) / static_cast<float>(count);
+  return value < 1.0f ? value : 0x1.fffffep-1f;
 }
 
 }  // namespace rtpro

@@ -2,7 +2,6 @@
 
 #include "rtpro/render/light_sample.h"
 #include "rtpro/render/ray_offset.h"
-#include "rtpro/render/surface.h"
 
 #include <cmath>
 
@@ -10,60 +9,95 @@ namespace rtpro {
 
 namespace {
 
-// Light reflected directly towards the viewer at one surface point (no mirror term).
-Color direct_light(const RenderScene& scene, const Backend& backend, const SurfacePoint& sp, const Material& m,
-                   const Vec3& mirror_direction, RayCounts& counts) {
-  Color result = m.color * scene.render.ambient;
-  for (const LightDesc& light : scene.lights) {
-    const LightSample ls = sample_light(light, sp.position);
-    const float n_dot_l = dot(sp.shading_normal, ls.direction);
-    // Lights behind the surface (by either normal) contribute nothing and need no shadow ray.
-    if (n_dot_l <= 0.0f || dot(sp.geometric_normal, ls.direction) <= 0.0f) continue;
-    const Ray shadow = std::isinf(ls.distance) ? spawn_ray(sp, ls.direction)
-                                               : spawn_ray_to(sp, sp.position + ls.direction * ls.distance);
-    ++counts.shadow;
-    if (backend.occluded(shadow)) continue;
-    result += m.color * ls.radiance * n_dot_l;
-    const float r_dot_l = dot(mirror_direction, ls.direction);
-    if (r_dot_l > 0.0f && m.specular > 0.0f) result += ls.radiance * (m.specular * std::pow(r_dot_l, m.shininess));
+using Workspace = ShadingWorkspace;
+
+// Reads the hits of one generation: misses see the background, hits become shaded surfaces with
+// their shadow rays queued (lights behind the surface, by either normal, need none).
+void gather_surfaces(const RenderScene& scene, const Workspace::Generation& generation, int depth,
+                     std::span<SampleResult> results, Workspace& ws) {
+  ws.surfaces.clear();
+  ws.shadow_queries.clear();
+  ws.shadow_rays.clear();
+  for (std::uint32_t i = 0; i < generation.tasks.size(); ++i) {
+    const Workspace::RayTask& task = generation.tasks[i];
+    const Hit& hit = ws.hits[i];
+    if (!hit.valid()) {
+      results[task.sample].radiance += task.weight * scene.render.background;
+      continue;
+    }
+    const Ray& ray = generation.rays[i];
+    Workspace::ShadedSurface& s = ws.surfaces.emplace_back();
+    s.task = i;
+    s.point = make_surface(scene, ray, hit);
+    s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
+    const Material& m = scene.materials[s.point.material];
+    if (depth == 0)
+      results[task.sample].primary = {true, m.color, s.point.shading_normal, hit.t * length(ray.dir), s.point.object_id};
+
+    s.first_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
+    for (const Light& light : scene.lights) {
+      const LightSample ls = sample_light(light, s.point.position);
+      const float n_dot_l = dot(s.point.shading_normal, ls.direction);
+      if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) continue;
+      ws.shadow_rays.push_back(std::isinf(ls.distance) ? spawn_ray(s.point, ls.direction)
+                                                       : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
+      ws.shadow_queries.push_back({ls.radiance, n_dot_l, dot(s.mirror, ls.direction)});
+    }
+    s.end_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
   }
-  return result;
+}
+
+// Adds each surface's direct light (ambient, then each unshadowed light in scene order) to its
+// sample and queues the reflection rays of the next generation.
+void light_surfaces(const RenderScene& scene, const Workspace::Generation& generation, int depth,
+                    std::span<SampleResult> results, Workspace& ws) {
+  ws.next.clear();
+  for (const Workspace::ShadedSurface& s : ws.surfaces) {
+    const Workspace::RayTask& task = generation.tasks[s.task];
+    const Material& m = scene.materials[s.point.material];
+    Color direct = m.color * scene.render.ambient;
+    for (std::uint32_t q = s.first_shadow; q < s.end_shadow; ++q) {
+      if (ws.occluded[q]) continue;
+      const Workspace::ShadowQuery& light = ws.shadow_queries[q];
+      direct += m.color * light.radiance * light.n_dot_l;
+      if (light.r_dot_l > 0.0f && m.specular > 0.0f)
+        direct += light.radiance * (m.specular * std::pow(light.r_dot_l, m.shininess));
+    }
+    results[task.sample].radiance += task.weight * direct;
+
+    // A shading normal can tilt the mirror direction below the surface: nothing to reflect then.
+    if (depth >= scene.render.max_depth || m.reflectivity <= 0.0f || dot(s.mirror, s.point.geometric_normal) <= 0.0f)
+      continue;
+    ws.next.tasks.push_back({task.sample, task.weight * m.reflectivity});
+    ws.next.rays.push_back(spawn_ray(s.point, s.mirror));
+  }
 }
 
 }  // namespace
 
-Color trace_radiance(const RenderScene& scene, const Backend& backend, const Ray& camera_ray, RayCounts& counts,
-                     PrimaryHit* primary) {
-  Hit hit;
-  const bool found = backend.intersect(camera_ray, hit);
-  return trace_radiance_from(scene, backend, camera_ray, found, hit, counts, primary);
-}
-
-Color trace_radiance_from(const RenderScene& scene, const Backend& backend, const Ray& camera_ray,
-                          bool camera_hit_found, const Hit& camera_hit, RayCounts& counts, PrimaryHit* primary) {
-  Color result(0.0f);
-  Color weight(1.0f);
-  Ray ray = camera_ray;
-  for (int depth = 0;; ++depth) {
-    Hit hit = camera_hit;
-    ++(depth == 0 ? counts.camera : counts.reflection);
-    const bool found = depth == 0 ? camera_hit_found : backend.intersect(ray, hit);
-    if (!found) {
-      result += weight * scene.render.background;
-      break;
-    }
-    const SurfacePoint sp = make_surface(scene, ray, hit);
-    const Material& m = scene.materials[sp.material];
-    const Vec3 mirror = reflect(normalize(ray.dir), sp.shading_normal);
-    if (depth == 0 && primary) *primary = {true, m.color, sp.shading_normal, hit.t * length(ray.dir), sp.object_id};
-
-    result += weight * direct_light(scene, backend, sp, m, mirror, counts);
-    // A shading normal can tilt the mirror direction below the surface: nothing to reflect then.
-    if (depth >= scene.render.max_depth || m.reflectivity <= 0.0f || dot(mirror, sp.geometric_normal) <= 0.0f) break;
-    weight = weight * m.reflectivity;
-    ray = spawn_ray(sp, mirror);
+void shade_batch(const RenderScene& scene, const Backend& backend, std::span<const Ray> camera_rays,
+                 std::span<SampleResult> results, RayCounts& counts, ShadingWorkspace& ws) {
+  ws.current.clear();
+  for (std::uint32_t i = 0; i < camera_rays.size(); ++i) {
+    results[i] = SampleResult{};
+    ws.current.tasks.push_back({i, Color(1.0f)});
   }
-  return result;
+  ws.current.rays.assign(camera_rays.begin(), camera_rays.end());
+  counts.camera += camera_rays.size();
+
+  for (int depth = 0; !ws.current.rays.empty(); ++depth) {
+    ws.hits.resize(ws.current.rays.size());
+    backend.intersect(ws.current.rays, ws.hits, depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
+    gather_surfaces(scene, ws.current, depth, results, ws);
+
+    ws.occluded.resize(ws.shadow_rays.size());
+    backend.occluded(ws.shadow_rays, ws.occluded, RayCoherence::kIncoherent);
+    counts.shadow += ws.shadow_rays.size();
+
+    light_surfaces(scene, ws.current, depth, results, ws);
+    counts.reflection += ws.next.rays.size();
+    std::swap(ws.current, ws.next);
+  }
 }
 
 }  // namespace rtpro

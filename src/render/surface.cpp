@@ -1,5 +1,7 @@
 #include "rtpro/render/surface.h"
 
+#include "rtpro/core/error.h"
+
 #include <cmath>
 
 namespace rtpro {
@@ -45,9 +47,14 @@ LocalSurface triangle_surface(const TriangleMesh& mesh, std::uint32_t prim, floa
 
 LocalSurface local_surface(const Group& group, const Hit& hit, const Ray& local_ray) {
   const Geometry& geometry = group.geometries[hit.geom_id];
-  if (kind_of(geometry) == GeometryKind::kSpheres)
-    return sphere_surface(std::get<SphereSet>(geometry).spheres[hit.prim_id], local_ray, hit.t);
-  return triangle_surface(std::get<TriangleMesh>(geometry), hit.prim_id, hit.u, hit.v);
+  switch (kind_of(geometry)) {
+    case GeometryKind::kSpheres:
+      return sphere_surface(std::get<SphereSet>(geometry).spheres[hit.prim_id], local_ray, hit.t);
+    case GeometryKind::kTriangles: return triangle_surface(std::get<TriangleMesh>(geometry), hit.prim_id, hit.u, hit.v);
+    case GeometryKind::kInstance: break;
+  }
+  // Backends report the primitive inside the instance, never the instance itself.
+  throw RuntimeError("hit record names an instance as its primitive");
 }
 
 Vec3 safe_normalize(const Vec3& v, const Vec3& fallback) {

@@ -16,9 +16,9 @@ class RenderSceneBuilder {
       : description_(description), report_(report) {}
 
   RenderScene build() {
-    scene_.camera = description_.camera;
+    scene_.camera = make_render_camera(description_.camera);
     scene_.render = description_.render;
-    scene_.lights = description_.lights;
+    for (const LightDesc& light : description_.lights) scene_.lights.push_back(make_light(light));
     for (const MaterialDesc& m : description_.materials) add_material(m, m.name);
 
     prototype_of_object_.assign(description_.objects.size(), std::nullopt);

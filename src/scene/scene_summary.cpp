@@ -1,5 +1,7 @@
 #include "rtpro/scene/scene_summary.h"
 
+#include "rtpro/core/overloaded.h"
+
 #include <variant>
 
 namespace rtpro {
@@ -13,19 +15,20 @@ struct GroupCounts {
 GroupCounts count_shapes(const Group& group, SceneSummary& summary, std::size_t& primitives) {
   GroupCounts counts;
   for (const Geometry& g : group.geometries) {
-    if (const auto* set = std::get_if<SphereSet>(&g)) {
-      counts.spheres += set->spheres.size();
-      summary.geometry_bytes += set->spheres.capacity() * sizeof(Sphere);
-      primitives += set->spheres.size();
-    } else if (const auto* mesh = std::get_if<TriangleMesh>(&g)) {
-      ++summary.meshes;
-      counts.triangles += mesh->triangles.size();
-      summary.vertices_stored += mesh->vertices.size();
-      summary.geometry_bytes += mesh->memory_bytes();
-      primitives += mesh->triangles.size();
-    } else {
-      ++primitives;
-    }
+    std::visit(Overloaded{[&](const SphereSet& set) {
+                            counts.spheres += set.spheres.size();
+                            summary.geometry_bytes += set.spheres.capacity() * sizeof(Sphere);
+                            primitives += set.spheres.size();
+                          },
+                          [&](const TriangleMesh& mesh) {
+                            ++summary.meshes;
+                            counts.triangles += mesh.triangles.size();
+                            summary.vertices_stored += mesh.vertices.size();
+                            summary.geometry_bytes += mesh.memory_bytes();
+                            primitives += mesh.triangles.size();
+                          },
+                          [&](const Instance&) { ++primitives; }},
+               g);
   }
   return counts;
 }
@@ -35,9 +38,10 @@ GroupCounts count_shapes(const Group& group, SceneSummary& summary, std::size_t&
 SceneSummary summarize(const RenderScene& scene) {
   SceneSummary s;
   s.materials = scene.materials.size();
-  for (const LightDesc& light : scene.lights) {
-    if (std::holds_alternative<PointLightDesc>(light)) ++s.point_lights;
-    else ++s.directional_lights;
+  for (const Light& light : scene.lights) {
+    std::visit(Overloaded{[&](const PointLight&) { ++s.point_lights; },
+                          [&](const DirectionalLight&) { ++s.directional_lights; }},
+               light);
   }
   s.prototypes = scene.prototypes.size();
 

@@ -215,32 +215,6 @@ TEST_F(EmbreeBackendTest, UntraceableRaysAreCountedMisses) {
   EXPECT_EQ(backend->stats().rejected_rays, 2 * bad.size());
 }
 
-TEST_F(EmbreeBackendTest, BatchedIntersectMatchesSingleRays) {
-  const RenderScene scene = test::random_mixed_scene(7, 500, 500, 10);
-  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
-  std::mt19937 rng(11);
-  std::vector<Ray> rays;
-  for (int i = 0; i < 1000; ++i) rays.push_back(test::random_ray(rng, 6.0f));
-  rays[17].org.x = std::numeric_limits<float>::quiet_NaN();
-  std::vector<Hit> hits(rays.size());
-  std::unique_ptr<bool[]> found(new bool[rays.size()]);
-  backend->intersect(rays, hits, std::span<bool>(found.get(), rays.size()));
-  int found_count = 0;
-  for (std::size_t i = 0; i < rays.size(); ++i) {
-    Hit single;
-    ASSERT_EQ(found[i], backend->intersect(rays[i], single)) << i;
-    if (!found[i]) continue;
-    ++found_count;
-    EXPECT_EQ(hits[i].t, single.t);
-    EXPECT_EQ(hits[i].inst_id, single.inst_id);
-    EXPECT_EQ(hits[i].geom_id, single.geom_id);
-    EXPECT_EQ(hits[i].prim_id, single.prim_id);
-  }
-  EXPECT_FALSE(found[17]);
-  EXPECT_GT(found_count, 300);
-  EXPECT_EQ(backend->stats().rejected_rays, 2u);
-}
-
 TEST_F(EmbreeBackendTest, MemoryLimitMakesTheBuildFail) {
   const RenderScene scene = test::random_mixed_scene(3, 2000, 2000, 5);
   BackendOptions options;

@@ -164,7 +164,8 @@ TEST(RenderCommand, InterruptWritesPartialImageAndKeepsExistingOutput) {
     const std::string exe = rtpro_executable().string();
     // Large enough to run for many seconds on two cores.
     execl(exe.c_str(), exe.c_str(), "render", scene.c_str(), "-o", output.c_str(), "--size", "1600x1200", "--spp",
-          "256", "--threads", "2", "--tile-size", "16", "--progress", "never", static_cast<char*>(nullptr));
+          "256", "--threads", "2", "--tile-size", "16", "--progress", "never", "--set",
+          "render.background=[0.2,0.3,0.5]", static_cast<char*>(nullptr));
     _exit(127);
   }
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));
@@ -181,9 +182,13 @@ TEST(RenderCommand, InterruptWritesPartialImageAndKeepsExistingOutput) {
   EXPECT_EQ(text, "a previous good image");
   const Image partial = read_image(dir / "out.partial.exr");
   EXPECT_EQ(partial.width, 1600);
+  // Finished tiles hold the picture (every pixel at least the sky colour); unfinished ones are 0.
   float sum = 0;
   for (float v : partial.data) sum += v;
   EXPECT_GT(sum, 0.0f);
+  float last_row = 0;
+  for (int x = 0; x < partial.width; ++x) last_row += partial.at(x, partial.height - 1, 0);
+  EXPECT_EQ(last_row, 0.0f);
 }
 
 TEST(InfoCommand, CountsMatchTheScene) {

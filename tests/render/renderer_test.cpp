@@ -1,6 +1,7 @@
 #include "rtpro/render/renderer.h"
 
 #include "rtpro/backend/backend.h"
+#include "rtpro/core/error.h"
 #include "test_scenes.h"
 
 #include <gtest/gtest.h>
@@ -13,8 +14,7 @@ namespace {
 
 RenderScene test_scene() {
   RenderScene scene = test::random_mixed_scene(21, 300, 300, 10);
-  scene.camera.width = 48;
-  scene.camera.height = 32;
+  test::set_camera(scene, 48, 32);
   scene.render.spp = 4;
   return scene;
 }

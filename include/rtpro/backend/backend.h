@@ -22,6 +22,9 @@ struct BackendStats {
 
 enum class BackendKind { kNative, kEmbree };
 
+// A hint for batches: camera rays of a tile travel together; secondary rays scatter.
+enum class RayCoherence { kCoherent, kIncoherent };
+
 struct BackendOptions {
   int threads = 0;                 // 0: all cores
   std::string embree_quality = "medium";  // low | medium | high
@@ -41,10 +44,12 @@ class Backend {
   // Whether anything lies in (ray.tnear, ray.tfar).
   virtual bool occluded(const Ray& ray) const = 0;
 
-  // Batched closest hits (e.g. a tile of camera rays); backends may override with packets.
-  virtual void intersect(std::span<const Ray> rays, std::span<Hit> hits, std::span<bool> found) const {
-    for (std::size_t i = 0; i < rays.size(); ++i) found[i] = intersect(rays[i], hits[i]);
-  }
+  // Batches: the renderer traces every ray kind in batches (a batch of camera rays, then all their
+  // shadow rays, then all reflection rays, ...), so a backend can trace a batch as it measures
+  // fastest (packets, streams, SIMD). The answers are exactly those of the single-ray calls.
+  // hits[i] is invalid (Hit::valid() false) on a miss; occluded[i] is 1 or 0.
+  virtual void intersect(std::span<const Ray> rays, std::span<Hit> hits, RayCoherence coherence) const;
+  virtual void occluded(std::span<const Ray> rays, std::span<std::uint8_t> occluded, RayCoherence coherence) const;
 
   virtual BackendStats stats() const = 0;
 };

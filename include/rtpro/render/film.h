@@ -1,9 +1,11 @@
 #pragma once
-// The film: the image's channel layout (beauty RGB plus optional AOV layers) and how one
-// pixel's samples become its stored values. Each pixel is written exactly once.
+// The film: the image's channel layout (beauty RGB plus optional AOV layers) and how one pixel's
+// samples become its stored values. Pixels are resolved into a tile's own buffer and copied into
+// the image once, so a tile can travel (to another rank, to a journal) before it lands.
 #include "rtpro/image/image.h"
 #include "rtpro/render/shading.h"
 
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,16 +30,19 @@ struct PixelAccumulator {
   void add(const Color& sample_radiance, const PrimaryHit& primary);
 };
 
-class Film {
+class FilmLayout {
  public:
-  Film(int width, int height, std::vector<Aov> aovs);
-  void set_pixel(int x, int y, const PixelAccumulator& acc, int samples);
-  Image& image() { return image_; }
+  explicit FilmLayout(std::vector<Aov> aovs);
   const std::vector<Aov>& aovs() const { return aovs_; }
+  const std::vector<std::string>& channels() const { return channels_; }
+  int channel_count() const { return static_cast<int>(channels_.size()); }
+
+  // Writes the pixel's channel_count() values to `out`.
+  void resolve(const PixelAccumulator& acc, int samples, std::span<float> out) const;
 
  private:
-  Image image_;
   std::vector<Aov> aovs_;
+  std::vector<std::string> channels_;
 };
 
 }  // namespace rtpro

@@ -1,10 +1,14 @@
 #pragma once
-// Tiled parallel rendering with oneTBB. Each tile writes its own pixels once; a pixel's value
-// depends only on the scene, the settings and the seed, never on threads, tiles or the region.
+// Tiled parallel rendering with oneTBB: workers take tiles from a TileSource, render them and hand
+// them to a TileSink. render_image is the single-process composition (every tile of the region,
+// into one image); a pixel's value depends only on the scene, the settings and the seed, never on
+// threads, tiles, the region or the order tiles are rendered in.
 #include "rtpro/backend/backend.h"
 #include "rtpro/image/image.h"
 #include "rtpro/render/film.h"
 #include "rtpro/render/shading.h"
+#include "rtpro/render/tile_renderer.h"
+#include "rtpro/render/tiles.h"
 #include "rtpro/scene/render_scene.h"
 
 #include <atomic>
@@ -16,11 +20,32 @@
 
 namespace rtpro {
 
-// Half-open pixel window [x0, x1) × [y0, y1).
-struct PixelRegion {
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  int width() const { return x1 - x0; }
-  int height() const { return y1 - y0; }
+// Workers pull tiles from `source` until it has none, render each and give it to `sink`.
+void render_tiles(const TileRenderer& renderer, const TileGrid& grid, TileSource& source, TileSink& sink);
+
+// Copies finished tiles into a full-size image and keeps each tile's statistics, so totals can be
+// summed in tile order whatever order tiles finished in.
+class ImageTileSink final : public TileSink {
+ public:
+  ImageTileSink(Image& image, std::size_t tile_count);
+  void put(TileResult&& tile) override;
+
+  // Called after each tile lands (from worker threads) with tiles done so far.
+  std::function<void(std::size_t)> on_tile_done;
+
+  std::size_t tiles_done() const;
+  RayCounts rays() const;
+  std::uint64_t nan_samples() const;
+
+ private:
+  struct TileStats {
+    bool done = false;
+    RayCounts rays;
+    std::uint64_t nan_samples = 0;
+  };
+  Image& image_;
+  std::vector<TileStats> stats_;
+  std::atomic<std::size_t> done_{0};
 };
 
 struct RenderOptions {
@@ -41,6 +66,9 @@ struct RenderResult {
   double seconds = 0.0;
   bool complete() const { return tiles_done == tiles_total; }
 };
+
+// Throws InputError for a region outside the image or a tile size below 1.
+PixelRegion checked_region(const RenderScene& scene, const RenderOptions& options);
 
 RenderResult render_image(const RenderScene& scene, const Backend& backend, const RenderOptions& options);
 

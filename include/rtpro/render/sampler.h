@@ -1,13 +1,21 @@
 #pragma once
-// Stratified (jittered n×n) pixel sampling. Every offset is a pure function of
-// (seed, pixel, sample index), so images never depend on threads, tiles or regions.
+// The one source of randomness in rendering. Every value is a pure function of
+// (seed, pixel, sample index, dimension), so images never depend on threads, tiles, regions,
+// ranks or resumes. Dimensions come in 2D pairs (render/sample_dimensions.h says who uses which).
+//
+// Stratified: the n×n samples of a pixel (spp = n²) fall one per stratum of the pixel, in sample
+// order (sample s takes stratum (s mod n, s div n)). Every later dimension pair is stratified over
+// the same n×n grid, but visits its strata in an order of its own — a pseudo-random permutation
+// per pixel and dimension — so that, e.g., the lens position is not correlated with the position
+// in the pixel (pbrt's padded stratified sampling).
 #include <cstdint>
 
 namespace rtpro {
 
-struct PixelOffset {
-  float x, y;  // in [0, 1) within the pixel
+struct Sample2D {
+  float x, y;  // each in [0, 1)
 };
+using PixelOffset = Sample2D;
 
 class StratifiedSampler {
  public:
@@ -16,10 +24,20 @@ class StratifiedSampler {
 
   int samples_per_pixel() const { return strata_ * strata_; }
   int strata_per_axis() const { return strata_; }
-  // `pixel_key` identifies the pixel in the full image (y·width + x).
-  PixelOffset sample(std::uint64_t pixel_key, int sample_index) const;
+
+  // `pixel_key` identifies the pixel in the full image (y·width + x). Dimensions 0–1.
+  PixelOffset pixel_offset(std::uint64_t pixel_key, int sample_index) const;
+
+  // The 2D value of dimension pair (dimension, dimension + 1) for this sample; dimension is even
+  // and at least 2.
+  Sample2D sample_2d(std::uint64_t pixel_key, int sample_index, int dimension) const;
+
+  // A 1D value of `dimension`, stratified over spp strata in a permuted order.
+  float sample_1d(std::uint64_t pixel_key, int sample_index, int dimension) const;
 
  private:
+  std::uint64_t sample_bits(std::uint64_t pixel_key, int sample_index) const;
+
   int strata_;
   float inv_strata_;
   std::uint64_t seed_;
@@ -27,5 +45,9 @@ class StratifiedSampler {
 
 // n when spp == n·n, else 0.
 int perfect_square_root(int spp);
+
+// Element `index` of a pseudo-random permutation of [0, count) chosen by `key` (Kensler's
+// hash-based cycle walking): a bijection for every key, computed without storing the permutation.
+std::uint32_t permutation_element(std::uint32_t index, std::uint32_t count, std::uint32_t key);
 
 }  // namespace rtpro

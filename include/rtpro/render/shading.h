@@ -2,11 +2,20 @@
 // The shading model (the seed's, completed): ambient·C, then per unshadowed light
 // C⊙L·max(0,N·L) diffuse plus specular·L·max(0,R·L)^shininess Phong, then the mirror reflection
 // traced up to the maximum depth, weighted by the material's reflectivity.
+//
+// Rays are traced in batches, generation by generation: the camera rays of a batch of samples
+// together, then the shadow rays of all their hits together, then all reflection rays, and so on.
+// A sample's rays form a tree (a surface may spawn several rays; a light several shadow rays);
+// each sample's radiance sums its contributions in a fixed order — by generation, then in the order
+// its own rays were spawned — so a pixel never depends on what else shares its batch.
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/ray.h"
+#include "rtpro/render/surface.h"
 #include "rtpro/scene/render_scene.h"
 
 #include <cstdint>
+#include <span>
+#include <vector>
 
 namespace rtpro {
 
@@ -32,12 +41,54 @@ struct PrimaryHit {
   std::uint32_t object_id = 0;
 };
 
-Color trace_radiance(const RenderScene& scene, const Backend& backend, const Ray& camera_ray, RayCounts& counts,
-                     PrimaryHit* primary = nullptr);
+struct SampleResult {
+  Color radiance;
+  PrimaryHit primary;
+};
 
-// The same, for a camera ray whose closest hit was already traced (camera rays go to the backend
-// in batches); `camera_hit` is used only when `camera_hit_found`.
-Color trace_radiance_from(const RenderScene& scene, const Backend& backend, const Ray& camera_ray,
-                          bool camera_hit_found, const Hit& camera_hit, RayCounts& counts, PrimaryHit* primary);
+// The buffers one worker reuses from batch to batch (no allocation once warm).
+class ShadingWorkspace {
+ public:
+  // A ray of the current generation and the camera sample it contributes to.
+  struct RayTask {
+    std::uint32_t sample;
+    Color weight;
+  };
+  // A surface the current generation reached, waiting for its shadow rays.
+  struct ShadedSurface {
+    std::uint32_t task;
+    SurfacePoint point;
+    Vec3 mirror;                 // unit mirror direction about the shading normal
+    std::uint32_t first_shadow;  // its shadow queries are [first_shadow, end_shadow)
+    std::uint32_t end_shadow;
+  };
+  // What one light would add if its shadow ray is unoccluded.
+  struct ShadowQuery {
+    Color radiance;
+    float n_dot_l;
+    float r_dot_l;
+  };
+
+  struct Generation {
+    std::vector<RayTask> tasks;
+    std::vector<Ray> rays;
+    void clear() {
+      tasks.clear();
+      rays.clear();
+    }
+  };
+
+  Generation current, next;
+  std::vector<Hit> hits;
+  std::vector<ShadedSurface> surfaces;
+  std::vector<ShadowQuery> shadow_queries;
+  std::vector<Ray> shadow_rays;
+  std::vector<std::uint8_t> occluded;
+};
+
+// Traces and shades one batch of camera rays; results[i] receives camera_rays[i]'s radiance and
+// primary hit. Ray counts are added to `counts`.
+void shade_batch(const RenderScene& scene, const Backend& backend, std::span<const Ray> camera_rays,
+                 std::span<SampleResult> results, RayCounts& counts, ShadingWorkspace& workspace);
 
 }  // namespace rtpro

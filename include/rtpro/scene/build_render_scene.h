@@ -27,4 +27,9 @@ inline constexpr std::size_t kMaxFlattenedInstances = 10'000'000;
 
 RenderScene build_render_scene(const SceneDescription& description, SceneBuildReport* report = nullptr);
 
+// The render-time forms of the description's camera and lights (build_render_scene uses them;
+// tests that assemble a RenderScene by hand do too).
+RenderCamera make_render_camera(const CameraDesc& desc);
+Light make_light(const LightDesc& desc);
+
 }  // namespace rtpro

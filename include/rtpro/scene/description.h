@@ -5,6 +5,7 @@
 #include "rtpro/core/error.h"
 #include "rtpro/core/transform.h"
 #include "rtpro/core/vec3.h"
+#include "rtpro/scene/render_settings.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -24,14 +25,6 @@ struct CameraDesc {
   float fov_degrees = 45.0f;  // vertical field of view
   int width = 640;
   int height = 480;
-};
-
-struct RenderSettings {
-  int spp = 16;        // samples per pixel; a perfect square n×n (stratified)
-  int max_depth = 5;   // mirror bounces after the camera ray
-  std::uint64_t seed = 0;
-  float ambient = 0.2f;
-  Color background{0.0f, 0.0f, 0.0f};
 };
 
 struct MaterialDesc {

@@ -3,8 +3,10 @@
 // instances flattened to one level (top-level group → prototype groups).
 #include "rtpro/core/bbox.h"
 #include "rtpro/core/transform.h"
-#include "rtpro/scene/description.h"
+#include "rtpro/scene/light.h"
 #include "rtpro/scene/mesh.h"
+#include "rtpro/scene/render_camera.h"
+#include "rtpro/scene/render_settings.h"
 
 #include <cstdint>
 #include <span>
@@ -35,6 +37,9 @@ using Geometry = std::variant<SphereSet, TriangleMesh, Instance>;
 
 enum class GeometryKind : std::uint8_t { kSpheres = 0, kTriangles = 1, kInstance = 2 };
 inline GeometryKind kind_of(const Geometry& g) { return static_cast<GeometryKind>(g.index()); }
+// A new geometry alternative needs its GeometryKind; switches over the kind are compiled with
+// -Werror=switch, so each one that misses the new kind stops the build.
+static_assert(std::variant_size_v<Geometry> == 3, "add the new alternative to GeometryKind");
 
 struct Group {
   std::vector<Geometry> geometries;
@@ -54,11 +59,11 @@ struct Material {
 };
 
 struct RenderScene {
-  CameraDesc camera;
+  RenderCamera camera;
   RenderSettings render;
   std::vector<Material> materials;
   std::vector<std::string> material_names;
-  std::vector<LightDesc> lights;
+  std::vector<Light> lights;
   Group top;                     // may contain instances
   std::vector<Group> prototypes; // never contain instances
 

@@ -1,0 +1,41 @@
+#pragma once
+// Renders one tile: generates its camera samples, shades them in batches of whole pixels (see
+// shading.h) and resolves each pixel's samples, in sample order, into the tile's film layout.
+#include "rtpro/backend/backend.h"
+#include "rtpro/render/film.h"
+#include "rtpro/render/sampler.h"
+#include "rtpro/render/shading.h"
+#include "rtpro/render/tiles.h"
+#include "rtpro/scene/render_scene.h"
+
+#include <vector>
+
+namespace rtpro {
+
+class TileRenderer {
+ public:
+  // The buffers one worker thread reuses from tile to tile.
+  struct Workspace {
+    std::vector<Ray> camera_rays;
+    std::vector<SampleResult> samples;
+    ShadingWorkspace shading;
+  };
+
+  TileRenderer(const RenderScene& scene, const Backend& backend, const FilmLayout& layout);
+
+  TileResult render(std::size_t index, const PixelRegion& tile, Workspace& workspace) const;
+
+  const FilmLayout& layout() const { return layout_; }
+
+ private:
+  void render_pixels(const PixelRegion& tile, std::size_t first_pixel, std::size_t pixel_count, TileResult& out,
+                     Workspace& ws) const;
+
+  const RenderScene& scene_;
+  const Backend& backend_;
+  const FilmLayout& layout_;
+  StratifiedSampler sampler_;
+  std::size_t pixels_per_batch_;
+};
+
+}  // namespace rtpro

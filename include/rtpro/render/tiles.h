@@ -1,0 +1,77 @@
+#pragma once
+// Work is handed out and collected in tiles. A TileGrid numbers the tiles of a region once and for
+// all; a TileSource says which tile a worker renders next and a TileSink takes each finished tile.
+// The TBB renderer, a distributed scheduler (tiles from another rank, finished tiles sent back)
+// and a resume journal (skip tiles already done, record each as it finishes) are all a source and a
+// sink: the renderer itself only renders the tile it is given. A tile's pixels depend on nothing
+// but the scene, the settings, the seed and the tile's own region.
+#include "rtpro/render/shading.h"
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace rtpro {
+
+// Half-open pixel window [x0, x1) × [y0, y1).
+struct PixelRegion {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  int width() const { return x1 - x0; }
+  int height() const { return y1 - y0; }
+  std::size_t pixel_count() const { return static_cast<std::size_t>(width()) * static_cast<std::size_t>(height()); }
+};
+
+// Row-major tiles of `tile_size` pixels covering `region`; the last row and column may be smaller.
+class TileGrid {
+ public:
+  TileGrid(const PixelRegion& region, int tile_size);
+  std::size_t count() const { return columns_ * rows_; }
+  PixelRegion tile(std::size_t index) const;
+  const PixelRegion& region() const { return region_; }
+  int tile_size() const { return tile_size_; }
+
+ private:
+  PixelRegion region_;
+  int tile_size_;
+  std::size_t columns_, rows_;
+};
+
+// A rendered tile: its pixels in film layout (row-major, channel_count floats each) and what it cost.
+struct TileResult {
+  std::size_t index = 0;
+  PixelRegion region;
+  std::vector<float> pixels;
+  RayCounts rays;
+  std::uint64_t nan_samples = 0;  // samples that came out NaN/inf and were counted as black
+};
+
+// Called concurrently by the render workers.
+class TileSource {
+ public:
+  virtual ~TileSource() = default;
+  // The next tile index to render, or nothing when the worker should stop.
+  virtual std::optional<std::size_t> next() = 0;
+};
+
+class TileSink {
+ public:
+  virtual ~TileSink() = default;
+  virtual void put(TileResult&& tile) = 0;
+};
+
+// Every tile of a grid once, in index order; stops early when `cancel` becomes true.
+class AllTilesSource final : public TileSource {
+ public:
+  explicit AllTilesSource(std::size_t count, const std::atomic<bool>* cancel = nullptr)
+      : count_(count), cancel_(cancel) {}
+  std::optional<std::size_t> next() override;
+
+ private:
+  std::size_t count_;
+  const std::atomic<bool>* cancel_;
+  std::atomic<std::size_t> next_{0};
+};
+
+}  // namespace rtpro

@@ -1,0 +1,70 @@
+#include "rtpro/render/tile_renderer.h"
+
+#include "rtpro/render/camera.h"
+
+#include <algorithm>
+
+namespace rtpro {
+
+namespace {
+
+// Samples shaded together. Large enough for the backends to trace whole batches (streams, packets)
+// and to amortise each generation's bookkeeping, small enough that a batch's rays, hits and
+// surfaces stay in the L2 cache.
+constexpr std::size_t kSamplesPerBatch = 1024;
+
+}  // namespace
+
+TileRenderer::TileRenderer(const RenderScene& scene, const Backend& backend, const FilmLayout& layout)
+    : scene_(scene),
+      backend_(backend),
+      layout_(layout),
+      sampler_(scene.render.spp, scene.render.seed),
+      pixels_per_batch_(std::max<std::size_t>(1, kSamplesPerBatch / static_cast<std::size_t>(scene.render.spp))) {}
+
+TileResult TileRenderer::render(std::size_t index, const PixelRegion& tile, Workspace& ws) const {
+  TileResult out;
+  out.index = index;
+  out.region = tile;
+  out.pixels.resize(tile.pixel_count() * static_cast<std::size_t>(layout_.channel_count()));
+  for (std::size_t first = 0; first < tile.pixel_count(); first += pixels_per_batch_)
+    render_pixels(tile, first, std::min(pixels_per_batch_, tile.pixel_count() - first), out, ws);
+  return out;
+}
+
+// Pixels [first_pixel, first_pixel + pixel_count) of the tile, in row-major order.
+void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixel, std::size_t pixel_count,
+                                 TileResult& out, Workspace& ws) const {
+  const int spp = sampler_.samples_per_pixel();
+  const auto image_width = static_cast<std::uint64_t>(scene_.camera.width);
+  const auto tile_width = static_cast<std::size_t>(tile.width());
+  ws.camera_rays.clear();
+  for (std::size_t p = first_pixel; p < first_pixel + pixel_count; ++p) {
+    const int x = tile.x0 + static_cast<int>(p % tile_width);
+    const int y = tile.y0 + static_cast<int>(p / tile_width);
+    const std::uint64_t pixel_key = static_cast<std::uint64_t>(y) * image_width + static_cast<std::uint64_t>(x);
+    for (int s = 0; s < spp; ++s) {
+      const PixelOffset offset = sampler_.pixel_offset(pixel_key, s);
+      ws.camera_rays.push_back(
+          camera_ray(scene_.camera, static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y));
+    }
+  }
+  ws.samples.resize(ws.camera_rays.size());
+  shade_batch(scene_, backend_, ws.camera_rays, ws.samples, out.rays, ws.shading);
+
+  const auto channels = static_cast<std::size_t>(layout_.channel_count());
+  for (std::size_t p = 0; p < pixel_count; ++p) {
+    PixelAccumulator acc;
+    for (int s = 0; s < spp; ++s) {
+      SampleResult& sample = ws.samples[p * static_cast<std::size_t>(spp) + static_cast<std::size_t>(s)];
+      if (!is_finite(sample.radiance)) {
+        ++out.nan_samples;
+        sample.radiance = Color(0.0f);
+      }
+      acc.add(sample.radiance, sample.primary);
+    }
+    layout_.resolve(acc, spp, std::span<float>(out.pixels).subspan((first_pixel + p) * channels, channels));
+  }
+}
+
+}  // namespace rtpro

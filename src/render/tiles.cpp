@@ -1,0 +1,26 @@
+#include "rtpro/render/tiles.h"
+
+#include <algorithm>
+
+namespace rtpro {
+
+TileGrid::TileGrid(const PixelRegion& region, int tile_size)
+    : region_(region),
+      tile_size_(tile_size),
+      columns_(static_cast<std::size_t>((region.width() + tile_size - 1) / tile_size)),
+      rows_(static_cast<std::size_t>((region.height() + tile_size - 1) / tile_size)) {}
+
+PixelRegion TileGrid::tile(std::size_t index) const {
+  const int x0 = region_.x0 + static_cast<int>(index % columns_) * tile_size_;
+  const int y0 = region_.y0 + static_cast<int>(index / columns_) * tile_size_;
+  return {x0, y0, std::min(x0 + tile_size_, region_.x1), std::min(y0 + tile_size_, region_.y1)};
+}
+
+std::optional<std::size_t> AllTilesSource::next() {
+  if (cancel_ && cancel_->load(std::memory_order_relaxed)) return std::nullopt;
+  const std::size_t index = next_.fetch_add(1, std::memory_order_relaxed);
+  if (index >= count_) return std::nullopt;
+  return index;
+}
+
+}  // namespace rtpro
