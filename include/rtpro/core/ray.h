@@ -1,6 +1,7 @@
 #pragma once
 #include "rtpro/core/vec3.h"
 
+#include <cmath>
 #include <limits>
 
 namespace rtpro {
@@ -19,10 +20,19 @@ struct Ray {
 // Coordinates Embree handles safely: finite and far below the ~1.8e18 at which its ray validity
 // assertion fires (and beyond which its commit silently drops primitives), far beyond any scene.
 inline constexpr float kMaxTraceableMagnitude = 1e16f;
-bool within_traceable_range(const Vec3& v);
+inline bool within_traceable_range(const Vec3& v) {
+  return is_finite(v) && std::fabs(v.x) < kMaxTraceableMagnitude && std::fabs(v.y) < kMaxTraceableMagnitude &&
+         std::fabs(v.z) < kMaxTraceableMagnitude;
+}
 
 // What a backend accepts: finite origin and direction, a non-zero direction, 0 <= tnear <= tfar, and
 // magnitudes far below the range where Embree's own validity assertion aborts the process.
-bool is_traceable(const Ray& ray);
+// Inline: every ray of every backend passes through it.
+inline bool is_traceable(const Ray& ray) {
+  if (!within_traceable_range(ray.org) || !within_traceable_range(ray.dir)) return false;
+  if (ray.dir.x == 0.0f && ray.dir.y == 0.0f && ray.dir.z == 0.0f) return false;
+  if (!std::isfinite(ray.tnear) || std::isnan(ray.tfar)) return false;
+  return ray.tnear >= 0.0f && ray.tnear <= ray.tfar;
+}
 
 }  // namespace rtpro

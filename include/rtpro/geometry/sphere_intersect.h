@@ -26,6 +26,11 @@ inline bool intersect_sphere(const Vec3& center, float radius, const Vec3& org, 
   const double b = fx * dx + fy * dy + fz * dz;  // half of the usual b
   const double r = radius;
   const double c = (fx * fx + fy * fy + fz * fz) - r * r;
+  // Origin outside (c > 0) and moving away from the centre (b > 0): both roots are negative (or
+  // flush to −0), so neither lies in (tnear, tfar] with tnear >= 0. Leaving early changes no answer
+  // and skips the divisions and the square root for the most common miss: a shadow ray leaving
+  // the surface it starts on.
+  if (c > 0.0 && b > 0.0 && tnear >= 0.0f) return false;
 
   // Distance² from the centre to the line, computed without squaring large near-equal numbers.
   const double s = b / a;
