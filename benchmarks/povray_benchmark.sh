@@ -41,11 +41,11 @@ for entry in "${scenes[@]}"; do
     echo "warning: benchmarks/povray/$name.pov is not the translation of $yaml; regenerate it with scripts/yaml_to_pov.py" >&2
   for t in $threads; do
     for r in $(seq "$runs"); do
-      (cd "$out" && /usr/bin/time -f "%e %M" -o "$out/$name-povray-t$t-r$r.time" \
+      (cd "$out" && /usr/bin/time -f "%e %U %S %M" -o "$out/$name-povray-t$t-r$r.time" \
         povray "$root/benchmarks/povray/$name.ini" +I"$root/benchmarks/povray/$name.pov" +O"$name-povray.exr" \
         +WT"$t" -V >"$out/$name-povray-t$t-r$r.log" 2>&1) || echo "povray failed on $name, see $out" >&2
       for backend in embree native; do
-        /usr/bin/time -f "%e %M" -o "$out/$name-$backend-t$t-r$r.time" "$build/rtpro" render "$root/$yaml" \
+        /usr/bin/time -f "%e %U %S %M" -o "$out/$name-$backend-t$t-r$r.time" "$build/rtpro" render "$root/$yaml" \
           -o "$out/$name-$backend.exr" --size "$size" --spp "$spp" --max-depth "$depth" --backend "$backend" \
           --threads "$t" --quiet --stats-json "$out/$name-$backend-t$t-r$r.json" || echo "rtpro $backend failed on $name" >&2
       done
@@ -59,9 +59,10 @@ out, runs, threads, scenes = sys.argv[1], int(sys.argv[2]), sys.argv[3].split(),
 KINDS = ("camera", "shadow", "reflection", "total")
 
 def wall(name, who, t):
-    """Whole-process seconds and peak RSS (MiB) of each run."""
-    times = [open(f"{out}/{name}-{who}-t{t}-r{r}.time").read().split()[-2:] for r in range(1, runs + 1)]
-    return [float(s) for s, _ in times], max(int(kb) for _, kb in times) / 1024
+    """Whole-process wall seconds, CPU seconds (user + system) and peak RSS (MiB) of each run."""
+    runs_ = [open(f"{out}/{name}-{who}-t{t}-r{r}.time").read().split()[-4:] for r in range(1, runs + 1)]
+    return ([float(e) for e, _, _, _ in runs_], [float(u) + float(s) for _, u, s, _ in runs_],
+            max(int(kb) for *_, kb in runs_) / 1024)
 
 def rtpro_rays(name, backend, t, r):
     s = json.load(open(f"{out}/{name}-{backend}-t{t}-r{r}.json"))
@@ -82,29 +83,31 @@ def rates(samples):
     """Median over runs of rays of each kind per second of render, in millions."""
     return {k: statistics.median(c[k] / s / 1e6 for c, s in samples) for k in KINDS}
 
-print(f"POV-Ray 3.7 vs rtpro: whole-process wall time over {runs} interleaved runs; Mrays/s = rays of each kind"
-      " per second of render\n(rtpro: seconds.render of --stats-json; POV-Ray: its Trace Time, without parsing).\n")
+print(f"POV-Ray 3.7 vs rtpro: whole-process wall time over {runs} interleaved runs (median, min-max; cpu s: median"
+      " user + system);\nMrays/s by kind = rays of each kind per second of render (rtpro: seconds.render of"
+      " --stats-json; POV-Ray: its Trace Time).\n")
 header = (f"{'scene':13} {'thr':>3} {'renderer':13} {'median s':>9} {'min-max s':>13} {'POV/rtpro':>9}"
-          f" {'camera':>7} {'shadow':>7} {'refl':>7} {'total':>7} {'peak MiB':>8}")
+          f" {'cpu s':>7} {'POV/rt cpu':>10} {'camera':>7} {'shadow':>7} {'refl':>7} {'total':>7} {'peak MiB':>8}")
 print(header)
 print("-" * len(header))
 counts = {}
 for entry in scenes:
     name, _, size, spp, depth = entry.split("|")
     for t in threads:
-        pov_times, _ = wall(name, "povray", t)
-        pov_median = statistics.median(pov_times)
+        pov_times, pov_cpu, _ = wall(name, "povray", t)
+        pov_median, pov_cpu_median = statistics.median(pov_times), statistics.median(pov_cpu)
         for who in ("povray", "embree", "native"):
-            times, peak = wall(name, who, t)
+            times, cpu, peak = wall(name, who, t)
             samples = ([povray_rays(name, t, r) for r in range(1, runs + 1)] if who == "povray" else
                        [rtpro_rays(name, who, t, r) for r in range(1, runs + 1)])
             counts.setdefault(name, {})[who] = samples[0][0]
             median = statistics.median(times)
             ratio = "" if who == "povray" else f"{pov_median / median:8.2f}x"
+            cpu_ratio = "" if who == "povray" else f"{pov_cpu_median / statistics.median(cpu):6.2f}x"
             m = rates(samples)
             label = "povray" if who == "povray" else f"rtpro {who}"
             print(f"{name:13} {t:>3} {label:13} {median:9.2f} {min(times):6.2f}-{max(times):<6.2f} {ratio:>9}"
-                  f" {m['camera']:7.2f} {m['shadow']:7.2f} {m['reflection']:7.2f} {m['total']:7.2f} {peak:8.0f}")
+                  f" {statistics.median(cpu):7.2f} {cpu_ratio:>10} {m['camera']:7.2f} {m['shadow']:7.2f} {m['reflection']:7.2f} {m['total']:7.2f} {peak:8.0f}")
     print(f"{'':13} rays per image (millions), povray / rtpro: " + ", ".join(
         f"{k} {counts[name]['povray'][k] / 1e6:.2f} / {counts[name]['embree'][k] / 1e6:.2f}" for k in KINDS))
     print(f"{'':13} ({size}, {spp} spp, max depth {depth})")
