@@ -3,12 +3,9 @@
 #include "native_backend.h"
 
 #include "bvh.h"
-#include "wide_bvh.h"
 #include "ray_gate.h"
 #include "rtpro/geometry/sphere_intersect.h"
 #include "rtpro/geometry/triangle_intersect.h"
-
-#include <immintrin.h>
 
 #include <atomic>
 #include <chrono>
@@ -19,53 +16,43 @@ namespace rtpro {
 
 namespace {
 
-// A ray prepared for the four-wide slab test: origin and reciprocal direction broadcast, and per
-// axis which stored bound (lower or upper) is the near one.
-struct RaySlabs {
-  __m128 org[3];
-  __m128 inv_dir[3];
-  int near_bound[3];  // 0: lower bound is entered first (direction >= 0); 1: upper
-
-  explicit RaySlabs(const Ray& ray) {
-    for (int a = 0; a < 3; ++a) {
-      const float inv = 1.0f / ray.dir[a];
-      org[a] = _mm_set1_ps(ray.org[a]);
-      inv_dir[a] = _mm_set1_ps(inv);
-      near_bound[a] = inv < 0.0f ? 1 : 0;
-    }
-  }
+// Precomputed per-ray data for the slab test.
+struct RayBoxData {
+  Vec3 inv_dir;
+  int dir_negative[3];
 };
 
-// The slab test of four boxes at once: a bit per child whose box the ray enters within
-// [tnear, tmax], and each child's entry distance. The far distance is enlarged by 2·gamma(3)
-// (pbrt) so float rounding never culls a box that the ray actually touches; a 0·∞ NaN (ray in a
-// box's face plane, parallel to it) is ignored by the operand order of min/max.
-inline int enter_children(const WideBvhNode& node, const RaySlabs& r, float tnear, float tmax, __m128& entry) {
+RayBoxData prepare(const Ray& ray) {
+  RayBoxData d;
+  d.inv_dir = {1.0f / ray.dir.x, 1.0f / ray.dir.y, 1.0f / ray.dir.z};
+  for (int a = 0; a < 3; ++a) d.dir_negative[a] = d.inv_dir[a] < 0.0f;
+  return d;
+}
+
+// Slab test; NaNs from 0·∞ are ignored by the comparison order. The far distance is enlarged by
+// 2·gamma(3) (pbrt) so float rounding never culls a box that the ray actually touches.
+bool hits_box(const BBox& box, const Ray& ray, const RayBoxData& d, float tmax) {
   constexpr float kRoundingSlack = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
-  __m128 t0 = _mm_set1_ps(tnear);
-  __m128 t1 = _mm_set1_ps(tmax);
-  const __m128 slack = _mm_set1_ps(kRoundingSlack);
+  float t0 = ray.tnear, t1 = tmax;
   for (int a = 0; a < 3; ++a) {
-    const __m128 near_plane = _mm_load_ps(node.bounds[a][r.near_bound[a]]);
-    const __m128 far_plane = _mm_load_ps(node.bounds[a][1 - r.near_bound[a]]);
-    const __m128 tn = _mm_mul_ps(_mm_sub_ps(near_plane, r.org[a]), r.inv_dir[a]);
-    const __m128 tf = _mm_mul_ps(_mm_mul_ps(_mm_sub_ps(far_plane, r.org[a]), r.inv_dir[a]), slack);
-    t0 = _mm_max_ps(tn, t0);
-    t1 = _mm_min_ps(tf, t1);
+    float tn = (box.lower[a] - ray.org[a]) * d.inv_dir[a];
+    float tf = (box.upper[a] - ray.org[a]) * d.inv_dir[a];
+    if (tn > tf) std::swap(tn, tf);
+    tf *= kRoundingSlack;
+    t0 = tn > t0 ? tn : t0;
+    t1 = tf < t1 ? tf : t1;
+    if (t0 > t1) return false;
   }
-  entry = t0;
-  return _mm_movemask_ps(_mm_cmple_ps(t0, t1));
+  return true;
 }
 
 class NativeBackend final : public Backend {
  public:
   NativeBackend(const RenderScene& scene) : scene_(scene) {
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<BBox> prototype_bounds = scene.prototype_bounds();
-    top_bvh_ = make_wide_bvh(build_bvh(scene.top, prototype_bounds), scene.top, prototype_bounds);
+    top_bvh_ = build_bvh(scene.top, scene.prototype_bounds());
     prototype_bvhs_.reserve(scene.prototypes.size());
-    for (const Group& prototype : scene.prototypes)
-      prototype_bvhs_.push_back(make_wide_bvh(build_bvh(prototype, {}), prototype, {}));
+    for (const Group& prototype : scene.prototypes) prototype_bvhs_.push_back(build_bvh(prototype, {}));
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
@@ -93,7 +80,7 @@ class NativeBackend final : public Backend {
     BackendStats s;
     s.build_seconds = build_seconds_;
     s.acceleration_bytes = top_bvh_.memory_bytes();
-    for (const WideBvh& bvh : prototype_bvhs_) s.acceleration_bytes += bvh.memory_bytes();
+    for (const Bvh& bvh : prototype_bvhs_) s.acceleration_bytes += bvh.memory_bytes();
     s.rejected_rays = gate_.rejected();
     return s;
   }
@@ -105,47 +92,31 @@ class NativeBackend final : public Backend {
             instance.world_to_object.apply_vector(ray.dir), tfar};
   }
 
-  // Visits every primitive whose box the ray enters within (tnear, tmax], nearer subtrees first;
-  // `visit(ref)` returns false to stop early. `tmax` is re-read as it shrinks.
+  // Visits every leaf reference whose node box the ray enters, nearest child first;
+  // `visit(ref, tmax)` returns false to stop early. `tmax` is re-read after each leaf.
   template <typename Visit>
-  static void traverse(const WideBvh& bvh, const Ray& ray, const float& tmax, Visit&& visit) {
-    constexpr float kRoundingSlack = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
+  static void traverse(const Bvh& bvh, const Ray& ray, const float& tmax, Visit&& visit) {
     if (bvh.nodes.empty()) return;
-    const RaySlabs slabs(ray);
-    struct Pending {
-      std::uint32_t node;
-      float entry;  // where the ray enters its box, rounded down at most by the slack
-    };
-    // Each level pushes at most three siblings; the binary tree is at most kBvhMaxDepth deep
-    // plus the levels that split its leaves.
-    Pending stack[3 * (kBvhMaxDepth + 8) + 1];
+    const RayBoxData box_data = prepare(ray);
+    std::uint32_t stack[kBvhMaxDepth + 1];
     int top = 0;
-    stack[top++] = {0, ray.tnear};
-    while (top > 0) {
-      const Pending pending = stack[--top];
-      if (pending.entry > tmax * kRoundingSlack) continue;
-      const WideBvhNode& node = bvh.nodes[pending.node];
-      __m128 entry_vector;
-      int mask = enter_children(node, slabs, ray.tnear, tmax, entry_vector);
-      alignas(16) float entry[4];
-      _mm_store_ps(entry, entry_vector);
-      const int first_pushed = top;
-      while (mask != 0) {
-        const int c = __builtin_ctz(static_cast<unsigned>(mask));
-        mask &= mask - 1;
-        const std::uint32_t child = node.child[c];
-        if (child & WideBvhNode::kLeafBit) {
-          if (!visit(bvh.refs[child & ~WideBvhNode::kLeafBit])) return;
+    std::uint32_t node_index = 0;
+    for (;;) {
+      const BvhNode& node = bvh.nodes[node_index];
+      if (hits_box(node.bounds, ray, box_data, tmax)) {
+        if (node.is_leaf()) {
+          for (std::uint32_t i = 0; i < node.count; ++i)
+            if (!visit(bvh.refs[node.index + i])) return;
+        } else {
+          // Descend into the child on the ray's near side first.
+          const std::uint32_t near_child = node.index + box_data.dir_negative[node.axis];
+          stack[top++] = node.index + 1 - box_data.dir_negative[node.axis];
+          node_index = near_child;
           continue;
         }
-        // Keep this node's pushed children sorted far to near, so the nearest is popped first.
-        int k = top++;
-        while (k > first_pushed && stack[k - 1].entry < entry[c]) {
-          stack[k] = stack[k - 1];
-          --k;
-        }
-        stack[k] = {child, entry[c]};
       }
+      if (top == 0) return;
+      node_index = stack[--top];
     }
   }
 
@@ -161,7 +132,7 @@ class NativeBackend final : public Backend {
     best.prim_id = ref.prim;
   }
 
-  void closest_in_group(const Group& group, const WideBvh& bvh, const Ray& ray, std::uint32_t inst, Hit& best,
+  void closest_in_group(const Group& group, const Bvh& bvh, const Ray& ray, std::uint32_t inst, Hit& best,
                         float& best_t) const {
     traverse(bvh, ray, best_t, [&](const PrimitiveRef& ref) {
       const Geometry& geometry = group.geometries[ref.geom];
@@ -195,7 +166,7 @@ class NativeBackend final : public Backend {
     });
   }
 
-  bool any_in_group(const Group& group, const WideBvh& bvh, const Ray& ray) const {
+  bool any_in_group(const Group& group, const Bvh& bvh, const Ray& ray) const {
     bool found = false;
     const float tfar = ray.tfar;
     traverse(bvh, ray, tfar, [&](const PrimitiveRef& ref) {
@@ -230,8 +201,8 @@ class NativeBackend final : public Backend {
   }
 
   const RenderScene& scene_;
-  WideBvh top_bvh_;
-  std::vector<WideBvh> prototype_bvhs_;
+  Bvh top_bvh_;
+  std::vector<Bvh> prototype_bvhs_;
   double build_seconds_ = 0.0;
   RayGate gate_;
 };
