@@ -11,11 +11,7 @@
 # rtpro modules are passed through as ordinary targets.
 function(rtpro_add_module name)
   cmake_parse_arguments(ARG "" "" "DEPENDS;PRIVATE_DEPENDS;EXTRA_SOURCES;EXCLUDE" ${ARGN})
-  set(root ${CMAKE_BINARY_DIR}/module_include/${name})
-  file(MAKE_DIRECTORY ${root}/rtpro)
-  if(NOT EXISTS ${root}/rtpro/${name} AND EXISTS ${CMAKE_SOURCE_DIR}/include/rtpro/${name})
-    file(CREATE_LINK ${CMAKE_SOURCE_DIR}/include/rtpro/${name} ${root}/rtpro/${name} SYMBOLIC)
-  endif()
+  rtpro_module_include_root(${name} root)
 
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/${name}/*.cpp)
   foreach(excluded IN LISTS ARG_EXCLUDE)
@@ -52,4 +48,16 @@ function(rtpro_add_module name)
       target_link_libraries(${target} PRIVATE ${dep})
     endif()
   endforeach()
+endfunction()
+
+# rtpro_module_include_root(NAME OUT_VAR): the include root that holds just rtpro/NAME, for the
+# module's library and for any other library that stands in for part of it (see
+# RtproImageLayer.cmake).
+function(rtpro_module_include_root name out_var)
+  set(root ${CMAKE_BINARY_DIR}/module_include/${name})
+  file(MAKE_DIRECTORY ${root}/rtpro)
+  if(NOT EXISTS ${root}/rtpro/${name} AND EXISTS ${CMAKE_SOURCE_DIR}/include/rtpro/${name})
+    file(CREATE_LINK ${CMAKE_SOURCE_DIR}/include/rtpro/${name} ${root}/rtpro/${name} SYMBOLIC)
+  endif()
+  set(${out_var} ${root} PARENT_SCOPE)
 endfunction()

@@ -2,11 +2,14 @@
 // runs the chosen action and maps rtpro's error kinds to exit codes.
 #include "command.h"
 #include "rtpro/core/error.h"
+#include "rtpro/image/image_layer.h"
 
 #include <embree3/rtcore_config.h>
 #include <OpenColorIO/OpenColorIO.h>
 #include <OpenImageIO/oiioversion.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
@@ -15,6 +18,24 @@ namespace {
 std::string version_text() {
   return std::string("rtpro ") + RTPRO_VERSION + " (Embree " + RTC_VERSION_STRING + ", OpenImageIO " +
          OIIO_VERSION_STRING + ", OpenColorIO " + OCIO_NAMESPACE::GetVersion() + ")";
+}
+
+int run(const rtpro::cli::Action& action) {
+  try {
+    return action ? action() : rtpro::kExitInputError;
+  } catch (const rtpro::InputError& e) {
+    std::cerr << "rtpro: error: " << e.what() << "\n";
+    return rtpro::kExitInputError;
+  } catch (const rtpro::RuntimeError& e) {
+    std::cerr << "rtpro: error: " << e.what() << "\n";
+    return rtpro::kExitRuntimeFailure;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "rtpro: error: out of memory\n";
+    return rtpro::kExitRuntimeFailure;
+  } catch (const std::exception& e) {
+    std::cerr << "rtpro: error: " << e.what() << "\n";
+    return rtpro::kExitRuntimeFailure;
+  }
 }
 
 }  // namespace
@@ -39,19 +60,13 @@ int main(int argc, char** argv) {
     return code == 0 ? rtpro::kExitOk : rtpro::kExitInputError;
   }
 
-  try {
-    return action ? action() : rtpro::kExitInputError;
-  } catch (const rtpro::InputError& e) {
-    std::cerr << "rtpro: error: " << e.what() << "\n";
-    return rtpro::kExitInputError;
-  } catch (const rtpro::RuntimeError& e) {
-    std::cerr << "rtpro: error: " << e.what() << "\n";
-    return rtpro::kExitRuntimeFailure;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "rtpro: error: out of memory\n";
-    return rtpro::kExitRuntimeFailure;
-  } catch (const std::exception& e) {
-    std::cerr << "rtpro: error: " << e.what() << "\n";
-    return rtpro::kExitRuntimeFailure;
+  const int code = run(action);
+  // A render that failed early may still be loading the image layer in the background; exit()
+  // would wait for that load (about half a second) before the error reaches the user.
+  if (rtpro::image_layer_loading()) {
+    std::cout.flush();
+    std::fflush(nullptr);
+    std::_Exit(code);
   }
+  return code;
 }

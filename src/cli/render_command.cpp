@@ -8,15 +8,18 @@
 #include "rtpro/core/error.h"
 #include "rtpro/image/color_config.h"
 #include "rtpro/image/image_io.h"
+#include "rtpro/image/image_layer.h"
 #include "rtpro/image/output_check.h"
 #include "rtpro/render/renderer.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
 
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -135,6 +138,22 @@ void write_text_file(const std::filesystem::path& file, const std::string& text)
   }
 }
 
+// Has TBB load what it loads on first use (tbbmalloc, irml) and start its worker threads before
+// the image layer loads in the background: while a dlopen maps and relocates libraries, glibc
+// holds a lock that another dlopen and every new thread wait for, so a worker started later would
+// hold the render back until OpenImageIO is loaded. Waits at most 50 ms for the workers.
+void start_tbb_workers(int threads) {
+  std::atomic<int> arrived{0};
+  const auto give_up = Clock::now() + std::chrono::milliseconds(50);
+  tbb::parallel_for(
+      0, threads,
+      [&](int) {
+        ++arrived;
+        while (arrived.load() < threads && Clock::now() < give_up) std::this_thread::yield();
+      },
+      tbb::static_partitioner());
+}
+
 int run_render(const RenderCommandOptions& o) {
   const auto start = Clock::now();
   Log log(o.quiet ? LogLevel::kQuiet : (o.verbose > 0 ? LogLevel::kVerbose : LogLevel::kNormal));
@@ -163,6 +182,10 @@ int run_render(const RenderCommandOptions& o) {
 
   // Must exist before any TBB or Embree work so the cap really holds.
   tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+
+  // OpenImageIO takes about half a second to load: do it while the scene loads and renders.
+  start_tbb_workers(threads);
+  start_loading_image_layer();
 
   const SceneDescription description = parse_with_overrides(o.scene, scene_overrides(o));
   SceneBuildReport report;

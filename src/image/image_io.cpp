@@ -2,6 +2,7 @@
 
 #include "atomic_file_replacement.h"
 #include "display_encoding.h"
+#include "pixel_encoding.h"
 #include "rtpro/core/error.h"
 #include "rtpro/image/color_config.h"
 
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <ctime>
 #include <memory>
 #include <variant>
@@ -17,29 +19,9 @@ namespace rtpro {
 
 namespace {
 
-// How a format stores pixels. Float formats keep scene-linear values; the others hold
-// display-referred code values. TIFF gets 16 bits so that its display-referred gradients do not
-// band; PNG and JPEG stay 8-bit, what every viewer expects.
-enum class PixelEncoding { kSceneLinearFloat, kDisplay8Bit, kDisplay16Bit };
-
 constexpr std::size_t kMaxReadValues = std::size_t{1} << 30;  // 4 GiB of floats: a 16k x 16k RGBA image
 
 using PixelBuffer = std::variant<std::vector<float>, std::vector<std::uint8_t>, std::vector<std::uint16_t>>;
-
-std::string lowercase_extension(const std::filesystem::path& file) {
-  std::string extension = file.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
-
-PixelEncoding encoding_for(const std::filesystem::path& file) {
-  const std::string extension = lowercase_extension(file);
-  for (const char* float_format : {".exr", ".sxr", ".mxr", ".hdr", ".rgbe", ".pfm"})
-    if (extension == float_format) return PixelEncoding::kSceneLinearFloat;
-  if (extension == ".tif" || extension == ".tiff") return PixelEncoding::kDisplay16Bit;
-  return PixelEncoding::kDisplay8Bit;
-}
 
 // OpenImageIO reports some failures (an unknown extension, a failed open) only through its global
 // error, others only through the ImageInput/ImageOutput: collect both.
@@ -155,10 +137,6 @@ void write_pixels(const std::filesystem::path& file, const OIIO::ImageSpec& spec
 }
 
 }  // namespace
-
-bool writes_scene_linear(const std::filesystem::path& file) {
-  return encoding_for(file) == PixelEncoding::kSceneLinearFloat;
-}
 
 void write_image(const std::filesystem::path& file, const Image& image, const ImageWriteOptions& options) {
   const bool any_channel_count = writer_for(file)->supports("nchannels");

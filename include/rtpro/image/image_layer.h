@@ -1,0 +1,20 @@
+#pragma once
+// How the rtpro executable reaches OpenImageIO. Debian's OpenImageIO pulls in some 260 shared
+// libraries that take about half a second and 120 MB to load, so the executable does not link it:
+// write_image, read_image, compare_images and write_diff_image go through librtpro_image_oiio.so,
+// a plugin loaded from the executable's own folder on first use. Everything else in this module
+// (output checks, OpenColorIO colour configs) works without it. Tests and other programs that link
+// rtpro_image call OpenImageIO directly and never load the plugin; these functions exist only in
+// the executable's rtpro_image_loader.
+
+namespace rtpro {
+
+// Starts loading the plugin on a background thread and returns at once, so that the image layer
+// is ready by the time a render finishes. A failure is reported by the first call that needs it.
+void start_loading_image_layer();
+
+// True while a background load is still running. The C library's exit() waits for it (it takes
+// the dynamic loader's lock), so a command that fails early leaves with _Exit instead.
+bool image_layer_loading();
+
+}  // namespace rtpro

@@ -1,0 +1,115 @@
+// The executable's side of the image layer (see rtpro/image/image_layer.h): finds and loads
+// librtpro_image_oiio.so once, on a background thread or on first use, and forwards the
+// OpenImageIO-backed calls of image_io.h, image_compare.h and diff_image.h to it.
+#include "rtpro/image/image_layer.h"
+
+#include "image_layer_api.h"
+#include "rtpro/core/error.h"
+#include "rtpro/image/diff_image.h"
+
+#include <dlfcn.h>
+
+#include <atomic>
+#include <future>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace rtpro {
+
+namespace {
+
+// Beside the executable, as the build puts it: found through the executable's own path, not the
+// current folder or the library search path, so the plugin always matches the executable.
+std::filesystem::path plugin_file() {
+  std::error_code error;
+  const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (error)
+    throw RuntimeError(std::string("cannot load the image layer: cannot find rtpro's own folder (/proc/self/exe: ") +
+                       error.message() + ")");
+  return executable.parent_path() / kImageLayerFileName;
+}
+
+const ImageLayerApi* load_plugin() {
+  const std::filesystem::path file = plugin_file();
+  // RTLD_LOCAL keeps OpenImageIO's symbols out of the global scope; RTLD_LAZY binds its function
+  // calls on first use instead of all of them now. The handle is never closed: image buffers and
+  // exceptions made by the plugin may outlive any one call.
+  void* handle = dlopen(file.c_str(), RTLD_LAZY | RTLD_LOCAL);
+  if (!handle)
+    throw RuntimeError(std::string("cannot load the image layer (OpenImageIO): ") + dlerror() + "; rtpro needs " +
+                       kImageLayerFileName + " from its own build in the folder of the executable");
+  const auto entry = reinterpret_cast<ImageLayerEntryPoint>(dlsym(handle, kImageLayerEntryPoint));
+  const ImageLayerApi* api = entry ? entry() : nullptr;
+  if (!api || api->abi_version != kImageLayerAbiVersion || std::string(api->rtpro_version) != RTPRO_VERSION)
+    throw RuntimeError("cannot load the image layer: " + file.string() +
+                       " is not the image plugin of this rtpro build (" RTPRO_VERSION "); rebuild rtpro");
+  return api;
+}
+
+struct LoadState {
+  std::mutex mutex;
+  std::shared_future<const ImageLayerApi*> result;  // valid once a load has started
+  std::atomic<bool> in_flight{false};
+};
+
+// Never destroyed: a background load may still be running while the process exits.
+LoadState& load_state() {
+  static LoadState* const state = new LoadState;
+  return *state;
+}
+
+void load_into(std::promise<const ImageLayerApi*>& promise) {
+  try {
+    promise.set_value(load_plugin());
+  } catch (...) {
+    promise.set_exception(std::current_exception());
+  }
+}
+
+std::shared_future<const ImageLayerApi*> start_load(bool in_background) {
+  LoadState& state = load_state();
+  const std::lock_guard lock(state.mutex);
+  if (state.result.valid()) return state.result;
+  auto promise = std::make_shared<std::promise<const ImageLayerApi*>>();
+  state.result = promise->get_future().share();
+  if (in_background) {
+    try {
+      state.in_flight = true;
+      std::thread([promise, &state] {
+        load_into(*promise);
+        state.in_flight = false;
+      }).detach();
+      return state.result;
+    } catch (const std::system_error&) {
+      state.in_flight = false;  // no thread to spare: load here instead
+    }
+  }
+  load_into(*promise);
+  return state.result;
+}
+
+const ImageLayerApi& image_layer() { return *start_load(false).get(); }
+
+}  // namespace
+
+void start_loading_image_layer() { start_load(true); }
+
+bool image_layer_loading() { return load_state().in_flight; }
+
+void write_image(const std::filesystem::path& file, const Image& image, const ImageWriteOptions& options) {
+  image_layer().write_image(file, image, options);
+}
+
+Image read_image(const std::filesystem::path& file) { return image_layer().read_image(file); }
+
+ImageComparison compare_images(const Image& reference, const Image& test, const CompareThresholds& thresholds) {
+  return image_layer().compare_images(reference, test, thresholds);
+}
+
+void write_diff_image(const std::filesystem::path& file, const Image& reference, const Image& test,
+                      float full_scale) {
+  image_layer().write_diff_image(file, reference, test, full_scale);
+}
+
+}  // namespace rtpro

@@ -1,0 +1,14 @@
+// The entry point of librtpro_image_oiio.so, the OpenImageIO half of the image layer as a plugin:
+// a table of the image functions this library holds (image_io.cpp, image_compare.cpp,
+// diff_image.cpp). Everything else in the plugin is hidden (--exclude-libs), so its copies of
+// rtpro's code never interpose on the executable's.
+#include "image_layer_api.h"
+#include "rtpro/image/diff_image.h"
+
+extern "C" __attribute__((visibility("default"))) const rtpro::ImageLayerApi* rtpro_image_layer() {
+  static const rtpro::ImageLayerApi api{
+      rtpro::kImageLayerAbiVersion, RTPRO_VERSION, &rtpro::write_image, &rtpro::read_image,
+      &rtpro::compare_images,       &rtpro::write_diff_image,
+  };
+  return &api;
+}
