@@ -6,6 +6,7 @@
 #include <yaml-cpp/parser.h>
 
 #include <charconv>
+#include <cstring>
 #include <optional>
 #include <sstream>
 #include <unordered_map>
@@ -162,6 +163,25 @@ class TreeBuilder : public YAML::EventHandler {
   YamlNodePtr root_;
 };
 
+// Checked with memchr before yaml-cpp sees the text: milliseconds even for hundreds of MB.
+void check_line_lengths(std::string_view text, const std::string* source) {
+  int line = 1;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const void* found = std::memchr(text.data() + start, '\n', text.size() - start);
+    const std::size_t end = found ? static_cast<std::size_t>(static_cast<const char*>(found) - text.data()) : text.size();
+    if (end - start > kMaxYamlLineBytes) {
+      throw InputError(SourceLocation{*source, line, static_cast<int>(kMaxYamlLineBytes) + 1},
+                       "line " + std::to_string(line) + " is longer than the limit of " +
+                           std::to_string(kMaxYamlLineBytes >> 20) +
+                           " MiB per line (put large data in mesh files, not in the scene)");
+    }
+    if (!found) break;
+    start = end + 1;
+    ++line;
+  }
+}
+
 YamlNodePtr parse_tree(std::string_view text, const std::string* source, bool known_positions) {
   std::istringstream stream{std::string(text)};
   YAML::Parser parser(stream);
@@ -230,6 +250,7 @@ std::vector<std::string> split_key(const std::string& key, const YamlPosition& a
 YamlDocument YamlDocument::parse(std::string_view text, const std::string& source_name) {
   YamlDocument document;
   const std::string* source = &document.sources_.emplace_back(source_name);
+  check_line_lengths(text, source);
   document.root_ = parse_tree(text, source, true);
   return document;
 }
