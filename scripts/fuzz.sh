@@ -44,7 +44,15 @@ binaries=()
 for target in "${targets[@]}"; do binaries+=("rtpro_fuzz_$target"); done
 cmake --build "$build" --target "${binaries[@]}" >/dev/null
 
-: > /tmp/rtpro-fuzz.pid
+# Keep the PIDs of fuzzers still running from another invocation, drop stale ones (a reused PID
+# must never be paused by mistake).
+pid_file=/tmp/rtpro-fuzz.pid
+if [ -f "$pid_file" ]; then
+  live=$(while read -r p; do
+    case "$(ps -o comm= -p "$p" 2>/dev/null)" in rtpro_fuzz_*) echo "$p" ;; esac
+  done < "$pid_file")
+  printf '%s\n' $live > "$pid_file"
+fi
 run_target() {
   local target="$1" corpus="$build/fuzz/corpus/$1" findings="$build/fuzz/findings/$1"
   mkdir -p "$corpus" "$findings"
@@ -56,7 +64,7 @@ run_target() {
     -dict=tests/fuzz/dict/"$target".dict -artifact_prefix="$findings/" \
     "$corpus" "${inputs[@]}" > "$build/fuzz/$target.log" 2>&1 &
   local pid=$!
-  echo "$pid" >> /tmp/rtpro-fuzz.pid
+  echo "$pid" >> "$pid_file"
   wait "$pid"
 }
 
