@@ -3,7 +3,7 @@
 #include "rtpro/image/atomic_file_replacement.h"
 
 #include "display_encoding.h"
-#include "exr_header_check.h"
+#include "image_header_check.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
 #include "rtpro/image/color_config.h"
@@ -226,7 +226,7 @@ Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
   if (!std::filesystem::is_regular_file(status))
     throw InputError(where, "not a regular file (a FIFO, device or folder is never read as an image)");
   if (max_bytes == 0) max_bytes = default_memory_budget();
-  if (looks_like_exr(file)) check_exr_header(file);
+  check_image_header(file);
   const auto input = OIIO::ImageInput::open(file.string());
   if (!input) throw InputError(where, "cannot read image: " + oiio_errors(""));
   const OIIO::ImageSpec& spec = input->spec();
