@@ -261,24 +261,24 @@ std::string read_scene_file_text(const std::filesystem::path& file) {
                                 " MiB; the limit is " + std::to_string(kMaxSceneFileBytes >> 20) +
                                 " MiB (put large geometry in mesh files)");
   }
-  // Read at most one byte past the limit: a file that grows while it is read is refused too.
-  std::string text(static_cast<std::size_t>(opened.st_size), '\0');
-  std::size_t used = 0;
+  // Read in chunks, each checked for over-long lines as it arrives: a 100 MB line is refused
+  // after its first MiB. Reading stops one chunk past the size limit if the file grows meanwhile.
+  std::string text;
+  text.reserve(static_cast<std::size_t>(opened.st_size));
+  LineLengthGuard lines(file.string());
+  char chunk[65536];
   while (true) {
-    if (used == text.size()) {
-      if (text.size() > kMaxSceneFileBytes) {
-        throw InputError(where, "the scene file grew past the limit of " + std::to_string(kMaxSceneFileBytes >> 20) +
-                                    " MiB while it was read");
-      }
-      text.resize(std::min<std::size_t>(kMaxSceneFileBytes + 1, std::max<std::size_t>(4096, text.size() * 2)));
-    }
-    const ssize_t got = ::read(descriptor, text.data() + used, text.size() - used);
+    const ssize_t got = ::read(descriptor, chunk, sizeof chunk);
     if (got < 0 && errno == EINTR) continue;
     if (got < 0) throw InputError(where, std::string("cannot read the scene file: ") + std::strerror(errno));
     if (got == 0) break;
-    used += static_cast<std::size_t>(got);
+    const std::string_view bytes(chunk, static_cast<std::size_t>(got));
+    lines.feed(bytes);
+    if (text.size() + bytes.size() > kMaxSceneFileBytes)
+      throw InputError(where, "the scene file grew past the limit of " + std::to_string(kMaxSceneFileBytes >> 20) +
+                                  " MiB while it was read");
+    text.append(bytes);
   }
-  text.resize(used);
   return text;
 }
 

@@ -38,6 +38,25 @@ std::string YamlNode::describe() const {
   return "a value";
 }
 
+// memchr finds the line ends: milliseconds even for hundreds of MB.
+void LineLengthGuard::feed(std::string_view bytes) {
+  while (!bytes.empty()) {
+    const void* found = std::memchr(bytes.data(), '\n', bytes.size());
+    const std::size_t length = found ? static_cast<std::size_t>(static_cast<const char*>(found) - bytes.data()) : bytes.size();
+    current_ += length;
+    if (current_ > kMaxYamlLineBytes) {
+      throw InputError(SourceLocation{source_, line_, static_cast<int>(kMaxYamlLineBytes) + 1},
+                       "line " + std::to_string(line_) + " is longer than the limit of " +
+                           std::to_string(kMaxYamlLineBytes >> 20) +
+                           " MiB per line (put large data in mesh files, not in the scene)");
+    }
+    if (!found) return;
+    bytes.remove_prefix(length + 1);
+    current_ = 0;
+    ++line_;
+  }
+}
+
 namespace {
 
 // Turns yaml-cpp's parse events into YamlNodes. Positions are yaml-cpp's 0-based marks made
@@ -163,25 +182,6 @@ class TreeBuilder : public YAML::EventHandler {
   YamlNodePtr root_;
 };
 
-// Checked with memchr before yaml-cpp sees the text: milliseconds even for hundreds of MB.
-void check_line_lengths(std::string_view text, const std::string* source) {
-  int line = 1;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const void* found = std::memchr(text.data() + start, '\n', text.size() - start);
-    const std::size_t end = found ? static_cast<std::size_t>(static_cast<const char*>(found) - text.data()) : text.size();
-    if (end - start > kMaxYamlLineBytes) {
-      throw InputError(SourceLocation{*source, line, static_cast<int>(kMaxYamlLineBytes) + 1},
-                       "line " + std::to_string(line) + " is longer than the limit of " +
-                           std::to_string(kMaxYamlLineBytes >> 20) +
-                           " MiB per line (put large data in mesh files, not in the scene)");
-    }
-    if (!found) break;
-    start = end + 1;
-    ++line;
-  }
-}
-
 YamlNodePtr parse_tree(std::string_view text, const std::string* source, bool known_positions) {
   std::istringstream stream{std::string(text)};
   YAML::Parser parser(stream);
@@ -250,7 +250,7 @@ std::vector<std::string> split_key(const std::string& key, const YamlPosition& a
 YamlDocument YamlDocument::parse(std::string_view text, const std::string& source_name) {
   YamlDocument document;
   const std::string* source = &document.sources_.emplace_back(source_name);
-  check_line_lengths(text, source);
+  LineLengthGuard(*source).feed(text);
   document.root_ = parse_tree(text, source, true);
   return document;
 }

@@ -21,6 +21,20 @@ inline constexpr int kMaxYamlNesting = 64;
 // line would take most of a minute; no hand-written or generated scene line comes near 1 MiB.
 inline constexpr std::size_t kMaxYamlLineBytes = std::size_t{1} << 20;
 
+// Refuses lines longer than kMaxYamlLineBytes as text arrives, so a file reader can stop after
+// the first long line instead of reading (and paying for) hundreds of MB first.
+class LineLengthGuard {
+ public:
+  explicit LineLengthGuard(std::string source) : source_(std::move(source)) {}
+  // The next bytes of the text; throws InputError at the line and the column past the limit.
+  void feed(std::string_view bytes);
+
+ private:
+  std::string source_;
+  int line_ = 1;
+  std::size_t current_ = 0;  // bytes of the current line so far
+};
+
 // Where a node was written. `source` is owned by the YamlDocument; line/column are 1-based, and 0
 // for override values (the override text itself names the place).
 struct YamlPosition {
