@@ -245,9 +245,23 @@ Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
                                 " (the smaller of " + format_bytes(kDefaultMemoryBudgetCap) +
                                 " and the available memory)");
   // The data window is the image: an offset or a differing display window is not kept.
-  Image image(spec.width, spec.height, spec.channelnames);
-  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.data.data()))
-    throw InputError(where, "cannot read image: " + oiio_errors(input->geterror()));
+  // Pixels are decoded a band of rows at a time and the image grows as they arrive: the address
+  // space is reserved once, but memory is touched only for rows that really decode, so a
+  // 75-byte PPM declaring 100000x100 fails after one band instead of after clearing 120 MB.
+  Image image;
+  image.width = spec.width;
+  image.height = spec.height;
+  image.channels = spec.channelnames;
+  const std::size_t row_values = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.nchannels);
+  image.data.reserve(row_values * static_cast<std::size_t>(spec.height));
+  constexpr int kBandRows = 64;
+  for (int y = 0; y < spec.height; y += kBandRows) {
+    const int end = std::min(y + kBandRows, spec.height);
+    image.data.resize(row_values * static_cast<std::size_t>(end));
+    if (!input->read_scanlines(0, 0, y, end, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
+                               image.data.data() + row_values * static_cast<std::size_t>(y)))
+      throw InputError(where, "cannot read image: " + oiio_errors(input->geterror()));
+  }
   return image;
 }
 
