@@ -236,7 +236,13 @@ Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
   // Checked before allocating: a small hostile header can declare an enormous image. Each factor is
   // at most 2^31, so the product of the first two cannot overflow 64 bits.
   const std::size_t pixels = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
-  const std::uint64_t bytes = saturating_multiply(saturating_multiply(pixels, spec.nchannels), sizeof(float));
+  // OpenImageIO reads up to 256 scanlines at once into a buffer of its own, whatever the image's
+  // height: a 2-row image 681553 pixels wide made it allocate 3.5 GB (a fuzz finding). The
+  // estimate counts the larger of the image and that buffer.
+  constexpr std::uint64_t kLibraryRows = 256;
+  const std::uint64_t read_pixels =
+      std::max<std::uint64_t>(pixels, saturating_multiply(static_cast<std::uint64_t>(spec.width), kLibraryRows));
+  const std::uint64_t bytes = saturating_multiply(saturating_multiply(read_pixels, spec.nchannels), sizeof(float));
   if (pixels > kMaxReadValues || pixels * static_cast<std::size_t>(spec.nchannels) > kMaxReadValues ||
       bytes > max_bytes)
     throw InputError(where, "the image is too large to read: " + std::to_string(spec.width) + "x" +
