@@ -3,7 +3,9 @@
 #include "rtpro/core/error.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <string>
 
@@ -95,6 +97,27 @@ void check_png(Reader& in, const SourceLocation& where) {
   }
 }
 
+// Binary PNM (P5 grey, P6 RGB) and PFM (Pf grey, PF RGB) store raw samples: the header's size
+// must fit in the bytes that follow it. Comments and odd whitespace are left to the reader.
+void check_raw_pnm(const std::string& head, std::uintmax_t file_size, const SourceLocation& where) {
+  const char kind = head[1];
+  const bool float_map = kind == 'F' || kind == 'f';
+  const int channels = (kind == '6' || kind == 'F') ? 3 : 1;
+  unsigned long long width = 0, height = 0;
+  double maxval = 0;
+  int consumed = 0;
+  const char* text = head.c_str() + 2;
+  if (std::sscanf(text, "%llu %llu %lf%n", &width, &height, &maxval, &consumed) != 3) return;
+  const std::uintmax_t sample_bytes = float_map ? 4 : (maxval > 255 ? 2 : 1);
+  const std::uintmax_t header_bytes = 2 + static_cast<std::uintmax_t>(consumed) + 1;
+  const std::uintmax_t data = file_size > header_bytes ? file_size - header_bytes : 0;
+  if (width > 0 && height > 0 &&
+      (width > data || height > data || width * height > data / (sample_bytes * channels)))
+    throw InputError(where, "not a valid " + std::string(float_map ? "PFM" : "PNM") + " file: its header declares " +
+                                std::to_string(width) + "x" + std::to_string(height) + " pixels, more than the " +
+                                std::to_string(data) + " bytes of data hold");
+}
+
 }  // namespace
 
 void check_image_header(const std::filesystem::path& file) {
@@ -105,6 +128,13 @@ void check_image_header(const std::filesystem::path& file) {
   const SourceLocation where{file.string()};
   if (in.starts_with(kExrMagic, sizeof kExrMagic)) check_exr(in, where);
   else if (in.starts_with(kPngSignature, sizeof kPngSignature)) check_png(in, where);
+  else if (in.starts_with(reinterpret_cast<const unsigned char*>("P"), 1)) {
+    in.skip(0);
+    const std::string head = "P" + in.chars(static_cast<std::size_t>(std::min<std::uintmax_t>(size - 1, 255)));
+    if (head.size() > 2 && (head[1] == '5' || head[1] == '6' || head[1] == 'F' || head[1] == 'f') &&
+        std::isspace(static_cast<unsigned char>(head[2])) && head.find('#') == std::string::npos)
+      check_raw_pnm(head, size, where);
+  }
 }
 
 }  // namespace rtpro

@@ -3,7 +3,8 @@
 // whatever size an attribute or chunk claims before reading it, so a file of a few hundred bytes
 // claiming a 2 GB attribute or chunk costs gigabytes and seconds before failing (found by
 // fuzzing `rtpro compare`'s image inputs). This walks EXR headers and PNG chunks itself and
-// refuses any size larger than the bytes left in the file. Other formats pass unchecked.
+// refuses any size larger than the bytes left in the file, and refuses raw PNM/PFM headers that
+// declare more pixels than the file holds. Other formats pass unchecked.
 #include <filesystem>
 
 namespace rtpro {
