@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs every build and test dependency of rtpro from Debian 12 packages.
+# Installs every build and test dependency of rtpro from Debian 12 packages (clang 14 and its
+# runtime libraries build the sanitizer and fuzzing tree of scripts/test-all.sh).
 # Safe to run repeatedly; uses sudo when not root.
 set -euo pipefail
 
@@ -11,6 +12,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libtinyobjloader-dev libcli11-dev libyaml-cpp-dev libfmt-dev libfast-float-dev
   nlohmann-json3-dev
+  clang libclang-rt-14-dev
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }

@@ -75,10 +75,14 @@ RenderScene random_mixed_scene(std::uint32_t seed, int spheres, int triangles, i
     prototype.geometries.emplace_back(random_triangles(rng, std::max(1, triangles / 4), 1.0f));
     scene.prototypes.push_back(std::move(prototype));
     for (int i = 0; i < instances; ++i) {
-      const Affine placement = compose(
-          Affine::translate(uniform_point(rng, 4.0f)),
-          compose(Affine::rotate(uniform_direction(rng), uniform(rng, 0.0f, 360.0f)),
-                  Affine::scale({uniform(rng, 0.3f, 1.5f), uniform(rng, 0.3f, 1.5f), uniform(rng, 0.3f, 1.5f)})));
+      // One draw per statement: the order in which function arguments are evaluated is
+      // unspecified (gcc and clang differ), and the scene must not depend on the compiler.
+      const Vec3 offset = uniform_point(rng, 4.0f);
+      const Vec3 axis = uniform_direction(rng);
+      const float angle = uniform(rng, 0.0f, 360.0f);
+      const Vec3 scale{uniform(rng, 0.3f, 1.5f), uniform(rng, 0.3f, 1.5f), uniform(rng, 0.3f, 1.5f)};
+      const Affine placement =
+          compose(Affine::translate(offset), compose(Affine::rotate(axis, angle), Affine::scale(scale)));
       scene.top.geometries.emplace_back(Instance{0, placement, *inverse(placement)});
     }
   }

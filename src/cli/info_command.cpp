@@ -1,7 +1,10 @@
 // `rtpro info SCENE`: what a scene holds, without rendering it.
 #include "command.h"
+#include "memory_option.h"
 #include "rtpro/core/error.h"
+#include "rtpro/core/memory_budget.h"
 #include "rtpro/scene/build_render_scene.h"
+#include "rtpro/scene/render_cost.h"
 #include "rtpro/scene/scene_parser.h"
 #include "rtpro/scene/scene_summary.h"
 
@@ -19,9 +22,23 @@ struct InfoOptions {
   std::string scene;
   std::vector<std::string> overrides;
   bool json = false;
+  std::string max_memory_mb;
 };
 
 nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+nlohmann::json cost_json(const RenderCost& cost, const MemoryBudget& budget) {
+  return {{"flattened_instances", cost.flattened_instances},
+          {"pixels", cost.pixels},
+          {"channels", cost.channels},
+          {"camera_samples", cost.samples},
+          {"image_bytes", cost.image_bytes},
+          {"instance_bytes", cost.instance_bytes},
+          {"mesh_bytes", cost.mesh_bytes},
+          {"total_bytes", cost.total_bytes},
+          {"budget_bytes", budget.bytes},
+          {"budget", budget.source}};
+}
 
 nlohmann::json info_json(const std::string& file, const RenderScene& scene, const SceneSummary& s,
                          const SceneBuildReport& report) {
@@ -84,13 +101,31 @@ void print_text(const std::string& file, const RenderScene& scene, const SceneSu
             << mib(s.estimated_bvh_bytes) << " MiB native BVH (estimate)\n";
 }
 
+// The up-front estimate `rtpro render` checks before it allocates anything (without AOVs).
+void print_cost(const RenderCost& cost, const MemoryBudget& budget) {
+  std::cout << "estimate     " << format_bytes(cost.total_bytes) << " before the BVH: image "
+            << format_bytes(cost.image_bytes) << ", " << cost.flattened_instances << " instances "
+            << format_bytes(cost.instance_bytes) << ", meshes " << format_bytes(cost.mesh_bytes) << "; budget "
+            << format_bytes(budget.bytes) << " (" << budget.source << ")\n"
+            << "camera rays  " << cost.samples << " (pixels x spp)\n";
+}
+
 int run_info(const InfoOptions& o) {
   const SceneDescription description = parse_scene_file(o.scene, o.overrides);
+  const MemoryBudget budget = parse_memory_budget(o.max_memory_mb);
+  const RenderCost cost = estimate_render_cost(description);
+  check_render_cost(cost, budget.bytes, budget.source, o.scene);
   SceneBuildReport report;
   const RenderScene scene = build_render_scene(description, &report);
   const SceneSummary summary = summarize(scene);
-  if (o.json) std::cout << info_json(o.scene, scene, summary, report).dump(2) << "\n";
-  else print_text(o.scene, scene, summary, report);
+  if (o.json) {
+    nlohmann::json json = info_json(o.scene, scene, summary, report);
+    json["estimate"] = cost_json(cost, budget);
+    std::cout << json.dump(2) << "\n";
+  } else {
+    print_text(o.scene, scene, summary, report);
+    print_cost(cost, budget);
+  }
   return kExitOk;
 }
 
@@ -102,6 +137,9 @@ void add_info_command(CLI::App& app, Action& action) {
   cmd->add_option("scene", options->scene, "Scene file (YAML)")->required();
   cmd->add_option("--set", options->overrides, "Override a scene value, e.g. --set render.spp=64 (repeatable)");
   cmd->add_flag("--json", options->json, "Print JSON instead of text");
+  cmd->add_option("--max-memory", options->max_memory_mb,
+                  "Memory budget in MiB the render estimate is checked against (0: no limit; default: the smaller "
+                  "of 4096 and the available memory)");
   cmd->callback([options, &action] { action = [options] { return run_info(*options); }; });
 }
 

@@ -3,15 +3,19 @@
 #include "command.h"
 #include "interrupt.h"
 #include "log.h"
+#include "memory_option.h"
 #include "progress.h"
 #include "render_stats.h"
 #include "rtpro/core/error.h"
+#include "rtpro/core/memory_budget.h"
+#include "rtpro/image/atomic_file_replacement.h"
 #include "rtpro/image/color_config.h"
 #include "rtpro/image/image_io.h"
 #include "rtpro/image/image_layer.h"
 #include "rtpro/image/output_check.h"
 #include "rtpro/render/renderer.h"
 #include "rtpro/scene/build_render_scene.h"
+#include "rtpro/scene/render_cost.h"
 #include "rtpro/scene/scene_parser.h"
 
 #include <tbb/global_control.h>
@@ -20,9 +24,9 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -36,9 +40,10 @@ struct RenderCommandOptions {
   std::string scene;
   std::string output;
   std::string backend = "embree";
-  std::optional<int> spp, threads, max_depth;
-  std::optional<std::uint64_t> seed;
-  std::string size;
+  // Kept as the user's text: they become scene overrides checked by the scene file's rules, so
+  // "--seed -1" or "--size 4294967297x1" is an error instead of wrapping to another number.
+  std::string spp, max_depth, seed, size;
+  std::optional<int> threads;
   std::string ocio_config, display, view;
   std::vector<std::string> overrides;
   std::string region;
@@ -53,7 +58,7 @@ struct RenderCommandOptions {
   std::string embree_quality = "medium";
   bool embree_robust = true;
   bool embree_compact = false;
-  std::size_t max_memory_mb = 0;
+  std::string max_memory_mb;  // MiB; empty: the default budget (see parse_memory_budget)
 };
 
 using Clock = std::chrono::steady_clock;
@@ -66,23 +71,37 @@ struct SceneOverride {
   std::string flag;
 };
 
+// An optional sign and decimal digits: what the scene file's integer rules then judge (range,
+// sign) without any conversion in between that could wrap.
+bool is_integer_text(std::string_view text) {
+  if (!text.empty() && (text[0] == '+' || text[0] == '-')) text.remove_prefix(1);
+  return !text.empty() && text.find_first_not_of("0123456789") == std::string_view::npos;
+}
+
+void add_integer_override(std::vector<SceneOverride>& overrides, const std::string& key, const std::string& flag,
+                          const std::string& value) {
+  if (value.empty()) return;
+  if (!is_integer_text(value)) throw InputError(flag + " '" + value + "': expected an integer");
+  overrides.push_back({key + "=" + value, flag + " " + value});
+}
+
 // Command-line values become scene overrides, so they are validated exactly like the file's.
 std::vector<SceneOverride> scene_overrides(const RenderCommandOptions& o) {
   std::vector<SceneOverride> overrides;
   for (const std::string& set : o.overrides) overrides.push_back({set, "--set " + set});
-  if (o.spp) overrides.push_back({"render.spp=" + std::to_string(*o.spp), "--spp " + std::to_string(*o.spp)});
-  if (o.max_depth)
-    overrides.push_back({"render.max_depth=" + std::to_string(*o.max_depth), "--max-depth " + std::to_string(*o.max_depth)});
-  if (o.seed) overrides.push_back({"render.seed=" + std::to_string(*o.seed), "--seed " + std::to_string(*o.seed)});
+  add_integer_override(overrides, "render.spp", "--spp", o.spp);
+  add_integer_override(overrides, "render.max_depth", "--max-depth", o.max_depth);
+  add_integer_override(overrides, "render.seed", "--seed", o.seed);
   if (!o.size.empty()) {
-    int w = 0, h = 0;
-    char extra = 0;
-    if (std::sscanf(o.size.c_str(), "%dx%d%c", &w, &h, &extra) != 2)
+    const std::size_t x = o.size.find('x');
+    const std::string width = o.size.substr(0, x), height = x == std::string::npos ? "" : o.size.substr(x + 1);
+    if (!is_integer_text(width) || !is_integer_text(height))
       throw InputError("--size '" + o.size + "': expected WIDTHxHEIGHT, e.g. 640x480");
-    overrides.push_back({"camera.resolution=[" + std::to_string(w) + "," + std::to_string(h) + "]", "--size " + o.size});
+    overrides.push_back({"camera.resolution=[" + width + "," + height + "]", "--size " + o.size});
   }
   return overrides;
 }
+
 
 SceneDescription parse_with_overrides(const std::string& scene, const std::vector<SceneOverride>& overrides) {
   std::vector<std::string> assignments;
@@ -123,21 +142,6 @@ std::filesystem::path partial_path(const std::filesystem::path& output) {
   return p;
 }
 
-void write_text_file(const std::filesystem::path& file, const std::string& text) {
-  const std::filesystem::path temporary = file.string() + ".tmp";
-  {
-    std::ofstream out(temporary);
-    out << text;
-    if (!out.flush()) throw RuntimeError("cannot write '" + file.string() + "'");
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, file, error);
-  if (error) {
-    std::filesystem::remove(temporary, error);
-    throw RuntimeError("cannot write '" + file.string() + "': " + error.message());
-  }
-}
-
 // Has TBB load what it loads on first use (tbbmalloc, irml) and start its worker threads before
 // the image layer loads in the background: while a dlopen maps and relocates libraries, glibc
 // holds a lock that another dlopen and every new thread wait for, so a worker started later would
@@ -166,9 +170,11 @@ int run_render(const RenderCommandOptions& o) {
   for (const std::string& name : o.aovs) render_options.aovs.push_back(parse_aov(name));
   const ProgressMode progress_mode = o.quiet ? ProgressMode::kNever : parse_progress_mode(o.progress);
   if (o.crop && !render_options.region) throw InputError("--crop needs --region");
+  const MemoryBudget memory = parse_memory_budget(o.max_memory_mb);
 
   // Fail before the render, not after it: output folder, format, colour config and view.
   check_image_output(o.output);
+  if (!o.stats_json.empty()) check_replaceable(o.stats_json);
   ImageWriteOptions write_options;
   if (!o.ocio_config.empty()) write_options.ocio_config = o.ocio_config;
   write_options.display = o.display;
@@ -188,6 +194,12 @@ int run_render(const RenderCommandOptions& o) {
   start_loading_image_layer();
 
   const SceneDescription description = parse_with_overrides(o.scene, scene_overrides(o));
+  // Refused before anything large is allocated: image buffers, flattened instances, meshes.
+  int extra_channels = 0;
+  for (Aov aov : render_options.aovs) extra_channels += static_cast<int>(aov_channel_names(aov).size());
+  const RenderCost cost = estimate_render_cost(description, extra_channels);
+  check_render_cost(cost, memory.bytes, memory.source, o.scene);
+  log.verbose("estimated memory: " + format_bytes(cost.total_bytes) + " of a budget of " + format_bytes(memory.bytes));
   SceneBuildReport report;
   const RenderScene scene = build_render_scene(description, &report);
   for (const auto& mesh : report.meshes) {
@@ -209,7 +221,7 @@ int run_render(const RenderCommandOptions& o) {
   backend_options.embree_quality = o.embree_quality;
   backend_options.embree_robust = o.embree_robust;
   backend_options.embree_compact = o.embree_compact;
-  backend_options.max_memory_bytes = o.max_memory_mb * 1024 * 1024;
+  backend_options.max_memory_bytes = memory.explicit_limit ? memory.bytes : 0;
   const std::unique_ptr<Backend> backend = make_backend(kind, scene, backend_options);
   stats.backend = std::string(backend->name());
   stats.build_seconds = backend->stats().build_seconds;
@@ -253,7 +265,7 @@ int run_render(const RenderCommandOptions& o) {
   if (stats.nan_samples > 0) log.warning(std::to_string(stats.nan_samples) + " samples were NaN or infinite");
   log.summarise_repeats();
   if (o.stats) std::fputs(stats.text().c_str(), stderr);
-  if (!o.stats_json.empty()) write_text_file(o.stats_json, stats.json().dump(2) + "\n");
+  if (!o.stats_json.empty()) write_file_atomically(o.stats_json, stats.json().dump(2) + "\n");
 
   if (!result.complete()) {
     std::fprintf(stderr, "rtpro: interrupted: wrote the %zu of %zu finished tiles to %s\n", result.tiles_done,
@@ -302,7 +314,9 @@ void add_render_command(CLI::App& app, Action& action) {
       ->capture_default_str();
   cmd->add_option("--embree-robust", o->embree_robust, "Embree robust traversal (true/false)")->capture_default_str();
   cmd->add_flag("--embree-compact", o->embree_compact, "Smaller Embree BVH (about half), about 20% slower to trace");
-  cmd->add_option("--max-memory", o->max_memory_mb, "Embree BVH memory limit in MiB (0: none)");
+  cmd->add_option("--max-memory", o->max_memory_mb,
+                  "Memory budget in MiB for the whole render, checked against an up-front estimate and given to "
+                  "Embree as its limit (0: no limit; default: the smaller of 4096 and the available memory)");
   cmd->callback([o, &action] { action = [o] { return run_render(*o); }; });
 }
 

@@ -1,53 +1,124 @@
-#include "atomic_file_replacement.h"
+#include "rtpro/image/atomic_file_replacement.h"
 
 #include "rtpro/core/error.h"
 
-#include <cerrno>
-#include <cstring>
 #include <fcntl.h>
-#include <random>
-#include <sstream>
-#include <system_error>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <string>
 
 namespace rtpro {
 
 namespace {
 
+constexpr std::string_view kTemporaryMarker = ".rtpro-tmp-";
+
 std::filesystem::path folder_of(const std::filesystem::path& file) {
   return file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
 }
 
-void require_writable_folder(const std::filesystem::path& folder) {
+[[noreturn]] void fail(const std::filesystem::path& file, const std::string& why) {
+  throw RuntimeError("cannot write " + file.string() + ": " + why);
+}
+
+[[noreturn]] void fail_errno(const std::filesystem::path& file, const char* step, int error) {
+  fail(file, std::string(step) + ": " + std::strerror(error));
+}
+
+const char* kind_of_special_file(mode_t mode) {
+  if (S_ISLNK(mode)) return "a symbolic link";
+  if (S_ISDIR(mode)) return "a folder";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+// Unique within the process too, so two threads writing one target never share a temporary.
+std::filesystem::path temporary_name_for(const std::filesystem::path& target) {
+  static std::atomic<unsigned> sequence{0};
+  return folder_of(target) /
+         (temporary_prefix(target) + std::to_string(::getpid()) + "-" + std::to_string(sequence.fetch_add(1)));
+}
+
+bool process_is_gone(long pid) { return pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH; }
+
+// Removes ".NAME.rtpro-tmp-PID-N" files whose PID no longer runs: left by a killed rtpro. A PID
+// reused by another process keeps its file until that process ends too; nothing is lost by waiting.
+void remove_stale_temporaries(const std::filesystem::path& target) {
+  const std::string prefix = temporary_prefix(target);
   std::error_code error;
-  if (!std::filesystem::is_directory(folder, error))
-    throw RuntimeError("cannot write into " + folder.string() + ": no such folder");
-  if (::access(folder.c_str(), W_OK | X_OK) != 0)
-    throw RuntimeError("cannot write into " + folder.string() + ": " + std::strerror(errno));
+  for (std::filesystem::directory_iterator it(folder_of(target), error), end; !error && it != end;
+       it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    const char* digits = name.c_str() + prefix.size();
+    long pid = 0;
+    const auto [after, parsed] = std::from_chars(digits, name.c_str() + name.size(), pid);
+    if (parsed != std::errc() || *after != '-') continue;
+    std::error_code ignored;
+    if (process_is_gone(pid) && !it->is_symlink(ignored)) std::filesystem::remove(it->path(), ignored);
+  }
 }
 
-std::filesystem::path temporary_name_beside(const std::filesystem::path& target) {
-  std::random_device entropy;
-  std::ostringstream name;
-  name << '.' << target.stem().string() << ".tmp-" << ::getpid() << '-' << std::hex << entropy()
-       << target.extension().string();
-  return folder_of(target) / name.str();
+void write_all(int descriptor, std::string_view bytes, const std::filesystem::path& target) {
+  while (!bytes.empty()) {
+    const ssize_t written = ::write(descriptor, bytes.data(), bytes.size());
+    if (written < 0 && errno == EINTR) continue;
+    if (written < 0) fail_errno(target, "write", errno);
+    if (written == 0) fail(target, "write: no progress");
+    bytes.remove_prefix(static_cast<std::size_t>(written));
+  }
 }
 
-void flush_to_disk(const std::filesystem::path& file) {
-  const int descriptor = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
-  if (descriptor < 0) throw RuntimeError("cannot reopen " + file.string() + ": " + std::strerror(errno));
-  const int result = ::fsync(descriptor);
-  const int fsync_errno = errno;
-  ::close(descriptor);
-  if (result != 0) throw RuntimeError("cannot flush " + file.string() + ": " + std::strerror(fsync_errno));
+void fsync_path(const std::filesystem::path& path, int flags, const std::filesystem::path& target, const char* step) {
+  const int descriptor = ::open(path.c_str(), flags | O_CLOEXEC);
+  if (descriptor < 0) fail_errno(target, step, errno);
+  const int synced = ::fsync(descriptor);
+  const int sync_errno = errno;
+  const int closed = ::close(descriptor);
+  const int close_errno = errno;
+  if (synced != 0) fail_errno(target, step, sync_errno);
+  if (closed != 0) fail_errno(target, step, close_errno);
 }
 
 }  // namespace
 
+std::string temporary_prefix(const std::filesystem::path& target) {
+  return "." + target.filename().string() + std::string(kTemporaryMarker);
+}
+
+void check_replaceable(const std::filesystem::path& target) {
+  if (target.empty() || !target.has_filename()) fail(target, "no file name");
+  const std::filesystem::path folder = folder_of(target);
+  struct stat folder_status {};
+  if (::stat(folder.c_str(), &folder_status) != 0 || !S_ISDIR(folder_status.st_mode))
+    fail(target, "folder '" + folder.string() + "' does not exist");
+  if (::access(folder.c_str(), W_OK | X_OK) != 0) fail(target, "folder '" + folder.string() + "' is not writable");
+  struct stat status {};
+  if (::lstat(target.c_str(), &status) == 0 && !S_ISREG(status.st_mode)) {
+    fail(target, std::string("it is ") + kind_of_special_file(status.st_mode) +
+                     "; rtpro replaces only regular files (remove it or choose another name)");
+  }
+  // A full file system is known before anything is rendered; a nearly full one shows up as a
+  // failed write later, with the old file kept.
+  struct statvfs space {};
+  if (::statvfs(folder.c_str(), &space) == 0 && (::geteuid() == 0 ? space.f_bfree : space.f_bavail) == 0)
+    fail(target, "the file system of folder '" + folder.string() + "' is full");
+}
+
 AtomicFileReplacement::AtomicFileReplacement(std::filesystem::path target) : target_(std::move(target)) {
-  require_writable_folder(folder_of(target_));
-  temporary_ = temporary_name_beside(target_);
+  check_replaceable(target_);
+  remove_stale_temporaries(target_);
+  temporary_ = temporary_name_for(target_);
 }
 
 AtomicFileReplacement::~AtomicFileReplacement() {
@@ -57,11 +128,35 @@ AtomicFileReplacement::~AtomicFileReplacement() {
 }
 
 void AtomicFileReplacement::commit() {
-  flush_to_disk(temporary_);
-  std::error_code error;
-  std::filesystem::rename(temporary_, target_, error);
-  if (error) throw RuntimeError("cannot replace " + target_.string() + ": " + error.message());
+  fsync_path(temporary_, O_RDONLY, target_, "flush");
+  // Checked again just before the rename: a symlink or device put there during the render is
+  // refused, not replaced.
+  check_replaceable(target_);
+  if (::rename(temporary_.c_str(), target_.c_str()) != 0) fail_errno(target_, "rename", errno);
   committed_ = true;
+  // The rename itself reaches the disk only with the folder; a failure here leaves the complete
+  // new file in place, so it is not worth failing the run for.
+  const int folder = ::open(folder_of(target_).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (folder >= 0) {
+    ::fsync(folder);
+    ::close(folder);
+  }
+}
+
+void write_file_atomically(const std::filesystem::path& target, std::string_view bytes) {
+  AtomicFileReplacement replacement(target);
+  const int descriptor =
+      ::open(replacement.temporary_path().c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+  if (descriptor < 0) fail_errno(target, "create", errno);
+  try {
+    write_all(descriptor, bytes, target);
+    if (::fsync(descriptor) != 0) fail_errno(target, "flush", errno);
+  } catch (...) {
+    ::close(descriptor);
+    throw;
+  }
+  if (::close(descriptor) != 0) fail_errno(target, "close", errno);
+  replacement.commit();
 }
 
 }  // namespace rtpro

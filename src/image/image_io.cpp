@@ -1,11 +1,15 @@
 #include "rtpro/image/image_io.h"
 
-#include "atomic_file_replacement.h"
+#include "rtpro/image/atomic_file_replacement.h"
+
 #include "display_encoding.h"
 #include "pixel_encoding.h"
+#include "image_header_check.h"
 #include "rtpro/core/error.h"
+#include "rtpro/core/memory_budget.h"
 #include "rtpro/image/color_config.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -115,24 +119,70 @@ PixelBuffer encode_display_referred(OIIO::ImageSpec& spec, const Image& image, P
   return encode_for_display_8bit(image, transform);
 }
 
+bool write_with(OIIO::ImageOutput& output, const std::string& name, const OIIO::ImageSpec& spec,
+                const PixelBuffer& pixels) {
+  if (!output.open(name, spec)) return false;
+  const bool written = std::visit(
+      [&](const auto& values) {
+        using Value = typename std::decay_t<decltype(values)>::value_type;
+        return output.write_image(OIIO::BaseTypeFromC<Value>::value, values.data());
+      },
+      pixels);
+  return output.close() && written;
+}
+
+std::string lowercase_extension(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+// OpenImageIO's TIFF writer fails on its Exif block when it writes to memory (2.4.7).
+bool encodes_to_memory(OIIO::ImageOutput& output, const std::filesystem::path& file) {
+  const std::string extension = lowercase_extension(file);
+  return output.supports("ioproxy") && extension != ".tif" && extension != ".tiff";
+}
+
+// Reads every pixel of a file just written by path: OpenImageIO's writers do not all report a
+// short write (a full disk once left a 0-byte EXR behind an "ok"), its readers do.
+void verify_written(const std::filesystem::path& temporary, const std::filesystem::path& file,
+                    const OIIO::ImageSpec& spec) {
+  const auto input = OIIO::ImageInput::open(temporary.string());
+  bool complete = input && input->spec().width == spec.width && input->spec().height == spec.height &&
+                  input->spec().nchannels == spec.nchannels;
+  constexpr int kRows = 64;  // in bands, so the check needs little memory whatever the image size
+  std::vector<float> band(static_cast<std::size_t>(spec.width) * kRows * std::max(spec.nchannels, 1));
+  for (int y = 0; complete && y < spec.height; y += kRows)
+    complete = input->read_scanlines(0, 0, y, std::min(y + kRows, spec.height), 0, 0, spec.nchannels,
+                                     OIIO::TypeDesc::FLOAT, band.data());
+  if (!complete)
+    throw RuntimeError("cannot write " + file.string() + ": the written file does not read back (" +
+                       oiio_errors(input ? input->geterror() : "") + ")");
+}
+
+// Formats OpenImageIO can encode to memory are encoded there and written by the atomic writer,
+// which checks every write; the others are written to its temporary file and read back.
 void write_pixels(const std::filesystem::path& file, const OIIO::ImageSpec& spec, const PixelBuffer& pixels) {
-  AtomicFileReplacement replacement(file);
-  {
-    // Scoped so the writer has closed the temporary file before it is renamed or removed.
-    const std::string temporary = replacement.temporary_path().string();
-    const auto output = OIIO::ImageOutput::create(temporary);
-    if (!output) throw RuntimeError("cannot write " + file.string() + ": " + oiio_errors(""));
-    if (!output->open(temporary, spec))
+  check_replaceable(file);
+  const auto output = OIIO::ImageOutput::create(file.string());
+  if (!output) throw RuntimeError("cannot write " + file.string() + ": " + oiio_errors(""));
+  if (encodes_to_memory(*output, file)) {
+    std::vector<unsigned char> encoded;
+    OIIO::Filesystem::IOVecOutput proxy(encoded);
+    OIIO::ImageSpec memory_spec = spec;
+    void* proxy_pointer = &proxy;
+    memory_spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy_pointer);
+    if (!write_with(*output, file.string(), memory_spec, pixels))
       throw RuntimeError("cannot write " + file.string() + ": " + oiio_errors(output->geterror()));
-    const bool written = std::visit(
-        [&](const auto& values) {
-          using Value = typename std::decay_t<decltype(values)>::value_type;
-          return output->write_image(OIIO::BaseTypeFromC<Value>::value, values.data());
-        },
-        pixels);
-    if (!written || !output->close())
-      throw RuntimeError("cannot write " + file.string() + ": " + oiio_errors(output->geterror()));
+    write_file_atomically(file, {reinterpret_cast<const char*>(encoded.data()), encoded.size()});
+    return;
   }
+  AtomicFileReplacement replacement(file);
+  const std::string temporary = replacement.temporary_path().string();
+  if (!write_with(*output, temporary, spec, pixels))
+    throw RuntimeError("cannot write " + file.string() + ": " + oiio_errors(output->geterror()));
+  verify_written(replacement.temporary_path(), file, spec);
   replacement.commit();
 }
 
@@ -153,10 +203,15 @@ void write_image(const std::filesystem::path& file, const Image& image, const Im
   write_pixels(file, spec, pixels);
 }
 
-Image read_image(const std::filesystem::path& file) {
+Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
   const SourceLocation where{file.string()};
   std::error_code error;
-  if (!std::filesystem::is_regular_file(file, error)) throw InputError(where, "no such image file");
+  const auto status = std::filesystem::status(file, error);
+  if (!std::filesystem::exists(status)) throw InputError(where, "no such image file");
+  if (!std::filesystem::is_regular_file(status))
+    throw InputError(where, "not a regular file (a FIFO, device or folder is never read as an image)");
+  if (max_bytes == 0) max_bytes = default_memory_budget();
+  check_image_header(file);
   const auto input = OIIO::ImageInput::open(file.string());
   if (!input) throw InputError(where, "cannot read image: " + oiio_errors(""));
   const OIIO::ImageSpec& spec = input->spec();
@@ -166,13 +221,38 @@ Image read_image(const std::filesystem::path& file) {
   // Checked before allocating: a small hostile header can declare an enormous image. Each factor is
   // at most 2^31, so the product of the first two cannot overflow 64 bits.
   const std::size_t pixels = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
-  if (pixels > kMaxReadValues || pixels * static_cast<std::size_t>(spec.nchannels) > kMaxReadValues)
-    throw InputError(where, "the image is too large (" + std::to_string(spec.width) + "x" +
-                                std::to_string(spec.height) + ", " + std::to_string(spec.nchannels) + " channels)");
+  // OpenImageIO reads up to 256 scanlines at once into a buffer of its own, whatever the image's
+  // height: a 2-row image 681553 pixels wide made it allocate 3.5 GB (a fuzz finding). The
+  // estimate counts the larger of the image and that buffer.
+  constexpr std::uint64_t kLibraryRows = 256;
+  const std::uint64_t read_pixels =
+      std::max<std::uint64_t>(pixels, saturating_multiply(static_cast<std::uint64_t>(spec.width), kLibraryRows));
+  const std::uint64_t bytes = saturating_multiply(saturating_multiply(read_pixels, spec.nchannels), sizeof(float));
+  if (pixels > kMaxReadValues || pixels * static_cast<std::size_t>(spec.nchannels) > kMaxReadValues ||
+      bytes > max_bytes)
+    throw InputError(where, "the image is too large to read: " + std::to_string(spec.width) + "x" +
+                                std::to_string(spec.height) + ", " + std::to_string(spec.nchannels) + " channels is " +
+                                format_bytes(bytes) + " as floats; the limit is " + format_bytes(max_bytes) +
+                                " (the smaller of " + format_bytes(kDefaultMemoryBudgetCap) +
+                                " and the available memory)");
   // The data window is the image: an offset or a differing display window is not kept.
-  Image image(spec.width, spec.height, spec.channelnames);
-  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.data.data()))
-    throw InputError(where, "cannot read image: " + oiio_errors(input->geterror()));
+  // Pixels are decoded a band of rows at a time and the image grows as they arrive: the address
+  // space is reserved once, but memory is touched only for rows that really decode, so a
+  // 75-byte PPM declaring 100000x100 fails after one band instead of after clearing 120 MB.
+  Image image;
+  image.width = spec.width;
+  image.height = spec.height;
+  image.channels = spec.channelnames;
+  const std::size_t row_values = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.nchannels);
+  image.data.reserve(row_values * static_cast<std::size_t>(spec.height));
+  constexpr int kBandRows = 64;
+  for (int y = 0; y < spec.height; y += kBandRows) {
+    const int end = std::min(y + kBandRows, spec.height);
+    image.data.resize(row_values * static_cast<std::size_t>(end));
+    if (!input->read_scanlines(0, 0, y, end, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
+                               image.data.data() + row_values * static_cast<std::size_t>(y)))
+      throw InputError(where, "cannot read image: " + oiio_errors(input->geterror()));
+  }
   return image;
 }
 

@@ -101,7 +101,9 @@ void write_image(const std::filesystem::path& file, const Image& image, const Im
   image_layer().write_image(file, image, options);
 }
 
-Image read_image(const std::filesystem::path& file) { return image_layer().read_image(file); }
+Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
+  return image_layer().read_image(file, max_bytes);
+}
 
 ImageComparison compare_images(const Image& reference, const Image& test, const CompareThresholds& thresholds) {
   return image_layer().compare_images(reference, test, thresholds);

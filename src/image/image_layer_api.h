@@ -7,12 +7,13 @@
 #include "rtpro/image/image_compare.h"
 #include "rtpro/image/image_io.h"
 
+#include <cstdint>
 #include <filesystem>
 
 namespace rtpro {
 
 // Raise whenever a call is added, removed or changes its signature.
-inline constexpr int kImageLayerAbiVersion = 1;
+inline constexpr int kImageLayerAbiVersion = 2;
 inline constexpr const char* kImageLayerEntryPoint = "rtpro_image_layer";
 inline constexpr const char* kImageLayerFileName = "librtpro_image_oiio.so";
 
@@ -20,7 +21,7 @@ struct ImageLayerApi {
   int abi_version;
   const char* rtpro_version;
   void (*write_image)(const std::filesystem::path&, const Image&, const ImageWriteOptions&);
-  Image (*read_image)(const std::filesystem::path&);
+  Image (*read_image)(const std::filesystem::path&, std::uint64_t);
   ImageComparison (*compare_images)(const Image&, const Image&, const CompareThresholds&);
   void (*write_diff_image)(const std::filesystem::path&, const Image&, const Image&, float);
 };

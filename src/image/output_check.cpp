@@ -2,6 +2,7 @@
 
 #include "oiio_output_formats.h"
 #include "rtpro/core/error.h"
+#include "rtpro/image/atomic_file_replacement.h"
 
 #include <unistd.h>
 
@@ -31,14 +32,8 @@ void check_image_output(const std::filesystem::path& file) {
   if (!openimageio_writes(file))
     throw InputError("cannot write '" + file.string() + "': unknown image format '" + file.extension().string() +
                      "' (use .exr, .png, .jpg or .tif)");
-  const std::filesystem::path folder = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
-  std::error_code error;
-  if (!std::filesystem::is_directory(folder, error))
-    throw RuntimeError("cannot write '" + file.string() + "': folder '" + folder.string() + "' does not exist");
-  if (access(folder.c_str(), W_OK) != 0)
-    throw RuntimeError("cannot write '" + file.string() + "': folder '" + folder.string() + "' is not writable");
-  if (std::filesystem::is_directory(file, error))
-    throw RuntimeError("cannot write '" + file.string() + "': it is a folder");
+  // The atomic writer's own checks: folder, file type, a full file system.
+  check_replaceable(file);
 }
 
 }  // namespace rtpro

@@ -1,6 +1,9 @@
 #include "rtpro/scene/build_render_scene.h"
 
 #include "rtpro/core/error.h"
+#include "rtpro/core/memory_budget.h"
+#include "rtpro/scene/render_cost.h"
+#include "traceable_range_check.h"
 
 #include <chrono>
 #include <map>
@@ -21,10 +24,12 @@ class RenderSceneBuilder {
     for (const LightDesc& light : description_.lights) scene_.lights.push_back(make_light(light));
     for (const MaterialDesc& m : description_.materials) add_material(m, m.name);
 
+    check_instance_count();
     prototype_of_object_.assign(description_.objects.size(), std::nullopt);
-    add_own_shapes(description_.world, scene_.top);
+    add_own_shapes(description_.world, scene_.top, &top_where_);
     for (const InstanceDesc& instance : description_.world.instances)
       flatten_instance(instance.object, instance.transform, instance.where);
+    check_traceable_range(scene_, top_where_, description_.camera, description_.lights);
     if (report_) report_->flattened_instances = flattened_;
     return std::move(scene_);
   }
@@ -36,15 +41,37 @@ class RenderSceneBuilder {
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);
   }
 
-  // Spheres and meshes that belong to `object` itself (not through its instances).
-  void add_own_shapes(const ObjectDesc& object, Group& group) {
+  // Counted before anything is flattened: a few nested levels of a few instances each multiply
+  // to billions, which would otherwise cost minutes and gigabytes before failing. The error names
+  // the world instance whose subtree crosses the limit.
+  void check_instance_count() const {
+    const std::vector<std::uint64_t> per_object = flattened_instances_per_object(description_);
+    std::uint64_t count = 0;
+    for (const InstanceDesc& instance : description_.world.instances) {
+      count = saturating_add(count, per_object[instance.object]);
+      if (count > kMaxFlattenedInstances)
+        throw InputError(instance.where, "instancing expands to " +
+                                             (count == UINT64_MAX ? std::string("more than 2^64") : std::to_string(count)) +
+                                             " instances after flattening nested instances; the limit is " +
+                                             std::to_string(kMaxFlattenedInstances));
+    }
+  }
+
+  // Spheres and meshes that belong to `object` itself (not through its instances). Only the
+  // world's own shapes are top-level geometries that need a location (`where_` is null for
+  // prototypes).
+  void add_own_shapes(const ObjectDesc& object, Group& group, std::vector<SourceLocation>* where = nullptr) {
     if (!object.spheres.empty()) {
       SphereSet set;
       set.spheres.reserve(object.spheres.size());
       for (const SphereDesc& s : object.spheres) set.spheres.push_back({s.center, s.radius, s.material});
       group.geometries.emplace_back(std::move(set));
+      if (where) where->push_back(SourceLocation{description_.file.string()});
     }
-    for (const MeshDesc& mesh : object.meshes) group.geometries.emplace_back(load_mesh(mesh));
+    for (const MeshDesc& mesh : object.meshes) {
+      group.geometries.emplace_back(load_mesh(mesh));
+      if (where) where->push_back(mesh.where);
+    }
   }
 
   TriangleMesh load_mesh(const MeshDesc& desc) {
@@ -105,6 +132,7 @@ class RenderSceneBuilder {
       if (!inverse_transform)
         throw InputError(where, "instance transform (combined with its parents) is singular or not finite");
       scene_.top.geometries.emplace_back(Instance{*prototype, to_world, *inverse_transform});
+      top_where_.push_back(where);
     }
     for (const InstanceDesc& nested : description_.objects[object].instances)
       flatten_instance(nested.object, compose(to_world, nested.transform), nested.where);
@@ -116,6 +144,7 @@ class RenderSceneBuilder {
   RenderScene scene_;
   std::vector<std::optional<std::uint32_t>> prototype_of_object_;
   std::size_t flattened_ = 0;
+  std::vector<SourceLocation> top_where_;  // scene-file location of each top-level geometry
 };
 
 }  // namespace

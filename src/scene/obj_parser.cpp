@@ -139,7 +139,8 @@ std::vector<MaterialDesc> load_materials(const fs::path& file, const std::vector
     for (const LocatedName& library : chunk.material_libraries) {
       const fs::path path = material_library_path(file, library);
       if (!loaded.insert(path).second) continue;
-      if (!fs::is_regular_file(path)) {
+      std::error_code not_readable;  // e.g. a name over 255 bytes: a warning, not an escaped filesystem_error
+      if (!fs::is_regular_file(path, not_readable)) {
         warnings.push_back(located(file.string(), library.line, "material library '" + std::string(library.name) +
                                                                     "' not found; its materials use defaults"));
         continue;

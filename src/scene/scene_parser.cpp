@@ -4,11 +4,14 @@
 #include "yaml_reader.h"
 #include "yaml_scene_objects.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 namespace rtpro {
 
@@ -215,23 +218,68 @@ SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& f
   return desc;
 }
 
+// What a path names when it is not a regular file, for the refusal message.
+const char* special_file_kind(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+[[noreturn]] void refuse_special_file(const SourceLocation& where, mode_t mode) {
+  throw InputError(where, std::string("cannot read the scene file: it is ") + special_file_kind(mode) +
+                              "; a scene must be a regular file (an endless or blocking source would never end)");
+}
+
+// Refused by type before it is opened for reading (opening a FIFO with no writer blocks forever,
+// /dev/zero never ends) and by size before it is read. The type is checked again on the opened
+// descriptor, so a file swapped for a FIFO in between is refused too; O_NONBLOCK keeps that open
+// from blocking.
 std::string read_scene_file_text(const std::filesystem::path& file) {
   const SourceLocation where{file.string()};
-  std::error_code error;
-  const std::filesystem::file_status status = std::filesystem::status(file, error);
-  if (!std::filesystem::exists(status)) throw InputError(where, "cannot read the scene file: it does not exist");
-  if (std::filesystem::is_directory(status)) throw InputError(where, "cannot read the scene file: it is a directory");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(where, std::string("cannot read the scene file: ") + std::strerror(errno));
-  const std::uintmax_t size = std::filesystem::file_size(file, error);
-  if (!error && size > kMaxSceneFileBytes) {
-    throw InputError(where, "the scene file is " + std::to_string(size >> 20) +
-                                " MiB; the limit is 256 MiB (put large geometry in mesh files)");
+  struct stat before {};
+  if (::stat(file.c_str(), &before) != 0) {
+    const int error = errno;
+    throw InputError(where, error == ENOENT ? std::string("cannot read the scene file: it does not exist")
+                                            : std::string("cannot read the scene file: ") + std::strerror(error));
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(where, std::string("cannot read the scene file: ") + std::strerror(errno));
-  return text.str();
+  if (!S_ISREG(before.st_mode)) refuse_special_file(where, before.st_mode);
+  const int descriptor = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (descriptor < 0) throw InputError(where, std::string("cannot read the scene file: ") + std::strerror(errno));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{descriptor};
+  struct stat opened {};
+  if (::fstat(descriptor, &opened) != 0)
+    throw InputError(where, std::string("cannot read the scene file: ") + std::strerror(errno));
+  if (!S_ISREG(opened.st_mode)) refuse_special_file(where, opened.st_mode);
+  if (static_cast<std::uintmax_t>(opened.st_size) > kMaxSceneFileBytes) {
+    throw InputError(where, "the scene file is " + std::to_string(static_cast<std::uintmax_t>(opened.st_size) >> 20) +
+                                " MiB; the limit is " + std::to_string(kMaxSceneFileBytes >> 20) +
+                                " MiB (put large geometry in mesh files)");
+  }
+  // Read in chunks, each checked for over-long lines as it arrives: a 100 MB line is refused
+  // after its first MiB. Reading stops one chunk past the size limit if the file grows meanwhile.
+  std::string text;
+  text.reserve(static_cast<std::size_t>(opened.st_size));
+  LineLengthGuard lines(file.string());
+  char chunk[65536];
+  while (true) {
+    const ssize_t got = ::read(descriptor, chunk, sizeof chunk);
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) throw InputError(where, std::string("cannot read the scene file: ") + std::strerror(errno));
+    if (got == 0) break;
+    const std::string_view bytes(chunk, static_cast<std::size_t>(got));
+    lines.feed(bytes);
+    if (text.size() + bytes.size() > kMaxSceneFileBytes)
+      throw InputError(where, "the scene file grew past the limit of " + std::to_string(kMaxSceneFileBytes >> 20) +
+                                  " MiB while it was read");
+    text.append(bytes);
+  }
+  return text;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <yaml-cpp/parser.h>
 
 #include <charconv>
+#include <cstring>
 #include <optional>
 #include <sstream>
 #include <unordered_map>
@@ -35,6 +36,25 @@ std::string YamlNode::describe() const {
       return "a mapping";
   }
   return "a value";
+}
+
+// memchr finds the line ends: milliseconds even for hundreds of MB.
+void LineLengthGuard::feed(std::string_view bytes) {
+  while (!bytes.empty()) {
+    const void* found = std::memchr(bytes.data(), '\n', bytes.size());
+    const std::size_t length = found ? static_cast<std::size_t>(static_cast<const char*>(found) - bytes.data()) : bytes.size();
+    current_ += length;
+    if (current_ > kMaxYamlLineBytes) {
+      throw InputError(SourceLocation{source_, line_, static_cast<int>(kMaxYamlLineBytes) + 1},
+                       "line " + std::to_string(line_) + " is longer than the limit of " +
+                           std::to_string(kMaxYamlLineBytes >> 20) +
+                           " MiB per line (put large data in mesh files, not in the scene)");
+    }
+    if (!found) return;
+    bytes.remove_prefix(length + 1);
+    current_ = 0;
+    ++line_;
+  }
 }
 
 namespace {
@@ -230,6 +250,7 @@ std::vector<std::string> split_key(const std::string& key, const YamlPosition& a
 YamlDocument YamlDocument::parse(std::string_view text, const std::string& source_name) {
   YamlDocument document;
   const std::string* source = &document.sources_.emplace_back(source_name);
+  LineLengthGuard(*source).feed(text);
   document.root_ = parse_tree(text, source, true);
   return document;
 }

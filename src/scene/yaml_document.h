@@ -6,6 +6,7 @@
 // came from. Aliases share the anchored subtree, so `*a` costs no memory.
 #include "rtpro/core/error.h"
 
+#include <cstddef>
 #include <deque>
 #include <memory>
 #include <string>
@@ -16,6 +17,23 @@ namespace rtpro {
 
 // Deeper documents are rejected before anything walks them recursively.
 inline constexpr int kMaxYamlNesting = 64;
+// Longer lines are rejected before parsing: yaml-cpp reads a few MB per second, so one 100 MB
+// line would take most of a minute; no hand-written or generated scene line comes near 1 MiB.
+inline constexpr std::size_t kMaxYamlLineBytes = std::size_t{1} << 20;
+
+// Refuses lines longer than kMaxYamlLineBytes as text arrives, so a file reader can stop after
+// the first long line instead of reading (and paying for) hundreds of MB first.
+class LineLengthGuard {
+ public:
+  explicit LineLengthGuard(std::string source) : source_(std::move(source)) {}
+  // The next bytes of the text; throws InputError at the line and the column past the limit.
+  void feed(std::string_view bytes);
+
+ private:
+  std::string source_;
+  int line_ = 1;
+  std::size_t current_ = 0;  // bytes of the current line so far
+};
 
 // Where a node was written. `source` is owned by the YamlDocument; line/column are 1-based, and 0
 // for override values (the override text itself names the place).
@@ -58,8 +76,8 @@ struct YamlNode {
 class YamlDocument {
  public:
   // Throws InputError at the offending position for syntax errors, duplicate keys, non-scalar
-  // keys, explicit tags, nesting deeper than kMaxYamlNesting, and more than one document. An
-  // empty text gives a null root.
+  // keys, explicit tags, nesting deeper than kMaxYamlNesting, lines longer than
+  // kMaxYamlLineBytes, and more than one document. An empty text gives a null root.
   static YamlDocument parse(std::string_view text, const std::string& source_name);
 
   YamlDocument(YamlDocument&&) = default;

@@ -158,21 +158,40 @@ TEST(RenderCommand, InterruptWritesPartialImageAndKeepsExistingOutput) {
   const auto dir = scene.parent_path();
   const auto output = dir / "out.exr";
   std::ofstream(output) << "a previous good image";
+  int progress[2];
+  ASSERT_EQ(pipe(progress), 0);
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {
+    dup2(progress[1], STDERR_FILENO);
+    close(progress[0]);
     const std::string exe = rtpro_executable().string();
     // Large enough to run for many seconds on two cores.
     execl(exe.c_str(), exe.c_str(), "render", scene.c_str(), "-o", output.c_str(), "--size", "1600x1200", "--spp",
-          "256", "--threads", "2", "--tile-size", "16", "--progress", "never", "--set",
+          "256", "--threads", "2", "--tile-size", "16", "--progress", "always", "--set",
           "render.background=[0.2,0.3,0.5]", static_cast<char*>(nullptr));
     _exit(127);
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  close(progress[1]);
+  // Interrupt once the render runs (its first progress report), not after a guessed start-up time:
+  // a sanitizer build takes longer than 1.5 s to start, and a SIGINT before rtpro installs its
+  // handler ends the process the default way.
+  std::string seen;
+  char buffer[256];
+  for (ssize_t got; seen.find('%') == std::string::npos && (got = read(progress[0], buffer, sizeof buffer)) > 0;)
+    seen.append(buffer, static_cast<std::size_t>(got));
+  ASSERT_NE(seen.find('%'), std::string::npos) << seen;
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
   const auto sent = std::chrono::steady_clock::now();
   kill(pid, SIGINT);
   int status = 0;
+  std::thread drain([&] {  // keep the pipe from filling while rtpro finishes
+    while (read(progress[0], buffer, sizeof buffer) > 0) {
+    }
+  });
   waitpid(pid, &status, 0);
+  drain.join();
+  close(progress[0]);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 130);

@@ -3,6 +3,7 @@
 // reference.png, rendered.png and diff.png to look at, rendered.exr to inspect or adopt, and
 // figures.json with the numbers. figures.json is written last and atomically: a folder without it
 // is incomplete and the report ignores it.
+#include "rtpro/image/atomic_file_replacement.h"
 #include "rtpro/image/diff_image.h"
 #include "rtpro/image/image_compare.h"
 #include "rtpro/image/image_io.h"
@@ -47,15 +48,9 @@ inline nlohmann::json comparison_figures(const ImageComparison& comparison, cons
   return figures;
 }
 
-// Temporary file beside the target, then rename: readers see the old file or the whole new one.
+// Through rtpro's one atomic writer: readers see the old file or the whole new one.
 inline void write_text_atomically(const std::filesystem::path& file, const std::string& text) {
-  const std::filesystem::path temporary = file.string() + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << text;
-    if (!out.flush()) throw std::runtime_error("cannot write " + temporary.string());
-  }
-  std::filesystem::rename(temporary, file);
+  write_file_atomically(file, text);
 }
 
 // What white stands for in diff.png: the 99th percentile of the per-pixel error (the largest

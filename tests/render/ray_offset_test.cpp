@@ -3,11 +3,15 @@
 #include "rtpro/render/ray_offset.h"
 
 #include "rtpro/backend/backend.h"
+#include "rtpro/core/fp_env.h"
 #include "rtpro/render/surface.h"
 #include "test_scenes.h"
 
 #include <gtest/gtest.h>
 
+#include <xmmintrin.h>
+
+#include <cmath>
 #include <random>
 
 namespace rtpro {
@@ -117,7 +121,8 @@ TEST(RayOffset, OriginMovesToTheSideTheRayLeavesFrom) {
 namespace rtpro {
 namespace {
 
-TEST(RayOffset, RoundsAwayFromTheSurfaceIncludingAtZero) {
+// The whole check, run in the default floating-point mode and in the one tracing threads use.
+void expect_rounding_away_from_the_surface() {
   SurfacePoint sp{};
   sp.geometric_normal = {1, 0, 0};
   sp.shading_normal = {1, 0, 0};
@@ -133,6 +138,18 @@ TEST(RayOffset, RoundsAwayFromTheSurfaceIncludingAtZero) {
   sp.position = {0.0f, 0.0f, 0.0f};
   EXPECT_GT(offset_ray_origin(sp, {1, 0, 0}).x, 0.0f);
   EXPECT_LT(offset_ray_origin(sp, {-1, 0, 0}).x, 0.0f);
+}
+
+TEST(RayOffset, RoundsAwayFromTheSurfaceIncludingAtZero) { expect_rounding_away_from_the_surface(); }
+
+// Tracing threads flush denormals to zero (core/fp_env.h): an error bound of 1e-38 is then zero
+// and a step from 0 onto a denormal would be no step. A test earlier in the same process that
+// rendered on this thread used to leave that mode behind and make the test above fail.
+TEST(RayOffset, RoundsAwayFromTheSurfaceUnderTheTracingFloatingPointMode) {
+  const unsigned saved = _mm_getcsr();
+  set_tracing_fp_mode();
+  expect_rounding_away_from_the_surface();
+  _mm_setcsr(saved);
 }
 
 }  // namespace

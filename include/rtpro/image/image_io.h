@@ -4,6 +4,7 @@
 // Writes are atomic: a temporary file in the same folder, renamed over the target on success.
 #include "rtpro/image/image.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -28,7 +29,10 @@ void write_image(const std::filesystem::path& file, const Image& image, const Im
 // formats) rather than encoding it for a display.
 bool writes_scene_linear(const std::filesystem::path& file);
 
-// Throws InputError when the file is missing or unreadable.
-Image read_image(const std::filesystem::path& file);
+// Throws InputError when the file is missing, unreadable, not a regular file, or declares more
+// pixels than `max_bytes` of 32-bit floats hold (checked from the header, before any pixel is
+// allocated: a few bytes of PNG header can declare 65535x65535). `max_bytes` 0 means
+// default_memory_budget().
+Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes = 0);
 
 }  // namespace rtpro

@@ -1,0 +1,49 @@
+#pragma once
+// What a render will cost, estimated from the scene description before anything large is
+// allocated: instances multiplied out through nesting (without flattening them), image buffers
+// from resolution × channels, and mesh memory from the mesh files' sizes. `rtpro render` and
+// `rtpro info` check it against the memory budget (--max-memory, else
+// default_memory_budget()), so a kilobyte of YAML asking for gigabytes is refused in milliseconds.
+#include "rtpro/scene/description.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rtpro {
+
+struct RenderCost {
+  std::uint64_t flattened_instances = 0;  // instances after flattening nested ones (saturating)
+  std::uint64_t pixels = 0;
+  int channels = 3;                       // colour plus AOV channels
+  std::uint64_t samples = 0;              // camera samples: pixels × spp
+  std::uint64_t image_bytes = 0;          // film plus one output copy
+  std::uint64_t instance_bytes = 0;       // rtpro's and Embree's per-instance records
+  std::uint64_t mesh_bytes = 0;           // loaded meshes and their BVHs, from the file sizes
+  std::uint64_t total_bytes = 0;          // the sum, saturating
+};
+
+// Rough bytes per flattened instance (two 3×4 transforms and the geometry record in rtpro, an
+// instance geometry and BVH leaf in Embree) and per byte of mesh file (positions, normals,
+// indices and an Embree BVH, relative to the file's size). Deliberately on the high side.
+inline constexpr std::uint64_t kBytesPerInstance = 1024;
+inline constexpr std::uint64_t kMeshBytesPerFileByte = 4;
+
+// Instances after flattening: for every world instance, its object's own shapes (if any) plus,
+// recursively, the objects it instances. Computed once per object, so it takes microseconds even
+// when the answer is 10^30 (it saturates at UINT64_MAX). The objects must form no cycle (the
+// scene parser guarantees it).
+std::uint64_t count_flattened_instances(const SceneDescription& scene);
+// The same per object: element i is what one placement of scene.objects[i] becomes.
+std::vector<std::uint64_t> flattened_instances_per_object(const SceneDescription& scene);
+
+// `extra_channels`: AOV channels beyond R, G, B.
+RenderCost estimate_render_cost(const SceneDescription& scene, int extra_channels = 0);
+
+// Throws InputError at the scene file when the estimate exceeds `budget_bytes`, naming the
+// largest parts and --max-memory. `budget_source` says where the budget came from, e.g.
+// "--max-memory 512" or "the default: the smaller of 4 GiB and the available memory".
+void check_render_cost(const RenderCost& cost, std::uint64_t budget_bytes, const std::string& budget_source,
+                       const std::filesystem::path& scene_file);
+
+}  // namespace rtpro

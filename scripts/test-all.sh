@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Everything CI checks (.ci/run), in three stages that stop at the first failure:
+#   1. the Release build with the default compiler (gcc) and every test;
+#   2. a second tree built with clang under AddressSanitizer + UndefinedBehaviorSanitizer, with
+#      libFuzzer linked into the fuzz targets, and every test again (zero findings allowed);
+#   3. a short fuzz run of each target in that tree: its corpus and regressions replayed, then
+#      RTPRO_FUZZ_SECONDS (default 60) of fuzzing per target, two targets at a time.
+# RTPRO_TEST_STAGES=1 (or 1,2) runs fewer stages. Sanitizer options and the documented leak
+# suppressions are compiled into the sanitizer build (cmake/sanitizer_options.cpp).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+stages=",${RTPRO_TEST_STAGES:-1,2,3},"
+fuzz_seconds="${RTPRO_FUZZ_SECONDS:-60}"
+
+stage() { printf '\n==== rtpro test stage %s (%s) ====\n' "$1" "$(date +%T)"; }
+
+if [[ $stages == *,1,* ]]; then
+  stage "1: gcc Release build and tests"
+  cmake -S . -B build -G Ninja && cmake --build build && ctest --test-dir build --output-on-failure
+fi
+
+if [[ $stages == *,2,* || $stages == *,3,* ]]; then
+  stage "2: clang ASan+UBSan build and tests"
+  CC=clang CXX=clang++ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DRTPRO_SANITIZE=address,undefined -DRTPRO_FUZZ=ON -DRTPRO_BUILD_BENCHMARKS=OFF
+  cmake --build build-asan
+  [[ $stages != *,2,* ]] || ctest --test-dir build-asan --output-on-failure
+fi
+
+if [[ $stages == *,3,* ]]; then
+  stage "3: fuzz smoke run, ${fuzz_seconds} s per target"
+  for pair in "scene obj" "ply image"; do
+    # shellcheck disable=SC2086
+    scripts/fuzz.sh --build build-asan --seconds "$fuzz_seconds" --parallel $pair
+  done
+fi
+stage "done"

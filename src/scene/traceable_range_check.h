@@ -1,0 +1,20 @@
+#pragma once
+// One notion of valid geometry for both backends, checked when the render scene is built: every
+// top-level geometry and every placed instance lies strictly within ±kMaxTraceableMagnitude, and
+// every ray that can arise in the scene stays within that range when an instance carries it into
+// its object space. Debian's Embree aborts the process (an assertion) on a ray beyond ~1.8e18 and
+// silently drops primitives beyond it; the native backend would render them. Refusing here, with
+// the scene file's line and column, makes both backends answer the same input error.
+#include "rtpro/core/error.h"
+#include "rtpro/scene/description.h"
+#include "rtpro/scene/render_scene.h"
+
+#include <span>
+
+namespace rtpro {
+
+// `where[g]` is the scene-file location of scene.top.geometries[g]. Throws InputError there.
+void check_traceable_range(const RenderScene& scene, std::span<const SourceLocation> where, const CameraDesc& camera,
+                           const std::vector<LightDesc>& lights);
+
+}  // namespace rtpro

@@ -1,0 +1,124 @@
+#!/usr/bin/env python3
+"""Regenerates the seed corpora in tests/fuzz/corpus/ from the shipped scenes and meshes plus
+hand-made hostile cases. The files are committed; run this only to change the seeds.
+Image seeds are written with OpenImageIO's oiiotool (package openimageio-tools)."""
+import os
+import pathlib
+import shutil
+import struct
+import subprocess
+import tempfile
+import zlib
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+CORPUS = ROOT / "tests" / "fuzz" / "corpus"
+
+
+def put(target, name, data):
+    folder = CORPUS / target
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / name).write_bytes(data if isinstance(data, bytes) else data.encode())
+
+
+def scene_seeds():
+    for scene in sorted((ROOT / "scenes").glob("*.yaml")):
+        if scene.stem == "many_spheres":  # 10,000 sphere entries teach the fuzzer nothing new
+            continue
+        # Mesh references point at the fuzz workspace's tiny meshes.
+        text = scene.read_text()
+        text = text.replace("meshes/shapes.obj", "tiny.obj").replace("../assets/dragon.ply", "tiny.ply")
+        text = text.replace("../assets/dragon.obj", "tiny.obj")
+        put("scene", "shipped-" + scene.stem + ".yaml", text)
+    base = "rtpro: 1\ncamera: {position: [0, 0, -5], look_at: [0, 0, 0], resolution: [8, 8]}\n"
+    put("scene", "minimal.yaml", base)
+    put("scene", "meshes.yaml", base + "world:\n  - {type: mesh, file: tiny.obj}\n  - {type: mesh, file: tiny.ply, material: default}\n")
+    # Nested instances that multiply: 10 levels of 10 instances each is 10^10 after flattening.
+    levels = ["objects:", "  l0: [{type: sphere}]"]
+    for i in range(1, 11):
+        levels.append(f"  l{i}: [" + ", ".join(f"{{type: instance, object: l{i-1}}}" for _ in range(10)) + "]")
+    put("scene", "hostile-instance-bomb.yaml", base + "\n".join(levels) + "\nworld: [{type: instance, object: l10}]\n")
+    # Accumulated scale 1e-18: six nested scale 0.001.
+    nested = ["objects:", "  s0: [{type: sphere}]"]
+    for i in range(1, 7):
+        nested.append(f"  s{i}: [{{type: instance, object: s{i-1}, transform: {{scale: 0.001}}}}]")
+    put("scene", "hostile-tiny-scale.yaml", base + "\n".join(nested) + "\nworld: [{type: instance, object: s6}]\n")
+    put("scene", "hostile-alias-bomb.yaml", base + "a: &a [{type: sphere}, {type: sphere}]\n"
+        + "".join(f"b{i}: &b{i} [*{'a' if i == 0 else 'b' + str(i-1)}, *{'a' if i == 0 else 'b' + str(i-1)}]\n" for i in range(30)))
+    put("scene", "hostile-deep-nesting.yaml", base + "world: " + "[" * 200 + "]" * 200 + "\n")
+    put("scene", "hostile-huge-resolution.yaml", "#--set camera.resolution=[65536,4096]\n#--set render.spp=65536\n" + base)
+    put("scene", "hostile-set-paths.yaml", "#--set world.0.radius=2\n#--set lights.0=7\n#--set a.b.c.d.e=[1,2]\n#--set =\n" + base + "world: [{type: sphere}]\n")
+    put("scene", "hostile-big-numbers.yaml", base + "render: {seed: 18446744073709551616, spp: 4294967297}\nworld: [{type: sphere, radius: 1e999, center: [.nan, .inf, -0]}]\n")
+    put("scene", "hostile-tags.yaml", "--- !!map\nrtpro: !!int 1\n...\n---\nsecond: document\n")
+    put("scene", "hostile-binary.yaml", bytes(range(256)) * 2)
+    put("scene", "hostile-cycle.yaml", base + "objects:\n  a: [{type: instance, object: b}]\n  b: [{type: instance, object: a}]\nworld: [{type: instance, object: a}]\n")
+    put("scene", "hostile-far-vertex.yaml", base + "objects:\n  m: [{type: mesh, file: tiny.obj}]\nworld: [{type: instance, object: m, transform: {scale: 1e9, translate: [1e9, 1e9, 1e9]}}]\n")
+
+
+def obj_seeds():
+    obj = (ROOT / "scenes/meshes/shapes.obj").read_text().replace("mtllib shapes.mtl", "mtllib model.mtl")
+    mtl = (ROOT / "scenes/meshes/shapes.mtl").read_text()
+    put("obj", "shipped-shapes.obj", obj + "\n#---mtl---\n" + mtl)
+    put("obj", "shipped-shapes-no-mtl.obj", obj)
+    tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
+    put("obj", "triangle.obj", tri + "f 1 2 3\n")
+    put("obj", "all-index-forms.obj", tri + "vt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\nf 1//1 2//1 3//1\nf -3 -2 -1\nf 1/1 2/1 3/1\n")
+    put("obj", "hostile-indices.obj", tri + "f 1 2 999\nf -1000000 -6 -7\nf 0 1 2\nf 4294967296 1 2\n")
+    put("obj", "hostile-numbers.obj", "v 1e30 0 0\nv abc 0 0\nv 1,5 0 0\nv 1e16 0 0\nv 1e17 0 0\nv nan inf -inf\nvw 0 1e30 0.5\n" + "v " + "9" * 5000 + " 0 0\n")
+    put("obj", "hostile-unknown-statements.obj", "".join(f"kw{i} x\n" for i in range(2000)) + tri + "f 1 2 3\n")
+    put("obj", "hostile-mtllib-escape.obj", "mtllib ../../../../etc/passwd\nmtllib /dev/zero\nmtllib model.mtl model.mtl\n" + tri + "usemtl nope\nf 1 2 3\n#---mtl---\nnewmtl a\nKd 1e999 -1 nan\nNs -5\nmap_Kd /etc/passwd\n")
+    put("obj", "hostile-ngon.obj", "".join(f"v {i} {i*i % 7} 0\n" for i in range(300)) + "f " + " ".join(str(i + 1) for i in range(300)) + "\n")
+    put("obj", "hostile-binary.obj", bytes(range(256)) + b"\nv \x00 1 2\nf \xff\n")
+    put("obj", "hostile-continuation.obj", "v 0 \\\n0 0\nv 1 0 0\nv 0 1 0\r\nf 1 2 \\\n3\n")
+
+
+def ply(header_lines, body):
+    return ("ply\n" + "\n".join(header_lines) + "\nend_header\n").encode() + body
+
+
+def ply_seeds():
+    vertex_props = ["property float x", "property float y", "property float z"]
+    face = ["element face 1", "property list uchar int vertex_indices"]
+    put("ply", "ascii.ply", ply(["format ascii 1.0", "element vertex 3"] + vertex_props + face, b"0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"))
+    put("ply", "ascii-quad.ply", ply(["format ascii 1.0", "comment a quad", "element vertex 4"] + vertex_props + ["property float nx", "property uchar red"] + face[:1] + [face[1]], b"0 0 0 1 255\n1 0 0 1 0\n1 1 0 1 0\n0 1 0 1 0\n4 0 1 2 3\n"))
+    verts = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)
+    put("ply", "binary-le.ply", ply(["format binary_little_endian 1.0", "element vertex 3"] + vertex_props + face, verts + struct.pack("<B3i", 3, 0, 1, 2)))
+    put("ply", "binary-be.ply", ply(["format binary_big_endian 1.0", "element vertex 3"] + vertex_props + face, struct.pack(">9f", 0, 0, 0, 1, 0, 0, 0, 1, 0) + struct.pack(">B3i", 3, 0, 1, 2)))
+    put("ply", "dragon-like.ply", ply(["format binary_little_endian 1.0", "element vertex 3"] + vertex_props + ["property float confidence", "property float intensity", "element face 1", "property list uchar int vertex_indices"], struct.pack("<15f", 0, 0, 0, 1, 1, 1, 0, 0, 1, 1, 0, 1, 0, 1, 1) + struct.pack("<B3i", 3, 0, 1, 2)))
+    put("ply", "hostile-huge-counts.ply", ply(["format binary_little_endian 1.0", "element vertex 4294967295"] + vertex_props + ["element face 4294967295", "property list uint int vertex_indices"], verts))
+    put("ply", "hostile-list-count.ply", ply(["format binary_little_endian 1.0", "element vertex 3"] + vertex_props + ["element face 1", "property list uint int vertex_indices"], verts + struct.pack("<I", 0xFFFFFFFF)))
+    put("ply", "hostile-indices.ply", ply(["format ascii 1.0", "element vertex 3"] + vertex_props + face, b"0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n3 -1 0 1\n"))
+    put("ply", "hostile-nan.ply", ply(["format binary_little_endian 1.0", "element vertex 3"] + vertex_props + face, struct.pack("<9I", 0x7fc00000, 0, 0, 0x7f800000, 0, 0, 0, 0x5f800000, 0) + struct.pack("<B3i", 3, 0, 1, 2)))
+    put("ply", "hostile-header.ply", b"ply\nformat ascii 2.0\nelement vertex -1\nproperty list list float x\nelement\nend_header\n")
+
+
+def image_seeds(work):
+    selector = {".exr": 0, ".png": 1, ".tif": 2, ".jpg": 3, ".hdr": 4, ".pfm": 5, ".ppm": 6, ".bmp": 7, ".tga": 8}
+    for extension, index in selector.items():
+        if extension == ".pfm":  # oiiotool cannot write PFM: a 2x2 RGB one by hand
+            put("image", "small.pfm", bytes([index]) + b"PF\n2 2\n-1.0\n" + struct.pack("<12f", *range(12)))
+            continue
+        path = pathlib.Path(work) / ("seed" + extension)
+        subprocess.run(["oiiotool", "--pattern", "fill:top=0.1,0.5,0.9:bottom=1,0.2,0", "5x4", "3", "-o", str(path)], check=True)
+        put("image", "small" + extension, bytes([index]) + path.read_bytes())
+    path = pathlib.Path(work) / "aovs.exr"
+    subprocess.run(["oiiotool", "--pattern", "constant:color=0.5,0.25,1,0.5,2", "3x2", "5", "--chnames", "R,G,B,A,depth.Z", "-o", str(path)], check=True)
+    put("image", "channels.exr", bytes([0]) + path.read_bytes())
+    # A valid PNG signature and header declaring 65535 x 65535 pixels, and nothing else.
+    ihdr = struct.pack(">IIBBBBB", 65535, 65535, 8, 2, 0, 0, 0)
+    png = b"\x89PNG\r\n\x1a\n" + struct.pack(">I", len(ihdr)) + b"IHDR" + ihdr + struct.pack(">I", zlib.crc32(b"IHDR" + ihdr))
+    put("image", "hostile-png-huge-header.png", bytes([1]) + png)
+    put("image", "hostile-pfm-huge.pfm", bytes([5]) + b"PF\n65536 65536\n-1.0\n" + b"\0" * 64)
+    put("image", "hostile-ppm-huge.ppm", bytes([6]) + b"P6\n100000 100000\n255\n" + b"\0" * 64)
+    put("image", "hostile-truncated.exr", bytes([0]) + (CORPUS / "image" / "small.exr").read_bytes()[:120])
+
+
+if __name__ == "__main__":
+    for target in ("scene", "obj", "ply", "image"):
+        shutil.rmtree(CORPUS / target, ignore_errors=True)
+    scene_seeds()
+    obj_seeds()
+    ply_seeds()
+    with tempfile.TemporaryDirectory() as work:
+        image_seeds(work)
+    for target in sorted(os.listdir(CORPUS)):
+        print(target, len(os.listdir(CORPUS / target)), "seeds")

@@ -1,0 +1,180 @@
+// Small hostile inputs through the real binary: each must be answered with a clear message and
+// the right exit code, within 2 s and 500 MB of what rtpro's start-up itself costs (issue 12's
+// caps; start-up is measured, not guessed, so a slow or sanitizer build is judged fairly).
+#include "capped_run.h"
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace rtpro::test {
+namespace {
+
+constexpr double kExtraSeconds = 2.0;
+constexpr double kExtraMegabytes = 500.0;
+const std::string kCamera = "camera: {position: [0, 0, -5], look_at: [0, 0, 0], resolution: [16, 16]}\n";
+
+std::string rtpro() { return rtpro_executable().string(); }
+
+// Exit code `expected`, every piece of `says` in the message, and the caps.
+void expect_answer(const CappedRun& run, int expected, const std::vector<std::string>& says) {
+  EXPECT_FALSE(run.killed) << "no answer within the kill limit:\n" << run.output;
+  EXPECT_EQ(run.exit_code, expected) << run.output;
+  for (const std::string& text : says) EXPECT_NE(run.output.find(text), std::string::npos) << "missing '" << text << "' in:\n" << run.output;
+  const CappedRun& startup = startup_cost();
+  EXPECT_LT(run.seconds, startup.seconds + kExtraSeconds) << "start-up alone took " << startup.seconds << " s\n" << run.output;
+  EXPECT_LT(run.peak_rss_mb, startup.peak_rss_mb + kExtraMegabytes)
+      << "start-up alone used " << startup.peak_rss_mb << " MB\n" << run.output;
+}
+
+// Ten levels of ten instances: 10^10 after flattening, from about 1 KB of YAML.
+std::filesystem::path instance_bomb() {
+  std::string text = "rtpro: 1\n" + kCamera + "objects:\n  l0: [{type: sphere}]\n";
+  for (int level = 1; level <= 10; ++level) {
+    text += "  l" + std::to_string(level) + ": [";
+    for (int i = 0; i < 10; ++i) text += std::string(i ? ", " : "") + "{type: instance, object: l" + std::to_string(level - 1) + "}";
+    text += "]\n";
+  }
+  return write_file("bomb.yaml", text + "world: [{type: instance, object: l10}]\n");
+}
+
+TEST(HostileInput, NestedInstancesThatMultiplyAreRefusedBeforeFlattening) {
+  scratch_dir();
+  const auto scene = instance_bomb();
+  // The memory budget notices first; without one (--max-memory 0) the structural limit does, at
+  // the world instance whose subtree crosses it.
+  expect_answer(run_capped({rtpro(), "info", scene.string()}), 2,
+                {"bomb.yaml:", "10000000000 after flattening", "--max-memory"});
+  expect_answer(run_capped({rtpro(), "render", scene.string(), "-o", (scene.parent_path() / "x.png").string()}), 2,
+                {"10000000000 after flattening"});
+  expect_answer(run_capped({rtpro(), "info", scene.string(), "--max-memory", "0"}), 2,
+                {"bomb.yaml:15:", "instancing expands to 10000000000 instances", "the limit is 10000000"});
+  EXPECT_FALSE(std::filesystem::exists(scene.parent_path() / "x.png"));
+}
+
+TEST(HostileInput, InstancesWithinTheCountButOverTheMemoryBudgetNameTheBudget) {
+  scratch_dir();
+  // 4 x 10^6 instances: under the 10^7 structural limit, 3.8 GiB estimated, over --max-memory 512.
+  std::string text = "rtpro: 1\n" + kCamera + "objects:\n  a: [{type: sphere}]\n";
+  text += "  b: [" + std::string("{type: instance, object: a}, ") + "{type: instance, object: a}]\n";
+  text += "  c: [{type: instance, object: b}, {type: instance, object: b}, {type: instance, object: b}, {type: instance, object: b}]\n";
+  text += "  d: [" ;
+  for (int i = 0; i < 500; ++i) text += std::string(i ? ", " : "") + "{type: instance, object: c}";
+  text += "]\n  e: [";
+  for (int i = 0; i < 1000; ++i) text += std::string(i ? ", " : "") + "{type: instance, object: d}";
+  text += "]\nworld: [{type: instance, object: e}]\n";
+  const auto scene = write_file("wide.yaml", text);
+  expect_answer(run_capped({rtpro(), "info", scene.string(), "--max-memory", "512"}), 2,
+                {"memory budget", "--max-memory 512", "4000000 after flattening"});
+}
+
+TEST(HostileInput, EndlessAndBlockingSourcesAreRefusedByType) {
+  const auto dir = scratch_dir();
+  expect_answer(run_capped({rtpro(), "info", "/dev/zero"}), 2, {"/dev/zero", "character device"});
+  const auto fifo = dir / "scene.yaml";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  expect_answer(run_capped({rtpro(), "render", fifo.string(), "-o", (dir / "x.png").string()}), 2, {"FIFO"});
+  expect_answer(run_capped({rtpro(), "info", dir.string()}), 2, {"directory"});
+}
+
+TEST(HostileInput, AHundredMegabyteLineIsRefusedBeforeParsing) {
+  scratch_dir();
+  const auto scene = write_file("long.yaml", "rtpro: 1\n" + kCamera + "x: " + std::string(100 << 20, 'a') + "\n");
+  expect_answer(run_capped({rtpro(), "info", scene.string()}), 2, {"long.yaml:3:1048577:", "longer than"});
+  std::filesystem::remove(scene);
+}
+
+TEST(HostileInput, ResolutionsThatWouldTakeGigabytesAreRefusedUpFront) {
+  const auto dir = scratch_dir();
+  const auto scene = write_file("s.yaml", "rtpro: 1\n" + kCamera);
+  const std::string out = (dir / "x.exr").string();
+  expect_answer(run_capped({rtpro(), "render", scene.string(), "-o", out, "--set", "camera.resolution=[65536,4096]"}),
+                2, {"memory budget", "image buffers", "--max-memory"});
+  expect_answer(run_capped({rtpro(), "render", scene.string(), "-o", out, "--size", "16384x16384", "--aov",
+                            "albedo,normal,depth,object-id"}),
+                2, {"11 channels"});
+  expect_answer(run_capped({rtpro(), "render", scene.string(), "-o", out, "--size", "4000x4000", "--max-memory", "64"}),
+                2, {"--max-memory 64"});
+  EXPECT_FALSE(std::filesystem::exists(out));
+  const CappedRun info = run_capped({rtpro(), "info", scene.string(), "--set", "camera.resolution=[8000,6000]"});
+  EXPECT_EQ(info.exit_code, 0) << info.output;
+  EXPECT_NE(info.output.find("estimate     1.1 GiB"), std::string::npos) << info.output;
+}
+
+TEST(HostileInput, CommandLineNumbersThatWouldWrapAreRejected) {
+  const auto dir = scratch_dir();
+  const auto scene = write_file("s.yaml", "rtpro: 1\n" + kCamera);
+  const std::string out = (dir / "x.png").string();
+  expect_answer(run_capped({rtpro(), "render", scene.string(), "-o", out, "--size", "4294967297x1"}), 2,
+                {"--size 4294967297x1", "65536"});
+  expect_answer(run_capped({rtpro(), "render", scene.string(), "-o", out, "--seed", "-1"}), 2,
+                {"--seed -1", "non-negative integer"});
+  expect_answer(run_capped({rtpro(), "render", scene.string(), "-o", out, "--spp", "4294967296"}), 2, {"--spp"});
+  expect_answer(run_capped({rtpro(), "render", scene.string(), "-o", out, "--max-memory", "-1"}), 2, {"--max-memory"});
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// Six nested `scale: 0.001` make rays inside the innermost object 1e18 times longer: Embree
+// aborted the process on them. Both backends now refuse the scene where it is built.
+TEST(HostileInput, AScaleEmbreeCannotTraceIsAnInputErrorForBothBackends) {
+  const auto dir = scratch_dir();
+  std::string text = "rtpro: 1\n" + kCamera + "objects:\n  s0: [{type: sphere}]\n";
+  for (int i = 1; i <= 6; ++i)
+    text += "  s" + std::to_string(i) + ": [{type: instance, object: s" + std::to_string(i - 1) + ", transform: {scale: 0.001}}]\n";
+  const auto scene = write_file("tiny.yaml", text + "world: [{type: instance, object: s6}]\n");
+  for (const char* backend : {"embree", "native"}) {
+    expect_answer(run_capped({rtpro(), "render", scene.string(), "-o", (dir / "x.png").string(), "--backend", backend}),
+                  2, {"tiny.yaml:5:", "object space"});
+  }
+  expect_answer(run_capped({rtpro(), "crosscheck", scene.string(), "--rays", "1000"}), 2, {"tiny.yaml:5:"});
+}
+
+TEST(HostileInput, AVertexAtTheCoordinateLimitIsTheSameInputErrorForBothBackends) {
+  const auto dir = scratch_dir();
+  write_file("far.obj", "v 1e16 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n");
+  const auto scene = write_file("far.yaml", "rtpro: 1\n" + kCamera + "world:\n  - {type: mesh, file: far.obj}\n");
+  std::string messages[2];
+  int i = 0;
+  for (const char* backend : {"embree", "native"}) {
+    const CappedRun run = run_capped({rtpro(), "render", scene.string(), "-o", (dir / "x.png").string(), "--backend", backend});
+    expect_answer(run, 2, {"far.yaml:4:", "1e+16"});
+    messages[i++] = run.output;
+  }
+  EXPECT_EQ(messages[0], messages[1]);
+}
+
+TEST(HostileInput, ImagesWhoseHeadersDeclareGigabytesAreRefusedFromTheHeader) {
+  const auto dir = scratch_dir();
+  const auto regression = source_dir() / "tests/fuzz/regressions/image/exr-attribute-claims-2gb";
+  std::ifstream in(regression, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto exr = write_file("bad.exr", bytes.substr(1));  // the fuzz input's first byte picks the extension
+  const auto good = dir / "good.exr";
+  ASSERT_EQ(run_capped({rtpro(), "render", (scenes_dir() / "demo.yaml").string(), "-o", good.string(), "--size", "8x8",
+                        "--spp", "1", "-q"}).exit_code, 0);
+  expect_answer(run_capped({rtpro(), "compare", good.string(), exr.string()}), 2, {"bad.exr", "attribute"});
+  // A PNG signature and header declaring 65535 x 65535 pixels, nothing more.
+  const unsigned char png[] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a, 0, 0, 0, 13, 'I', 'H', 'D', 'R', 0, 0, 0xff, 0xff,
+                               0, 0, 0xff, 0xff, 8, 2, 0, 0, 0, 0x39, 0x67, 0x4e, 0x07};
+  const auto huge = write_file("huge.png", std::string(reinterpret_cast<const char*>(png), sizeof png));
+  expect_answer(run_capped({rtpro(), "compare", good.string(), huge.string()}), 2, {"huge.png"});
+}
+
+// 100,000 distinct unknown OBJ keywords (1 MB): the OBJ reader's warning bookkeeping is quadratic
+// (55 s here). The fix belongs to the OBJ reader's owner (issue 13); enable this test with it.
+TEST(HostileInput, DISABLED_AnObjFullOfUnknownStatementsIsReadInLinearTime) {
+  scratch_dir();
+  std::string obj;
+  for (int i = 0; i < 100000; ++i) obj += "kw" + std::to_string(i) + " x\n";
+  write_file("unknown.obj", obj + "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const auto scene = write_file("unknown.yaml", "rtpro: 1\n" + kCamera + "world: [{type: mesh, file: unknown.obj}]\n");
+  expect_answer(run_capped({rtpro(), "info", scene.string()}), 0, {"ignored"});
+}
+
+}  // namespace
+}  // namespace rtpro::test
