@@ -51,7 +51,12 @@ add_library(rtpro_image_oiio MODULE ${image_src}/image_plugin.cpp)
 target_include_directories(rtpro_image_oiio PRIVATE ${image_src})
 target_compile_definitions(rtpro_image_oiio PRIVATE RTPRO_VERSION="${PROJECT_VERSION}")
 target_link_libraries(rtpro_image_oiio PRIVATE rtpro_image)
-target_link_options(rtpro_image_oiio PRIVATE -Wl,--exclude-libs,ALL -Wl,--no-undefined)
+target_link_options(rtpro_image_oiio PRIVATE -Wl,--exclude-libs,ALL)
+# Every symbol resolved inside the plugin, except in a sanitizer build: there the sanitizer
+# runtimes live in the executable that loads it.
+if(NOT RTPRO_SANITIZE)
+  target_link_options(rtpro_image_oiio PRIVATE -Wl,--no-undefined)
+endif()
 set_target_properties(rtpro_image_oiio PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR})
 
 add_library(rtpro_image_loader STATIC ${image_src}/image_layer.cpp)
