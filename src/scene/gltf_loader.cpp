@@ -8,6 +8,9 @@
 #include "gltf_nodes.h"
 #include "mapped_file.h"
 
+// tinygltf parses its JSON with nlohmann-json (a header-only library it requires); the failure
+// diagnosis below reads the same JSON with it.
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -114,12 +117,56 @@ std::string_view json_text(std::string_view bytes, bool binary) {
   return bytes.substr(20, std::min<std::size_t>(length, bytes.size() - 20));
 }
 
+bool is_geometry_extension(const std::string& name) {
+  return std::find(std::begin(kGeometryExtensions), std::end(kGeometryExtensions), name) != std::end(kGeometryExtensions);
+}
+
+// tinygltf's errors name no JSON path ("File not found : a.bin"). When it fails, the JSON is
+// read again (only then) to name the element at fault where that can be found.
+std::string diagnose(std::string_view json_text, const Confinement& confinement, const fs::path& folder) {
+  const nlohmann::json json = nlohmann::json::parse(json_text.begin(), json_text.end(), nullptr, false);
+  if (json.is_discarded() || !json.is_object()) return {};
+  if (const auto asset = json.find("asset"); asset != json.end() && asset->is_object()) {
+    const auto version = asset->find("version");
+    if (version == asset->end() || !version->is_string())
+      return "asset.version: missing; rtpro reads glTF 2.0 files, whose asset.version is \"2.0\"";
+    if (version->get<std::string>().rfind("2.", 0) != 0)
+      return "asset.version: " + ascii::quoted(version->get<std::string>()) + ": rtpro reads glTF 2.0 files only";
+  } else {
+    return "asset: missing; a glTF 2.0 file needs asset.version \"2.0\" (glTF 1.0 files are not read)";
+  }
+  if (const auto required = json.find("extensionsRequired"); required != json.end() && required->is_array())
+    for (std::size_t i = 0; i < required->size(); ++i)
+      if ((*required)[i].is_string() && is_geometry_extension((*required)[i].get<std::string>()))
+        return "extensionsRequired[" + std::to_string(i) + "]: the file needs " + (*required)[i].get<std::string>() +
+               ", which rtpro does not support";
+  if (const auto buffers = json.find("buffers"); buffers != json.end() && buffers->is_array()) {
+    for (std::size_t i = 0; i < buffers->size(); ++i) {
+      const nlohmann::json& buffer = (*buffers)[i];
+      const auto uri = buffer.is_object() ? buffer.find("uri") : buffer.end();
+      if (uri == buffer.end() || !uri->is_string() || uri->get<std::string>().rfind("data:", 0) == 0) continue;
+      const std::string name = uri->get<std::string>();
+      const std::string path = (folder / name).string();
+      const std::string where = "buffers[" + std::to_string(i) + "].uri: ";
+      if (!inside(confinement, path)) return where + ascii::quoted(name) + " leads outside the glTF's folder";
+      std::error_code error;
+      if (!fs::is_regular_file(path, error)) return where + ascii::quoted(name) + " not found (looked for '" + path + "')";
+    }
+  }
+  return {};
+}
+
 tinygltf::Model parse(const fs::path& file, std::vector<std::string>& warnings) {
   const std::string name = file.string();
   const SourceLocation where{name};
   const MappedFile bytes(file);
   if (bytes.size() >= (std::size_t(1) << 32)) throw InputError(where, "the file is 4 GiB or larger, beyond what glTF allows");
   const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  if (binary && bytes.size() >= 8) {
+    std::uint32_t version = 0;
+    std::memcpy(&version, bytes.data() + 4, 4);
+    if (version != 2) throw InputError(where, "GLB container version " + std::to_string(version) + ": rtpro reads glTF 2.0 files only");
+  }
   if (json_depth(json_text(bytes.text(), binary), kMaxGltfJsonDepth) > kMaxGltfJsonDepth)
     throw InputError(where, "the JSON nests deeper than " + std::to_string(kMaxGltfJsonDepth) + " levels");
 
@@ -146,17 +193,17 @@ tinygltf::Model parse(const fs::path& file, std::vector<std::string>& warnings) 
     return out;
   };
   if (!ok) {
+    if (const std::string diagnosis = diagnose(json_text(bytes.text(), binary), confinement, file.parent_path()); !diagnosis.empty())
+      throw InputError(where, diagnosis);
     std::string message;
     for (const std::string& line : lines(err)) message += (message.empty() ? "" : "; ") + line;
-    if (model.asset.version.rfind("1.", 0) == 0 || err.find("version") != std::string::npos)
-      message = "not a glTF 2.0 file (" + message + ")";
-    throw InputError(where, message.empty() ? "tinygltf could not read the file" : message);
+    throw InputError(where, message.empty() ? "tinygltf could not read the file" : "tinygltf: " + message);
   }
   for (const std::string& line : lines(warn)) warnings.push_back(name + ": " + line);
   if (model.asset.version.rfind("2.", 0) != 0)
     throw InputError(where, "asset.version: " + ascii::quoted(model.asset.version) + ": rtpro reads glTF 2.0 files only");
   for (const std::string& required : model.extensionsRequired) {
-    if (std::find(std::begin(kGeometryExtensions), std::end(kGeometryExtensions), required) != std::end(kGeometryExtensions))
+    if (is_geometry_extension(required))
       throw InputError(where, "extensionsRequired: the file needs " + required + ", which rtpro does not support");
     if (std::find(std::begin(kKnownExtensions), std::end(kKnownExtensions), required) == std::end(kKnownExtensions))
       warnings.push_back(name + ": extensionsRequired: " + required + " is not supported; the file may look wrong");

@@ -55,6 +55,7 @@ class MtlParser {
     const char* rest = skip_blanks(p + keyword.size(), end);
     if (keyword == "newmtl") return start_material(rest, end);
     if (keyword == "Kd" || keyword == "Ks" || keyword == "Ns" || keyword == "d" || keyword == "Tr" || keyword == "map_Kd") {
+      if (unnamed_) return;  // the statements of a nameless material: no face can use it
       if (!current_) fail(p, std::string(keyword) + " before any newmtl");
       if (keyword == "Kd") current_->color = colour(rest, end, keyword);
       if (keyword == "Ks") {
@@ -74,7 +75,14 @@ class MtlParser {
   void start_material(const char* p, const char* end) {
     finish_material();
     while (end != p && ascii::is_blank(end[-1])) --end;
-    if (p == end) fail(p, "newmtl needs a material name");
+    // Blender writes a bare `newmtl` (and a bare `usemtl`) for faces without a material; those
+    // faces get the default material, so this definition is not used.
+    unnamed_ = p == end;
+    if (unnamed_) {
+      library_.warnings.push_back(file_ + ":" + std::to_string(line_) +
+                                  ": newmtl without a name: ignored (faces after a bare usemtl use the default material)");
+      return;
+    }
     current_ = MaterialDesc{};
     current_->name.assign(p, end);
     ks_ = current_->specular;
@@ -158,6 +166,7 @@ class MtlParser {
   std::string file_;
   int line_ = 0;
   int material_line_ = 0;
+  bool unnamed_ = false;
   float ks_ = 0.0f, ns_ = 0.0f;  // of the current material, mapped when it is complete
   const char* line_begin_ = nullptr;
   std::optional<MaterialDesc> current_;

@@ -435,6 +435,7 @@ void choose_normals(PlyMesh& ply, NormalsMode mode, TriangleMesh& mesh, MeshLoad
 LoadedMesh load_ply_file(const std::filesystem::path& file, const MeshLoadOptions& options) {
   const MappedFile bytes(file);
   const std::string file_name = file.string();
+  if (bytes.size() == 0) throw InputError(SourceLocation{file_name}, "the file is empty");
   require_narrow_text(bytes.text().substr(0, 64), file_name, "PLY");
   const Header header = parse_header(bytes.text(), file_name);
   PlyMesh ply = read_body(bytes.text(), header, file_name);
