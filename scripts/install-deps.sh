@@ -10,7 +10,8 @@ packages=(
   libopencolorio-dev opencolorio-tools
   libgtest-dev libgmock-dev libbenchmark-dev
   libtinyobjloader-dev libcli11-dev libyaml-cpp-dev libfmt-dev libfast-float-dev
-  nlohmann-json3-dev
+  nlohmann-json3-dev libtinygltf-dev
+  assimp-testmodels
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
