@@ -51,7 +51,12 @@ nlohmann::json info_json(const std::string& file, const RenderScene& scene, cons
                       {"materials", m.stats.materials},
                       {"dropped_degenerate", m.stats.dropped_degenerate},
                       {"normals_generated", m.stats.normals_generated},
+                      {"concave_polygons", m.stats.concave_polygons},
+                      {"warnings", m.stats.warnings},
                       {"load_seconds", m.load_seconds}});
+  // An empty scene has no bounds: null, not [inf, ...] (which is not even valid JSON).
+  const nlohmann::json bounds = s.bounds.empty() ? nlohmann::json(nullptr)
+                                                 : nlohmann::json{{"lower", vec_json(s.bounds.lower)}, {"upper", vec_json(s.bounds.upper)}};
   return {{"scene", file},
           {"camera",
            {{"position", vec_json(scene.camera.position)},
@@ -68,7 +73,7 @@ nlohmann::json info_json(const std::string& file, const RenderScene& scene, cons
           {"meshes", meshes},
           {"prototypes", s.prototypes},
           {"instances", s.instances},
-          {"bounds", {{"lower", vec_json(s.bounds.lower)}, {"upper", vec_json(s.bounds.upper)}}},
+          {"bounds", bounds},
           {"memory_bytes",
            {{"geometry", s.geometry_bytes},
             {"native_bvh_estimate", s.estimated_bvh_bytes},
@@ -93,11 +98,18 @@ void print_text(const std::string& file, const RenderScene& scene, const SceneSu
               << " vertices" << (m.stats.normals_generated ? ", normals generated" : "")
               << (m.stats.dropped_degenerate ? ", " + std::to_string(m.stats.dropped_degenerate) + " degenerate dropped"
                                              : "")
+              << (m.stats.concave_polygons ? ", " + std::to_string(m.stats.concave_polygons) + " concave polygons" : "")
               << "\n";
-  std::cout << std::setprecision(3) << "bounds       [" << s.bounds.lower.x << ", " << s.bounds.lower.y << ", "
-            << s.bounds.lower.z << "] .. [" << s.bounds.upper.x << ", " << s.bounds.upper.y << ", "
-            << s.bounds.upper.z << "]\n"
-            << std::setprecision(1) << "memory       " << mib(s.geometry_bytes) << " MiB geometry + ~"
+  for (const auto& m : report.meshes)
+    for (const std::string& warning : m.stats.warnings) std::cout << "  warning    " << warning << "\n";
+  std::cout << std::setprecision(3);
+  if (s.bounds.empty()) {
+    std::cout << "bounds       none (nothing to render)\n";
+  } else {
+    std::cout << "bounds       [" << s.bounds.lower.x << ", " << s.bounds.lower.y << ", " << s.bounds.lower.z << "] .. ["
+              << s.bounds.upper.x << ", " << s.bounds.upper.y << ", " << s.bounds.upper.z << "]\n";
+  }
+  std::cout << std::setprecision(1) << "memory       " << mib(s.geometry_bytes) << " MiB geometry + ~"
             << mib(s.estimated_bvh_bytes) << " MiB native BVH (estimate)\n";
 }
 

@@ -4,6 +4,7 @@
 // newline searches look at 8 bytes at a time (SWAR), which is what makes the OBJ loader fast.
 #include <fast_float/fast_float.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -40,13 +41,45 @@ inline const char* skip_word(const char* p, const char* end) {
 // The blank-delimited word starting at p (for messages: what was found instead of a number).
 inline std::string_view word_at(const char* p, const char* end) { return {p, std::size_t(skip_word(p, end) - p)}; }
 
-// 'word', for messages.
+// Words echoed in messages are cut to this many bytes: a 10 MB token must not become a 10 MB
+// warning.
+inline constexpr std::size_t kMaxQuotedBytes = 64;
+
+// The length of the well-formed UTF-8 sequence starting text[0] (1 for printable ASCII), or 0.
+inline std::size_t utf8_sequence_length(std::string_view text) {
+  const auto lead = static_cast<unsigned char>(text[0]);
+  if (lead >= 0x20 && lead < 0x7f) return 1;
+  const std::size_t length = lead >= 0xc2 && lead <= 0xdf ? 2 : lead >= 0xe0 && lead <= 0xef ? 3
+                             : lead >= 0xf0 && lead <= 0xf4 ? 4 : 0;
+  if (length == 0 || text.size() < length) return 0;
+  for (std::size_t k = 1; k < length; ++k)
+    if ((static_cast<unsigned char>(text[k]) & 0xc0) != 0x80) return 0;
+  return length;
+}
+
+// 'word', for messages: control bytes and bytes that are not well-formed UTF-8 shown as \xNN (a
+// binary or UTF-16 file must not print raw NUL or escape bytes to a terminal), and long words cut
+// with their length given.
 inline std::string quoted(std::string_view word) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  const std::string_view shown = word.substr(0, kMaxQuotedBytes);
   std::string text;
-  text.reserve(word.size() + 2);
+  text.reserve(shown.size() + 2);
   text += '\'';
-  text += word;
+  for (std::size_t i = 0; i < shown.size();) {
+    const std::size_t length = shown[i] == '\\' ? 0 : utf8_sequence_length(shown.substr(i));
+    if (length > 0) {
+      text += shown.substr(i, length);
+      i += length;
+      continue;
+    }
+    const auto byte = static_cast<unsigned char>(shown[i++]);
+    text += "\\x";
+    text += kHex[byte >> 4];
+    text += kHex[byte & 15];
+  }
   text += '\'';
+  if (word.size() > kMaxQuotedBytes) text += " (cut: " + std::to_string(word.size()) + " bytes)";
   return text;
 }
 

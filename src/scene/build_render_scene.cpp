@@ -4,10 +4,14 @@
 #include "rtpro/core/memory_budget.h"
 #include "rtpro/scene/render_cost.h"
 #include "traceable_range_check.h"
+#include "gltf_asset.h"
+#include "gltf_loader.h"
 
 #include <chrono>
 #include <map>
+#include <memory>
 #include <optional>
+#include <tuple>
 
 namespace rtpro {
 
@@ -27,6 +31,7 @@ class RenderSceneBuilder {
     check_instance_count();
     prototype_of_object_.assign(description_.objects.size(), std::nullopt);
     add_own_shapes(description_.world, scene_.top, &top_where_);
+    place_gltfs(description_.world, Affine::identity());
     for (const InstanceDesc& instance : description_.world.instances)
       flatten_instance(instance.object, instance.transform, instance.where);
     check_traceable_range(scene_, top_where_, description_.camera, description_.lights);
@@ -78,7 +83,7 @@ class RenderSceneBuilder {
     const auto start = std::chrono::steady_clock::now();
     LoadedMesh loaded = [&] {
       try {
-        return load_mesh_file(desc.file);
+        return load_mesh_file(desc.file, MeshLoadOptions{desc.normals});
       } catch (const InputError& e) {
         if (!e.where().file.empty()) throw;
         throw InputError(desc.where, e.message());
@@ -123,17 +128,73 @@ class RenderSceneBuilder {
     return id;
   }
 
-  void flatten_instance(std::uint32_t object, const Affine& to_world, const SourceLocation& where) {
-    if (const auto prototype = prototype_of(object)) {
-      if (++flattened_ > kMaxFlattenedInstances)
-        throw InputError(where, "instancing expands to more than " + std::to_string(kMaxFlattenedInstances) +
-                                    " instances after flattening nested instances");
-      const auto inverse_transform = inverse(to_world);
-      if (!inverse_transform)
-        throw InputError(where, "instance transform (combined with its parents) is singular or not finite");
-      scene_.top.geometries.emplace_back(Instance{*prototype, to_world, *inverse_transform});
-      top_where_.push_back(where);
+  void add_instance(std::uint32_t prototype, const Affine& to_world, const SourceLocation& where) {
+    if (++flattened_ > kMaxFlattenedInstances)
+      throw InputError(where, "instancing expands to more than " + std::to_string(kMaxFlattenedInstances) +
+                                  " instances after flattening nested instances");
+    const auto inverse_transform = inverse(to_world);
+    if (!inverse_transform) throw InputError(where, "instance transform (combined with its parents) is singular or not finite");
+    scene_.top.geometries.emplace_back(Instance{prototype, to_world, *inverse_transform});
+    top_where_.push_back(where);
+  }
+
+  // A glTF file loaded once per (file, normals, material) however often it is placed: each of its
+  // meshes one prototype, each node drawing a mesh one instance.
+  struct PlacedGltf {
+    std::shared_ptr<const GltfAsset> asset;
+    std::vector<std::optional<std::uint32_t>> prototype_of_mesh;  // none for meshes without triangles
+  };
+
+  const PlacedGltf& gltf_prototypes(const GltfDesc& desc) {
+    const auto key = std::make_tuple(desc.file, int(desc.normals), desc.material);
+    if (const auto found = gltfs_.find(key); found != gltfs_.end()) return found->second;
+    const auto start = std::chrono::steady_clock::now();
+    std::shared_ptr<const GltfAsset> asset = desc.loaded;
+    if (!asset) {
+      try {
+        asset = std::make_shared<const GltfAsset>(load_gltf_file(desc.file, MeshLoadOptions{desc.normals}));
+      } catch (const InputError& e) {
+        if (!e.where().file.empty()) throw;
+        throw InputError(desc.where, e.message());
+      }
     }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (report_) report_->meshes.push_back({desc.file.string(), asset->stats, seconds});
+
+    std::vector<std::uint32_t> remap;
+    if (desc.material == kNoMaterial)
+      for (const MaterialDesc& m : asset->materials) remap.push_back(add_material(m, desc.file.filename().string() + ":" + m.name));
+    // Primitives without a material take the scene's "default", like shapes without one.
+    const auto material = [&](std::uint32_t m) { return desc.material != kNoMaterial ? desc.material : m == kNoMaterial ? 0u : remap[m]; };
+    PlacedGltf placed{asset, {}};
+    for (const TriangleMesh& source : asset->meshes) {
+      if (source.triangles.empty()) {
+        placed.prototype_of_mesh.emplace_back();
+        continue;
+      }
+      TriangleMesh mesh = source;
+      mesh.material = material(mesh.material);
+      if (desc.material != kNoMaterial) mesh.triangle_materials = {};
+      for (std::uint32_t& m : mesh.triangle_materials) m = material(m);
+      Group group;
+      group.geometries.emplace_back(std::move(mesh));
+      scene_.prototypes.push_back(std::move(group));
+      placed.prototype_of_mesh.emplace_back(static_cast<std::uint32_t>(scene_.prototypes.size() - 1));
+    }
+    return gltfs_.emplace(key, std::move(placed)).first->second;
+  }
+
+  void place_gltfs(const ObjectDesc& object, const Affine& to_world) {
+    for (const GltfDesc& desc : object.gltfs) {
+      const PlacedGltf& placed = gltf_prototypes(desc);
+      for (const GltfPlacement& p : placed.asset->placements)
+        if (const auto prototype = placed.prototype_of_mesh[p.mesh]) add_instance(*prototype, compose(to_world, p.transform), desc.where);
+    }
+  }
+
+  void flatten_instance(std::uint32_t object, const Affine& to_world, const SourceLocation& where) {
+    if (const auto prototype = prototype_of(object)) add_instance(*prototype, to_world, where);
+    place_gltfs(description_.objects[object], to_world);
     for (const InstanceDesc& nested : description_.objects[object].instances)
       flatten_instance(nested.object, compose(to_world, nested.transform), nested.where);
   }
@@ -143,6 +204,7 @@ class RenderSceneBuilder {
   SceneBuildReport* report_;
   RenderScene scene_;
   std::vector<std::optional<std::uint32_t>> prototype_of_object_;
+  std::map<std::tuple<std::filesystem::path, int, std::uint32_t>, PlacedGltf> gltfs_;
   std::size_t flattened_ = 0;
   std::vector<SourceLocation> top_where_;  // scene-file location of each top-level geometry
 };

@@ -19,7 +19,8 @@ BBox TriangleMesh::bounds() const {
 
 std::size_t TriangleMesh::memory_bytes() const {
   return vertices.capacity() * sizeof(PaddedVertex) + triangles.capacity() * sizeof(TriangleIndices) +
-         normals.capacity() * sizeof(Vec3) + triangle_materials.capacity() * sizeof(std::uint32_t);
+         normals.capacity() * sizeof(Vec3) + triangle_materials.capacity() * sizeof(std::uint32_t) +
+         uvs.capacity() * sizeof(TexCoord) + colors.capacity() * sizeof(Color);
 }
 
 }  // namespace rtpro

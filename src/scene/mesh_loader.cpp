@@ -9,12 +9,12 @@
 
 namespace rtpro {
 
-LoadedMesh load_mesh_file(const std::filesystem::path& file) {
+LoadedMesh load_mesh_file(const std::filesystem::path& file, const MeshLoadOptions& options) {
   std::string extension = file.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
-  if (extension == ".obj") return load_obj_file(file);
-  if (extension == ".ply") return load_ply_file(file);
+  if (extension == ".obj") return load_obj_file(file, options);
+  if (extension == ".ply") return load_ply_file(file, options);
   throw InputError(SourceLocation{file.string()}, "unsupported mesh format '" + extension + "': use .obj or .ply");
 }
 

@@ -3,7 +3,9 @@
 #include "rtpro/core/error.h"
 #include "ascii_scan.h"
 #include "mapped_file.h"
+#include "mesh_text_encoding.h"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <map>
@@ -25,7 +27,7 @@ struct Ignored {
 
 class MtlParser {
  public:
-  explicit MtlParser(const std::filesystem::path& file) : file_(file.string()) {}
+  explicit MtlParser(const std::filesystem::path& file) : path_(file), file_(file.string()) {}
 
   MaterialLibrary parse(std::string_view text) {
     const char* p = text.data();
@@ -40,8 +42,8 @@ class MtlParser {
     }
     finish_material();
     for (const auto& [keyword, ignored] : ignored_)
-      library_.warnings.push_back(file_ + ":" + std::to_string(ignored.first_line) + ": ignored '" + keyword +
-                                  "' (" + std::to_string(ignored.count) + " in total): rtpro reads newmtl, Kd, Ks, Ns");
+      library_.warnings.push_back(file_ + ":" + std::to_string(ignored.first_line) + ": ignored " + ascii::quoted(keyword) +
+                                  " (" + std::to_string(ignored.count) + " in total): rtpro reads newmtl, Kd, Ks, Ns, d, Tr, map_Kd");
     return std::move(library_);
   }
 
@@ -52,14 +54,18 @@ class MtlParser {
     const std::string_view keyword = word_at(p, end);
     const char* rest = skip_blanks(p + keyword.size(), end);
     if (keyword == "newmtl") return start_material(rest, end);
-    if (keyword == "Kd" || keyword == "Ks" || keyword == "Ns") {
+    if (keyword == "Kd" || keyword == "Ks" || keyword == "Ns" || keyword == "d" || keyword == "Tr" || keyword == "map_Kd") {
+      if (unnamed_) return;  // the statements of a nameless material: no face can use it
       if (!current_) fail(p, std::string(keyword) + " before any newmtl");
       if (keyword == "Kd") current_->color = colour(rest, end, keyword);
       if (keyword == "Ks") {
         const Color ks = colour(rest, end, keyword);
-        current_->specular = (ks.x + ks.y + ks.z) / 3.0f;
+        ks_ = (ks.x + ks.y + ks.z) / 3.0f;
       }
-      if (keyword == "Ns") current_->shininess = numbers(rest, end, 1, keyword).values[0];
+      if (keyword == "Ns") ns_ = numbers(rest, end, 1, keyword).values[0];
+      if (keyword == "d") current_->opacity = fraction(rest, end, keyword);
+      if (keyword == "Tr") current_->opacity = 1.0f - fraction(rest, end, keyword);
+      if (keyword == "map_Kd") texture(rest, end);
       return;
     }
     Ignored& ignored = ignored_[std::string(keyword)];
@@ -69,13 +75,28 @@ class MtlParser {
   void start_material(const char* p, const char* end) {
     finish_material();
     while (end != p && ascii::is_blank(end[-1])) --end;
-    if (p == end) fail(p, "newmtl needs a material name");
+    // Blender writes a bare `newmtl` (and a bare `usemtl`) for faces without a material; those
+    // faces get the default material, so this definition is not used.
+    unnamed_ = p == end;
+    if (unnamed_) {
+      library_.warnings.push_back(file_ + ":" + std::to_string(line_) +
+                                  ": newmtl without a name: ignored (faces after a bare usemtl use the default material)");
+      return;
+    }
     current_ = MaterialDesc{};
     current_->name.assign(p, end);
+    ks_ = current_->specular;
+    ns_ = current_->shininess;
+    material_line_ = line_;
   }
 
   void finish_material() {
     if (!current_) return;
+    current_->shininess = std::max(ns_, 1.0f);
+    current_->specular = ks_ * std::min(1.0f, ns_ / kFullHighlightNs);
+    if (current_->opacity < 1.0f)
+      library_.warnings.push_back(file_ + ":" + std::to_string(material_line_) + ": material " + ascii::quoted(current_->name) +
+                                  " is partly transparent (d " + std::to_string(current_->opacity) + "); rtpro renders it opaque");
     for (const MaterialDesc& m : library_.materials) {
       if (m.name == current_->name) {
         library_.warnings.push_back(file_ + ": material '" + m.name + "' is defined twice; the first one is used");
@@ -85,6 +106,29 @@ class MtlParser {
     }
     library_.materials.push_back(std::move(*current_));
     current_.reset();
+  }
+
+  float fraction(const char* p, const char* end, std::string_view keyword) {
+    const float value = numbers(p, end, 1, keyword).values[0];
+    if (value > 1.0f) fail(p, std::string(keyword) + " must be from 0 to 1, found " + quoted(word_at(p, end)));
+    return value;
+  }
+
+  // `map_Kd [-options ...] file`: the file is the last word.
+  void texture(const char* p, const char* end) {
+    while (end != p && ascii::is_blank(end[-1])) --end;
+    const char* name = end;
+    while (name != p && !ascii::is_blank(name[-1])) --name;
+    const std::string_view written(name, std::size_t(end - name));
+    if (written.empty()) fail(p, "map_Kd needs a file name");
+    const std::filesystem::path relative(written);
+    const std::filesystem::path normal = relative.lexically_normal();
+    if (relative.is_absolute() || relative.has_root_name() || normal.empty() || *normal.begin() == "..") {
+      library_.warnings.push_back(file_ + ":" + std::to_string(line_) + ": texture " + quoted(written) +
+                                  " is not inside the material library's folder; ignored");
+      return;
+    }
+    current_->color_texture = path_.parent_path() / normal;
   }
 
   // "r g b", or a single "r" meaning grey as the MTL specification allows.
@@ -118,8 +162,12 @@ class MtlParser {
     throw InputError(SourceLocation{file_, line_, int(at - line_begin_) + 1}, message);
   }
 
+  std::filesystem::path path_;
   std::string file_;
   int line_ = 0;
+  int material_line_ = 0;
+  bool unnamed_ = false;
+  float ks_ = 0.0f, ns_ = 0.0f;  // of the current material, mapped when it is complete
   const char* line_begin_ = nullptr;
   std::optional<MaterialDesc> current_;
   std::map<std::string, Ignored> ignored_;  // ordered: warnings come out the same every time
@@ -130,7 +178,8 @@ class MtlParser {
 
 MaterialLibrary parse_mtl_file(const std::filesystem::path& file) {
   const MappedFile bytes(file);
-  return MtlParser(file).parse(bytes.text());
+  require_narrow_text(bytes.text(), file.string(), "MTL");
+  return MtlParser(file).parse(without_utf8_bom(bytes.text()));
 }
 
 }  // namespace rtpro

@@ -53,66 +53,123 @@ class CornerVertices {
   std::unordered_map<std::uint64_t, std::uint32_t> others_;
 };
 
-std::vector<PaddedVertex> gather_positions(const std::vector<PaddedVertex>& positions,
-                                           const std::vector<std::uint32_t>& position_of) {
+// Shading vertices: one per (position, normal source), the first step of assembly. `position_of`
+// is empty when they are the file's positions themselves.
+struct ShadingVertices {
+  std::vector<std::uint32_t> position_of;
+  std::vector<Vec3> normals;  // per shading vertex; empty for a flat mesh
+  std::uint32_t position(std::uint32_t v) const { return position_of.empty() ? v : position_of[v]; }
+  std::size_t size(std::size_t positions) const { return position_of.empty() ? positions : position_of.size(); }
+};
+
+std::vector<PaddedVertex> gather_positions(const std::vector<PaddedVertex>& positions, const ShadingVertices& shading,
+                                           std::size_t count) {
   std::vector<PaddedVertex> vertices;
-  reserve_large(vertices, position_of.size());
-  for (std::uint32_t p : position_of) vertices.push_back(positions[p]);
+  reserve_large(vertices, count);
+  for (std::uint32_t v = 0; v < count; ++v) vertices.push_back(positions[shading.position(v)]);
   return vertices;
 }
 
 // Every corner keyed by (position, file normal): the normals come straight from the file.
-void assemble_with_file_normals(MeshParts& parts, TriangleMesh& mesh) {
+ShadingVertices key_by_file_normals(MeshParts& parts, std::vector<TriangleIndices>& triangles) {
   CornerVertices corners(parts.positions.size());
-  mesh.triangles = std::move(parts.triangle_positions);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    TriangleIndices& tri = mesh.triangles[t];
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    TriangleIndices& tri = triangles[t];
     const TriangleIndices& n = parts.triangle_normals[t];
     tri = {corners.shared(tri.v0, n.v0), corners.shared(tri.v1, n.v1), corners.shared(tri.v2, n.v2)};
   }
-  mesh.vertices = gather_positions(parts.positions, corners.position_of);
-  mesh.normals.reserve(corners.attribute_of.size());
-  for (std::uint32_t n : corners.attribute_of) mesh.normals.push_back(unit_or(parts.normals[n], Vec3(0, 0, 1)));
+  ShadingVertices shading;
+  shading.normals.reserve(corners.attribute_of.size());
+  for (std::uint32_t n : corners.attribute_of) shading.normals.push_back(unit_or(parts.normals[n], Vec3(0, 0, 1)));
+  shading.position_of = std::move(corners.position_of);
+  return shading;
 }
 
-// Corners keyed by (position, smoothing group); flat triangles get vertices of their own.
-void assemble_by_smoothing_group(MeshParts& parts, TriangleMesh& mesh) {
+// Corners keyed by (position, smoothing group); flat triangles get vertices of their own, so
+// the area-weighted normal of each of them is its face normal.
+ShadingVertices key_by_smoothing_group(MeshParts& parts, std::vector<TriangleIndices>& triangles) {
   CornerVertices corners(parts.positions.size());
-  mesh.triangles = std::move(parts.triangle_positions);
   std::size_t run = 0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
     while (run + 1 < parts.runs.size() && parts.runs[run + 1].first_triangle <= t) ++run;
     const std::uint32_t group = parts.runs[run].smoothing;
-    TriangleIndices& tri = mesh.triangles[t];
+    TriangleIndices& tri = triangles[t];
     if (group == kFlat) {
       tri = {corners.unshared(tri.v0, group), corners.unshared(tri.v1, group), corners.unshared(tri.v2, group)};
     } else {
       tri = {corners.shared(tri.v0, group), corners.shared(tri.v1, group), corners.shared(tri.v2, group)};
     }
   }
-  mesh.vertices = gather_positions(parts.positions, corners.position_of);
-  mesh.normals = area_weighted_vertex_normals(mesh.vertices, mesh.triangles);
+  ShadingVertices shading;
+  shading.position_of = std::move(corners.position_of);
+  shading.normals = area_weighted_vertex_normals(gather_positions(parts.positions, shading, shading.position_of.size()), triangles);
+  return shading;
 }
 
-}  // namespace
-
-bool assemble_mesh(MeshParts parts, TriangleMesh& mesh) {
+// The first step: which normal each corner gets. Returns whether normals were generated.
+bool assign_shading(MeshParts& parts, std::vector<TriangleIndices>& triangles, ShadingVertices& shading) {
   if (!parts.triangle_normals.empty()) {
-    assemble_with_file_normals(parts, mesh);
+    shading = key_by_file_normals(parts, triangles);
     return false;
   }
   const auto same_smoothing = [&](const TriangleRun& r) { return r.smoothing == parts.runs.front().smoothing; };
   if (parts.runs.empty() || std::all_of(parts.runs.begin(), parts.runs.end(), same_smoothing)) {
     // One smoothing state for the whole mesh: the file's vertex list serves unchanged.
-    const bool flat = !parts.runs.empty() && parts.runs.front().smoothing == kFlat;
-    mesh.vertices = std::move(parts.positions);
-    mesh.triangles = std::move(parts.triangle_positions);
+    const bool flat = parts.runs.empty() || parts.runs.front().smoothing == kFlat;
     if (flat) return false;
-    mesh.normals = area_weighted_vertex_normals(mesh.vertices, mesh.triangles);
+    shading.normals = area_weighted_vertex_normals(parts.positions, triangles);
     return true;
   }
-  assemble_by_smoothing_group(parts, mesh);
+  shading = key_by_smoothing_group(parts, triangles);
   return true;
+}
+
+}  // namespace
+
+bool assemble_mesh(MeshParts parts, TriangleMesh& mesh) {
+  std::vector<TriangleIndices> triangles = std::move(parts.triangle_positions);
+  ShadingVertices shading;
+  const bool generated = assign_shading(parts, triangles, shading);
+  const std::size_t shading_count = shading.size(parts.positions.size());
+
+  // The second step: a shading vertex meeting different texture coordinates is split again, so
+  // a uv seam never splits a smooth normal.
+  std::vector<std::uint32_t> shading_of, texcoord_of;
+  if (!parts.triangle_texcoords.empty()) {
+    CornerVertices corners(shading_count);
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      TriangleIndices& tri = triangles[t];
+      const TriangleIndices& uv = parts.triangle_texcoords[t];
+      tri = {corners.shared(tri.v0, uv.v0), corners.shared(tri.v1, uv.v1), corners.shared(tri.v2, uv.v2)};
+    }
+    shading_of = std::move(corners.position_of);
+    texcoord_of = std::move(corners.attribute_of);
+  }
+  const auto shading_vertex = [&](std::uint32_t v) { return shading_of.empty() ? v : shading_of[v]; };
+  const std::size_t count = shading_of.empty() ? shading_count : shading_of.size();
+
+  if (shading.position_of.empty() && shading_of.empty()) {
+    mesh.vertices = std::move(parts.positions);
+  } else {
+    mesh.vertices.clear();
+    reserve_large(mesh.vertices, count);
+    for (std::uint32_t v = 0; v < count; ++v) mesh.vertices.push_back(parts.positions[shading.position(shading_vertex(v))]);
+  }
+  if (!shading.normals.empty()) {
+    if (shading_of.empty()) {
+      mesh.normals = std::move(shading.normals);
+    } else {
+      mesh.normals.reserve(count);
+      for (std::uint32_t v = 0; v < count; ++v) mesh.normals.push_back(shading.normals[shading_of[v]]);
+    }
+  }
+  for (std::uint32_t t : texcoord_of) mesh.uvs.push_back(parts.texcoords[t]);
+  if (!parts.colors.empty()) {
+    mesh.colors.reserve(count);
+    for (std::uint32_t v = 0; v < count; ++v) mesh.colors.push_back(parts.colors[shading.position(shading_vertex(v))]);
+  }
+  mesh.triangles = std::move(triangles);
+  return generated;
 }
 
 }  // namespace rtpro::obj

@@ -1,6 +1,7 @@
 #include "rtpro/core/error.h"
 #include "ascii_scan.h"
 #include "mesh_limits.h"
+#include "mesh_triangulation.h"
 #include "obj_chunk.h"
 
 #include <cmath>
@@ -18,19 +19,12 @@ using ascii::word_at;
 
 namespace {
 
-inline constexpr std::uint32_t kNoIndex = ~0u;
-
 // The statement keyword of the line starting at p ("v", "f", ...); empty for blank lines. Both
 // passes classify lines with it, so they always agree.
 std::string_view keyword_at(const char* p, const char* end) {
   p = skip_blanks(p, end);
   return word_at(p, end);
 }
-
-struct Corner {
-  std::uint32_t position;
-  std::uint32_t normal;  // kNoIndex without one
-};
 
 // Parses one chunk in a single pass: every statement handler starts after its keyword and
 // returns the end of its line (the '\n' or the chunk's end), so no line is scanned twice.
@@ -75,10 +69,14 @@ class ChunkParser {
       if (!(std::fabs(xyz[axis]) <= kMaxAbsCoordinate))
         fail(number_begin, "coordinate " + std::string(word_at(number_begin, end_)) + " is beyond the supported magnitude 1e16");
     }
-    out_.positions[seen_.positions++] = PaddedVertex{xyz[0], xyz[1], xyz[2], 0.0f};
-    // A 4th number is the rational weight w, 3 more a vertex colour (a common extension):
-    // validated, not used.
-    return numbers_then_line_end(p, 3, "after the vertex coordinates");
+    const std::uint32_t position = std::uint32_t(seen_.positions++);
+    out_.positions[position] = PaddedVertex{xyz[0], xyz[1], xyz[2], 0.0f};
+    // A 4th number is the rational weight w (validated, unused), 3 more a vertex colour (a common
+    // extension that Blender, MeshLab and assimp read).
+    float extra[3];
+    const int extras = numbers_into(p, extra, "after the vertex coordinates");
+    if (extras == 3) chunk_.colors.push_back({position, Color(extra[0], extra[1], extra[2])});
+    return line_end(skip_blanks(p, end_));
   }
 
   const char* parse_normal(const char* p) {
@@ -96,28 +94,49 @@ class ChunkParser {
 
   const char* parse_texcoord(const char* p) {
     if (at_line_end(p)) fail(p, "texture coordinate needs 1 to 3 numbers");
-    ++seen_.texcoords;
-    return numbers_then_line_end(p, 3, "after the texture coordinate");
+    float uvw[3] = {0.0f, 0.0f, 0.0f};
+    numbers_into(p, uvw, "after the texture coordinate");
+    out_.texcoords[seen_.texcoords++] = TexCoord{uvw[0], uvw[1]};
+    return line_end(skip_blanks(p, end_));
   }
 
-  // Fan-triangulates as it reads (exact for the convex polygons OBJ exporters write): every
-  // corner after the second closes the triangle (first, previous, this one).
+  // A triangle goes to its slot at once. A polygon waits in the chunk until every position of
+  // the file is known: only then can a concave one be told from a convex one.
   const char* parse_face(const char* p) {
-    Corner first{}, previous{};
+    Corner first3[3];
     std::size_t corners = 0;
     for (; !at_line_end(p); p = skip_blanks(p, end_), ++corners) {
       const Corner current = corner(p);
-      if (current.normal == kNoIndex && chunk_.every_corner_has_normal) {
-        chunk_.every_corner_has_normal = false;
-        chunk_.triangle_normals = {};
+      note_attributes(current);
+      if (corners < 3) {
+        first3[corners] = current;
+        continue;
       }
-      if (corners >= 2) add_triangle(first, previous, current);
-      if (corners == 0) first = current;
-      previous = current;
+      if (corners == 3) start_polygon(first3);
+      chunk_.polygon_corners.push_back(current);
     }
     if (corners < 3) fail(line_begin_, "face needs at least 3 vertices, found " + std::to_string(corners));
+    if (corners == 3) add_triangle(first3[0], first3[1], first3[2]);
+    else chunk_.polygons.back().corner_count = std::uint32_t(corners);
     ++chunk_.faces;
     return line_end(p);
+  }
+
+  void note_attributes(const Corner& c) {
+    if (c.normal == kNoIndex && chunk_.every_corner_has_normal) {
+      chunk_.every_corner_has_normal = false;
+      chunk_.triangle_normals = {};
+    }
+    if (c.texcoord == kNoIndex && chunk_.every_corner_has_texcoord) {
+      chunk_.every_corner_has_texcoord = false;
+      chunk_.triangle_texcoords = {};
+    }
+  }
+
+  void start_polygon(const Corner (&first3)[3]) {
+    chunk_.polygons.push_back({std::uint32_t(chunk_.triangles_in_slots), std::uint32_t(chunk_.polygon_corners.size()), 0,
+                               seen_.lines});
+    chunk_.polygon_corners.insert(chunk_.polygon_corners.end(), first3, first3 + 3);
   }
 
   void add_triangle(const Corner& a, const Corner& b, const Corner& c) {
@@ -125,10 +144,9 @@ class ChunkParser {
       ++chunk_.dropped_degenerate;
       return;
     }
-    const TriangleIndices triangle{a.position, b.position, c.position};
-    if (chunk_.triangles_in_slots < chunk_.counts.faces) out_.triangles[chunk_.start.faces + chunk_.triangles_in_slots++] = triangle;
-    else chunk_.more_triangles.push_back(triangle);
+    out_.triangles[chunk_.start.faces + chunk_.triangles_in_slots++] = TriangleIndices{a.position, b.position, c.position};
     if (chunk_.every_corner_has_normal) chunk_.triangle_normals.push_back({a.normal, b.normal, c.normal});
+    if (chunk_.every_corner_has_texcoord) chunk_.triangle_texcoords.push_back({a.texcoord, b.texcoord, c.texcoord});
   }
 
   // One face vertex: v, v/vt, v//vn or v/vt/vn. Advances p past it.
@@ -136,13 +154,13 @@ class ChunkParser {
     std::uint32_t plain = 0;
     if (const int digits = ascii::scan_short_unsigned(p, end_, plain); digits > 0 && plain - 1u < out_.totals.positions) {
       p += digits;
-      return {plain - 1, kNoIndex};
+      return {plain - 1, kNoIndex, kNoIndex};
     }
     const char* token = p;
-    Corner result{index(p, seen_.positions, out_.totals.positions, "vertex"), kNoIndex};
+    Corner result{index(p, seen_.positions, out_.totals.positions, "vertex"), kNoIndex, kNoIndex};
     if (p != end_ && *p == '/') {
       ++p;
-      if (p == end_ || *p != '/') index(p, seen_.texcoords, out_.totals.texcoords, "texture coordinate");
+      if (p == end_ || *p != '/') result.texcoord = index(p, seen_.texcoords, out_.totals.texcoords, "texture coordinate");
       if (p != end_ && *p == '/') {
         ++p;
         result.normal = index(p, seen_.normals, out_.totals.normals, "normal");
@@ -200,7 +218,8 @@ class ChunkParser {
   const char* parse_usemtl(const char* p) {
     const char* end = ascii::find_line_end(p, end_);
     const std::string_view name = trimmed(p, end);
-    if (name.empty()) fail(p, "usemtl needs a material name");
+    // Blender writes a bare `usemtl` for faces without a material: the default material.
+    if (name.empty() && chunk_.first_unnamed_usemtl_line == 0) chunk_.first_unnamed_usemtl_line = seen_.lines;
     const auto [slot, inserted] = material_slots_.try_emplace(name, std::uint32_t(chunk_.material_names.size()));
     if (inserted) chunk_.material_names.push_back({name, seen_.lines});
     change_state().material_slot = slot->second;
@@ -225,28 +244,28 @@ class ChunkParser {
     return {p, std::size_t(end - p)};
   }
 
-  // The state entry for the next triangle, carrying over what earlier statements set.
+  // The state entry for the next face, carrying over what earlier statements set.
   StateChange& change_state() {
     auto& changes = chunk_.state_changes;
-    const auto next_triangle = std::uint32_t(chunk_.triangle_count());
+    const auto next_triangle = std::uint32_t(chunk_.triangles_in_slots);
+    const auto polygons = std::uint32_t(chunk_.polygons.size());
     if (changes.empty()) {
-      changes.push_back({next_triangle, kInherited, kInherited});
-    } else if (changes.back().first_triangle != next_triangle) {
+      changes.push_back({next_triangle, polygons, kInherited, kInherited});
+    } else if (changes.back().first_triangle != next_triangle || changes.back().polygons_before != polygons) {
       StateChange carried = changes.back();
       carried.first_triangle = next_triangle;
+      carried.polygons_before = polygons;
       changes.push_back(carried);
     }
     return changes.back();
   }
 
+  // A hash lookup, not a scan of the keywords seen so far: a file of 100,000 distinct unknown
+  // keywords must not cost 10^10 comparisons.
   void tally_ignored(std::string_view keyword) {
-    for (IgnoredKeyword& k : chunk_.ignored) {
-      if (k.keyword == keyword) {
-        ++k.count;
-        return;
-      }
-    }
-    chunk_.ignored.push_back({keyword, 1, seen_.lines});
+    const auto [slot, inserted] = ignored_slots_.try_emplace(keyword, chunk_.ignored.size());
+    if (inserted) chunk_.ignored.push_back({keyword, 1, seen_.lines});
+    else ++chunk_.ignored[slot->second].count;
   }
 
   // A finite float at p; returns the position after it.
@@ -259,6 +278,16 @@ class ChunkParser {
   [[noreturn, gnu::cold, gnu::noinline]] void fail_number(const char* p, ascii::NumberStatus status) const {
     if (status == ascii::NumberStatus::kMalformed) fail(p, quoted(word_at(p, end_)) + " is not a number");
     fail(p, quoted(word_at(p, end_)) + " is not a finite number in float range");
+  }
+
+  // Up to 3 more numbers into `values`; returns how many. p ends after the last one.
+  int numbers_into(const char*& p, float (&values)[3], const char* where) const {
+    int count = 0;
+    for (p = skip_blanks(p, end_); !at_line_end(p); p = skip_blanks(p, end_)) {
+      if (count == 3) fail(p, "unexpected " + quoted(word_at(p, end_)) + " " + where);
+      p = number(p, values[count++]);
+    }
+    return count;
   }
 
   // Up to `allowed` more numbers (validated, unused), then the end of the line.
@@ -285,6 +314,7 @@ class ChunkParser {
   const char* const end_;
   const char* line_begin_ = nullptr;
   std::unordered_map<std::string_view, std::uint32_t> material_slots_;
+  std::unordered_map<std::string_view, std::size_t> ignored_slots_;
 };
 
 // Counts the line [p, end) as keyword_at() classifies it for the parse. A valid line is at least
@@ -341,6 +371,36 @@ void parse_chunk(Chunk& chunk, const Destination& out) {
   } catch (const InputError&) {
     chunk.error = std::current_exception();
   }
+}
+
+void triangulate_polygons(Chunk& chunk, const std::vector<PaddedVertex>& positions) {
+  std::vector<Vec3> points;
+  std::vector<LocalTriangle> local;
+  const bool normals = chunk.every_corner_has_normal, texcoords = chunk.every_corner_has_texcoord;
+  for (const Polygon& polygon : chunk.polygons) {
+    const Corner* corners = chunk.polygon_corners.data() + polygon.first_corner;
+    points.clear();
+    local.clear();
+    for (std::uint32_t k = 0; k < polygon.corner_count; ++k) points.push_back(positions[corners[k].position].position());
+    const PolygonTriangulation result = triangulate_polygon(points, local);
+    chunk.concave_polygons += result.concave;
+    if (result.fan_fallback && chunk.fan_fallback_line == 0) chunk.fan_fallback_line = polygon.line;
+    chunk.dropped_degenerate += result.dropped;
+    std::uint32_t kept = 0;
+    for (const LocalTriangle& t : local) {
+      const Corner &a = corners[t[0]], &b = corners[t[1]], &c = corners[t[2]];
+      if (a.position == b.position || b.position == c.position || a.position == c.position) {
+        ++chunk.dropped_degenerate;
+        continue;
+      }
+      chunk.polygon_triangles.push_back({a.position, b.position, c.position});
+      if (normals) chunk.polygon_triangle_normals.push_back({a.normal, b.normal, c.normal});
+      if (texcoords) chunk.polygon_triangle_texcoords.push_back({a.texcoord, b.texcoord, c.texcoord});
+      ++kept;
+    }
+    chunk.triangles_of_polygon.push_back(kept);
+  }
+  chunk.polygon_corners = {};
 }
 
 }  // namespace rtpro::obj

@@ -33,9 +33,13 @@ class HeaderParser {
       if (words_[0] == "format") read_format();
       else if (words_[0] == "element") read_element();
       else if (words_[0] == "property") read_property();
-      else fail("unknown header line " + quoted(words_[0]));
+      else note_unknown_line();
     }
     if (!has_format_) fail("the header has no format line");
+    if (unknown_lines_ > 0)
+      header_.warnings.push_back(file_ + ":" + std::to_string(first_unknown_line_) + ": ignored " +
+                                 std::to_string(unknown_lines_) + " unknown header line(s), the first starting " +
+                                 quoted(first_unknown_word_));
     header_.body_offset = offset_;
     header_.body_line = line_ + 1;
     check_counts_fit();
@@ -62,6 +66,12 @@ class HeaderParser {
       p += words.back().size();
     }
     return words;
+  }
+
+  void note_unknown_line() {
+    if (unknown_lines_++ > 0) return;
+    first_unknown_line_ = line_;
+    first_unknown_word_ = std::string(words_[0]);
   }
 
   void read_format() {
@@ -140,6 +150,9 @@ class HeaderParser {
   int line_ = 0;
   std::vector<std::string_view> words_;
   bool has_format_ = false;
+  std::size_t unknown_lines_ = 0;
+  int first_unknown_line_ = 0;
+  std::string first_unknown_word_;
   Header header_;
 };
 

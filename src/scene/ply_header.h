@@ -38,10 +38,12 @@ struct Header {
   std::vector<Element> elements;
   std::size_t body_offset = 0;  // the first byte after "end_header\n"
   int body_line = 0;            // the line number of that byte
+  std::vector<std::string> warnings;  // "file:line: ..." lines
 };
 
 // Throws InputError naming file:line for malformed headers and for element counts that the bytes
-// after the header cannot hold.
+// after the header cannot hold. A line with an unknown keyword (old exporters wrote free text
+// into the header) is a warning: it cannot change how the elements read.
 Header parse_header(std::string_view bytes, const std::string& file);
 
 }  // namespace rtpro::ply

@@ -4,15 +4,20 @@
 #include "ascii_scan.h"
 #include "large_buffer.h"
 #include "mapped_file.h"
+#include "mesh_color.h"
 #include "mesh_limits.h"
 #include "mesh_normals.h"
+#include "mesh_text_encoding.h"
+#include "mesh_triangulation.h"
 #include "ply_header.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <span>
 
 namespace rtpro {
 
@@ -163,10 +168,57 @@ class AsciiReader {
 struct PlyMesh {
   std::vector<PaddedVertex> vertices;
   std::vector<Vec3> normals;  // per vertex when the file has nx, ny, nz
+  std::vector<TexCoord> uvs;  // per vertex when the file has u, v (or s, t)
+  std::vector<Color> colors;  // per vertex when the file has red, green, blue
   std::vector<TriangleIndices> triangles;
+  // Faces of more than 3 vertices read before the vertices (a rare element order): triangulated
+  // once the positions are known, after the other faces.
+  std::vector<std::uint32_t> polygon_corners;
+  std::vector<std::uint32_t> polygon_sizes;
   std::size_t faces = 0;
   std::size_t dropped_degenerate = 0;
+  std::size_t concave_polygons = 0;
+  bool fan_fallback = false;
 };
+
+// Appends the triangles of the polygon with these corners (vertex indices) to ply.triangles.
+void add_polygon(PlyMesh& ply, std::span<const std::uint32_t> corners, std::vector<Vec3>& points, std::vector<LocalTriangle>& local) {
+  points.clear();
+  local.clear();
+  for (const std::uint32_t c : corners) points.push_back(ply.vertices[c].position());
+  const PolygonTriangulation result = triangulate_polygon(points, local);
+  ply.concave_polygons += result.concave;
+  ply.dropped_degenerate += result.dropped;
+  ply.fan_fallback = ply.fan_fallback || result.fan_fallback;
+  for (const LocalTriangle& t : local) {
+    const std::uint32_t a = corners[t[0]], b = corners[t[1]], c = corners[t[2]];
+    if (a == b || b == c || a == c) ++ply.dropped_degenerate;
+    else ply.triangles.push_back({a, b, c});
+  }
+}
+
+// The first pair of property names the element has, as indices; -1s when it has none.
+std::array<int, 2> find_pair(const Element& element, std::initializer_list<std::array<std::string_view, 2>> names) {
+  for (const auto& [a, b] : names) {
+    const int i = element.find(a), j = element.find(b);
+    if (i >= 0 && j >= 0 && !element.properties[std::size_t(i)].is_list && !element.properties[std::size_t(j)].is_list) return {i, j};
+  }
+  return {-1, -1};
+}
+
+// Integer colour channels span their type's range; float ones are 0..1 already.
+double channel_scale(Type type) {
+  switch (type) {
+    case Type::kInt8: return 1.0 / INT8_MAX;
+    case Type::kUInt8: return 1.0 / UINT8_MAX;
+    case Type::kInt16: return 1.0 / INT16_MAX;
+    case Type::kUInt16: return 1.0 / UINT16_MAX;
+    case Type::kInt32: return 1.0 / INT32_MAX;
+    case Type::kUInt32: return 1.0 / UINT32_MAX;
+    case Type::kFloat32: case Type::kFloat64: return 1.0;
+  }
+  return 1.0;
+}
 
 // Walks the body element by element, keeping vertices and faces, skipping everything else.
 template <typename Reader>
@@ -180,7 +232,10 @@ class BodyReader {
     if (vertex->count > kMaxMeshElements) fail_at(*vertex, "more than 2^32 - 2 vertices");
     vertex_count_ = vertex->count;
     for (const Element& element : header_.elements) {
-      if (&element == vertex) read_vertices(element);
+      if (&element == vertex) {
+        read_vertices(element);
+        vertices_read_ = true;
+      }
       else if (element.name == "face") read_faces(element, body_bytes);
       else skip(element);
     }
@@ -206,9 +261,17 @@ class BodyReader {
     if (axes[0] < 0 || axes[1] < 0 || axes[2] < 0) fail_at(element, "the vertex element needs properties x, y and z");
     const int normal_axes[3] = {scalar_property(element, "nx"), scalar_property(element, "ny"), scalar_property(element, "nz")};
     const bool has_normals = normal_axes[0] >= 0 && normal_axes[1] >= 0 && normal_axes[2] >= 0;
+    const std::array<int, 2> uv = find_pair(element, {{"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}});
+    const int red = element.find("red") >= 0 ? element.find("red") : element.find("diffuse_red");
+    const std::array<int, 2> green_blue = element.find("red") >= 0 ? find_pair(element, {{"green", "blue"}})
+                                                                   : find_pair(element, {{"diffuse_green", "diffuse_blue"}});
+    const int rgb[3] = {red, green_blue[0], green_blue[1]};
+    const bool has_colors = rgb[0] >= 0 && rgb[1] >= 0 && rgb[2] >= 0 && !element.properties[std::size_t(rgb[0])].is_list;
     std::vector<double> values(element.properties.size());
     reserve_large(mesh_.vertices, element.count);
     if (has_normals) reserve_large(mesh_.normals, element.count);
+    if (uv[0] >= 0) reserve_large(mesh_.uvs, element.count);
+    if (has_colors) reserve_large(mesh_.colors, element.count);
     for (std::uint64_t i = 0; i < element.count; ++i) {
       r_.begin_element();
       for (std::size_t k = 0; k < element.properties.size(); ++k) {
@@ -226,6 +289,14 @@ class BodyReader {
       const auto at = [&values](int k) { return float(values[std::size_t(k)]); };
       mesh_.vertices.push_back({at(axes[0]), at(axes[1]), at(axes[2]), 0.0f});
       if (has_normals) mesh_.normals.emplace_back(at(normal_axes[0]), at(normal_axes[1]), at(normal_axes[2]));
+      if (uv[0] >= 0) mesh_.uvs.push_back({at(uv[0]), at(uv[1])});
+      if (has_colors) {
+        const auto channel = [&](int k) {
+          const double scaled = values[std::size_t(k)] * channel_scale(element.properties[std::size_t(k)].type);
+          return srgb_to_linear(float(std::clamp(scaled, 0.0, 1.0)));
+        };
+        mesh_.colors.emplace_back(channel(rgb[0]), channel(rgb[1]), channel(rgb[2]));
+      }
     }
   }
 
@@ -262,11 +333,15 @@ class BodyReader {
       corners_.push_back(std::uint32_t(index));
     }
     ++mesh_.faces;
-    for (std::size_t k = 1; k + 1 < corners_.size(); ++k) {
-      const std::uint32_t a = corners_[0], b = corners_[k], c = corners_[k + 1];
-      if (a == b || b == c || a == c) ++mesh_.dropped_degenerate;
-      else mesh_.triangles.push_back({a, b, c});
+    if (corners_.size() > 3 && vertices_read_) return add_polygon(mesh_, corners_, points_, local_);
+    if (corners_.size() > 3) {
+      mesh_.polygon_corners.insert(mesh_.polygon_corners.end(), corners_.begin(), corners_.end());
+      mesh_.polygon_sizes.push_back(std::uint32_t(corners_.size()));
+      return;
     }
+    const std::uint32_t a = corners_[0], b = corners_[1], c = corners_[2];
+    if (a == b || b == c || a == c) ++mesh_.dropped_degenerate;
+    else mesh_.triangles.push_back({a, b, c});
   }
 
   void skip_list(const Property& property) {
@@ -295,6 +370,9 @@ class BodyReader {
   const std::string& file_;
   std::uint64_t vertex_count_ = 0;
   std::vector<std::uint32_t> corners_;
+  std::vector<Vec3> points_;
+  std::vector<LocalTriangle> local_;
+  bool vertices_read_ = false;
   PlyMesh mesh_;
 };
 
@@ -312,33 +390,73 @@ bool all_nonzero(const std::vector<Vec3>& normals) {
   return std::all_of(normals.begin(), normals.end(), [](const Vec3& n) { return n.x != 0.0f || n.y != 0.0f || n.z != 0.0f; });
 }
 
+void triangulate_deferred_polygons(PlyMesh& ply, MeshLoadStats& stats, const std::string& file) {
+  std::vector<Vec3> points;
+  std::vector<LocalTriangle> local;
+  std::size_t first = 0;
+  for (const std::uint32_t size : ply.polygon_sizes) {
+    add_polygon(ply, std::span<const std::uint32_t>(ply.polygon_corners.data() + first, size), points, local);
+    first += size;
+  }
+  if (ply.triangles.size() > kMaxMeshElements) throw InputError(SourceLocation{file}, "more than 2^32 - 2 triangles");
+  ply.polygon_corners = {};
+  stats.concave_polygons = ply.concave_polygons;
+  if (ply.fan_fallback)
+    stats.warnings.push_back(file + ": a concave polygon that ear clipping cannot triangulate (self-intersecting, or more than " +
+                             std::to_string(kMaxEarClippedCorners) + " corners): fan-triangulated, may look wrong");
+}
+
+// The file's normals, generated ones or none (flat), as the scene's `normals:` asks.
+void choose_normals(PlyMesh& ply, NormalsMode mode, TriangleMesh& mesh, MeshLoadStats& stats, const std::string& file) {
+  const bool present = !ply.normals.empty();
+  const bool usable = present && all_nonzero(ply.normals);
+  if (present && !usable && mode != NormalsMode::kFlat && mode != NormalsMode::kSmooth)
+    stats.warnings.push_back(file + ": some vertex normals have zero length; the file's normals are not used");
+  switch (mode) {
+    case NormalsMode::kFile:
+      if (!usable) throw InputError(SourceLocation{file}, "normals: file, but the file has no usable vertex normals (nx, ny, nz)");
+      [[fallthrough]];
+    case NormalsMode::kAuto:
+      if (usable) {
+        mesh.normals = std::move(ply.normals);
+        for (Vec3& n : mesh.normals) n = unit_or(n, Vec3(0.0f, 0.0f, 1.0f));
+      }
+      return;
+    case NormalsMode::kFlat: return;
+    case NormalsMode::kSmooth:
+      mesh.normals = area_weighted_vertex_normals(mesh.vertices, mesh.triangles);
+      stats.normals_generated = true;
+      return;
+  }
+}
+
 }  // namespace
 
-LoadedMesh load_ply_file(const std::filesystem::path& file) {
+LoadedMesh load_ply_file(const std::filesystem::path& file, const MeshLoadOptions& options) {
   const MappedFile bytes(file);
   const std::string file_name = file.string();
+  if (bytes.size() == 0) throw InputError(SourceLocation{file_name}, "the file is empty");
+  require_narrow_text(bytes.text().substr(0, 64), file_name, "PLY");
   const Header header = parse_header(bytes.text(), file_name);
   PlyMesh ply = read_body(bytes.text(), header, file_name);
 
   LoadedMesh loaded;
+  MeshLoadStats& stats = loaded.stats;
+  stats.warnings = header.warnings;
+  triangulate_deferred_polygons(ply, stats, file_name);
   TriangleMesh& mesh = loaded.mesh;
   mesh.name = file.stem().string();
   mesh.material = kNoMaterial;
   mesh.vertices = std::move(ply.vertices);
   mesh.triangles = std::move(ply.triangles);
-  if (!ply.normals.empty() && all_nonzero(ply.normals)) {
-    mesh.normals = std::move(ply.normals);
-    for (Vec3& n : mesh.normals) n = unit_or(n, Vec3(0.0f, 0.0f, 1.0f));
-  } else {
-    if (!ply.normals.empty()) loaded.stats.warnings.push_back(file_name + ": some vertex normals have zero length; generating normals instead");
-    mesh.normals = area_weighted_vertex_normals(mesh.vertices, mesh.triangles);
-    loaded.stats.normals_generated = true;
-  }
-  if (mesh.triangles.empty()) loaded.stats.warnings.push_back(file_name + ": no faces");
-  loaded.stats.vertices = mesh.vertices.size();
-  loaded.stats.triangles = mesh.triangles.size();
-  loaded.stats.faces = ply.faces;
-  loaded.stats.dropped_degenerate = ply.dropped_degenerate;
+  mesh.uvs = std::move(ply.uvs);
+  mesh.colors = std::move(ply.colors);
+  choose_normals(ply, options.normals, mesh, stats, file_name);
+  if (mesh.triangles.empty()) stats.warnings.push_back(file_name + ": no faces");
+  stats.vertices = mesh.vertices.size();
+  stats.triangles = mesh.triangles.size();
+  stats.faces = ply.faces;
+  stats.dropped_degenerate += ply.dropped_degenerate;
   return loaded;
 }
 

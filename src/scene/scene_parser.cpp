@@ -1,5 +1,7 @@
 #include "rtpro/scene/scene_parser.h"
 
+#include "gltf_loader.h"
+#include "gltf_scene.h"
 #include "yaml_document.h"
 #include "yaml_reader.h"
 #include "yaml_scene_objects.h"
@@ -147,7 +149,8 @@ MaterialDesc read_material(const std::string& name, const YamlNode& node) {
 }
 
 std::vector<MaterialDesc> read_materials(const YamlNode* node) {
-  std::vector<MaterialDesc> materials{MaterialDesc{.name = "default"}};
+  std::vector<MaterialDesc> materials(1);
+  materials[0].name = "default";
   if (absent(node)) return materials;
   if (!node->is_mapping())
     fail_at(*node, "materials: expected a mapping of name: {color: ...}, got " + node->describe());
@@ -285,6 +288,7 @@ std::string read_scene_file_text(const std::filesystem::path& file) {
 }  // namespace
 
 SceneDescription parse_scene_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  if (is_gltf_file(file)) return parse_gltf_scene_file(file, overrides);
   return parse_scene_text(read_scene_file_text(file), file, overrides);
 }
 

@@ -1,5 +1,6 @@
 #include "yaml_scene_objects.h"
 
+#include "gltf_loader.h"
 #include "yaml_reader.h"
 #include "yaml_transform.h"
 
@@ -15,7 +16,8 @@ namespace rtpro {
 namespace {
 
 const std::vector<std::string> kEntryTypes = {"sphere", "mesh", "instance"};
-const std::vector<std::string> kMeshExtensions = {".obj", ".ply"};
+const std::vector<std::string> kMeshExtensions = {".obj", ".ply", ".gltf", ".glb"};
+const std::vector<std::string> kNormalsModes = {"flat", "smooth", "file"};
 
 // One instance entry seen from the instance graph: which object it places, and where it says so.
 struct InstanceLink {
@@ -151,7 +153,7 @@ class ObjectsReader {
       if (type == "sphere") {
         object.spheres.push_back(read_sphere(*entry));
       } else if (type == "mesh") {
-        object.meshes.push_back(read_mesh(*entry));
+        read_mesh(*entry, object);
       } else {
         object.instances.push_back(read_instance(*entry, links));
       }
@@ -172,14 +174,25 @@ class ObjectsReader {
     return desc;
   }
 
-  MeshDesc read_mesh(const YamlNode& node) const {
-    const MappingReader mesh(node, "mesh", {"type", "file", "material"});
+  // An OBJ or PLY file is one mesh; a glTF file is a scene of its own, placed as a whole.
+  void read_mesh(const YamlNode& node, ObjectDesc& object) const {
+    const MappingReader mesh(node, "mesh", {"type", "file", "material", "normals"});
     MeshDesc desc;
     desc.file = resolve_mesh_file(mesh.required("file"), mesh.field("file"));
     if (const YamlNode* material = mesh.optional("material"))
       desc.material = material_index(*material, mesh.field("material"));
+    if (const YamlNode* normals = mesh.optional("normals")) desc.normals = read_normals_mode(*normals, mesh.field("normals"));
     desc.where = node.at.location();
-    return desc;
+    if (is_gltf_file(desc.file)) object.gltfs.push_back({desc.file, desc.material, desc.where, desc.normals, nullptr});
+    else object.meshes.push_back(std::move(desc));
+  }
+
+  static NormalsMode read_normals_mode(const YamlNode& node, const std::string& field) {
+    const std::string mode = read_string(node, field);
+    if (mode == "flat") return NormalsMode::kFlat;
+    if (mode == "smooth") return NormalsMode::kSmooth;
+    if (mode == "file") return NormalsMode::kFile;
+    fail_at(node, field + ": expected flat, smooth or file, got '" + mode + "'" + suggestion(mode, kNormalsModes));
   }
 
   InstanceDesc read_instance(const YamlNode& node, std::vector<InstanceLink>& links) const {
@@ -215,7 +228,7 @@ class ObjectsReader {
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (std::find(kMeshExtensions.begin(), kMeshExtensions.end(), extension) == kMeshExtensions.end())
-      fail_at(node, field + ": '" + written + "' is not a mesh format rtpro reads (.obj or .ply)");
+      fail_at(node, field + ": '" + written + "' is not a mesh format rtpro reads (.obj or .ply, or a .gltf or .glb scene)");
     std::error_code error;
     const std::filesystem::file_status status = std::filesystem::status(file, error);
     if (!std::filesystem::exists(status))

@@ -54,20 +54,17 @@ f 3 4 8 7
 f 4 1 5 8
 )";
 
-TEST(ObjLoader, CubeOfQuadsBecomesTwelveTrianglesWithSmoothNormals) {
+TEST(ObjLoader, CubeOfQuadsWithoutSmoothingGroupsIsFlat) {
   const LoadedMesh loaded = load_mesh_file(write_file("cube.obj", kCube));
   EXPECT_EQ(loaded.mesh.vertices.size(), 8u);
   EXPECT_EQ(loaded.mesh.triangles.size(), 12u);
   EXPECT_EQ(loaded.stats.faces, 6u);
   EXPECT_EQ(loaded.stats.triangles, 12u);
   EXPECT_EQ(loaded.stats.vertices, 8u);
-  EXPECT_TRUE(loaded.stats.normals_generated);
-  expect_unit_normals(loaded.mesh);
-  // No `s` statements: one smooth group, so the corner (1,1,1) points out along the diagonal.
-  const Vec3 corner = loaded.mesh.normals[6];
-  EXPECT_GT(corner.x, 0.3f);
-  EXPECT_GT(corner.y, 0.3f);
-  EXPECT_GT(corner.z, 0.3f);
+  // No `s` statement means no smoothing group: flat faces, as Blender and 3ds Max read it. A
+  // mesh without normals is shaded with each triangle's own face normal.
+  EXPECT_FALSE(loaded.stats.normals_generated);
+  EXPECT_TRUE(loaded.mesh.normals.empty());
   EXPECT_TRUE(loaded.materials.empty());
   EXPECT_EQ(loaded.mesh.material, kNoMaterial);
   EXPECT_TRUE(loaded.mesh.triangle_materials.empty());
@@ -184,12 +181,14 @@ f 2/1/2 4/1/2 3/1/2
   EXPECT_EQ(loaded.mesh.vertex(loaded.mesh.triangles[1].v0), loaded.mesh.vertex(loaded.mesh.triangles[0].v1));
 }
 
-TEST(ObjLoader, NormalsMissingOnSomeCornersAreGeneratedWithAWarning) {
-  const LoadedMesh loaded = load_mesh_file(write_file("partial.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\n"
-                                                                     "f 1//1 2//1 3//1\nf 2 4 3\n"));
-  EXPECT_TRUE(loaded.stats.normals_generated);
-  EXPECT_TRUE(has_warning_containing(loaded.stats, "generating normals"));
-  expect_unit_normals(loaded.mesh);
+TEST(ObjLoader, NormalsMissingOnSomeCornersAreSetAsideWithAWarning) {
+  const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 2 4 3\n";
+  const LoadedMesh loaded = load_mesh_file(write_file("partial.obj", text));
+  EXPECT_TRUE(has_warning_containing(loaded.stats, "the file's normals are not used"));
+  EXPECT_TRUE(loaded.mesh.normals.empty());  // no smoothing group: flat
+  const LoadedMesh smooth = load_mesh_file(write_file("partial.obj", "s 1\n" + text));
+  EXPECT_TRUE(smooth.stats.normals_generated);
+  expect_unit_normals(smooth.mesh);
 }
 
 TEST(ObjLoader, DegenerateTrianglesAreDroppedAndCounted) {
@@ -329,8 +328,8 @@ TEST(ObjLoader, AnAllFlatMeshHasNoNormals) {
 
 TEST(ObjLoader, HugeAndTinyTrianglesStillGetUnitNormals) {
   // Cross products of 1e15 and 1e-19 coordinates square beyond and below float range.
-  const LoadedMesh huge = load_mesh_file(write_file("huge.obj", "v 0 0 0\nv 1e15 0 0\nv 0 1e15 0\nf 1 2 3\n"));
-  const LoadedMesh tiny = load_mesh_file(write_file("tiny.obj", "v 0 0 0\nv 1e-19 0 0\nv 0 1e-19 0\nf 1 2 3\n"));
+  const LoadedMesh huge = load_mesh_file(write_file("huge.obj", "s 1\nv 0 0 0\nv 1e15 0 0\nv 0 1e15 0\nf 1 2 3\n"));
+  const LoadedMesh tiny = load_mesh_file(write_file("tiny.obj", "s 1\nv 0 0 0\nv 1e-19 0 0\nv 0 1e-19 0\nf 1 2 3\n"));
   for (const LoadedMesh* loaded : {&huge, &tiny}) {
     ASSERT_EQ(loaded->mesh.normals.size(), 3u);
     for (const Vec3& n : loaded->mesh.normals) EXPECT_EQ(n, Vec3(0, 0, 1));
@@ -377,12 +376,12 @@ TEST(ObjLoader, ParallelChunkedParseEqualsSerialParse) {
   write_file("varied.mtl", "newmtl a\nKd 1 0 0\nnewmtl b\nKd 0 1 0\n");
   const std::string text = varied_obj(50);
   const auto file = write_file("varied.obj", text);
-  const LoadedMesh serial = load_obj_file(file, text.size() + 1);
+  const LoadedMesh serial = load_obj_file(file, {}, text.size() + 1);
   ASSERT_GT(serial.mesh.triangles.size(), 3000u);
   ASSERT_EQ(serial.materials.size(), 2u);
   for (std::size_t chunk_bytes : {std::size_t(1), std::size_t(64), std::size_t(1000), std::size_t(4096)}) {
     SCOPED_TRACE(chunk_bytes);
-    const LoadedMesh chunked = load_obj_file(file, chunk_bytes);
+    const LoadedMesh chunked = load_obj_file(file, {}, chunk_bytes);
     ASSERT_EQ(chunked.mesh.vertices.size(), serial.mesh.vertices.size());
     for (std::size_t i = 0; i < serial.mesh.vertices.size(); ++i)
       ASSERT_EQ(chunked.mesh.vertices[i].position(), serial.mesh.vertices[i].position()) << i;
@@ -402,10 +401,10 @@ TEST(ObjLoader, ParallelChunkedParseEqualsSerialParse) {
 TEST(ObjLoader, ResultsDoNotDependOnTheThreadCount) {
   write_file("varied.mtl", "newmtl a\nnewmtl b\n");
   const auto file = write_file("threads.obj", varied_obj(30));
-  const LoadedMesh parallel = load_obj_file(file, 512);
+  const LoadedMesh parallel = load_obj_file(file, {}, 512);
   const LoadedMesh serial = [&] {
     const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
-    return load_obj_file(file, 512);
+    return load_obj_file(file, {}, 512);
   }();
   ASSERT_FALSE(serial.mesh.normals.empty());
   EXPECT_EQ(parallel.mesh.normals, serial.mesh.normals);
@@ -419,7 +418,7 @@ TEST(ObjLoader, ChunkedParseReportsTheFirstErrorWithItsFileLine) {
   const auto file = write_file("late_error.obj", text);
   for (std::size_t chunk_bytes : {std::size_t(7), std::size_t(500), text.size()}) {
     try {
-      load_obj_file(file, chunk_bytes);
+      load_obj_file(file, {}, chunk_bytes);
       ADD_FAILURE() << "no error";
     } catch (const InputError& e) {
       EXPECT_EQ(e.where().line, lines_before + 1) << chunk_bytes;

@@ -99,8 +99,9 @@ TEST(PlyLoader, AsciiAndBothBinaryEncodingsGiveIdenticalMeshes) {
   ASSERT_EQ(ascii.mesh.triangles.size(), 3u);  // the quad becomes two
   EXPECT_EQ(ascii.stats.faces, 2u);
   EXPECT_EQ(ascii.stats.triangles, 3u);
-  EXPECT_TRUE(ascii.stats.normals_generated);
-  for (const Vec3& n : ascii.mesh.normals) EXPECT_NEAR(length(n), 1.0f, 1e-6f);
+  // No normals in the file: flat, as other PLY readers show it.
+  EXPECT_FALSE(ascii.stats.normals_generated);
+  EXPECT_TRUE(ascii.mesh.normals.empty());
   expect_same_mesh(ascii.mesh, little.mesh);
   expect_same_mesh(ascii.mesh, big.mesh);
   expect_same_mesh(ascii.mesh, doubles.mesh);
@@ -206,6 +207,56 @@ TEST(PlyLoader, DegenerateFacesAreDroppedAndCounted) {
   EXPECT_EQ(loaded.mesh.triangles.size(), 0u);
   EXPECT_EQ(loaded.stats.dropped_degenerate, 1u);
   EXPECT_EQ(loaded.stats.faces, 1u);
+}
+
+TEST(PlyLoader, UnknownHeaderLinesAreOneWarning) {
+  // Blender 2.47 wrote its credit line into the header without `comment`.
+  const std::string ply = "ply\nformat ascii 1.0\nCreated by Blender3D 247 - www.blender.org\nsome other line\n"
+                          "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                          "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const LoadedMesh loaded = load_mesh_file(write_file("blender.ply", ply));
+  EXPECT_EQ(loaded.mesh.triangles.size(), 1u);
+  ASSERT_EQ(loaded.stats.warnings.size(), 1u);
+  EXPECT_NE(loaded.stats.warnings[0].find("blender.ply:3: ignored 2 unknown header line(s), the first starting 'Created'"),
+            std::string::npos)
+      << loaded.stats.warnings[0];
+}
+
+TEST(PlyLoader, TextureCoordinatesAndColoursAreKept) {
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                          "property float s\nproperty float t\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+                          "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                          "0 0 0 0 0 255 0 0\n1 0 0 1 0 0 255 0\n0 1 0 0 1 0 0 0\n3 0 1 2\n";
+  const LoadedMesh loaded = load_mesh_file(write_file("attributes.ply", ply));
+  ASSERT_EQ(loaded.mesh.uvs.size(), 3u);
+  EXPECT_EQ(loaded.mesh.uvs[1].u, 1.0f);
+  EXPECT_EQ(loaded.mesh.uvs[2].v, 1.0f);
+  ASSERT_EQ(loaded.mesh.colors.size(), 3u);
+  EXPECT_EQ(loaded.mesh.colors[0], Color(1, 0, 0));
+  EXPECT_EQ(loaded.mesh.colors[1], Color(0, 1, 0));
+  EXPECT_EQ(loaded.mesh.colors[2], Color(0, 0, 0));
+}
+
+TEST(PlyLoader, NormalsModes) {
+  const std::string body = "0 0 0\n1 0 0\n0 1 0\n1 1 1\n4 0 1 3 2\n";
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                          "element face 1\nproperty list uchar int vertex_indices\nend_header\n" + body;
+  const auto file = write_file("modes.ply", ply);
+  EXPECT_TRUE(load_mesh_file(file).mesh.normals.empty());
+  const LoadedMesh smooth = load_mesh_file(file, {NormalsMode::kSmooth});
+  EXPECT_EQ(smooth.mesh.normals.size(), 4u);
+  EXPECT_TRUE(smooth.stats.normals_generated);
+  EXPECT_THROW(load_mesh_file(file, {NormalsMode::kFile}), InputError);
+}
+
+TEST(PlyLoader, EmptyAndWideFilesAreRefusedClearly) {
+  EXPECT_NE(mesh_load_error(write_file("empty.ply", "")).message().find("the file is empty"), std::string::npos);
+  std::string wide;
+  for (const char c : std::string("ply\nformat ascii 1.0\n")) {
+    wide += c;
+    wide += '\0';
+  }
+  EXPECT_NE(mesh_load_error(write_file("wide.ply", wide)).message().find("UTF-16"), std::string::npos);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -33,6 +34,17 @@ struct MaterialDesc {
   float specular = 0.5f;          // Phong highlight weight
   float shininess = 10.0f;        // Phong exponent
   float reflectivity = 0.0f;      // weight of the mirror reflection
+  // Kept from mesh files for the texture and transparency work to come; not rendered yet.
+  std::filesystem::path color_texture;  // multiplies `color` (MTL map_Kd, glTF baseColorTexture)
+  float opacity = 1.0f;                 // MTL d (or 1 - Tr), glTF baseColorFactor alpha
+};
+
+// How a mesh entry gets its shading normals (`normals:` in the scene file).
+enum class NormalsMode : std::uint8_t {
+  kAuto,    // what the file says: its normals, OBJ smoothing groups, otherwise flat
+  kFlat,    // face normals everywhere, the file's normals and groups ignored
+  kSmooth,  // area-weighted normals across every shared vertex, the file's ignored
+  kFile,    // the file's normals; an input error when it has none
 };
 
 struct PointLightDesc {
@@ -61,6 +73,20 @@ struct MeshDesc {
   std::filesystem::path file;               // resolved against the scene file's folder
   std::uint32_t material = kNoMaterial;     // overrides the OBJ's own materials when set
   SourceLocation where;                     // of the entry in the scene file, for load errors
+  NormalsMode normals = NormalsMode::kAuto;
+};
+
+struct GltfAsset;  // a loaded glTF file (src/scene/gltf_asset.h)
+
+// A glTF 2.0 file (.gltf or .glb) placed as a whole: its node hierarchy becomes instances.
+struct GltfDesc {
+  std::filesystem::path file;
+  std::uint32_t material = kNoMaterial;  // overrides the file's materials when set
+  SourceLocation where;
+  NormalsMode normals = NormalsMode::kAuto;
+  // Set when the file was already loaded while the scene was read (a glTF file as the whole
+  // scene needs its cameras, lights and bounds then); otherwise loaded by build_render_scene.
+  std::shared_ptr<const GltfAsset> loaded;
 };
 
 struct InstanceDesc {
@@ -74,6 +100,7 @@ struct ObjectDesc {
   std::string name;
   std::vector<SphereDesc> spheres;
   std::vector<MeshDesc> meshes;
+  std::vector<GltfDesc> gltfs;
   std::vector<InstanceDesc> instances;
 };
 

@@ -22,6 +22,12 @@ struct TriangleIndices {
 };
 static_assert(sizeof(TriangleIndices) == 12);
 
+// A texture coordinate as the file wrote it (OBJ and PLY: v up; glTF: v down, flipped on load so
+// that every mesh uses OBJ's convention).
+struct TexCoord {
+  float u, v;
+};
+
 struct TriangleMesh {
   std::string name;
   std::vector<PaddedVertex> vertices;
@@ -29,6 +35,9 @@ struct TriangleMesh {
   std::vector<Vec3> normals;                     // per vertex, unit length; empty: flat shading
   std::vector<std::uint32_t> triangle_materials; // per triangle; empty: `material` for all
   std::uint32_t material = 0;
+  // Per vertex when the file has them, else empty; kept for texturing, not rendered yet.
+  std::vector<TexCoord> uvs;
+  std::vector<Color> colors;  // linear RGB
 
   std::size_t triangle_count() const { return triangles.size(); }
   std::uint32_t material_of(std::uint32_t triangle) const {

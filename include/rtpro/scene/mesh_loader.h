@@ -11,12 +11,17 @@
 
 namespace rtpro {
 
+struct MeshLoadOptions {
+  NormalsMode normals = NormalsMode::kAuto;
+};
+
 struct MeshLoadStats {
   std::size_t vertices = 0;
   std::size_t triangles = 0;
   std::size_t faces = 0;              // polygons read before triangulation
   std::size_t materials = 0;
-  std::size_t dropped_degenerate = 0; // faces with repeated vertices or zero area
+  std::size_t dropped_degenerate = 0; // triangles with repeated vertices or zero area, not kept
+  std::size_t concave_polygons = 0;   // triangulated by ear clipping instead of a fan
   bool normals_generated = false;
   std::vector<std::string> warnings;  // one line each, already "file:line: ..." formatted
 };
@@ -28,6 +33,6 @@ struct LoadedMesh {
 };
 
 // Chooses the format by extension (.obj, .ply). Throws InputError for missing or malformed files.
-LoadedMesh load_mesh_file(const std::filesystem::path& file);
+LoadedMesh load_mesh_file(const std::filesystem::path& file, const MeshLoadOptions& options = {});
 
 }  // namespace rtpro

@@ -1,0 +1,56 @@
+#pragma once
+// A glTF 2.0 file as rtpro uses it: one triangle mesh per glTF mesh (its primitives merged), the
+// materials mapped onto rtpro's model, and the node hierarchy resolved to world placements of
+// meshes, cameras and lights. See gltf_loader.h for what is read and how it is validated.
+#include "rtpro/core/bbox.h"
+#include "rtpro/core/transform.h"
+#include "rtpro/scene/description.h"
+#include "rtpro/scene/mesh.h"
+#include "rtpro/scene/mesh_loader.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace rtpro {
+
+// A node that draws a mesh: meshes[mesh] placed by `transform` (object to the glTF's world).
+struct GltfPlacement {
+  std::uint32_t mesh;
+  Affine transform;
+};
+
+struct GltfCamera {
+  Vec3 position;
+  Vec3 forward;  // the node's -z
+  Vec3 up;       // the node's +y
+  float yfov_degrees;
+  float aspect_ratio;  // width / height; 0 when the file gives none
+};
+
+struct GltfLight {
+  enum class Kind : std::uint8_t { kPoint, kDirectional, kSpot };
+  Kind kind;
+  Vec3 position;   // point and spot
+  Vec3 direction;  // directional and spot: the direction light travels in (the node's -z)
+  Color color;
+  float intensity;  // as the file says: candela (point, spot) or lux (directional)
+};
+
+struct GltfAsset {
+  std::filesystem::path file;
+  // triangle_materials and `material` index into `materials`; kNoMaterial marks primitives
+  // without a material (they take the scene's default).
+  std::vector<TriangleMesh> meshes;
+  std::vector<MaterialDesc> materials;  // one per glTF material, in file order
+  std::vector<GltfPlacement> placements;
+  std::vector<GltfCamera> cameras;      // in node order
+  std::vector<GltfLight> lights;        // in node order
+  MeshLoadStats stats;                  // summed over all meshes, with the loader's warnings
+
+  // The world bounds of every placed mesh; empty when nothing is placed.
+  BBox bounds() const;
+};
+
+}  // namespace rtpro

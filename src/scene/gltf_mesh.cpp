@@ -1,0 +1,197 @@
+#include "gltf_mesh.h"
+
+#include "rtpro/core/error.h"
+#include "mesh_limits.h"
+#include "mesh_normals.h"
+
+#include <algorithm>
+
+namespace rtpro::gltf {
+
+namespace {
+
+const char* mode_name(int mode) {
+  switch (mode) {
+    case TINYGLTF_MODE_POINTS: return "POINTS";
+    case TINYGLTF_MODE_LINE: return "LINES";
+    case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
+    case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
+    default: return "unknown";
+  }
+}
+
+// The triangles of a primitive as vertex indices, in the primitive's winding.
+std::vector<TriangleIndices> triangles_of(int mode, const std::vector<std::uint32_t>& corners) {
+  std::vector<TriangleIndices> triangles;
+  const std::size_t n = corners.size();
+  if (mode == TINYGLTF_MODE_TRIANGLES) {
+    for (std::size_t i = 0; i + 2 < n; i += 3) triangles.push_back({corners[i], corners[i + 1], corners[i + 2]});
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+    // Every other triangle of a strip is flipped back to the strip's winding.
+    for (std::size_t i = 0; i + 2 < n; ++i)
+      triangles.push_back(i % 2 == 0 ? TriangleIndices{corners[i], corners[i + 1], corners[i + 2]}
+                                     : TriangleIndices{corners[i + 1], corners[i], corners[i + 2]});
+  } else {  // TRIANGLE_FAN
+    for (std::size_t i = 1; i + 1 < n; ++i) triangles.push_back({corners[0], corners[i], corners[i + 1]});
+  }
+  return triangles;
+}
+
+bool all_nonzero(const std::vector<Vec3>& normals) {
+  return std::all_of(normals.begin(), normals.end(), [](const Vec3& n) { return is_finite(n) && (n.x != 0.0f || n.y != 0.0f || n.z != 0.0f); });
+}
+
+// A primitive's data before it joins the mesh.
+struct Primitive {
+  std::vector<Vec3> positions, normals;
+  std::vector<TexCoord> uvs;
+  std::vector<Color> colors;
+  std::vector<TriangleIndices> triangles;
+  std::uint32_t material;
+};
+
+class MeshBuilder {
+ public:
+  MeshBuilder(const tinygltf::Model& model, int mesh, const AccessorReader& reader, const MeshLoadOptions& options,
+              MeshLoadStats& stats)
+      : model_(model), mesh_index_(mesh), reader_(reader), options_(options), stats_(stats) {}
+
+  TriangleMesh build() {
+    const tinygltf::Mesh& mesh = model_.meshes[std::size_t(mesh_index_)];
+    const std::string path = "meshes[" + std::to_string(mesh_index_) + "]";
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) read_primitive(mesh.primitives[p], path + ".primitives[" + std::to_string(p) + "]");
+    out_.name = mesh.name.empty() ? path : mesh.name;
+    finish();
+    return std::move(out_);
+  }
+
+ private:
+  void read_primitive(const tinygltf::Primitive& prim, const std::string& path) {
+    const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+      stats_.warnings.push_back(file() + ": " + path + ".mode: " + std::to_string(mode) + " (" + mode_name(mode) +
+                                ") skipped: rtpro renders triangles (modes 4, 5 and 6)");
+      return;
+    }
+    const auto position = prim.attributes.find("POSITION");
+    if (position == prim.attributes.end()) {
+      stats_.warnings.push_back(file() + ": " + path + " has no POSITION; skipped");
+      return;
+    }
+    if (prim.material >= 0 && std::size_t(prim.material) >= model_.materials.size())
+      reader_.fail(path + ".material", "material " + std::to_string(prim.material) + " does not exist");
+    Primitive p;
+    p.material = prim.material < 0 ? kNoMaterial : std::uint32_t(prim.material);
+    p.positions = reader_.positions(position->second, path + ".attributes.POSITION");
+    const auto vertex_count = std::uint32_t(p.positions.size());
+    std::vector<std::uint32_t> corners;
+    if (prim.indices >= 0) {
+      corners = reader_.indices(prim.indices, vertex_count, path + ".indices");
+    } else {
+      corners.resize(vertex_count);
+      for (std::uint32_t i = 0; i < vertex_count; ++i) corners[i] = i;
+    }
+    for (const TriangleIndices& t : triangles_of(mode, corners)) {
+      if (t.v0 == t.v1 || t.v1 == t.v2 || t.v0 == t.v2) ++stats_.dropped_degenerate;
+      else p.triangles.push_back(t);
+    }
+    stats_.faces += p.triangles.size();
+    if (const auto n = prim.attributes.find("NORMAL"); n != prim.attributes.end()) {
+      p.normals = read_sized(reader_.normals(n->second, path + ".attributes.NORMAL"), vertex_count, path + ".attributes.NORMAL");
+      if (!all_nonzero(p.normals)) {
+        stats_.warnings.push_back(file() + ": " + path + ".attributes.NORMAL has zero-length normals; that primitive is flat");
+        p.normals.clear();
+      }
+    }
+    if (const auto uv = prim.attributes.find("TEXCOORD_0"); uv != prim.attributes.end())
+      p.uvs = read_sized(reader_.texcoords(uv->second, path + ".attributes.TEXCOORD_0"), vertex_count, path + ".attributes.TEXCOORD_0");
+    if (const auto c = prim.attributes.find("COLOR_0"); c != prim.attributes.end())
+      p.colors = read_sized(reader_.colors(c->second, path + ".attributes.COLOR_0"), vertex_count, path + ".attributes.COLOR_0");
+    primitives_.push_back(std::move(p));
+  }
+
+  template <typename T>
+  std::vector<T> read_sized(std::vector<T> values, std::uint32_t vertex_count, const std::string& path) const {
+    if (values.size() != vertex_count)
+      reader_.fail(path, std::to_string(values.size()) + " elements, but POSITION has " + std::to_string(vertex_count));
+    return values;
+  }
+
+  // Joins the primitives: per-vertex arrays concatenated, and flat primitives split into
+  // vertices of their own when the mesh needs normals for its other primitives.
+  void finish() {
+    const bool file_normals = options_.normals == NormalsMode::kAuto || options_.normals == NormalsMode::kFile;
+    const bool any_normals = file_normals && std::any_of(primitives_.begin(), primitives_.end(), [](const Primitive& p) { return !p.normals.empty(); });
+    if (options_.normals == NormalsMode::kFile && std::any_of(primitives_.begin(), primitives_.end(), [](const Primitive& p) { return p.normals.empty(); }))
+      throw InputError(SourceLocation{file()}, "normals: file, but meshes[" + std::to_string(mesh_index_) + "] has primitives without usable NORMAL");
+    const bool any_uvs = std::any_of(primitives_.begin(), primitives_.end(), [](const Primitive& p) { return !p.uvs.empty(); });
+    const bool any_colors = std::any_of(primitives_.begin(), primitives_.end(), [](const Primitive& p) { return !p.colors.empty(); });
+    for (Primitive& p : primitives_) {
+      const bool split_flat = any_normals && p.normals.empty();
+      if (out_.vertices.size() + (split_flat ? 3 * p.triangles.size() : p.positions.size()) > kMaxMeshElements ||
+          out_.triangles.size() + p.triangles.size() > kMaxMeshElements)
+        throw InputError(SourceLocation{file()}, "meshes[" + std::to_string(mesh_index_) + "] has more than 2^32 - 2 vertices or triangles");
+      if (split_flat) append_flat(p, any_uvs, any_colors);
+      else append_shared(p, any_normals, any_uvs, any_colors);
+      triangle_materials_.insert(triangle_materials_.end(), p.triangles.size(), p.material);
+      p = Primitive{};
+    }
+    if (options_.normals == NormalsMode::kSmooth) {
+      out_.normals = area_weighted_vertex_normals(out_.vertices, out_.triangles);
+      stats_.normals_generated = true;
+    }
+    const bool one_material = std::all_of(triangle_materials_.begin(), triangle_materials_.end(),
+                                          [&](std::uint32_t m) { return m == triangle_materials_.front(); });
+    out_.material = triangle_materials_.empty() ? kNoMaterial : triangle_materials_.front();
+    if (!one_material) out_.triangle_materials = std::move(triangle_materials_);
+  }
+
+  void append_shared(const Primitive& p, bool normals, bool uvs, bool colors) {
+    const auto base = std::uint32_t(out_.vertices.size());
+    for (const Vec3& v : p.positions) out_.vertices.push_back({v.x, v.y, v.z, 0.0f});
+    if (normals) for (const Vec3& n : p.normals) out_.normals.push_back(unit_or(n, Vec3(0, 0, 1)));
+    if (uvs) append_or_fill(out_.uvs, p.uvs, p.positions.size(), TexCoord{0.0f, 0.0f});
+    if (colors) append_or_fill(out_.colors, p.colors, p.positions.size(), Color(1.0f, 1.0f, 1.0f));
+    for (const TriangleIndices& t : p.triangles) out_.triangles.push_back({base + t.v0, base + t.v1, base + t.v2});
+  }
+
+  void append_flat(const Primitive& p, bool uvs, bool colors) {
+    for (const TriangleIndices& t : p.triangles) {
+      const auto base = std::uint32_t(out_.vertices.size());
+      const Vec3 face = unit_or(cross(p.positions[t.v1] - p.positions[t.v0], p.positions[t.v2] - p.positions[t.v0]), Vec3(0, 0, 1));
+      for (const std::uint32_t v : {t.v0, t.v1, t.v2}) {
+        out_.vertices.push_back({p.positions[v].x, p.positions[v].y, p.positions[v].z, 0.0f});
+        out_.normals.push_back(face);
+        if (uvs) out_.uvs.push_back(p.uvs.empty() ? TexCoord{0.0f, 0.0f} : p.uvs[v]);
+        if (colors) out_.colors.push_back(p.colors.empty() ? Color(1.0f, 1.0f, 1.0f) : p.colors[v]);
+      }
+      out_.triangles.push_back({base, base + 1, base + 2});
+    }
+  }
+
+  template <typename T>
+  static void append_or_fill(std::vector<T>& out, const std::vector<T>& values, std::size_t count, const T& fill) {
+    if (values.empty()) out.insert(out.end(), count, fill);
+    else out.insert(out.end(), values.begin(), values.end());
+  }
+
+  const std::string& file() const { return reader_.file(); }
+
+  const tinygltf::Model& model_;
+  int mesh_index_;
+  const AccessorReader& reader_;
+  const MeshLoadOptions& options_;
+  MeshLoadStats& stats_;
+  std::vector<Primitive> primitives_;
+  std::vector<std::uint32_t> triangle_materials_;
+  TriangleMesh out_;
+};
+
+}  // namespace
+
+TriangleMesh read_mesh(const tinygltf::Model& model, int mesh, const AccessorReader& reader, const MeshLoadOptions& options,
+                       MeshLoadStats& stats) {
+  return MeshBuilder(model, mesh, reader, options, stats).build();
+}
+
+}  // namespace rtpro::gltf

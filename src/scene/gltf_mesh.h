@@ -1,0 +1,25 @@
+#pragma once
+// Internals of the glTF loader: one glTF mesh (all its primitives) as one TriangleMesh.
+// - Modes 4 (TRIANGLES), 5 (TRIANGLE_STRIP) and 6 (TRIANGLE_FAN), indexed or not. Points and
+//   lines (modes 0 to 3) and primitives without POSITION are skipped with a warning naming the
+//   primitive. Triangles with a repeated index are dropped and counted.
+// - NORMAL when present (normalised; zero-length ones make that primitive flat, with a warning).
+//   Without NORMAL a primitive is flat, as the specification requires: its triangles get
+//   vertices of their own carrying the face normal when other primitives of the mesh have
+//   normals, and the mesh has no normals at all when none has. options.normals overrides this
+//   like for OBJ files (kSmooth: area-weighted over the shared vertices).
+// - TEXCOORD_0 (v flipped to OBJ's convention) and COLOR_0 (linear, alpha dropped), filled with
+//   (0, 0) and white for primitives without them.
+// - Each triangle's material: the primitive's (an index into the file's materials), or
+//   kNoMaterial.
+#include "rtpro/scene/mesh_loader.h"
+#include "gltf_accessor.h"
+
+#include <tiny_gltf.h>
+
+namespace rtpro::gltf {
+
+TriangleMesh read_mesh(const tinygltf::Model& model, int mesh, const AccessorReader& reader, const MeshLoadOptions& options,
+                       MeshLoadStats& stats);
+
+}  // namespace rtpro::gltf

@@ -1,0 +1,239 @@
+#include "gltf_nodes.h"
+
+#include <cmath>
+
+namespace rtpro::gltf {
+
+namespace {
+
+constexpr float kRadiansToDegrees = 57.29577951308232f;
+
+std::string node_path(int node) { return "nodes[" + std::to_string(node) + "]"; }
+
+bool all_finite(const std::vector<double>& values) {
+  return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v) && std::fabs(v) <= 1e9; });
+}
+
+Affine local_transform(const tinygltf::Node& node, int index, const AccessorReader& reader) {
+  const std::string path = node_path(index);
+  if (!node.matrix.empty()) {
+    if (node.matrix.size() != 16 || !all_finite(node.matrix)) reader.fail(path + ".matrix", "needs 16 finite numbers (magnitude <= 1e9)");
+    const auto& c = node.matrix;  // column-major: element (row r, column k) is c[4k + r]
+    if (c[3] != 0.0 || c[7] != 0.0 || c[11] != 0.0 || c[15] != 1.0)
+      reader.fail(path + ".matrix", "is not affine: its last row must be 0 0 0 1");
+    Affine a;
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 4; ++k) a.m[std::size_t(r)][std::size_t(k)] = float(c[std::size_t(4 * k + r)]);
+    return a;
+  }
+  Affine t = Affine::identity();
+  if (!node.scale.empty()) {
+    if (node.scale.size() != 3 || !all_finite(node.scale)) reader.fail(path + ".scale", "needs 3 finite numbers");
+    t = Affine::scale(Vec3(float(node.scale[0]), float(node.scale[1]), float(node.scale[2])));
+  }
+  if (!node.rotation.empty()) {
+    if (node.rotation.size() != 4 || !all_finite(node.rotation)) reader.fail(path + ".rotation", "needs 4 finite numbers (x, y, z, w)");
+    double x = node.rotation[0], y = node.rotation[1], z = node.rotation[2], w = node.rotation[3];
+    const double norm = std::sqrt(x * x + y * y + z * z + w * w);
+    if (!(norm > 0.0)) reader.fail(path + ".rotation", "is a zero quaternion");
+    x /= norm, y /= norm, z /= norm, w /= norm;
+    Affine r;
+    r.m = {{{float(1 - 2 * (y * y + z * z)), float(2 * (x * y - z * w)), float(2 * (x * z + y * w)), 0.0f},
+            {float(2 * (x * y + z * w)), float(1 - 2 * (x * x + z * z)), float(2 * (y * z - x * w)), 0.0f},
+            {float(2 * (x * z - y * w)), float(2 * (y * z + x * w)), float(1 - 2 * (x * x + y * y)), 0.0f}}};
+    t = compose(r, t);
+  }
+  if (!node.translation.empty()) {
+    if (node.translation.size() != 3 || !all_finite(node.translation)) reader.fail(path + ".translation", "needs 3 finite numbers");
+    t = compose(Affine::translate(Vec3(float(node.translation[0]), float(node.translation[1]), float(node.translation[2]))), t);
+  }
+  return t;
+}
+
+int light_of(const tinygltf::Node& node) {
+  const auto ext = node.extensions.find("KHR_lights_punctual");
+  if (ext == node.extensions.end() || !ext->second.IsObject() || !ext->second.Has("light")) return -1;
+  const tinygltf::Value& light = ext->second.Get("light");
+  return light.IsNumber() || light.IsInt() ? light.GetNumberAsInt() : -2;
+}
+
+class NodeWalker {
+ public:
+  NodeWalker(const tinygltf::Model& model, const AccessorReader& reader, GltfAsset& asset)
+      : model_(model), reader_(reader), asset_(asset), parent_(model.nodes.size(), kNone) {}
+
+  void run() {
+    link_children();
+    std::vector<int> roots = scene_roots();
+    for (int root : roots) walk(root);
+    if (singular_ > 0)
+      asset_.stats.warnings.push_back(reader_.file() + ": " + std::to_string(singular_) +
+                                      " node(s) with a singular transform (scale 0) place nothing");
+  }
+
+ private:
+  static constexpr std::size_t kNone = ~std::size_t(0);
+
+  // Every child index valid and every node with at most one parent.
+  void link_children() {
+    for (std::size_t n = 0; n < model_.nodes.size(); ++n) {
+      const std::vector<int>& children = model_.nodes[n].children;
+      for (std::size_t c = 0; c < children.size(); ++c) {
+        const std::string path = node_path(int(n)) + ".children[" + std::to_string(c) + "]";
+        const int child = children[c];
+        if (child < 0 || std::size_t(child) >= model_.nodes.size()) reader_.fail(path, "node " + std::to_string(child) + " does not exist");
+        if (parent_[std::size_t(child)] != kNone)
+          reader_.fail(path, "node " + std::to_string(child) + " already has a parent (" + node_path(int(parent_[std::size_t(child)])) +
+                                 "); glTF nodes form trees");
+        parent_[std::size_t(child)] = n;
+      }
+    }
+    reject_cycles();
+  }
+
+  // With one parent each, the nodes form trees plus possibly cycles that no root reaches; find
+  // one by following parents, marking what is known to end at a root.
+  void reject_cycles() const {
+    enum : std::uint8_t { kUnseen, kOnChain, kEndsAtRoot };
+    std::vector<std::uint8_t> state(model_.nodes.size(), kUnseen);
+    std::vector<std::size_t> chain;
+    for (std::size_t start = 0; start < model_.nodes.size(); ++start) {
+      chain.clear();
+      std::size_t n = start;
+      while (n != kNone && state[n] == kUnseen) {
+        state[n] = kOnChain;
+        chain.push_back(n);
+        n = parent_[n];
+      }
+      if (n != kNone && state[n] == kOnChain) {
+        std::string cycle = node_path(int(n));
+        for (std::size_t m = parent_[n]; m != n; m = parent_[m]) cycle = node_path(int(m)) + " -> " + cycle;
+        reader_.fail(node_path(int(n)), "is its own ancestor (a cycle: " + node_path(int(n)) + " -> " + cycle + ")");
+      }
+      for (std::size_t m : chain) state[m] = kEndsAtRoot;
+    }
+  }
+
+  std::vector<int> scene_roots() {
+    std::vector<int> roots;
+    if (model_.scenes.empty()) {
+      for (std::size_t n = 0; n < model_.nodes.size(); ++n)
+        if (parent_[n] == kNone) roots.push_back(int(n));
+      if (!roots.empty()) asset_.stats.warnings.push_back(reader_.file() + ": the file has no scenes; every root node is placed");
+      return roots;
+    }
+    const int scene = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+    if (std::size_t(scene) >= model_.scenes.size()) reader_.fail("scene", "scene " + std::to_string(scene) + " does not exist");
+    std::vector<bool> listed(model_.nodes.size(), false);
+    const std::vector<int>& nodes = model_.scenes[std::size_t(scene)].nodes;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const std::string path = "scenes[" + std::to_string(scene) + "].nodes[" + std::to_string(i) + "]";
+      const int node = nodes[i];
+      if (node < 0 || std::size_t(node) >= model_.nodes.size()) reader_.fail(path, "node " + std::to_string(node) + " does not exist");
+      if (parent_[std::size_t(node)] != kNone) reader_.fail(path, "node " + std::to_string(node) + " is not a root: it is a child of " + node_path(int(parent_[std::size_t(node)])));
+      if (listed[std::size_t(node)]) reader_.fail(path, "node " + std::to_string(node) + " is listed twice");
+      listed[std::size_t(node)] = true;
+      roots.push_back(node);
+    }
+    return roots;
+  }
+
+  // Depth first with an explicit stack. With one parent per node and roots that have none, a
+  // cycle can only be met as a node already on the path.
+  void walk(int root) {
+    struct Frame {
+      int node;
+      Affine world;
+      std::size_t next_child;
+    };
+    std::vector<Frame> stack;
+    std::vector<bool> on_path(model_.nodes.size(), false);
+    stack.push_back({root, local_transform(model_.nodes[std::size_t(root)], root, reader_), 0});
+    on_path[std::size_t(root)] = true;
+    visit(stack.back().node, stack.back().world);
+    while (!stack.empty()) {
+      Frame& frame = stack.back();
+      const tinygltf::Node& node = model_.nodes[std::size_t(frame.node)];
+      if (frame.next_child == node.children.size()) {
+        on_path[std::size_t(frame.node)] = false;
+        stack.pop_back();
+        continue;
+      }
+      const std::size_t c = frame.next_child++;
+      const int child = node.children[c];
+      const std::string path = node_path(frame.node) + ".children[" + std::to_string(c) + "]";
+      if (on_path[std::size_t(child)]) reader_.fail(path, "node " + std::to_string(child) + " is its own ancestor (a cycle)");
+      if (stack.size() >= kMaxGltfNodeDepth) reader_.fail(path, "nodes nest deeper than " + std::to_string(kMaxGltfNodeDepth) + " levels");
+      const Affine world = compose(frame.world, local_transform(model_.nodes[std::size_t(child)], child, reader_));
+      on_path[std::size_t(child)] = true;
+      stack.push_back({child, world, 0});
+      visit(child, world);
+    }
+  }
+
+  void visit(int index, const Affine& world) {
+    const tinygltf::Node& node = model_.nodes[std::size_t(index)];
+    const std::string path = node_path(index);
+    const bool invertible = inverse(world).has_value();
+    if (node.mesh >= 0) {
+      if (std::size_t(node.mesh) >= model_.meshes.size()) reader_.fail(path + ".mesh", "mesh " + std::to_string(node.mesh) + " does not exist");
+      if (invertible) asset_.placements.push_back({std::uint32_t(node.mesh), world});
+      else ++singular_;
+    }
+    if (node.camera >= 0) add_camera(node, path, world);
+    const int light = light_of(node);
+    if (light != -1) add_light(light, path, world);
+  }
+
+  void add_camera(const tinygltf::Node& node, const std::string& path, const Affine& world) {
+    if (std::size_t(node.camera) >= model_.cameras.size()) reader_.fail(path + ".camera", "camera " + std::to_string(node.camera) + " does not exist");
+    const tinygltf::Camera& camera = model_.cameras[std::size_t(node.camera)];
+    if (camera.type != "perspective") {
+      asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) + "]: " + camera.type +
+                                      " cameras are not supported; skipped");
+      return;
+    }
+    const double yfov = camera.perspective.yfov * kRadiansToDegrees;
+    const Vec3 forward = world.apply_vector(Vec3(0, 0, -1)), up = world.apply_vector(Vec3(0, 1, 0));
+    if (!(yfov > 0.0 && yfov < 180.0) || !(length(forward) > 0.0f) || !(length(cross(forward, up)) > 0.0f)) {
+      asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) + "]: unusable field of view or placement; skipped");
+      return;
+    }
+    const double aspect = camera.perspective.aspectRatio;
+    asset_.cameras.push_back({world.apply_point(Vec3(0, 0, 0)), normalize(forward), normalize(up), float(yfov),
+                              std::isfinite(aspect) && aspect > 1e-3 && aspect < 1e3 ? float(aspect) : 0.0f});
+  }
+
+  void add_light(int index, const std::string& path, const Affine& world) {
+    const std::string where = path + ".extensions.KHR_lights_punctual.light";
+    if (index < 0 || std::size_t(index) >= model_.lights.size()) reader_.fail(where, "light " + std::to_string(index) + " does not exist");
+    const tinygltf::Light& light = model_.lights[std::size_t(index)];
+    GltfLight out{};
+    if (light.type == "point") out.kind = GltfLight::Kind::kPoint;
+    else if (light.type == "directional") out.kind = GltfLight::Kind::kDirectional;
+    else if (light.type == "spot") out.kind = GltfLight::Kind::kSpot;
+    else reader_.fail("extensions.KHR_lights_punctual.lights[" + std::to_string(index) + "].type", "unknown light type '" + light.type + "'");
+    out.position = world.apply_point(Vec3(0, 0, 0));
+    const Vec3 direction = world.apply_vector(Vec3(0, 0, -1));
+    out.direction = length(direction) > 0.0f ? normalize(direction) : Vec3(0, -1, 0);
+    out.color = Color(1.0f, 1.0f, 1.0f);
+    if (light.color.size() == 3 && all_finite(light.color))
+      out.color = Color(float(std::max(light.color[0], 0.0)), float(std::max(light.color[1], 0.0)), float(std::max(light.color[2], 0.0)));
+    out.intensity = std::isfinite(light.intensity) && light.intensity >= 0.0 && light.intensity <= 1e9 ? float(light.intensity) : 0.0f;
+    asset_.lights.push_back(out);
+  }
+
+  const tinygltf::Model& model_;
+  const AccessorReader& reader_;
+  GltfAsset& asset_;
+  std::vector<std::size_t> parent_;
+  std::size_t singular_ = 0;
+};
+
+}  // namespace
+
+void place_nodes(const tinygltf::Model& model, const AccessorReader& reader, GltfAsset& asset) {
+  NodeWalker(model, reader, asset).run();
+}
+
+}  // namespace rtpro::gltf

@@ -1,0 +1,121 @@
+#include "gltf_scene.h"
+
+#include "rtpro/scene/scene_parser.h"
+#include "gltf_asset.h"
+#include "gltf_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+namespace rtpro {
+
+namespace {
+
+constexpr float kDefaultFov = 40.0f;
+constexpr int kDefaultWidth = 640;
+constexpr int kDefaultHeight = 480;
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", v);
+  return text;
+}
+
+std::string vector(const Vec3& v) { return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]"; }
+
+std::string quoted_yaml(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string camera_yaml(const GltfAsset& asset, const BBox& bounds) {
+  if (!asset.cameras.empty()) {
+    const GltfCamera& c = asset.cameras.front();
+    const int height = c.aspect_ratio > 0.0f ? std::clamp(int(std::lround(kDefaultWidth / c.aspect_ratio)), 1, 65536) : kDefaultHeight;
+    return "camera: {position: " + vector(c.position) + ", look_at: " + vector(c.position + c.forward) + ", up: " + vector(c.up) +
+           ", fov: " + number(c.yfov_degrees) + ", resolution: [" + std::to_string(kDefaultWidth) + ", " + std::to_string(height) + "]}\n";
+  }
+  Vec3 center(0.0f, 0.0f, 0.0f);
+  float radius = 1.0f;
+  if (!bounds.empty()) {
+    center = bounds.center();
+    radius = std::max(0.5f * length(bounds.extent()), 1e-6f * std::max(1.0f, max_component(abs(center))));
+  }
+  // glTF models face +z with +y up: look at the front, a little from the right and above, from
+  // where the bounding sphere just fits the view.
+  const Vec3 direction = normalize(Vec3(0.35f, 0.3f, 1.0f));
+  const float distance = radius / std::sin(0.5f * kDefaultFov * 3.14159265f / 180.0f) * 1.05f;
+  return "camera: {position: " + vector(center + direction * distance) + ", look_at: " + vector(center) + ", fov: " +
+         number(kDefaultFov) + ", resolution: [" + std::to_string(kDefaultWidth) + ", " + std::to_string(kDefaultHeight) + "]}\n";
+}
+
+std::string lights_yaml(const GltfAsset& asset, const BBox& bounds) {
+  if (asset.lights.empty())
+    return "lights:\n  - {type: directional, direction: [-0.3, -0.8, -0.5], intensity: 0.9}\n";
+  const Vec3 center = bounds.empty() ? Vec3(0.0f, 0.0f, 0.0f) : bounds.center();
+  const float floor_distance = bounds.empty() ? 1e-3f : std::max(1e-3f, 0.05f * length(bounds.extent()));
+  std::vector<float> illuminance;
+  for (const GltfLight& light : asset.lights) {
+    const float scale = [&] {
+      switch (light.kind) {
+        case GltfLight::Kind::kDirectional: return 1.0f;
+        case GltfLight::Kind::kPoint:
+        case GltfLight::Kind::kSpot: {
+          const float d = std::max(length(light.position - center), floor_distance);
+          return 1.0f / (d * d);
+        }
+      }
+      return 1.0f;
+    }();
+    illuminance.push_back(light.intensity * scale * max_component(light.color));
+  }
+  const float brightest = *std::max_element(illuminance.begin(), illuminance.end());
+  std::string text = "lights:\n";
+  for (std::size_t i = 0; i < asset.lights.size(); ++i) {
+    const GltfLight& light = asset.lights[i];
+    const float peak = max_component(light.color);
+    const Color color = peak > 0.0f ? light.color / peak : Color(1.0f, 1.0f, 1.0f);
+    const float intensity = brightest > 0.0f ? illuminance[i] / brightest : 0.0f;
+    const std::string common = ", color: " + vector(color) + ", intensity: " + number(intensity) + "}\n";
+    switch (light.kind) {
+      case GltfLight::Kind::kDirectional:
+        text += "  - {type: directional, direction: " + vector(light.direction) + common;
+        break;
+      case GltfLight::Kind::kPoint:
+      case GltfLight::Kind::kSpot:
+        text += "  - {type: point, position: " + vector(light.position) + common;
+        break;
+    }
+  }
+  return text;
+}
+
+}  // namespace
+
+std::string gltf_scene_yaml(const GltfAsset& asset) {
+  const BBox bounds = asset.bounds();
+  return "# " + asset.file.filename().string() + " as a scene\nrtpro: 1\n" + camera_yaml(asset, bounds) +
+         "render: {background: [0.18, 0.18, 0.18]}\n" + lights_yaml(asset, bounds) + "world:\n  - {type: mesh, file: " +
+         quoted_yaml(asset.file.filename().string()) + "}\n";
+}
+
+SceneDescription parse_gltf_scene_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  auto asset = std::make_shared<GltfAsset>(load_gltf_file(file));
+  for (const GltfLight& light : asset->lights)
+    if (light.kind == GltfLight::Kind::kSpot) {
+      asset->stats.warnings.push_back(file.string() + ": spot lights are rendered as point lights (their cone is ignored)");
+      break;
+    }
+  SceneDescription description = parse_scene_text(gltf_scene_yaml(*asset), file, overrides);
+  for (GltfDesc& gltf : description.world.gltfs)
+    if (gltf.file == file.lexically_normal() && gltf.normals == NormalsMode::kAuto && gltf.material == kNoMaterial) gltf.loaded = asset;
+  return description;
+}
+
+}  // namespace rtpro

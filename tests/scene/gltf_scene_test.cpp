@@ -1,0 +1,155 @@
+// glTF files as whole scenes and inside YAML scenes (gltf_scene.h, build_render_scene.cpp).
+#include "rtpro/core/error.h"
+#include "rtpro/scene/build_render_scene.h"
+#include "rtpro/scene/scene_parser.h"
+#include "gltf_test_files.h"
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <variant>
+
+namespace rtpro {
+namespace {
+
+using test::GltfFile;
+
+// A unit cube's corners drawn as two triangles spanning it, placed at (10, 0, 0).
+GltfFile offset_model() {
+  GltfFile gltf;
+  const int mesh = gltf.mesh(gltf.floats({0, 0, 0, 1, 0, 0, 1, 1, 1, 0, 0, 0, 1, 1, 1, 0, 1, 1}, "VEC3"));
+  gltf.scene({gltf.node({{"mesh", mesh}, {"translation", {10, 0, 0}}})});
+  return gltf;
+}
+
+TEST(GltfScene, WithoutCameraTheDefaultOneFramesTheBoundsAndADefaultLightShines) {
+  const auto file = offset_model().write("model");
+  const SceneDescription scene = parse_scene_file(file);
+  const CameraDesc& camera = scene.camera;
+  EXPECT_EQ(camera.look_at, Vec3(10.5f, 0.5f, 0.5f));
+  const Vec3 forward = normalize(camera.look_at - camera.position);
+  EXPECT_LT(forward.z, 0.0f);  // looking at the model's front (+z) side
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 p(10.0f + float(corner & 1), float(corner >> 1 & 1), float(corner >> 2 & 1));
+    const float angle = std::acos(dot(normalize(p - camera.position), forward)) * 180.0f / 3.14159265f;
+    EXPECT_LT(angle, camera.fov_degrees / 2) << corner;
+  }
+  ASSERT_EQ(scene.lights.size(), 1u);
+  EXPECT_TRUE(std::holds_alternative<DirectionalLightDesc>(scene.lights[0]));
+  ASSERT_EQ(scene.world.gltfs.size(), 1u);
+  EXPECT_TRUE(scene.world.gltfs[0].loaded) << "read once, not again by build_render_scene";
+  const RenderScene render = build_render_scene(scene);
+  EXPECT_EQ(render.prototypes.size(), 1u);
+  EXPECT_EQ(render.bounds().lower, Vec3(10, 0, 0));
+}
+
+TEST(GltfScene, TheFirstCameraAndThePunctualLightsAreUsed) {
+  GltfFile gltf = offset_model();
+  gltf.json["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"aspectRatio", 2.0}, {"znear", 0.1}}}}};
+  gltf.json["extensionsUsed"] = {"KHR_lights_punctual"};
+  gltf.json["extensions"]["KHR_lights_punctual"]["lights"] = {
+      {{"type", "point"}, {"intensity", 400}, {"color", {1, 0.5, 0.5}}},
+      {{"type", "directional"}, {"intensity", 2}},
+      {{"type", "spot"}, {"intensity", 100}, {"spot", nlohmann::json::object()}}};
+  const int camera = gltf.node({{"camera", 0}, {"translation", {10.5, 0.5, 5}}});
+  const int point = gltf.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}, {"translation", {10.5, 10.5, 0.5}}});
+  const int sun = gltf.node({{"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}, {"rotation", {-0.7071068, 0, 0, 0.7071068}}});
+  const int spot = gltf.node({{"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}, {"translation", {10.5, 0.5, 10.5}}});
+  gltf.json["scenes"][0]["nodes"] = {0, camera, point, sun, spot};
+  const SceneDescription scene = parse_scene_file(gltf.write("lit"), {"render.spp=4"});
+  EXPECT_EQ(scene.camera.position, Vec3(10.5f, 0.5f, 5.0f));
+  EXPECT_EQ(scene.camera.look_at, Vec3(10.5f, 0.5f, 4.0f));
+  EXPECT_NEAR(scene.camera.fov_degrees, 0.5f * 180.0f / 3.14159265f, 1e-4f);
+  EXPECT_EQ(scene.camera.width, 2 * scene.camera.height);
+  EXPECT_EQ(scene.render.spp, 4);  // --set works on glTF scenes too
+  ASSERT_EQ(scene.lights.size(), 3u);
+  // Illuminance at the model's centre: point 400 cd at distance 10 gives 4 lux, the sun 2, the
+  // spot 100 cd at 10 gives 1: scaled so that the brightest is 1.
+  const auto& p = std::get<PointLightDesc>(scene.lights[0]);
+  const auto& d = std::get<DirectionalLightDesc>(scene.lights[1]);
+  const auto& s = std::get<PointLightDesc>(scene.lights[2]);
+  EXPECT_NEAR(p.intensity, 1.0f, 1e-5f);
+  EXPECT_EQ(p.color, Color(1.0f, 0.5f, 0.5f));
+  EXPECT_NEAR(d.intensity, 0.5f, 1e-5f);
+  EXPECT_NEAR(d.direction.y, -1.0f, 1e-5f);  // the node's -z turned to point down
+  EXPECT_NEAR(s.intensity, 0.25f, 1e-5f);
+  EXPECT_EQ(s.position, Vec3(10.5f, 0.5f, 10.5f));
+}
+
+TEST(GltfScene, AGltfObjectInAYamlSceneIsPlacedThroughEveryLevel) {
+  offset_model().write("piece");
+  const auto scene_file = test::write_file("scene.yaml", R"(rtpro: 1
+camera: {position: [0, 0, 30], look_at: [0, 0, 0]}
+materials:
+  red: {color: [1, 0, 0]}
+objects:
+  piece:
+    - {type: mesh, file: piece.gltf, normals: flat}
+world:
+  - {type: instance, object: piece, transform: {translate: [0, 5, 0]}}
+  - {type: instance, object: piece, transform: {scale: 2}}
+  - {type: mesh, file: piece.gltf, material: red}
+)");
+  const SceneDescription description = parse_scene_file(scene_file);
+  ASSERT_EQ(description.objects[0].gltfs.size(), 1u);
+  EXPECT_EQ(description.objects[0].gltfs[0].normals, NormalsMode::kFlat);
+  const RenderScene scene = build_render_scene(description);
+  // Two loads (the override material makes a different prototype), three placements.
+  EXPECT_EQ(scene.prototypes.size(), 2u);
+  std::vector<Vec3> origins;
+  for (const Geometry& g : scene.top.geometries)
+    if (const auto* instance = std::get_if<Instance>(&g)) origins.push_back(instance->object_to_world.apply_point(Vec3(0, 0, 0)));
+  ASSERT_EQ(origins.size(), 3u);
+  EXPECT_EQ(origins[0], Vec3(10, 0, 0));   // the world's own glTF, placed first
+  EXPECT_EQ(origins[1], Vec3(10, 5, 0));   // node translation, then the instance's
+  EXPECT_EQ(origins[2], Vec3(20, 0, 0));   // node translation, then scaled by 2
+  const auto& red = std::get<TriangleMesh>(scene.prototypes[std::get<Instance>(scene.top.geometries[0]).prototype].geometries[0]);
+  EXPECT_EQ(scene.material_names[red.material], "red");
+}
+
+TEST(GltfScene, NormalsKeyIsCheckedLikeEveryOtherKey) {
+  offset_model().write("piece");
+  try {
+    parse_scene_text("rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\nworld:\n  - {type: mesh, file: piece.gltf, normals: smoth}\n",
+                     test::write_file("bad.yaml", ""));
+    ADD_FAILURE() << "accepted normals: smoth";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 4);
+    EXPECT_NE(e.message().find("did you mean 'smooth'"), std::string::npos) << e.message();
+  }
+}
+
+TEST(GltfScene, RendersFromTheCommandLineWithBothBackends) {
+  const auto file = offset_model().write("cli");
+  for (const char* backend : {"native", "embree"}) {
+    std::string output;
+    const int code = test::run_command(test::rtpro_executable().string() + " render " + file.string() + " -o " +
+                                           (file.parent_path() / (std::string(backend) + ".exr")).string() +
+                                           " --size 32x24 --spp 1 -q --backend " + backend,
+                                       &output);
+    EXPECT_EQ(code, 0) << output;
+    EXPECT_TRUE(std::filesystem::is_regular_file(file.parent_path() / (std::string(backend) + ".exr")));
+  }
+  std::string output;
+  EXPECT_EQ(test::run_command(test::rtpro_executable().string() + " render " + (file.parent_path() / "absent.glb").string() + " -o x.exr", &output), 2)
+      << output;
+}
+
+TEST(GltfScene, InfoShowsLoaderWarningsAndNoInfiniteBoundsForAnEmptyMesh) {
+  const auto mesh = test::write_file("empty.obj", "o nothing\nl 1 1\n");
+  const auto scene = test::write_file("empty.yaml", "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\n"
+                                                    "world:\n  - {type: mesh, file: empty.obj}\n");
+  std::string output;
+  EXPECT_EQ(test::run_command(test::rtpro_executable().string() + " info " + scene.string(), &output), 0) << output;
+  EXPECT_NE(output.find("warning    " + mesh.string() + ": no faces"), std::string::npos) << output;
+  EXPECT_NE(output.find("ignored 'l' statements"), std::string::npos) << output;
+  EXPECT_NE(output.find("bounds       none"), std::string::npos) << output;
+  EXPECT_EQ(output.find("inf"), std::string::npos) << output;
+  EXPECT_EQ(test::run_command(test::rtpro_executable().string() + " info --json " + scene.string(), &output), 0);
+  EXPECT_NE(output.find("\"bounds\": null"), std::string::npos) << output;
+}
+
+}  // namespace
+}  // namespace rtpro
