@@ -67,11 +67,17 @@ PixelOffset StratifiedSampler::pixel_offset(std::uint64_t pixel_key, int sample_
   return {(static_cast<float>(sx) + jitter_x) * inv_strata_, (static_cast<float>(sy) + jitter_y) * inv_strata_};
 }
 
-Sample2D StratifiedSampler::sample_2d(std::uint64_t pixel_key, int sample_index, int dimension) const {
+StratifiedSampler::PermutedSample StratifiedSampler::permuted(std::uint64_t pixel_key, int sample_index,
+                                                               int dimension) const {
   const std::uint64_t pixel_dimension = hash_combine(hash_combine(seed_, pixel_key), 0x5eed0000ull + dimension);
   const auto count = static_cast<std::uint32_t>(strata_ * strata_);
-  const std::uint32_t stratum =
-      permutation_element(static_cast<std::uint32_t>(sample_index), count, static_cast<std::uint32_t>(pixel_dimension));
+  return {pixel_dimension, count,
+          permutation_element(static_cast<std::uint32_t>(sample_index), count,
+                              static_cast<std::uint32_t>(pixel_dimension))};
+}
+
+Sample2D StratifiedSampler::sample_2d(std::uint64_t pixel_key, int sample_index, int dimension) const {
+  const auto [pixel_dimension, count, stratum] = permuted(pixel_key, sample_index, dimension);
   const std::uint64_t bits = hash_combine(pixel_dimension, static_cast<std::uint64_t>(sample_index));
   const float jitter_x = to_unit_float(bits);
   const float jitter_y = to_unit_float(bits << 24);
@@ -81,10 +87,7 @@ Sample2D StratifiedSampler::sample_2d(std::uint64_t pixel_key, int sample_index,
 }
 
 float StratifiedSampler::sample_1d(std::uint64_t pixel_key, int sample_index, int dimension) const {
-  const std::uint64_t pixel_dimension = hash_combine(hash_combine(seed_, pixel_key), 0x5eed0000ull + dimension);
-  const auto count = static_cast<std::uint32_t>(strata_ * strata_);
-  const std::uint32_t stratum =
-      permutation_element(static_cast<std::uint32_t>(sample_index), count, static_cast<std::uint32_t>(pixel_dimension));
+  const auto [pixel_dimension, count, stratum] = permuted(pixel_key, sample_index, dimension);
   const float jitter = to_unit_float(hash_combine(pixel_dimension, static_cast<std::uint64_t>(sample_index)));
   // (s + jitter) / count < 1: jitter <= 1 − 2⁻²⁴ and the float product rounds at most to 1 − 2⁻²⁴.
   const float value = (static_cast<float>(stratum) + jitter) / static_cast<float>(count);

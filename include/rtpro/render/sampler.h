@@ -36,6 +36,13 @@ class StratifiedSampler {
   float sample_1d(std::uint64_t pixel_key, int sample_index, int dimension) const;
 
  private:
+  // A later dimension's hash for this pixel, the stratum count, and the stratum this sample takes.
+  struct PermutedSample {
+    std::uint64_t pixel_dimension;
+    std::uint32_t count;
+    std::uint32_t stratum;
+  };
+  PermutedSample permuted(std::uint64_t pixel_key, int sample_index, int dimension) const;
   std::uint64_t sample_bits(std::uint64_t pixel_key, int sample_index) const;
 
   int strata_;
