@@ -57,28 +57,32 @@ inline std::size_t utf8_sequence_length(std::string_view text) {
   return length;
 }
 
-// 'word', for messages: control bytes and bytes that are not well-formed UTF-8 shown as \xNN (a
-// binary or UTF-16 file must not print raw NUL or escape bytes to a terminal), and long words cut
-// with their length given.
-inline std::string quoted(std::string_view word) {
+// `text` for messages: control bytes and bytes that are not well-formed UTF-8 shown as \xNN (a
+// binary or UTF-16 file must not print raw NUL or escape bytes to a terminal), cut after
+// `max_bytes`.
+inline std::string printable(std::string_view text, std::size_t max_bytes) {
   static constexpr char kHex[] = "0123456789abcdef";
-  const std::string_view shown = word.substr(0, kMaxQuotedBytes);
-  std::string text;
-  text.reserve(shown.size() + 2);
-  text += '\'';
+  const std::string_view shown = text.substr(0, max_bytes);
+  std::string out;
+  out.reserve(shown.size());
   for (std::size_t i = 0; i < shown.size();) {
     const std::size_t length = shown[i] == '\\' ? 0 : utf8_sequence_length(shown.substr(i));
     if (length > 0) {
-      text += shown.substr(i, length);
+      out += shown.substr(i, length);
       i += length;
       continue;
     }
     const auto byte = static_cast<unsigned char>(shown[i++]);
-    text += "\\x";
-    text += kHex[byte >> 4];
-    text += kHex[byte & 15];
+    out += "\\x";
+    out += kHex[byte >> 4];
+    out += kHex[byte & 15];
   }
-  text += '\'';
+  return out;
+}
+
+// 'word', for messages: printable() within quotes, and a long word cut with its length given.
+inline std::string quoted(std::string_view word) {
+  std::string text = "'" + printable(word, kMaxQuotedBytes) + "'";
   if (word.size() > kMaxQuotedBytes) text += " (cut: " + std::to_string(word.size()) + " bytes)";
   return text;
 }

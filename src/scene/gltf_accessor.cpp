@@ -1,6 +1,7 @@
 #include "gltf_accessor.h"
 
 #include "rtpro/core/error.h"
+#include "large_buffer.h"
 #include "mesh_limits.h"
 
 #include <array>
@@ -96,7 +97,16 @@ float AccessorReader::component(const View& v, std::size_t i, int k) const {
 
 template <int N>
 std::vector<std::array<float, N>> AccessorReader::floats(const View& v) const {
-  std::vector<std::array<float, N>> out(v.count);
+  std::vector<std::array<float, N>> out;
+  resize_large(out, v.count);
+  if (v.data && v.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT && v.stride == sizeof(float) * N) {
+    // The common case, tightly packed floats: one copy, then one pass checking them.
+    std::memcpy(out.data(), v.data, v.count * sizeof(float) * N);
+    for (std::size_t i = 0; i < v.count; ++i)
+      for (const float value : out[i])
+        if (!std::isfinite(value)) fail(v.path, "element " + std::to_string(i) + " is not a finite number");
+    return out;
+  }
   for (std::size_t i = 0; i < v.count; ++i) {
     for (int k = 0; k < N; ++k) {
       const float value = component(v, i, k);
@@ -109,13 +119,20 @@ std::vector<std::array<float, N>> AccessorReader::floats(const View& v) const {
 
 std::vector<Vec3> AccessorReader::positions(int accessor, const std::string& where) const {
   const View v = view(accessor, where, {TINYGLTF_TYPE_VEC3}, {TINYGLTF_COMPONENT_TYPE_FLOAT});
+  static_assert(sizeof(Vec3) == 3 * sizeof(float));
   std::vector<Vec3> out;
-  out.reserve(v.count);
-  for (const auto& p : floats<3>(v)) {
-    const Vec3 position(p[0], p[1], p[2]);
-    if (!(max_component(abs(position)) <= kMaxAbsCoordinate))
-      fail(v.path, "element " + std::to_string(out.size()) + " has a coordinate beyond the supported magnitude 1e16");
-    out.push_back(position);
+  resize_large(out, v.count);
+  if (v.data && v.stride == sizeof(Vec3)) std::memcpy(out.data(), v.data, v.count * sizeof(Vec3));
+  else if (v.data)
+    for (std::size_t i = 0; i < v.count; ++i) std::memcpy(&out[i], v.data + i * v.stride, sizeof(Vec3));
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    // One test per coordinate for both: NaN fails it, and so do infinities and magnitudes beyond
+    // the limit.
+    const Vec3& p = out[i];
+    if (!(std::fabs(p.x) <= kMaxAbsCoordinate && std::fabs(p.y) <= kMaxAbsCoordinate && std::fabs(p.z) <= kMaxAbsCoordinate)) {
+      if (!is_finite(out[i])) fail(v.path, "element " + std::to_string(i) + " is not a finite number");
+      fail(v.path, "element " + std::to_string(i) + " has a coordinate beyond the supported magnitude 1e16");
+    }
   }
   return out;
 }
@@ -154,7 +171,16 @@ std::vector<std::uint32_t> AccessorReader::indices(int accessor, std::uint32_t v
   const View v = view(accessor, where, {TINYGLTF_TYPE_SCALAR},
                       {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
   if (v.normalized) fail(v.path + ".normalized", "indices must not be normalized");
-  std::vector<std::uint32_t> out(v.count);
+  std::vector<std::uint32_t> out;
+  resize_large(out, v.count);
+  if (v.data && v.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT && v.stride == 4) {
+    std::memcpy(out.data(), v.data, v.count * 4);
+    for (std::size_t i = 0; i < v.count; ++i)
+      if (out[i] >= vertex_count)
+        fail(v.path, "index " + std::to_string(out[i]) + " (element " + std::to_string(i) + ") is out of range: the primitive has " +
+                         std::to_string(vertex_count) + " vertices");
+    return out;
+  }
   for (std::size_t i = 0; i < v.count; ++i) {
     std::uint32_t index = 0;
     if (v.data) {

@@ -30,6 +30,9 @@ constexpr const char* kGeometryExtensions[] = {"KHR_draco_mesh_compression", "EX
 constexpr const char* kKnownExtensions[] = {"KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_texture_transform",
                                             "KHR_materials_pbrSpecularGlossiness", "KHR_materials_unlit"};
 
+// Characters of a tinygltf message line shown.
+constexpr std::size_t kMaxTinygltfLine = 300;
+
 std::string lowercase(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   return text;
@@ -182,12 +185,13 @@ tinygltf::Model parse(const fs::path& file, std::vector<std::string>& warnings) 
   const auto size = static_cast<unsigned int>(bytes.size());
   const bool ok = binary ? gltf.LoadBinaryFromMemory(&model, &err, &warn, data, size, base)
                          : gltf.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, base);
+  // tinygltf's messages quote the file (URIs, names): printable and short, whatever it holds.
   const auto lines = [](const std::string& text) {
     std::vector<std::string> out;
     std::size_t begin = 0;
     while (begin < text.size()) {
       const std::size_t end = std::min(text.find('\n', begin), text.size());
-      if (end > begin) out.push_back(text.substr(begin, end - begin));
+      if (end > begin) out.push_back(ascii::printable(std::string_view(text).substr(begin, end - begin), kMaxTinygltfLine));
       begin = end + 1;
     }
     return out;

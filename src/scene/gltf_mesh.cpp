@@ -1,6 +1,7 @@
 #include "gltf_mesh.h"
 
 #include "rtpro/core/error.h"
+#include "large_buffer.h"
 #include "mesh_limits.h"
 #include "mesh_normals.h"
 
@@ -24,6 +25,7 @@ const char* mode_name(int mode) {
 std::vector<TriangleIndices> triangles_of(int mode, const std::vector<std::uint32_t>& corners) {
   std::vector<TriangleIndices> triangles;
   const std::size_t n = corners.size();
+  reserve_large(triangles, mode == TINYGLTF_MODE_TRIANGLES ? n / 3 : n);
   if (mode == TINYGLTF_MODE_TRIANGLES) {
     for (std::size_t i = 0; i + 2 < n; i += 3) triangles.push_back({corners[i], corners[i + 1], corners[i + 2]});
   } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
@@ -91,10 +93,12 @@ class MeshBuilder {
       corners.resize(vertex_count);
       for (std::uint32_t i = 0; i < vertex_count; ++i) corners[i] = i;
     }
-    for (const TriangleIndices& t : triangles_of(mode, corners)) {
-      if (t.v0 == t.v1 || t.v1 == t.v2 || t.v0 == t.v2) ++stats_.dropped_degenerate;
-      else p.triangles.push_back(t);
-    }
+    p.triangles = triangles_of(mode, corners);
+    corners = {};
+    const auto degenerate = [](const TriangleIndices& t) { return t.v0 == t.v1 || t.v1 == t.v2 || t.v0 == t.v2; };
+    const auto kept_end = std::remove_if(p.triangles.begin(), p.triangles.end(), degenerate);
+    stats_.dropped_degenerate += std::size_t(p.triangles.end() - kept_end);
+    p.triangles.erase(kept_end, p.triangles.end());
     stats_.faces += p.triangles.size();
     if (const auto n = prim.attributes.find("NORMAL"); n != prim.attributes.end()) {
       p.normals = read_sized(reader_.normals(n->second, path + ".attributes.NORMAL"), vertex_count, path + ".attributes.NORMAL");
@@ -126,12 +130,18 @@ class MeshBuilder {
       throw InputError(SourceLocation{file()}, "normals: file, but meshes[" + std::to_string(mesh_index_) + "] has primitives without usable NORMAL");
     const bool any_uvs = std::any_of(primitives_.begin(), primitives_.end(), [](const Primitive& p) { return !p.uvs.empty(); });
     const bool any_colors = std::any_of(primitives_.begin(), primitives_.end(), [](const Primitive& p) { return !p.colors.empty(); });
+    std::size_t vertices = 0, triangles = 0;
+    for (const Primitive& p : primitives_) {
+      vertices += any_normals && p.normals.empty() ? 3 * p.triangles.size() : p.positions.size();
+      triangles += p.triangles.size();
+    }
+    if (vertices > kMaxMeshElements || triangles > kMaxMeshElements)
+      throw InputError(SourceLocation{file()}, "meshes[" + std::to_string(mesh_index_) + "] has more than 2^32 - 2 vertices or triangles");
+    reserve_large(out_.vertices, vertices);
+    reserve_large(out_.triangles, triangles);
+    if (any_normals) reserve_large(out_.normals, vertices);
     for (Primitive& p : primitives_) {
-      const bool split_flat = any_normals && p.normals.empty();
-      if (out_.vertices.size() + (split_flat ? 3 * p.triangles.size() : p.positions.size()) > kMaxMeshElements ||
-          out_.triangles.size() + p.triangles.size() > kMaxMeshElements)
-        throw InputError(SourceLocation{file()}, "meshes[" + std::to_string(mesh_index_) + "] has more than 2^32 - 2 vertices or triangles");
-      if (split_flat) append_flat(p, any_uvs, any_colors);
+      if (any_normals && p.normals.empty()) append_flat(p, any_uvs, any_colors);
       else append_shared(p, any_normals, any_uvs, any_colors);
       triangle_materials_.insert(triangle_materials_.end(), p.triangles.size(), p.material);
       p = Primitive{};

@@ -1,5 +1,7 @@
 #include "gltf_nodes.h"
 
+#include "ascii_scan.h"
+
 #include <cmath>
 
 namespace rtpro::gltf {
@@ -189,7 +191,7 @@ class NodeWalker {
     if (std::size_t(node.camera) >= model_.cameras.size()) reader_.fail(path + ".camera", "camera " + std::to_string(node.camera) + " does not exist");
     const tinygltf::Camera& camera = model_.cameras[std::size_t(node.camera)];
     if (camera.type != "perspective") {
-      asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) + "]: " + camera.type +
+      asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) + "]: " + ascii::quoted(camera.type) +
                                       " cameras are not supported; skipped");
       return;
     }
@@ -212,7 +214,7 @@ class NodeWalker {
     if (light.type == "point") out.kind = GltfLight::Kind::kPoint;
     else if (light.type == "directional") out.kind = GltfLight::Kind::kDirectional;
     else if (light.type == "spot") out.kind = GltfLight::Kind::kSpot;
-    else reader_.fail("extensions.KHR_lights_punctual.lights[" + std::to_string(index) + "].type", "unknown light type '" + light.type + "'");
+    else reader_.fail("extensions.KHR_lights_punctual.lights[" + std::to_string(index) + "].type", "unknown light type " + ascii::quoted(light.type));
     out.position = world.apply_point(Vec3(0, 0, 0));
     const Vec3 direction = world.apply_vector(Vec3(0, 0, -1));
     out.direction = length(direction) > 0.0f ? normalize(direction) : Vec3(0, -1, 0);

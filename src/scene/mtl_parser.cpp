@@ -99,7 +99,7 @@ class MtlParser {
                                   " is partly transparent (d " + std::to_string(current_->opacity) + "); rtpro renders it opaque");
     for (const MaterialDesc& m : library_.materials) {
       if (m.name == current_->name) {
-        library_.warnings.push_back(file_ + ": material '" + m.name + "' is defined twice; the first one is used");
+        library_.warnings.push_back(file_ + ": material " + ascii::quoted(m.name) + " is defined twice; the first one is used");
         current_.reset();
         return;
       }

@@ -130,9 +130,9 @@ class HeaderParser {
       for (const Property& p : element.properties)
         least += header_.encoding == Encoding::kAscii ? 2 : size_of(p.is_list ? p.count_type : p.type);
       if (element.count > 0 && least == 0)
-        fail_at(element.line, "element '" + element.name + "' has no properties");
+        fail_at(element.line, "element " + quoted(element.name) + " has no properties");
       if (element.count > 0 && element.count > remaining / least)
-        fail_at(element.line, "element '" + element.name + "' declares " + std::to_string(element.count) +
+        fail_at(element.line, "element " + quoted(element.name) + " declares " + std::to_string(element.count) +
                                   " instances, more than the " + std::to_string(bytes_.size() - header_.body_offset) +
                                   " bytes after the header can hold");
       remaining -= element.count * least;

@@ -121,6 +121,9 @@ TEST(GltfHostile, InfinitiesAndHugeCoordinatesAreRefused) {
   GltfFile huge;
   huge.scene({huge.node({{"mesh", huge.mesh(huge.floats({0, 0, 0, 1e30f, 0, 0, 0, 1, 0}, "VEC3"))}})});
   EXPECT_NE(error_of(huge.write("huge")).find("beyond the supported magnitude"), std::string::npos);
+  GltfFile nan;  // a NaN beside a larger coordinate must not hide behind it
+  nan.scene({nan.node({{"mesh", nan.mesh(nan.floats({0, 0, 0, 1, 0, 0, 5, NAN, 0}, "VEC3"))}})});
+  EXPECT_NE(error_of(nan.write("nan")).find("accessors[0]: element 2 is not a finite number"), std::string::npos);
 }
 
 TEST(GltfHostile, AccessorsMustFitTheirBufferView) {
