@@ -93,7 +93,9 @@ TEST(ObjNormals, SmoothingGroupsSmoothWithinAndSplitBetween) {
         continue;
       }
       const auto [entry, inserted] = normal_at.emplace(std::make_pair(group_of[t], position), n);
-      if (!inserted) EXPECT_EQ(entry->second, n) << "a position shares one normal within its group";
+      if (!inserted) {
+        EXPECT_EQ(entry->second, n) << "a position shares one normal within its group";
+      }
     }
   }
   // (1,1,1) is in groups 1 and 2 with different normals: a crease.
