@@ -11,7 +11,10 @@ build="${RTPRO_BUILD_DIR:-$root/build-release}"
 runs=10
 if [ "${1:-}" = "-n" ]; then runs=$2; shift 2; fi
 
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTPRO_BUILD_TESTS=OFF >/dev/null
+# An existing build folder (RTPRO_BUILD_DIR) keeps its own settings; only a new one is configured.
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTPRO_BUILD_TESTS=OFF >/dev/null
+fi
 cmake --build "$build" --target rtpro >/dev/null
 binaries=("$build/rtpro" "$@")
 out=$(mktemp -d)

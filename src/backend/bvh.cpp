@@ -1,7 +1,16 @@
 #include "bvh.h"
 
+#include "box4.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+#include <tbb/parallel_reduce.h>
+
 #include <algorithm>
 #include <array>
+#include <memory>
+#include <type_traits>
 
 namespace rtpro {
 
@@ -13,17 +22,29 @@ constexpr float kTraversalCost = 1.0f;  // relative to one primitive test
 // Below this depth limit the builder may follow SAH freely; past it, it splits at the median so
 // that the tree depth (and the traversal stack) stays bounded on adversarial input.
 constexpr int kSahDepthLimit = kBvhMaxDepth - 32;
+// Subtrees of at most this many primitives are built by one task; larger ones split their two
+// children across tasks. Ranges of at least kParallelRange primitives are bounded and binned in
+// parallel, in chunks of kChunk.
+constexpr std::uint32_t kParallelSubtree = 4096;
+constexpr std::uint32_t kParallelRange = 32768;
+constexpr std::size_t kChunk = 8192;
 
+// Trivially constructible, so that an array of them is filled by parallel tasks without first
+// being initialised by one thread (those first writes were a seventh of the build).
 struct BuildPrimitive {
-  BBox bounds;
-  Vec3 centroid;
+  float lower[3], upper[3], centroid[3];
   PrimitiveRef ref;
+
+  BBox bounds() const { return {{lower[0], lower[1], lower[2]}, {upper[0], upper[1], upper[2]}}; }
 };
+static_assert(std::is_trivially_default_constructible_v<BuildPrimitive>);
 
 struct Bin {
   BBox bounds;
   int count = 0;
 };
+using Bins = std::array<Bin, kBinCount>;
+using AxisBins = std::array<Bins, 3>;
 
 struct Split {
   int axis = -1;
@@ -31,55 +52,213 @@ struct Split {
   float cost = 0.0f;
 };
 
+struct RangeBounds {
+  BBox bounds;     // of the primitives
+  BBox centroids;  // of their centroids
+};
+
+// What one node does with its range: a leaf when mid == begin, else children [begin, mid) and
+// [mid, end) split along `axis`.
+struct Decision {
+  BBox bounds;
+  std::uint32_t mid;
+  int axis;
+};
+
+// A primitive's bounds as two lanes-of-four; the fourth lane holds the next field's bytes, which
+// are normal floats (upper.x, centroid.x) and never reach a result.
+__m128 lower4(const BuildPrimitive& p) { return _mm_loadu_ps(p.lower); }
+__m128 upper4(const BuildPrimitive& p) { return _mm_loadu_ps(p.upper); }
+
+BvhNode relocated(BvhNode node, std::uint32_t shift) {
+  if (!node.is_leaf()) node.index += shift;
+  return node;
+}
+
+// Parallel and still deterministic: the tree (nodes, their order, the primitive order) is the one
+// the single-threaded builder makes, whatever the thread count.
+// - Bounds and bins are minima, maxima and integer counts, reduced over chunks in index order:
+//   exact, so no result depends on how the work was divided.
+// - Subtrees own disjoint primitive ranges, so partitioning them concurrently leaves the same
+//   array as partitioning them one after the other.
+// - Node indices come from one pass at the end that hands out positions in the order of the
+//   single-threaded depth-first build (see place()).
 class BvhBuilder {
  public:
-  explicit BvhBuilder(std::vector<BuildPrimitive> primitives) : prims_(std::move(primitives)) {}
+  BvhBuilder(std::unique_ptr<BuildPrimitive[]> primitives, std::uint32_t count, bool parallel)
+      : prims_(std::move(primitives)), count_(count), parallel_(parallel) {}
 
   Bvh build() {
     Bvh bvh;
-    if (prims_.empty()) return bvh;
-    bvh.nodes.reserve(prims_.size());
+    if (count_ == 0) return bvh;
+    const std::uint32_t count = count_;
+    if (!parallel_) {
+      bvh.nodes = build_sequential(0, count, 0);
+    } else {
+      Part root;
+      build_part(root, 0, count, 0);
+      bvh.nodes.resize(root.size);
+      std::vector<Copy> copies;
+      std::uint32_t next = 1;
+      place(root, 0, next, bvh.nodes, copies);
+      tbb::parallel_for(std::size_t{0}, copies.size(), [&](std::size_t i) { copy_part(copies[i], bvh.nodes); });
+    }
+    bvh.refs.resize(count);
+    for_range(0, count, [&](std::uint32_t begin, std::uint32_t end) {
+      for (std::uint32_t i = begin; i < end; ++i) bvh.refs[i] = prims_[i].ref;
+    });
+    return bvh;
+  }
+
+ private:
+  // A subtree of the parallel phase: either an interior node whose children were built by two
+  // tasks, or a subtree built by one task into `nodes` (its root first, then its descendants as
+  // build_sequential lays them out, indices counted within `nodes`).
+  struct Part {
+    BvhNode node{};
+    std::unique_ptr<Part> left, right;
+    std::vector<BvhNode> nodes;
+    std::uint32_t size = 0;  // nodes in the subtree
+  };
+
+  struct Copy {
+    const std::vector<BvhNode>* nodes;
+    std::uint32_t slot;  // where the subtree's root goes
+    std::uint32_t base;  // where its descendants start
+  };
+
+  // The single-threaded builder: depth first, both children of a node allocated together, the
+  // left subtree finished before the right one starts.
+  std::vector<BvhNode> build_sequential(std::uint32_t begin, std::uint32_t end, int depth) {
+    std::vector<BvhNode> nodes;
+    nodes.reserve(2 * std::size_t{end - begin} - 1);  // the most a binary tree over them can have
     struct Task {
       std::uint32_t node, begin, end;
       int depth;
     };
     std::vector<Task> stack;
-    bvh.nodes.push_back({});
-    stack.push_back({0, 0, static_cast<std::uint32_t>(prims_.size()), 0});
+    nodes.push_back({});
+    stack.push_back({0, begin, end, depth});
     while (!stack.empty()) {
       const Task task = stack.back();
       stack.pop_back();
-      BBox bounds, centroids;
-      for (std::uint32_t i = task.begin; i < task.end; ++i) {
-        bounds.extend(prims_[i].bounds);
-        centroids.extend(prims_[i].centroid);
-      }
-      const std::uint32_t count = task.end - task.begin;
-      int axis = 0;
-      const std::uint32_t mid = choose_partition(task.begin, task.end, centroids, task.depth, axis);
-      if (mid == task.begin) {
-        bvh.nodes[task.node] = {bounds, task.begin, static_cast<std::uint16_t>(count), 0};
+      const Decision d = decide(task.begin, task.end, task.depth);
+      if (d.mid == task.begin) {
+        nodes[task.node] = leaf(d.bounds, task.begin, task.end);
         continue;
       }
       // Siblings are allocated as a pair, so one index finds both children.
-      const std::uint32_t left = static_cast<std::uint32_t>(bvh.nodes.size());
-      const std::uint32_t right = left + 1;
-      bvh.nodes.push_back({});
-      bvh.nodes.push_back({});
-      bvh.nodes[task.node] = {bounds, left, 0, static_cast<std::uint16_t>(axis)};
-      stack.push_back({right, mid, task.end, task.depth + 1});
-      stack.push_back({left, task.begin, mid, task.depth + 1});
+      const auto left = static_cast<std::uint32_t>(nodes.size());
+      nodes.push_back({});
+      nodes.push_back({});
+      nodes[task.node] = {d.bounds, left, 0, static_cast<std::uint16_t>(d.axis)};
+      stack.push_back({left + 1, d.mid, task.end, task.depth + 1});
+      stack.push_back({left, task.begin, d.mid, task.depth + 1});
     }
-    bvh.refs.reserve(prims_.size());
-    for (const BuildPrimitive& p : prims_) bvh.refs.push_back(p.ref);
-    return bvh;
+    return nodes;
   }
 
- private:
+  void build_part(Part& part, std::uint32_t begin, std::uint32_t end, int depth) {
+    if (end - begin <= kParallelSubtree) {
+      part.nodes = build_sequential(begin, end, depth);
+      part.size = static_cast<std::uint32_t>(part.nodes.size());
+      return;
+    }
+    const Decision d = decide(begin, end, depth);
+    if (d.mid == begin) {
+      part.nodes = {leaf(d.bounds, begin, end)};
+      part.size = 1;
+      return;
+    }
+    part.node = {d.bounds, 0, 0, static_cast<std::uint16_t>(d.axis)};
+    part.left = std::make_unique<Part>();
+    part.right = std::make_unique<Part>();
+    tbb::parallel_invoke([&] { build_part(*part.left, begin, d.mid, depth + 1); },
+                         [&] { build_part(*part.right, d.mid, end, depth + 1); });
+    part.size = 1 + part.left->size + part.right->size;
+  }
+
+  // Gives `part`'s root the index `slot` and its descendants the positions build_sequential would
+  // have given them: the children's pair next, then all of the left subtree, then the right.
+  static void place(const Part& part, std::uint32_t slot, std::uint32_t& next, std::vector<BvhNode>& nodes,
+                    std::vector<Copy>& copies) {
+    if (!part.left) {
+      copies.push_back({&part.nodes, slot, next});
+      next += part.size - 1;
+      return;
+    }
+    const std::uint32_t left = next;
+    next += 2;
+    nodes[slot] = part.node;
+    nodes[slot].index = left;
+    place(*part.left, left, next, nodes, copies);
+    place(*part.right, left + 1, next, nodes, copies);
+  }
+
+  // Local index k > 0 of a part built in one task goes to base + k - 1.
+  static void copy_part(const Copy& copy, std::vector<BvhNode>& nodes) {
+    const std::vector<BvhNode>& local = *copy.nodes;
+    const std::uint32_t shift = copy.base - 1;
+    nodes[copy.slot] = relocated(local[0], shift);
+    for (std::size_t k = 1; k < local.size(); ++k) nodes[copy.base + k - 1] = relocated(local[k], shift);
+  }
+
+  static BvhNode leaf(const BBox& bounds, std::uint32_t begin, std::uint32_t end) {
+    return {bounds, begin, static_cast<std::uint16_t>(end - begin), 0};
+  }
+
+  // Calls body(chunk_begin, chunk_end) over [begin, end): in parallel chunks for a large range.
+  template <typename Body>
+  void for_range(std::uint32_t begin, std::uint32_t end, Body&& body) const {
+    if (!parallel_ || end - begin < kParallelRange) return body(begin, end);
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(begin, end, kChunk),
+                      [&](const tbb::blocked_range<std::uint32_t>& r) { body(r.begin(), r.end()); });
+  }
+
+  // Folds fold(value, chunk_begin, chunk_end) over [begin, end) and joins the chunks' values in
+  // index order with join(left, right), on fixed chunk boundaries for a large range.
+  template <typename Value, typename Fold, typename Join>
+  Value reduce_range(std::uint32_t begin, std::uint32_t end, Fold&& fold, Join&& join) const {
+    if (!parallel_ || end - begin < kParallelRange) return fold(Value{}, begin, end);
+    return tbb::parallel_deterministic_reduce(
+        tbb::blocked_range<std::uint32_t>(begin, end, kChunk), Value{},
+        [&](const tbb::blocked_range<std::uint32_t>& r, Value value) { return fold(value, r.begin(), r.end()); },
+        join, tbb::simple_partitioner());
+  }
+
+  RangeBounds bounds_of(std::uint32_t begin, std::uint32_t end) const {
+    return reduce_range<RangeBounds>(
+        begin, end,
+        [this](RangeBounds r, std::uint32_t b, std::uint32_t e) {
+          Box4 bounds(r.bounds), centroids(r.centroids);
+          const __m128 xyz = _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0));  // the centroid's 4th lane is a ref
+          for (std::uint32_t i = b; i < e; ++i) {
+            const BuildPrimitive& p = prims_[i];
+            bounds.extend(lower4(p), upper4(p));
+            const __m128 c = _mm_and_ps(_mm_loadu_ps(p.centroid), xyz);
+            centroids.extend(c, c);
+          }
+          return RangeBounds{bounds.box(), centroids.box()};
+        },
+        [](RangeBounds a, const RangeBounds& b) {
+          a.bounds.extend(b.bounds);
+          a.centroids.extend(b.centroids);
+          return a;
+        });
+  }
+
+  Decision decide(std::uint32_t begin, std::uint32_t end, int depth) {
+    const RangeBounds range = bounds_of(begin, end);
+    int axis = 0;
+    const std::uint32_t mid = choose_partition(begin, end, range, depth, axis);
+    return {range.bounds, mid, axis};
+  }
+
   // Returns the split position in [begin, end), or begin to make a leaf; sets `axis` to the
   // axis the primitives were separated along.
-  std::uint32_t choose_partition(std::uint32_t begin, std::uint32_t end, const BBox& centroids, int depth,
+  std::uint32_t choose_partition(std::uint32_t begin, std::uint32_t end, const RangeBounds& range, int depth,
                                  int& axis) {
+    const BBox& centroids = range.centroids;
     const std::uint32_t count = end - begin;
     if (count <= 2) return begin;
     axis = centroids.largest_axis();
@@ -90,7 +269,7 @@ class BvhBuilder {
     }
     if (depth >= kSahDepthLimit) return median_split(begin, end, axis);
 
-    const Split split = best_sah_split(begin, end, centroids);
+    const Split split = best_sah_split(begin, end, range);
     const float leaf_cost = static_cast<float>(count);
     if (split.axis < 0) return count <= kMaxLeafSize ? begin : median_split(begin, end, axis);
     if (split.cost >= leaf_cost && count <= kMaxLeafSize) return begin;
@@ -98,10 +277,11 @@ class BvhBuilder {
     axis = split.axis;
     const float lo = centroids.lower[split.axis];
     const float scale = kBinCount / centroids.extent()[split.axis];
-    auto* middle = std::partition(prims_.data() + begin, prims_.data() + end, [&](const BuildPrimitive& p) {
+    // std::partition, not a parallel one: its exact order of the two sides is part of the tree.
+    auto* middle = std::partition(prims_.get() + begin, prims_.get() + end, [&](const BuildPrimitive& p) {
       return bin_of(p.centroid[split.axis], lo, scale) <= split.bin;
     });
-    const auto mid = static_cast<std::uint32_t>(middle - prims_.data());
+    const auto mid = static_cast<std::uint32_t>(middle - prims_.get());
     if (mid == begin || mid == end) return median_split(begin, end, axis);
     return mid;
   }
@@ -111,20 +291,65 @@ class BvhBuilder {
     return std::clamp(b, 0, kBinCount - 1);
   }
 
-  Split best_sah_split(std::uint32_t begin, std::uint32_t end, const BBox& centroids) const {
-    Split best;
-    float best_cost = 0.0f;
+  // The bins of every axis whose centroids spread, in one pass over the range: each bin still
+  // sees its primitives in array order, so this is exactly three separate passes' result.
+  AxisBins bin(std::uint32_t begin, std::uint32_t end, const BBox& centroids) const {
+    std::array<bool, 3> used{};
+    std::array<float, 3> lo{}, scale{};
     for (int axis = 0; axis < 3; ++axis) {
       const float extent = centroids.extent()[axis];
-      if (!(extent > 0.0f)) continue;
-      const float lo = centroids.lower[axis];
-      const float scale = kBinCount / extent;
-      std::array<Bin, kBinCount> bins{};
-      for (std::uint32_t i = begin; i < end; ++i) {
-        Bin& bin = bins[bin_of(prims_[i].centroid[axis], lo, scale)];
-        bin.bounds.extend(prims_[i].bounds);
-        ++bin.count;
+      used[axis] = extent > 0.0f;
+      lo[axis] = centroids.lower[axis];
+      scale[axis] = used[axis] ? kBinCount / extent : 0.0f;
+    }
+    // Fresh bins for [b, e): the per-node cost matters as much as the per-primitive one, since
+    // most of the ~450,000 nodes of a million-triangle tree cover a few dozen primitives.
+    auto fold = [&](std::uint32_t b, std::uint32_t e) {
+      std::array<std::array<Box4, kBinCount>, 3> boxes;
+      std::array<std::array<int, kBinCount>, 3> counts{};
+      for (std::uint32_t i = b; i < e; ++i) {
+        const BuildPrimitive& p = prims_[i];
+        const __m128 lower = lower4(p), upper = upper4(p);
+        for (int axis = 0; axis < 3; ++axis) {
+          if (!used[axis]) continue;
+          const int k = bin_of(p.centroid[axis], lo[axis], scale[axis]);
+          boxes[axis][k].extend(lower, upper);
+          ++counts[axis][k];
+        }
       }
+      AxisBins bins;
+      for (int axis = 0; axis < 3; ++axis) {
+        if (!used[axis]) continue;
+        for (int k = 0; k < kBinCount; ++k) bins[axis][k] = {boxes[axis][k].box(), counts[axis][k]};
+      }
+      return bins;
+    };
+    auto join = [](AxisBins a, const AxisBins& b) {
+      for (int axis = 0; axis < 3; ++axis) {
+        for (int k = 0; k < kBinCount; ++k) {
+          a[axis][k].bounds.extend(b[axis][k].bounds);
+          a[axis][k].count += b[axis][k].count;
+        }
+      }
+      return a;
+    };
+    if (!parallel_ || end - begin < kParallelRange) return fold(begin, end);
+    return tbb::parallel_deterministic_reduce(
+        tbb::blocked_range<std::uint32_t>(begin, end, kChunk), AxisBins{},
+        [&](const tbb::blocked_range<std::uint32_t>& r, const AxisBins& so_far) {
+          return join(so_far, fold(r.begin(), r.end()));
+        },
+        join, tbb::simple_partitioner());
+  }
+
+  Split best_sah_split(std::uint32_t begin, std::uint32_t end, const RangeBounds& range) const {
+    Split best;
+    float best_cost = 0.0f;
+    const AxisBins all_bins = bin(begin, end, range.centroids);
+    for (int axis = 0; axis < 3; ++axis) {
+      const float extent = range.centroids.extent()[axis];
+      if (!(extent > 0.0f)) continue;
+      const Bins& bins = all_bins[axis];
       // Sweep from the right to get the area × count of every right side, then from the left.
       std::array<float, kBinCount> right_cost{};
       BBox right;
@@ -148,9 +373,7 @@ class BvhBuilder {
       }
     }
     if (best.axis >= 0) {
-      BBox all;
-      for (std::uint32_t i = begin; i < end; ++i) all.extend(prims_[i].bounds);
-      const float area = all.surface_area();
+      const float area = range.bounds.surface_area();
       best.cost = area > 0.0f ? kTraversalCost + best_cost / area : kTraversalCost;
     }
     return best;
@@ -158,7 +381,7 @@ class BvhBuilder {
 
   std::uint32_t median_split(std::uint32_t begin, std::uint32_t end, int axis) {
     const std::uint32_t mid = begin + (end - begin) / 2;
-    std::nth_element(prims_.begin() + begin, prims_.begin() + mid, prims_.begin() + end,
+    std::nth_element(prims_.get() + begin, prims_.get() + mid, prims_.get() + end,
                      [axis](const BuildPrimitive& a, const BuildPrimitive& b) {
                        const float ca = a.centroid[axis], cb = b.centroid[axis];
                        if (ca != cb) return ca < cb;
@@ -167,25 +390,43 @@ class BvhBuilder {
     return mid;
   }
 
-  std::vector<BuildPrimitive> prims_;
+  std::unique_ptr<BuildPrimitive[]> prims_;
+  std::uint32_t count_;
+  bool parallel_;
 };
+
+// Every primitive's bounds, computed in parallel into its place in geometry order; primitives
+// with empty bounds (an instance of an empty prototype) are then dropped, keeping the order.
+std::unique_ptr<BuildPrimitive[]> build_primitives(const Group& group, std::span<const BBox> prototype_bounds,
+                                                   std::uint32_t& count) {
+  std::vector<std::size_t> first(group.geometries.size() + 1, 0);
+  for (std::uint32_t g = 0; g < group.geometries.size(); ++g) first[g + 1] = first[g] + group.primitive_count(g);
+  auto primitives = std::make_unique_for_overwrite<BuildPrimitive[]>(first.back());
+  tbb::parallel_for(std::uint32_t{0}, static_cast<std::uint32_t>(group.geometries.size()), [&](std::uint32_t g) {
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, group.primitive_count(g), kChunk),
+                      [&](const tbb::blocked_range<std::uint32_t>& r) {
+                        for (std::uint32_t p = r.begin(); p < r.end(); ++p) {
+                          const BBox b = group.primitive_bounds(g, p, prototype_bounds);
+                          const Vec3 c = b.center();
+                          primitives[first[g] + p] = {{b.lower.x, b.lower.y, b.lower.z},
+                                                      {b.upper.x, b.upper.y, b.upper.z},
+                                                      {c.x, c.y, c.z},
+                                                      {g, p}};
+                        }
+                      });
+  });
+  const auto* end = std::remove_if(primitives.get(), primitives.get() + first.back(),
+                                   [](const BuildPrimitive& p) { return p.bounds().empty(); });
+  count = static_cast<std::uint32_t>(end - primitives.get());
+  return primitives;
+}
 
 }  // namespace
 
-Bvh build_bvh(const Group& group, std::span<const BBox> prototype_bounds) {
-  std::size_t total = 0;
-  for (std::uint32_t g = 0; g < group.geometries.size(); ++g) total += group.primitive_count(g);
-  std::vector<BuildPrimitive> primitives;
-  primitives.reserve(total);
-  for (std::uint32_t g = 0; g < group.geometries.size(); ++g) {
-    const std::uint32_t count = group.primitive_count(g);
-    for (std::uint32_t p = 0; p < count; ++p) {
-      const BBox b = group.primitive_bounds(g, p, prototype_bounds);
-      if (b.empty()) continue;  // e.g. an instance of an empty prototype
-      primitives.push_back({b, b.center(), {g, p}});
-    }
-  }
-  return BvhBuilder(std::move(primitives)).build();
+Bvh build_bvh(const Group& group, std::span<const BBox> prototype_bounds, BvhBuildMode mode) {
+  std::uint32_t count = 0;
+  auto primitives = build_primitives(group, prototype_bounds, count);
+  return BvhBuilder(std::move(primitives), count, mode == BvhBuildMode::kParallel).build();
 }
 
 }  // namespace rtpro

@@ -35,7 +35,12 @@ struct Bvh {
 
 inline constexpr int kBvhMaxDepth = 128;
 
-// Deterministic: the same group always gives the same tree.
-Bvh build_bvh(const Group& group, std::span<const BBox> prototype_bounds);
+// kParallel uses the calling TBB arena's threads; kSequential builds on the calling thread alone
+// and is the reference the parallel build must equal.
+enum class BvhBuildMode { kParallel, kSequential };
+
+// Deterministic: the same group always gives the same tree, node for node and byte for byte,
+// whatever the mode and the number of threads.
+Bvh build_bvh(const Group& group, std::span<const BBox> prototype_bounds, BvhBuildMode mode = BvhBuildMode::kParallel);
 
 }  // namespace rtpro

@@ -189,9 +189,6 @@ int run_render(const RenderCommandOptions& o) {
   // Must exist before any TBB or Embree work so the cap really holds.
   tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
-  // OpenImageIO takes about half a second to load: do it while the scene loads and renders.
-  start_tbb_workers(threads);
-  start_loading_image_layer();
 
   const SceneDescription description = parse_with_overrides(o.scene, scene_overrides(o));
   // Refused before anything large is allocated: image buffers, flattened instances, meshes.
@@ -215,6 +212,11 @@ int run_render(const RenderCommandOptions& o) {
   stats.width = scene.camera.width;
   stats.height = scene.camera.height;
   stats.load_seconds = seconds_since(start);
+
+  // OpenImageIO takes about half a second to load: do it while the scene renders. Not earlier:
+  // its hundreds of mmap calls slow the page faults of a large scene file's parse.
+  start_tbb_workers(threads);
+  start_loading_image_layer();
 
   BackendOptions backend_options;
   backend_options.threads = threads;

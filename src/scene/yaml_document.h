@@ -1,14 +1,15 @@
 #pragma once
 // A YAML document as rtpro's scene reader sees it: a tree of null/scalar/sequence/mapping nodes,
 // each knowing where it came from (the scene file or a command-line override). Built from
-// yaml-cpp's event stream rather than YAML::Node, because YAML::Node silently drops duplicate
-// keys, has no nesting limit of its own worth relying on, and cannot say which override a node
-// came from. Aliases share the anchored subtree, so `*a` costs no memory.
+// libyaml's event stream: a YAML library's own document tree would silently drop duplicate keys
+// and could not say which override a node came from. Aliases share the anchored subtree, so `*a`
+// costs no memory.
 #include "rtpro/core/error.h"
 
 #include <cstddef>
 #include <deque>
 #include <memory>
+#include <memory_resource>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,8 +18,9 @@ namespace rtpro {
 
 // Deeper documents are rejected before anything walks them recursively.
 inline constexpr int kMaxYamlNesting = 64;
-// Longer lines are rejected before parsing: yaml-cpp reads a few MB per second, so one 100 MB
-// line would take most of a minute; no hand-written or generated scene line comes near 1 MiB.
+// Longer lines are rejected before parsing: a parser spends seconds on one 100 MB line (most of a
+// minute with yaml-cpp, a few seconds with libyaml); no hand-written or generated scene line comes
+// near 1 MiB.
 inline constexpr std::size_t kMaxYamlLineBytes = std::size_t{1} << 20;
 
 // Refuses lines longer than kMaxYamlLineBytes as text arrives, so a file reader can stop after
@@ -47,6 +49,11 @@ struct YamlPosition {
 
 struct YamlNode;
 using YamlNodePtr = std::shared_ptr<const YamlNode>;
+struct YamlEntry;
+// Polymorphic-allocator lists, so that a parsed document's lists share its nodes' arena
+// (yaml_node_arena.h); nodes made elsewhere (overrides) use the ordinary heap.
+using YamlNodeList = std::pmr::vector<YamlNodePtr>;
+using YamlEntryList = std::pmr::vector<YamlEntry>;
 
 struct YamlEntry {
   std::string key;
@@ -61,8 +68,11 @@ struct YamlNode {
   YamlPosition at;
   std::string scalar;              // scalar text
   bool plain = true;               // an unquoted scalar: only plain scalars are numbers
-  std::vector<YamlNodePtr> items;  // sequence
-  std::vector<YamlEntry> entries;  // mapping, in document order, keys unique
+  YamlNodeList items;     // sequence
+  YamlEntryList entries;  // mapping, in document order, keys unique
+
+  YamlNode() = default;
+  explicit YamlNode(std::pmr::memory_resource* lists) : items(lists), entries(lists) {}
 
   bool is_null() const { return kind == Kind::null; }
   bool is_scalar() const { return kind == Kind::scalar; }

@@ -147,7 +147,7 @@ std::string read_string(const YamlNode& node, const std::string& name) {
   return node.scalar;
 }
 
-const std::vector<YamlNodePtr>& read_list(const YamlNode& node, const std::string& name, std::size_t count,
+const YamlNodeList& read_list(const YamlNode& node, const std::string& name, std::size_t count,
                                           std::string_view shape) {
   if (!node.is_sequence() || node.items.size() != count)
     fail_at(node, name + ": expected " + std::string(shape) + ", got " + node.describe());

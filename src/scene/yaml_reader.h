@@ -53,7 +53,7 @@ Vec3 read_vec3(const YamlNode& node, const std::string& name);
 // A vec3 whose components are all >= 0 (colours).
 Color read_color(const YamlNode& node, const std::string& name);
 // A list of exactly `count` items, or a failure naming the expected shape.
-const std::vector<YamlNodePtr>& read_list(const YamlNode& node, const std::string& name, std::size_t count,
+const YamlNodeList& read_list(const YamlNode& node, const std::string& name, std::size_t count,
                                           std::string_view shape);
 
 }  // namespace rtpro
