@@ -6,6 +6,7 @@
 #include "memory_option.h"
 #include "progress.h"
 #include "render_stats.h"
+#include "scene_overrides.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
 #include "rtpro/image/atomic_file_replacement.h"
@@ -24,6 +25,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
@@ -45,7 +47,8 @@ struct RenderCommandOptions {
   std::string spp, max_depth, seed, size;
   std::optional<int> threads;
   std::string ocio_config, display, view;
-  std::vector<std::string> overrides;
+  std::vector<std::string> overrides, defines;
+  std::vector<SceneOverride> scene_overrides;  // all of the above, in command-line order
   std::string region;
   bool crop = false;
   std::vector<std::string> aovs;
@@ -64,58 +67,11 @@ struct RenderCommandOptions {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// A scene override together with the command-line text it came from, so errors name the flag
-// the user typed (--spp 10) rather than the override it became (--set render.spp=10).
-struct SceneOverride {
-  std::string assignment;
-  std::string flag;
-};
-
-// An optional sign and decimal digits: what the scene file's integer rules then judge (range,
-// sign) without any conversion in between that could wrap.
-bool is_integer_text(std::string_view text) {
-  if (!text.empty() && (text[0] == '+' || text[0] == '-')) text.remove_prefix(1);
-  return !text.empty() && text.find_first_not_of("0123456789") == std::string_view::npos;
-}
-
-void add_integer_override(std::vector<SceneOverride>& overrides, const std::string& key, const std::string& flag,
-                          const std::string& value) {
-  if (value.empty()) return;
-  if (!is_integer_text(value)) throw InputError(flag + " '" + value + "': expected an integer");
-  overrides.push_back({key + "=" + value, flag + " " + value});
-}
-
-// Command-line values become scene overrides, so they are validated exactly like the file's.
-std::vector<SceneOverride> scene_overrides(const RenderCommandOptions& o) {
-  std::vector<SceneOverride> overrides;
-  for (const std::string& set : o.overrides) overrides.push_back({set, "--set " + set});
-  add_integer_override(overrides, "render.spp", "--spp", o.spp);
-  add_integer_override(overrides, "render.max_depth", "--max-depth", o.max_depth);
-  add_integer_override(overrides, "render.seed", "--seed", o.seed);
-  if (!o.size.empty()) {
-    const std::size_t x = o.size.find('x');
-    const std::string width = o.size.substr(0, x), height = x == std::string::npos ? "" : o.size.substr(x + 1);
-    if (!is_integer_text(width) || !is_integer_text(height))
-      throw InputError("--size '" + o.size + "': expected WIDTHxHEIGHT, e.g. 640x480");
-    overrides.push_back({"camera.resolution=[" + width + "," + height + "]", "--size " + o.size});
-  }
-  return overrides;
-}
-
-
-SceneDescription parse_with_overrides(const std::string& scene, const std::vector<SceneOverride>& overrides) {
-  std::vector<std::string> assignments;
-  for (const SceneOverride& o : overrides) assignments.push_back(o.assignment);
-  try {
-    return parse_scene_file(scene, assignments);
-  } catch (const InputError& e) {
-    for (const SceneOverride& o : overrides) {
-      const std::string prefix = "--set " + o.assignment + ":";
-      const std::string message = e.what();
-      if (message.rfind(prefix, 0) == 0) throw InputError(o.flag + ":" + message.substr(prefix.size()));
-    }
-    throw;
-  }
+// Only EXR has named layers for the AOVs; every other format would drop them without a word.
+bool holds_layers(const std::filesystem::path& output) {
+  std::string extension = output.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".exr" || extension == ".sxr" || extension == ".mxr";
 }
 
 std::optional<PixelRegion> parse_region(const std::string& text) {
@@ -168,7 +124,11 @@ int run_render(const RenderCommandOptions& o) {
   render_options.region = parse_region(o.region);
   render_options.tile_size = o.tile_size;
   for (const std::string& name : o.aovs) render_options.aovs.push_back(parse_aov(name));
-  const ProgressMode progress_mode = o.quiet ? ProgressMode::kNever : parse_progress_mode(o.progress);
+  if (!render_options.aovs.empty() && !holds_layers(o.output))
+    throw InputError("--aov needs an EXR output: '" + o.output + "' holds only the colour image");
+  // Checked even with -q, which then overrides it: a typo is an error whether or not it shows.
+  const ProgressMode chosen_progress = parse_progress_mode(o.progress);
+  const ProgressMode progress_mode = o.quiet ? ProgressMode::kNever : chosen_progress;
   if (o.crop && !render_options.region) throw InputError("--crop needs --region");
   const MemoryBudget memory = parse_memory_budget(o.max_memory_mb);
 
@@ -190,7 +150,7 @@ int run_render(const RenderCommandOptions& o) {
   tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
 
-  const SceneDescription description = parse_with_overrides(o.scene, scene_overrides(o));
+  const SceneDescription description = parse_with_overrides(o.scene, o.scene_overrides);
   // Refused before anything large is allocated: image buffers, flattened instances, meshes.
   int extra_channels = 0;
   for (Aov aov : render_options.aovs) extra_channels += static_cast<int>(aov_channel_names(aov).size());
@@ -297,10 +257,13 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("--threads", o->threads, "Worker threads (0: all cores)");
   cmd->add_option("--seed", o->seed, "Seed of the pixel sampler");
   cmd->add_option("--max-depth", o->max_depth, "Maximum number of mirror bounces");
-  cmd->add_option("--set", o->overrides, "Override a scene value, e.g. --set render.spp=64 (repeatable)");
+  add_scene_override_options(*cmd, o->overrides, o->defines);
   cmd->add_option("--region", o->region, "Render only pixels x0,y0,x1,y1 (x1, y1 exclusive)");
   cmd->add_flag("--crop", o->crop, "With --region: write only the region instead of a full-size image");
-  cmd->add_option("--aov", o->aovs, "Extra EXR layers: albedo,normal,depth,object-id")->delimiter(',');
+  cmd->add_option("--aov", o->aovs, "Extra EXR layers: albedo,normal,depth,object-id (EXR outputs only)")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--tile-size", o->tile_size, "Tile edge in pixels")->capture_default_str();
   cmd->add_option("--ocio-config", o->ocio_config, "OpenColorIO config (default: $OCIO, else bundled)");
   cmd->add_option("--display", o->display, "OCIO display for 8-bit outputs (default: the config's)");
@@ -319,7 +282,10 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("--max-memory", o->max_memory_mb,
                   "Memory budget in MiB for the whole render, checked against an up-front estimate and given to "
                   "Embree as its limit (0: no limit; default: the smaller of 4096 and the available memory)");
-  cmd->callback([o, &action] { action = [o] { return run_render(*o); }; });
+  cmd->callback([o, cmd, &action] {
+    o->scene_overrides = command_line_overrides(*cmd);
+    action = [o] { return run_render(*o); };
+  });
 }
 
 }  // namespace rtpro::cli

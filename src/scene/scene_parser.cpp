@@ -294,9 +294,10 @@ SceneDescription parse_scene_file(const std::filesystem::path& file, const std::
 
 SceneDescription parse_scene_text(std::string_view text, const std::filesystem::path& file,
                                   const std::vector<std::string>& overrides) {
-  YamlDocument document = YamlDocument::parse(text, file.string());
+  YamlDocument document = YamlDocument::parse(text, file.string(), read_scene_file_text);
   check_scene_root(document.root());
   for (const std::string& override_text : overrides) document.apply_override(override_text);
+  document.resolve_variables();
   return read_scene(document.root(), file);
 }
 
