@@ -49,7 +49,8 @@ std::string help_pointer(const std::string& command) {
                    help_pointer(command.get_parent() ? command.get_name() : ""));
 }
 
-bool takes_value(const CLI::Option& option) { return option.get_type_size_max() > 0; }
+// Flags expect no items; options with a value one (or more, for lists).
+bool takes_value(const CLI::Option& option) { return option.get_items_expected_max() > 0; }
 
 // Options whose later values would silently replace or reject earlier ones.
 bool takes_one_value(const CLI::Option& option) {

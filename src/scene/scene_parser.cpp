@@ -100,15 +100,7 @@ CameraDesc read_camera(const YamlNode& node) {
 int read_spp(const YamlNode& node) {
   const std::int64_t spp = read_integer(node, "render.spp");
   if (spp < 1 || spp > kMaxSpp)
-    fail_at(node, "render.spp must be from 1 to " + std::to_string(kMaxSpp) + " (256x256), got " + node.scalar);
-  const auto root = static_cast<std::int64_t>(std::sqrt(static_cast<double>(spp)));
-  if (root * root != spp) {
-    const std::int64_t above = root + 1;
-    fail_at(node, "render.spp must be a perfect square n x n (1, 4, 9, 16, 25, ...) for stratified sampling, got " +
-                      node.scalar + "; the nearest are " + std::to_string(root * root) + " (" + std::to_string(root) +
-                      "x" + std::to_string(root) + ") and " + std::to_string(above * above) + " (" +
-                      std::to_string(above) + "x" + std::to_string(above) + ")");
-  }
+    fail_at(node, "render.spp must be from 1 to " + std::to_string(kMaxSpp) + ", got " + node.scalar);
   return static_cast<int>(spp);
 }
 

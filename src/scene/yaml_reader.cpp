@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 namespace rtpro {
@@ -119,6 +121,38 @@ Vec3 read_vec3(const YamlNode& node, const std::string& name) {
               static_cast<float>(read_number(*items[2], name)));
 }
 
+namespace {
+
+bool is_whole_number_text(const std::string& text) {
+  return !text.empty() && text.find_first_not_of("+0123456789") == std::string::npos;
+}
+
+// [255, 128, 0] is an 8-bit colour picker's value, not a linear colour 255 times "full": a
+// material would reflect 255 times the light it receives. Whole numbers above 1, all at most
+// 255, are refused with the linear value; HDR colours are written with a decimal point, and a
+// brighter light raises its intensity.
+void reject_8bit_color(const YamlNode& node, const YamlNodeList& items, const std::string& name) {
+  double largest = 0.0;
+  for (const YamlNodePtr& item : items) {
+    if (!is_whole_number_text(item->scalar)) return;
+    largest = std::max(largest, std::strtod(item->scalar.c_str(), nullptr));
+  }
+  if (largest <= 1.0 || largest > 255.0) return;
+  std::string linear;
+  for (const YamlNodePtr& item : items) {
+    char text[32];
+    const double encoded = std::strtod(item->scalar.c_str(), nullptr) / 255.0;
+    const double decoded = encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
+    std::snprintf(text, sizeof text, "%.3g", decoded);
+    linear += (linear.empty() ? "" : ", ") + std::string(text);
+  }
+  fail_at(node, name + ": [" + items[0]->scalar + ", " + items[1]->scalar + ", " + items[2]->scalar +
+                    "] looks like 8-bit sRGB values; colours are linear with 1 as full: that colour is [" + linear +
+                    "] (for a brighter light raise its intensity; write 2.0 for a deliberate value above 1)");
+}
+
+}  // namespace
+
 Color read_color(const YamlNode& node, const std::string& name) {
   const auto& items = read_list(node, name, 3, "a colour [r, g, b]");
   Color color;
@@ -127,6 +161,7 @@ Color read_color(const YamlNode& node, const std::string& name) {
     if (component < 0.0) fail_at(*items[i], name + ": colour components must be >= 0, got " + items[i]->scalar);
     color[i] = static_cast<float>(component);
   }
+  reject_8bit_color(node, items, name);
   return color;
 }
 
