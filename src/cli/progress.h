@@ -10,9 +10,15 @@
 
 namespace rtpro::cli {
 
-enum class ProgressMode { kNever, kAuto, kAlways };
+// kJson: one JSON object per line for render managers (json_progress_line), once a second and
+// at the end.
+enum class ProgressMode { kNever, kAuto, kAlways, kJson };
 
-ProgressMode parse_progress_mode(const std::string& text);  // never | auto | always
+ProgressMode parse_progress_mode(const std::string& text);  // never | auto | always | json
+
+// {"tiles_done":3,"tiles_total":12,"fraction":0.25,"elapsed_seconds":1.5,"eta_seconds":4.5,
+// "final":false}; eta_seconds is null before the first tile.
+std::string json_progress_line(std::size_t done, std::size_t total, double elapsed, bool final);
 
 class ProgressReporter {
  public:
@@ -26,6 +32,7 @@ class ProgressReporter {
   void draw(std::size_t done, std::size_t total, bool final);
 
   bool enabled_;
+  bool json_;
   bool bar_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::duration interval_;

@@ -4,6 +4,7 @@
 #include "interrupt.h"
 #include "log.h"
 #include "memory_option.h"
+#include "output_target.h"
 #include "progress.h"
 #include "render_stats.h"
 #include "scene_overrides.h"
@@ -46,7 +47,9 @@ struct RenderCommandOptions {
   // "--seed -1" or "--size 4294967297x1" is an error instead of wrapping to another number.
   std::string spp, max_depth, seed, size;
   std::optional<int> threads;
-  std::string ocio_config, display, view;
+  std::string ocio_config, display, deprecated_display, view;
+  std::string format;      // for -o -
+  double exposure = 0.0;   // stops
   std::vector<std::string> overrides, defines;
   std::vector<SceneOverride> scene_overrides;  // all of the above, in command-line order
   std::string region;
@@ -124,24 +127,34 @@ int run_render(const RenderCommandOptions& o) {
   render_options.region = parse_region(o.region);
   render_options.tile_size = o.tile_size;
   for (const std::string& name : o.aovs) render_options.aovs.push_back(parse_aov(name));
-  if (!render_options.aovs.empty() && !holds_layers(o.output))
+  const OutputTarget output(o.output, o.format);
+  check_exposure(o.exposure);
+  if (!render_options.aovs.empty() && !holds_layers(output.file()))
     throw InputError("--aov needs an EXR output: '" + o.output + "' holds only the colour image");
-  // Checked even with -q, which then overrides it: a typo is an error whether or not it shows.
+  if (!o.deprecated_display.empty() && !o.display.empty())
+    throw InputError("--display is the old spelling of --ocio-display: give only --ocio-display");
+  if (!o.deprecated_display.empty())
+    log.warning("--display is deprecated: it names an OpenColorIO display; write --ocio-display " +
+                o.deprecated_display + " (pbrt's live preview is --display-server)");
+  const std::string& display = o.display.empty() ? o.deprecated_display : o.display;
+  // Checked even with -q, which silences it unless it is JSON for a program: a typo is an error
+  // whether or not it shows.
   const ProgressMode chosen_progress = parse_progress_mode(o.progress);
-  const ProgressMode progress_mode = o.quiet ? ProgressMode::kNever : chosen_progress;
+  const ProgressMode progress_mode =
+      o.quiet && chosen_progress != ProgressMode::kJson ? ProgressMode::kNever : chosen_progress;
   if (o.crop && !render_options.region) throw InputError("--crop needs --region");
   const MemoryBudget memory = parse_memory_budget(o.max_memory_mb);
 
   // Fail before the render, not after it: output folder, format, colour config and view.
-  check_image_output(o.output);
+  check_image_output(output.file());
   if (!o.stats_json.empty()) check_replaceable(o.stats_json);
   ImageWriteOptions write_options;
   if (!o.ocio_config.empty()) write_options.ocio_config = o.ocio_config;
-  write_options.display = o.display;
+  write_options.display = display;
   write_options.view = o.view;
-  if (!writes_scene_linear(o.output)) {
+  if (!writes_scene_linear(output.file())) {
     const ColorConfig colors = ColorConfig::load(write_options.ocio_config);
-    const DisplayTransform transform = colors.display_transform(o.display, o.view);
+    const DisplayTransform transform = colors.display_transform(display, o.view);
     log.verbose("colour: OCIO config " + colors.source() + ", display '" + transform.display() + "', view '" +
                 transform.view() + "'");
   }
@@ -166,7 +179,7 @@ int run_render(const RenderCommandOptions& o) {
   }
   RenderStatistics stats;
   stats.scene = o.scene;
-  stats.output = o.output;
+  stats.output = output.name();
   stats.threads = threads;
   stats.spp = scene.render.spp;
   stats.width = scene.camera.width;
@@ -193,7 +206,7 @@ int run_render(const RenderCommandOptions& o) {
   ProgressReporter progress(progress_mode, isatty(STDERR_FILENO) == 1);
   render_options.cancel = &InterruptGuard::requested();
   render_options.on_tile_done = [&progress](std::size_t done, std::size_t total) { progress.tile_done(done, total); };
-  const RenderResult result = render_image(scene, *backend, render_options);
+  RenderResult result = render_image(scene, *backend, render_options);
   progress.finish(result.tiles_done, result.tiles_total);
   stats.render_seconds = result.seconds;
   stats.rays = result.rays;
@@ -201,7 +214,8 @@ int run_render(const RenderCommandOptions& o) {
   stats.complete = result.complete();
 
   const auto write_start = Clock::now();
-  const std::filesystem::path target = result.complete() ? std::filesystem::path(o.output) : partial_path(o.output);
+  const std::filesystem::path target =
+      result.complete() || output.to_stdout() ? output.file() : partial_path(output.file());
   write_options.metadata = {
       {"Software", std::string("rtpro ") + RTPRO_VERSION},
       {"rtpro:backend", stats.backend},
@@ -215,7 +229,11 @@ int run_render(const RenderCommandOptions& o) {
   if (!result.complete())
     write_options.metadata.push_back({"rtpro:partial", std::to_string(result.tiles_done) + " of " +
                                                            std::to_string(result.tiles_total) + " tiles"});
-  write_image(target, o.crop ? crop_image(result.image, *render_options.region) : result.image, write_options);
+  if (o.exposure != 0.0) write_options.metadata.push_back({"rtpro:exposure", std::to_string(o.exposure)});
+  Image image = o.crop ? crop_image(result.image, *render_options.region) : std::move(result.image);
+  apply_exposure(image, o.exposure);
+  write_image(target, image, write_options);
+  output.deliver();
   stats.write_seconds = seconds_since(write_start);
 
   const BackendStats backend_stats = backend->stats();
@@ -235,7 +253,7 @@ int run_render(const RenderCommandOptions& o) {
     return kExitInterrupted;
   }
   std::ostringstream line;
-  line << "wrote " << o.output << " (" << scene.camera.width << "x" << scene.camera.height << ", "
+  line << "wrote " << output.name() << " (" << scene.camera.width << "x" << scene.camera.height << ", "
        << scene.render.spp << " spp, " << stats.backend << ") in " << format_duration(stats.total_seconds);
   log.info(line.str());
   return kExitOk;
@@ -247,12 +265,16 @@ void add_render_command(CLI::App& app, Action& action) {
   auto o = std::make_shared<RenderCommandOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene file to an image");
   cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
-  cmd->add_option("-o,--output", o->output, "Output image; format from the extension (.exr .png .jpg .tif)")
-      ->required();
+  cmd->add_option("-o,--output", o->output, kOutputFormatsHelp)->required();
+  cmd->add_option("--format", o->format, "Image format for -o - (standard output): exr, png, tif, hdr, ...");
+  cmd->add_option("--exposure", o->exposure,
+                  "Scale the rendered colour by 2^STOPS, in every format (before the view transform for display "
+                  "formats; not the AOVs)");
   cmd->add_option("--backend", o->backend, "Ray tracing backend: embree or native")
       ->check(CLI::IsMember({"native", "embree"}))
       ->capture_default_str();
-  cmd->add_option("--spp", o->spp, "Samples per pixel, a perfect square (1, 4, 16, 64, ...)");
+  cmd->add_option("--spp", o->spp,
+                  "Samples per pixel, 1 to 65536, stratified over the most nearly square grid (48: 8x6)");
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
   cmd->add_option("--threads", o->threads, "Worker threads (0: all cores)");
   cmd->add_option("--seed", o->seed, "Seed of the pixel sampler");
@@ -266,9 +288,10 @@ void add_render_command(CLI::App& app, Action& action) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--tile-size", o->tile_size, "Tile edge in pixels")->capture_default_str();
   cmd->add_option("--ocio-config", o->ocio_config, "OpenColorIO config (default: $OCIO, else bundled)");
-  cmd->add_option("--display", o->display, "OCIO display for 8-bit outputs (default: the config's)");
-  cmd->add_option("--view", o->view, "OCIO view for 8-bit outputs (default: the display's)");
-  cmd->add_option("--progress", o->progress, "Progress on stderr: never, auto (bar on a terminal) or always")
+  cmd->add_option("--ocio-display", o->display, "OCIO display for display-referred outputs (default: the config's)");
+  cmd->add_option("--display", o->deprecated_display, "Deprecated spelling of --ocio-display")->group("");
+  cmd->add_option("--view", o->view, "OCIO view for display-referred outputs (default: the display's)");
+  cmd->add_option("--progress", o->progress, "Progress on stderr: never, auto (bar on a terminal), always, or json (one object a line, kept with -q)")
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "Print only errors");
   cmd->add_flag("-v,--verbose", o->verbose, "Print more detail");

@@ -82,7 +82,7 @@ TEST(Usage, ValuesAreCheckedByTheSceneFilesRules) {
   expect_one_line_error("render " + scene.string() + " -o " + out + " --set render.background=[255,0,0]",
                         "looks like 8-bit sRGB values");
   expect_one_line_error("render " + scene.string() + " -o " + out + " -q --progress sometimes",
-                        "--progress 'sometimes': expected never, auto or always");
+                        "--progress 'sometimes': expected never, auto, always or json");
 }
 
 TEST(Usage, AovsNeedAnExrOutput) {
