@@ -1,6 +1,7 @@
 // `rtpro render`: scene file → render scene → backend → renderer → image file.
 #include "rtpro/backend/backend.h"
 #include "command.h"
+#include "frame_sequence.h"
 #include "interrupt.h"
 #include "log.h"
 #include "memory_option.h"
@@ -52,6 +53,8 @@ struct RenderCommandOptions {
   double exposure = 0.0;   // stops
   std::vector<std::string> overrides, defines;
   std::vector<SceneOverride> scene_overrides;  // all of the above, in command-line order
+  std::string frames;  // FIRST-LAST[:STEP]
+  bool skip_existing = false;
   std::string region;
   bool crop = false;
   std::vector<std::string> aovs;
@@ -259,6 +262,38 @@ int run_render(const RenderCommandOptions& o) {
   return kExitOk;
 }
 
+// One render, or one per frame of --frames, each exactly the image that frame renders alone.
+int run_renders(const RenderCommandOptions& o) {
+  Log log(o.quiet ? LogLevel::kQuiet : LogLevel::kNormal);
+  if (o.frames.empty()) {
+    if (has_frame_pattern(o.output))
+      throw InputError("-o " + o.output + " holds a frame number pattern ('#'): give --frames, e.g. --frames 1-240");
+    if (o.skip_existing && o.output != "-" && std::filesystem::exists(o.output)) {
+      log.info("skipped: " + o.output + " exists (--skip-existing)");
+      return kExitOk;
+    }
+    return run_render(o);
+  }
+  const FrameRange range = parse_frame_range(o.frames);
+  if (!has_frame_pattern(o.output))
+    throw InputError("--frames needs a frame number pattern in -o, e.g. -o out_####.exr");
+  if (o.scene == "-") throw InputError("--frames reads the scene once per frame: it cannot come from standard input");
+  for (const SceneOverride& set : o.scene_overrides)
+    if (set.assignment.rfind("variables.frame=", 0) == 0) throw InputError(set.flag + ": --frames sets the frame");
+  for (long frame : range.frames()) {
+    RenderCommandOptions one = o;
+    one.output = numbered_output(o.output, frame);
+    if (o.skip_existing && std::filesystem::exists(one.output)) {
+      log.info("frame " + std::to_string(frame) + " skipped: " + one.output + " exists (--skip-existing)");
+      continue;
+    }
+    one.scene_overrides.push_back({"variables.frame=" + std::to_string(frame), "--frames (frame " + std::to_string(frame) + ")"});
+    const int code = run_render(one);
+    if (code != kExitOk) return code;
+  }
+  return kExitOk;
+}
+
 }  // namespace
 
 void add_render_command(CLI::App& app, Action& action) {
@@ -280,6 +315,10 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("--seed", o->seed, "Seed of the pixel sampler");
   cmd->add_option("--max-depth", o->max_depth, "Maximum number of mirror bounces");
   add_scene_override_options(*cmd, o->overrides, o->defines);
+  cmd->add_option("--frames", o->frames,
+                  "Render frames FIRST-LAST[:STEP] (e.g. 1-240:2), each to -o with its '####' replaced by the "
+                  "zero-padded frame number; the scene variable 'frame' follows (keyframed values, $frame)");
+  cmd->add_flag("--skip-existing", o->skip_existing, "Skip frames (or the single output) whose file already exists");
   cmd->add_option("--region", o->region, "Render only pixels x0,y0,x1,y1 (x1, y1 exclusive)");
   cmd->add_flag("--crop", o->crop, "With --region: write only the region instead of a full-size image");
   cmd->add_option("--aov", o->aovs, "Extra EXR layers: albedo,normal,depth,object-id (EXR outputs only)")
@@ -307,7 +346,7 @@ void add_render_command(CLI::App& app, Action& action) {
                   "Embree as its limit (0: no limit; default: the smaller of 4096 and the available memory)");
   cmd->callback([o, cmd, &action] {
     o->scene_overrides = command_line_overrides(*cmd);
-    action = [o] { return run_render(*o); };
+    action = [o] { return run_renders(*o); };
   });
 }
 

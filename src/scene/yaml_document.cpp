@@ -189,7 +189,7 @@ class TreeBuilder {
       throw InputError(at.location(), message);
     }
     if (key == "include") saw_include_ = true;
-    if (key == "variables") saw_dollar_ = true;
+    if (key == "variables" || key == "keyframes") saw_dollar_ = true;
     mapping.entries.push_back(YamlEntry{std::string(key), at, nullptr});
     mapping.pending = true;
   }

@@ -139,7 +139,7 @@ class YamlDocument {
   std::vector<std::unique_ptr<YamlDocument>> includes_;  // keep the included files' sources
   YamlNodePtr root_;
   bool has_includes_ = false;   // an `include` key was read: expansion walks the tree
-  bool has_variables_ = false;  // a `$` or a `variables` key was read: substitution walks it
+  bool has_variables_ = false;  // a `$`, `variables` or `keyframes` was read: substitution walks it
 };
 
 }  // namespace rtpro

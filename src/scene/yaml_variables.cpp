@@ -3,7 +3,10 @@
 #include "yaml_document.h"
 
 #include "rtpro/core/closest_match.h"
+#include "yaml_keyframes.h"
 
+#include <charconv>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -31,7 +34,8 @@ class Substitution {
   // A -D the scene never uses is most likely a misspelt name: refused, not ignored.
   void check_command_line_variables_used() const {
     for (const YamlEntry* entry : command_line_) {
-      if (used_.count(entry->key)) continue;
+      // --frames sets `frame` for every frame, whether or not this scene is animated.
+      if (used_.count(entry->key) || entry->key == "frame") continue;
       std::string message = "the scene uses no variable '$" + entry->key + "'";
       if (const auto near = closest_match(entry->key, unused_candidates())) message += "; did you mean '" + *near + "'?";
       throw InputError(entry->key_at.location(), message);
@@ -52,6 +56,7 @@ class Substitution {
       case YamlNode::Kind::mapping: {
         auto copy = std::make_shared<YamlNode>(*node);
         for (YamlEntry& entry : copy->entries) entry.value = apply(entry.value);
+        if (is_keyframed(*copy)) return value_at_frame(*copy, frame());
         return copy;
       }
     }
@@ -121,6 +126,20 @@ class Substitution {
     return copy;
   }
 
+  // The frame being rendered: the variable `frame` (--frames sets it for each frame), else 1.
+  double frame() const {
+    const auto found = values_.find("frame");
+    if (found == values_.end()) return 1.0;
+    used_.insert("frame");
+    const YamlNode& value = *found->second;
+    double number = 0;
+    const auto [end, error] = std::from_chars(value.scalar.data(), value.scalar.data() + value.scalar.size(), number);
+    if (!value.is_scalar() || error != std::errc() || end != value.scalar.data() + value.scalar.size() ||
+        !std::isfinite(number))
+      throw InputError(value.at.location(), "frame: expected a frame number, got " + value.describe());
+    return number;
+  }
+
   // Names the scene refers to but -D did not set: what a misspelt -D name was meant to be.
   std::vector<std::string> unused_candidates() const {
     std::vector<std::string> names;
@@ -139,12 +158,10 @@ class Substitution {
 void YamlDocument::resolve_variables() {
   if (!has_variables_ || !root_->is_mapping()) return;
   auto root = std::make_shared<YamlNode>(*root_);
-  YamlNode no_variables;
-  const YamlNode* variables = &no_variables;
+  auto variables = std::make_shared<YamlNode>();  // held: the substitution points into it
   for (auto entry = root->entries.begin(); entry != root->entries.end(); ++entry) {
     if (entry->key != "variables") continue;
-    variables = entry->value.get();
-    no_variables.at = entry->key_at;
+    variables = std::const_pointer_cast<YamlNode>(entry->value);
     root->entries.erase(entry);
     break;
   }
