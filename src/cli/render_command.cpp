@@ -9,6 +9,7 @@
 #include "progress.h"
 #include "render_stats.h"
 #include "scene_overrides.h"
+#include "tev_client.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
 #include "rtpro/image/atomic_file_replacement.h"
@@ -53,6 +54,7 @@ struct RenderCommandOptions {
   double exposure = 0.0;   // stops
   std::vector<std::string> overrides, defines;
   std::vector<SceneOverride> scene_overrides;  // all of the above, in command-line order
+  std::string display_server;  // HOST:PORT of a tev for a live preview
   std::string frames;  // FIRST-LAST[:STEP]
   bool skip_existing = false;
   std::string region;
@@ -132,6 +134,8 @@ int run_render(const RenderCommandOptions& o) {
   for (const std::string& name : o.aovs) render_options.aovs.push_back(parse_aov(name));
   const OutputTarget output(o.output, o.format);
   check_exposure(o.exposure);
+  const std::optional<DisplayServerAddress> display_server =
+      o.display_server.empty() ? std::nullopt : std::optional(parse_display_server(o.display_server));
   if (!render_options.aovs.empty() && !holds_layers(output.file()))
     throw InputError("--aov needs an EXR output: '" + o.output + "' holds only the colour image");
   if (!o.deprecated_display.empty() && !o.display.empty())
@@ -205,6 +209,14 @@ int run_render(const RenderCommandOptions& o) {
   stats.build_seconds = backend->stats().build_seconds;
   log.verbose("built " + stats.backend + " acceleration structure in " + std::to_string(stats.build_seconds) + " s");
 
+  std::unique_ptr<TevClient> preview;
+  if (display_server) {
+    preview = std::make_unique<TevClient>(*display_server, std::filesystem::path(output.name()).filename().string(),
+                                          scene.camera.width, scene.camera.height, log);
+    render_options.on_tile_pixels = [&preview](const Image& image, const PixelRegion& region) {
+      preview->send_tile(image, region);
+    };
+  }
   const InterruptGuard interrupt;
   ProgressReporter progress(progress_mode, isatty(STDERR_FILENO) == 1);
   render_options.cancel = &InterruptGuard::requested();
@@ -315,6 +327,9 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("--seed", o->seed, "Seed of the pixel sampler");
   cmd->add_option("--max-depth", o->max_depth, "Maximum number of mirror bounces");
   add_scene_override_options(*cmd, o->overrides, o->defines);
+  cmd->add_option("--display-server", o->display_server,
+                  "Stream tiles as they finish to the tev image viewer listening at HOST:PORT (tev's default: "
+                  "127.0.0.1:14158); the render goes on if it is absent or goes away");
   cmd->add_option("--frames", o->frames,
                   "Render frames FIRST-LAST[:STEP] (e.g. 1-240:2), each to -o with its '####' replaced by the "
                   "zero-padded frame number; the scene variable 'frame' follows (keyframed values, $frame)");
