@@ -311,7 +311,9 @@ int run_renders(const RenderCommandOptions& o) {
 void add_render_command(CLI::App& app, Action& action) {
   auto o = std::make_shared<RenderCommandOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene file to an image");
-  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
+  cmd->add_option("scene", o->scene, "Scene file (YAML or glTF), or '-' for a YAML scene on standard input")->required();
+  cmd->footer("Scene values: the file, then --set, -D, --spp, --size, --seed and --max-depth in the order typed (the "
+              "last to set a key wins); every value is checked by the scene file's own rules.");
   cmd->add_option("-o,--output", o->output, kOutputFormatsHelp)->required();
   cmd->add_option("--format", o->format, "Image format for -o - (standard output): exr, png, tif, hdr, ...");
   cmd->add_option("--exposure", o->exposure,
@@ -346,6 +348,7 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("--display", o->deprecated_display, "Deprecated spelling of --ocio-display")->group("");
   cmd->add_option("--view", o->view, "OCIO view for display-referred outputs (default: the display's)");
   cmd->add_option("--progress", o->progress, "Progress on stderr: never, auto (bar on a terminal), always, or json (one object a line, kept with -q)")
+      ->type_name("TEXT:{never,auto,always,json}")
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "Print only errors");
   cmd->add_flag("-v,--verbose", o->verbose, "Print more detail");
