@@ -34,6 +34,30 @@ for backend in embree native; do
   done
 done
 
+# Whole rendered frames at 1024x1024, as a user runs them (load, build and shading included in the
+# process, the rate from seconds.render): "primary" is the scene without lights or reflection (one
+# ray per sample, what the viewer's eyelight shader traces), "primary + shadow" keeps the first
+# light only (one shadow ray per hit, as pathtracer --max-path-length 1 traces). 4 spp so that
+# rendering, not start-up, dominates seconds.render. The ground sphere stays in both variants, so rtpro
+# traces a little more than the peers, whose scene is the mesh alone.
+mesh="$root/assets/dragon.obj"
+sed -e "s#../assets/dragon.obj#$mesh#" -e 's/max_depth: 3/max_depth: 0/' -e '/^lights:/,/^world:/{/^  - /d}' \
+  -e 's/^lights:/lights: []/' "$root/scenes/dragon.yaml" >"$out/primary.yaml"
+sed -e "s#../assets/dragon.obj#$mesh#" -e 's/max_depth: 3/max_depth: 0/' -e '/type: directional/d' \
+  "$root/scenes/dragon.yaml" >"$out/primary_shadow.yaml"
+for frame in primary primary_shadow; do
+  for backend in embree native; do
+    "$build/rtpro" render "$out/$frame.yaml" -o "$out/frame-$frame-$backend.exr" --backend "$backend" \
+      --size 1024x1024 --spp 4 --threads "$threads" --quiet --stats-json "$out/frame-$frame-$backend.json"
+  done
+done
+pathtracer_line="not run: install Debian's embree-tools for Embree's own pathtracer"
+if command -v pathtracer >/dev/null 2>&1; then
+  pathtracer -i "$mesh" --size 1024 1024 --vp -0.16 0.2 0.3 --vi 0 0.115 0 --vu 0 1 0 --fov 38 \
+    --threads "$threads" --max-path-length 1 --spp 1 --benchmark 2 10 >"$out/pathtracer.log" 2>&1 || true
+  pathtracer_line=""
+fi
+
 viewer_line="not run: install Debian's embree-tools for Embree's own viewer"
 if command -v viewer >/dev/null 2>&1; then
   /usr/bin/time -f "%e %M" -o "$out/viewer.time" viewer -i "$root/assets/dragon.obj" --size 1024 1024 \
@@ -41,9 +65,9 @@ if command -v viewer >/dev/null 2>&1; then
   viewer_line=""
 fi
 
-python3 - "$out" "$viewer_line" <<'PY'
+python3 - "$out" "$viewer_line" "$pathtracer_line" <<'PY'
 import json, sys
-out, viewer_line = sys.argv[1], sys.argv[2]
+out, viewer_line, pathtracer_line = sys.argv[1], sys.argv[2], sys.argv[3]
 triangles = 871414
 load = {b["name"].split("/")[0]: b for b in json.load(open(f"{out}/load.json"))["benchmarks"]}
 back = {b["name"].replace("/real_time", ""): b for b in json.load(open(f"{out}/backend.json"))["benchmarks"]}
@@ -77,4 +101,26 @@ else:
     print(f"\nEmbree viewer (same model, camera, 1024x1024, primary rays): {float(mrays):.2f} Mrays/s,"
           f" peak {peak:.0f} MiB, {seconds:.2f} s for load + build + 12 frames")
     print(f"  rtpro embree / viewer: primary {e[1] / float(mrays):.2f}x, peak RSS {e[4] / peak:.2f}x")
+
+def benchmark_value(log_name, key):
+    log = open(f"{out}/{log_name}").read()
+    return float(next((l.split()[-1] for l in log.splitlines() if l.startswith(key + " ")), "nan"))
+
+print("\nwhole frames, 1024x1024 at 4 spp (camera samples per second of render, millions):")
+frames = {}
+for frame in ("primary", "primary_shadow"):
+    for backend in ("embree", "native"):
+        s = json.load(open(f"{out}/frame-{frame}-{backend}.json"))
+        frames[frame, backend] = s["rays"]["camera"] / s["seconds"]["render"] / 1e6
+        print(f"  {frame:15} {backend:7} {frames[frame, backend]:7.2f} Msamples/s  ({s['rays']['total'] / s['seconds']['render'] / 1e6:.2f} Mrays/s of all kinds,"
+              f" total process {s['seconds']['total']:.2f} s)")
+if not viewer_line:
+    viewer = benchmark_value("viewer.log", "BENCHMARK_RENDER_MRAYPS_AVG")
+    print(f"  primary: rtpro embree / viewer eyelight {frames['primary', 'embree'] / viewer:.2f}x, native / viewer {frames['primary', 'native'] / viewer:.2f}x")
+if pathtracer_line:
+    print(f"  Embree pathtracer: {pathtracer_line}")
+else:
+    tracer = benchmark_value("pathtracer.log", "BENCHMARK_RENDER_MRAYPS_AVG")
+    print(f"  Embree pathtracer --max-path-length 1: {tracer:.2f} Msamples/s; rtpro primary + shadow embree / pathtracer"
+          f" {frames['primary_shadow', 'embree'] / tracer:.2f}x, native / pathtracer {frames['primary_shadow', 'native'] / tracer:.2f}x")
 PY

@@ -111,5 +111,15 @@ for entry in scenes:
     print(f"{'':13} rays per image (millions), povray / rtpro: " + ", ".join(
         f"{k} {counts[name]['povray'][k] / 1e6:.2f} / {counts[name]['embree'][k] / 1e6:.2f}" for k in KINDS))
     print(f"{'':13} ({size}, {spp} spp, max depth {depth})")
+    # Reading the scene: POV-Ray's Parse Time against rtpro's seconds.load (scene file, meshes and
+    # render scene), medians over every run of this scene.
+    def parse_seconds(t, r):
+        log = open(f"{out}/{name}-povray-t{t}-r{r}.log").read()
+        return float(re.search(r"Parse Time:.*\(([\d.]+) seconds\)", log).group(1))
+    pov_parse = statistics.median(parse_seconds(t, r) for t in threads for r in range(1, runs + 1))
+    loads = {b: statistics.median(json.load(open(f"{out}/{name}-{b}-t{t}-r{r}.json"))["seconds"]["load"]
+                                  for t in threads for r in range(1, runs + 1)) for b in ("embree", "native")}
+    print(f"{'':13} scene reading: povray parse {pov_parse:.3f} s, rtpro load {loads['embree']:.3f} s (embree runs),"
+          f" {loads['native']:.3f} s (native runs): POV/rtpro {pov_parse / statistics.median(loads.values()):.2f}x")
 print(f"\nlogs, statistics and images: {out}")
 PY

@@ -1,6 +1,7 @@
 #include "bvh.h"
 
 #include "box4.h"
+#include "huge_page_buffer.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -85,15 +86,16 @@ BvhNode relocated(BvhNode node, std::uint32_t shift) {
 //   single-threaded depth-first build (see place()).
 class BvhBuilder {
  public:
-  BvhBuilder(std::unique_ptr<BuildPrimitive[]> primitives, std::uint32_t count, bool parallel)
-      : prims_(std::move(primitives)), count_(count), parallel_(parallel) {}
+  BvhBuilder(HugePageBuffer<BuildPrimitive> primitives, std::uint32_t count, bool parallel)
+      : prims_(std::move(primitives)), count_(count), parallel_(parallel), scratch_(2 * std::size_t{count}) {}
 
   Bvh build() {
     Bvh bvh;
     if (count_ == 0) return bvh;
     const std::uint32_t count = count_;
     if (!parallel_) {
-      bvh.nodes = build_sequential(0, count, 0);
+      const std::uint32_t size = build_sequential(0, count, 0);
+      bvh.nodes.assign(scratch_.get(), scratch_.get() + size);
     } else {
       Part root;
       build_part(root, 0, count, 0);
@@ -112,32 +114,33 @@ class BvhBuilder {
 
  private:
   // A subtree of the parallel phase: either an interior node whose children were built by two
-  // tasks, or a subtree built by one task into `nodes` (its root first, then its descendants as
-  // build_sequential lays them out, indices counted within `nodes`).
+  // tasks, or a subtree built by one task into the scratch array (its root first, then its
+  // descendants as build_sequential lays them out, indices counted from the root).
   struct Part {
     BvhNode node{};
     std::unique_ptr<Part> left, right;
-    std::vector<BvhNode> nodes;
-    std::uint32_t size = 0;  // nodes in the subtree
+    std::uint32_t first = 0;  // the root's place in scratch_
+    std::uint32_t size = 0;   // nodes in the subtree
   };
 
   struct Copy {
-    const std::vector<BvhNode>* nodes;
-    std::uint32_t slot;  // where the subtree's root goes
-    std::uint32_t base;  // where its descendants start
+    std::uint32_t first, size;  // in scratch_
+    std::uint32_t slot;         // where the subtree's root goes
+    std::uint32_t base;         // where its descendants start
   };
 
   // The single-threaded builder: depth first, both children of a node allocated together, the
-  // left subtree finished before the right one starts.
-  std::vector<BvhNode> build_sequential(std::uint32_t begin, std::uint32_t end, int depth) {
-    std::vector<BvhNode> nodes;
-    nodes.reserve(2 * std::size_t{end - begin} - 1);  // the most a binary tree over them can have
+  // left subtree finished before the right one starts. Writes the subtree to scratch_ from
+  // 2 * begin (a tree over n primitives has at most 2n - 1 nodes, so ranges never overlap) and
+  // returns its node count.
+  std::uint32_t build_sequential(std::uint32_t begin, std::uint32_t end, int depth) {
+    BvhNode* const nodes = scratch_.get() + 2 * std::size_t{begin};
+    std::uint32_t size = 1;
     struct Task {
       std::uint32_t node, begin, end;
       int depth;
     };
     std::vector<Task> stack;
-    nodes.push_back({});
     stack.push_back({0, begin, end, depth});
     while (!stack.empty()) {
       const Task task = stack.back();
@@ -148,25 +151,25 @@ class BvhBuilder {
         continue;
       }
       // Siblings are allocated as a pair, so one index finds both children.
-      const auto left = static_cast<std::uint32_t>(nodes.size());
-      nodes.push_back({});
-      nodes.push_back({});
+      const std::uint32_t left = size;
+      size += 2;
       nodes[task.node] = {d.bounds, left, 0, static_cast<std::uint16_t>(d.axis)};
       stack.push_back({left + 1, d.mid, task.end, task.depth + 1});
       stack.push_back({left, task.begin, d.mid, task.depth + 1});
     }
-    return nodes;
+    return size;
   }
 
   void build_part(Part& part, std::uint32_t begin, std::uint32_t end, int depth) {
     if (end - begin <= kParallelSubtree) {
-      part.nodes = build_sequential(begin, end, depth);
-      part.size = static_cast<std::uint32_t>(part.nodes.size());
+      part.first = 2 * begin;
+      part.size = build_sequential(begin, end, depth);
       return;
     }
     const Decision d = decide(begin, end, depth);
     if (d.mid == begin) {
-      part.nodes = {leaf(d.bounds, begin, end)};
+      part.first = 2 * begin;
+      scratch_[part.first] = leaf(d.bounds, begin, end);
       part.size = 1;
       return;
     }
@@ -180,10 +183,10 @@ class BvhBuilder {
 
   // Gives `part`'s root the index `slot` and its descendants the positions build_sequential would
   // have given them: the children's pair next, then all of the left subtree, then the right.
-  static void place(const Part& part, std::uint32_t slot, std::uint32_t& next, std::vector<BvhNode>& nodes,
-                    std::vector<Copy>& copies) {
+  template <typename Nodes>
+  static void place(const Part& part, std::uint32_t slot, std::uint32_t& next, Nodes& nodes, std::vector<Copy>& copies) {
     if (!part.left) {
-      copies.push_back({&part.nodes, slot, next});
+      copies.push_back({part.first, part.size, slot, next});
       next += part.size - 1;
       return;
     }
@@ -196,11 +199,12 @@ class BvhBuilder {
   }
 
   // Local index k > 0 of a part built in one task goes to base + k - 1.
-  static void copy_part(const Copy& copy, std::vector<BvhNode>& nodes) {
-    const std::vector<BvhNode>& local = *copy.nodes;
+  template <typename Nodes>
+  void copy_part(const Copy& copy, Nodes& nodes) const {
+    const BvhNode* local = scratch_.get() + copy.first;
     const std::uint32_t shift = copy.base - 1;
     nodes[copy.slot] = relocated(local[0], shift);
-    for (std::size_t k = 1; k < local.size(); ++k) nodes[copy.base + k - 1] = relocated(local[k], shift);
+    for (std::uint32_t k = 1; k < copy.size; ++k) nodes[copy.base + k - 1] = relocated(local[k], shift);
   }
 
   static BvhNode leaf(const BBox& bounds, std::uint32_t begin, std::uint32_t end) {
@@ -390,18 +394,19 @@ class BvhBuilder {
     return mid;
   }
 
-  std::unique_ptr<BuildPrimitive[]> prims_;
+  HugePageBuffer<BuildPrimitive> prims_;
   std::uint32_t count_;
   bool parallel_;
+  HugePageBuffer<BvhNode> scratch_;  // subtrees as built, before they are laid out
 };
 
 // Every primitive's bounds, computed in parallel into its place in geometry order; primitives
 // with empty bounds (an instance of an empty prototype) are then dropped, keeping the order.
-std::unique_ptr<BuildPrimitive[]> build_primitives(const Group& group, std::span<const BBox> prototype_bounds,
+HugePageBuffer<BuildPrimitive> build_primitives(const Group& group, std::span<const BBox> prototype_bounds,
                                                    std::uint32_t& count) {
   std::vector<std::size_t> first(group.geometries.size() + 1, 0);
   for (std::uint32_t g = 0; g < group.geometries.size(); ++g) first[g + 1] = first[g] + group.primitive_count(g);
-  auto primitives = std::make_unique_for_overwrite<BuildPrimitive[]>(first.back());
+  HugePageBuffer<BuildPrimitive> primitives(first.back());
   tbb::parallel_for(std::uint32_t{0}, static_cast<std::uint32_t>(group.geometries.size()), [&](std::uint32_t g) {
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, group.primitive_count(g), kChunk),
                       [&](const tbb::blocked_range<std::uint32_t>& r) {

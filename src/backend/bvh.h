@@ -1,6 +1,7 @@
 #pragma once
 // The native backend's bounding volume hierarchy: binned SAH over the primitives of one group
 // (spheres, triangles and instances alike), stored in 32-byte nodes with sibling pairs.
+#include "huge_page_buffer.h"
 #include "rtpro/core/bbox.h"
 #include "rtpro/scene/render_scene.h"
 
@@ -28,8 +29,8 @@ struct PrimitiveRef {
 };
 
 struct Bvh {
-  std::vector<BvhNode> nodes;
-  std::vector<PrimitiveRef> refs;
+  std::vector<BvhNode, HugePageAllocator<BvhNode>> nodes;
+  std::vector<PrimitiveRef, HugePageAllocator<PrimitiveRef>> refs;
   std::size_t memory_bytes() const { return nodes.capacity() * sizeof(BvhNode) + refs.capacity() * sizeof(PrimitiveRef); }
 };
 

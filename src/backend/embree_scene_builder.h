@@ -18,8 +18,7 @@ struct EmbreeBuildSettings {
   RTCBuildQuality quality = RTC_BUILD_QUALITY_MEDIUM;
 };
 
-// From --embree-quality (low | medium | high) and --embree-robust. Throws InputError for an
-// unknown quality.
+// Embree's scene flags and build quality for the backend options.
 EmbreeBuildSettings embree_build_settings(const BackendOptions& options);
 
 struct EmbreeScenes {

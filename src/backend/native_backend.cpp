@@ -7,6 +7,8 @@
 #include "rtpro/geometry/sphere_intersect.h"
 #include "rtpro/geometry/triangle_intersect.h"
 
+#include <immintrin.h>
+
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -16,34 +18,44 @@ namespace rtpro {
 
 namespace {
 
-// Precomputed per-ray data for the slab test.
+// Precomputed per-ray data for the slab test, in SSE registers (SSE2 is part of x86-64, so no
+// dispatch is needed). Lane 3 is unused: it is masked out of every result.
 struct RayBoxData {
-  Vec3 inv_dir;
-  int dir_negative[3];
+  __m128 org;
+  __m128 inv_dir;
 };
 
 RayBoxData prepare(const Ray& ray) {
-  RayBoxData d;
-  d.inv_dir = {1.0f / ray.dir.x, 1.0f / ray.dir.y, 1.0f / ray.dir.z};
-  for (int a = 0; a < 3; ++a) d.dir_negative[a] = d.inv_dir[a] < 0.0f;
-  return d;
+  return {_mm_set_ps(0.0f, ray.org.z, ray.org.y, ray.org.x),
+          _mm_set_ps(0.0f, 1.0f / ray.dir.z, 1.0f / ray.dir.y, 1.0f / ray.dir.x)};
 }
 
-// Slab test; NaNs from 0·∞ are ignored by the comparison order. The far distance is enlarged by
-// 2·gamma(3) (pbrt) so float rounding never culls a box that the ray actually touches.
-bool hits_box(const BBox& box, const Ray& ray, const RayBoxData& d, float tmax) {
+// Slab test of one box, all three axes at once; sets `entry` to the distance where the ray enters
+// it. NaNs from 0·∞ (an origin on a slab plane of an axis the ray runs parallel to) leave that
+// axis out, as the operand order of minps/maxps below arranges: each returns its second operand
+// when either is NaN. The far distance is enlarged by 2·gamma(3) (pbrt) so float rounding never
+// culls a box that the ray actually touches.
+inline bool hits_box(const BBox& box, const RayBoxData& d, float tnear, float tmax, float& entry) {
   constexpr float kRoundingSlack = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
-  float t0 = ray.tnear, t1 = tmax;
-  for (int a = 0; a < 3; ++a) {
-    float tn = (box.lower[a] - ray.org[a]) * d.inv_dir[a];
-    float tf = (box.upper[a] - ray.org[a]) * d.inv_dir[a];
-    if (tn > tf) std::swap(tn, tf);
-    tf *= kRoundingSlack;
-    t0 = tn > t0 ? tn : t0;
-    t1 = tf < t1 ? tf : t1;
-    if (t0 > t1) return false;
-  }
-  return true;
+  // The loads read one float past each corner (the next corner's x, or the node's index bits):
+  // lane 3 is replaced before any comparison.
+  const __m128 tn = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(&box.lower.x), d.org), d.inv_dir);
+  const __m128 tf = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(&box.upper.x), d.org), d.inv_dir);
+  const __m128 xyz = _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
+  // min(tf, tn) is NaN when tn is (axis ignored) and tn when tf is; max(tn, tf) the other way round.
+  const __m128 near_axes = _mm_min_ps(tf, tn);
+  const __m128 far_axes = _mm_mul_ps(_mm_max_ps(tn, tf), _mm_set1_ps(kRoundingSlack));
+  const __m128 near = _mm_max_ps(_mm_or_ps(_mm_and_ps(xyz, near_axes), _mm_andnot_ps(xyz, _mm_set1_ps(tnear))),
+                                 _mm_set1_ps(tnear));
+  const __m128 far = _mm_min_ps(_mm_or_ps(_mm_and_ps(xyz, far_axes), _mm_andnot_ps(xyz, _mm_set1_ps(tmax))),
+                                _mm_set1_ps(tmax));
+  // Largest near and smallest far over the lanes.
+  __m128 t0 = _mm_max_ps(near, _mm_shuffle_ps(near, near, _MM_SHUFFLE(2, 3, 0, 1)));
+  t0 = _mm_max_ps(t0, _mm_shuffle_ps(t0, t0, _MM_SHUFFLE(1, 0, 3, 2)));
+  __m128 t1 = _mm_min_ps(far, _mm_shuffle_ps(far, far, _MM_SHUFFLE(2, 3, 0, 1)));
+  t1 = _mm_min_ps(t1, _mm_shuffle_ps(t1, t1, _MM_SHUFFLE(1, 0, 3, 2)));
+  entry = _mm_cvtss_f32(t0);
+  return entry <= _mm_cvtss_f32(t1);
 }
 
 class NativeBackend final : public Backend {
@@ -93,24 +105,26 @@ class NativeBackend final : public Backend {
   }
 
   // Visits every leaf reference whose node box the ray enters, nearest child first;
-  // `visit(ref, tmax)` returns false to stop early. `tmax` is re-read after each leaf.
+  // `visit(ref)` returns false to stop early. `tmax` is re-read after each leaf.
   template <typename Visit>
   static void traverse(const Bvh& bvh, const Ray& ray, const float& tmax, Visit&& visit) {
     if (bvh.nodes.empty()) return;
     const RayBoxData box_data = prepare(ray);
+    const int dir_negative[3] = {ray.dir.x < 0.0f, ray.dir.y < 0.0f, ray.dir.z < 0.0f};
     std::uint32_t stack[kBvhMaxDepth + 1];
     int top = 0;
     std::uint32_t node_index = 0;
     for (;;) {
       const BvhNode& node = bvh.nodes[node_index];
-      if (hits_box(node.bounds, ray, box_data, tmax)) {
+      float entry;
+      if (hits_box(node.bounds, box_data, ray.tnear, tmax, entry)) {
         if (node.is_leaf()) {
           for (std::uint32_t i = 0; i < node.count; ++i)
             if (!visit(bvh.refs[node.index + i])) return;
         } else {
           // Descend into the child on the ray's near side first.
-          const std::uint32_t near_child = node.index + box_data.dir_negative[node.axis];
-          stack[top++] = node.index + 1 - box_data.dir_negative[node.axis];
+          const std::uint32_t near_child = node.index + dir_negative[node.axis];
+          stack[top++] = node.index + 1 - dir_negative[node.axis];
           node_index = near_child;
           continue;
         }

@@ -3,7 +3,7 @@
 // any mismatch, 2 for a bad scene or bad options.
 #include "rtpro/crosscheck/crosscheck.h"
 #include "rtpro/backend/backend.h"
-#include "rtpro/backend/backend.h"
+#include "backend_options.h"
 #include "command.h"
 #include "rtpro/core/error.h"
 #include "rtpro/scene/build_render_scene.h"
@@ -26,8 +26,7 @@ struct CrosscheckCommandOptions {
   std::string scene;
   CrosscheckOptions check;
   int threads = 0;
-  std::string embree_quality = "medium";
-  bool embree_robust = true;
+  BackendOptions backend;  // Embree settings from the command line
 };
 
 std::string describe(const Hit& hit, bool found) {
@@ -85,10 +84,8 @@ int run_crosscheck(const CrosscheckCommandOptions& o) {
   tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
   const RenderScene scene = build_render_scene(parse_scene_file(o.scene));
-  BackendOptions backend_options;
+  BackendOptions backend_options = o.backend;
   backend_options.threads = threads;
-  backend_options.embree_quality = o.embree_quality;
-  backend_options.embree_robust = o.embree_robust;
   const auto native = make_backend(BackendKind::kNative, scene, backend_options);
   const auto embree = make_backend(BackendKind::kEmbree, scene, backend_options);
 
@@ -112,10 +109,7 @@ void add_crosscheck_command(CLI::App& app, Action& action) {
       ->check(CLI::Range(std::size_t{0}, std::size_t{1000}))
       ->capture_default_str();
   cmd->add_option("--threads", o->threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 4096));
-  cmd->add_option("--embree-quality", o->embree_quality, "Embree BVH build quality: low, medium or high")
-      ->check(CLI::IsMember({"low", "medium", "high"}))
-      ->capture_default_str();
-  cmd->add_option("--embree-robust", o->embree_robust, "Embree robust traversal (true/false)")->capture_default_str();
+  add_embree_options(*cmd, o->backend);
   cmd->callback([o, &action] { action = [o] { return run_crosscheck(*o); }; });
 }
 

@@ -1,5 +1,6 @@
 // `rtpro render`: scene file → render scene → backend → renderer → image file.
 #include "rtpro/backend/backend.h"
+#include "backend_options.h"
 #include "command.h"
 #include "frame_sequence.h"
 #include "interrupt.h"
@@ -66,9 +67,7 @@ struct RenderCommandOptions {
   int verbose = 0;
   bool stats = false;
   std::string stats_json;
-  std::string embree_quality = "medium";
-  bool embree_robust = true;
-  bool embree_compact = false;
+  BackendOptions backend_options;  // Embree settings from the command line; threads and memory set later
   std::string max_memory_mb;  // MiB; empty: the default budget (see parse_memory_budget)
 };
 
@@ -198,11 +197,8 @@ int run_render(const RenderCommandOptions& o) {
   start_tbb_workers(threads);
   start_loading_image_layer();
 
-  BackendOptions backend_options;
+  BackendOptions backend_options = o.backend_options;
   backend_options.threads = threads;
-  backend_options.embree_quality = o.embree_quality;
-  backend_options.embree_robust = o.embree_robust;
-  backend_options.embree_compact = o.embree_compact;
   backend_options.max_memory_bytes = memory.explicit_limit ? memory.bytes : 0;
   const std::unique_ptr<Backend> backend = make_backend(kind, scene, backend_options);
   stats.backend = std::string(backend->name());
@@ -354,11 +350,8 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_flag("-v,--verbose", o->verbose, "Print more detail");
   cmd->add_flag("--stats", o->stats, "Print statistics at the end");
   cmd->add_option("--stats-json", o->stats_json, "Write statistics as JSON to this file");
-  cmd->add_option("--embree-quality", o->embree_quality, "Embree BVH build quality: low, medium or high")
-      ->check(CLI::IsMember({"low", "medium", "high"}))
-      ->capture_default_str();
-  cmd->add_option("--embree-robust", o->embree_robust, "Embree robust traversal (true/false)")->capture_default_str();
-  cmd->add_flag("--embree-compact", o->embree_compact, "Smaller Embree BVH (about half), about 20% slower to trace");
+  add_embree_options(*cmd, o->backend_options);
+  cmd->add_flag("--embree-compact", o->backend_options.embree_compact, "Smaller Embree BVH (about half), about 20% slower to trace");
   cmd->add_option("--max-memory", o->max_memory_mb,
                   "Memory budget in MiB for the whole render, checked against an up-front estimate and given to "
                   "Embree as its limit (0: no limit; default: the smaller of 4096 and the available memory)");

@@ -5,12 +5,24 @@
 // fuzzing `rtpro compare`'s image inputs). This walks EXR headers and PNG chunks itself and
 // refuses any size larger than the bytes left in the file, and refuses raw PNM/PFM headers that
 // declare more pixels than the file holds. Other formats pass unchecked.
+//
+// OpenEXR also sizes its line buffers from the header's data window when a file is opened (a
+// block of up to 256 rows of the full width, twice for compressed files), before any pixel is
+// read: the declared size is returned so that the read budget applies before opening.
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 
 namespace rtpro {
 
+// The size an image header declares, for formats whose library allocates from it at open.
+struct DeclaredImageSize {
+  std::uint64_t width = 0, height = 0, channels = 0;
+};
+
 // Throws InputError naming the attribute or chunk when an EXR header or a PNG chunk list is cut
-// short, malformed, or claims more bytes than the file holds.
-void check_image_header(const std::filesystem::path& file);
+// short, malformed, or claims more bytes than the file holds. Returns the data window and channel
+// count of an EXR file's first part (the one read_image opens), nothing for other formats.
+std::optional<DeclaredImageSize> check_image_header(const std::filesystem::path& file);
 
 }  // namespace rtpro

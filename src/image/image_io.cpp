@@ -211,30 +211,35 @@ Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
   if (!std::filesystem::is_regular_file(status))
     throw InputError(where, "not a regular file (a FIFO, device or folder is never read as an image)");
   if (max_bytes == 0) max_bytes = default_memory_budget();
-  check_image_header(file);
+  // A small hostile header can declare an enormous image: its size is checked before the library
+  // allocates for it (at open for OpenEXR, whose declared size the header check returns) and
+  // again from the opened spec.
+  const auto refuse_if_too_large = [&](std::uint64_t width, std::uint64_t height, std::uint64_t channels) {
+    // Each factor is at most 2^32, so the product of the first two cannot overflow 64 bits.
+    const std::uint64_t pixels = width * height;
+    // OpenImageIO reads up to 256 scanlines at once into a buffer of its own, whatever the image's
+    // height: a 2-row image 681553 pixels wide made it allocate 3.5 GB (a fuzz finding). The
+    // estimate counts the larger of the image and that buffer.
+    constexpr std::uint64_t kLibraryRows = 256;
+    const std::uint64_t read_pixels = std::max(pixels, saturating_multiply(width, kLibraryRows));
+    const std::uint64_t bytes = saturating_multiply(saturating_multiply(read_pixels, channels), sizeof(float));
+    if (pixels > kMaxReadValues || saturating_multiply(pixels, channels) > kMaxReadValues || bytes > max_bytes)
+      throw InputError(where, "the image is too large to read: " + std::to_string(width) + "x" +
+                                  std::to_string(height) + ", " + std::to_string(channels) + " channels is " +
+                                  format_bytes(bytes) + " as floats; the limit is " + format_bytes(max_bytes) +
+                                  " (the smaller of " + format_bytes(kDefaultMemoryBudgetCap) +
+                                  " and the available memory)");
+  };
+  if (const auto declared = check_image_header(file))
+    refuse_if_too_large(declared->width, declared->height, declared->channels);
   const auto input = OIIO::ImageInput::open(file.string());
   if (!input) throw InputError(where, "cannot read image: " + oiio_errors(""));
   const OIIO::ImageSpec& spec = input->spec();
   if (spec.deep || spec.depth > 1) throw InputError(where, "deep and volume images are not supported");
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
     throw InputError(where, "the image has no pixels");
-  // Checked before allocating: a small hostile header can declare an enormous image. Each factor is
-  // at most 2^31, so the product of the first two cannot overflow 64 bits.
-  const std::size_t pixels = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
-  // OpenImageIO reads up to 256 scanlines at once into a buffer of its own, whatever the image's
-  // height: a 2-row image 681553 pixels wide made it allocate 3.5 GB (a fuzz finding). The
-  // estimate counts the larger of the image and that buffer.
-  constexpr std::uint64_t kLibraryRows = 256;
-  const std::uint64_t read_pixels =
-      std::max<std::uint64_t>(pixels, saturating_multiply(static_cast<std::uint64_t>(spec.width), kLibraryRows));
-  const std::uint64_t bytes = saturating_multiply(saturating_multiply(read_pixels, spec.nchannels), sizeof(float));
-  if (pixels > kMaxReadValues || pixels * static_cast<std::size_t>(spec.nchannels) > kMaxReadValues ||
-      bytes > max_bytes)
-    throw InputError(where, "the image is too large to read: " + std::to_string(spec.width) + "x" +
-                                std::to_string(spec.height) + ", " + std::to_string(spec.nchannels) + " channels is " +
-                                format_bytes(bytes) + " as floats; the limit is " + format_bytes(max_bytes) +
-                                " (the smaller of " + format_bytes(kDefaultMemoryBudgetCap) +
-                                " and the available memory)");
+  refuse_if_too_large(static_cast<std::uint64_t>(spec.width), static_cast<std::uint64_t>(spec.height),
+                      static_cast<std::uint64_t>(spec.nchannels));
   // The data window is the image: an offset or a differing display window is not kept.
   // Pixels are decoded a band of rows at a time and the image grows as they arrive: the address
   // space is reserved once, but memory is touched only for rows that really decode, so a

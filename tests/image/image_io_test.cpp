@@ -313,5 +313,44 @@ TEST(ImageIo, ReadingATruncatedExrIsAnInputError) {
   EXPECT_THROW(read_image(folder / "cut.exr"), InputError);
 }
 
+// The position of the little-endian size field of the EXR header attribute `name`.
+std::size_t exr_attribute_size_field(const std::string& bytes, const std::string& name, const std::string& type) {
+  const std::size_t at = bytes.find(name + std::string(1, '\0') + type + std::string(1, '\0'));
+  EXPECT_NE(at, std::string::npos) << name;
+  return at + name.size() + 1 + type.size() + 1;
+}
+
+void put_u32(std::string& bytes, std::size_t at, std::uint32_t value) {
+  for (int i = 0; i < 4; ++i) bytes[at + static_cast<std::size_t>(i)] = static_cast<char>(value >> (8 * i) & 0xff);
+}
+
+TEST(ImageIo, AnExrAttributeWhoseStatedSizeItsContentsDoNotFillIsRefused) {
+  const auto folder = test::scratch_dir();
+  write_image(folder / "whole.exr", varied_image(8, 8, {"R", "G", "B", "A", "depth.Z"}), {});
+  ASSERT_NO_THROW(read_image(folder / "whole.exr"));
+  for (const auto& [name, type] : {std::pair<std::string, std::string>{"channels", "chlist"}, {"dataWindow", "box2i"}}) {
+    std::string bytes = file_bytes(folder / "whole.exr");
+    const std::size_t field = exr_attribute_size_field(bytes, name, type);
+    const std::uint32_t size = static_cast<unsigned char>(bytes[field]);  // both are under 256 bytes
+    put_u32(bytes, field, size - 1);
+    std::ofstream(folder / "skewed.exr", std::ios::binary) << bytes;
+    const std::string message = error_message_of<InputError>([&] { read_image(folder / "skewed.exr"); });
+    EXPECT_NE(message.find("attribute '" + name + "' of type " + type), std::string::npos) << message;
+  }
+}
+
+TEST(ImageIo, AnExrWhoseDataWindowExceedsTheReadBudgetIsRefusedNamingItsSize) {
+  const auto folder = test::scratch_dir();
+  write_image(folder / "small.exr", varied_image(8, 2), {});
+  std::string bytes = file_bytes(folder / "small.exr");
+  const std::size_t window = exr_attribute_size_field(bytes, "dataWindow", "box2i") + 4;
+  put_u32(bytes, window + 8, 681552);  // xMax: 681553 pixels wide, 2 rows, as a fuzzer wrote it
+  std::ofstream(folder / "wide.exr", std::ios::binary) << bytes;
+  const std::string message =
+      error_message_of<InputError>([&] { read_image(folder / "wide.exr", std::uint64_t{256} << 20); });
+  EXPECT_NE(message.find("681553x2"), std::string::npos) << message;
+  EXPECT_NE(message.find("too large"), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace rtpro

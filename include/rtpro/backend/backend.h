@@ -25,12 +25,15 @@ enum class BackendKind { kNative, kEmbree };
 // A hint for batches: camera rays of a tile travel together; secondary rays scatter.
 enum class RayCoherence { kCoherent, kIncoherent };
 
+// Embree's BVH build quality (RTC_BUILD_QUALITY_*): faster builds or faster traversal.
+enum class EmbreeBuildQuality { kLow, kMedium, kHigh };
+
 struct BackendOptions {
-  int threads = 0;                 // 0: all cores
-  std::string embree_quality = "medium";  // low | medium | high
-  bool embree_robust = true;
-  bool embree_compact = false;            // smaller, slower BVH
-  std::size_t max_memory_bytes = 0;       // 0: no limit
+  int threads = 0;                                            // 0: all cores
+  EmbreeBuildQuality embree_quality = EmbreeBuildQuality::kMedium;
+  bool embree_robust = true;                                  // RTC_SCENE_FLAG_ROBUST
+  bool embree_compact = false;                                // smaller, slower BVH
+  std::size_t max_memory_bytes = 0;                           // 0: no limit
 };
 
 class Backend {

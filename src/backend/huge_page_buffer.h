@@ -1,0 +1,82 @@
+#pragma once
+// An uninitialised array of trivially copyable T in memory that asks the kernel for transparent
+// huge pages, for the BVH builder's scratch arrays (tens of MB for a million triangles). On these
+// virtual machines a 4 KiB page fault costs ~13 us; with 2 MiB pages a 38 MB array takes a few
+// dozen faults instead of nearly ten thousand. Pages never written are never touched.
+#include <sys/mman.h>
+
+#include <cstddef>
+#include <new>
+#include <type_traits>
+
+namespace rtpro {
+
+template <typename T>
+class HugePageBuffer {
+  static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>);
+
+ public:
+  HugePageBuffer() = default;
+  explicit HugePageBuffer(std::size_t count) : bytes_(rounded(count * sizeof(T))) {
+    if (bytes_ == 0) return;
+    void* memory = mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (memory == MAP_FAILED) throw std::bad_alloc();
+    madvise(memory, bytes_, MADV_HUGEPAGE);  // advice: without it the buffer works with 4 KiB pages
+    data_ = static_cast<T*>(memory);
+  }
+  HugePageBuffer(HugePageBuffer&& other) noexcept : data_(other.data_), bytes_(other.bytes_) {
+    other.data_ = nullptr;
+    other.bytes_ = 0;
+  }
+  HugePageBuffer& operator=(HugePageBuffer&& other) noexcept {
+    std::swap(data_, other.data_);
+    std::swap(bytes_, other.bytes_);
+    return *this;
+  }
+  ~HugePageBuffer() {
+    if (data_) munmap(data_, bytes_);
+  }
+
+  T* get() const { return data_; }
+  T& operator[](std::size_t i) const { return data_[i]; }
+
+ private:
+  static constexpr std::size_t kHugePage = std::size_t{2} << 20;
+  static std::size_t rounded(std::size_t bytes) { return (bytes + kHugePage - 1) / kHugePage * kHugePage; }
+
+  T* data_ = nullptr;
+  std::size_t bytes_ = 0;
+};
+
+// A std::allocator that takes memory for large arrays (4 MiB and more) the way HugePageBuffer
+// does, so that a finished BVH's nodes are written into huge pages too; small arrays, such as the
+// BVHs of small prototypes, come from the heap as usual.
+template <typename T>
+struct HugePageAllocator {
+  using value_type = T;
+  static constexpr std::size_t kLarge = std::size_t{4} << 20;
+
+  HugePageAllocator() = default;
+  template <typename U>
+  HugePageAllocator(const HugePageAllocator<U>&) {}
+
+  T* allocate(std::size_t n) {
+    const std::size_t bytes = n * sizeof(T);
+    if (bytes < kLarge) return static_cast<T*>(::operator new(bytes));
+    void* memory = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (memory == MAP_FAILED) throw std::bad_alloc();
+    madvise(memory, bytes, MADV_HUGEPAGE);
+    return static_cast<T*>(memory);
+  }
+  void deallocate(T* p, std::size_t n) {
+    const std::size_t bytes = n * sizeof(T);
+    if (bytes < kLarge) return ::operator delete(p);
+    munmap(p, bytes);
+  }
+  template <typename U>
+  bool operator==(const HugePageAllocator<U>&) const {
+    return true;
+  }
+};
+
+}  // namespace rtpro
