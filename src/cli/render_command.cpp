@@ -90,6 +90,15 @@ std::optional<PixelRegion> parse_region(const std::string& text) {
   return r;
 }
 
+// Before the scene is built: a region outside the image would only be refused after the BVH.
+void check_region_fits(const std::optional<PixelRegion>& region, const std::string& text, int width, int height) {
+  if (!region) return;
+  if (region->x0 < 0 || region->y0 < 0 || region->x1 > width || region->y1 > height || region->width() <= 0 ||
+      region->height() <= 0)
+    throw InputError("--region " + text + ": not a non-empty window inside the " + std::to_string(width) + "x" +
+                     std::to_string(height) + " image (x0,y0,x1,y1 with x1, y1 exclusive)");
+}
+
 Image crop_image(const Image& full, const PixelRegion& r) {
   Image out(r.width(), r.height(), full.channels);
   for (int y = 0; y < r.height(); ++y)
@@ -129,6 +138,7 @@ int run_render(const RenderCommandOptions& o) {
   const int threads = o.threads.value_or(0) > 0 ? *o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   RenderOptions render_options;
   render_options.region = parse_region(o.region);
+  if (o.tile_size < 1) throw InputError("--tile-size must be at least 1 pixel, got " + std::to_string(o.tile_size));
   render_options.tile_size = o.tile_size;
   for (const std::string& name : o.aovs) render_options.aovs.push_back(parse_aov(name));
   const OutputTarget output(o.output, o.format);
@@ -170,6 +180,7 @@ int run_render(const RenderCommandOptions& o) {
 
 
   const SceneDescription description = parse_with_overrides(o.scene, o.scene_overrides);
+  check_region_fits(render_options.region, o.region, description.camera.width, description.camera.height);
   // Refused before anything large is allocated: image buffers, flattened instances, meshes.
   int extra_channels = 0;
   for (Aov aov : render_options.aovs) extra_channels += static_cast<int>(aov_channel_names(aov).size());

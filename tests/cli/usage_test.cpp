@@ -81,6 +81,9 @@ TEST(Usage, ValuesAreCheckedByTheSceneFilesRules) {
                         "--size '64': expected WIDTHxHEIGHT");
   expect_one_line_error("render " + scene.string() + " -o " + out + " --set render.background=[255,0,0]",
                         "looks like 8-bit sRGB values");
+  expect_one_line_error("render " + scene.string() + " -o " + out + " --region 0,0,30,10",
+                        "--region 0,0,30,10: not a non-empty window inside the 24x16 image");
+  expect_one_line_error("render " + scene.string() + " -o " + out + " --tile-size 0", "--tile-size must be at least 1");
   expect_one_line_error("render " + scene.string() + " -o " + out + " -q --progress sometimes",
                         "--progress 'sometimes': expected never, auto, always or json");
 }
