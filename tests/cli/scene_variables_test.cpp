@@ -77,6 +77,16 @@ TEST(SceneIncludes, MergeMappingsAndSpliceLists) {
   EXPECT_EQ(json["spheres"]["stored"], 3) << json.dump();
 }
 
+TEST(SceneIncludes, MeshPathsAreRelativeToTheFileThatWritesThem) {
+  const auto dir = test::scratch_dir();
+  test::write_file("props/tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  test::write_file("props/table.yaml", "- {type: mesh, file: tri.obj}\n");
+  const auto scene = test::write_file("scene.yaml", std::string("rtpro: 1\n") + kCamera +
+                                                        "world: [{include: props/table.yaml}]\n");
+  const nlohmann::json json = info(scene.string());
+  EXPECT_EQ(json["triangles"]["stored"], 1) << json.dump();
+}
+
 TEST(SceneIncludes, CyclesMissingFilesAndErrorsNameTheFile) {
   const auto dir = test::scratch_dir();
   test::write_file("a.yaml", std::string("rtpro: 1\n") + kCamera + "world: [{include: b.yaml}]\n");
