@@ -4,6 +4,7 @@
 #include "rtpro/core/error.h"
 
 #include <map>
+#include <sstream>
 
 namespace rtpro::cli {
 
@@ -95,6 +96,16 @@ void check_options(const CLI::App& command, const std::vector<std::string>& args
   }
 }
 
+// CLI11 lists unexpected arguments last first.
+std::string in_typed_order(const std::string& reversed) {
+  std::vector<std::string> words;
+  std::istringstream list(reversed);
+  for (std::string word; list >> word;) words.insert(words.begin(), word);
+  std::string text;
+  for (const std::string& word : words) text += (text.empty() ? "" : " ") + ("'" + word + "'");
+  return text;
+}
+
 }  // namespace
 
 void check_command_line(const CLI::App& app, const std::vector<std::string>& args) {
@@ -118,7 +129,13 @@ std::string usage_error_line(const CLI::App& app, const std::vector<std::string>
   std::string command;
   for (std::size_t i = 1; i < args.size() && command.empty(); ++i)
     if (find_subcommand(app, args[i])) command = args[i];
-  std::string line = "rtpro: error: " + message;
+  std::string text = message;
+  // CLI11's words for arguments no option or positional takes, in rtpro's voice.
+  for (const auto& [theirs, ours] : {std::pair<std::string, std::string>{"The following argument was not expected: ",
+                                                                          "unexpected argument: "},
+                                     {"The following arguments were not expected: ", "unexpected arguments: "}})
+    if (text.rfind(theirs, 0) == 0) text = ours + in_typed_order(text.substr(theirs.size()));
+  std::string line = "rtpro: error: " + text;
   while (!line.empty() && line.back() == '\n') line.pop_back();
   for (char& c : line)
     if (c == '\n') c = ' ';

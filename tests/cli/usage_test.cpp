@@ -59,6 +59,8 @@ TEST(Usage, UnknownOptionSuggestsTheNearest) {
   expect_one_line_error("render " + scene.string() + " -o " + out + " --max-dept=3", "did you mean '--max-depth'?");
   expect_one_line_error("info " + scene.string() + " --jsn", "did you mean '--json'?");
   expect_one_line_error("render " + scene.string() + " -o " + out + " -qx", "unknown option '-x'");
+  expect_one_line_error("info " + scene.string() + " second.yaml third.yaml",
+                        "unexpected arguments: 'second.yaml' 'third.yaml'");
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
