@@ -15,7 +15,7 @@ ProgressMode parse_progress_mode(const std::string& text) {
   throw InputError("--progress '" + text + "': expected never, auto, always or json");
 }
 
-std::string json_progress_line(std::size_t done, std::size_t total, double elapsed, bool final) {
+std::string json_progress_line(std::size_t done, std::size_t total, double elapsed, bool final, long frame) {
   const double fraction = total ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
   char text[256];
   if (final || done == 0) {
@@ -29,7 +29,7 @@ std::string json_progress_line(std::size_t done, std::size_t total, double elaps
                   "\"eta_seconds\":%.3f,\"final\":false}",
                   done, total, fraction, elapsed, elapsed * (1.0 - fraction) / fraction);
   }
-  return text;
+  return frame < 0 ? std::string(text) : "{\"frame\":" + std::to_string(frame) + "," + std::string(text + 1);
 }
 
 std::string format_duration(double seconds) {
@@ -42,9 +42,10 @@ std::string format_duration(double seconds) {
   return text;
 }
 
-ProgressReporter::ProgressReporter(ProgressMode mode, bool stderr_is_terminal)
+ProgressReporter::ProgressReporter(ProgressMode mode, bool stderr_is_terminal, long frame)
     : enabled_(mode != ProgressMode::kNever),
       json_(mode == ProgressMode::kJson),
+      frame_(frame),
       bar_(!json_ && (mode == ProgressMode::kAlways || stderr_is_terminal)),
       start_(std::chrono::steady_clock::now()),
       interval_(bar_    ? std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::milliseconds(250))
@@ -73,7 +74,7 @@ void ProgressReporter::draw(std::size_t done, std::size_t total, bool final) {
   const double fraction = total ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
   const double eta = fraction > 0 ? elapsed * (1.0 - fraction) / fraction : NAN;
   if (json_) {
-    std::fprintf(stderr, "%s\n", json_progress_line(done, total, elapsed, final).c_str());
+    std::fprintf(stderr, "%s\n", json_progress_line(done, total, elapsed, final, frame_).c_str());
   } else if (bar_) {
     constexpr int kWidth = 30;
     const int filled = static_cast<int>(fraction * kWidth);

@@ -57,6 +57,7 @@ struct RenderCommandOptions {
   std::vector<SceneOverride> scene_overrides;  // all of the above, in command-line order
   std::string display_server;  // HOST:PORT of a tev for a live preview
   std::string frames;  // FIRST-LAST[:STEP]
+  long frame = -1;     // the frame of --frames being rendered
   bool skip_existing = false;
   std::string region;
   bool crop = false;
@@ -225,7 +226,7 @@ int run_render(const RenderCommandOptions& o) {
     };
   }
   const InterruptGuard interrupt;
-  ProgressReporter progress(progress_mode, isatty(STDERR_FILENO) == 1);
+  ProgressReporter progress(progress_mode, isatty(STDERR_FILENO) == 1, o.frame);
   render_options.cancel = &InterruptGuard::requested();
   render_options.on_tile_done = [&progress](std::size_t done, std::size_t total) { progress.tile_done(done, total); };
   RenderResult result = render_image(scene, *backend, render_options);
@@ -248,6 +249,7 @@ int run_render(const RenderCommandOptions& o) {
       {"rtpro:scene", o.scene},
   };
   if (render_options.region) write_options.metadata.push_back({"rtpro:region", o.region});
+  if (o.frame >= 0) write_options.metadata.push_back({"rtpro:frame", std::to_string(o.frame)});
   if (!result.complete())
     write_options.metadata.push_back({"rtpro:partial", std::to_string(result.tiles_done) + " of " +
                                                            std::to_string(result.tiles_total) + " tiles"});
@@ -297,11 +299,15 @@ int run_renders(const RenderCommandOptions& o) {
   if (!has_frame_pattern(o.output))
     throw InputError("--frames needs a frame number pattern in -o, e.g. -o out_####.exr");
   if (o.scene == "-") throw InputError("--frames reads the scene once per frame: it cannot come from standard input");
+  if (!o.stats_json.empty() && !has_frame_pattern(o.stats_json))
+    throw InputError("--stats-json with --frames needs a frame number pattern too, e.g. stats_####.json");
   for (const SceneOverride& set : o.scene_overrides)
     if (set.assignment.rfind("variables.frame=", 0) == 0) throw InputError(set.flag + ": --frames sets the frame");
   for (long frame : range.frames()) {
     RenderCommandOptions one = o;
     one.output = numbered_output(o.output, frame);
+    one.stats_json = numbered_output(o.stats_json, frame);
+    one.frame = frame;
     if (o.skip_existing && std::filesystem::exists(one.output)) {
       log.info("frame " + std::to_string(frame) + " skipped: " + one.output + " exists (--skip-existing)");
       continue;

@@ -7,6 +7,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <sstream>
 
 namespace rtpro {
 namespace {
@@ -89,6 +90,31 @@ TEST(FrameSequence, SkipExistingLeavesWrittenFramesAlone) {
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "rendered by another machine");
   EXPECT_TRUE(std::filesystem::exists(dir / "f_0001.exr"));
   EXPECT_TRUE(std::filesystem::exists(dir / "f_0003.exr"));
+}
+
+TEST(FrameSequence, ProgressAndStatsNameTheFrame) {
+  const auto scene = test::write_file("anim.yaml", kAnimated);
+  const auto dir = scene.parent_path();
+  std::string out;
+  ASSERT_EQ(run_command("{ " + rtpro("render " + scene.string() + " -o " + (dir / "p_#.exr").string() + " --frames 2-3 -q" +
+                                     " --progress json --stats-json " + (dir / "stats_#.json").string()) +
+                            " > /dev/null; }",
+                        &out),
+            0)
+      << out;
+  std::istringstream lines(out);
+  std::vector<int> finals;
+  for (std::string line; std::getline(lines, line);) {
+    const nlohmann::json progress = nlohmann::json::parse(line);
+    if (progress["final"].get<bool>()) finals.push_back(progress["frame"].get<int>());
+  }
+  EXPECT_EQ(finals, (std::vector<int>{2, 3})) << out;
+  EXPECT_TRUE(std::filesystem::exists(dir / "stats_2.json"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "stats_3.json"));
+  out = run("render " + scene.string() + " -o " + (dir / "q_#.exr").string() + " --frames 2-3 --stats-json " +
+                (dir / "stats.json").string(),
+            2);
+  EXPECT_NE(out.find("--stats-json with --frames needs a frame number pattern"), std::string::npos) << out;
 }
 
 TEST(FrameSequence, PatternAndRangeMistakesAreRefused) {
