@@ -148,7 +148,7 @@ int run_info(const InfoOptions& o) {
 void add_info_command(CLI::App& app, Action& action) {
   auto options = std::make_shared<InfoOptions>();
   CLI::App* cmd = app.add_subcommand("info", "Describe what a scene holds without rendering it");
-  cmd->add_option("scene", options->scene, "Scene file (YAML)")->required();
+  cmd->add_option("scene", options->scene, "Scene file (YAML or glTF), or '-' for a YAML scene on standard input")->required();
   add_scene_override_options(*cmd, options->overrides, options->defines);
   cmd->add_flag("--json", options->json, "Print JSON instead of text");
   cmd->add_option("--max-memory", options->max_memory_mb,
