@@ -44,8 +44,33 @@ std::string help_pointer(const std::string& command) {
   return " (see 'rtpro " + (command.empty() ? std::string() : command + " ") + "--help')";
 }
 
+// Other renderers' spellings of rtpro's options (pbrt-v4, Mitsuba 3, Blender, POV-Ray), for
+// render: the message names rtpro's option instead of the nearest by spelling.
+std::string other_renderers_name(const std::string& spelling) {
+  static const std::map<std::string, std::string> kHabits = {
+      {"--outfile", "-o/--output (pbrt's --outfile)"},
+      {"--nthreads", "--threads (pbrt's --nthreads)"},
+      {"--cropwindow", "--region x0,y0,x1,y1 in pixels (pbrt's --cropwindow takes fractions)"},
+      {"--pixelbounds", "--region x0,y0,x1,y1 (pbrt's --pixelbounds)"},
+      {"--samples", "--spp"},
+      {"--width", "--size WIDTHxHEIGHT"},
+      {"--height", "--size WIDTHxHEIGHT"},
+      {"--frame", "--frames N, or -D frame=N (Blender's -f)"},
+      {"--render-frame", "--frames N (Blender's -f)"},
+      {"--render-anim", "--frames FIRST-LAST (Blender's -a)"},
+      {"--frame-start", "--frames FIRST-LAST"},
+      {"--frame-end", "--frames FIRST-LAST"},
+      {"--threads-count", "--threads"},
+  };
+  const auto found = kHabits.find(spelling);
+  return found == kHabits.end() ? std::string() : found->second;
+}
+
 [[noreturn]] void unknown_option(const CLI::App& command, const std::string& spelling) {
   const std::string where = command.get_parent() ? " for 'rtpro " + command.get_name() + "'" : "";
+  if (const std::string habit = other_renderers_name(spelling); !habit.empty() && command.get_name() == "render")
+    throw InputError("unknown option '" + spelling + "'" + where + "; rtpro's is " + habit +
+                     help_pointer(command.get_name()));
   throw InputError("unknown option '" + spelling + "'" + where + suggestion(spelling, option_spellings(command)) +
                    help_pointer(command.get_parent() ? command.get_name() : ""));
 }

@@ -58,6 +58,8 @@ TEST(Usage, UnknownOptionSuggestsTheNearest) {
                         "unknown option '--sp' for 'rtpro render'; did you mean '--spp'?");
   expect_one_line_error("render " + scene.string() + " -o " + out + " --max-dept=3", "did you mean '--max-depth'?");
   expect_one_line_error("info " + scene.string() + " --jsn", "did you mean '--json'?");
+  expect_one_line_error("render " + scene.string() + " --outfile " + out, "rtpro's is -o/--output (pbrt's --outfile)");
+  expect_one_line_error("render " + scene.string() + " -o " + out + " --render-anim", "rtpro's is --frames FIRST-LAST");
   expect_one_line_error("render " + scene.string() + " -o " + out + " -qx", "unknown option '-x'");
   expect_one_line_error("info " + scene.string() + " second.yaml third.yaml",
                         "unexpected arguments: 'second.yaml' 'third.yaml'");
