@@ -7,6 +7,7 @@
 #include "rtpro/scene/render_cost.h"
 #include "rtpro/scene/scene_parser.h"
 #include "rtpro/scene/scene_summary.h"
+#include "scene_overrides.h"
 
 #include <nlohmann/json.hpp>
 
@@ -20,7 +21,8 @@ namespace {
 
 struct InfoOptions {
   std::string scene;
-  std::vector<std::string> overrides;
+  std::vector<std::string> overrides, defines;
+  std::vector<SceneOverride> scene_overrides;  // both, in command-line order
   bool json = false;
   std::string max_memory_mb;
 };
@@ -123,7 +125,7 @@ void print_cost(const RenderCost& cost, const MemoryBudget& budget) {
 }
 
 int run_info(const InfoOptions& o) {
-  const SceneDescription description = parse_scene_file(o.scene, o.overrides);
+  const SceneDescription description = parse_with_overrides(o.scene, o.scene_overrides);
   const MemoryBudget budget = parse_memory_budget(o.max_memory_mb);
   const RenderCost cost = estimate_render_cost(description);
   check_render_cost(cost, budget.bytes, budget.source, o.scene);
@@ -146,13 +148,16 @@ int run_info(const InfoOptions& o) {
 void add_info_command(CLI::App& app, Action& action) {
   auto options = std::make_shared<InfoOptions>();
   CLI::App* cmd = app.add_subcommand("info", "Describe what a scene holds without rendering it");
-  cmd->add_option("scene", options->scene, "Scene file (YAML)")->required();
-  cmd->add_option("--set", options->overrides, "Override a scene value, e.g. --set render.spp=64 (repeatable)");
+  cmd->add_option("scene", options->scene, "Scene file (YAML or glTF), or '-' for a YAML scene on standard input")->required();
+  add_scene_override_options(*cmd, options->overrides, options->defines);
   cmd->add_flag("--json", options->json, "Print JSON instead of text");
   cmd->add_option("--max-memory", options->max_memory_mb,
                   "Memory budget in MiB the render estimate is checked against (0: no limit; default: the smaller "
                   "of 4096 and the available memory)");
-  cmd->callback([options, &action] { action = [options] { return run_info(*options); }; });
+  cmd->callback([options, cmd, &action] {
+    options->scene_overrides = command_line_overrides(*cmd);
+    action = [options] { return run_info(*options); };
+  });
 }
 
 }  // namespace rtpro::cli

@@ -1,6 +1,7 @@
 // rtpro's command line: subcommands register themselves (see cli/command.h); main parses,
 // runs the chosen action and maps rtpro's error kinds to exit codes.
 #include "command.h"
+#include "usage_check.h"
 #include "rtpro/core/error.h"
 #include "rtpro/image/image_layer.h"
 
@@ -12,6 +13,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -51,13 +53,26 @@ int main(int argc, char** argv) {
   rtpro::cli::add_compare_command(app, action);
   rtpro::cli::add_crosscheck_command(app, action);
   rtpro::cli::add_info_command(app, action);
+  rtpro::cli::add_shell_integration_commands(app, action);
 
+  const std::vector<std::string> args(argv, argv + argc);
   try {
+    rtpro::cli::check_command_line(app, args);
     app.parse(argc, argv);
+  } catch (const rtpro::InputError& e) {
+    std::cerr << "rtpro: error: " << e.what() << "\n";
+    return rtpro::kExitInputError;
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    // CLI11 uses its own codes (e.g. 105 for validation); usage errors are exit 2 by custom.
-    return code == 0 ? rtpro::kExitOk : rtpro::kExitInputError;
+    // CLI11 uses its own codes (e.g. 105 for validation) and two lines; usage errors are one
+    // line and exit 2 by custom.
+    std::cerr << rtpro::cli::usage_error_line(app, args, e.what()) << "\n";
+    return rtpro::kExitInputError;
   }
 
   const int code = run(action);

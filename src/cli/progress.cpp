@@ -11,7 +11,25 @@ ProgressMode parse_progress_mode(const std::string& text) {
   if (text == "never") return ProgressMode::kNever;
   if (text == "auto") return ProgressMode::kAuto;
   if (text == "always") return ProgressMode::kAlways;
-  throw InputError("--progress '" + text + "': expected never, auto or always");
+  if (text == "json") return ProgressMode::kJson;
+  throw InputError("--progress '" + text + "': expected never, auto, always or json");
+}
+
+std::string json_progress_line(std::size_t done, std::size_t total, double elapsed, bool final, long frame) {
+  const double fraction = total ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
+  char text[256];
+  if (final || done == 0) {
+    std::snprintf(text, sizeof text,
+                  "{\"tiles_done\":%zu,\"tiles_total\":%zu,\"fraction\":%.6f,\"elapsed_seconds\":%.3f,"
+                  "\"eta_seconds\":%s,\"final\":%s}",
+                  done, total, fraction, elapsed, final ? "0" : "null", final ? "true" : "false");
+  } else {
+    std::snprintf(text, sizeof text,
+                  "{\"tiles_done\":%zu,\"tiles_total\":%zu,\"fraction\":%.6f,\"elapsed_seconds\":%.3f,"
+                  "\"eta_seconds\":%.3f,\"final\":false}",
+                  done, total, fraction, elapsed, elapsed * (1.0 - fraction) / fraction);
+  }
+  return frame < 0 ? std::string(text) : "{\"frame\":" + std::to_string(frame) + "," + std::string(text + 1);
 }
 
 std::string format_duration(double seconds) {
@@ -24,11 +42,15 @@ std::string format_duration(double seconds) {
   return text;
 }
 
-ProgressReporter::ProgressReporter(ProgressMode mode, bool stderr_is_terminal)
+ProgressReporter::ProgressReporter(ProgressMode mode, bool stderr_is_terminal, long frame)
     : enabled_(mode != ProgressMode::kNever),
-      bar_(mode == ProgressMode::kAlways || stderr_is_terminal),
+      json_(mode == ProgressMode::kJson),
+      frame_(frame),
+      bar_(!json_ && (mode == ProgressMode::kAlways || stderr_is_terminal)),
       start_(std::chrono::steady_clock::now()),
-      interval_(bar_ ? std::chrono::milliseconds(250) : std::chrono::seconds(5)) {}
+      interval_(bar_    ? std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::milliseconds(250))
+                : json_ ? std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::seconds(1))
+                        : std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::seconds(5))) {}
 
 void ProgressReporter::tile_done(std::size_t done, std::size_t total) {
   if (!enabled_) return;
@@ -51,7 +73,9 @@ void ProgressReporter::draw(std::size_t done, std::size_t total, bool final) {
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double fraction = total ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
   const double eta = fraction > 0 ? elapsed * (1.0 - fraction) / fraction : NAN;
-  if (bar_) {
+  if (json_) {
+    std::fprintf(stderr, "%s\n", json_progress_line(done, total, elapsed, final, frame_).c_str());
+  } else if (bar_) {
     constexpr int kWidth = 30;
     const int filled = static_cast<int>(fraction * kWidth);
     std::string bar(filled, '#');

@@ -10,14 +10,21 @@
 
 namespace rtpro::cli {
 
-enum class ProgressMode { kNever, kAuto, kAlways };
+// kJson: one JSON object per line for render managers (json_progress_line), once a second and
+// at the end.
+enum class ProgressMode { kNever, kAuto, kAlways, kJson };
 
-ProgressMode parse_progress_mode(const std::string& text);  // never | auto | always
+ProgressMode parse_progress_mode(const std::string& text);  // never | auto | always | json
+
+// {"tiles_done":3,"tiles_total":12,"fraction":0.25,"elapsed_seconds":1.5,"eta_seconds":4.5,
+// "final":false}; eta_seconds is null before the first tile. A frame of a sequence (frame >= 0)
+// comes first: {"frame":12,"tiles_done":...}.
+std::string json_progress_line(std::size_t done, std::size_t total, double elapsed, bool final, long frame = -1);
 
 class ProgressReporter {
  public:
   // kAuto draws a bar on a terminal and prints lines otherwise; kAlways forces the bar.
-  ProgressReporter(ProgressMode mode, bool stderr_is_terminal);
+  ProgressReporter(ProgressMode mode, bool stderr_is_terminal, long frame = -1);
 
   void tile_done(std::size_t done, std::size_t total);
   void finish(std::size_t done, std::size_t total);  // final state, ends the bar's line
@@ -26,6 +33,8 @@ class ProgressReporter {
   void draw(std::size_t done, std::size_t total, bool final);
 
   bool enabled_;
+  bool json_;
+  long frame_;
   bool bar_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::duration interval_;

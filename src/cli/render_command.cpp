@@ -2,11 +2,15 @@
 #include "rtpro/backend/backend.h"
 #include "backend_options.h"
 #include "command.h"
+#include "frame_sequence.h"
 #include "interrupt.h"
 #include "log.h"
 #include "memory_option.h"
+#include "output_target.h"
 #include "progress.h"
 #include "render_stats.h"
+#include "scene_overrides.h"
+#include "tev_client.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
 #include "rtpro/image/atomic_file_replacement.h"
@@ -25,6 +29,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
@@ -45,8 +50,15 @@ struct RenderCommandOptions {
   // "--seed -1" or "--size 4294967297x1" is an error instead of wrapping to another number.
   std::string spp, max_depth, seed, size;
   std::optional<int> threads;
-  std::string ocio_config, display, view;
-  std::vector<std::string> overrides;
+  std::string ocio_config, display, deprecated_display, view;
+  std::string format;      // for -o -
+  double exposure = 0.0;   // stops
+  std::vector<std::string> overrides, defines;
+  std::vector<SceneOverride> scene_overrides;  // all of the above, in command-line order
+  std::string display_server;  // HOST:PORT of a tev for a live preview
+  std::string frames;  // FIRST-LAST[:STEP]
+  long frame = -1;     // the frame of --frames being rendered
+  bool skip_existing = false;
   std::string region;
   bool crop = false;
   std::vector<std::string> aovs;
@@ -63,58 +75,11 @@ struct RenderCommandOptions {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// A scene override together with the command-line text it came from, so errors name the flag
-// the user typed (--spp 10) rather than the override it became (--set render.spp=10).
-struct SceneOverride {
-  std::string assignment;
-  std::string flag;
-};
-
-// An optional sign and decimal digits: what the scene file's integer rules then judge (range,
-// sign) without any conversion in between that could wrap.
-bool is_integer_text(std::string_view text) {
-  if (!text.empty() && (text[0] == '+' || text[0] == '-')) text.remove_prefix(1);
-  return !text.empty() && text.find_first_not_of("0123456789") == std::string_view::npos;
-}
-
-void add_integer_override(std::vector<SceneOverride>& overrides, const std::string& key, const std::string& flag,
-                          const std::string& value) {
-  if (value.empty()) return;
-  if (!is_integer_text(value)) throw InputError(flag + " '" + value + "': expected an integer");
-  overrides.push_back({key + "=" + value, flag + " " + value});
-}
-
-// Command-line values become scene overrides, so they are validated exactly like the file's.
-std::vector<SceneOverride> scene_overrides(const RenderCommandOptions& o) {
-  std::vector<SceneOverride> overrides;
-  for (const std::string& set : o.overrides) overrides.push_back({set, "--set " + set});
-  add_integer_override(overrides, "render.spp", "--spp", o.spp);
-  add_integer_override(overrides, "render.max_depth", "--max-depth", o.max_depth);
-  add_integer_override(overrides, "render.seed", "--seed", o.seed);
-  if (!o.size.empty()) {
-    const std::size_t x = o.size.find('x');
-    const std::string width = o.size.substr(0, x), height = x == std::string::npos ? "" : o.size.substr(x + 1);
-    if (!is_integer_text(width) || !is_integer_text(height))
-      throw InputError("--size '" + o.size + "': expected WIDTHxHEIGHT, e.g. 640x480");
-    overrides.push_back({"camera.resolution=[" + width + "," + height + "]", "--size " + o.size});
-  }
-  return overrides;
-}
-
-
-SceneDescription parse_with_overrides(const std::string& scene, const std::vector<SceneOverride>& overrides) {
-  std::vector<std::string> assignments;
-  for (const SceneOverride& o : overrides) assignments.push_back(o.assignment);
-  try {
-    return parse_scene_file(scene, assignments);
-  } catch (const InputError& e) {
-    for (const SceneOverride& o : overrides) {
-      const std::string prefix = "--set " + o.assignment + ":";
-      const std::string message = e.what();
-      if (message.rfind(prefix, 0) == 0) throw InputError(o.flag + ":" + message.substr(prefix.size()));
-    }
-    throw;
-  }
+// Only EXR has named layers for the AOVs; every other format would drop them without a word.
+bool holds_layers(const std::filesystem::path& output) {
+  std::string extension = output.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".exr" || extension == ".sxr" || extension == ".mxr";
 }
 
 std::optional<PixelRegion> parse_region(const std::string& text) {
@@ -124,6 +89,15 @@ std::optional<PixelRegion> parse_region(const std::string& text) {
   if (std::sscanf(text.c_str(), "%d,%d,%d,%d%c", &r.x0, &r.y0, &r.x1, &r.y1, &extra) != 4)
     throw InputError("--region '" + text + "': expected x0,y0,x1,y1 in pixels (x1 and y1 exclusive)");
   return r;
+}
+
+// Before the scene is built: a region outside the image would only be refused after the BVH.
+void check_region_fits(const std::optional<PixelRegion>& region, const std::string& text, int width, int height) {
+  if (!region) return;
+  if (region->x0 < 0 || region->y0 < 0 || region->x1 > width || region->y1 > height || region->width() <= 0 ||
+      region->height() <= 0)
+    throw InputError("--region " + text + ": not a non-empty window inside the " + std::to_string(width) + "x" +
+                     std::to_string(height) + " image (x0,y0,x1,y1 with x1, y1 exclusive)");
 }
 
 Image crop_image(const Image& full, const PixelRegion& r) {
@@ -165,22 +139,39 @@ int run_render(const RenderCommandOptions& o) {
   const int threads = o.threads.value_or(0) > 0 ? *o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   RenderOptions render_options;
   render_options.region = parse_region(o.region);
+  if (o.tile_size < 1) throw InputError("--tile-size must be at least 1 pixel, got " + std::to_string(o.tile_size));
   render_options.tile_size = o.tile_size;
   for (const std::string& name : o.aovs) render_options.aovs.push_back(parse_aov(name));
-  const ProgressMode progress_mode = o.quiet ? ProgressMode::kNever : parse_progress_mode(o.progress);
+  const OutputTarget output(o.output, o.format);
+  check_exposure(o.exposure);
+  const std::optional<DisplayServerAddress> display_server =
+      o.display_server.empty() ? std::nullopt : std::optional(parse_display_server(o.display_server));
+  if (!render_options.aovs.empty() && !holds_layers(output.file()))
+    throw InputError("--aov needs an EXR output: '" + o.output + "' holds only the colour image");
+  if (!o.deprecated_display.empty() && !o.display.empty())
+    throw InputError("--display is the old spelling of --ocio-display: give only --ocio-display");
+  if (!o.deprecated_display.empty())
+    log.warning("--display is deprecated: it names an OpenColorIO display; write --ocio-display " +
+                o.deprecated_display + " (pbrt's live preview is --display-server)");
+  const std::string& display = o.display.empty() ? o.deprecated_display : o.display;
+  // Checked even with -q, which silences it unless it is JSON for a program: a typo is an error
+  // whether or not it shows.
+  const ProgressMode chosen_progress = parse_progress_mode(o.progress);
+  const ProgressMode progress_mode =
+      o.quiet && chosen_progress != ProgressMode::kJson ? ProgressMode::kNever : chosen_progress;
   if (o.crop && !render_options.region) throw InputError("--crop needs --region");
   const MemoryBudget memory = parse_memory_budget(o.max_memory_mb);
 
   // Fail before the render, not after it: output folder, format, colour config and view.
-  check_image_output(o.output);
+  check_image_output(output.file());
   if (!o.stats_json.empty()) check_replaceable(o.stats_json);
   ImageWriteOptions write_options;
   if (!o.ocio_config.empty()) write_options.ocio_config = o.ocio_config;
-  write_options.display = o.display;
+  write_options.display = display;
   write_options.view = o.view;
-  if (!writes_scene_linear(o.output)) {
+  if (!writes_scene_linear(output.file())) {
     const ColorConfig colors = ColorConfig::load(write_options.ocio_config);
-    const DisplayTransform transform = colors.display_transform(o.display, o.view);
+    const DisplayTransform transform = colors.display_transform(display, o.view);
     log.verbose("colour: OCIO config " + colors.source() + ", display '" + transform.display() + "', view '" +
                 transform.view() + "'");
   }
@@ -189,7 +180,8 @@ int run_render(const RenderCommandOptions& o) {
   tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
 
-  const SceneDescription description = parse_with_overrides(o.scene, scene_overrides(o));
+  const SceneDescription description = parse_with_overrides(o.scene, o.scene_overrides);
+  check_region_fits(render_options.region, o.region, description.camera.width, description.camera.height);
   // Refused before anything large is allocated: image buffers, flattened instances, meshes.
   int extra_channels = 0;
   for (Aov aov : render_options.aovs) extra_channels += static_cast<int>(aov_channel_names(aov).size());
@@ -205,7 +197,7 @@ int run_render(const RenderCommandOptions& o) {
   }
   RenderStatistics stats;
   stats.scene = o.scene;
-  stats.output = o.output;
+  stats.output = output.name();
   stats.threads = threads;
   stats.spp = scene.render.spp;
   stats.width = scene.camera.width;
@@ -225,11 +217,19 @@ int run_render(const RenderCommandOptions& o) {
   stats.build_seconds = backend->stats().build_seconds;
   log.verbose("built " + stats.backend + " acceleration structure in " + std::to_string(stats.build_seconds) + " s");
 
+  std::unique_ptr<TevClient> preview;
+  if (display_server) {
+    preview = std::make_unique<TevClient>(*display_server, std::filesystem::path(output.name()).filename().string(),
+                                          scene.camera.width, scene.camera.height, log);
+    render_options.on_tile_pixels = [&preview](const Image& image, const PixelRegion& region) {
+      preview->send_tile(image, region);
+    };
+  }
   const InterruptGuard interrupt;
-  ProgressReporter progress(progress_mode, isatty(STDERR_FILENO) == 1);
+  ProgressReporter progress(progress_mode, isatty(STDERR_FILENO) == 1, o.frame);
   render_options.cancel = &InterruptGuard::requested();
   render_options.on_tile_done = [&progress](std::size_t done, std::size_t total) { progress.tile_done(done, total); };
-  const RenderResult result = render_image(scene, *backend, render_options);
+  RenderResult result = render_image(scene, *backend, render_options);
   progress.finish(result.tiles_done, result.tiles_total);
   stats.render_seconds = result.seconds;
   stats.rays = result.rays;
@@ -237,7 +237,8 @@ int run_render(const RenderCommandOptions& o) {
   stats.complete = result.complete();
 
   const auto write_start = Clock::now();
-  const std::filesystem::path target = result.complete() ? std::filesystem::path(o.output) : partial_path(o.output);
+  const std::filesystem::path target =
+      result.complete() || output.to_stdout() ? output.file() : partial_path(output.file());
   write_options.metadata = {
       {"Software", std::string("rtpro ") + RTPRO_VERSION},
       {"rtpro:backend", stats.backend},
@@ -248,10 +249,15 @@ int run_render(const RenderCommandOptions& o) {
       {"rtpro:scene", o.scene},
   };
   if (render_options.region) write_options.metadata.push_back({"rtpro:region", o.region});
+  if (o.frame >= 0) write_options.metadata.push_back({"rtpro:frame", std::to_string(o.frame)});
   if (!result.complete())
     write_options.metadata.push_back({"rtpro:partial", std::to_string(result.tiles_done) + " of " +
                                                            std::to_string(result.tiles_total) + " tiles"});
-  write_image(target, o.crop ? crop_image(result.image, *render_options.region) : result.image, write_options);
+  if (o.exposure != 0.0) write_options.metadata.push_back({"rtpro:exposure", std::to_string(o.exposure)});
+  Image image = o.crop ? crop_image(result.image, *render_options.region) : std::move(result.image);
+  apply_exposure(image, o.exposure);
+  write_image(target, image, write_options);
+  output.deliver();
   stats.write_seconds = seconds_since(write_start);
 
   const BackendStats backend_stats = backend->stats();
@@ -271,9 +277,45 @@ int run_render(const RenderCommandOptions& o) {
     return kExitInterrupted;
   }
   std::ostringstream line;
-  line << "wrote " << o.output << " (" << scene.camera.width << "x" << scene.camera.height << ", "
+  line << "wrote " << output.name() << " (" << scene.camera.width << "x" << scene.camera.height << ", "
        << scene.render.spp << " spp, " << stats.backend << ") in " << format_duration(stats.total_seconds);
   log.info(line.str());
+  return kExitOk;
+}
+
+// One render, or one per frame of --frames, each exactly the image that frame renders alone.
+int run_renders(const RenderCommandOptions& o) {
+  Log log(o.quiet ? LogLevel::kQuiet : LogLevel::kNormal);
+  if (o.frames.empty()) {
+    if (has_frame_pattern(o.output))
+      throw InputError("-o " + o.output + " holds a frame number pattern ('#'): give --frames, e.g. --frames 1-240");
+    if (o.skip_existing && o.output != "-" && std::filesystem::exists(o.output)) {
+      log.info("skipped: " + o.output + " exists (--skip-existing)");
+      return kExitOk;
+    }
+    return run_render(o);
+  }
+  const FrameRange range = parse_frame_range(o.frames);
+  if (!has_frame_pattern(o.output))
+    throw InputError("--frames needs a frame number pattern in -o, e.g. -o out_####.exr");
+  if (o.scene == "-") throw InputError("--frames reads the scene once per frame: it cannot come from standard input");
+  if (!o.stats_json.empty() && !has_frame_pattern(o.stats_json))
+    throw InputError("--stats-json with --frames needs a frame number pattern too, e.g. stats_####.json");
+  for (const SceneOverride& set : o.scene_overrides)
+    if (set.assignment.rfind("variables.frame=", 0) == 0) throw InputError(set.flag + ": --frames sets the frame");
+  for (long frame : range.frames()) {
+    RenderCommandOptions one = o;
+    one.output = numbered_output(o.output, frame);
+    one.stats_json = numbered_output(o.stats_json, frame);
+    one.frame = frame;
+    if (o.skip_existing && std::filesystem::exists(one.output)) {
+      log.info("frame " + std::to_string(frame) + " skipped: " + one.output + " exists (--skip-existing)");
+      continue;
+    }
+    one.scene_overrides.push_back({"variables.frame=" + std::to_string(frame), "--frames (frame " + std::to_string(frame) + ")"});
+    const int code = run_render(one);
+    if (code != kExitOk) return code;
+  }
   return kExitOk;
 }
 
@@ -282,26 +324,44 @@ int run_render(const RenderCommandOptions& o) {
 void add_render_command(CLI::App& app, Action& action) {
   auto o = std::make_shared<RenderCommandOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene file to an image");
-  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
-  cmd->add_option("-o,--output", o->output, "Output image; format from the extension (.exr .png .jpg .tif)")
-      ->required();
+  cmd->add_option("scene", o->scene, "Scene file (YAML or glTF), or '-' for a YAML scene on standard input")->required();
+  cmd->footer("Scene values: the file, then --set, -D, --spp, --size, --seed and --max-depth in the order typed (the "
+              "last to set a key wins); every value is checked by the scene file's own rules.");
+  cmd->add_option("-o,--output", o->output, kOutputFormatsHelp)->required();
+  cmd->add_option("--format", o->format, "Image format for -o - (standard output): exr, png, tif, hdr, ...");
+  cmd->add_option("--exposure", o->exposure,
+                  "Scale the rendered colour by 2^STOPS, in every format (before the view transform for display "
+                  "formats; not the AOVs)");
   cmd->add_option("--backend", o->backend, "Ray tracing backend: embree or native")
       ->check(CLI::IsMember({"native", "embree"}))
       ->capture_default_str();
-  cmd->add_option("--spp", o->spp, "Samples per pixel, a perfect square (1, 4, 16, 64, ...)");
+  cmd->add_option("--spp", o->spp,
+                  "Samples per pixel, 1 to 65536, stratified over the most nearly square grid (48: 8x6)");
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
   cmd->add_option("--threads", o->threads, "Worker threads (0: all cores)");
   cmd->add_option("--seed", o->seed, "Seed of the pixel sampler");
   cmd->add_option("--max-depth", o->max_depth, "Maximum number of mirror bounces");
-  cmd->add_option("--set", o->overrides, "Override a scene value, e.g. --set render.spp=64 (repeatable)");
+  add_scene_override_options(*cmd, o->overrides, o->defines);
+  cmd->add_option("--display-server", o->display_server,
+                  "Stream tiles as they finish to the tev image viewer listening at HOST:PORT (tev's default: "
+                  "127.0.0.1:14158); the render goes on if it is absent or goes away");
+  cmd->add_option("--frames", o->frames,
+                  "Render frames FIRST-LAST[:STEP] (e.g. 1-240:2), each to -o with its '####' replaced by the "
+                  "zero-padded frame number; the scene variable 'frame' follows (keyframed values, $frame)");
+  cmd->add_flag("--skip-existing", o->skip_existing, "Skip frames (or the single output) whose file already exists");
   cmd->add_option("--region", o->region, "Render only pixels x0,y0,x1,y1 (x1, y1 exclusive)");
   cmd->add_flag("--crop", o->crop, "With --region: write only the region instead of a full-size image");
-  cmd->add_option("--aov", o->aovs, "Extra EXR layers: albedo,normal,depth,object-id")->delimiter(',');
+  cmd->add_option("--aov", o->aovs, "Extra EXR layers: albedo,normal,depth,object-id (EXR outputs only)")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--tile-size", o->tile_size, "Tile edge in pixels")->capture_default_str();
   cmd->add_option("--ocio-config", o->ocio_config, "OpenColorIO config (default: $OCIO, else bundled)");
-  cmd->add_option("--display", o->display, "OCIO display for 8-bit outputs (default: the config's)");
-  cmd->add_option("--view", o->view, "OCIO view for 8-bit outputs (default: the display's)");
-  cmd->add_option("--progress", o->progress, "Progress on stderr: never, auto (bar on a terminal) or always")
+  cmd->add_option("--ocio-display", o->display, "OCIO display for display-referred outputs (default: the config's)");
+  cmd->add_option("--display", o->deprecated_display, "Deprecated spelling of --ocio-display")->group("");
+  cmd->add_option("--view", o->view, "OCIO view for display-referred outputs (default: the display's)");
+  cmd->add_option("--progress", o->progress, "Progress on stderr: never, auto (bar on a terminal), always, or json (one object a line, kept with -q)")
+      ->type_name("TEXT:{never,auto,always,json}")
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "Print only errors");
   cmd->add_flag("-v,--verbose", o->verbose, "Print more detail");
@@ -312,7 +372,10 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("--max-memory", o->max_memory_mb,
                   "Memory budget in MiB for the whole render, checked against an up-front estimate and given to "
                   "Embree as its limit (0: no limit; default: the smaller of 4096 and the available memory)");
-  cmd->callback([o, &action] { action = [o] { return run_render(*o); }; });
+  cmd->callback([o, cmd, &action] {
+    o->scene_overrides = command_line_overrides(*cmd);
+    action = [o] { return run_renders(*o); };
+  });
 }
 
 }  // namespace rtpro::cli

@@ -35,6 +35,7 @@ void ImageTileSink::put(TileResult&& tile) {
     std::copy(from, from + row_floats, &image_.at(tile.region.x0, y, 0));
   }
   stats_[tile.index] = {true, tile.rays, tile.nan_samples};
+  if (on_tile_pixels) on_tile_pixels(tile.region);
   const std::size_t done = done_.fetch_add(1) + 1;
   if (on_tile_done) on_tile_done(done);
 }
@@ -80,6 +81,8 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
   ImageTileSink sink(result.image, grid.count());
   if (options.on_tile_done)
     sink.on_tile_done = [&](std::size_t done) { options.on_tile_done(done, grid.count()); };
+  if (options.on_tile_pixels)
+    sink.on_tile_pixels = [&](const PixelRegion& region) { options.on_tile_pixels(result.image, region); };
   render_tiles(renderer, grid, source, sink);
 
   result.tiles_done = sink.tiles_done();

@@ -8,10 +8,12 @@
 
 namespace rtpro {
 
-int perfect_square_root(int spp) {
-  if (spp <= 0) return 0;
-  const int n = static_cast<int>(std::lround(std::sqrt(static_cast<double>(spp))));
-  return n * n == spp ? n : 0;
+StrataGrid strata_grid(int spp) {
+  if (spp <= 0) return {0, 0};
+  int rows = static_cast<int>(std::sqrt(static_cast<double>(spp)));
+  while (rows * rows > spp) --rows;
+  while (spp % rows != 0) --rows;
+  return {spp / rows, rows};
 }
 
 std::uint32_t permutation_element(std::uint32_t index, std::uint32_t count, std::uint32_t key) {
@@ -48,9 +50,10 @@ std::uint32_t permutation_element(std::uint32_t index, std::uint32_t count, std:
   return (i + key) % count;
 }
 
-StratifiedSampler::StratifiedSampler(int spp, std::uint64_t seed) : strata_(perfect_square_root(spp)), seed_(seed) {
-  if (strata_ == 0) throw InputError("samples per pixel must be a perfect square n×n, got " + std::to_string(spp));
-  inv_strata_ = 1.0f / static_cast<float>(strata_);
+StratifiedSampler::StratifiedSampler(int spp, std::uint64_t seed) : grid_(strata_grid(spp)), seed_(seed) {
+  if (spp <= 0) throw InputError("samples per pixel must be at least 1, got " + std::to_string(spp));
+  inv_columns_ = 1.0f / static_cast<float>(grid_.columns);
+  inv_rows_ = 1.0f / static_cast<float>(grid_.rows);
 }
 
 std::uint64_t StratifiedSampler::sample_bits(std::uint64_t pixel_key, int sample_index) const {
@@ -61,16 +64,16 @@ PixelOffset StratifiedSampler::pixel_offset(std::uint64_t pixel_key, int sample_
   const std::uint64_t bits = sample_bits(pixel_key, sample_index);
   const float jitter_x = to_unit_float(bits);
   const float jitter_y = to_unit_float(bits << 24);
-  const int sx = sample_index % strata_;
-  const int sy = sample_index / strata_;
+  const int sx = sample_index % grid_.columns;
+  const int sy = sample_index / grid_.columns;
   // (s + jitter) / n stays below 1 because jitter <= 1 − 2⁻²⁴.
-  return {(static_cast<float>(sx) + jitter_x) * inv_strata_, (static_cast<float>(sy) + jitter_y) * inv_strata_};
+  return {(static_cast<float>(sx) + jitter_x) * inv_columns_, (static_cast<float>(sy) + jitter_y) * inv_rows_};
 }
 
 StratifiedSampler::PermutedSample StratifiedSampler::permuted(std::uint64_t pixel_key, int sample_index,
                                                                int dimension) const {
   const std::uint64_t pixel_dimension = hash_combine(hash_combine(seed_, pixel_key), 0x5eed0000ull + dimension);
-  const auto count = static_cast<std::uint32_t>(strata_ * strata_);
+  const auto count = static_cast<std::uint32_t>(grid_.columns * grid_.rows);
   return {pixel_dimension, count,
           permutation_element(static_cast<std::uint32_t>(sample_index), count,
                               static_cast<std::uint32_t>(pixel_dimension))};
@@ -81,9 +84,9 @@ Sample2D StratifiedSampler::sample_2d(std::uint64_t pixel_key, int sample_index,
   const std::uint64_t bits = hash_combine(pixel_dimension, static_cast<std::uint64_t>(sample_index));
   const float jitter_x = to_unit_float(bits);
   const float jitter_y = to_unit_float(bits << 24);
-  const auto sx = static_cast<int>(stratum % static_cast<std::uint32_t>(strata_));
-  const auto sy = static_cast<int>(stratum / static_cast<std::uint32_t>(strata_));
-  return {(static_cast<float>(sx) + jitter_x) * inv_strata_, (static_cast<float>(sy) + jitter_y) * inv_strata_};
+  const auto sx = static_cast<int>(stratum % static_cast<std::uint32_t>(grid_.columns));
+  const auto sy = static_cast<int>(stratum / static_cast<std::uint32_t>(grid_.columns));
+  return {(static_cast<float>(sx) + jitter_x) * inv_columns_, (static_cast<float>(sy) + jitter_y) * inv_rows_};
 }
 
 float StratifiedSampler::sample_1d(std::uint64_t pixel_key, int sample_index, int dimension) const {

@@ -100,15 +100,7 @@ CameraDesc read_camera(const YamlNode& node) {
 int read_spp(const YamlNode& node) {
   const std::int64_t spp = read_integer(node, "render.spp");
   if (spp < 1 || spp > kMaxSpp)
-    fail_at(node, "render.spp must be from 1 to " + std::to_string(kMaxSpp) + " (256x256), got " + node.scalar);
-  const auto root = static_cast<std::int64_t>(std::sqrt(static_cast<double>(spp)));
-  if (root * root != spp) {
-    const std::int64_t above = root + 1;
-    fail_at(node, "render.spp must be a perfect square n x n (1, 4, 9, 16, 25, ...) for stratified sampling, got " +
-                      node.scalar + "; the nearest are " + std::to_string(root * root) + " (" + std::to_string(root) +
-                      "x" + std::to_string(root) + ") and " + std::to_string(above * above) + " (" +
-                      std::to_string(above) + "x" + std::to_string(above) + ")");
-  }
+    fail_at(node, "render.spp must be from 1 to " + std::to_string(kMaxSpp) + ", got " + node.scalar);
   return static_cast<int>(spp);
 }
 
@@ -294,9 +286,10 @@ SceneDescription parse_scene_file(const std::filesystem::path& file, const std::
 
 SceneDescription parse_scene_text(std::string_view text, const std::filesystem::path& file,
                                   const std::vector<std::string>& overrides) {
-  YamlDocument document = YamlDocument::parse(text, file.string());
+  YamlDocument document = YamlDocument::parse(text, file.string(), read_scene_file_text);
   check_scene_root(document.root());
   for (const std::string& override_text : overrides) document.apply_override(override_text);
+  document.resolve_variables();
   return read_scene(document.root(), file);
 }
 

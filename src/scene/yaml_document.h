@@ -8,6 +8,8 @@
 
 #include <cstddef>
 #include <deque>
+#include <filesystem>
+#include <functional>
 #include <memory>
 #include <memory_resource>
 #include <string>
@@ -83,12 +85,27 @@ struct YamlNode {
   std::string describe() const;
 };
 
+// Reads the text of an included file with the same checks as the scene file itself.
+using YamlFileReader = std::function<std::string(const std::filesystem::path&)>;
+// Deeper chains of includes are refused (a chain that long is a mistake, or a cycle in disguise).
+inline constexpr int kMaxIncludeDepth = 16;
+
+// The path that identifies a file in an include chain (symbolic links and `..` resolved).
+std::filesystem::path include_identity(const std::filesystem::path& file);
+
 class YamlDocument {
  public:
   // Throws InputError at the offending position for syntax errors, duplicate keys, non-scalar
   // keys, explicit tags, nesting deeper than kMaxYamlNesting, lines longer than
   // kMaxYamlLineBytes, and more than one document. An empty text gives a null root.
-  static YamlDocument parse(std::string_view text, const std::string& source_name);
+  //
+  // With `read_include`, `include: FILE` (or a list of files) is expanded, FILE relative to the
+  // file that names it (yaml_include.cpp): in a mapping, the included mapping's keys are merged
+  // in, the including mapping's own keys winning; a list item that is only `{include: FILE}` is
+  // replaced by the file's items (a list) or by the file's mapping. Cycles and chains deeper than
+  // kMaxIncludeDepth are refused at the include; errors inside an included file name that file.
+  static YamlDocument parse(std::string_view text, const std::string& source_name,
+                            const YamlFileReader& read_include = {});
 
   YamlDocument(YamlDocument&&) = default;
   YamlDocument& operator=(YamlDocument&&) = default;
@@ -100,13 +117,29 @@ class YamlDocument {
   // override, so later errors about them name it.
   void apply_override(const std::string& override_text);
 
+  // Removes the root's `variables:` mapping (defaults, which -D overrides as variables.NAME) and
+  // substitutes its values (yaml_variables.cpp): a scalar that is just `$name` or `${name}` becomes
+  // the variable's value (a number, a list, a mapping); inside longer text `${name}` or `$name`
+  // is replaced by a scalar variable's text; `$$` is a literal `$`. An undefined name is an
+  // error at its use, with the nearest defined name suggested. Call after the overrides.
+  void resolve_variables();
+
   const YamlNode& root() const { return *root_; }
 
  private:
   YamlDocument() = default;
+  static YamlDocument parse_included(std::string_view text, const std::string& source_name,
+                                     const YamlFileReader& read_include, std::vector<std::filesystem::path>& chain);
+  YamlNodePtr expand_includes(const YamlNodePtr& node, const YamlFileReader& read_include,
+                              std::vector<std::filesystem::path>& chain);
+  YamlNodePtr load_include(const YamlNode& file_name, const YamlFileReader& read_include,
+                           std::vector<std::filesystem::path>& chain);
 
   std::deque<std::string> sources_;  // stable addresses for YamlPosition::source
+  std::vector<std::unique_ptr<YamlDocument>> includes_;  // keep the included files' sources
   YamlNodePtr root_;
+  bool has_includes_ = false;   // an `include` key was read: expansion walks the tree
+  bool has_variables_ = false;  // a `$`, `variables` or `keyframes` was read: substitution walks it
 };
 
 }  // namespace rtpro

@@ -1,8 +1,12 @@
 #include "yaml_reader.h"
 
+#include "rtpro/core/closest_match.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 namespace rtpro {
@@ -12,25 +16,6 @@ void fail_at(const YamlPosition& at, const std::string& message) { throw InputEr
 void fail_at(const YamlNode& node, const std::string& message) { fail_at(node.at, message); }
 
 namespace {
-
-char lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
-
-// Optimal string alignment distance: insertions, deletions, substitutions and adjacent swaps
-// ("resolutoin") each cost one; case is ignored.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
-  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
-  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t cost = lower(a[i - 1]) == lower(b[j - 1]) ? 0 : 1;
-      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-      if (i > 1 && j > 1 && lower(a[i - 1]) == lower(b[j - 2]) && lower(a[i - 2]) == lower(b[j - 1]))
-        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-    }
-  }
-  return d[a.size()][b.size()];
-}
 
 bool is_yaml_special_float(std::string_view text) {
   if (!text.empty() && (text[0] == '+' || text[0] == '-')) text.remove_prefix(1);
@@ -62,30 +47,6 @@ Integer parse_integer(const YamlNode& node, const std::string& name, std::string
 }
 
 }  // namespace
-
-std::optional<std::string> closest_match(std::string_view word, const std::vector<std::string>& candidates) {
-  const std::size_t tolerance = std::max<std::size_t>(1, word.size() / 3);
-  std::optional<std::string> best;
-  std::size_t best_distance = tolerance + 1;
-  for (const std::string& candidate : candidates) {
-    const std::size_t distance = edit_distance(word, candidate);
-    if (distance < best_distance) {
-      best_distance = distance;
-      best = candidate;
-    }
-  }
-  return best;
-}
-
-std::string suggestion(std::string_view word, const std::vector<std::string>& candidates) {
-  if (const auto near = closest_match(word, candidates)) return "; did you mean '" + *near + "'?";
-  if (candidates.empty()) return "";
-  constexpr std::size_t kListed = 12;
-  std::string text = "; expected one of: ";
-  for (std::size_t i = 0; i < std::min(kListed, candidates.size()); ++i) text += (i ? ", " : "") + candidates[i];
-  if (candidates.size() > kListed) text += ", ... (" + std::to_string(candidates.size()) + " in all)";
-  return text;
-}
 
 MappingReader::MappingReader(const YamlNode& node, std::string what, std::vector<std::string> keys)
     : node_(node), what_(std::move(what)) {
@@ -160,6 +121,38 @@ Vec3 read_vec3(const YamlNode& node, const std::string& name) {
               static_cast<float>(read_number(*items[2], name)));
 }
 
+namespace {
+
+bool is_whole_number_text(const std::string& text) {
+  return !text.empty() && text.find_first_not_of("+0123456789") == std::string::npos;
+}
+
+// [255, 128, 0] is an 8-bit colour picker's value, not a linear colour 255 times "full": a
+// material would reflect 255 times the light it receives. Whole numbers above 1, all at most
+// 255, are refused with the linear value; HDR colours are written with a decimal point, and a
+// brighter light raises its intensity.
+void reject_8bit_color(const YamlNode& node, const YamlNodeList& items, const std::string& name) {
+  double largest = 0.0;
+  for (const YamlNodePtr& item : items) {
+    if (!is_whole_number_text(item->scalar)) return;
+    largest = std::max(largest, std::strtod(item->scalar.c_str(), nullptr));
+  }
+  if (largest <= 1.0 || largest > 255.0) return;
+  std::string linear;
+  for (const YamlNodePtr& item : items) {
+    char text[32];
+    const double encoded = std::strtod(item->scalar.c_str(), nullptr) / 255.0;
+    const double decoded = encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
+    std::snprintf(text, sizeof text, "%.3g", decoded);
+    linear += (linear.empty() ? "" : ", ") + std::string(text);
+  }
+  fail_at(node, name + ": [" + items[0]->scalar + ", " + items[1]->scalar + ", " + items[2]->scalar +
+                    "] looks like 8-bit sRGB values; colours are linear with 1 as full: that colour is [" + linear +
+                    "] (for a brighter light raise its intensity; write 2.0 for a deliberate value above 1)");
+}
+
+}  // namespace
+
 Color read_color(const YamlNode& node, const std::string& name) {
   const auto& items = read_list(node, name, 3, "a colour [r, g, b]");
   Color color;
@@ -168,6 +161,7 @@ Color read_color(const YamlNode& node, const std::string& name) {
     if (component < 0.0) fail_at(*items[i], name + ": colour components must be >= 0, got " + items[i]->scalar);
     color[i] = static_cast<float>(component);
   }
+  reject_8bit_color(node, items, name);
   return color;
 }
 

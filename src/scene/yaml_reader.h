@@ -1,6 +1,7 @@
 #pragma once
 // Typed, validated reads from a YamlDocument. Every failure is an InputError at the offending
 // node that names the field ("camera.fov: expected a number, got 'wide'").
+#include "rtpro/core/closest_match.h"
 #include "rtpro/core/vec3.h"
 #include "yaml_document.h"
 
@@ -19,10 +20,6 @@ inline constexpr double kMaxSceneNumber = 1e9;
 [[noreturn]] void fail_at(const YamlPosition& at, const std::string& message);
 [[noreturn]] void fail_at(const YamlNode& node, const std::string& message);
 
-// The candidate nearest to `word` by edit distance, if near enough to be a likely typo.
-std::optional<std::string> closest_match(std::string_view word, const std::vector<std::string>& candidates);
-// "; did you mean 'radius'?", or "; expected one of: a, b, c" when nothing is near.
-std::string suggestion(std::string_view word, const std::vector<std::string>& candidates);
 
 // A mapping with a fixed set of keys; constructing it rejects any other key.
 class MappingReader {

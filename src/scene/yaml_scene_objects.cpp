@@ -223,7 +223,10 @@ class ObjectsReader {
 
   std::filesystem::path resolve_mesh_file(const YamlNode& node, const std::string& field) const {
     const std::string written = read_string(node, field);
-    const std::filesystem::path file = (folder_ / written).lexically_normal();
+    // Relative to the file that wrote it: an included file's meshes sit beside it.
+    const std::filesystem::path folder =
+        node.at.line > 0 ? std::filesystem::path(*node.at.source).parent_path() : folder_;
+    const std::filesystem::path file = (folder / written).lexically_normal();
     std::string extension = file.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });

@@ -147,8 +147,8 @@ TEST(RenderCommand, BadInputsFailCleanlyAndLeaveNoFile) {
   const auto scene = test::write_file("scene.yaml", kSmallScene);
   EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o " + (dir / "x.unknownformat").string()), &out), 2);
   EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o /nonexistent-folder/x.png"), &out), 1) << out;
-  EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o " + target.string() + " --spp 10"), &out), 2);
-  EXPECT_NE(out.find("--spp 10: render.spp must be a perfect square"), std::string::npos) << out;
+  EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o " + target.string() + " --spp 0"), &out), 2);
+  EXPECT_NE(out.find("--spp 0: render.spp must be from 1 to 65536"), std::string::npos) << out;
   EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o " + target.string() + " --no-such-flag"), &out), 2);
   EXPECT_FALSE(std::filesystem::exists(target));
 }

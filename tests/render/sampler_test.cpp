@@ -40,11 +40,49 @@ TEST(StratifiedSampler, IsAPureFunctionOfSeedPixelAndIndex) {
   EXPECT_NE(a.pixel_offset(99, 0).x, a.pixel_offset(100, 0).x);
 }
 
-TEST(StratifiedSampler, RejectsSampleCountsThatAreNotSquares) {
-  EXPECT_THROW(StratifiedSampler(10, 0), InputError);
+TEST(StratifiedSampler, RejectsCountsBelowOne) {
   EXPECT_THROW(StratifiedSampler(0, 0), InputError);
-  EXPECT_EQ(perfect_square_root(64), 8);
-  EXPECT_EQ(perfect_square_root(63), 0);
+  EXPECT_THROW(StratifiedSampler(-4, 0), InputError);
+}
+
+TEST(StrataGrid, IsTheMostNearlySquareFactorisation) {
+  const std::pair<int, int> expected[] = {{1, 1}, {2, 1}, {3, 1}, {2, 2}, {5, 1}, {3, 2}, {7, 1}, {4, 2}, {3, 3}};
+  for (int spp = 1; spp <= 9; ++spp) {
+    EXPECT_EQ(strata_grid(spp).columns, expected[spp - 1].first) << spp;
+    EXPECT_EQ(strata_grid(spp).rows, expected[spp - 1].second) << spp;
+  }
+  EXPECT_EQ(strata_grid(48).columns, 8);
+  EXPECT_EQ(strata_grid(48).rows, 6);
+  EXPECT_EQ(strata_grid(65536).columns, 256);
+  for (int spp = 1; spp <= 2000; ++spp) {
+    const StrataGrid grid = strata_grid(spp);
+    ASSERT_EQ(grid.columns * grid.rows, spp);
+    ASSERT_LE(grid.rows, grid.columns);
+    for (int rows = grid.rows + 1; rows * rows <= spp; ++rows) ASSERT_NE(spp % rows, 0) << spp;
+  }
+}
+
+// Any count: every sample in its own cell of the columns×rows grid, for pixel offsets and for
+// later dimensions alike.
+TEST(StratifiedSampler, NonSquareCountsFillEveryCellOfTheirGrid) {
+  for (int spp : {2, 3, 5, 6, 10, 12, 48}) {
+    const StratifiedSampler sampler(spp, 11);
+    const StrataGrid grid = sampler.grid();
+    EXPECT_EQ(sampler.samples_per_pixel(), spp);
+    std::set<std::pair<int, int>> pixel_cells, lens_cells;
+    for (int s = 0; s < spp; ++s) {
+      const PixelOffset o = sampler.pixel_offset(5, s);
+      const Sample2D u = sampler.sample_2d(5, s, 2);
+      for (float v : {o.x, o.y, u.x, u.y}) {
+        ASSERT_GE(v, 0.0f);
+        ASSERT_LT(v, 1.0f);
+      }
+      pixel_cells.insert({static_cast<int>(o.x * grid.columns), static_cast<int>(o.y * grid.rows)});
+      lens_cells.insert({static_cast<int>(u.x * grid.columns), static_cast<int>(u.y * grid.rows)});
+    }
+    EXPECT_EQ(pixel_cells.size(), static_cast<std::size_t>(spp)) << spp;
+    EXPECT_EQ(lens_cells.size(), static_cast<std::size_t>(spp)) << spp;
+  }
 }
 
 TEST(PermutationElement, IsABijectionForEveryCountAndKey) {

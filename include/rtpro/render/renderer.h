@@ -32,6 +32,8 @@ class ImageTileSink final : public TileSink {
 
   // Called after each tile lands (from worker threads) with tiles done so far.
   std::function<void(std::size_t)> on_tile_done;
+  // Called after each tile's pixels are in the image, before on_tile_done, with its region.
+  std::function<void(const PixelRegion&)> on_tile_pixels;
 
   std::size_t tiles_done() const;
   RayCounts rays() const;
@@ -55,6 +57,9 @@ struct RenderOptions {
   const std::atomic<bool>* cancel = nullptr;  // checked before each tile starts
   // Called after each finished tile (from worker threads) with tiles done and total.
   std::function<void(std::size_t, std::size_t)> on_tile_done;
+  // Called after each finished tile (from worker threads) with the image being rendered and the
+  // tile's region, whose pixels are final there: live previews read them.
+  std::function<void(const Image&, const PixelRegion&)> on_tile_pixels;
 };
 
 struct RenderResult {

@@ -3,9 +3,10 @@
 // (seed, pixel, sample index, dimension), so images never depend on threads, tiles, regions,
 // ranks or resumes. Dimensions come in 2D pairs (render/sample_dimensions.h says who uses which).
 //
-// Stratified: the n×n samples of a pixel (spp = n²) fall one per stratum of the pixel, in sample
-// order (sample s takes stratum (s mod n, s div n)). Every later dimension pair is stratified over
-// the same n×n grid, but visits its strata in an order of its own — a pseudo-random permutation
+// Stratified: the spp samples of a pixel fall one per stratum of a columns×rows grid over the
+// pixel (strata_grid: n×n for a square count, else the most nearly square factorisation, 8×6 for
+// 48, down to 7×1 for a prime), in sample order (sample s takes stratum (s mod columns,
+// s div columns)). Every later dimension pair is stratified over the same grid, but visits its strata in an order of its own — a pseudo-random permutation
 // per pixel and dimension — so that, e.g., the lens position is not correlated with the position
 // in the pixel (pbrt's padded stratified sampling).
 #include <cstdint>
@@ -17,13 +18,20 @@ struct Sample2D {
 };
 using PixelOffset = Sample2D;
 
+// The strata of spp samples: columns × rows == spp, rows the largest divisor of spp that is at
+// most √spp (so a square count keeps its n×n grid). {0, 0} for spp <= 0.
+struct StrataGrid {
+  int columns, rows;
+};
+StrataGrid strata_grid(int spp);
+
 class StratifiedSampler {
  public:
-  // spp must be a perfect square n×n.
+  // spp >= 1.
   StratifiedSampler(int spp, std::uint64_t seed);
 
-  int samples_per_pixel() const { return strata_ * strata_; }
-  int strata_per_axis() const { return strata_; }
+  int samples_per_pixel() const { return grid_.columns * grid_.rows; }
+  StrataGrid grid() const { return grid_; }
 
   // `pixel_key` identifies the pixel in the full image (y·width + x). Dimensions 0–1.
   PixelOffset pixel_offset(std::uint64_t pixel_key, int sample_index) const;
@@ -45,13 +53,10 @@ class StratifiedSampler {
   PermutedSample permuted(std::uint64_t pixel_key, int sample_index, int dimension) const;
   std::uint64_t sample_bits(std::uint64_t pixel_key, int sample_index) const;
 
-  int strata_;
-  float inv_strata_;
+  StrataGrid grid_;
+  float inv_columns_, inv_rows_;
   std::uint64_t seed_;
 };
-
-// n when spp == n·n, else 0.
-int perfect_square_root(int spp);
 
 // Element `index` of a pseudo-random permutation of [0, count) chosen by `key` (Kensler's
 // hash-based cycle walking): a bijection for every key, computed without storing the permutation.

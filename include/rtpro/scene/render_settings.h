@@ -8,7 +8,7 @@
 namespace rtpro {
 
 struct RenderSettings {
-  int spp = 16;        // samples per pixel; a perfect square n×n (stratified)
+  int spp = 16;        // samples per pixel, 1..65536 (stratified over the most nearly square grid)
   int max_depth = 5;   // mirror bounces after the camera ray
   std::uint64_t seed = 0;
   float ambient = 0.2f;

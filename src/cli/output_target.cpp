@@ -1,0 +1,95 @@
+#include "output_target.h"
+
+#include "rtpro/core/error.h"
+
+#include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+
+namespace rtpro::cli {
+
+const char* const kOutputFormatsHelp =
+    "Output image, or '-' for standard output with --format. The extension picks the format and its "
+    "encoding: .exr (.sxr .mxr) 32-bit float, scene-linear, the only format with --aov layers; .hdr .rgbe "
+    ".pfm float, scene-linear, RGB only; .tif .tiff 16-bit, display-referred (the OCIO view, no clamp "
+    "below 1); .png .jpg and every other OpenImageIO format 8-bit, display-referred (OCIO view, clamped)";
+
+namespace {
+
+std::string lowercase(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+std::string without_dot(const std::string& format) { return !format.empty() && format[0] == '.' ? format.substr(1) : format; }
+
+std::filesystem::path temporary_output(const std::string& format) {
+  const char* folder = std::getenv("TMPDIR");
+  std::filesystem::path base = folder && *folder ? folder : "/tmp";
+  return base / ("rtpro-stdout-" + std::to_string(::getpid()) + "." + format);
+}
+
+}  // namespace
+
+OutputTarget::OutputTarget(const std::string& output, const std::string& format) {
+  const std::string wanted = lowercase(without_dot(format));
+  if (output == "-") {
+    if (wanted.empty()) throw InputError("-o - writes to standard output and needs --format, e.g. --format exr");
+    if (::isatty(STDOUT_FILENO) == 1)
+      throw InputError("-o - would write binary image data to the terminal; redirect standard output to a file or pipe");
+    to_stdout_ = true;
+    file_ = temporary_output(wanted);
+    return;
+  }
+  file_ = output;
+  const std::string extension = lowercase(without_dot(file_.extension().string()));
+  if (!wanted.empty() && wanted != extension)
+    throw InputError("--format " + format + " contradicts -o " + output +
+                     ": a file's format comes from its extension (--format is for -o -)");
+}
+
+OutputTarget::~OutputTarget() {
+  if (!to_stdout_) return;
+  std::error_code ignored;
+  std::filesystem::remove(file_, ignored);
+}
+
+std::string OutputTarget::name() const { return to_stdout_ ? "standard output" : file_.string(); }
+
+void OutputTarget::deliver() const {
+  if (!to_stdout_) return;
+  std::ifstream in(file_, std::ios::binary);
+  if (!in) throw RuntimeError("cannot read back the image for standard output: " + file_.string());
+  char chunk[65536];
+  while (in) {
+    in.read(chunk, sizeof chunk);
+    const std::size_t got = static_cast<std::size_t>(in.gcount());
+    if (got > 0 && std::fwrite(chunk, 1, got, stdout) != got)
+      throw RuntimeError(std::string("cannot write the image to standard output: ") + std::strerror(errno));
+  }
+  if (std::fflush(stdout) != 0)
+    throw RuntimeError(std::string("cannot write the image to standard output: ") + std::strerror(errno));
+}
+
+void check_exposure(double stops) {
+  if (!(std::fabs(stops) <= 64.0)) throw InputError("--exposure must be a number of stops from -64 to 64");
+}
+
+void apply_exposure(Image& image, double stops) {
+  check_exposure(stops);
+  if (stops == 0.0) return;
+  const auto scale = static_cast<float>(std::exp2(stops));
+  for (int c = 0; c < image.channel_count(); ++c) {
+    const std::string& name = image.channels[static_cast<std::size_t>(c)];
+    if (name != "R" && name != "G" && name != "B") continue;
+    for (std::size_t i = static_cast<std::size_t>(c); i < image.data.size(); i += image.channels.size()) image.data[i] *= scale;
+  }
+}
+
+}  // namespace rtpro::cli

@@ -1,0 +1,41 @@
+#pragma once
+// Where `rtpro render` writes its image: a file named by -o (the extension picks the format), or
+// standard output for `-o -` (the format from --format), and what --exposure does to it.
+#include "rtpro/image/image.h"
+
+#include <filesystem>
+#include <string>
+
+namespace rtpro::cli {
+
+// --help text: each format and how its pixels are encoded.
+extern const char* const kOutputFormatsHelp;
+
+class OutputTarget {
+ public:
+  // Throws InputError for `-o -` without --format, or a --format that contradicts the extension.
+  OutputTarget(const std::string& output, const std::string& format);
+  OutputTarget(const OutputTarget&) = delete;
+  OutputTarget& operator=(const OutputTarget&) = delete;
+  ~OutputTarget();  // removes the temporary file of a stdout target
+
+  // What the image writer writes: the -o file, or a temporary file with the format's extension.
+  const std::filesystem::path& file() const { return file_; }
+  bool to_stdout() const { return to_stdout_; }
+  // For a stdout target, copies the written file to standard output; otherwise nothing.
+  void deliver() const;
+  // How messages name the target: the file, or "standard output".
+  std::string name() const;
+
+ private:
+  std::filesystem::path file_;
+  bool to_stdout_ = false;
+};
+
+// Throws InputError unless stops is within ±64 (a check before the render).
+void check_exposure(double stops);
+// --exposure: multiplies the colour channels (R, G, B; not the AOVs) by 2^stops. Throws
+// InputError unless stops is within ±64.
+void apply_exposure(Image& image, double stops);
+
+}  // namespace rtpro::cli

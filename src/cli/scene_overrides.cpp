@@ -1,0 +1,120 @@
+#include "scene_overrides.h"
+
+#include "rtpro/core/error.h"
+#include "rtpro/scene/scene_parser.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <map>
+#include <string_view>
+
+namespace rtpro::cli {
+
+namespace {
+
+// An optional sign and decimal digits: what the scene file's integer rules then judge (range,
+// sign) without any conversion in between that could wrap.
+bool is_integer_text(std::string_view text) {
+  if (!text.empty() && (text[0] == '+' || text[0] == '-')) text.remove_prefix(1);
+  return !text.empty() && text.find_first_not_of("0123456789") == std::string_view::npos;
+}
+
+SceneOverride integer_override(const std::string& key, const std::string& flag, const std::string& value) {
+  if (!is_integer_text(value)) throw InputError(flag + " '" + value + "': expected an integer");
+  return {key + "=" + value, flag + " " + value};
+}
+
+SceneOverride size_override(const std::string& value) {
+  const std::size_t x = value.find('x');
+  const std::string width = value.substr(0, x), height = x == std::string::npos ? "" : value.substr(x + 1);
+  if (!is_integer_text(width) || !is_integer_text(height))
+    throw InputError("--size '" + value + "': expected WIDTHxHEIGHT, e.g. 640x480");
+  return {"camera.resolution=[" + width + "," + height + "]", "--size " + value};
+}
+
+// -D NAME=VALUE is --set variables.NAME=VALUE: the scene's `variables:` hold the defaults.
+SceneOverride variable_override(const std::string& value) {
+  const std::size_t equals = value.find('=');
+  const std::string name = value.substr(0, equals);
+  const bool valid_name = !name.empty() && name.find_first_not_of("abcdefghijklmnopqrstuvwxyz"
+                                                                   "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") ==
+                                               std::string::npos;
+  if (equals == std::string::npos || !valid_name)
+    throw InputError("-D '" + value + "': expected NAME=VALUE with a name of letters, digits and '_', e.g. -D radius=2");
+  return {"variables." + value, "-D " + value};
+}
+
+SceneOverride override_of(const std::string& option_name, const std::string& value) {
+  if (option_name == "--set") return {value, "--set " + value};
+  if (option_name == "--define") return variable_override(value);
+  if (option_name == "--spp") return integer_override("render.spp", "--spp", value);
+  if (option_name == "--max-depth") return integer_override("render.max_depth", "--max-depth", value);
+  if (option_name == "--seed") return integer_override("render.seed", "--seed", value);
+  if (option_name == "--size") return size_override(value);
+  throw std::logic_error("not a scene override option: " + option_name);
+}
+
+bool is_override_option(const std::string& name) {
+  return name == "--set" || name == "--define" || name == "--spp" || name == "--max-depth" || name == "--seed" ||
+         name == "--size";
+}
+
+constexpr std::size_t kMaxStdinSceneBytes = std::size_t{256} << 20;
+
+std::string read_standard_input() {
+  std::string text;
+  char chunk[65536];
+  while (true) {
+    const ssize_t got = ::read(STDIN_FILENO, chunk, sizeof chunk);
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) throw InputError(SourceLocation{"<stdin>"}, std::string("cannot read the scene: ") + std::strerror(errno));
+    if (got == 0) return text;
+    if (text.size() + static_cast<std::size_t>(got) > kMaxStdinSceneBytes)
+      throw InputError(SourceLocation{"<stdin>"}, "the scene on standard input is larger than the limit of 256 MiB");
+    text.append(chunk, static_cast<std::size_t>(got));
+  }
+}
+
+}  // namespace
+
+std::vector<SceneOverride> command_line_overrides(const CLI::App& command) {
+  std::vector<SceneOverride> overrides;
+  std::map<const CLI::Option*, std::size_t> used;
+  for (const CLI::Option* option : command.parse_order()) {
+    const std::string name = option->get_name();
+    if (!is_override_option(name)) continue;
+    const std::size_t index = used[option]++;
+    if (index < option->results().size()) overrides.push_back(override_of(name, option->results()[index]));
+  }
+  return overrides;
+}
+
+void add_scene_override_options(CLI::App& command, std::vector<std::string>& sets, std::vector<std::string>& defines) {
+  // One value per occurrence: a list option would otherwise swallow the scene file after it.
+  const auto one_each = [](CLI::Option* option) {
+    option->allow_extra_args(false)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  };
+  one_each(command.add_option("--set", sets, "Override a scene value, e.g. --set camera.fov=30 (repeatable)"));
+  one_each(command.add_option("-D,--define", defines,
+                              "Set a scene variable, used as $NAME in the scene, e.g. -D radius=2 (repeatable)"));
+}
+
+SceneDescription parse_with_overrides(const std::string& scene, const std::vector<SceneOverride>& overrides) {
+  std::vector<std::string> assignments;
+  for (const SceneOverride& o : overrides) assignments.push_back(o.assignment);
+  try {
+    if (scene == "-") return parse_scene_text(read_standard_input(), "<stdin>", assignments);
+    return parse_scene_file(scene, assignments);
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    for (const SceneOverride& o : overrides) {
+      const std::string prefix = "--set " + o.assignment + ":";
+      if (message.rfind(prefix, 0) == 0) throw InputError(o.flag + ":" + message.substr(prefix.size()));
+    }
+    throw;
+  }
+}
+
+}  // namespace rtpro::cli

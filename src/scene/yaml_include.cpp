@@ -1,0 +1,119 @@
+// `include:` in YAML scenes: shared materials, lights or a base scene kept in files of their own.
+#include "yaml_document.h"
+
+#include "yaml_node_arena.h"
+
+#include <algorithm>
+
+namespace rtpro {
+
+namespace {
+
+bool is_include_only(const YamlNode& node) {
+  return node.is_mapping() && node.entries.size() == 1 && node.entries[0].key == "include";
+}
+
+// The file names of an `include:` value: one name or a list of names.
+std::vector<const YamlNode*> include_names(const YamlNode& value) {
+  if (value.is_scalar()) return {&value};
+  if (value.is_sequence() && !value.items.empty()) {
+    std::vector<const YamlNode*> names;
+    for (const YamlNodePtr& item : value.items) {
+      if (!item->is_scalar()) throw InputError(item->at.location(), "include: expected a file name, got " + item->describe());
+      names.push_back(item.get());
+    }
+    return names;
+  }
+  throw InputError(value.at.location(), "include: expected a file name or a list of file names, got " + value.describe());
+}
+
+std::string chain_text(const std::vector<std::filesystem::path>& chain, const std::filesystem::path& last) {
+  std::string text;
+  for (const auto& file : chain) text += file.filename().string() + " -> ";
+  return text + last.filename().string();
+}
+
+// `entries` with `added` merged in: an added key replaces an existing one in place.
+void merge_entries(YamlEntryList& entries, const YamlEntryList& added) {
+  for (const YamlEntry& entry : added) {
+    const auto same = std::find_if(entries.begin(), entries.end(), [&](const YamlEntry& e) { return e.key == entry.key; });
+    if (same == entries.end()) {
+      entries.push_back(entry);
+    } else {
+      *same = entry;
+    }
+  }
+}
+
+}  // namespace
+
+YamlNodePtr YamlDocument::load_include(const YamlNode& file_name, const YamlFileReader& read_include,
+                                       std::vector<std::filesystem::path>& chain) {
+  const SourceLocation where = file_name.at.location();
+  if (file_name.scalar.empty()) throw InputError(where, "include: the file name is empty");
+  const std::filesystem::path base = file_name.at.source ? std::filesystem::path(*file_name.at.source).parent_path()
+                                                         : std::filesystem::path();
+  const std::filesystem::path file = base / file_name.scalar;
+  const std::filesystem::path identity = include_identity(file);
+  if (std::find(chain.begin(), chain.end(), identity) != chain.end())
+    throw InputError(where, "include cycle: " + chain_text(chain, identity));
+  if (chain.size() >= static_cast<std::size_t>(kMaxIncludeDepth))
+    throw InputError(where, "includes nested deeper than " + std::to_string(kMaxIncludeDepth) + " files: " +
+                                chain_text(chain, identity));
+  std::string text;
+  try {
+    text = read_include(file);
+  } catch (const InputError& e) {
+    throw InputError(where, "cannot include '" + file_name.scalar + "' (" + file.string() + "): " + e.message());
+  }
+  auto included = std::make_unique<YamlDocument>(parse_included(text, file.string(), read_include, chain));
+  YamlNodePtr root = included->root_;
+  has_variables_ = has_variables_ || included->has_variables_;
+  includes_.push_back(std::move(included));
+  return root;
+}
+
+YamlNodePtr YamlDocument::expand_includes(const YamlNodePtr& node, const YamlFileReader& read_include,
+                                          std::vector<std::filesystem::path>& chain) {
+  if (node->is_sequence()) {
+    auto copy = std::make_shared<YamlNode>(*node);
+    copy->items.clear();
+    for (const YamlNodePtr& item : node->items) {
+      if (!is_include_only(*item)) {
+        copy->items.push_back(expand_includes(item, read_include, chain));
+        continue;
+      }
+      for (const YamlNode* name : include_names(*item->entries[0].value)) {
+        const YamlNodePtr included = load_include(*name, read_include, chain);
+        if (included->is_sequence()) {
+          copy->items.insert(copy->items.end(), included->items.begin(), included->items.end());
+        } else if (included->is_mapping()) {
+          copy->items.push_back(included);
+        } else if (!included->is_null()) {
+          throw InputError(name->at.location(), "include '" + name->scalar + "': a list item includes a list or a mapping, got " + included->describe());
+        }
+      }
+    }
+    return copy;
+  }
+  if (!node->is_mapping()) return node;
+  auto copy = std::make_shared<YamlNode>(*node);
+  copy->entries.clear();
+  const YamlEntry* include = node->find("include");
+  if (include) {
+    for (const YamlNode* name : include_names(*include->value)) {
+      const YamlNodePtr included = load_include(*name, read_include, chain);
+      if (included->is_null()) continue;
+      if (!included->is_mapping())
+        throw InputError(name->at.location(), "include '" + name->scalar + "': a mapping includes a mapping, got " + included->describe());
+      merge_entries(copy->entries, included->entries);
+    }
+  }
+  YamlEntryList own(copy->entries.get_allocator());
+  for (const YamlEntry& entry : node->entries)
+    if (&entry != include) own.push_back({entry.key, entry.key_at, expand_includes(entry.value, read_include, chain)});
+  merge_entries(copy->entries, own);
+  return copy;
+}
+
+}  // namespace rtpro

@@ -1,0 +1,173 @@
+// Scene variables: `variables:` at the top of a scene gives defaults, `-D name=value` on the
+// command line (an override of variables.name) replaces them, and `$name` uses them.
+#include "yaml_document.h"
+
+#include "rtpro/core/closest_match.h"
+#include "yaml_keyframes.h"
+
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace rtpro {
+
+namespace {
+
+bool is_name_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+bool is_name_char(char c) { return is_name_start(c) || (c >= '0' && c <= '9'); }
+
+class Substitution {
+ public:
+  explicit Substitution(const YamlNode& variables) {
+    if (!variables.is_mapping() && !variables.is_null())
+      throw InputError(variables.at.location(), "variables: expected a mapping of names to values, got " + variables.describe());
+    for (const YamlEntry& entry : variables.entries) {
+      if (entry.key.empty() || !is_name_start(entry.key[0]) ||
+          entry.key.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
+        throw InputError(entry.key_at.location(), "variables: '" + entry.key + "' is not a name (letters, digits and '_', not starting with a digit)");
+      values_[entry.key] = entry.value;
+      if (entry.key_at.line == 0 && entry.key_at.source) command_line_.push_back(&entry);
+    }
+  }
+
+  // A -D the scene never uses is most likely a misspelt name: refused, not ignored.
+  void check_command_line_variables_used() const {
+    for (const YamlEntry* entry : command_line_) {
+      // --frames sets `frame` for every frame, whether or not this scene is animated.
+      if (used_.count(entry->key) || entry->key == "frame") continue;
+      std::string message = "the scene uses no variable '$" + entry->key + "'";
+      if (const auto near = closest_match(entry->key, unused_candidates())) message += "; did you mean '" + *near + "'?";
+      throw InputError(entry->key_at.location(), message);
+    }
+  }
+
+  YamlNodePtr apply(const YamlNodePtr& node) const {
+    switch (node->kind) {
+      case YamlNode::Kind::null:
+        return node;
+      case YamlNode::Kind::scalar:
+        return node->scalar.find('$') == std::string::npos ? node : substitute(*node);
+      case YamlNode::Kind::sequence: {
+        auto copy = std::make_shared<YamlNode>(*node);
+        for (YamlNodePtr& item : copy->items) item = apply(item);
+        return copy;
+      }
+      case YamlNode::Kind::mapping: {
+        auto copy = std::make_shared<YamlNode>(*node);
+        for (YamlEntry& entry : copy->entries) entry.value = apply(entry.value);
+        if (is_keyframed(*copy)) return value_at_frame(*copy, frame());
+        return copy;
+      }
+    }
+    return node;
+  }
+
+ private:
+  // The variable named at text[i] (just past the '$'): its name and the length of the reference.
+  struct Reference {
+    std::string name;
+    std::size_t length = 0;  // after the '$'
+  };
+
+  static Reference reference_at(const YamlNode& node, std::size_t i) {
+    const std::string& text = node.scalar;
+    if (i < text.size() && text[i] == '{') {
+      const std::size_t close = text.find('}', i);
+      if (close == std::string::npos)
+        throw InputError(node.at.location(), "'${' without its closing '}' in " + node.describe());
+      return {text.substr(i + 1, close - i - 1), close - i + 1};
+    }
+    std::size_t end = i;
+    while (end < text.size() && is_name_char(text[end])) ++end;
+    if (end == i || !is_name_start(text[i]))
+      throw InputError(node.at.location(), "'$' must start a variable reference ($name or ${name}; '$$' for a '$') in " + node.describe());
+    return {text.substr(i, end - i), end - i};
+  }
+
+  const YamlNodePtr& lookup(const YamlNode& node, const std::string& name) const {
+    const auto found = values_.find(name);
+    if (found != values_.end()) {
+      used_.insert(name);
+      return found->second;
+    }
+    std::vector<std::string> names;
+    for (const auto& [defined, value] : values_) names.push_back(defined);
+    std::string message = "undefined variable '$" + name + "'";
+    if (const auto near = closest_match(name, names)) message += "; did you mean '$" + *near + "'?";
+    throw InputError(node.at.location(), message + " (define it with -D " + name + "=VALUE or under 'variables:')");
+  }
+
+  YamlNodePtr substitute(const YamlNode& node) const {
+    const std::string& text = node.scalar;
+    if (text[0] == '$' && text.size() > 1 && text[1] != '$') {
+      const Reference whole = reference_at(node, 1);
+      if (1 + whole.length == text.size()) return lookup(node, whole.name);
+    }
+    std::string result;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      if (text[i] != '$') {
+        result += text[i];
+      } else if (i + 1 < text.size() && text[i + 1] == '$') {
+        result += '$';
+        ++i;
+      } else {
+        const Reference part = reference_at(node, i + 1);
+        const YamlNodePtr& value = lookup(node, part.name);
+        if (!value->is_scalar())
+          throw InputError(node.at.location(), "'$" + part.name + "' is " + value->describe() +
+                                                   ", which cannot be part of a longer text; use it alone");
+        result += value->scalar;
+        i += part.length;
+      }
+    }
+    auto copy = std::make_shared<YamlNode>(node);
+    copy->scalar = std::move(result);
+    return copy;
+  }
+
+  // The frame being rendered: the variable `frame` (--frames sets it for each frame), else 1.
+  double frame() const {
+    const auto found = values_.find("frame");
+    if (found == values_.end()) return 1.0;
+    used_.insert("frame");
+    const YamlNode& value = *found->second;
+    double number = 0;
+    const auto [end, error] = std::from_chars(value.scalar.data(), value.scalar.data() + value.scalar.size(), number);
+    if (!value.is_scalar() || error != std::errc() || end != value.scalar.data() + value.scalar.size() ||
+        !std::isfinite(number))
+      throw InputError(value.at.location(), "frame: expected a frame number, got " + value.describe());
+    return number;
+  }
+
+  // Names the scene refers to but -D did not set: what a misspelt -D name was meant to be.
+  std::vector<std::string> unused_candidates() const {
+    std::vector<std::string> names;
+    for (const auto& [name, value] : values_)
+      if (used_.count(name) && value->at.line > 0) names.push_back(name);
+    return names;
+  }
+
+  std::map<std::string, YamlNodePtr> values_;
+  std::vector<const YamlEntry*> command_line_;
+  mutable std::set<std::string> used_;
+};
+
+}  // namespace
+
+void YamlDocument::resolve_variables() {
+  if (!has_variables_ || !root_->is_mapping()) return;
+  auto root = std::make_shared<YamlNode>(*root_);
+  auto variables = std::make_shared<YamlNode>();  // held: the substitution points into it
+  for (auto entry = root->entries.begin(); entry != root->entries.end(); ++entry) {
+    if (entry->key != "variables") continue;
+    variables = std::const_pointer_cast<YamlNode>(entry->value);
+    root->entries.erase(entry);
+    break;
+  }
+  const Substitution substitution(*variables);
+  root_ = substitution.apply(root);
+  substitution.check_command_line_variables_used();
+}
+
+}  // namespace rtpro

@@ -1,0 +1,129 @@
+// -o - with --format, --exposure, --progress json and the --ocio-display rename, through the
+// real binary (issue 14).
+#include "rtpro/image/image_io.h"
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+namespace rtpro {
+namespace {
+
+using test::run_command;
+
+const char* kScene = R"(rtpro: 1
+camera: {position: [0, 1, 6], look_at: [0, 0.5, 0], fov: 40, resolution: [24, 16]}
+render: {spp: 4, max_depth: 2, seed: 3}
+lights:
+  - {type: point, position: [4, 6, 5], intensity: 1}
+world:
+  - {type: sphere, center: [0, -1000, 0], radius: 1000}
+  - {type: sphere, center: [0, 0.7, 0], radius: 0.7}
+)";
+
+std::string rtpro(const std::string& args) { return test::rtpro_executable().string() + " " + args; }
+
+// Standard output to `file`, standard error to the output run() returns.
+std::string run_to(const std::string& args, const std::filesystem::path& file, int code) {
+  std::string out;
+  EXPECT_EQ(run_command("{ " + rtpro(args) + " > " + file.string() + "; }", &out), code) << args << "\n" << out;
+  return out;
+}
+
+std::string run(const std::string& args, int code) {
+  std::string out;
+  EXPECT_EQ(run_command(rtpro(args), &out), code) << args << "\n" << out;
+  return out;
+}
+
+std::string file_bytes(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(OutputOptions, StandardOutputHoldsTheSameImageAsAFile) {
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto dir = scene.parent_path();
+  run("render " + scene.string() + " -o " + (dir / "file.exr").string() + " -q", 0);
+  run_to("render " + scene.string() + " -o - --format exr -q", dir / "piped.exr", 0);
+  const Image a = read_image(dir / "file.exr"), b = read_image(dir / "piped.exr");
+  ASSERT_EQ(a.data.size(), b.data.size());
+  EXPECT_EQ(a.data, b.data);
+  run_to("render " + scene.string() + " -o - --format png -q", dir / "piped.png", 0);
+  EXPECT_EQ(file_bytes(dir / "piped.png").substr(1, 3), "PNG");
+}
+
+TEST(OutputOptions, FormatMistakesAreRefused) {
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto dir = scene.parent_path();
+  std::string out = run_to("render " + scene.string() + " -o -", dir / "x", 2);
+  EXPECT_NE(out.find("needs --format"), std::string::npos) << out;
+  out = run("render " + scene.string() + " -o " + (dir / "x.exr").string() + " --format png", 2);
+  EXPECT_NE(out.find("--format png contradicts"), std::string::npos) << out;
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.exr"));
+}
+
+TEST(OutputOptions, ExposureScalesTheColourByPowersOfTwo) {
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto dir = scene.parent_path();
+  run("render " + scene.string() + " -o " + (dir / "e0.exr").string() + " -q --aov depth", 0);
+  run("render " + scene.string() + " -o " + (dir / "e2.exr").string() + " -q --aov depth --exposure 2", 0);
+  const Image base = read_image(dir / "e0.exr"), bright = read_image(dir / "e2.exr");
+  ASSERT_EQ(base.channels, bright.channels);
+  double sum = 0;
+  for (std::size_t i = 0; i < base.data.size(); ++i) {
+    const std::string& channel = base.channels[i % base.channels.size()];
+    const float expected = channel == "R" || channel == "G" || channel == "B" ? base.data[i] * 4.0f : base.data[i];
+    ASSERT_EQ(bright.data[i], expected) << channel;
+    sum += base.data[i];
+  }
+  EXPECT_GT(sum, 1.0);
+  const std::string out = run("render " + scene.string() + " -o " + (dir / "x.exr").string() + " --exposure 100", 2);
+  EXPECT_NE(out.find("--exposure must be"), std::string::npos) << out;
+}
+
+TEST(OutputOptions, JsonProgressIsOneObjectPerLine) {
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto dir = scene.parent_path();
+  const std::string out =
+      run_to("render " + scene.string() + " -o " + (dir / "p.exr").string() + " --tile-size 8 -q --progress json",
+             "/dev/null", 0);
+  std::istringstream lines(out);
+  std::string line;
+  int objects = 0;
+  nlohmann::json last;
+  while (std::getline(lines, line)) {
+    last = nlohmann::json::parse(line);  // throws on anything but one object per line
+    ++objects;
+    EXPECT_LE(last["tiles_done"].get<int>(), last["tiles_total"].get<int>());
+    EXPECT_GE(last["elapsed_seconds"].get<double>(), 0.0);
+  }
+  ASSERT_GE(objects, 1) << out;
+  EXPECT_TRUE(last["final"].get<bool>());
+  EXPECT_EQ(last["tiles_done"], 6);  // 24x16 in 8x8 tiles
+  EXPECT_EQ(last["tiles_total"], 6);
+}
+
+TEST(OutputOptions, OldDisplaySpellingWarns) {
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto dir = scene.parent_path();
+  std::string out = run("render " + scene.string() + " -o " + (dir / "d.png").string() + " --display sRGB --progress never", 0);
+  EXPECT_NE(out.find("--display is deprecated"), std::string::npos) << out;
+  out = run("render " + scene.string() + " -o " + (dir / "d.png").string() + " --ocio-display sRGB --progress never", 0);
+  EXPECT_EQ(out.find("deprecated"), std::string::npos) << out;
+  out = run("render " + scene.string() + " -o " + (dir / "d.png").string() + " --ocio-display sRGB --display sRGB", 2);
+  EXPECT_NE(out.find("give only --ocio-display"), std::string::npos) << out;
+}
+
+TEST(OutputOptions, HelpListsFormatsAndTheirEncodings) {
+  const std::string out = run("render --help", 0);
+  for (const char* fragment : {".exr", "scene-linear", ".tif", "16-bit", ".png", "8-bit", "--ocio-display", "-D,--define"})
+    EXPECT_NE(out.find(fragment), std::string::npos) << fragment << "\n" << out;
+}
+
+}  // namespace
+}  // namespace rtpro

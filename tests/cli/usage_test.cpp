@@ -1,0 +1,142 @@
+// The command line's usage errors and precedence, through the real binary (issue 14): every
+// mistake is one line naming the flag, with the nearest valid spelling, and exit code 2.
+#include "rtpro/image/image_io.h"
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+
+namespace rtpro {
+namespace {
+
+using test::run_command;
+
+const char* kScene = R"(rtpro: 1
+camera: {position: [0, 1, 6], look_at: [0, 0.5, 0], fov: 40, resolution: [24, 16]}
+render: {spp: 4, max_depth: 2, seed: 3}
+lights:
+  - {type: point, position: [4, 6, 5], intensity: 1}
+world:
+  - {type: sphere, center: [0, -1000, 0], radius: 1000}
+  - {type: sphere, center: [0, 0.7, 0], radius: 0.7}
+)";
+
+std::string rtpro(const std::string& args) { return test::rtpro_executable().string() + " " + args; }
+
+// Runs rtpro, expecting exit code `code`; returns its output.
+std::string run(const std::string& args, int code) {
+  std::string out;
+  EXPECT_EQ(run_command(rtpro(args), &out), code) << args << "\n" << out;
+  return out;
+}
+
+std::size_t line_count(const std::string& text) {
+  std::size_t lines = 0;
+  for (char c : text) lines += c == '\n';
+  return lines;
+}
+
+void expect_one_line_error(const std::string& args, const std::string& fragment) {
+  const std::string out = run(args, 2);
+  EXPECT_NE(out.find(fragment), std::string::npos) << args << "\n" << out;
+  EXPECT_EQ(line_count(out), 1u) << args << "\n" << out;
+  EXPECT_EQ(out.rfind("rtpro: error: ", 0), 0u) << out;
+}
+
+TEST(Usage, UnknownCommandSuggestsTheNearest) {
+  expect_one_line_error("rendr scene.yaml", "unknown command 'rendr'; did you mean 'render'?");
+  expect_one_line_error("", "a command is required: render, compare, crosscheck, info");
+  expect_one_line_error("--hlep", "unknown option '--hlep'; did you mean '--help'?");
+}
+
+TEST(Usage, UnknownOptionSuggestsTheNearest) {
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const std::string out = (scene.parent_path() / "out.exr").string();
+  expect_one_line_error("render " + scene.string() + " -o " + out + " --sp 4",
+                        "unknown option '--sp' for 'rtpro render'; did you mean '--spp'?");
+  expect_one_line_error("render " + scene.string() + " -o " + out + " --max-dept=3", "did you mean '--max-depth'?");
+  expect_one_line_error("info " + scene.string() + " --jsn", "did you mean '--json'?");
+  expect_one_line_error("render " + scene.string() + " --outfile " + out, "rtpro's is -o/--output (pbrt's --outfile)");
+  expect_one_line_error("render " + scene.string() + " -o " + out + " --render-anim", "rtpro's is --frames FIRST-LAST");
+  expect_one_line_error("render " + scene.string() + " -o " + out + " -qx", "unknown option '-x'");
+  expect_one_line_error("info " + scene.string() + " second.yaml third.yaml",
+                        "unexpected arguments: 'second.yaml' 'third.yaml'");
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(Usage, SingleValueOptionsGivenTwiceAreRefused) {
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto dir = scene.parent_path();
+  expect_one_line_error("render " + scene.string() + " -o " + (dir / "a.exr").string() + " -o " + (dir / "b.exr").string(),
+                        "-o given twice");
+  expect_one_line_error("render " + scene.string() + " -o a.exr --spp=4 --spp 16", "--spp given twice ('4' and '16')");
+  EXPECT_FALSE(std::filesystem::exists(dir / "a.exr"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "b.exr"));
+}
+
+TEST(Usage, ValuesAreCheckedByTheSceneFilesRules) {
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const std::string out = (scene.parent_path() / "out.exr").string();
+  expect_one_line_error("render " + scene.string() + " -o " + out + " --seed -1",
+                        "--seed -1: render.seed: expected a non-negative integer");
+  expect_one_line_error("render " + scene.string() + " -o " + out + " --size 64",
+                        "--size '64': expected WIDTHxHEIGHT");
+  expect_one_line_error("render " + scene.string() + " -o " + out + " --set render.background=[255,0,0]",
+                        "looks like 8-bit sRGB values");
+  expect_one_line_error("render " + scene.string() + " -o " + out + " --region 0,0,30,10",
+                        "--region 0,0,30,10: not a non-empty window inside the 24x16 image");
+  expect_one_line_error("render " + scene.string() + " -o " + out + " --tile-size 0", "--tile-size must be at least 1");
+  expect_one_line_error("render " + scene.string() + " -o " + out + " -q --progress sometimes",
+                        "--progress 'sometimes': expected never, auto, always or json");
+}
+
+TEST(Usage, AovsNeedAnExrOutput) {
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto png = scene.parent_path() / "out.png";
+  expect_one_line_error("render " + scene.string() + " -o " + png.string() + " --aov albedo",
+                        "--aov needs an EXR output");
+  EXPECT_FALSE(std::filesystem::exists(png));
+  // A list option takes one value per occurrence: the scene after it stays the scene.
+  const auto exr = scene.parent_path() / "out.exr";
+  run("render -o " + exr.string() + " --aov albedo --aov depth " + scene.string() + " -q", 0);
+  EXPECT_TRUE(std::filesystem::exists(exr));
+}
+
+// --set and its shorthands apply in the order typed: the last one to set a key wins.
+TEST(Usage, OverridesApplyInCommandLineOrder) {
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const std::string base = "render " + scene.string() + " -o " + (scene.parent_path() / "o.exr").string() +
+                           " --stats --progress never";
+  EXPECT_NE(run(base + " --set render.spp=9 --spp 16", 0).find(", 16 spp"), std::string::npos);
+  EXPECT_NE(run(base + " --spp 16 --set render.spp=9", 0).find(", 9 spp"), std::string::npos);
+  EXPECT_NE(run(base + " --size 8x8 --set camera.resolution=[10,6]", 0).find("10x6"), std::string::npos);
+  EXPECT_NE(run(base + " --set camera.resolution=[10,6] --size 8x8", 0).find("8x8"), std::string::npos);
+}
+
+TEST(Usage, AnySampleCountRenders) {
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto out = scene.parent_path() / "six.exr";
+  const std::string text = run("render " + scene.string() + " -o " + out.string() + " --spp 6", 0);
+  EXPECT_NE(text.find("6 spp"), std::string::npos) << text;
+  const Image image = read_image(out);
+  float sum = 0;
+  for (float v : image.data) sum += v;
+  EXPECT_GT(sum, 1.0f);
+}
+
+TEST(Usage, SceneFromStandardInput) {
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto dir = scene.parent_path();
+  run("render " + scene.string() + " -o " + (dir / "file.exr").string() + " -q", 0);
+  run("render - -o " + (dir / "stdin.exr").string() + " -q < " + scene.string(), 0);
+  const Image a = read_image(dir / "file.exr"), b = read_image(dir / "stdin.exr");
+  ASSERT_EQ(a.data.size(), b.data.size());
+  EXPECT_EQ(std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)), 0);
+  const std::string out = run("info - < /dev/null", 2);
+  EXPECT_NE(out.find("<stdin>"), std::string::npos) << out;
+}
+
+}  // namespace
+}  // namespace rtpro
