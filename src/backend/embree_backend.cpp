@@ -124,8 +124,32 @@ class EmbreeBackend final : public Backend {
     }
   }
 
-  void occluded(std::span<const Ray> rays, std::span<std::uint8_t> result, RayCoherence) const override {
-    for (std::size_t i = 0; i < rays.size(); ++i) result[i] = occluded(rays[i]) ? 1 : 0;
+  void occluded(std::span<const Ray> rays, std::span<std::uint8_t> result, RayCoherence coherence) const override {
+    if (coherence == RayCoherence::kIncoherent) {
+      for (std::size_t i = 0; i < rays.size(); ++i) result[i] = occluded(rays[i]) ? 1 : 0;
+      return;
+    }
+    constexpr std::size_t kChunk = 64;
+    alignas(16) RTCRay queries[kChunk];
+    std::size_t slots[kChunk];
+    for (std::size_t begin = 0; begin < rays.size(); begin += kChunk) {
+      const std::size_t end = std::min(rays.size(), begin + kChunk);
+      unsigned count = 0;
+      for (std::size_t i = begin; i < end; ++i) {
+        result[i] = 0;
+        if (!gate_.admit(rays[i])) continue;
+        const float tfar = std::nextafter(rays[i].tfar, 0.0f);
+        if (!(tfar > rays[i].tnear)) continue;
+        to_embree(rays[i], tfar, count, queries[count]);
+        slots[count++] = i;
+      }
+      if (count == 0) continue;
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+      rtcOccluded1M(scenes_.top.get(), &context, queries, count, sizeof(RTCRay));
+      for (unsigned k = 0; k < count; ++k) result[slots[k]] = queries[k].tfar < 0.0f ? 1 : 0;
+    }
   }
 
   // Embree's triangles accept t == tfar; asking for (tnear, previous float below tfar] instead

@@ -91,7 +91,7 @@ void shade_batch(const RenderScene& scene, const Backend& backend, std::span<con
     gather_surfaces(scene, ws.current, depth, results, ws);
 
     ws.occluded.resize(ws.shadow_rays.size());
-    backend.occluded(ws.shadow_rays, ws.occluded, RayCoherence::kIncoherent);
+    backend.occluded(ws.shadow_rays, ws.occluded, depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
     counts.shadow += ws.shadow_rays.size();
 
     light_surfaces(scene, ws.current, depth, results, ws);
