@@ -49,9 +49,15 @@ class RenderSceneBuilder {
   // Counted before anything is flattened: a few nested levels of a few instances each multiply
   // to billions, which would otherwise cost minutes and gigabytes before failing. The error names
   // the world instance whose subtree crosses the limit.
-  void check_instance_count() const {
-    const std::vector<std::uint64_t> per_object = flattened_instances_per_object(description_);
+  // glTF files are loaded here (once each, as placing them would), so their placements count
+  // exactly; those of objects the world never places are loaded too.
+  void check_instance_count() {
+    const auto placements = [this](const GltfDesc& gltf) -> std::uint64_t {
+      return gltf_prototypes(gltf).asset->placements.size();
+    };
+    const std::vector<std::uint64_t> per_object = flattened_instances_per_object(description_, placements);
     std::uint64_t count = 0;
+    for (const GltfDesc& gltf : description_.world.gltfs) count = saturating_add(count, placements(gltf));
     for (const InstanceDesc& instance : description_.world.instances) {
       count = saturating_add(count, per_object[instance.object]);
       if (count > kMaxFlattenedInstances)

@@ -1,5 +1,7 @@
 #include "rtpro/scene/render_cost.h"
 
+#include "gltf_asset.h"
+
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
 
@@ -13,40 +15,62 @@ namespace {
 
 bool has_own_shapes(const ObjectDesc& object) { return !object.spheres.empty() || !object.meshes.empty(); }
 
+std::uint64_t placements_in(const std::vector<GltfDesc>& gltfs, const GltfPlacementCount& gltf_placements) {
+  std::uint64_t count = 0;
+  for (const GltfDesc& gltf : gltfs) count = saturating_add(count, gltf_placements(gltf));
+  return count;
+}
+
 // Instances one placement of `object` becomes, memoised per object.
-std::uint64_t instances_of(const SceneDescription& scene, std::uint32_t object,
+std::uint64_t instances_of(const SceneDescription& scene, std::uint32_t object, const GltfPlacementCount& gltf_placements,
                            std::vector<std::optional<std::uint64_t>>& memo) {
   if (memo[object]) return *memo[object];
   const ObjectDesc& desc = scene.objects[object];
-  std::uint64_t count = has_own_shapes(desc) ? 1 : 0;
+  std::uint64_t count = saturating_add(has_own_shapes(desc) ? 1 : 0, placements_in(desc.gltfs, gltf_placements));
   for (const InstanceDesc& nested : desc.instances)
-    count = saturating_add(count, instances_of(scene, nested.object, memo));
+    count = saturating_add(count, instances_of(scene, nested.object, gltf_placements, memo));
   memo[object] = count;
   return count;
 }
 
-void add_mesh_file_bytes(const std::vector<MeshDesc>& meshes, std::set<std::filesystem::path>& seen,
-                         std::uint64_t& bytes) {
-  for (const MeshDesc& mesh : meshes) {
-    if (!seen.insert(mesh.file).second) continue;
-    std::error_code error;
-    const std::uintmax_t size = std::filesystem::file_size(mesh.file, error);
-    if (!error) bytes = saturating_add(bytes, saturating_multiply(size, kMeshBytesPerFileByte));
+void add_file_bytes(const std::filesystem::path& file, std::set<std::filesystem::path>& seen, std::uint64_t& bytes) {
+  if (!seen.insert(file).second) return;
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(file, error);
+  if (!error) bytes = saturating_add(bytes, saturating_multiply(size, kMeshBytesPerFileByte));
+}
+
+// Mesh memory of every mesh and glTF file an object draws, each file counted once. A glTF file's
+// buffers may live in .bin files beside it: a loaded asset counts its meshes' own bytes instead.
+void add_shape_bytes(const ObjectDesc& object, std::set<std::filesystem::path>& seen, std::uint64_t& bytes) {
+  for (const MeshDesc& mesh : object.meshes) add_file_bytes(mesh.file, seen, bytes);
+  for (const GltfDesc& gltf : object.gltfs) {
+    if (!gltf.loaded) {
+      add_file_bytes(gltf.file, seen, bytes);
+      continue;
+    }
+    if (!seen.insert(gltf.file).second) continue;
+    for (const TriangleMesh& mesh : gltf.loaded->meshes)
+      bytes = saturating_add(bytes, saturating_multiply(mesh.memory_bytes(), 2));  // and its BVH
   }
 }
 
 }  // namespace
 
-std::vector<std::uint64_t> flattened_instances_per_object(const SceneDescription& scene) {
+std::uint64_t described_gltf_placements(const GltfDesc& gltf) { return gltf.loaded ? gltf.loaded->placements.size() : 1; }
+
+std::vector<std::uint64_t> flattened_instances_per_object(const SceneDescription& scene,
+                                                          const GltfPlacementCount& gltf_placements) {
   std::vector<std::optional<std::uint64_t>> memo(scene.objects.size());
   std::vector<std::uint64_t> counts(scene.objects.size());
-  for (std::uint32_t object = 0; object < scene.objects.size(); ++object) counts[object] = instances_of(scene, object, memo);
+  for (std::uint32_t object = 0; object < scene.objects.size(); ++object)
+    counts[object] = instances_of(scene, object, gltf_placements, memo);
   return counts;
 }
 
-std::uint64_t count_flattened_instances(const SceneDescription& scene) {
-  const std::vector<std::uint64_t> per_object = flattened_instances_per_object(scene);
-  std::uint64_t count = 0;
+std::uint64_t count_flattened_instances(const SceneDescription& scene, const GltfPlacementCount& gltf_placements) {
+  const std::vector<std::uint64_t> per_object = flattened_instances_per_object(scene, gltf_placements);
+  std::uint64_t count = placements_in(scene.world.gltfs, gltf_placements);
   for (const InstanceDesc& instance : scene.world.instances) count = saturating_add(count, per_object[instance.object]);
   return count;
 }
@@ -63,8 +87,8 @@ RenderCost estimate_render_cost(const SceneDescription& scene, int extra_channel
                                          2 * sizeof(float));
   cost.instance_bytes = saturating_multiply(cost.flattened_instances, kBytesPerInstance);
   std::set<std::filesystem::path> seen;
-  add_mesh_file_bytes(scene.world.meshes, seen, cost.mesh_bytes);
-  for (const ObjectDesc& object : scene.objects) add_mesh_file_bytes(object.meshes, seen, cost.mesh_bytes);
+  add_shape_bytes(scene.world, seen, cost.mesh_bytes);
+  for (const ObjectDesc& object : scene.objects) add_shape_bytes(object, seen, cost.mesh_bytes);
   cost.total_bytes = saturating_add(saturating_add(cost.image_bytes, cost.instance_bytes), cost.mesh_bytes);
   return cost;
 }

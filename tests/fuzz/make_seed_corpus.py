@@ -112,12 +112,91 @@ def image_seeds(work):
     put("image", "hostile-truncated.exr", bytes([0]) + (CORPUS / "image" / "small.exr").read_bytes()[:120])
 
 
+def gltf_document(buffer_uri, byte_length, extra=None):
+    """A glTF 2.0 document: one triangle (positions, normals, 16-bit indices) in one buffer, a
+    node tree with matrix and TRS transforms, a camera and a KHR_lights_punctual light."""
+    import json
+    doc = {
+        "asset": {"version": "2.0"},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 3, 4]}],
+        "nodes": [
+            {"children": [1, 2], "translation": [0, 0, -1], "rotation": [0, 0.382683, 0, 0.92388], "scale": [2, 2, 2]},
+            {"mesh": 0},
+            {"mesh": 0, "matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 0, 0, 1]},
+            {"camera": 0, "translation": [0, 0, 5]},
+            {"extensions": {"KHR_lights_punctual": {"light": 0}}, "translation": [2, 3, 4]},
+        ],
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.01, "aspectRatio": 1.0}}],
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "color": [1, 1, 1], "intensity": 5}]}},
+        "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.2, 0.1, 1], "metallicFactor": 0.5,
+                                                "roughnessFactor": 0.3}}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2, "material": 0, "mode": 4}]}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+            {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"},
+            {"bufferView": 2, "componentType": 5123, "count": 3, "type": "SCALAR"},
+        ],
+        "bufferViews": [
+            {"buffer": 0, "byteOffset": 0, "byteLength": 36},
+            {"buffer": 0, "byteOffset": 36, "byteLength": 36},
+            {"buffer": 0, "byteOffset": 72, "byteLength": 6},
+        ],
+        "buffers": [{"byteLength": byte_length} | ({"uri": buffer_uri} if buffer_uri else {})],
+    }
+    if extra:
+        extra(doc)
+    return json.dumps(doc, separators=(",", ":"))
+
+
+def gltf_buffer():
+    positions = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)
+    normals = struct.pack("<9f", 0, 0, 1, 0, 0, 1, 0, 0, 1)
+    return positions + normals + struct.pack("<3H", 0, 1, 2) + b"\0\0"
+
+
+def glb(json_text, binary):
+    chunk_json = json_text.encode() + b" " * (-len(json_text) % 4)
+    chunk_bin = binary + b"\0" * (-len(binary) % 4)
+    body = struct.pack("<II", len(chunk_json), 0x4E4F534A) + chunk_json + struct.pack("<II", len(chunk_bin), 0x004E4942) + chunk_bin
+    return b"glTF" + struct.pack("<II", 2, 12 + len(body)) + body
+
+
+def gltf_seeds():
+    import base64
+    data = gltf_buffer()
+    embedded = "data:application/octet-stream;base64," + base64.b64encode(data).decode()
+    put("gltf", "triangle-embedded.gltf", gltf_document(embedded, len(data)))
+    put("gltf", "triangle-external-bin.gltf", gltf_document("model.bin", len(data)).encode() + b"\n#---bin---\n" + data)
+    put("gltf", "triangle.glb", glb(gltf_document(None, len(data)), data))
+    # Hostile: an index past the vertex count, a node that is its own child, an accessor reaching
+    # past its view, a missing .bin, an infinite coordinate.
+    bad_index = data[:72] + struct.pack("<3H", 0, 1, 60000) + b"\0\0"
+    put("gltf", "hostile-index-out-of-range.glb", glb(gltf_document(None, len(bad_index)), bad_index))
+    def cycle(doc): doc["nodes"][1]["children"] = [1]
+    put("gltf", "hostile-node-cycle.gltf", gltf_document(embedded, len(data), cycle))
+    def overrun(doc): doc["accessors"][0]["count"] = 1000000
+    put("gltf", "hostile-accessor-overrun.gltf", gltf_document(embedded, len(data), overrun))
+    put("gltf", "hostile-missing-bin.gltf", gltf_document("model.bin", len(data)))
+    infinite = struct.pack("<9f", 0, 0, 0, float("inf"), 0, 0, 0, 1, 0) + data[36:]
+    put("gltf", "hostile-infinite-position.glb", glb(gltf_document(None, len(infinite)), infinite))
+    def many_instances(doc):
+        # A legal tree of 1 + 24 + 24 * 24 nodes: 576 placements of the mesh from 10 KB.
+        doc["nodes"] = [{"children": list(range(1, 25))}]
+        doc["nodes"] += [{"children": list(range(25 + 24 * i, 49 + 24 * i))} for i in range(24)]
+        doc["nodes"] += [{"mesh": 0} for _ in range(24 * 24)]
+        doc["scenes"] = [{"nodes": [0]}]
+    put("gltf", "tree-of-576-placements.gltf", gltf_document(embedded, len(data), many_instances))
+
+
 if __name__ == "__main__":
-    for target in ("scene", "obj", "ply", "image"):
+    for target in ("scene", "obj", "ply", "image", "gltf"):
         shutil.rmtree(CORPUS / target, ignore_errors=True)
     scene_seeds()
     obj_seeds()
     ply_seeds()
+    gltf_seeds()
     with tempfile.TemporaryDirectory() as work:
         image_seeds(work)
     for target in sorted(os.listdir(CORPUS)):

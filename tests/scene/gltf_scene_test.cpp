@@ -1,6 +1,7 @@
 // glTF files as whole scenes and inside YAML scenes (gltf_scene.h, build_render_scene.cpp).
 #include "rtpro/core/error.h"
 #include "rtpro/scene/build_render_scene.h"
+#include "rtpro/scene/render_cost.h"
 #include "rtpro/scene/scene_parser.h"
 #include "gltf_test_files.h"
 #include "test_paths.h"
@@ -76,6 +77,43 @@ TEST(GltfScene, TheFirstCameraAndThePunctualLightsAreUsed) {
   EXPECT_NEAR(d.direction.y, -1.0f, 1e-5f);  // the node's -z turned to point down
   EXPECT_NEAR(s.intensity, 0.25f, 1e-5f);
   EXPECT_EQ(s.position, Vec3(10.5f, 0.5f, 10.5f));
+}
+
+// One mesh drawn by `nodes` nodes side by side.
+GltfFile repeated_model(int nodes) {
+  GltfFile gltf;
+  const int mesh = gltf.mesh(gltf.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3"));
+  std::vector<int> roots;
+  for (int i = 0; i < nodes; ++i) roots.push_back(gltf.node({{"mesh", mesh}, {"translation", {2.0 * i, 0, 0}}}));
+  gltf.scene(roots);
+  return gltf;
+}
+
+TEST(GltfScene, TheCostEstimateCountsTheNodesOfAGltfSceneAsInstances) {
+  const SceneDescription description = parse_scene_file(repeated_model(7).write("seven"));
+  EXPECT_EQ(estimate_render_cost(description).flattened_instances, 7u);
+  EXPECT_GT(estimate_render_cost(description).mesh_bytes, 0u);
+}
+
+// 100 placements in the file × 1,000 per row × 200 rows: 2·10^7 instances from a few kilobytes,
+// refused at the world instance that crosses the limit (the 101st, line 1108), before anything is
+// flattened.
+TEST(GltfScene, PlacementsInsideAGltfObjectCountTowardTheInstanceLimitBeforeFlattening) {
+  repeated_model(100).write("hundred", true);
+  std::string text = "rtpro: 1\ncamera: {position: [0, 0, 30], look_at: [0, 0, 0]}\nobjects:\n  piece:\n"
+                     "    - {type: mesh, file: hundred.gltf}\n  row:\n";
+  for (int i = 0; i < 1000; ++i) text += "    - {type: instance, object: piece}\n";
+  text += "world:\n";
+  for (int i = 0; i < 200; ++i) text += "  - {type: instance, object: row}\n";
+  const SceneDescription description = parse_scene_file(test::write_file("rows.yaml", text));
+  try {
+    build_render_scene(description);
+    FAIL() << "the instance limit was not applied";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("instances after flattening"), std::string::npos) << message;
+    EXPECT_NE(message.find("rows.yaml:" + std::to_string(7 + 1000 + 101) + ":"), std::string::npos) << message;
+  }
 }
 
 TEST(GltfScene, AGltfObjectInAYamlSceneIsPlacedThroughEveryLevel) {

@@ -7,6 +7,7 @@
 #include "rtpro/scene/description.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,13 +30,24 @@ struct RenderCost {
 inline constexpr std::uint64_t kBytesPerInstance = 1024;
 inline constexpr std::uint64_t kMeshBytesPerFileByte = 4;
 
-// Instances after flattening: for every world instance, its object's own shapes (if any) plus,
-// recursively, the objects it instances. Computed once per object, so it takes microseconds even
-// when the answer is 10^30 (it saturates at UINT64_MAX). The objects must form no cycle (the
-// scene parser guarantees it).
-std::uint64_t count_flattened_instances(const SceneDescription& scene);
+// How many placements (nodes drawing a mesh) a glTF entry becomes.
+using GltfPlacementCount = std::function<std::uint64_t(const GltfDesc&)>;
+
+// The count known from the description alone: exact for a file the scene reader loaded (a glTF
+// file as the whole scene), 1 for an entry that build_render_scene loads later (which then
+// counts again with the exact figure before flattening).
+std::uint64_t described_gltf_placements(const GltfDesc& gltf);
+
+// Instances after flattening: the world's glTF placements and, for every world instance, its
+// object's own spheres and meshes (one instance, if any) and glTF placements plus, recursively,
+// the objects it instances. Computed once per object, so it takes microseconds even when the
+// answer is 10^30 (it saturates at UINT64_MAX). The objects must form no cycle (the scene parser
+// guarantees it).
+std::uint64_t count_flattened_instances(const SceneDescription& scene,
+                                        const GltfPlacementCount& gltf_placements = described_gltf_placements);
 // The same per object: element i is what one placement of scene.objects[i] becomes.
-std::vector<std::uint64_t> flattened_instances_per_object(const SceneDescription& scene);
+std::vector<std::uint64_t> flattened_instances_per_object(
+    const SceneDescription& scene, const GltfPlacementCount& gltf_placements = described_gltf_placements);
 
 // `extra_channels`: AOV channels beyond R, G, B.
 RenderCost estimate_render_cost(const SceneDescription& scene, int extra_channels = 0);
