@@ -96,7 +96,17 @@ inline std::string figures_cell(const nlohmann::json& f) {
   return cell + "</table></td>";
 }
 
-inline std::string report_html(const std::vector<nlohmann::json>& failures, const std::string& update_command) {
+// The corpus mosaic (corpus_mosaic_test.cpp), when a run made one: the shapes of the real-world
+// models, for a person to look at.
+inline std::string mosaic_html(bool has_mosaic) {
+  if (!has_mosaic) return "";
+  return "<h2>Real-world models</h2>\n<p>Every OBJ, PLY and glTF 2.0 file of Debian's assimp-testmodels that loads, "
+         "framed by its bounds (<a href=\"corpus_mosaic.txt\">which tile is which</a>):</p>\n"
+         "<a href=\"corpus_mosaic.png\"><img class=\"mosaic\" src=\"corpus_mosaic.png\" alt=\"corpus mosaic\"></a>\n";
+}
+
+inline std::string report_html(const std::vector<nlohmann::json>& failures, const std::string& update_command,
+                               bool has_mosaic = false) {
   std::string html = R"(<!doctype html>
 <html><head><meta charset="utf-8"><title>rtpro regression report</title>
 <style>
@@ -106,12 +116,13 @@ table.cases > tbody > tr > td, table.cases > tbody > tr > th {
   border: 1px solid #bbb; padding: 6px; vertical-align: top;
 }
 img { width: 240px; image-rendering: pixelated; display: block; }
+img.mosaic { width: auto; }
 table.figures { font-size: 90%; min-width: 360px; }
 table.figures th { text-align: left; padding-right: 10px; font-weight: normal; color: #555; }
 </style></head><body>
 <h1>rtpro regression report</h1>
 )";
-  if (failures.empty()) return html + "<p>No failing regression tests.</p>\n</body></html>\n";
+  if (failures.empty()) return html + "<p>No failing regression tests.</p>\n" + mosaic_html(has_mosaic) + "</body></html>\n";
   html += "<p>" + std::to_string(failures.size()) +
           " failing (scene, backend) pairs. Images are shown through the default OpenColorIO view. The diff "
           "is black where the images agree, rising through blue and red to white at the error its figures "
@@ -127,7 +138,7 @@ table.figures th { text-align: left; padding-right: 10px; font-weight: normal; c
     html +=
         image_cell(f, "reference") + image_cell(f, "rendered") + image_cell(f, "diff") + figures_cell(f) + "</tr>\n";
   }
-  return html + "</table>\n</body></html>\n";
+  return html + "</table>\n" + mosaic_html(has_mosaic) + "</body></html>\n";
 }
 
 // Every complete failure folder's figures, with "folder" set to its name, ordered by name.
@@ -169,7 +180,8 @@ inline std::filesystem::path regenerate_report(const std::filesystem::path& root
   std::filesystem::create_directories(root);
   const ReportLock lock(root / ".report.lock");
   const std::filesystem::path report = root / "report.html";
-  write_text_atomically(report, report_html(collect_failures(root), update_command));
+  write_text_atomically(report, report_html(collect_failures(root), update_command,
+                                            std::filesystem::exists(root / "corpus_mosaic.png")));
   return report;
 }
 
