@@ -108,11 +108,8 @@ SceneDescription parse_with_overrides(const std::string& scene, const std::vecto
     if (scene == "-") return parse_scene_text(read_standard_input(), "<stdin>", assignments);
     return parse_scene_file(scene, assignments);
   } catch (const InputError& e) {
-    const std::string message = e.what();
-    for (const SceneOverride& o : overrides) {
-      const std::string prefix = "--set " + o.assignment + ":";
-      if (message.rfind(prefix, 0) == 0) throw InputError(o.flag + ":" + message.substr(prefix.size()));
-    }
+    for (const SceneOverride& o : overrides)
+      if (e.where().file == override_source(o.assignment)) throw InputError(o.flag + ": " + e.message());
     throw;
   }
 }

@@ -279,6 +279,8 @@ std::string read_scene_file_text(const std::filesystem::path& file) {
 
 }  // namespace
 
+std::string override_source(std::string_view override_text) { return "--set " + std::string(override_text); }
+
 SceneDescription parse_scene_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   if (is_gltf_file(file)) return parse_gltf_scene_file(file, overrides);
   return parse_scene_text(read_scene_file_text(file), file, overrides);

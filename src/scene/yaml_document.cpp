@@ -1,6 +1,7 @@
 #include "yaml_document.h"
 
 #include "yaml_node_arena.h"
+#include "rtpro/scene/scene_parser.h"
 
 #include <yaml.h>
 
@@ -394,7 +395,7 @@ YamlDocument YamlDocument::parse_included(std::string_view text, const std::stri
 }
 
 void YamlDocument::apply_override(const std::string& override_text) {
-  const YamlPosition at{&sources_.emplace_back("--set " + override_text), 0, 0};
+  const YamlPosition at{&sources_.emplace_back(override_source(override_text)), 0, 0};
   const std::size_t equals = override_text.find('=');
   if (equals == std::string::npos || equals == 0)
     throw InputError(at.location(), "expected key=value, e.g. render.spp=64");

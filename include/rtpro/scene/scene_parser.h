@@ -21,4 +21,9 @@ SceneDescription parse_scene_file(const std::filesystem::path& file,
 SceneDescription parse_scene_text(std::string_view text, const std::filesystem::path& file,
                                   const std::vector<std::string>& overrides = {});
 
+// The source an override's errors are located in ("--set KEY=VALUE"): an InputError about an
+// override has it as where().file, so a caller can tell which override it is about and name it
+// as the user typed it.
+std::string override_source(std::string_view override_text);
+
 }  // namespace rtpro
