@@ -80,7 +80,7 @@ std::vector<Ray> camera_rays(const RenderScene& scene) {
   rays.reserve(static_cast<std::size_t>(scene.camera.width) * scene.camera.height);
   for (int y = 0; y < scene.camera.height; ++y)
     for (int x = 0; x < scene.camera.width; ++x)
-      rays.push_back(camera_ray(scene.camera, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
+      rays.push_back(camera_ray(scene.camera, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f, {0.5f, 0.5f}));
   return rays;
 }
 

@@ -44,7 +44,8 @@ float unit_random(std::uint64_t seed, std::uint64_t ray, std::uint64_t dimension
 
 Ray random_camera_ray(const RenderCamera& camera, std::uint64_t seed, std::size_t i) {
   return camera_ray(camera, unit_random(seed, i, 0) * static_cast<float>(camera.width),
-                    unit_random(seed, i, 1) * static_cast<float>(camera.height));
+                    unit_random(seed, i, 1) * static_cast<float>(camera.height),
+                    {unit_random(seed, i, 2), unit_random(seed, i, 3)});
 }
 
 // Origin uniform in the scene's bounds, direction uniform on the sphere.

@@ -1,6 +1,7 @@
 #include "rtpro/render/tile_renderer.h"
 
 #include "rtpro/render/camera.h"
+#include "rtpro/render/sample_dimensions.h"
 
 #include <algorithm>
 
@@ -45,8 +46,11 @@ void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixe
     const std::uint64_t pixel_key = static_cast<std::uint64_t>(y) * image_width + static_cast<std::uint64_t>(x);
     for (int s = 0; s < spp; ++s) {
       const PixelOffset offset = sampler_.pixel_offset(pixel_key, s);
+      const Sample2D lens = scene_.camera.lens_radius > 0.0f
+                                ? sampler_.sample_2d(pixel_key, s, sample_dimension::kLens)
+                                : Sample2D{0.5f, 0.5f};
       ws.camera_rays.push_back(
-          camera_ray(scene_.camera, static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y));
+          camera_ray(scene_.camera, static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y, lens));
     }
   }
   ws.samples.resize(ws.camera_rays.size());

@@ -68,7 +68,8 @@ void read_resolution(const YamlNode& node, CameraDesc& camera) {
 }
 
 CameraDesc read_camera(const YamlNode& node) {
-  const MappingReader camera(node, "camera", {"position", "look_at", "up", "fov", "resolution"});
+  const MappingReader camera(node, "camera",
+                             {"position", "look_at", "up", "fov", "resolution", "aperture", "focus_distance"});
   CameraDesc desc;
   desc.position = read_vec3(camera.required("position"), "camera.position");
   const YamlNode& look_at = camera.required("look_at");
@@ -94,6 +95,18 @@ CameraDesc read_camera(const YamlNode& node) {
     desc.fov_degrees = static_cast<float>(degrees);
   }
   if (const YamlNode* resolution = camera.optional("resolution")) read_resolution(*resolution, desc);
+  if (const YamlNode* aperture = camera.optional("aperture")) {
+    const double radius = read_number(*aperture, "camera.aperture");
+    if (!(radius >= 0.0) || !std::isfinite(radius))
+      fail_at(*aperture, "camera.aperture is the lens radius in scene units: 0 (a pinhole) or more, got " + aperture->scalar);
+    desc.aperture = static_cast<float>(radius);
+  }
+  if (const YamlNode* focus = camera.optional("focus_distance")) {
+    const double distance = read_number(*focus, "camera.focus_distance");
+    if (!(distance > 0.0) || !std::isfinite(static_cast<float>(distance)))
+      fail_at(*focus, "camera.focus_distance must be a positive distance in scene units, got " + focus->scalar);
+    desc.focus_distance = static_cast<float>(distance);
+  }
   return desc;
 }
 

@@ -307,6 +307,22 @@ TEST(SceneParser, RejectsFovOutsideZeroTo180) {
   }
 }
 
+TEST(SceneParser, ReadsAThinLensAndRejectsBadOnes) {
+  const SceneDescription lens =
+      parse_scene_text(camera_scene("{position: [0, 0, -5], look_at: [0, 0, 0], aperture: 0.25, focus_distance: 3}"), "l.yaml");
+  EXPECT_EQ(lens.camera.aperture, 0.25f);
+  EXPECT_EQ(lens.camera.focus_distance, 3.0f);
+  EXPECT_EQ(parse_scene_text(camera_scene("{position: [0, 0, -5], look_at: [0, 0, 0]}"), "p.yaml").camera.aperture, 0.0f);
+  for (const std::string aperture : {"-0.1", ".NaN", ".inf"}) {
+    const std::string text = camera_scene("{position: [0, 0, -5], look_at: [0, 0, 0], aperture: " + aperture + "}");
+    EXPECT_SCENE_ERROR(text, at(text, 2, aperture + "}"), {"camera.aperture"});
+  }
+  for (const std::string focus : {"0", "-2", ".NaN", "1e39"}) {
+    const std::string text = camera_scene("{position: [0, 0, -5], look_at: [0, 0, 0], focus_distance: " + focus + "}");
+    EXPECT_SCENE_ERROR(text, at(text, 2, focus + "}"), {"camera.focus_distance"});
+  }
+}
+
 TEST(SceneParser, RejectsBadResolutions) {
   const std::string zero = camera_scene("{position: [0, 0, -5], look_at: [0, 0, 0], resolution: [0, 480]}");
   EXPECT_SCENE_ERROR(zero, at(zero, 2, "0, 480"), {"camera.resolution", "from 1 to 65536"});

@@ -26,6 +26,10 @@ struct CameraDesc {
   float fov_degrees = 45.0f;  // vertical field of view
   int width = 640;
   int height = 480;
+  // Thin lens: the lens radius in scene units (0: a pinhole, everything sharp) and the distance
+  // along the view direction that is in focus (0: the distance to look_at).
+  float aperture = 0.0f;
+  float focus_distance = 0.0f;
 };
 
 struct MaterialDesc {

@@ -1,6 +1,6 @@
 #pragma once
-// The camera as the renderer uses it: the scene file's pinhole camera with its frame worked out
-// once. Right-handed world, +y up by convention: the image's +x runs along cross(forward, up);
+// The camera as the renderer uses it: the scene file's camera (a pinhole, or a thin lens with an
+// aperture) with its frame worked out once. Right-handed world, +y up by convention: the image's +x runs along cross(forward, up);
 // pixel coordinates are continuous, (0,0) at the top-left corner.
 #include "rtpro/core/vec3.h"
 
@@ -17,6 +17,10 @@ struct RenderCamera {
   Vec3 forward, right, true_up;
   float half_width = 0.0f, half_height = 0.0f;
   float inv_width = 0.0f, inv_height = 0.0f;
+
+  // Thin lens: radius in scene units (0: pinhole) and the focus distance along `forward`.
+  float lens_radius = 0.0f;
+  float focus_distance = 1.0f;
 };
 
 }  // namespace rtpro
