@@ -2,6 +2,7 @@
 
 #include "rtpro/render/light_sample.h"
 #include "rtpro/render/ray_offset.h"
+#include "rtpro/render/texture.h"
 
 #include <cmath>
 
@@ -30,9 +31,9 @@ void gather_surfaces(const RenderScene& scene, const Workspace::Generation& gene
     s.task = i;
     s.point = make_surface(scene, ray, hit);
     s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
-    const Material& m = scene.materials[s.point.material];
+    s.albedo = evaluate(scene.materials[s.point.material].color, s.point.position);
     if (depth == 0)
-      results[task.sample].primary = {true, m.color, s.point.shading_normal, hit.t * length(ray.dir), s.point.object_id};
+      results[task.sample].primary = {true, s.albedo, s.point.shading_normal, hit.t * length(ray.dir), s.point.object_id};
 
     s.first_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
     for (const Light& light : scene.lights) {
@@ -55,11 +56,11 @@ void light_surfaces(const RenderScene& scene, const Workspace::Generation& gener
   for (const Workspace::ShadedSurface& s : ws.surfaces) {
     const Workspace::RayTask& task = generation.tasks[s.task];
     const Material& m = scene.materials[s.point.material];
-    Color direct = m.color * scene.render.ambient;
+    Color direct = s.albedo * scene.render.ambient;
     for (std::uint32_t q = s.first_shadow; q < s.end_shadow; ++q) {
       if (ws.occluded[q]) continue;
       const Workspace::ShadowQuery& light = ws.shadow_queries[q];
-      direct += m.color * light.radiance * light.n_dot_l;
+      direct += s.albedo * light.radiance * light.n_dot_l;
       if (light.r_dot_l > 0.0f && m.specular > 0.0f)
         direct += light.radiance * (m.specular * std::pow(light.r_dot_l, m.shininess));
     }

@@ -17,6 +17,17 @@ namespace rtpro {
 
 namespace {
 
+// A material's diffuse colour as shading evaluates it.
+ColorTexture color_texture(const MaterialDesc& m) {
+  if (!m.checker) return m.color;
+  CheckerTexture checker;
+  checker.inv_size = 1.0f / m.checker->size;
+  checker.even = m.checker->even;
+  checker.odd = m.checker->odd;
+  checker.axes = m.checker->axes;
+  return checker;
+}
+
 class RenderSceneBuilder {
  public:
   RenderSceneBuilder(const SceneDescription& description, SceneBuildReport* report)
@@ -41,7 +52,7 @@ class RenderSceneBuilder {
 
  private:
   std::uint32_t add_material(const MaterialDesc& m, const std::string& name) {
-    scene_.materials.push_back({m.color, m.specular, m.shininess, m.reflectivity});
+    scene_.materials.push_back({color_texture(m), m.specular, m.shininess, m.reflectivity});
     scene_.material_names.push_back(name);
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);
   }

@@ -136,11 +136,45 @@ RenderSettings read_render(const YamlNode* node) {
   return settings;
 }
 
+// color: {checker: {size: 1, colors: [[r, g, b], [r, g, b]], axes: xz}}
+CheckerDesc read_checker(const YamlNode& node, const std::string& name) {
+  const MappingReader texture(node, name, {"checker"});
+  const MappingReader checker(texture.required("checker"), name + ".checker", {"size", "colors", "axes"});
+  CheckerDesc desc;
+  if (const YamlNode* size = checker.optional("size")) {
+    const double side = read_number(*size, checker.field("size"));
+    if (!(side > 0.0) || !std::isfinite(static_cast<float>(1.0 / side)) || !std::isfinite(static_cast<float>(side)))
+      fail_at(*size, checker.field("size") + " is the side of a square in scene units: positive and finite, got " +
+                         size->scalar);
+    desc.size = static_cast<float>(side);
+  }
+  if (const YamlNode* colors = checker.optional("colors")) {
+    const auto& items = read_list(*colors, checker.field("colors"), 2, "two colours, [[r, g, b], [r, g, b]]");
+    desc.even = read_color(*items[0], checker.field("colors") + "[0]");
+    desc.odd = read_color(*items[1], checker.field("colors") + "[1]");
+  }
+  if (const YamlNode* axes = checker.optional("axes")) {
+    const std::string text = read_string(*axes, checker.field("axes"));
+    if (text == "xz") desc.axes = CheckerAxes::kXZ;
+    else if (text == "xy") desc.axes = CheckerAxes::kXY;
+    else if (text == "yz") desc.axes = CheckerAxes::kYZ;
+    else if (text == "xyz") desc.axes = CheckerAxes::kXYZ;
+    else fail_at(*axes, checker.field("axes") + " must be xz, xy, yz or xyz, got '" + text + "'");
+  }
+  return desc;
+}
+
 MaterialDesc read_material(const std::string& name, const YamlNode& node) {
   const MappingReader material(node, "material '" + name + "'", {"color", "specular", "shininess", "reflectivity"});
   MaterialDesc desc;
   desc.name = name;
-  if (const YamlNode* color = material.optional("color")) desc.color = read_color(*color, material.field("color"));
+  if (const YamlNode* color = material.optional("color")) {
+    if (color->is_mapping()) {
+      desc.checker = read_checker(*color, material.field("color"));
+    } else {
+      desc.color = read_color(*color, material.field("color"));
+    }
+  }
   if (const YamlNode* specular = material.optional("specular"))
     desc.specular = read_non_negative(*specular, material.field("specular"));
   if (const YamlNode* shininess = material.optional("shininess"))

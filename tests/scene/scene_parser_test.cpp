@@ -323,6 +323,26 @@ TEST(SceneParser, ReadsAThinLensAndRejectsBadOnes) {
   }
 }
 
+TEST(SceneParser, ReadsACheckerColourAndRejectsBadOnes) {
+  const SceneDescription scene = parse_scene_text(
+      kHeader + "materials:\n  floor: {color: {checker: {size: 0.5, colors: [[1, 1, 1], [0, 0, 0.5]], axes: xyz}}}\n",
+      "c.yaml");
+  ASSERT_TRUE(scene.materials[1].checker.has_value());
+  EXPECT_EQ(scene.materials[1].checker->size, 0.5f);
+  EXPECT_EQ(scene.materials[1].checker->odd, (Color{0, 0, 0.5f}));
+  EXPECT_EQ(scene.materials[1].checker->axes, CheckerAxes::kXYZ);
+  const SceneDescription defaults = parse_scene_text(kHeader + "materials:\n  floor: {color: {checker: {}}}\n", "d.yaml");
+  EXPECT_EQ(defaults.materials[1].checker->axes, CheckerAxes::kXZ);
+  const std::string size = kHeader + "materials:\n  floor: {color: {checker: {size: 0}}}\n";
+  EXPECT_SCENE_ERROR(size, at(size, 4, "0}"), {"checker.size", "positive"});
+  const std::string axes = kHeader + "materials:\n  floor: {color: {checker: {axes: xw}}}\n";
+  EXPECT_SCENE_ERROR(axes, at(axes, 4, "xw"), {"checker.axes", "xz, xy, yz or xyz"});
+  const std::string colors = kHeader + "materials:\n  floor: {color: {checker: {colors: [[1, 1, 1]]}}}\n";
+  EXPECT_SCENE_ERROR(colors, at(colors, 4, "[[1"), {"checker.colors"});
+  const std::string unknown = kHeader + "materials:\n  floor: {color: {stripes: {}}}\n";
+  EXPECT_SCENE_ERROR(unknown, at(unknown, 4, "stripes"), {"stripes"});
+}
+
 TEST(SceneParser, RejectsBadResolutions) {
   const std::string zero = camera_scene("{position: [0, 0, -5], look_at: [0, 0, 0], resolution: [0, 480]}");
   EXPECT_SCENE_ERROR(zero, at(zero, 2, "0, 480"), {"camera.resolution", "from 1 to 65536"});

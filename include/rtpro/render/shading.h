@@ -58,6 +58,7 @@ class ShadingWorkspace {
   struct ShadedSurface {
     std::uint32_t task;
     SurfacePoint point;
+    Color albedo;                // the material's diffuse colour at the point
     Vec3 mirror;                 // unit mirror direction about the shading normal
     std::uint32_t first_shadow;  // its shadow queries are [first_shadow, end_shadow)
     std::uint32_t end_shadow;

@@ -5,6 +5,7 @@
 #include "rtpro/core/error.h"
 #include "rtpro/core/transform.h"
 #include "rtpro/core/vec3.h"
+#include "rtpro/scene/checker_axes.h"
 #include "rtpro/scene/render_settings.h"
 
 #include <cstdint>
@@ -32,9 +33,18 @@ struct CameraDesc {
   float focus_distance = 0.0f;
 };
 
+// A procedural checkerboard in world space: squares (or cubes) of side `size`, alternating
+// between two colours, the square containing the origin's positive corner `even`.
+struct CheckerDesc {
+  float size = 1.0f;
+  Color even{0.8f}, odd{0.1f};
+  CheckerAxes axes = CheckerAxes::kXZ;
+};
+
 struct MaterialDesc {
   std::string name;
   Color color{0.8f, 0.8f, 0.8f};  // diffuse (and ambient) colour
+  std::optional<CheckerDesc> checker;  // when set, the diffuse colour instead of `color`
   float specular = 0.5f;          // Phong highlight weight
   float shininess = 10.0f;        // Phong exponent
   float reflectivity = 0.0f;      // weight of the mirror reflection

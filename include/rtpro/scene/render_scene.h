@@ -3,6 +3,7 @@
 // instances flattened to one level (top-level group → prototype groups).
 #include "rtpro/core/bbox.h"
 #include "rtpro/core/transform.h"
+#include "rtpro/scene/checker_axes.h"
 #include "rtpro/scene/light.h"
 #include "rtpro/scene/mesh.h"
 #include "rtpro/scene/render_camera.h"
@@ -51,8 +52,22 @@ struct Group {
   BBox bounds(std::span<const BBox> prototype_bounds) const;
 };
 
+// A checkerboard as shading evaluates it (CheckerDesc, with the reciprocal size).
+// Two named colours, not an array: with `Color colors[2]` here GCC 12.2 (-O1 and above) copied
+// the Color alternative of ColorTexture as (x, x, y) in build_render_scene.cpp — every material's
+// colour wrong, found by the regression images; clang was right.
+struct CheckerTexture {
+  float inv_size;
+  Color even, odd;  // the square containing the origin's positive corner is even
+  CheckerAxes axes;
+};
+
+// A material's diffuse colour: constant, or a texture evaluated at the shading point
+// (render/texture.h). Adding a kind fails to compile where it is not evaluated.
+using ColorTexture = std::variant<Color, CheckerTexture>;
+
 struct Material {
-  Color color;
+  ColorTexture color;
   float specular;
   float shininess;
   float reflectivity;

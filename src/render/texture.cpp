@@ -1,0 +1,35 @@
+#include "rtpro/render/texture.h"
+
+#include "rtpro/core/overloaded.h"
+
+#include <cmath>
+
+namespace rtpro {
+
+namespace {
+
+// Parity of the square (or cube) that `position` falls in; floor keeps squares the same size on
+// both sides of zero.
+int checker_parity(const CheckerTexture& checker, const Vec3& position) {
+  const auto cell = [&](float coordinate) {
+    return static_cast<long long>(std::floor(static_cast<double>(coordinate) * checker.inv_size));
+  };
+  long long sum = 0;
+  switch (checker.axes) {
+    case CheckerAxes::kXZ: sum = cell(position.x) + cell(position.z); break;
+    case CheckerAxes::kXY: sum = cell(position.x) + cell(position.y); break;
+    case CheckerAxes::kYZ: sum = cell(position.y) + cell(position.z); break;
+    case CheckerAxes::kXYZ: sum = cell(position.x) + cell(position.y) + cell(position.z); break;
+  }
+  return static_cast<int>(sum & 1);
+}
+
+}  // namespace
+
+Color evaluate(const ColorTexture& texture, const Vec3& position) {
+  return std::visit(Overloaded{[](const Color& color) { return color; },
+                               [&](const CheckerTexture& checker) { return checker_parity(checker, position) == 0 ? checker.even : checker.odd; }},
+                    texture);
+}
+
+}  // namespace rtpro
