@@ -1,0 +1,19 @@
+#pragma once
+// Exact (unpolarised) Fresnel reflectance of a smooth dielectric interface and Snell refraction.
+// `eta` is always the ratio n_transmitted / n_incident, so one function serves entering and
+// leaving a medium: the caller decides which from the geometric normal.
+#include "rtpro/core/vec3.h"
+
+#include <optional>
+
+namespace rtpro {
+
+// Fraction of light reflected for a ray meeting the interface at cos_incident (>= 0, measured to
+// the normal on the incident side); 1 under total internal reflection.
+float fresnel_dielectric(float cos_incident, float eta);
+
+// Direction of the refracted ray for unit `incident` travelling towards the surface and unit
+// `normal` on the incident side; nothing under total internal reflection.
+std::optional<Vec3> refract(const Vec3& incident, const Vec3& normal, float eta);
+
+}  // namespace rtpro
