@@ -20,14 +20,15 @@ std::string RenderStatistics::text() const {
                 "  image         %dx%d, %d spp%s\n"
                 "  backend       %s, %d threads\n"
                 "  time          load %.3fs  build %.3fs  render %.3fs  write %.3fs  total %.3fs\n"
-                "  rays          %llu camera  %llu shadow  %llu reflection  (%llu total)\n"
+                "  rays          %llu camera  %llu shadow  %llu reflection  %llu refraction  (%llu total)\n"
                 "  speed         %.2f Mrays/s\n"
                 "  rejected      %llu rays,  %llu NaN samples\n"
                 "  memory        peak RSS %.1f MiB, acceleration structure %.1f MiB\n",
                 width, height, spp, complete ? "" : " (interrupted: partial)", backend.c_str(), threads,
                 load_seconds, build_seconds, render_seconds, write_seconds, total_seconds,
                 static_cast<unsigned long long>(rays.camera), static_cast<unsigned long long>(rays.shadow),
-                static_cast<unsigned long long>(rays.reflection), static_cast<unsigned long long>(rays.total()),
+                static_cast<unsigned long long>(rays.reflection), static_cast<unsigned long long>(rays.refraction),
+                static_cast<unsigned long long>(rays.total()),
                 mrays_per_second(), static_cast<unsigned long long>(rejected_rays),
                 static_cast<unsigned long long>(nan_samples), mib(peak_rss_bytes), mib(acceleration_bytes));
   return buffer;
@@ -48,7 +49,8 @@ nlohmann::json RenderStatistics::json() const {
             {"write", write_seconds},
             {"total", total_seconds}}},
           {"rays",
-           {{"camera", rays.camera}, {"shadow", rays.shadow}, {"reflection", rays.reflection}, {"total", rays.total()}}},
+           {{"camera", rays.camera}, {"shadow", rays.shadow}, {"reflection", rays.reflection}, {"refraction", rays.refraction},
+            {"total", rays.total()}}},
           {"mrays_per_second", mrays_per_second()},
           {"rejected_rays", rejected_rays},
           {"nan_samples", nan_samples},

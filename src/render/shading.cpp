@@ -1,5 +1,7 @@
 #include "rtpro/render/shading.h"
 
+#include "rtpro/render/beer_lambert.h"
+#include "rtpro/render/dielectric.h"
 #include "rtpro/render/light_sample.h"
 #include "rtpro/render/ray_offset.h"
 #include "rtpro/render/texture.h"
@@ -11,6 +13,13 @@ namespace rtpro {
 namespace {
 
 using Workspace = ShadingWorkspace;
+
+// Branches of the ray tree carrying less than this (largest channel of the path weight) are not
+// traced: below what an 8-bit output resolves even at full exposure, and it bounds the tree that
+// glass (two children per hit) would otherwise double at every depth.
+constexpr float kMinThroughput = 1.0f / 4096.0f;
+
+float max_channel(const Color& c) { return std::max(c.x, std::max(c.y, c.z)); }
 
 // Reads the hits of one generation: misses see the background, hits become shaded surfaces with
 // their shadow rays queued (lights behind the surface, by either normal, need none).
@@ -29,6 +38,13 @@ void gather_surfaces(const RenderScene& scene, const Workspace::Generation& gene
     const Ray& ray = generation.rays[i];
     Workspace::ShadedSurface& s = ws.surfaces.emplace_back();
     s.task = i;
+    s.weight = task.weight;
+    if (task.medium != Workspace::kOutside) {
+      // Absorbed over the path inside the glass (t is in units of the ray's direction length).
+      const Dielectric& glass = *scene.materials[task.medium].dielectric;
+      s.weight = s.weight * beer_lambert_transmittance(glass.transmittance, glass.transmittance_distance,
+                                                       hit.t * length(ray.dir));
+    }
     s.point = make_surface(scene, ray, hit);
     s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
     s.albedo = evaluate(scene.materials[s.point.material].color, s.point.position);
@@ -48,28 +64,61 @@ void gather_surfaces(const RenderScene& scene, const Workspace::Generation& gene
   }
 }
 
+// Queues a child ray of the ray tree unless its weight is negligible.
+void queue_child(Workspace& ws, const Workspace::RayTask& child, const Ray& ray) {
+  if (!(max_channel(child.weight) >= kMinThroughput)) return;
+  ws.next.tasks.push_back(child);
+  ws.next.rays.push_back(ray);
+}
+
+// Glass: Fresnel-weighted reflection and refraction (total internal reflection included), the side
+// told by the geometric normal; the refracted ray travels in the glass when it entered.
+void queue_dielectric_children(const Material& m, const Workspace::ShadedSurface& s, const Workspace::RayTask& task,
+                               const Ray& ray, Workspace& ws) {
+  const Dielectric& glass = *m.dielectric;
+  const Vec3 incident = normalize(ray.dir);
+  const Vec3& normal = s.point.geometric_normal;  // on the incident side
+  const float cos_incident = std::max(0.0f, -dot(incident, normal));
+  const float eta = s.point.front_face ? glass.ior : 1.0f / glass.ior;
+  const float reflectance = fresnel_dielectric(cos_incident, eta);
+  const std::uint32_t inside = s.point.material, outside = Workspace::kOutside;
+  // A reflected ray stays on the side it came from.
+  if (dot(s.mirror, normal) > 0.0f)
+    queue_child(ws, {task.sample, s.weight * reflectance, s.point.front_face ? outside : inside, false},
+                spawn_ray(s.point, s.mirror));
+  if (const auto refracted = refract(incident, normal, eta))
+    queue_child(ws, {task.sample, s.weight * (1.0f - reflectance), s.point.front_face ? inside : outside, true},
+                spawn_ray(s.point, *refracted));
+}
+
 // Adds each surface's direct light (ambient, then each unshadowed light in scene order) to its
-// sample and queues the reflection rays of the next generation.
+// sample and queues the reflection and refraction rays of the next generation. Glass has no
+// diffuse part: only highlights, then its two children.
 void light_surfaces(const RenderScene& scene, const Workspace::Generation& generation, int depth,
                     std::span<SampleResult> results, Workspace& ws) {
   ws.next.clear();
   for (const Workspace::ShadedSurface& s : ws.surfaces) {
     const Workspace::RayTask& task = generation.tasks[s.task];
     const Material& m = scene.materials[s.point.material];
-    Color direct = s.albedo * scene.render.ambient;
+    const bool diffuse = !m.dielectric;
+    Color direct = diffuse ? s.albedo * scene.render.ambient : Color(0.0f);
     for (std::uint32_t q = s.first_shadow; q < s.end_shadow; ++q) {
       if (ws.occluded[q]) continue;
       const Workspace::ShadowQuery& light = ws.shadow_queries[q];
-      direct += s.albedo * light.radiance * light.n_dot_l;
+      if (diffuse) direct += s.albedo * light.radiance * light.n_dot_l;
       if (light.r_dot_l > 0.0f && m.specular > 0.0f)
         direct += light.radiance * (m.specular * std::pow(light.r_dot_l, m.shininess));
     }
-    results[task.sample].radiance += task.weight * direct;
+    results[task.sample].radiance += s.weight * direct;
 
-    // A shading normal can tilt the mirror direction below the surface: nothing to reflect then.
-    if (depth >= scene.render.max_depth || m.reflectivity <= 0.0f || dot(s.mirror, s.point.geometric_normal) <= 0.0f)
+    if (depth >= scene.render.max_depth) continue;
+    if (m.dielectric) {
+      queue_dielectric_children(m, s, task, generation.rays[s.task], ws);
       continue;
-    ws.next.tasks.push_back({task.sample, task.weight * m.reflectivity});
+    }
+    // A shading normal can tilt the mirror direction below the surface: nothing to reflect then.
+    if (m.reflectivity <= 0.0f || dot(s.mirror, s.point.geometric_normal) <= 0.0f) continue;
+    ws.next.tasks.push_back({task.sample, s.weight * m.reflectivity, task.medium, false});
     ws.next.rays.push_back(spawn_ray(s.point, s.mirror));
   }
 }
@@ -96,7 +145,7 @@ void shade_batch(const RenderScene& scene, const Backend& backend, std::span<con
     counts.shadow += ws.shadow_rays.size();
 
     light_surfaces(scene, ws.current, depth, results, ws);
-    counts.reflection += ws.next.rays.size();
+    for (const Workspace::RayTask& task : ws.next.tasks) (task.refracted ? counts.refraction : counts.reflection) += 1;
     std::swap(ws.current, ws.next);
   }
 }

@@ -88,7 +88,8 @@ SurfacePoint make_surface(const RenderScene& scene, const Ray& ray, const Hit& h
   sp.position_error = kRelativePositionError * std::max(local.magnitude, magnitude(local.position));
 
   Vec3 ng = safe_normalize(local.geometric_normal, -normalize(ray.dir));
-  if (dot(ng, ray.dir) > 0.0f) ng = -ng;
+  sp.front_face = !(dot(ng, ray.dir) > 0.0f);
+  if (!sp.front_face) ng = -ng;
   Vec3 ns = safe_normalize(local.shading_normal, ng);
   if (dot(ns, ng) < 0.0f) ns = -ns;
   sp.geometric_normal = ng;

@@ -52,7 +52,9 @@ class RenderSceneBuilder {
 
  private:
   std::uint32_t add_material(const MaterialDesc& m, const std::string& name) {
-    scene_.materials.push_back({color_texture(m), m.specular, m.shininess, m.reflectivity});
+    std::optional<Dielectric> dielectric;
+    if (m.ior) dielectric = Dielectric{*m.ior, m.transmittance, m.transmittance_distance};
+    scene_.materials.push_back({color_texture(m), m.specular, m.shininess, m.reflectivity, dielectric});
     scene_.material_names.push_back(name);
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);
   }

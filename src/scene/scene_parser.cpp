@@ -165,7 +165,9 @@ CheckerDesc read_checker(const YamlNode& node, const std::string& name) {
 }
 
 MaterialDesc read_material(const std::string& name, const YamlNode& node) {
-  const MappingReader material(node, "material '" + name + "'", {"color", "specular", "shininess", "reflectivity"});
+  const MappingReader material(node, "material '" + name + "'",
+                               {"color", "specular", "shininess", "reflectivity", "ior", "transmittance",
+                                "transmittance_distance"});
   MaterialDesc desc;
   desc.name = name;
   if (const YamlNode* color = material.optional("color")) {
@@ -183,6 +185,30 @@ MaterialDesc read_material(const std::string& name, const YamlNode& node) {
     desc.reflectivity = read_non_negative(*reflectivity, material.field("reflectivity"));
     if (desc.reflectivity > 1.0f)
       fail_at(*reflectivity, material.field("reflectivity") + " must be from 0 to 1, got " + reflectivity->scalar);
+  }
+  if (const YamlNode* ior = material.optional("ior")) {
+    const double index = read_number(*ior, material.field("ior"));
+    if (!(index > 0.0) || !(index <= 100.0))
+      fail_at(*ior, material.field("ior") + " is an index of refraction: above 0 (glass 1.5, water 1.33), got " +
+                        ior->scalar);
+    desc.ior = static_cast<float>(index);
+  }
+  const YamlNode* transmittance = material.optional("transmittance");
+  const YamlNode* distance = material.optional("transmittance_distance");
+  if ((transmittance || distance) && !desc.ior)
+    fail_at(transmittance ? *transmittance : *distance,
+            material.field(transmittance ? "transmittance" : "transmittance_distance") +
+                " describes absorption inside glass: give the material an ior too");
+  if (transmittance) {
+    desc.transmittance = read_color(*transmittance, material.field("transmittance"));
+    if (std::max({desc.transmittance.x, desc.transmittance.y, desc.transmittance.z}) > 1.0f)
+      fail_at(*transmittance, material.field("transmittance") + " is a fraction of light kept: each channel 0 to 1");
+  }
+  if (distance) {
+    const double d = read_number(*distance, material.field("transmittance_distance"));
+    if (!(d > 0.0) || !std::isfinite(static_cast<float>(d)))
+      fail_at(*distance, material.field("transmittance_distance") + " must be a positive distance, got " + distance->scalar);
+    desc.transmittance_distance = static_cast<float>(d);
   }
   return desc;
 }

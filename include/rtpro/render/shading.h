@@ -23,11 +23,13 @@ struct RayCounts {
   std::uint64_t camera = 0;
   std::uint64_t shadow = 0;
   std::uint64_t reflection = 0;
-  std::uint64_t total() const { return camera + shadow + reflection; }
+  std::uint64_t refraction = 0;
+  std::uint64_t total() const { return camera + shadow + reflection + refraction; }
   RayCounts& operator+=(const RayCounts& o) {
     camera += o.camera;
     shadow += o.shadow;
     reflection += o.reflection;
+    refraction += o.refraction;
     return *this;
   }
 };
@@ -53,12 +55,18 @@ class ShadingWorkspace {
   struct RayTask {
     std::uint32_t sample;
     Color weight;
+    // The dielectric material whose interior the ray travels through (absorption over its
+    // length), or kOutside.
+    std::uint32_t medium = kOutside;
+    bool refracted = false;  // counted as a refraction ray
   };
+  static constexpr std::uint32_t kOutside = ~0u;
   // A surface the current generation reached, waiting for its shadow rays.
   struct ShadedSurface {
     std::uint32_t task;
     SurfacePoint point;
     Color albedo;                // the material's diffuse colour at the point
+    Color weight;                // the path weight reaching it (absorption inside glass applied)
     Vec3 mirror;                 // unit mirror direction about the shading normal
     std::uint32_t first_shadow;  // its shadow queries are [first_shadow, end_shadow)
     std::uint32_t end_shadow;

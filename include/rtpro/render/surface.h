@@ -12,6 +12,7 @@ namespace rtpro {
 struct SurfacePoint {
   Vec3 position;
   Vec3 geometric_normal;  // unit, facing the side the ray came from
+  bool front_face;        // the ray came from the outside (the side the primitive's normal points to)
   Vec3 shading_normal;    // unit, in the same hemisphere as geometric_normal
   float position_error;   // conservative bound on the rounding error of each coordinate
   std::uint32_t material;

@@ -45,6 +45,12 @@ struct MaterialDesc {
   std::string name;
   Color color{0.8f, 0.8f, 0.8f};  // diffuse (and ambient) colour
   std::optional<CheckerDesc> checker;  // when set, the diffuse colour instead of `color`
+  // Glass: an index of refraction makes the material a smooth dielectric (Fresnel-weighted
+  // reflection and refraction, highlights from `specular`, no diffuse part); white light inside
+  // it has colour `transmittance` after `transmittance_distance` scene units.
+  std::optional<float> ior;
+  Color transmittance{1.0f};
+  float transmittance_distance = 1.0f;
   float specular = 0.5f;          // Phong highlight weight
   float shininess = 10.0f;        // Phong exponent
   float reflectivity = 0.0f;      // weight of the mirror reflection

@@ -10,6 +10,7 @@
 #include "rtpro/scene/render_settings.h"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <variant>
 #include <vector>
@@ -66,11 +67,19 @@ struct CheckerTexture {
 // (render/texture.h). Adding a kind fails to compile where it is not evaluated.
 using ColorTexture = std::variant<Color, CheckerTexture>;
 
+// A smooth dielectric (glass, water): refraction index and interior absorption.
+struct Dielectric {
+  float ior;
+  Color transmittance;         // of white light after `transmittance_distance`
+  float transmittance_distance;
+};
+
 struct Material {
   ColorTexture color;
   float specular;
   float shininess;
   float reflectivity;
+  std::optional<Dielectric> dielectric;  // glass: no diffuse part, Fresnel reflection and refraction
 };
 
 struct RenderScene {
