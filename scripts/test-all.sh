@@ -16,7 +16,9 @@ stage() { printf '\n==== rtpro test stage %s (%s) ====\n' "$1" "$(date +%T)"; }
 
 if [[ $stages == *,1,* ]]; then
   stage "1: gcc Release build and tests"
-  cmake -S . -B build -G Ninja && cmake --build build && ctest --test-dir build --output-on-failure
+  cmake -S . -B build -G Ninja
+  cmake --build build
+  ctest --test-dir build --output-on-failure
 fi
 
 if [[ $stages == *,2,* || $stages == *,3,* ]]; then
