@@ -11,7 +11,8 @@ packages=(
   libopencolorio-dev opencolorio-tools
   libgtest-dev libgmock-dev libbenchmark-dev
   libtinyobjloader-dev libcli11-dev libyaml-dev libyaml-cpp-dev libfmt-dev libfast-float-dev
-  nlohmann-json3-dev libtinygltf-dev
+  nlohmann-json3-dev libtinygltf-dev libxxhash-dev
+  openmpi-bin libopenmpi-dev
   assimp-testmodels
   clang libclang-rt-14-dev
 )

@@ -8,11 +8,14 @@
 #include "memory_option.h"
 #include "output_target.h"
 #include "progress.h"
+#include "render_journal.h"
 #include "render_stats.h"
 #include "scene_overrides.h"
 #include "tev_client.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
+#include "rtpro/distributed/communicator.h"
+#include "rtpro/distributed/distributed_render.h"
 #include "rtpro/image/atomic_file_replacement.h"
 #include "rtpro/image/color_config.h"
 #include "rtpro/image/image_io.h"
@@ -68,6 +71,8 @@ struct RenderCommandOptions {
   int verbose = 0;
   bool stats = false;
   std::string stats_json;
+  bool resume = false;
+  bool no_journal = false;
   BackendOptions backend_options;  // Embree settings from the command line; threads and memory set later
   std::string max_memory_mb;  // MiB; empty: the default budget (see parse_memory_budget)
 };
@@ -131,9 +136,12 @@ void start_tbb_workers(int threads) {
       tbb::static_partitioner());
 }
 
-int run_render(const RenderCommandOptions& o) {
+// `job` is the MPI job when mpirun started more than one rank: rank 0 leads (and alone writes the
+// image, the journal and the statistics), the others follow and say nothing unless they fail.
+int run_render(const RenderCommandOptions& o, Communicator* job) {
   const auto start = Clock::now();
-  Log log(o.quiet ? LogLevel::kQuiet : (o.verbose > 0 ? LogLevel::kVerbose : LogLevel::kNormal));
+  const bool leader = !job || job->rank() == 0;
+  Log log(o.quiet || !leader ? LogLevel::kQuiet : (o.verbose > 0 ? LogLevel::kVerbose : LogLevel::kNormal));
   const BackendKind kind = parse_backend_kind(o.backend);
   if (o.threads && *o.threads < 0) throw InputError("--threads must be >= 0 (0: all cores)");
   const int threads = o.threads.value_or(0) > 0 ? *o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -158,18 +166,21 @@ int run_render(const RenderCommandOptions& o) {
   // whether or not it shows.
   const ProgressMode chosen_progress = parse_progress_mode(o.progress);
   const ProgressMode progress_mode =
-      o.quiet && chosen_progress != ProgressMode::kJson ? ProgressMode::kNever : chosen_progress;
+      !leader || (o.quiet && chosen_progress != ProgressMode::kJson) ? ProgressMode::kNever : chosen_progress;
   if (o.crop && !render_options.region) throw InputError("--crop needs --region");
+  if (o.resume && o.no_journal) throw InputError("--resume reads the journal that --no-journal turns off: give one of them");
+  if (o.resume && output.to_stdout()) throw InputError("--resume needs an output file: -o - keeps no journal");
   const MemoryBudget memory = parse_memory_budget(o.max_memory_mb);
 
   // Fail before the render, not after it: output folder, format, colour config and view.
-  check_image_output(output.file());
-  if (!o.stats_json.empty()) check_replaceable(o.stats_json);
+  // Only the leader writes: the output's folder may not even exist on another rank's node.
+  if (leader) check_image_output(output.file());
+  if (leader && !o.stats_json.empty()) check_replaceable(o.stats_json);
   ImageWriteOptions write_options;
   if (!o.ocio_config.empty()) write_options.ocio_config = o.ocio_config;
   write_options.display = display;
   write_options.view = o.view;
-  if (!writes_scene_linear(output.file())) {
+  if (leader && !writes_scene_linear(output.file())) {
     const ColorConfig colors = ColorConfig::load(write_options.ocio_config);
     const DisplayTransform transform = colors.display_transform(display, o.view);
     log.verbose("colour: OCIO config " + colors.source() + ", display '" + transform.display() + "', view '" +
@@ -207,7 +218,7 @@ int run_render(const RenderCommandOptions& o) {
   // OpenImageIO takes about half a second to load: do it while the scene renders. Not earlier:
   // its hundreds of mmap calls slow the page faults of a large scene file's parse.
   start_tbb_workers(threads);
-  start_loading_image_layer();
+  if (leader) start_loading_image_layer();
 
   BackendOptions backend_options = o.backend_options;
   backend_options.threads = threads;
@@ -218,13 +229,49 @@ int run_render(const RenderCommandOptions& o) {
   log.verbose("built " + stats.backend + " acceleration structure in " + std::to_string(stats.build_seconds) + " s");
 
   std::unique_ptr<TevClient> preview;
-  if (display_server) {
+  if (display_server && leader) {
     preview = std::make_unique<TevClient>(*display_server, std::filesystem::path(output.name()).filename().string(),
                                           scene.camera.width, scene.camera.height, log);
     render_options.on_tile_pixels = [&preview](const Image& image, const PixelRegion& region) {
       preview->send_tile(image, region);
     };
   }
+  // The journal beside the output: what --resume continues after a kill or an interrupt.
+  // The ranks of a job check they render the same thing before any of them renders.
+  const bool journaled = leader && !o.no_journal && !output.to_stdout();
+  const FilmLayout layout(render_options.aovs);
+  const TileGrid grid(checked_region(scene, render_options), render_options.tile_size);
+  OpenedJournal opened;
+  if (journaled || job) {
+    RenderJobSettings settings;
+    for (const SceneOverride& set : o.scene_overrides) settings.overrides.push_back(set.assignment);
+    settings.backend = stats.backend;
+    settings.backend_options = backend_options;
+    settings.region = grid.region();
+    settings.tile_size = grid.tile_size();
+    settings.channels = layout.channels();
+    const JobIdentity identity = render_job_identity(description, report, scene, settings);
+    if (job) agree_on_job(*job, identity);
+    if (journaled) opened = open_render_journal(output.file(), identity, grid, layout.channel_count(), o.resume, log);
+  }
+  if (opened.journal) {
+    render_options.finished_tiles = opened.finished;
+    render_options.on_tile_result = [journal = opened.journal.get()](const TileResult& tile) { journal->append(tile); };
+  }
+  if (!leader) {
+    const TileRenderer renderer(scene, *backend, layout);
+    // mpirun passes Ctrl-C on as SIGTERM to every rank: each finishes its tiles in flight and
+    // rank 0 writes the partial image, as a single process does (if mpirun allows the time:
+    // its odls_base_sigkill_timeout, 1 s by default).
+    const InterruptGuard interrupt;
+    follow_distributed_render(*job, renderer, grid, threads, &InterruptGuard::requested());
+    return kExitOk;
+  }
+  if (job)
+    render_options.tile_executor = [&job, &stats](const TileRenderer& renderer, const TileGrid& tiles,
+                                                  TileSource& source, TileSink& sink) {
+      stats.ranks = lead_distributed_render(*job, renderer, tiles, source, sink);
+    };
   const InterruptGuard interrupt;
   ProgressReporter progress(progress_mode, isatty(STDERR_FILENO) == 1, o.frame);
   render_options.cancel = &InterruptGuard::requested();
@@ -258,6 +305,10 @@ int run_render(const RenderCommandOptions& o) {
   apply_exposure(image, o.exposure);
   write_image(target, image, write_options);
   output.deliver();
+  if (opened.journal) {
+    if (const std::string error = opened.journal->error(); !error.empty()) log.warning(error);
+    if (result.complete()) opened.journal->remove();
+  }
   stats.write_seconds = seconds_since(write_start);
 
   const BackendStats backend_stats = backend->stats();
@@ -274,6 +325,9 @@ int run_render(const RenderCommandOptions& o) {
   if (!result.complete()) {
     std::fprintf(stderr, "rtpro: interrupted: wrote the %zu of %zu finished tiles to %s\n", result.tiles_done,
                  result.tiles_total, target.c_str());
+    if (opened.journal)
+      std::fprintf(stderr, "rtpro: the same command with --resume renders only the rest (journal %s)\n",
+                   opened.journal->file().c_str());
     return kExitInterrupted;
   }
   std::ostringstream line;
@@ -284,7 +338,7 @@ int run_render(const RenderCommandOptions& o) {
 }
 
 // One render, or one per frame of --frames, each exactly the image that frame renders alone.
-int run_renders(const RenderCommandOptions& o) {
+int run_renders(const RenderCommandOptions& o, Communicator* job) {
   Log log(o.quiet ? LogLevel::kQuiet : LogLevel::kNormal);
   if (o.frames.empty()) {
     if (has_frame_pattern(o.output))
@@ -293,7 +347,7 @@ int run_renders(const RenderCommandOptions& o) {
       log.info("skipped: " + o.output + " exists (--skip-existing)");
       return kExitOk;
     }
-    return run_render(o);
+    return run_render(o, job);
   }
   const FrameRange range = parse_frame_range(o.frames);
   if (!has_frame_pattern(o.output))
@@ -313,10 +367,32 @@ int run_renders(const RenderCommandOptions& o) {
       continue;
     }
     one.scene_overrides.push_back({"variables.frame=" + std::to_string(frame), "--frames (frame " + std::to_string(frame) + ")"});
-    const int code = run_render(one);
+    const int code = run_render(one, job);
     if (code != kExitOk) return code;
   }
   return kExitOk;
+}
+
+// Under mpirun every rank runs this. A rank that fails ends the whole job (MPI_Abort) with its
+// exit code, so no rank waits for it; each finalizes MPI otherwise.
+int run_renders_in_mpi_job(const RenderCommandOptions& o) {
+  if (o.skip_existing)
+    throw InputError("--skip-existing decides by files only rank 0 can see: not available under mpirun");
+  std::unique_ptr<Communicator> job = join_mpi_job();
+  const int rank = job->rank();
+  try {
+    const int code = run_renders(o, job->size() > 1 ? job.get() : nullptr);
+    job.reset();
+    return code;
+  } catch (const std::exception& e) {
+    if (rank == 0)
+      std::fprintf(stderr, "rtpro: error: %s\n", e.what());
+    else
+      std::fprintf(stderr, "rtpro: error on rank %d: %s\n", rank, e.what());
+    std::fflush(stderr);
+    job->abort(dynamic_cast<const InputError*>(&e) ? kExitInputError : kExitRuntimeFailure);
+  }
+  return kExitRuntimeFailure;  // not reached: abort() ends the process
 }
 
 }  // namespace
@@ -367,6 +443,13 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_flag("-v,--verbose", o->verbose, "Print more detail");
   cmd->add_flag("--stats", o->stats, "Print statistics at the end");
   cmd->add_option("--stats-json", o->stats_json, "Write statistics as JSON to this file");
+  cmd->add_flag("--resume", o->resume,
+                "Continue an interrupted or killed render of the same scene and settings from its journal "
+                "(OUTPUT.rtpro-journal): only the missing tiles are rendered, and the image is bit-identical to "
+                "an uninterrupted one");
+  cmd->add_flag("--no-journal", o->no_journal,
+                "Keep no resume journal beside the output (one is kept while rendering and removed once the image "
+                "is written)");
   add_embree_options(*cmd, o->backend_options);
   cmd->add_flag("--embree-compact", o->backend_options.embree_compact, "Smaller Embree BVH (about half), about 20% slower to trace");
   cmd->add_option("--max-memory", o->max_memory_mb,
@@ -374,7 +457,7 @@ void add_render_command(CLI::App& app, Action& action) {
                   "Embree as its limit (0: no limit; default: the smaller of 4096 and the available memory)");
   cmd->callback([o, cmd, &action] {
     o->scene_overrides = command_line_overrides(*cmd);
-    action = [o] { return run_renders(*o); };
+    action = [o] { return launched_by_mpirun() ? run_renders_in_mpi_job(*o) : run_renders(*o, nullptr); };
   });
 }
 

@@ -31,11 +31,23 @@ std::string RenderStatistics::text() const {
                 static_cast<unsigned long long>(rays.total()),
                 mrays_per_second(), static_cast<unsigned long long>(rejected_rays),
                 static_cast<unsigned long long>(nan_samples), mib(peak_rss_bytes), mib(acceleration_bytes));
-  return buffer;
+  std::string out = buffer;
+  if (ranks.empty()) return out;
+  std::snprintf(buffer, sizeof buffer, "  ranks         %zu, load imbalance %.3f (busiest rank's busy time over the mean)\n",
+                ranks.size(), load_imbalance(ranks));
+  out += buffer;
+  for (const RankStats& r : ranks) {
+    std::snprintf(buffer, sizeof buffer,
+                  "    rank %-3d    %llu tiles  %llu rays  busy %.3fs  idle %.3fs (thread-seconds)  sent %.2f MiB\n",
+                  r.rank, static_cast<unsigned long long>(r.tiles), static_cast<unsigned long long>(r.rays.total()),
+                  r.busy_seconds, r.idle_seconds, mib(r.bytes_sent));
+    out += buffer;
+  }
+  return out;
 }
 
 nlohmann::json RenderStatistics::json() const {
-  return {{"scene", scene},
+  nlohmann::json out = {{"scene", scene},
           {"output", output},
           {"backend", backend},
           {"threads", threads},
@@ -55,6 +67,19 @@ nlohmann::json RenderStatistics::json() const {
           {"rejected_rays", rejected_rays},
           {"nan_samples", nan_samples},
           {"memory_bytes", {{"peak_rss", peak_rss_bytes}, {"acceleration", acceleration_bytes}}}};
+  if (!ranks.empty()) {
+    nlohmann::json per_rank = nlohmann::json::array();
+    for (const RankStats& r : ranks)
+      per_rank.push_back({{"rank", r.rank},
+                          {"tiles", r.tiles},
+                          {"rays", r.rays.total()},
+                          {"busy_seconds", r.busy_seconds},
+                          {"idle_seconds", r.idle_seconds},
+                          {"bytes_sent", r.bytes_sent}});
+    out["ranks"] = per_rank;
+    out["load_imbalance"] = load_imbalance(ranks);
+  }
+  return out;
 }
 
 }  // namespace rtpro::cli

@@ -1,12 +1,14 @@
 #pragma once
 // End-of-render statistics (`--stats`, `--stats-json FILE`).
 #include "rtpro/backend/backend.h"
+#include "rtpro/distributed/distributed_render.h"
 #include "rtpro/render/renderer.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace rtpro::cli {
 
@@ -24,6 +26,7 @@ struct RenderStatistics {
   std::size_t acceleration_bytes = 0;
   std::size_t peak_rss_bytes = 0;
   bool complete = true;
+  std::vector<RankStats> ranks;  // of a distributed render (mpirun), by rank; empty otherwise
 
   double mrays_per_second() const { return render_seconds > 0 ? rays.total() / render_seconds * 1e-6 : 0.0; }
   std::string text() const;

@@ -8,6 +8,7 @@
 #include <tbb/task_arena.h>
 
 #include <chrono>
+#include <stdexcept>
 #include <string>
 
 namespace rtpro {
@@ -28,6 +29,7 @@ void render_tiles(const TileRenderer& renderer, const TileGrid& grid, TileSource
 ImageTileSink::ImageTileSink(Image& image, std::size_t tile_count) : image_(image), stats_(tile_count) {}
 
 void ImageTileSink::put(TileResult&& tile) {
+  if (on_tile_result) on_tile_result(tile);
   const auto channels = static_cast<std::size_t>(image_.channel_count());
   const auto row_floats = static_cast<std::size_t>(tile.region.width()) * channels;
   for (int y = tile.region.y0; y < tile.region.y1; ++y) {
@@ -77,13 +79,28 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
   RenderResult result;
   result.image = Image(scene.camera.width, scene.camera.height, layout.channels());
   result.tiles_total = grid.count();
-  AllTilesSource source(grid.count(), options.cancel);
   ImageTileSink sink(result.image, grid.count());
   if (options.on_tile_done)
     sink.on_tile_done = [&](std::size_t done) { options.on_tile_done(done, grid.count()); };
   if (options.on_tile_pixels)
     sink.on_tile_pixels = [&](const PixelRegion& region) { options.on_tile_pixels(result.image, region); };
-  render_tiles(renderer, grid, source, sink);
+  std::vector<bool> finished(grid.count(), false);
+  for (const TileResult& tile : options.finished_tiles) {
+    if (tile.index >= grid.count() || finished[tile.index] || tile.region.x0 != grid.tile(tile.index).x0 ||
+        tile.region.y0 != grid.tile(tile.index).y0)
+      throw std::logic_error("render_image: a finished tile is not a tile of this grid, or is given twice");
+    finished[tile.index] = true;
+    sink.put(TileResult(tile));
+  }
+  std::vector<std::size_t> remaining;
+  for (std::size_t index = 0; index < grid.count(); ++index)
+    if (!finished[index]) remaining.push_back(index);
+  TileListSource source(std::move(remaining), options.cancel);
+  sink.on_tile_result = options.on_tile_result;
+  if (options.tile_executor)
+    options.tile_executor(renderer, grid, source, sink);
+  else
+    render_tiles(renderer, grid, source, sink);
 
   result.tiles_done = sink.tiles_done();
   result.rays = sink.rays();

@@ -23,4 +23,11 @@ std::optional<std::size_t> AllTilesSource::next() {
   return index;
 }
 
+std::optional<std::size_t> TileListSource::next() {
+  if (cancel_ && cancel_->load(std::memory_order_relaxed)) return std::nullopt;
+  const std::size_t position = next_.fetch_add(1, std::memory_order_relaxed);
+  if (position >= indices_.size()) return std::nullopt;
+  return indices_[position];
+}
+
 }  // namespace rtpro

@@ -63,6 +63,7 @@ int json_depth(std::string_view text, int limit) {
 // Filesystem callbacks that confine tinygltf to the glTF's folder.
 struct Confinement {
   fs::path folder;  // canonical
+  std::vector<fs::path> files_read;
 };
 
 bool inside(const Confinement& c, const std::string& path) {
@@ -96,6 +97,7 @@ bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const st
     return false;
   }
   out->resize(std::size_t(size));
+  static_cast<Confinement*>(user)->files_read.push_back(path);
   in.seekg(0);
   in.read(reinterpret_cast<char*>(out->data()), size);
   return bool(in);
@@ -159,7 +161,7 @@ std::string diagnose(std::string_view json_text, const Confinement& confinement,
   return {};
 }
 
-tinygltf::Model parse(const fs::path& file, std::vector<std::string>& warnings) {
+tinygltf::Model parse(const fs::path& file, std::vector<std::string>& warnings, std::vector<fs::path>& files_read) {
   const std::string name = file.string();
   const SourceLocation where{name};
   const MappedFile bytes(file);
@@ -174,7 +176,7 @@ tinygltf::Model parse(const fs::path& file, std::vector<std::string>& warnings) 
     throw InputError(where, "the JSON nests deeper than " + std::to_string(kMaxGltfJsonDepth) + " levels");
 
   std::error_code error;
-  Confinement confinement{fs::weakly_canonical(file.parent_path().empty() ? fs::path(".") : file.parent_path(), error)};
+  Confinement confinement{fs::weakly_canonical(file.parent_path().empty() ? fs::path(".") : file.parent_path(), error), {}};
   tinygltf::TinyGLTF gltf;
   gltf.SetImageLoader(keep_image_reference, nullptr);
   gltf.SetFsCallbacks({file_exists, expand_path, read_whole_file, write_whole_file, &confinement});
@@ -204,6 +206,7 @@ tinygltf::Model parse(const fs::path& file, std::vector<std::string>& warnings) 
     throw InputError(where, message.empty() ? "tinygltf could not read the file" : "tinygltf: " + message);
   }
   for (const std::string& line : lines(warn)) warnings.push_back(name + ": " + line);
+  files_read = std::move(confinement.files_read);
   if (model.asset.version.rfind("2.", 0) != 0)
     throw InputError(where, "asset.version: " + ascii::quoted(model.asset.version) + ": rtpro reads glTF 2.0 files only");
   for (const std::string& required : model.extensionsRequired) {
@@ -226,7 +229,7 @@ GltfAsset load_gltf_file(const fs::path& file, const MeshLoadOptions& options) {
   GltfAsset asset;
   asset.file = file;
   MeshLoadStats& stats = asset.stats;
-  const tinygltf::Model model = parse(file, stats.warnings);
+  const tinygltf::Model model = parse(file, stats.warnings, stats.files_read);
   const gltf::AccessorReader reader(model, file.string());
   for (std::size_t m = 0; m < model.materials.size(); ++m)
     asset.materials.push_back(gltf::read_material(model, int(m), file, stats.warnings));

@@ -44,7 +44,8 @@ fs::path material_library_path(const fs::path& obj_file, const LocatedName& libr
 }  // namespace
 
 std::vector<MaterialDesc> load_obj_materials(const fs::path& file, const std::vector<Chunk>& chunks,
-                                             const std::vector<LocatedName>& used, std::vector<std::string>& warnings) {
+                                             const std::vector<LocatedName>& used, MeshLoadStats& stats) {
+  std::vector<std::string>& warnings = stats.warnings;
   std::map<std::string, MaterialDesc, std::less<>> defined;
   std::set<fs::path> loaded;
   for (const Chunk& chunk : chunks) {
@@ -58,6 +59,7 @@ std::vector<MaterialDesc> load_obj_materials(const fs::path& file, const std::ve
         continue;
       }
       MaterialLibrary mtl = parse_mtl_file(path);
+      stats.files_read.push_back(path);
       for (MaterialDesc& m : mtl.materials) defined.try_emplace(m.name, std::move(m));
       warnings.insert(warnings.end(), mtl.warnings.begin(), mtl.warnings.end());
     }

@@ -274,7 +274,7 @@ LoadedMesh load_obj_file(const fs::path& file, const MeshLoadOptions& options, s
   LoadedMesh loaded;
   std::vector<std::string>& warnings = loaded.stats.warnings;
   StitchedState state = stitch_state(chunks, offsets);
-  loaded.materials = load_obj_materials(file, chunks, state.materials, warnings);
+  loaded.materials = load_obj_materials(file, chunks, state.materials, loaded.stats);
   if (state.materials.size() == 1 && state.materials.front().name == kNoUsemtl) loaded.materials.clear();
   warn_about_ignored_statements(file_name, chunks, warnings);
   warn_about_faces(file_name, chunks, offsets.back(), warnings);

@@ -356,16 +356,25 @@ std::string override_source(std::string_view override_text) { return "--set " + 
 
 SceneDescription parse_scene_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   if (is_gltf_file(file)) return parse_gltf_scene_file(file, overrides);
-  return parse_scene_text(read_scene_file_text(file), file, overrides);
+  SceneDescription description = parse_scene_text(read_scene_file_text(file), file, overrides);
+  description.source_files.insert(description.source_files.begin(), file);
+  return description;
 }
 
 SceneDescription parse_scene_text(std::string_view text, const std::filesystem::path& file,
                                   const std::vector<std::string>& overrides) {
-  YamlDocument document = YamlDocument::parse(text, file.string(), read_scene_file_text);
+  std::vector<std::filesystem::path> included;
+  const auto read_include = [&included](const std::filesystem::path& include) {
+    included.push_back(include);
+    return read_scene_file_text(include);
+  };
+  YamlDocument document = YamlDocument::parse(text, file.string(), read_include);
   check_scene_root(document.root());
   for (const std::string& override_text : overrides) document.apply_override(override_text);
   document.resolve_variables();
-  return read_scene(document.root(), file);
+  SceneDescription description = read_scene(document.root(), file);
+  description.source_files = std::move(included);
+  return description;
 }
 
 }  // namespace rtpro

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace rtpro {
@@ -34,6 +35,8 @@ class ImageTileSink final : public TileSink {
   std::function<void(std::size_t)> on_tile_done;
   // Called after each tile's pixels are in the image, before on_tile_done, with its region.
   std::function<void(const PixelRegion&)> on_tile_pixels;
+  // Called with each tile before it lands, e.g. to record it in a resume journal.
+  std::function<void(const TileResult&)> on_tile_result;
 
   std::size_t tiles_done() const;
   RayCounts rays() const;
@@ -60,6 +63,14 @@ struct RenderOptions {
   // Called after each finished tile (from worker threads) with the image being rendered and the
   // tile's region, whose pixels are final there: live previews read them.
   std::function<void(const Image&, const PixelRegion&)> on_tile_pixels;
+  // Tiles of this grid rendered before (read back from a resume journal): they land in the image
+  // as they are and only the other tiles are rendered.
+  std::span<const TileResult> finished_tiles;
+  // Called (from worker threads) with each newly rendered tile before it lands in the image.
+  std::function<void(const TileResult&)> on_tile_result;
+  // Renders the tiles `source` hands out into `sink`; unset, this process's workers do
+  // (render_tiles). A distributed render shares them with other processes.
+  std::function<void(const TileRenderer&, const TileGrid&, TileSource&, TileSink&)> tile_executor;
 };
 
 struct RenderResult {

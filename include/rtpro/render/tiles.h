@@ -74,4 +74,17 @@ class AllTilesSource final : public TileSource {
   std::atomic<std::size_t> next_{0};
 };
 
+// The listed tiles once each, in the order given; stops early when `cancel` becomes true.
+class TileListSource final : public TileSource {
+ public:
+  explicit TileListSource(std::vector<std::size_t> indices, const std::atomic<bool>* cancel = nullptr)
+      : indices_(std::move(indices)), cancel_(cancel) {}
+  std::optional<std::size_t> next() override;
+
+ private:
+  std::vector<std::size_t> indices_;
+  const std::atomic<bool>* cancel_;
+  std::atomic<std::size_t> next_{0};
+};
+
 }  // namespace rtpro

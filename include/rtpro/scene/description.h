@@ -126,6 +126,10 @@ struct ObjectDesc {
 
 struct SceneDescription {
   std::filesystem::path file;
+  // Every scene text file the parser read: the file itself (unless it came from standard input)
+  // and each include. With the meshes and glTF files of the objects, these are what a pixel can
+  // depend on besides the settings: a resume journal and the ranks of a job hash them.
+  std::vector<std::filesystem::path> source_files;
   CameraDesc camera;
   RenderSettings render;
   std::vector<MaterialDesc> materials;  // index 0 is always "default"

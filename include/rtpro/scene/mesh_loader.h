@@ -24,6 +24,8 @@ struct MeshLoadStats {
   std::size_t concave_polygons = 0;   // triangulated by ear clipping instead of a fan
   bool normals_generated = false;
   std::vector<std::string> warnings;  // one line each, already "file:line: ..." formatted
+  // Files read besides the mesh file itself (MTL libraries, glTF buffers): a pixel depends on them.
+  std::vector<std::filesystem::path> files_read;
 };
 
 struct LoadedMesh {

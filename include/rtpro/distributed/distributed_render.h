@@ -1,0 +1,49 @@
+#pragma once
+// One image rendered by the ranks of a job. Rank 0 leads: it hands tiles out on request (a few
+// per worker thread, so no rank waits long and none holds much), renders with its own workers
+// too, and puts every finished tile in its sink as it arrives (the image, the resume journal, the
+// progress). The other ranks follow: they ask for tiles, render them and send each back as soon as
+// it is done, holding nothing but the tiles in flight. A tile's pixels depend on its region alone,
+// so the image is bit-identical for any number of ranks, threads and hand-out order.
+#include "rtpro/distributed/communicator.h"
+#include "rtpro/job/job_identity.h"
+#include "rtpro/render/shading.h"
+#include "rtpro/render/tile_renderer.h"
+#include "rtpro/render/tiles.h"
+
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+namespace rtpro {
+
+// What one rank did, for --stats: thread-seconds busy rendering tiles and idle waiting for them.
+struct RankStats {
+  int rank = 0;
+  std::uint64_t tiles = 0;
+  RayCounts rays;
+  double busy_seconds = 0.0;
+  double idle_seconds = 0.0;
+  std::uint64_t bytes_sent = 0;
+};
+
+// Before any work: rank 0 gathers every rank's identity and throws InputError naming the first
+// rank whose identity differs from its own, and how; the other ranks wait for rank 0's word.
+void agree_on_job(Communicator& communicator, const JobIdentity& identity);
+
+// Rank 0: renders the tiles `source` hands out, with its workers and the other ranks, into `sink`;
+// returns every rank's figures (indexed by rank) once all have finished. Stops handing out tiles
+// when the source does (it checks the cancel flag).
+std::vector<RankStats> lead_distributed_render(Communicator& communicator, const TileRenderer& renderer,
+                                               const TileGrid& grid, TileSource& source, TileSink& sink);
+
+// Other ranks: renders what rank 0 hands out until it has no more, or until `cancel` becomes true
+// (the tiles in flight are still finished and sent). `threads` sets how many tiles are asked for
+// ahead.
+void follow_distributed_render(Communicator& communicator, const TileRenderer& renderer, const TileGrid& grid,
+                               int threads, const std::atomic<bool>* cancel = nullptr);
+
+// Load imbalance: the busiest rank's busy time over the mean (1 is perfect balance).
+double load_imbalance(const std::vector<RankStats>& ranks);
+
+}  // namespace rtpro

@@ -1,0 +1,62 @@
+#pragma once
+// The resume journal kept beside an image while it renders (OUT.rtpro-journal): a header naming
+// the job (its JobIdentity) and then one tile record (tile_codec.h) per finished tile, each
+// appended with a single write(2) as the tile finishes, so a killed process loses at most the
+// tiles in flight. Records are not fsync'ed: they survive the death of the process, not of the
+// machine. `rtpro render --resume` reads the journal back, keeps the intact records of the same
+// job and renders only the other tiles; the image is then bit-identical to an uninterrupted one.
+#include "rtpro/job/job_identity.h"
+#include "rtpro/render/tiles.h"
+
+#include <cstddef>
+#include <filesystem>
+#include <mutex>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace rtpro {
+
+// "out.exr" → "out.exr.rtpro-journal".
+std::filesystem::path journal_path(const std::filesystem::path& output);
+
+struct JournalContents {
+  JobIdentity identity;
+  std::vector<TileResult> tiles;  // intact records of tiles of `grid`, each tile once
+  std::size_t dropped_records = 0;  // torn, corrupt or repeated records, and a torn tail
+};
+
+// Throws InputError naming the file when it cannot be read or does not start with an intact
+// journal header. Records are checked against `grid` and `channel_count`; compare the identity
+// before trusting them.
+JournalContents read_journal(const std::filesystem::path& file, const TileGrid& grid, int channel_count);
+
+class TileJournal {
+ public:
+  // Writes a new journal at `file` holding `identity` and the `kept` tiles (to a temporary file
+  // renamed into place, so an earlier journal is replaced only by a whole one). Throws
+  // RuntimeError when it cannot be written.
+  TileJournal(std::filesystem::path file, const JobIdentity& identity, int channel_count,
+              std::span<const TileResult> kept);
+  ~TileJournal();
+  TileJournal(const TileJournal&) = delete;
+  TileJournal& operator=(const TileJournal&) = delete;
+
+  // Appends one record; safe to call from several threads. A failed write (a full disk) stops
+  // the journal without failing the render: error() says why, and resume then renders more.
+  void append(const TileResult& tile);
+  std::string error() const;
+
+  // Closes and deletes the file: the image it was for is written.
+  void remove();
+  const std::filesystem::path& file() const { return file_; }
+
+ private:
+  std::filesystem::path file_;
+  int channel_count_;
+  int descriptor_ = -1;
+  mutable std::mutex mutex_;
+  std::string error_;
+};
+
+}  // namespace rtpro

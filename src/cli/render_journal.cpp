@@ -1,0 +1,77 @@
+#include "render_journal.h"
+
+#include "rtpro/core/error.h"
+
+#include <filesystem>
+
+namespace rtpro::cli {
+
+namespace {
+
+std::string quality_name(EmbreeBuildQuality quality) {
+  switch (quality) {
+    case EmbreeBuildQuality::kLow: return "low";
+    case EmbreeBuildQuality::kMedium: return "medium";
+    case EmbreeBuildQuality::kHigh: return "high";
+  }
+  return "?";
+}
+
+}  // namespace
+
+JobIdentity render_job_identity(const SceneDescription& description, const SceneBuildReport& report,
+                                const RenderScene& scene, const RenderJobSettings& settings) {
+  JobIdentity identity = scene_identity(description, report);
+  for (std::size_t i = 0; i < settings.overrides.size(); ++i)
+    identity.set("override " + std::to_string(i + 1), settings.overrides[i]);
+  identity.set("image", std::to_string(scene.camera.width) + "x" + std::to_string(scene.camera.height));
+  identity.set("spp", std::to_string(scene.render.spp));
+  identity.set("seed", std::to_string(scene.render.seed));
+  identity.set("max depth", std::to_string(scene.render.max_depth));
+  identity.set("backend", settings.backend);
+  if (settings.backend == "embree")
+    identity.set("embree", "quality " + quality_name(settings.backend_options.embree_quality) +
+                               (settings.backend_options.embree_robust ? ", robust" : ", not robust") +
+                               (settings.backend_options.embree_compact ? ", compact" : ""));
+  const PixelRegion& r = settings.region;
+  identity.set("region", std::to_string(r.x0) + "," + std::to_string(r.y0) + "," + std::to_string(r.x1) + "," +
+                             std::to_string(r.y1));
+  identity.set("tile size", std::to_string(settings.tile_size));
+  std::string channels;
+  for (const std::string& channel : settings.channels) channels += (channels.empty() ? "" : " ") + channel;
+  identity.set("channels", channels);
+  return identity;
+}
+
+OpenedJournal open_render_journal(const std::filesystem::path& output, const JobIdentity& identity,
+                                  const TileGrid& grid, int channel_count, bool resume, Log& log) {
+  const std::filesystem::path file = journal_path(output);
+  std::error_code error;
+  const bool exists = std::filesystem::exists(file, error);
+  OpenedJournal opened;
+  if (resume && !exists) {
+    log.warning("--resume: no journal at " + file.string() + "; rendering every tile");
+  } else if (resume) {
+    JournalContents contents = read_journal(file, grid, channel_count);
+    const std::vector<std::string> differences = identity.differences(contents.identity, "the journal");
+    if (!differences.empty()) {
+      std::string message = file.string() + ": the journal is of another render, so --resume cannot continue it:";
+      for (const std::string& line : differences) message += "\n  " + line;
+      message += "\nrender without --resume to start over";
+      throw InputError(message);
+    }
+    log.info("resuming: " + std::to_string(contents.tiles.size()) + " of " + std::to_string(grid.count()) +
+             " tiles from " + file.string() +
+             (contents.dropped_records > 0
+                  ? " (" + std::to_string(contents.dropped_records) + " damaged records dropped; their tiles render again)"
+                  : ""));
+    opened.finished = std::move(contents.tiles);
+  } else if (exists) {
+    log.warning("replacing the journal of an unfinished render at " + file.string() +
+                " (rtpro render --resume continues one)");
+  }
+  opened.journal = std::make_unique<TileJournal>(file, identity, channel_count, opened.finished);
+  return opened;
+}
+
+}  // namespace rtpro::cli

@@ -1,0 +1,43 @@
+#pragma once
+// The resume journal of one `rtpro render`: what identifies the job (scene files and every setting
+// that changes a pixel), and opening the journal beside the output, read back with --resume.
+#include "log.h"
+#include "rtpro/backend/backend.h"
+#include "rtpro/job/job_identity.h"
+#include "rtpro/job/tile_journal.h"
+#include "rtpro/render/film.h"
+#include "rtpro/render/tiles.h"
+#include "rtpro/scene/render_scene.h"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rtpro::cli {
+
+// What a pixel depends on besides the scene's files, as the render command knows it.
+struct RenderJobSettings {
+  std::vector<std::string> overrides;  // the scene overrides in command-line order, as typed
+  std::string backend;
+  BackendOptions backend_options;
+  PixelRegion region;
+  int tile_size = 0;
+  std::vector<std::string> channels;
+};
+
+JobIdentity render_job_identity(const SceneDescription& description, const SceneBuildReport& report,
+                                const RenderScene& scene, const RenderJobSettings& settings);
+
+struct OpenedJournal {
+  std::unique_ptr<TileJournal> journal;
+  std::vector<TileResult> finished;  // tiles read back with --resume
+};
+
+// With `resume`, reads the journal beside `output` (none: every tile is rendered, with a warning)
+// and refuses one of another job with an InputError listing what differs. Then starts the journal
+// afresh with the tiles kept, so torn or corrupt records are gone from it.
+OpenedJournal open_render_journal(const std::filesystem::path& output, const JobIdentity& identity,
+                                  const TileGrid& grid, int channel_count, bool resume, Log& log);
+
+}  // namespace rtpro::cli

@@ -1,0 +1,335 @@
+#include "rtpro/distributed/distributed_render.h"
+
+#include "rank_clock.h"
+#include "rtpro/core/error.h"
+#include "rtpro/job/tile_codec.h"
+#include "rtpro/render/renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <cstring>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace rtpro {
+
+namespace {
+
+enum Tag : int { kHello = 1, kVerdict = 2, kRequest = 3, kGrant = 4, kTile = 5, kDone = 6 };
+
+// While nothing has arrived: long enough not to spin a core away from the workers, short against
+// a tile's render time.
+constexpr auto kPollPause = std::chrono::microseconds(200);
+
+template <class T>
+std::vector<std::byte> bytes_of(const T& value) {
+  std::vector<std::byte> bytes(sizeof value);
+  std::memcpy(bytes.data(), &value, sizeof value);
+  return bytes;
+}
+
+template <class T>
+T value_of(const Message& message) {
+  T value{};
+  if (message.bytes.size() != sizeof value)
+    throw RuntimeError("distributed render: a message from rank " + std::to_string(message.source) + " has the wrong size");
+  std::memcpy(&value, message.bytes.data(), sizeof value);
+  return value;
+}
+
+Message wait_for_message(Communicator& communicator) {
+  while (true) {
+    if (std::optional<Message> message = communicator.poll()) return std::move(*message);
+    std::this_thread::sleep_for(kPollPause);
+  }
+}
+
+struct DoneRecord {
+  std::uint64_t tiles, camera, shadow, reflection, refraction;
+  double busy_seconds, idle_seconds;
+  std::uint64_t bytes_sent;
+};
+
+// Runs render_tiles on a thread of its own while the calling thread talks to the other ranks;
+// rethrows what the render threw.
+class BackgroundRender {
+ public:
+  BackgroundRender(const TileRenderer& renderer, const TileGrid& grid, TileSource& source, TileSink& sink,
+                   std::function<void()> on_finish)
+      : thread_([&, on_finish] {
+          try {
+            render_tiles(renderer, grid, source, sink);
+          } catch (...) {
+            error_ = std::current_exception();
+          }
+          finished_ = true;
+          on_finish();
+        }) {}
+  ~BackgroundRender() {
+    if (thread_.joinable()) thread_.join();
+  }
+  bool finished() const { return finished_.load(); }
+  void join() {
+    thread_.join();
+    if (error_) std::rethrow_exception(error_);
+  }
+
+ private:
+  std::atomic<bool> finished_{false};
+  std::exception_ptr error_;
+  std::thread thread_;
+};
+
+// A follower's tiles: indices granted by rank 0, taken by its workers.
+class GrantedTiles final : public TileSource {
+ public:
+  GrantedTiles(RankClock& clock, const std::atomic<bool>* cancel) : clock_(clock), cancel_(cancel) {}
+  std::optional<std::size_t> next() override {
+    const RankClock::Wait wait(clock_);
+    std::unique_lock lock(mutex_);
+    ready_.wait(lock, [&] { return !queue_.empty() || no_more_; });
+    if (queue_.empty() || (cancel_ && cancel_->load())) return std::nullopt;
+    const std::size_t index = queue_.front();
+    queue_.pop_front();
+    return index;
+  }
+  void add(const std::vector<std::uint64_t>& indices) {
+    {
+      const std::lock_guard lock(mutex_);
+      queue_.insert(queue_.end(), indices.begin(), indices.end());
+    }
+    ready_.notify_all();
+  }
+  void finish() {
+    {
+      const std::lock_guard lock(mutex_);
+      no_more_ = true;
+    }
+    ready_.notify_all();
+  }
+  std::size_t queued() {
+    const std::lock_guard lock(mutex_);
+    return queue_.size();
+  }
+
+ private:
+  RankClock& clock_;
+  const std::atomic<bool>* cancel_;
+  std::mutex mutex_;
+  std::condition_variable ready_;
+  std::deque<std::size_t> queue_;
+  bool no_more_ = false;
+};
+
+// A follower's finished tiles, waiting for the main thread to send them.
+class OutgoingTiles final : public TileSink {
+ public:
+  explicit OutgoingTiles(RankClock& clock) : clock_(clock) {}
+  void put(TileResult&& tile) override {
+    clock_.tile_done(tile);
+    {
+      const std::lock_guard lock(mutex_);
+      tiles_.push_back(std::move(tile));
+    }
+    changed_.notify_one();
+  }
+  std::deque<TileResult> take(std::chrono::microseconds wait) {
+    std::unique_lock lock(mutex_);
+    changed_.wait_for(lock, wait, [&] { return !tiles_.empty(); });
+    return std::exchange(tiles_, {});
+  }
+  void wake() { changed_.notify_one(); }
+
+ private:
+  RankClock& clock_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<TileResult> tiles_;
+};
+
+// Rank 0's own workers: timed like a follower's, tiles straight into the real sink.
+class TimedSource final : public TileSource {
+ public:
+  TimedSource(TileSource& inner, RankClock& clock) : inner_(inner), clock_(clock) {}
+  std::optional<std::size_t> next() override {
+    const RankClock::Wait wait(clock_);
+    return inner_.next();
+  }
+
+ private:
+  TileSource& inner_;
+  RankClock& clock_;
+};
+
+class TimedSink final : public TileSink {
+ public:
+  TimedSink(TileSink& inner, RankClock& clock) : inner_(inner), clock_(clock) {}
+  void put(TileResult&& tile) override {
+    clock_.tile_done(tile);
+    inner_.put(std::move(tile));
+  }
+
+ private:
+  TileSink& inner_;
+  RankClock& clock_;
+};
+
+}  // namespace
+
+void agree_on_job(Communicator& communicator, const JobIdentity& identity) {
+  const std::string text = identity.text();
+  if (communicator.rank() != 0) {
+    communicator.send(0, kHello, std::as_bytes(std::span(text)));
+    const Message verdict = wait_for_message(communicator);
+    if (verdict.tag != kVerdict) throw RuntimeError("distributed render: rank 0 did not answer the handshake");
+    return;
+  }
+  for (int pending = communicator.size() - 1; pending > 0; --pending) {
+    const Message hello = wait_for_message(communicator);
+    if (hello.tag != kHello)
+      throw RuntimeError("distributed render: rank " + std::to_string(hello.source) + " skipped the handshake");
+    const std::string_view theirs(reinterpret_cast<const char*>(hello.bytes.data()), hello.bytes.size());
+    const std::string rank_name = "rank " + std::to_string(hello.source);
+    const std::vector<std::string> differences =
+        identity.differences(JobIdentity::parse(theirs, rank_name), rank_name);
+    if (!differences.empty()) {
+      std::string message = rank_name + " would render another job than rank 0 (a different file, build or setting on "
+                            "its node):";
+      for (const std::string& line : differences) message += "\n  " + line;
+      throw InputError(message);
+    }
+  }
+  for (int rank = 1; rank < communicator.size(); ++rank) communicator.send(rank, kVerdict, {});
+}
+
+std::vector<RankStats> lead_distributed_render(Communicator& communicator, const TileRenderer& renderer,
+                                               const TileGrid& grid, TileSource& source, TileSink& sink) {
+  const int channels = renderer.layout().channel_count();
+  std::vector<RankStats> ranks(static_cast<std::size_t>(communicator.size()));
+  for (int r = 0; r < communicator.size(); ++r) ranks[std::size_t(r)].rank = r;
+  RankClock clock;
+  TimedSource local_source(source, clock);
+  TimedSink local_sink(sink, clock);
+  BackgroundRender render(renderer, grid, local_source, local_sink, [] {});
+
+  int following = communicator.size() - 1;
+  while (following > 0) {
+    std::optional<Message> message = communicator.poll();
+    if (!message) {
+      std::this_thread::sleep_for(kPollPause);
+      continue;
+    }
+    RankStats& from = ranks[std::size_t(message->source)];
+    switch (message->tag) {
+      case kRequest: {
+        const auto wanted = value_of<std::uint32_t>(*message);
+        std::vector<std::uint64_t> granted;
+        for (std::uint32_t i = 0; i < wanted; ++i) {
+          const std::optional<std::size_t> index = source.next();
+          if (!index) break;
+          granted.push_back(*index);
+        }
+        communicator.send(message->source, kGrant, std::as_bytes(std::span(granted)));
+        ranks[0].bytes_sent += granted.size() * sizeof(std::uint64_t);
+        break;
+      }
+      case kTile: {
+        std::optional<TileResult> tile = decode_tile(message->bytes, grid, channels);
+        if (!tile) throw RuntimeError("distributed render: rank " + std::to_string(message->source) + " sent a damaged tile");
+        sink.put(std::move(*tile));
+        break;
+      }
+      case kDone: {
+        const auto done = value_of<DoneRecord>(*message);
+        from.tiles = done.tiles;
+        from.rays = {done.camera, done.shadow, done.reflection, done.refraction};
+        from.busy_seconds = done.busy_seconds;
+        from.idle_seconds = done.idle_seconds;
+        from.bytes_sent = done.bytes_sent;
+        --following;
+        break;
+      }
+      default:
+        throw RuntimeError("distributed render: rank " + std::to_string(message->source) + " sent an unexpected message");
+    }
+  }
+  render.join();
+  ranks[0].tiles = clock.tiles();
+  ranks[0].rays = clock.rays();
+  ranks[0].busy_seconds = clock.busy_seconds();
+  ranks[0].idle_seconds = clock.idle_seconds();
+  return ranks;
+}
+
+void follow_distributed_render(Communicator& communicator, const TileRenderer& renderer, const TileGrid& grid,
+                               int threads, const std::atomic<bool>* cancel) {
+  const int channels = renderer.layout().channel_count();
+  RankClock clock;
+  GrantedTiles granted(clock, cancel);
+  OutgoingTiles outgoing(clock);
+  BackgroundRender render(renderer, grid, granted, outgoing, [&outgoing] { outgoing.wake(); });
+  // Ask for two tiles per thread whenever fewer than one per thread are left.
+  const auto ahead = static_cast<std::size_t>(std::max(1, threads));
+  std::uint64_t bytes_sent = 0;
+  bool asked = false, no_more = false;
+  while (true) {
+    for (const TileResult& tile : outgoing.take(kPollPause)) {
+      const std::vector<std::byte> bytes = encode_tile(tile, channels);
+      communicator.send(0, kTile, bytes);
+      bytes_sent += bytes.size();
+    }
+    if (render.finished()) {
+      std::deque<TileResult> last = outgoing.take(std::chrono::microseconds(0));
+      for (const TileResult& tile : last) {
+        const std::vector<std::byte> bytes = encode_tile(tile, channels);
+        communicator.send(0, kTile, bytes);
+        bytes_sent += bytes.size();
+      }
+      break;
+    }
+    if (!no_more && cancel && cancel->load()) {
+      no_more = true;  // the tiles in flight are finished and sent; the queued ones are left to rank 0's journal
+      granted.finish();
+    }
+    if (!no_more && !asked && granted.queued() < ahead) {
+      const auto wanted = static_cast<std::uint32_t>(2 * ahead - granted.queued());
+      communicator.send(0, kRequest, bytes_of(wanted));
+      bytes_sent += sizeof wanted;
+      asked = true;
+    }
+    while (std::optional<Message> message = communicator.poll()) {
+      if (message->tag != kGrant) throw RuntimeError("distributed render: rank 0 sent an unexpected message");
+      std::vector<std::uint64_t> indices(message->bytes.size() / sizeof(std::uint64_t));
+      std::memcpy(indices.data(), message->bytes.data(), indices.size() * sizeof(std::uint64_t));
+      for (std::uint64_t index : indices)
+        if (index >= grid.count()) throw RuntimeError("distributed render: rank 0 granted a tile outside the image");
+      asked = false;
+      if (indices.empty()) {
+        no_more = true;
+        granted.finish();
+      } else {
+        granted.add(indices);
+      }
+    }
+  }
+  render.join();
+  const RayCounts rays = clock.rays();
+  const DoneRecord done{clock.tiles(),        rays.camera,          rays.shadow, rays.reflection, rays.refraction,
+                        clock.busy_seconds(), clock.idle_seconds(), bytes_sent + sizeof(DoneRecord)};
+  communicator.send(0, kDone, bytes_of(done));
+}
+
+double load_imbalance(const std::vector<RankStats>& ranks) {
+  double most = 0.0, sum = 0.0;
+  for (const RankStats& r : ranks) {
+    most = std::max(most, r.busy_seconds);
+    sum += r.busy_seconds;
+  }
+  return sum > 0.0 ? most / (sum / static_cast<double>(ranks.size())) : 1.0;
+}
+
+}  // namespace rtpro

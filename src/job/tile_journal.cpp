@@ -1,0 +1,175 @@
+#include "rtpro/job/tile_journal.h"
+
+#include "rtpro/core/error.h"
+#include "rtpro/job/tile_codec.h"
+
+#include <xxhash.h>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <string_view>
+
+namespace rtpro {
+
+namespace {
+
+constexpr std::string_view kJournalMagic = "RTPRO-JOURNAL 1\n";
+// A job description is a few hundred bytes per file it names; a header claiming more is damage.
+constexpr std::uint64_t kMaxIdentityBytes = 16u << 20;
+
+bool write_all(int descriptor, const void* data, std::size_t size) {
+  const auto* bytes = static_cast<const char*>(data);
+  while (size > 0) {
+    const ssize_t wrote = ::write(descriptor, bytes, size);
+    if (wrote < 0 && errno == EINTR) continue;
+    if (wrote <= 0) return false;
+    bytes += wrote;
+    size -= static_cast<std::size_t>(wrote);
+  }
+  return true;
+}
+
+std::vector<std::byte> header_bytes(const JobIdentity& identity) {
+  const std::string text = identity.text();
+  const std::uint64_t length = text.size();
+  const std::uint64_t checksum = XXH3_64bits(text.data(), text.size());
+  std::vector<std::byte> bytes(kJournalMagic.size() + 2 * sizeof(std::uint64_t) + text.size());
+  std::byte* out = bytes.data();
+  std::memcpy(out, kJournalMagic.data(), kJournalMagic.size());
+  out += kJournalMagic.size();
+  std::memcpy(out, &length, sizeof length);
+  out += sizeof length;
+  std::memcpy(out, text.data(), text.size());
+  out += text.size();
+  std::memcpy(out, &checksum, sizeof checksum);
+  return bytes;
+}
+
+std::vector<std::byte> read_whole(const std::filesystem::path& file) {
+  const int descriptor = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (descriptor < 0) throw InputError(file.string() + ": cannot read the resume journal: " + std::strerror(errno));
+  std::vector<std::byte> bytes;
+  std::byte chunk[1 << 16];
+  while (true) {
+    const ssize_t got = ::read(descriptor, chunk, sizeof chunk);
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) {
+      const int error = errno;
+      ::close(descriptor);
+      throw InputError(file.string() + ": cannot read the resume journal: " + std::strerror(error));
+    }
+    if (got == 0) break;
+    bytes.insert(bytes.end(), chunk, chunk + got);
+  }
+  ::close(descriptor);
+  return bytes;
+}
+
+}  // namespace
+
+std::filesystem::path journal_path(const std::filesystem::path& output) {
+  std::filesystem::path journal = output;
+  journal += ".rtpro-journal";
+  return journal;
+}
+
+JournalContents read_journal(const std::filesystem::path& file, const TileGrid& grid, int channel_count) {
+  const std::vector<std::byte> bytes = read_whole(file);
+  const auto not_a_journal = [&](const std::string& why) {
+    return InputError(file.string() + ": not an intact rtpro resume journal (" + why +
+                      "); delete it to render from the start");
+  };
+  std::span<const std::byte> rest(bytes);
+  if (rest.size() < kJournalMagic.size() || std::memcmp(rest.data(), kJournalMagic.data(), kJournalMagic.size()) != 0)
+    throw not_a_journal("no journal header");
+  rest = rest.subspan(kJournalMagic.size());
+  std::uint64_t length = 0;
+  if (rest.size() < sizeof length) throw not_a_journal("the header is cut short");
+  std::memcpy(&length, rest.data(), sizeof length);
+  rest = rest.subspan(sizeof length);
+  if (length > kMaxIdentityBytes || rest.size() < length + sizeof(std::uint64_t))
+    throw not_a_journal("the header is cut short or damaged");
+  const std::string_view text(reinterpret_cast<const char*>(rest.data()), length);
+  std::uint64_t checksum = 0;
+  std::memcpy(&checksum, rest.data() + length, sizeof checksum);
+  if (XXH3_64bits(text.data(), text.size()) != checksum) throw not_a_journal("the header's checksum does not match");
+  JournalContents contents;
+  contents.identity = JobIdentity::parse(text, file.string());
+  rest = rest.subspan(length + sizeof checksum);
+
+  // A record whose header is damaged gives no trustworthy length: the records after it are lost
+  // too (their tiles are rendered again). A record with an intact header but a bad checksum is
+  // skipped by its length.
+  std::vector<bool> seen(grid.count(), false);
+  while (!rest.empty()) {
+    const std::optional<std::size_t> size = tile_record_size_from_header(rest, grid, channel_count);
+    if (!size || *size > rest.size()) {
+      ++contents.dropped_records;
+      break;
+    }
+    std::optional<TileResult> tile = decode_tile(rest.first(*size), grid, channel_count);
+    rest = rest.subspan(*size);
+    if (!tile || seen[tile->index]) {
+      ++contents.dropped_records;
+      continue;
+    }
+    seen[tile->index] = true;
+    contents.tiles.push_back(std::move(*tile));
+  }
+  return contents;
+}
+
+TileJournal::TileJournal(std::filesystem::path file, const JobIdentity& identity, int channel_count,
+                         std::span<const TileResult> kept)
+    : file_(std::move(file)), channel_count_(channel_count) {
+  std::filesystem::path temporary = file_;
+  temporary += ".tmp";
+  const auto fail = [&](const std::string& what) {
+    const std::string reason = std::strerror(errno);
+    if (descriptor_ >= 0) ::close(descriptor_);
+    descriptor_ = -1;
+    ::unlink(temporary.c_str());
+    return RuntimeError(file_.string() + ": cannot " + what + " the resume journal: " + reason);
+  };
+  descriptor_ = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (descriptor_ < 0) throw fail("create");
+  const std::vector<std::byte> header = header_bytes(identity);
+  if (!write_all(descriptor_, header.data(), header.size())) throw fail("write");
+  for (const TileResult& tile : kept) {
+    const std::vector<std::byte> record = encode_tile(tile, channel_count_);
+    if (!write_all(descriptor_, record.data(), record.size())) throw fail("write");
+  }
+  if (::rename(temporary.c_str(), file_.c_str()) != 0) throw fail("rename");
+}
+
+TileJournal::~TileJournal() {
+  if (descriptor_ >= 0) ::close(descriptor_);
+}
+
+void TileJournal::append(const TileResult& tile) {
+  const std::vector<std::byte> record = encode_tile(tile, channel_count_);
+  const std::lock_guard lock(mutex_);
+  if (descriptor_ < 0 || !error_.empty()) return;
+  if (!write_all(descriptor_, record.data(), record.size()))
+    error_ = file_.string() + ": cannot write the resume journal (" + std::strerror(errno) +
+             "): tiles finished from now on are not recorded";
+}
+
+std::string TileJournal::error() const {
+  const std::lock_guard lock(mutex_);
+  return error_;
+}
+
+void TileJournal::remove() {
+  const std::lock_guard lock(mutex_);
+  if (descriptor_ >= 0) ::close(descriptor_);
+  descriptor_ = -1;
+  ::unlink(file_.c_str());
+}
+
+}  // namespace rtpro

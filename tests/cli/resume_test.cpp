@@ -1,0 +1,182 @@
+// `rtpro render --resume` through the real binary: a render killed at any moment and resumed gives
+// the image of an uninterrupted render, bit for bit; a journal of another job is refused.
+#include "rtpro/image/image_io.h"
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+namespace rtpro {
+namespace {
+
+using test::rtpro_executable;
+using test::run_command;
+
+const char* kScene = R"(rtpro: 1
+camera: {position: [0, 1.5, 6], look_at: [0, 0.5, 0], fov: 40, resolution: [96, 64]}
+render: {spp: 64, max_depth: 3, seed: 3}
+materials:
+  red: {color: [0.9, 0.2, 0.2], reflectivity: 0.3}
+  glass: {color: [1, 1, 1], ior: 1.5, specular: 0.5}
+lights:
+  - {type: point, position: [4, 6, 5], color: [1, 1, 1], intensity: 1}
+world:
+  - {type: sphere, center: [0, -1000, 0], radius: 1000}
+  - {type: sphere, center: [-1, 0.7, 0], radius: 0.7, material: red}
+  - {type: sphere, center: [1, 0.6, 0], radius: 0.6, material: glass}
+)";
+
+// 6 × 4 tiles of 16 × 16 pixels; beauty plus the albedo AOV, so AOVs are journaled too.
+const std::string kArgs = " --tile-size 16 --aov albedo --spp 256";
+constexpr std::size_t kTiles = 24;
+constexpr std::size_t kRecordBytes = 72 + 16 * 16 * 6 * 4 + 8;
+
+std::string render_cmd(const std::filesystem::path& scene, const std::filesystem::path& out, const std::string& extra) {
+  return rtpro_executable().string() + " render " + scene.string() + " -o " + out.string() + kArgs + " " + extra;
+}
+
+std::string quiet_render_cmd(const std::filesystem::path& scene, const std::filesystem::path& out,
+                             const std::string& extra) {
+  return render_cmd(scene, out, extra + " -q");
+}
+
+std::uintmax_t file_size_or_zero(const std::filesystem::path& file) {
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(file, error);
+  return error ? 0 : size;
+}
+
+// Tiles recorded so far: (size − header) / record size; the header states its own length.
+std::size_t recorded_tiles(const std::filesystem::path& journal) {
+  std::ifstream in(journal, std::ios::binary);
+  char magic[16];
+  std::uint64_t length = 0;
+  if (!in.read(magic, sizeof magic) || !in.read(reinterpret_cast<char*>(&length), sizeof length)) return 0;
+  const std::uintmax_t header = sizeof magic + 2 * sizeof length + length;
+  const std::uintmax_t size = file_size_or_zero(journal);
+  return size > header ? static_cast<std::size_t>((size - header) / kRecordBytes) : 0;
+}
+
+void expect_same_pixels(const std::filesystem::path& a, const std::filesystem::path& b) {
+  const Image x = read_image(a), y = read_image(b);
+  ASSERT_EQ(x.channels, y.channels);
+  ASSERT_EQ(x.data.size(), y.data.size());
+  EXPECT_EQ(std::memcmp(x.data.data(), y.data.data(), x.data.size() * sizeof(float)), 0) << a << " vs " << b;
+}
+
+// Starts a single-threaded render, SIGKILLs it once its journal holds `tiles` records.
+void kill_after(const std::filesystem::path& scene, const std::filesystem::path& out, std::size_t tiles) {
+  const std::filesystem::path journal = out.string() + ".rtpro-journal";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string exe = rtpro_executable().string();
+    execl(exe.c_str(), exe.c_str(), "render", scene.c_str(), "-o", out.c_str(), "--threads", "1", "--tile-size", "16",
+          "--aov", "albedo", "-q", "--spp", "256", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    if (std::filesystem::exists(journal) && recorded_tiles(journal) >= tiles) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(500));
+  }
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the render finished before it could be killed after " << tiles << " tiles";
+}
+
+TEST(Resume, KilledRenderResumesBitIdenticallyAtEveryMoment) {
+  const auto dir = test::scratch_dir();
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto whole = dir / "whole.exr";
+  ASSERT_EQ(run_command(quiet_render_cmd(scene, whole, "")), 0);
+  EXPECT_FALSE(std::filesystem::exists(whole.string() + ".rtpro-journal")) << "a finished render keeps no journal";
+
+  for (std::size_t tiles : {std::size_t(0), std::size_t(5), kTiles - 3}) {
+    SCOPED_TRACE("killed after " + std::to_string(tiles) + " tiles");
+    const auto out = dir / ("resumed" + std::to_string(tiles) + ".exr");
+    std::ofstream(out) << "a previous good image";
+    kill_after(scene, out, tiles);
+    std::ifstream previous(out);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(previous), {}), "a previous good image");
+    ASSERT_TRUE(std::filesystem::exists(out.string() + ".rtpro-journal"));
+
+    // Resumed with another thread count: only the pixels' own inputs matter.
+    std::string output;
+    ASSERT_EQ(run_command(quiet_render_cmd(scene, out, "--resume --threads 2"), &output), 0) << output;
+    expect_same_pixels(whole, out);
+    EXPECT_FALSE(std::filesystem::exists(out.string() + ".rtpro-journal"));
+  }
+}
+
+TEST(Resume, CorruptRecordIsRenderedAgainAndTheImageStaysExact) {
+  const auto dir = test::scratch_dir();
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto whole = dir / "whole.exr", out = dir / "out.exr";
+  ASSERT_EQ(run_command(quiet_render_cmd(scene, whole, "")), 0);
+  kill_after(scene, out, 8);
+  const std::filesystem::path journal = out.string() + ".rtpro-journal";
+  {
+    std::fstream f(journal, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekg(0, std::ios::end);
+    const auto size = static_cast<long>(f.tellg());
+    f.seekp(size - static_cast<long>(kRecordBytes) * 2 + 200);  // a pixel byte of the second-to-last record
+    char byte = 0;
+    f.seekg(f.tellp());
+    f.read(&byte, 1);
+    byte = static_cast<char>(byte ^ 0x21);
+    f.seekp(size - static_cast<long>(kRecordBytes) * 2 + 200);
+    f.write(&byte, 1);
+  }
+  std::string output;
+  ASSERT_EQ(run_command(render_cmd(scene, out, "--resume"), &output), 0) << output;
+  EXPECT_NE(output.find("1 damaged records dropped"), std::string::npos) << output;
+  expect_same_pixels(whole, out);
+}
+
+TEST(Resume, JournalOfAnotherJobIsRefusedWithWhatDiffers) {
+  const auto dir = test::scratch_dir();
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto out = dir / "out.exr";
+  kill_after(scene, out, 2);
+  const std::filesystem::path journal = out.string() + ".rtpro-journal";
+
+  std::string output;
+  EXPECT_EQ(run_command(render_cmd(scene, out, "--set render.spp=64 --resume"), &output), 2);
+  EXPECT_NE(output.find(journal.string()), std::string::npos) << output;
+  EXPECT_NE(output.find("spp: 64 here, 256 in the journal"), std::string::npos) << output;
+
+  std::string changed = kScene;
+  changed.replace(changed.find("intensity: 1"), 12, "intensity: 2");
+  test::write_file("scene.yaml", changed);
+  EXPECT_EQ(run_command(render_cmd(scene, out, "--resume"), &output), 2);
+  EXPECT_NE(output.find("scene " + scene.string() + ": "), std::string::npos) << output;
+  EXPECT_FALSE(std::filesystem::exists(out)) << "a refused resume writes no image";
+  EXPECT_TRUE(std::filesystem::exists(journal)) << "and keeps the journal";
+
+  std::ofstream(journal, std::ios::trunc) << "not a journal";
+  EXPECT_EQ(run_command(render_cmd(scene, out, "--resume"), &output), 2);
+  EXPECT_NE(output.find("not an intact rtpro resume journal"), std::string::npos) << output;
+}
+
+TEST(Resume, WithoutAJournalRendersEverythingAndNoJournalKeepsNone) {
+  const auto dir = test::scratch_dir();
+  const auto scene = test::write_file("scene.yaml", kScene);
+  std::string output;
+  EXPECT_EQ(run_command(render_cmd(scene, dir / "a.exr", "--resume"), &output), 0) << output;
+  EXPECT_NE(output.find("no journal"), std::string::npos) << output;
+  EXPECT_EQ(run_command(render_cmd(scene, dir / "b.exr", "--no-journal --resume"), &output), 2);
+  EXPECT_NE(output.find("--no-journal"), std::string::npos) << output;
+}
+
+}  // namespace
+}  // namespace rtpro

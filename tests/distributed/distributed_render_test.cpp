@@ -1,0 +1,162 @@
+// The tile scheduler without MPI: ranks are threads of this process talking through mailboxes,
+// so every hand-out order the scheduler allows is exercised under the sanitizers too.
+#include "rtpro/distributed/distributed_render.h"
+
+#include "rtpro/backend/backend.h"
+#include "rtpro/core/error.h"
+#include "rtpro/render/renderer.h"
+#include "test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <condition_variable>
+#include <cstring>
+#include <deque>
+#include <mutex>
+#include <thread>
+
+namespace rtpro {
+namespace {
+
+// Mailboxes of every rank of an in-process job; messages between two ranks stay in order.
+struct Mailboxes {
+  explicit Mailboxes(int ranks) : boxes(static_cast<std::size_t>(ranks)) {}
+  std::mutex mutex;
+  std::vector<std::deque<Message>> boxes;
+  std::uint64_t bytes = 0;
+};
+
+class ThreadCommunicator final : public Communicator {
+ public:
+  ThreadCommunicator(Mailboxes& mail, int rank) : mail_(mail), rank_(rank) {}
+  int rank() const override { return rank_; }
+  int size() const override { return static_cast<int>(mail_.boxes.size()); }
+  void send(int destination, int tag, std::span<const std::byte> bytes) override {
+    const std::lock_guard lock(mail_.mutex);
+    mail_.boxes[std::size_t(destination)].push_back({rank_, tag, {bytes.begin(), bytes.end()}});
+    mail_.bytes += bytes.size();
+  }
+  std::optional<Message> poll() override {
+    const std::lock_guard lock(mail_.mutex);
+    auto& box = mail_.boxes[std::size_t(rank_)];
+    if (box.empty()) return std::nullopt;
+    Message message = std::move(box.front());
+    box.pop_front();
+    return message;
+  }
+  [[noreturn]] void abort(int) override { std::abort(); }
+
+ private:
+  Mailboxes& mail_;
+  int rank_;
+};
+
+RenderScene test_scene() {
+  RenderScene scene = test::random_mixed_scene(5, 200, 200, 6);
+  test::set_camera(scene, 45, 31);
+  scene.render.spp = 4;
+  return scene;
+}
+
+struct JobResult {
+  RenderResult image;
+  std::vector<RankStats> ranks;
+};
+
+JobResult render_as_job(const RenderScene& scene, const Backend& backend, int ranks, int tile_size) {
+  Mailboxes mail(ranks);
+  RenderOptions options;
+  options.tile_size = tile_size;
+  options.aovs = {Aov::kAlbedo, Aov::kDepth};
+  const FilmLayout layout(options.aovs);
+  const TileGrid grid(checked_region(scene, options), tile_size);
+  JobResult result;
+  std::vector<std::thread> followers;
+  for (int rank = 1; rank < ranks; ++rank)
+    followers.emplace_back([&, rank] {
+      ThreadCommunicator communicator(mail, rank);
+      const TileRenderer renderer(scene, backend, layout);
+      follow_distributed_render(communicator, renderer, grid, 1);
+    });
+  ThreadCommunicator leader(mail, 0);
+  options.tile_executor = [&](const TileRenderer& renderer, const TileGrid& tiles, TileSource& source, TileSink& sink) {
+    result.ranks = lead_distributed_render(leader, renderer, tiles, source, sink);
+  };
+  result.image = render_image(scene, backend, options);
+  for (auto& follower : followers) follower.join();
+  return result;
+}
+
+TEST(DistributedRender, ImageIsBitIdenticalForAnyRankCountAndTileSize) {
+  const RenderScene scene = test_scene();
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
+  RenderOptions options;
+  options.aovs = {Aov::kAlbedo, Aov::kDepth};
+  options.tile_size = 8;
+  const RenderResult alone = render_image(scene, *backend, options);
+  for (int ranks : {1, 2, 3, 4})
+    for (int tile_size : {8, 5}) {
+      SCOPED_TRACE(std::to_string(ranks) + " ranks, tiles of " + std::to_string(tile_size));
+      const JobResult job = render_as_job(scene, *backend, ranks, tile_size);
+      ASSERT_TRUE(job.image.complete());
+      ASSERT_EQ(job.image.image.data.size(), alone.image.data.size());
+      EXPECT_EQ(std::memcmp(job.image.image.data.data(), alone.image.data.data(), alone.image.data.size() * sizeof(float)), 0);
+      EXPECT_EQ(job.image.rays.total(), alone.rays.total());
+      ASSERT_EQ(job.ranks.size(), std::size_t(ranks));
+      std::uint64_t tiles = 0, rays = 0;
+      for (const RankStats& r : job.ranks) {
+        tiles += r.tiles;
+        rays += r.rays.total();
+        EXPECT_GE(r.busy_seconds, 0.0);
+      }
+      EXPECT_EQ(tiles, job.image.tiles_total);
+      EXPECT_EQ(rays, alone.rays.total());
+      for (std::size_t r = 1; r < job.ranks.size(); ++r)
+        if (job.ranks[r].tiles > 0) {
+          EXPECT_GT(job.ranks[r].bytes_sent, 0u);
+        }
+    }
+}
+
+TEST(DistributedRender, HandshakeNamesTheRankAndWhatDiffers) {
+  Mailboxes mail(3);
+  JobIdentity ours;
+  ours.set("rtpro", "1");
+  ours.set("mesh dragon.ply", "aaaa");
+  JobIdentity theirs = ours;
+  theirs.set("mesh dragon.ply", "bbbb");
+  std::thread same([&] {
+    ThreadCommunicator c(mail, 1);
+    agree_on_job(c, ours);
+  });
+  std::thread other([&] {
+    ThreadCommunicator c(mail, 2);
+    const std::string text = theirs.text();
+    c.send(0, 1, std::as_bytes(std::span(text)));  // its hello, without waiting for the verdict
+  });
+  ThreadCommunicator leader(mail, 0);
+  try {
+    agree_on_job(leader, ours);
+    FAIL() << "a rank with another mesh was accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("rank 2"), std::string::npos) << message;
+    EXPECT_NE(message.find("mesh dragon.ply: aaaa here, bbbb in rank 2"), std::string::npos) << message;
+  }
+  other.join();
+  // Rank 1 waits for a verdict that never comes (in a real job MPI_Abort ends it): release it.
+  leader.send(1, 2, {});
+  same.join();
+}
+
+TEST(DistributedRender, LoadImbalanceIsBusiestOverMean) {
+  std::vector<RankStats> ranks(2);
+  ranks[0].busy_seconds = 3.0;
+  ranks[1].busy_seconds = 1.0;
+  EXPECT_DOUBLE_EQ(load_imbalance(ranks), 1.5);
+  ranks[1].busy_seconds = 3.0;
+  EXPECT_DOUBLE_EQ(load_imbalance(ranks), 1.0);
+}
+
+}  // namespace
+}  // namespace rtpro

@@ -1,0 +1,183 @@
+// `mpirun -n N rtpro render` through the real binary and Open MPI's real mpirun (oversubscribed on
+// this machine): the image is bit-identical to one process for any ranks, threads, tile sizes and
+// both backends; ranks that would render different things are refused; a killed rank ends the job
+// without touching the output, and --resume finishes it exactly.
+#include "rtpro/image/image_io.h"
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <fstream>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+namespace rtpro {
+namespace {
+
+using test::rtpro_executable;
+using test::run_command;
+
+const char* kScene = R"(rtpro: 1
+camera: {position: [0, 1.5, 6], look_at: [0, 0.5, 0], fov: 40, resolution: [80, 56]}
+render: {spp: 16, max_depth: 4, seed: 9}
+materials:
+  red: {color: [0.9, 0.2, 0.2], reflectivity: 0.3}
+  glass: {color: [1, 1, 1], ior: 1.5, specular: 0.5}
+  floor: {color: {checker: {size: 0.5, colors: [[0.8, 0.8, 0.8], [0.2, 0.2, 0.2]]}}}
+lights:
+  - {type: point, position: [4, 6, 5], color: [1, 1, 1], intensity: 1}
+  - {type: directional, direction: [-1, -2, -1], intensity: 0.3}
+world:
+  - {type: sphere, center: [0, -1000, 0], radius: 1000, material: floor}
+  - {type: sphere, center: [-1, 0.7, 0], radius: 0.7, material: red}
+  - {type: sphere, center: [1, 0.6, 0], radius: 0.6, material: glass}
+  - {type: sphere, center: [0, 0.3, 1.5], radius: 0.3}
+)";
+
+const std::string kAovs = " --aov albedo,normal,depth,object-id";
+
+// Open MPI refuses root without these, and more ranks than cores without oversubscription;
+// --bind-to none lets each rank's threads run on any core.
+std::string mpirun(int ranks) {
+  return "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 " RTPRO_MPIEXEC
+         " --bind-to none -n " +
+         std::to_string(ranks) + " ";
+}
+
+std::string render_args(const std::filesystem::path& scene, const std::filesystem::path& out) {
+  return rtpro_executable().string() + " render " + scene.string() + " -o " + out.string() + kAovs + " -q";
+}
+
+void expect_same_pixels(const std::filesystem::path& reference, const std::filesystem::path& test) {
+  const Image a = read_image(reference), b = read_image(test);
+  ASSERT_EQ(a.channels, b.channels);
+  ASSERT_EQ(a.data.size(), b.data.size());
+  EXPECT_EQ(std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)), 0) << test << " differs from " << reference;
+}
+
+TEST(MpiJob, ImageIsBitIdenticalToOneProcessForAnyRanksThreadsAndTiles) {
+  const auto dir = test::scratch_dir();
+  const auto scene = test::write_file("scene.yaml", kScene);
+  struct Run {
+    int ranks, threads, tile_size;
+  };
+  for (const std::string backend : {"native", "embree"}) {
+    const auto reference = dir / (backend + ".exr");
+    ASSERT_EQ(run_command(render_args(scene, reference) + " --backend " + backend), 0);
+    for (const Run run : {Run{1, 2, 16}, Run{2, 1, 7}, Run{3, 2, 16}, Run{4, 1, 5}}) {
+      const std::string name = backend + std::to_string(run.ranks) + "x" + std::to_string(run.threads) + "t" +
+                               std::to_string(run.tile_size);
+      SCOPED_TRACE(name);
+      const auto out = dir / (name + ".exr");
+      const auto stats = dir / (name + ".json");
+      std::string output;
+      ASSERT_EQ(run_command(mpirun(run.ranks) + render_args(scene, out) + " --backend " + backend + " --threads " +
+                                std::to_string(run.threads) + " --tile-size " + std::to_string(run.tile_size) +
+                                " --stats-json " + stats.string(),
+                            &output),
+                0)
+          << output;
+      expect_same_pixels(reference, out);
+      EXPECT_FALSE(std::filesystem::exists(out.string() + ".rtpro-journal"));
+      std::ifstream json(stats);
+      const std::string text((std::istreambuf_iterator<char>(json)), {});
+      if (run.ranks > 1) {
+        EXPECT_NE(text.find("\"load_imbalance\""), std::string::npos) << text;
+        EXPECT_NE(text.find("\"rank\": " + std::to_string(run.ranks - 1)), std::string::npos) << text;
+      }
+    }
+  }
+}
+
+TEST(MpiJob, RanksThatWouldRenderSomethingElseAreRefused) {
+  const auto dir = test::scratch_dir();
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto out = dir / "out.exr";
+  // Open MPI's MPMD form: rank 0 and rank 1 run different command lines.
+  std::string output;
+  const int code = run_command(mpirun(1) + render_args(scene, out) + " : -n 1 " + render_args(scene, out) +
+                                   " --set render.seed=10",
+                               &output);
+  EXPECT_EQ(code, 2) << output;
+  EXPECT_NE(output.find("rank 1 would render another job than rank 0"), std::string::npos) << output;
+  EXPECT_NE(output.find("seed: 9 here, 10 in rank 1"), std::string::npos) << output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// The process id of rank `rank` among mpirun's children, from the rank Open MPI puts in their
+// environment; 0 while they are not all started.
+pid_t rank_process(pid_t mpirun_pid, int rank) {
+  const std::string wanted = "OMPI_COMM_WORLD_RANK=" + std::to_string(rank);
+  for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+    const std::string name = entry.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream stat(entry.path() / "stat");
+    std::string pid, comm, state;
+    pid_t parent = 0;
+    if (!(stat >> pid >> comm >> state >> parent) || parent != mpirun_pid) continue;
+    std::ifstream environ(entry.path() / "environ", std::ios::binary);
+    for (std::string variable; std::getline(environ, variable, '\0');)
+      if (variable == wanted) return static_cast<pid_t>(std::stol(name));
+  }
+  return 0;
+}
+
+TEST(MpiJob, KilledRankEndsTheJobAndResumeFinishesItExactly) {
+  const auto dir = test::scratch_dir();
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto reference = dir / "reference.exr", out = dir / "out.exr";
+  const std::filesystem::path journal = out.string() + ".rtpro-journal";
+  ASSERT_EQ(run_command(render_args(scene, reference) + " --spp 1024"), 0);
+  std::ofstream(out) << "a previous good image";
+
+  const pid_t job = fork();
+  ASSERT_GE(job, 0);
+  if (job == 0) {
+    setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+    setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+    setenv("OMPI_MCA_rmaps_base_oversubscribe", "1", 1);
+    const std::string exe = rtpro_executable().string();
+    execl(RTPRO_MPIEXEC, RTPRO_MPIEXEC, "--bind-to", "none", "-n", "3", exe.c_str(), "render", scene.c_str(), "-o",
+          out.c_str(), "--aov", "albedo,normal,depth,object-id", "-q", "--spp", "1024", "--threads", "1",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Kill rank 1 once the journal holds some tiles (the records after the header).
+  int status = 0;
+  bool killed = false;
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!killed && waitpid(job, &status, WNOHANG) == 0 && std::chrono::steady_clock::now() < give_up) {
+    std::error_code error;
+    const auto size = std::filesystem::file_size(journal, error);
+    if (!error && size > 40000) {
+      if (const pid_t victim = rank_process(job, 1)) {
+        kill(victim, SIGKILL);
+        killed = true;
+      }
+    }
+    if (!killed) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ASSERT_TRUE(killed) << "the job ended before a rank could be killed";
+  const auto sent = std::chrono::steady_clock::now();
+  waitpid(job, &status, 0);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+  EXPECT_LT(seconds, 10.0) << "the job did not end soon after a rank died";
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_NE(WEXITSTATUS(status), 0);
+  std::ifstream previous(out);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(previous), {}), "a previous good image");
+  ASSERT_TRUE(std::filesystem::exists(journal));
+
+  // Resumed by a job of another size; then the image is the uninterrupted one, bit for bit.
+  std::string output;
+  ASSERT_EQ(run_command(mpirun(2) + render_args(scene, out) + " --spp 1024 --resume", &output), 0) << output;
+  expect_same_pixels(reference, out);
+  EXPECT_FALSE(std::filesystem::exists(journal));
+}
+
+}  // namespace
+}  // namespace rtpro

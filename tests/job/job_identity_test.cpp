@@ -1,0 +1,64 @@
+// Job identities: text round trip, readable differences, and digests that follow file contents.
+#include "rtpro/core/error.h"
+#include "rtpro/job/job_identity.h"
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace rtpro {
+namespace {
+
+TEST(JobIdentity, TextRoundTripsAndDifferencesNameKeyAndBothValues) {
+  JobIdentity a;
+  a.set("rtpro", "0.1.0");
+  a.set("spp", "16");
+  a.set("mesh dragon.ply", "00ff");
+  EXPECT_EQ(JobIdentity::parse(a.text(), "test"), a);
+  EXPECT_TRUE(a.differences(a, "b").empty());
+
+  JobIdentity b = a;
+  b.set("spp", "64");  // replaces, keeps the order
+  b.set("region", "0,0,8,8");
+  EXPECT_EQ(b.entries()[1].second, "64");
+  const std::vector<std::string> d = a.differences(b, "the journal");
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[0], "spp: 16 here, 64 in the journal");
+  EXPECT_EQ(d[1], "region: absent here, 0,0,8,8 in the journal");
+}
+
+TEST(JobIdentity, MalformedTextIsAnInputError) {
+  EXPECT_THROW(JobIdentity::parse("spp 16\n", "j"), InputError);
+  EXPECT_THROW(JobIdentity::parse("spp: 16", "j"), InputError);
+  EXPECT_THROW(JobIdentity::parse(": 16\n", "j"), InputError);
+  EXPECT_EQ(JobIdentity::parse("", "j").entries().size(), 0u);
+}
+
+TEST(JobIdentity, FileDigestFollowsContentsNotNames) {
+  const auto a = test::write_file("a.obj", "v 0 0 0\n");
+  const auto b = test::write_file("b.obj", "v 0 0 0\n");
+  const auto c = test::write_file("c.obj", "v 0 0 1\n");
+  EXPECT_EQ(file_digest(a), file_digest(b));
+  EXPECT_NE(file_digest(a), file_digest(c));
+  EXPECT_EQ(file_digest(a), text_digest("v 0 0 0\n"));
+  EXPECT_EQ(file_digest(a).size(), 16u);
+  EXPECT_THROW(file_digest(a.parent_path() / "absent.obj"), InputError);
+}
+
+TEST(JobIdentity, SceneIdentityCoversSourcesMeshesAndWhatTheyRead) {
+  SceneDescription description;
+  description.source_files = {test::write_file("scene.yaml", "rtpro: 1\n"), test::write_file("inc.yaml", "{}\n")};
+  SceneBuildReport report;
+  report.meshes.push_back({test::write_file("m.obj", "mtllib m.mtl\n").string(), {}, 0.0});
+  report.meshes.back().stats.files_read.push_back(test::write_file("m.mtl", "newmtl a\n"));
+  const JobIdentity before = scene_identity(description, report);
+  EXPECT_EQ(before.entries().size(), 5u);  // rtpro version + 4 files
+  test::write_file("m.mtl", "newmtl b\n");
+  const std::vector<std::string> d = scene_identity(description, report).differences(before, "the journal");
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_NE(d[0].find("m.mtl"), std::string::npos) << d[0];
+}
+
+}  // namespace
+}  // namespace rtpro

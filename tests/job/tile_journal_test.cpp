@@ -1,0 +1,155 @@
+// The resume journal on disk: what is appended is read back; damage costs only the damaged tiles.
+#include "rtpro/core/error.h"
+#include "rtpro/job/tile_codec.h"
+#include "rtpro/job/tile_journal.h"
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+#include <thread>
+
+namespace rtpro {
+namespace {
+
+constexpr int kChannels = 3;
+
+TileResult tile_of(const TileGrid& grid, std::size_t index) {
+  TileResult tile;
+  tile.index = index;
+  tile.region = grid.tile(index);
+  tile.rays.camera = index + 1;
+  tile.pixels.assign(tile.region.pixel_count() * kChannels, 0.25f * float(index));
+  return tile;
+}
+
+JobIdentity identity_of(const std::string& spp) {
+  JobIdentity identity;
+  identity.set("rtpro", "test");
+  identity.set("spp", spp);
+  return identity;
+}
+
+std::vector<char> bytes_of(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_bytes(const std::filesystem::path& file, const std::vector<char>& bytes) {
+  std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+TEST(TileJournal, AppendedTilesFromSeveralThreadsAreReadBack) {
+  const TileGrid grid({0, 0, 40, 30}, 8);
+  const auto file = test::scratch_dir() / "out.exr.rtpro-journal";
+  const std::vector<TileResult> kept{tile_of(grid, 7)};
+  {
+    TileJournal journal(file, identity_of("16"), kChannels, kept);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t)
+      threads.emplace_back([&, t] {
+        for (std::size_t i = std::size_t(t); i < 12; i += 4)
+          if (i != 7) journal.append(tile_of(grid, i));
+      });
+    for (auto& thread : threads) thread.join();
+    EXPECT_EQ(journal.error(), "");
+  }
+  const JournalContents contents = read_journal(file, grid, kChannels);
+  EXPECT_EQ(contents.identity, identity_of("16"));
+  EXPECT_EQ(contents.dropped_records, 0u);
+  ASSERT_EQ(contents.tiles.size(), 12u);
+  EXPECT_EQ(contents.tiles.front().index, 7u);  // the kept tiles come first
+  std::vector<bool> seen(12, false);
+  for (const TileResult& tile : contents.tiles) {
+    seen[tile.index] = true;
+    EXPECT_EQ(tile.pixels, tile_of(grid, tile.index).pixels);
+    EXPECT_EQ(tile.rays.camera, tile.index + 1);
+  }
+  for (bool s : seen) EXPECT_TRUE(s);
+}
+
+TEST(TileJournal, TornTailAndCorruptRecordLoseOnlyTheirTiles) {
+  const TileGrid grid({0, 0, 16, 16}, 8);
+  const auto file = test::scratch_dir() / "j";
+  {
+    TileJournal journal(file, identity_of("4"), kChannels, {});
+    for (std::size_t i = 0; i < 4; ++i) journal.append(tile_of(grid, i));
+  }
+  const std::vector<char> whole = bytes_of(file);
+  const std::size_t record = tile_record_size(grid.tile(0), kChannels);
+  const std::size_t header = whole.size() - 4 * record;
+
+  // Cut inside the last record, as a kill during its write would.
+  write_bytes(file, std::vector<char>(whole.begin(), whole.end() - 10));
+  JournalContents torn = read_journal(file, grid, kChannels);
+  EXPECT_EQ(torn.tiles.size(), 3u);
+  EXPECT_EQ(torn.dropped_records, 1u);
+
+  // A flipped pixel byte in record 1: that tile alone is dropped.
+  std::vector<char> flipped = whole;
+  flipped[header + record + kTileRecordHeaderBytes + 5] ^= 0x40;
+  write_bytes(file, flipped);
+  JournalContents corrupt = read_journal(file, grid, kChannels);
+  ASSERT_EQ(corrupt.tiles.size(), 3u);
+  EXPECT_EQ(corrupt.dropped_records, 1u);
+  for (const TileResult& tile : corrupt.tiles) EXPECT_NE(tile.index, 1u);
+
+  // A damaged record header gives no length to skip by: the records after it are lost too.
+  std::vector<char> bad_header = whole;
+  bad_header[header + 2 * record] ^= 0x01;
+  write_bytes(file, bad_header);
+  EXPECT_EQ(read_journal(file, grid, kChannels).tiles.size(), 2u);
+}
+
+TEST(TileJournal, DamagedHeaderOrForeignFileIsAnInputError) {
+  const TileGrid grid({0, 0, 16, 16}, 8);
+  const auto file = test::scratch_dir() / "j";
+  { TileJournal journal(file, identity_of("4"), kChannels, {}); }
+  std::vector<char> bytes = bytes_of(file);
+  bytes[30] ^= 0x01;  // inside the identity text: its checksum no longer matches
+  write_bytes(file, bytes);
+  try {
+    read_journal(file, grid, kChannels);
+    FAIL() << "a damaged header was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("checksum"), std::string::npos) << e.what();
+  }
+  write_bytes(file, {'P', '6', '\n'});
+  EXPECT_THROW(read_journal(file, grid, kChannels), InputError);
+  write_bytes(file, {});
+  EXPECT_THROW(read_journal(file, grid, kChannels), InputError);
+  EXPECT_THROW(read_journal(file.parent_path() / "absent", grid, kChannels), InputError);
+}
+
+TEST(TileJournal, NewJournalReplacesTheOldOneWholeAndRemoveDeletesIt) {
+  const TileGrid grid({0, 0, 16, 16}, 8);
+  const auto file = test::scratch_dir() / "j";
+  {
+    TileJournal journal(file, identity_of("4"), kChannels, {});
+    journal.append(tile_of(grid, 0));
+    journal.append(tile_of(grid, 1));
+  }
+  const std::vector<TileResult> kept{tile_of(grid, 1)};
+  TileJournal replaced(file, identity_of("4"), kChannels, kept);
+  const JournalContents contents = read_journal(file, grid, kChannels);
+  ASSERT_EQ(contents.tiles.size(), 1u);
+  EXPECT_EQ(contents.tiles[0].index, 1u);
+  EXPECT_FALSE(std::filesystem::exists(file.string() + ".tmp"));
+  replaced.remove();
+  EXPECT_FALSE(std::filesystem::exists(file));
+}
+
+TEST(TileJournal, UnwritableFolderIsARuntimeErrorNamingTheFile) {
+  const auto file = test::scratch_dir() / "missing-folder" / "j";
+  try {
+    TileJournal journal(file, identity_of("4"), kChannels, {});
+    FAIL() << "a journal was created in a missing folder";
+  } catch (const RuntimeError& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace rtpro
