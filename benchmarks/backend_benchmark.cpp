@@ -130,7 +130,7 @@ void primary_and_shadow_rays(benchmark::State& state, const LoadedScene* loaded,
       for (std::size_t i = r.begin(); i != r.end(); ++i) {
         if (!hits[i].valid()) continue;
         const SurfacePoint sp = make_surface(loaded->scene, rays[i], hits[i]);
-        const LightSample ls = sample_light(light, sp.position);
+        const LightSample ls = sample_light(light, sp.position, Sample2D{0.5f, 0.5f});
         shadow_rays.push_back(std::isinf(ls.distance) ? spawn_ray(sp, ls.direction)
                                                       : spawn_ray_to(sp, sp.position + ls.direction * ls.distance));
       }

@@ -68,7 +68,7 @@ nlohmann::json info_json(const std::string& file, const RenderScene& scene, cons
           {"render",
            {{"spp", scene.render.spp}, {"max_depth", scene.render.max_depth}, {"seed", scene.render.seed}}},
           {"materials", s.materials},
-          {"lights", {{"point", s.point_lights}, {"directional", s.directional_lights}}},
+          {"lights", {{"point", s.point_lights}, {"directional", s.directional_lights}, {"area", s.area_lights}}},
           {"spheres", {{"stored", s.spheres_stored}, {"rendered", s.spheres_rendered}}},
           {"triangles", {{"stored", s.triangles_stored}, {"rendered", s.triangles_rendered}}},
           {"vertices", s.vertices_stored},
@@ -90,7 +90,8 @@ void print_text(const std::string& file, const RenderScene& scene, const SceneSu
             << "image        " << scene.camera.width << "x" << scene.camera.height << ", " << scene.render.spp
             << " spp, max depth " << scene.render.max_depth << ", seed " << scene.render.seed << "\n"
             << "materials    " << s.materials << "\n"
-            << "lights       " << s.point_lights << " point, " << s.directional_lights << " directional\n"
+            << "lights       " << s.point_lights << " point, " << s.directional_lights << " directional, "
+            << s.area_lights << " area\n"
             << "spheres      " << s.spheres_stored << " stored, " << s.spheres_rendered << " after instancing\n"
             << "triangles    " << s.triangles_stored << " stored, " << s.triangles_rendered << " after instancing\n"
             << "meshes       " << s.meshes << " (" << s.vertices_stored << " vertices)\n"

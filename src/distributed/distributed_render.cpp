@@ -304,7 +304,7 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
     while (std::optional<Message> message = communicator.poll()) {
       if (message->tag != kGrant) throw RuntimeError("distributed render: rank 0 sent an unexpected message");
       std::vector<std::uint64_t> indices(message->bytes.size() / sizeof(std::uint64_t));
-      std::memcpy(indices.data(), message->bytes.data(), indices.size() * sizeof(std::uint64_t));
+      if (!indices.empty()) std::memcpy(indices.data(), message->bytes.data(), indices.size() * sizeof(std::uint64_t));
       for (std::uint64_t index : indices)
         if (index >= grid.count()) throw RuntimeError("distributed render: rank 0 granted a tile outside the image");
       asked = false;

@@ -97,4 +97,14 @@ float StratifiedSampler::sample_1d(std::uint64_t pixel_key, int sample_index, in
   return value < 1.0f ? value : 0x1.fffffep-1f;
 }
 
+Sample2D StratifiedSampler::light_sample(std::uint64_t pixel_key, int sample_index, int bounce, int light, int index,
+                                         int per_axis) const {
+  std::uint64_t bits = hash_combine(sample_bits(pixel_key, sample_index), 0x11947000ull + static_cast<std::uint64_t>(bounce));
+  bits = hash_combine(hash_combine(bits, static_cast<std::uint64_t>(light)), static_cast<std::uint64_t>(index));
+  const float inv = 1.0f / static_cast<float>(per_axis);
+  const float x = (static_cast<float>(index % per_axis) + to_unit_float(bits)) * inv;
+  const float y = (static_cast<float>(index / per_axis) + to_unit_float(bits << 24)) * inv;
+  return {x < 1.0f ? x : 0x1.fffffep-1f, y < 1.0f ? y : 0x1.fffffep-1f};
+}
+
 }  // namespace rtpro

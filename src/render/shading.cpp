@@ -7,6 +7,7 @@
 #include "rtpro/render/texture.h"
 
 #include <cmath>
+#include <optional>
 
 namespace rtpro {
 
@@ -21,30 +22,56 @@ constexpr float kMinThroughput = 1.0f / 4096.0f;
 
 float max_channel(const Color& c) { return std::max(c.x, std::max(c.y, c.z)); }
 
-// Reads the hits of one generation: misses see the background, hits become shaded surfaces with
-// their shadow rays queued (lights behind the surface, by either normal, need none).
-void gather_surfaces(const RenderScene& scene, const Workspace::Generation& generation, int depth,
-                     std::span<SampleResult> results, Workspace& ws) {
+bool is_black(const Color& c) { return c.x == 0.0f && c.y == 0.0f && c.z == 0.0f; }
+
+// The emission of the nearest area light `ray` sees before t_max, if any, and where along the ray.
+struct SeenEmitter {
+  Color emission;
+  float t;
+};
+std::optional<SeenEmitter> seen_emitter(const RenderScene& scene, const Workspace& ws, const Ray& ray, float t_max) {
+  std::optional<SeenEmitter> seen;
+  for (const std::uint32_t l : ws.emitters)
+    if (const std::optional<float> t = hit_light(scene.lights[l], ray, t_max)) {
+      t_max = *t;
+      seen = SeenEmitter{light_emission(scene.lights[l]), *t};
+    }
+  return seen;
+}
+
+// The path weight after the ray's length inside glass (absorption), for a segment of parameter t.
+Color through_medium(const RenderScene& scene, const Workspace::RayTask& task, const Ray& ray, float t) {
+  if (task.medium == Workspace::kOutside) return task.weight;
+  const Dielectric& glass = *scene.materials[task.medium].dielectric;
+  return task.weight * beer_lambert_transmittance(glass.transmittance, glass.transmittance_distance, t * length(ray.dir));
+}
+
+// Reads the hits of one generation: misses see the background (or an area light), hits become
+// shaded surfaces with their shadow rays queued, one per light or samples² per area light (lights
+// behind the surface, by either normal, need none).
+void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler, std::span<const SampleKey> keys,
+                     const Workspace::Generation& generation, int depth, std::span<SampleResult> results,
+                     Workspace& ws) {
   ws.surfaces.clear();
   ws.shadow_queries.clear();
   ws.shadow_rays.clear();
   for (std::uint32_t i = 0; i < generation.tasks.size(); ++i) {
     const Workspace::RayTask& task = generation.tasks[i];
     const Hit& hit = ws.hits[i];
+    const Ray& ray = generation.rays[i];
+    if (!ws.emitters.empty())
+      if (const std::optional<SeenEmitter> seen = seen_emitter(scene, ws, ray, hit.valid() ? hit.t : ray.tfar)) {
+        results[task.sample].radiance += through_medium(scene, task, ray, seen->t) * seen->emission;
+        continue;
+      }
     if (!hit.valid()) {
       results[task.sample].radiance += task.weight * scene.render.background;
       continue;
     }
-    const Ray& ray = generation.rays[i];
     Workspace::ShadedSurface& s = ws.surfaces.emplace_back();
     s.task = i;
-    s.weight = task.weight;
-    if (task.medium != Workspace::kOutside) {
-      // Absorbed over the path inside the glass (t is in units of the ray's direction length).
-      const Dielectric& glass = *scene.materials[task.medium].dielectric;
-      s.weight = s.weight * beer_lambert_transmittance(glass.transmittance, glass.transmittance_distance,
-                                                       hit.t * length(ray.dir));
-    }
+    // Absorbed over the path inside glass (t is in units of the ray's direction length).
+    s.weight = through_medium(scene, task, ray, hit.t);
     s.point = make_surface(scene, ray, hit);
     s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
     s.albedo = evaluate(scene.materials[s.point.material].color, s.point.position);
@@ -52,13 +79,24 @@ void gather_surfaces(const RenderScene& scene, const Workspace::Generation& gene
       results[task.sample].primary = {true, s.albedo, s.point.shading_normal, hit.t * length(ray.dir), s.point.object_id};
 
     s.first_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
-    for (const Light& light : scene.lights) {
-      const LightSample ls = sample_light(light, s.point.position);
-      const float n_dot_l = dot(s.point.shading_normal, ls.direction);
-      if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) continue;
-      ws.shadow_rays.push_back(std::isinf(ls.distance) ? spawn_ray(s.point, ls.direction)
-                                                       : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
-      ws.shadow_queries.push_back({ls.radiance, n_dot_l, dot(s.mirror, ls.direction)});
+    const SampleKey& key = keys[task.sample];
+    for (std::uint32_t l = 0; l < scene.lights.size(); ++l) {
+      const Light& light = scene.lights[l];
+      const int per_axis = ws.light_samples_per_axis[l];
+      const int count = per_axis * per_axis;
+      const float share = 1.0f / static_cast<float>(count);
+      for (int j = 0; j < count; ++j) {
+        const Sample2D u = per_axis == 1 && !ws.is_emitter[l]
+                               ? Sample2D{0.5f, 0.5f}
+                               : sampler.light_sample(key.pixel_key, key.sample_index, depth, int(l), j, per_axis);
+        const LightSample ls = sample_light(light, s.point.position, u);
+        if (ws.is_emitter[l] && is_black(ls.radiance)) continue;
+        const float n_dot_l = dot(s.point.shading_normal, ls.direction);
+        if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) continue;
+        ws.shadow_rays.push_back(std::isinf(ls.distance) ? spawn_ray(s.point, ls.direction)
+                                                         : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
+        ws.shadow_queries.push_back({count == 1 ? ls.radiance : ls.radiance * share, n_dot_l, dot(s.mirror, ls.direction)});
+      }
     }
     s.end_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
   }
@@ -125,8 +163,19 @@ void light_surfaces(const RenderScene& scene, const Workspace::Generation& gener
 
 }  // namespace
 
-void shade_batch(const RenderScene& scene, const Backend& backend, std::span<const Ray> camera_rays,
-                 std::span<SampleResult> results, RayCounts& counts, ShadingWorkspace& ws) {
+void shade_batch(const RenderScene& scene, const Backend& backend, const StratifiedSampler& sampler,
+                 std::span<const Ray> camera_rays, std::span<const SampleKey> keys, std::span<SampleResult> results,
+                 RayCounts& counts, ShadingWorkspace& ws) {
+  ws.emitters.clear();
+  ws.is_emitter.assign(scene.lights.size(), 0);
+  ws.light_samples_per_axis.resize(scene.lights.size());
+  for (std::uint32_t l = 0; l < scene.lights.size(); ++l) {
+    ws.light_samples_per_axis[l] = light_samples_per_axis(scene.lights[l]);
+    if (!is_black(light_emission(scene.lights[l]))) {
+      ws.emitters.push_back(l);
+      ws.is_emitter[l] = 1;
+    }
+  }
   ws.current.clear();
   for (std::uint32_t i = 0; i < camera_rays.size(); ++i) {
     results[i] = SampleResult{};
@@ -138,7 +187,7 @@ void shade_batch(const RenderScene& scene, const Backend& backend, std::span<con
   for (int depth = 0; !ws.current.rays.empty(); ++depth) {
     ws.hits.resize(ws.current.rays.size());
     backend.intersect(ws.current.rays, ws.hits, depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
-    gather_surfaces(scene, ws.current, depth, results, ws);
+    gather_surfaces(scene, sampler, keys, ws.current, depth, results, ws);
 
     ws.occluded.resize(ws.shadow_rays.size());
     backend.occluded(ws.shadow_rays, ws.occluded, depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);

@@ -40,6 +40,7 @@ void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixe
   const auto image_width = static_cast<std::uint64_t>(scene_.camera.width);
   const auto tile_width = static_cast<std::size_t>(tile.width());
   ws.camera_rays.clear();
+  ws.sample_keys.clear();
   for (std::size_t p = first_pixel; p < first_pixel + pixel_count; ++p) {
     const int x = tile.x0 + static_cast<int>(p % tile_width);
     const int y = tile.y0 + static_cast<int>(p / tile_width);
@@ -51,10 +52,11 @@ void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixe
                                 : Sample2D{0.5f, 0.5f};
       ws.camera_rays.push_back(
           camera_ray(scene_.camera, static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y, lens));
+      ws.sample_keys.push_back({pixel_key, s});
     }
   }
   ws.samples.resize(ws.camera_rays.size());
-  shade_batch(scene_, backend_, ws.camera_rays, ws.samples, out.rays, ws.shading);
+  shade_batch(scene_, backend_, sampler_, ws.camera_rays, ws.sample_keys, ws.samples, out.rays, ws.shading);
 
   const auto channels = static_cast<std::size_t>(layout_.channel_count());
   for (std::size_t p = 0; p < pixel_count; ++p) {

@@ -7,6 +7,12 @@ namespace {
 
 Light make(const PointLightDesc& d) { return PointLight{d.position, d.color * d.intensity}; }
 Light make(const DirectionalLightDesc& d) { return DirectionalLight{-normalize(d.direction), d.color * d.intensity}; }
+Light make(const SphereLightDesc& d) { return SphereLight{d.center, d.radius, d.color * d.intensity, d.samples}; }
+Light make(const QuadLightDesc& d) {
+  const Vec3 n = cross(d.edge1, d.edge2);
+  return QuadLight{d.position - d.edge1 * 0.5f - d.edge2 * 0.5f, d.edge1, d.edge2, normalize(n), length(n),
+                   d.color * d.intensity, d.samples};
+}
 
 }  // namespace
 

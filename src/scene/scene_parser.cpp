@@ -230,8 +230,51 @@ std::vector<MaterialDesc> read_materials(const YamlNode* node) {
   return materials;
 }
 
+// Shadow rays per axis of an area light: samples² per light per shading point.
+int read_light_samples(const MappingReader& light, int fallback) {
+  const YamlNode* node = light.optional("samples");
+  if (!node) return fallback;
+  const double n = read_number(*node, light.field("samples"));
+  if (!(n >= 1.0 && n <= 64.0) || n != std::floor(n))
+    fail_at(*node, light.field("samples") + " is shadow rays per axis (samples² per point): a whole number from 1 to 64, got " +
+                       node->scalar);
+  return static_cast<int>(n);
+}
+
+LightDesc read_area_light(const YamlNode& node, const std::string& type) {
+  if (type == "sphere") {
+    const MappingReader light(node, "sphere light", {"type", "center", "radius", "color", "intensity", "samples"});
+    SphereLightDesc desc;
+    desc.center = read_vec3(light.required("center"), light.field("center"));
+    const YamlNode& radius = light.required("radius");
+    desc.radius = static_cast<float>(read_number(radius, light.field("radius")));
+    if (!(desc.radius > 0.0f)) fail_at(radius, light.field("radius") + " must be positive, got " + radius.scalar);
+    if (const YamlNode* color = light.optional("color")) desc.color = read_color(*color, light.field("color"));
+    if (const YamlNode* intensity = light.optional("intensity"))
+      desc.intensity = read_non_negative(*intensity, light.field("intensity"));
+    desc.samples = read_light_samples(light, desc.samples);
+    return desc;
+  }
+  const MappingReader light(node, "quad light", {"type", "position", "edge1", "edge2", "color", "intensity", "samples"});
+  QuadLightDesc desc;
+  desc.position = read_vec3(light.required("position"), light.field("position"));
+  const YamlNode& edge1 = light.required("edge1");
+  const YamlNode& edge2 = light.required("edge2");
+  desc.edge1 = read_vec3(edge1, light.field("edge1"));
+  desc.edge2 = read_vec3(edge2, light.field("edge2"));
+  const Vec3 n = cross(desc.edge1, desc.edge2);
+  if (!(length(n) > 1e-12f * length(desc.edge1) * length(desc.edge2)) || !(length(n) > 0.0f))
+    fail_at(edge2, light.field("edge2") + " must not be zero or parallel to edge1: the quad has no area");
+  if (const YamlNode* color = light.optional("color")) desc.color = read_color(*color, light.field("color"));
+  if (const YamlNode* intensity = light.optional("intensity"))
+    desc.intensity = read_non_negative(*intensity, light.field("intensity"));
+  desc.samples = read_light_samples(light, desc.samples);
+  return desc;
+}
+
 LightDesc read_light(const YamlNode& node) {
-  const std::string type = read_entry_type(node, "light", {"point", "directional"});
+  const std::string type = read_entry_type(node, "light", {"point", "directional", "sphere", "quad"});
+  if (type == "sphere" || type == "quad") return read_area_light(node, type);
   if (type == "point") {
     const MappingReader light(node, "point light", {"type", "position", "color", "intensity"});
     PointLightDesc desc;

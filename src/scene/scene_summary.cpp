@@ -40,7 +40,9 @@ SceneSummary summarize(const RenderScene& scene) {
   s.materials = scene.materials.size();
   for (const Light& light : scene.lights) {
     std::visit(Overloaded{[&](const PointLight&) { ++s.point_lights; },
-                          [&](const DirectionalLight&) { ++s.directional_lights; }},
+                          [&](const DirectionalLight&) { ++s.directional_lights; },
+                          [&](const SphereLight&) { ++s.area_lights; },
+                          [&](const QuadLight&) { ++s.area_lights; }},
                light);
   }
   s.prototypes = scene.prototypes.size();

@@ -69,8 +69,13 @@ void check_traceable_range(const RenderScene& scene, std::span<const SourceLocat
 
   // Where rays can start (the camera, any surface) and what they can aim at (a point light).
   double extent = largest_magnitude(camera.position);
-  for (const LightDesc& light : lights)
+  for (const LightDesc& light : lights) {
     if (const auto* point = std::get_if<PointLightDesc>(&light)) extent = std::max(extent, largest_magnitude(point->position));
+    if (const auto* sphere = std::get_if<SphereLightDesc>(&light))
+      extent = std::max(extent, largest_magnitude(sphere->center) + double(sphere->radius));
+    if (const auto* quad = std::get_if<QuadLightDesc>(&light))
+      extent = std::max(extent, largest_magnitude(quad->position) + double(length(quad->edge1) + length(quad->edge2)));
+  }
 
   for (std::uint32_t g = 0; g < scene.top.geometries.size(); ++g) {
     const Geometry& geometry = scene.top.geometries[g];

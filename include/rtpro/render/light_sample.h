@@ -1,17 +1,37 @@
 #pragma once
-// What shading needs from a light at a point: where it is and what arrives. Each light kind in
-// the Light variant adds one overload of sample() in light_sample.cpp; shading never names a kind.
+// What shading needs from a light at a point: where it is and what arrives, one shadow ray's
+// worth at a time. Point and directional lights need one sample; an area light needs
+// samples_per_axis² stratified ones, whose radiances average to what the whole light delivers.
+// Each light kind in the Light variant adds one overload of each function in light_sample.cpp;
+// shading never names a kind.
+#include "rtpro/core/ray.h"
 #include "rtpro/core/vec3.h"
+#include "rtpro/render/sampler.h"
 #include "rtpro/scene/light.h"
+
+#include <optional>
 
 namespace rtpro {
 
 struct LightSample {
   Vec3 direction;  // unit, from the point towards the light
   float distance;  // to the light; infinity for directional lights
-  Color radiance;  // arriving at the point
+  // Arriving at the point along `direction`, as the estimate of the whole light from this one
+  // sample (1 / pdf in solid angle folded in); zero when nothing arrives (behind a one-sided
+  // light, inside a sphere light). Average over the light's samples.
+  Color radiance;
 };
 
-LightSample sample_light(const Light& light, const Vec3& point);
+// The side of the stratified grid of shadow samples: 1 for point and directional lights.
+int light_samples_per_axis(const Light& light);
+
+// `u` picks the sample (area lights: a point of [0,1)²; ignored by point and directional lights).
+LightSample sample_light(const Light& light, const Vec3& point, Sample2D u);
+
+// An area light's emitting surface as seen by a camera or mirror ray: the ray parameter of the
+// nearest visible hit in (ray.tnear, t_max), or nothing (always for point and directional lights,
+// which are never seen). What it shows is light_emission().
+std::optional<float> hit_light(const Light& light, const Ray& ray, float t_max);
+Color light_emission(const Light& light);
 
 }  // namespace rtpro

@@ -43,6 +43,13 @@ class StratifiedSampler {
   // A 1D value of `dimension`, stratified over spp strata in a permuted order.
   float sample_1d(std::uint64_t pixel_key, int sample_index, int dimension) const;
 
+  // Point `index` of the per_axis × per_axis stratified points a shading point spreads over an
+  // area light (number `light` in the scene) at the bounce-th surface of this camera sample:
+  // stratum (index mod per_axis, index div per_axis), jittered by a hash of all of them and the
+  // seed. Glass branches of one sample that reach their bounce-th surface share the values.
+  Sample2D light_sample(std::uint64_t pixel_key, int sample_index, int bounce, int light, int index,
+                        int per_axis) const;
+
  private:
   // A later dimension's hash for this pixel, the stratum count, and the stratum this sample takes.
   struct PermutedSample {

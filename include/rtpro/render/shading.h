@@ -10,6 +10,7 @@
 // its own rays were spawned — so a pixel never depends on what else shares its batch.
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/ray.h"
+#include "rtpro/render/sampler.h"
 #include "rtpro/render/surface.h"
 #include "rtpro/scene/render_scene.h"
 
@@ -41,6 +42,12 @@ struct PrimaryHit {
   Vec3 normal;          // shading normal, world space, unit
   float depth = 0.0f;   // distance from the camera
   std::uint32_t object_id = 0;
+};
+
+// Which camera sample a ray of a batch serves: the sampler's key for the randomness it draws.
+struct SampleKey {
+  std::uint64_t pixel_key;  // y · width + x in the full image
+  int sample_index;
 };
 
 struct SampleResult {
@@ -93,11 +100,18 @@ class ShadingWorkspace {
   std::vector<ShadowQuery> shadow_queries;
   std::vector<Ray> shadow_rays;
   std::vector<std::uint8_t> occluded;
+  // Per light of the scene, set once per batch: its shadow samples per axis, and whether it is an
+  // area light that camera and mirror rays can see (also listed in `emitters`).
+  std::vector<int> light_samples_per_axis;
+  std::vector<std::uint8_t> is_emitter;
+  std::vector<std::uint32_t> emitters;
 };
 
 // Traces and shades one batch of camera rays; results[i] receives camera_rays[i]'s radiance and
-// primary hit. Ray counts are added to `counts`.
-void shade_batch(const RenderScene& scene, const Backend& backend, std::span<const Ray> camera_rays,
-                 std::span<SampleResult> results, RayCounts& counts, ShadingWorkspace& workspace);
+// primary hit, keys[i] says which camera sample it is (area lights draw their shadow samples from
+// `sampler` with it). Ray counts are added to `counts`.
+void shade_batch(const RenderScene& scene, const Backend& backend, const StratifiedSampler& sampler,
+                 std::span<const Ray> camera_rays, std::span<const SampleKey> keys, std::span<SampleResult> results,
+                 RayCounts& counts, ShadingWorkspace& workspace);
 
 }  // namespace rtpro

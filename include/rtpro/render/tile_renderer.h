@@ -17,6 +17,7 @@ class TileRenderer {
   // The buffers one worker thread reuses from tile to tile.
   struct Workspace {
     std::vector<Ray> camera_rays;
+    std::vector<SampleKey> sample_keys;
     std::vector<SampleResult> samples;
     ShadingWorkspace shading;
   };

@@ -79,7 +79,28 @@ struct DirectionalLightDesc {
   float intensity = 1.0f;
 };
 
-using LightDesc = std::variant<PointLightDesc, DirectionalLightDesc>;
+// Area lights emit `color` × `intensity` as radiance from their surface, falling off with distance
+// as a real light does; each shading point sends samples × samples stratified shadow rays to one.
+struct SphereLightDesc {
+  Vec3 center;
+  float radius = 1.0f;
+  Color color{1.0f, 1.0f, 1.0f};
+  float intensity = 1.0f;
+  int samples = 4;
+};
+
+// A parallelogram centred on `position` with full edges `edge1` and `edge2`, emitting on the side
+// of edge1 × edge2 only.
+struct QuadLightDesc {
+  Vec3 position;
+  Vec3 edge1{1.0f, 0.0f, 0.0f};
+  Vec3 edge2{0.0f, 0.0f, 1.0f};
+  Color color{1.0f, 1.0f, 1.0f};
+  float intensity = 1.0f;
+  int samples = 4;
+};
+
+using LightDesc = std::variant<PointLightDesc, DirectionalLightDesc, SphereLightDesc, QuadLightDesc>;
 
 inline constexpr std::uint32_t kNoMaterial = ~0u;
 

@@ -19,6 +19,25 @@ struct DirectionalLight {
   Color radiance;  // colour × intensity
 };
 
-using Light = std::variant<PointLight, DirectionalLight>;
+// A sphere that emits `radiance` from its surface; shading samples the cone it fills as seen from
+// the point, samples_per_axis² stratified directions.
+struct SphereLight {
+  Vec3 center;
+  float radius;
+  Color radiance;
+  int samples_per_axis;
+};
+
+// A one-sided parallelogram: corner + [0,1]·edge1 + [0,1]·edge2, emitting towards `normal`
+// (unit edge1 × edge2); sampled uniformly by area, samples_per_axis² stratified points.
+struct QuadLight {
+  Vec3 corner, edge1, edge2;
+  Vec3 normal;
+  float area;
+  Color radiance;
+  int samples_per_axis;
+};
+
+using Light = std::variant<PointLight, DirectionalLight, SphereLight, QuadLight>;
 
 }  // namespace rtpro

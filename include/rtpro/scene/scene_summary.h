@@ -12,6 +12,7 @@ struct SceneSummary {
   std::size_t materials = 0;
   std::size_t point_lights = 0;
   std::size_t directional_lights = 0;
+  std::size_t area_lights = 0;  // sphere and quad lights
   std::size_t prototypes = 0;
   std::size_t instances = 0;
   std::size_t meshes = 0;                 // stored meshes (top level and in prototypes)
