@@ -14,16 +14,7 @@ const char* __lsan_default_suppressions() {
       // OpenImageIO 2.4.7: ImageInput::geterror() copies the message out of its thread-local
       // error map and the copy left in the map is never freed (31 bytes per failed read; seen
       // reading a PNG whose header declares 65535x65535 pixels). rtpro only calls geterror().
-      "leak:OpenImageIO_v2_4::ImageInput::geterror\n"
-      // Open MPI 4.1.4 (librtpro_mpi.so under mpirun): MPI_Init allocates for the life of the
-      // process in its runtime, PMIx and hwloc layers, and MPI_Finalize does not free it all.
-      "leak:libmpi.so\n"
-      "leak:libopen-pal.so\n"
-      "leak:libopen-rte.so\n"
-      "leak:libpmix.so\n"
-      "leak:libhwloc.so\n"
-      "leak:libevent\n"
-      "leak:mca_\n";
+      "leak:OpenImageIO_v2_4::ImageInput::geterror\n";
 }
 
 }  // extern "C"

@@ -60,10 +60,6 @@ extern "C" __attribute__((visibility("default"))) rtpro::Communicator* rtpro_joi
     *error = std::string("librtpro_mpi.so is not the MPI plugin of this rtpro build (") + RTPRO_VERSION + ")";
     return nullptr;
   }
-  // Open MPI unloads its components in MPI_Finalize; kept loaded, what they allocate for the life
-  // of the process stays attributable to them (stack traces, the sanitizer build's suppressions).
-  // A user's own setting wins.
-  setenv("OMPI_MCA_mca_base_component_disable_dlclose", "1", 0);
   int provided = 0;
   if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
     *error = "MPI_Init_thread failed";

@@ -41,11 +41,17 @@ world:
 const std::string kAovs = " --aov albedo,normal,depth,object-id";
 
 // Open MPI refuses root without these, and more ranks than cores without oversubscription;
-// --bind-to none lets each rank's threads run on any core.
+// --bind-to none lets each rank's threads run on any core. In the sanitizer build, leak checking
+// is off in the ranks: Open MPI 4.1.4's runtime keeps allocations for the life of the process and
+// MPI_Finalize unloads the components that made them, so LeakSanitizer reports them in "unknown
+// module", out of reach of any suppression by name. (The scheduler's own code is leak-checked
+// with in-process ranks, tests/distributed.) Other sanitizer findings still fail the run.
+constexpr const char* kMpiEnvironment =
+    "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
+    "ASAN_OPTIONS=detect_leaks=0 ";
+
 std::string mpirun(int ranks) {
-  return "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 " RTPRO_MPIEXEC
-         " --bind-to none -n " +
-         std::to_string(ranks) + " ";
+  return kMpiEnvironment + std::string(RTPRO_MPIEXEC " --bind-to none -n ") + std::to_string(ranks) + " ";
 }
 
 std::string render_args(const std::filesystem::path& scene, const std::filesystem::path& out) {
@@ -140,6 +146,7 @@ TEST(MpiJob, KilledRankEndsTheJobAndResumeFinishesItExactly) {
     setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
     setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
     setenv("OMPI_MCA_rmaps_base_oversubscribe", "1", 1);
+    setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
     const std::string exe = rtpro_executable().string();
     execl(RTPRO_MPIEXEC, RTPRO_MPIEXEC, "--bind-to", "none", "-n", "3", exe.c_str(), "render", scene.c_str(), "-o",
           out.c_str(), "--aov", "albedo,normal,depth,object-id", "-q", "--spp", "1024", "--threads", "1",
