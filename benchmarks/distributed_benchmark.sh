@@ -91,16 +91,19 @@ for scene in ("demo", "dragon"):
         print(f"{scene:8} {layout:7} {spread(w):>22} {spread(rend):>22} {statistics.median(imb):9.3f}")
     print(f"{scene:8} ratio 1x2/2x1: whole process {med['1x2'][0] / med['2x1'][0]:.3f}, render {med['1x2'][1] / med['2x1'][1]:.3f}")
 print()
-print("2. scheduler: 512x512 at 1 spp, 1 thread per rank (medians of 3)")
-print(f"{'ranks':>5} {'tile':>4} {'tiles':>6} {'render s':>9} {'tiles/s':>9} {'bytes/tile':>10} {'imbalance':>9}")
+print("2. scheduler: 512x512 at 1 spp, 1 thread per rank, oversubscribed (medians of 3)")
+print("   remote: tiles other ranks rendered and sent to rank 0; rank 0 CPU: its talking thread's CPU time")
+print("   per remote tile (hand-out and take-in, idle polling included); capacity: 1 / that")
+print(f"{'ranks':>5} {'tile':>4} {'tiles':>6} {'render s':>9} {'remote':>7} {'remote/s':>9} {'bytes/tile':>10} {'rank0 us/tile':>13} {'capacity/s':>10}")
 for ranks in (2, 8, 16):
     for tile in (4, 8, 16):
         s = [stats(f"cheap-{ranks}-{tile}-{r}") for r in range(1, 4)]
         tiles = (512 // tile) ** 2
         rend = statistics.median(x["seconds"]["render"] for x in s)
-        sent = statistics.median(sum(k["bytes_sent"] for k in x["ranks"]) for x in s)
-        imb = statistics.median(x["load_imbalance"] for x in s)
-        print(f"{ranks:5} {tile:4} {tiles:6} {rend:9.3f} {tiles / rend:9.0f} {sent / tiles:10.0f} {imb:9.3f}")
+        remote = statistics.median(x["scheduler"]["remote_tiles"] for x in s)
+        per_tile = statistics.median(x["scheduler"]["cpu_seconds"] / max(1, x["scheduler"]["remote_tiles"]) for x in s)
+        sent = statistics.median(sum(k["bytes_sent"] for k in x["ranks"][1:]) / max(1, sum(k["tiles"] for k in x["ranks"][1:])) for x in s)
+        print(f"{ranks:5} {tile:4} {tiles:6} {rend:9.3f} {remote:7.0f} {remote / rend:9.0f} {sent:10.0f} {per_tile * 1e6:13.1f} {1 / per_tile if per_tile > 0 else 0:10.0f}")
 print()
 on = [stats(f"journal-on-{r}")["seconds"]["render"] for r in range(1, runs + 1)]
 off = [stats(f"journal-off-{r}")["seconds"]["render"] for r in range(1, runs + 1)]

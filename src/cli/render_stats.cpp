@@ -43,6 +43,12 @@ std::string RenderStatistics::text() const {
                   r.busy_seconds, r.idle_seconds, mib(r.bytes_sent));
     out += buffer;
   }
+  const RankStats& leader = ranks.front();
+  std::snprintf(buffer, sizeof buffer,
+                "  scheduler     rank 0 took in %llu tiles from other ranks, %.1f us of its CPU per tile\n",
+                static_cast<unsigned long long>(leader.remote_tiles),
+                leader.remote_tiles > 0 ? leader.scheduler_seconds / double(leader.remote_tiles) * 1e6 : 0.0);
+  out += buffer;
   return out;
 }
 
@@ -77,6 +83,7 @@ nlohmann::json RenderStatistics::json() const {
                           {"idle_seconds", r.idle_seconds},
                           {"bytes_sent", r.bytes_sent}});
     out["ranks"] = per_rank;
+    out["scheduler"] = {{"remote_tiles", ranks.front().remote_tiles}, {"cpu_seconds", ranks.front().scheduler_seconds}};
     out["load_imbalance"] = load_imbalance(ranks);
   }
   return out;

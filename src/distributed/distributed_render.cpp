@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <condition_variable>
 #include <cstring>
 #include <deque>
@@ -21,9 +22,37 @@ namespace {
 
 enum Tag : int { kHello = 1, kVerdict = 2, kRequest = 3, kGrant = 4, kTile = 5, kDone = 6 };
 
-// While nothing has arrived: long enough not to spin a core away from the workers, short against
-// a tile's render time.
+// While nothing arrives the talking thread sleeps, from kShortestPause doubling to kLongestPause:
+// quick answers while messages flow, and no core spun away from the workers when they do not.
+// Followers ask for tiles well ahead (kTilesAheadPerThread), so a pause never starves a worker.
+// Followers wait longer: each wake-up polls MPI, and the tiles they queue ahead cover the wait.
+constexpr auto kShortestPause = std::chrono::microseconds(20);
+constexpr auto kLeaderLongestPause = std::chrono::microseconds(1000);
+constexpr auto kFollowerLongestPause = std::chrono::microseconds(4000);
 constexpr auto kPollPause = std::chrono::microseconds(200);
+constexpr std::size_t kTilesAheadPerThread = 2;
+
+class Backoff {
+ public:
+  explicit Backoff(std::chrono::microseconds longest) : longest_(longest) {}
+  void reset() { pause_ = kShortestPause; }
+  std::chrono::microseconds next() {
+    const auto pause = pause_;
+    pause_ = std::min(pause_ * 2, longest_);
+    return pause;
+  }
+
+ private:
+  std::chrono::microseconds longest_;
+  std::chrono::microseconds pause_ = kShortestPause;
+};
+
+// CPU time of the calling thread: what handling messages costs rank 0, whatever else runs.
+double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return double(now.tv_sec) + double(now.tv_nsec) * 1e-9;
+}
 
 template <class T>
 std::vector<std::byte> bytes_of(const T& value) {
@@ -207,7 +236,8 @@ void agree_on_job(Communicator& communicator, const JobIdentity& identity) {
 }
 
 std::vector<RankStats> lead_distributed_render(Communicator& communicator, const TileRenderer& renderer,
-                                               const TileGrid& grid, TileSource& source, TileSink& sink) {
+                                               const TileGrid& grid, TileSource& source, TileSink& sink,
+                                               const std::function<void()>& on_started) {
   const int channels = renderer.layout().channel_count();
   std::vector<RankStats> ranks(static_cast<std::size_t>(communicator.size()));
   for (int r = 0; r < communicator.size(); ++r) ranks[std::size_t(r)].rank = r;
@@ -215,14 +245,21 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
   TimedSource local_source(source, clock);
   TimedSink local_sink(sink, clock);
   BackgroundRender render(renderer, grid, local_source, local_sink, [] {});
+  if (on_started) on_started();
 
   int following = communicator.size() - 1;
+  Backoff backoff(kLeaderLongestPause);
+  double handling_seconds = 0.0;
+  std::uint64_t remote_tiles = 0;
   while (following > 0) {
+    const double handling_start = thread_cpu_seconds();
     std::optional<Message> message = communicator.poll();
     if (!message) {
-      std::this_thread::sleep_for(kPollPause);
+      handling_seconds += thread_cpu_seconds() - handling_start;
+      std::this_thread::sleep_for(backoff.next());
       continue;
     }
+    backoff.reset();
     RankStats& from = ranks[std::size_t(message->source)];
     switch (message->tag) {
       case kRequest: {
@@ -241,6 +278,7 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
         std::optional<TileResult> tile = decode_tile(message->bytes, grid, channels);
         if (!tile) throw RuntimeError("distributed render: rank " + std::to_string(message->source) + " sent a damaged tile");
         sink.put(std::move(*tile));
+        ++remote_tiles;
         break;
       }
       case kDone: {
@@ -256,8 +294,11 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
       default:
         throw RuntimeError("distributed render: rank " + std::to_string(message->source) + " sent an unexpected message");
     }
+    handling_seconds += thread_cpu_seconds() - handling_start;
   }
   render.join();
+  ranks[0].scheduler_seconds = handling_seconds;
+  ranks[0].remote_tiles = remote_tiles;
   ranks[0].tiles = clock.tiles();
   ranks[0].rays = clock.rays();
   ranks[0].busy_seconds = clock.busy_seconds();
@@ -272,12 +313,18 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
   GrantedTiles granted(clock, cancel);
   OutgoingTiles outgoing(clock);
   BackgroundRender render(renderer, grid, granted, outgoing, [&outgoing] { outgoing.wake(); });
-  // Ask for two tiles per thread whenever fewer than one per thread are left.
-  const auto ahead = static_cast<std::size_t>(std::max(1, threads));
+  // Keep kTilesAheadPerThread tiles per thread queued beyond the ones being rendered: ask for a
+  // refill whenever fewer are left.
+  const auto ahead = kTilesAheadPerThread * static_cast<std::size_t>(std::max(1, threads));
   std::uint64_t bytes_sent = 0;
   bool asked = false, no_more = false;
+  Backoff backoff(kFollowerLongestPause);
+  std::chrono::microseconds wait = kShortestPause;
   while (true) {
-    for (const TileResult& tile : outgoing.take(kPollPause)) {
+    // Wakes at once when a worker finishes a tile; otherwise after `wait`, to look for grants.
+    std::deque<TileResult> finished = outgoing.take(wait);
+    bool active = !finished.empty();
+    for (const TileResult& tile : finished) {
       const std::vector<std::byte> bytes = encode_tile(tile, channels);
       communicator.send(0, kTile, bytes);
       bytes_sent += bytes.size();
@@ -302,6 +349,7 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
       asked = true;
     }
     while (std::optional<Message> message = communicator.poll()) {
+      active = true;
       if (message->tag != kGrant) throw RuntimeError("distributed render: rank 0 sent an unexpected message");
       std::vector<std::uint64_t> indices(message->bytes.size() / sizeof(std::uint64_t));
       if (!indices.empty()) std::memcpy(indices.data(), message->bytes.data(), indices.size() * sizeof(std::uint64_t));
@@ -315,6 +363,8 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
         granted.add(indices);
       }
     }
+    if (active) backoff.reset();
+    wait = backoff.next();
   }
   render.join();
   const RayCounts rays = clock.rays();

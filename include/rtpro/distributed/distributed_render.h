@@ -13,6 +13,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace rtpro {
@@ -25,6 +26,10 @@ struct RankStats {
   double busy_seconds = 0.0;
   double idle_seconds = 0.0;
   std::uint64_t bytes_sent = 0;
+  // Rank 0 only: tiles other ranks sent it, and the CPU time its talking thread spent handing out
+  // and taking in tiles (the scheduler's own cost; its capacity is about remote_tiles / this).
+  std::uint64_t remote_tiles = 0;
+  double scheduler_seconds = 0.0;
 };
 
 // Before any work: rank 0 gathers every rank's identity and throws InputError naming the first
@@ -34,8 +39,11 @@ void agree_on_job(Communicator& communicator, const JobIdentity& identity);
 // Rank 0: renders the tiles `source` hands out, with its workers and the other ranks, into `sink`;
 // returns every rank's figures (indexed by rank) once all have finished. Stops handing out tiles
 // when the source does (it checks the cancel flag).
+// `on_started` runs once rank 0's own render thread exists: a caller about to dlopen a large
+// library (which holds back every thread created meanwhile) waits for it.
 std::vector<RankStats> lead_distributed_render(Communicator& communicator, const TileRenderer& renderer,
-                                               const TileGrid& grid, TileSource& source, TileSink& sink);
+                                               const TileGrid& grid, TileSource& source, TileSink& sink,
+                                               const std::function<void()>& on_started = {});
 
 // Other ranks: renders what rank 0 hands out until it has no more, or until `cancel` becomes true
 // (the tiles in flight are still finished and sent). `threads` sets how many tiles are asked for
