@@ -24,4 +24,11 @@ InputError mesh_load_error(const std::filesystem::path& file) {
   return InputError("none");
 }
 
+std::unique_ptr<TextureLookup> open_scene_textures(const RenderScene& scene) {
+  if (scene.textures.empty()) return nullptr;
+  std::vector<TextureSource> sources;
+  for (const TextureImage& texture : scene.textures) sources.push_back({texture.file, texture.colorspace});
+  return open_textures(sources);
+}
+
 }  // namespace rtpro::test

@@ -21,6 +21,7 @@
 #include "rtpro/image/image_io.h"
 #include "rtpro/image/image_layer.h"
 #include "rtpro/image/output_check.h"
+#include "rtpro/image/texture_lookup.h"
 #include "rtpro/render/renderer.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/render_cost.h"
@@ -230,6 +231,16 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   stats.build_seconds = backend->stats().build_seconds;
   log.verbose("built " + stats.backend + " acceleration structure in " + std::to_string(stats.build_seconds) + " s");
 
+  // Image textures are decoded to linear .tx copies before the render (through the image layer).
+  std::unique_ptr<TextureLookup> textures;
+  if (!scene.textures.empty()) {
+    std::vector<TextureSource> sources;
+    for (const TextureImage& texture : scene.textures) sources.push_back({texture.file, texture.colorspace});
+    textures = open_textures(sources);
+    render_options.textures = textures.get();
+    log.verbose("opened " + std::to_string(sources.size()) + " image textures");
+  }
+
   std::unique_ptr<TevClient> preview;
   if (display_server && leader) {
     preview = std::make_unique<TevClient>(*display_server, std::filesystem::path(output.name()).filename().string(),
@@ -261,7 +272,7 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
     render_options.on_tile_result = [journal = opened.journal.get()](const TileResult& tile) { journal->append(tile); };
   }
   if (!leader) {
-    const TileRenderer renderer(scene, *backend, layout);
+    const TileRenderer renderer(scene, *backend, layout, textures.get());
     // mpirun passes Ctrl-C on as SIGTERM to every rank: each finishes its tiles in flight and
     // rank 0 writes the partial image, as a single process does (if mpirun allows the time:
     // its odls_base_sigkill_timeout, 1 s by default).

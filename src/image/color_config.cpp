@@ -119,6 +119,18 @@ DisplayTransform ColorConfig::display_transform(const std::string& display, cons
   }
 }
 
+DisplayTransform ColorConfig::to_scene_linear(const std::string& colorspace) const {
+  try {
+    const auto processor = config_->ocio->getProcessor(colorspace.c_str(), OCIO::ROLE_SCENE_LINEAR);
+    return DisplayTransform("", colorspace,
+                            std::make_shared<const DisplayTransform::Processor>(
+                                DisplayTransform::Processor{processor->getDefaultCPUProcessor()}));
+  } catch (const OCIO::Exception& e) {
+    throw InputError("the " + source_ + " OpenColorIO config cannot convert \"" + colorspace +
+                     "\" to scene_linear: " + e.what());
+  }
+}
+
 DisplayTransform::DisplayTransform(std::string display, std::string view, std::shared_ptr<const Processor> processor)
     : display_(std::move(display)), view_(std::move(view)), processor_(std::move(processor)) {}
 

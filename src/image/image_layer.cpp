@@ -6,6 +6,7 @@
 #include "image_layer_api.h"
 #include "rtpro/core/error.h"
 #include "rtpro/image/diff_image.h"
+#include "rtpro/image/texture_lookup.h"
 
 #include <dlfcn.h>
 
@@ -112,6 +113,10 @@ ImageComparison compare_images(const Image& reference, const Image& test, const 
 void write_diff_image(const std::filesystem::path& file, const Image& reference, const Image& test,
                       float full_scale) {
   image_layer().write_diff_image(file, reference, test, full_scale);
+}
+
+std::unique_ptr<TextureLookup> open_textures(std::span<const TextureSource> sources) {
+  return std::unique_ptr<TextureLookup>(image_layer().open_textures(sources.data(), sources.size()));
 }
 
 }  // namespace rtpro

@@ -6,6 +6,7 @@
 #include "rtpro/image/image.h"
 #include "rtpro/image/image_compare.h"
 #include "rtpro/image/image_io.h"
+#include "rtpro/image/texture_lookup.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -13,7 +14,7 @@
 namespace rtpro {
 
 // Raise whenever a call is added, removed or changes its signature.
-inline constexpr int kImageLayerAbiVersion = 2;
+inline constexpr int kImageLayerAbiVersion = 3;
 inline constexpr const char* kImageLayerEntryPoint = "rtpro_image_layer";
 inline constexpr const char* kImageLayerFileName = "librtpro_image_oiio.so";
 
@@ -24,6 +25,8 @@ struct ImageLayerApi {
   Image (*read_image)(const std::filesystem::path&, std::uint64_t);
   ImageComparison (*compare_images)(const Image&, const Image&, const CompareThresholds&);
   void (*write_diff_image)(const std::filesystem::path&, const Image&, const Image&, float);
+  // Owned by the caller.
+  TextureLookup* (*open_textures)(const TextureSource*, std::size_t);
 };
 
 // The plugin's one exported symbol, named by kImageLayerEntryPoint.

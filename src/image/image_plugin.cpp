@@ -5,10 +5,19 @@
 #include "image_layer_api.h"
 #include "rtpro/image/diff_image.h"
 
+namespace {
+
+rtpro::TextureLookup* open_textures(const rtpro::TextureSource* sources, std::size_t count) {
+  return rtpro::open_textures(std::span(sources, count)).release();
+}
+
+}  // namespace
+
 extern "C" __attribute__((visibility("default"))) const rtpro::ImageLayerApi* rtpro_image_layer() {
   static const rtpro::ImageLayerApi api{
       rtpro::kImageLayerAbiVersion, RTPRO_VERSION, &rtpro::write_image, &rtpro::read_image,
       &rtpro::compare_images,       &rtpro::write_diff_image,
+      &open_textures,
   };
   return &api;
 }

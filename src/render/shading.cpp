@@ -74,7 +74,7 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
     s.weight = through_medium(scene, task, ray, hit.t);
     s.point = make_surface(scene, ray, hit);
     s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
-    s.albedo = evaluate(scene.materials[s.point.material].color, s.point.position);
+    s.albedo = evaluate(scene.materials[s.point.material].color, s.point, ws.textures);
     if (depth == 0)
       results[task.sample].primary = {true, s.albedo, s.point.shading_normal, hit.t * length(ray.dir), s.point.object_id};
 
@@ -165,7 +165,8 @@ void light_surfaces(const RenderScene& scene, const Workspace::Generation& gener
 
 void shade_batch(const RenderScene& scene, const Backend& backend, const StratifiedSampler& sampler,
                  std::span<const Ray> camera_rays, std::span<const SampleKey> keys, std::span<SampleResult> results,
-                 RayCounts& counts, ShadingWorkspace& ws) {
+                 RayCounts& counts, ShadingWorkspace& ws, const TextureLookup* textures) {
+  ws.textures = textures;
   ws.emitters.clear();
   ws.is_emitter.assign(scene.lights.size(), 0);
   ws.light_samples_per_axis.resize(scene.lights.size());

@@ -2,7 +2,10 @@
 
 #include "rtpro/core/error.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <variant>
 
 namespace rtpro {
 
@@ -57,6 +60,39 @@ LocalSurface local_surface(const Group& group, const Hit& hit, const Ray& local_
   throw RuntimeError("hit record names an instance as its primitive");
 }
 
+bool has_image_texture(const RenderScene& scene, std::uint32_t material) {
+  return std::holds_alternative<ImageTexture>(scene.materials[material].color);
+}
+
+// Texture coordinates of the hit, from the object-space surface (`local`, before any instance
+// transform).
+void texture_coordinates(const Group& group, const Hit& hit, const LocalSurface& local, SurfacePoint& sp) {
+  const Geometry& geometry = group.geometries[hit.geom_id];
+  switch (kind_of(geometry)) {
+    case GeometryKind::kSpheres: {
+      const Vec3& n = local.geometric_normal;  // unit, object space
+      sp.tex_u = 0.5f + std::atan2(n.x, n.z) * (0.5f / std::numbers::pi_v<float>);
+      sp.tex_v = 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) * (1.0f / std::numbers::pi_v<float>);
+      return;
+    }
+    case GeometryKind::kTriangles: {
+      const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
+      if (mesh.uvs.empty()) {
+        sp.tex_u = hit.u;
+        sp.tex_v = hit.v;
+        return;
+      }
+      const TriangleIndices& tri = mesh.triangles[hit.prim_id];
+      const float w = 1.0f - hit.u - hit.v;
+      sp.tex_u = mesh.uvs[tri.v0].u * w + mesh.uvs[tri.v1].u * hit.u + mesh.uvs[tri.v2].u * hit.v;
+      sp.tex_v = mesh.uvs[tri.v0].v * w + mesh.uvs[tri.v1].v * hit.u + mesh.uvs[tri.v2].v * hit.v;
+      return;
+    }
+    case GeometryKind::kInstance: break;
+  }
+  throw RuntimeError("hit record names an instance as its primitive");
+}
+
 Vec3 safe_normalize(const Vec3& v, const Vec3& fallback) {
   const float len = length(v);
   return len > 0.0f && std::isfinite(len) ? v / len : fallback;
@@ -69,12 +105,14 @@ SurfacePoint make_surface(const RenderScene& scene, const Ray& ray, const Hit& h
   LocalSurface local;
   if (hit.inst_id == kInvalidId) {
     local = local_surface(scene.top, hit, ray);
+    if (has_image_texture(scene, local.material)) texture_coordinates(scene.top, hit, local, sp);
     sp.object_id = hit.geom_id;
   } else {
     const Instance& instance = std::get<Instance>(scene.top.geometries[hit.inst_id]);
     const Ray object_ray{instance.world_to_object.apply_point(ray.org), ray.tnear,
                          instance.world_to_object.apply_vector(ray.dir), ray.tfar};
     local = local_surface(scene.prototypes[instance.prototype], hit, object_ray);
+    if (has_image_texture(scene, local.material)) texture_coordinates(scene.prototypes[instance.prototype], hit, local, sp);
     local.position = instance.object_to_world.apply_point(local.position);
     local.geometric_normal = instance.world_to_object.apply_normal_of_inverse(local.geometric_normal);
     local.shading_normal = instance.world_to_object.apply_normal_of_inverse(local.shading_normal);

@@ -26,10 +26,17 @@ int checker_parity(const CheckerTexture& checker, const Vec3& position) {
 
 }  // namespace
 
-Color evaluate(const ColorTexture& texture, const Vec3& position) {
-  return std::visit(Overloaded{[](const Color& color) { return color; },
-                               [&](const CheckerTexture& checker) { return checker_parity(checker, position) == 0 ? checker.even : checker.odd; }},
-                    texture);
+Color evaluate(const ColorTexture& texture, const SurfacePoint& point, const TextureLookup* images) {
+  return std::visit(
+      Overloaded{[](const Color& color) { return color; },
+                 [&](const CheckerTexture& checker) {
+                   return checker_parity(checker, point.position) == 0 ? checker.even : checker.odd;
+                 },
+                 [&](const ImageTexture& image) {
+                   // Texture coordinates have v up; the lookup's t runs down the image.
+                   return image.tint * images->lookup(image.image, point.tex_u, 1.0f - point.tex_v, image.wrap);
+                 }},
+      texture);
 }
 
 }  // namespace rtpro

@@ -4,6 +4,7 @@
 #include "rtpro/render/sample_dimensions.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace rtpro {
 
@@ -16,12 +17,17 @@ constexpr std::size_t kSamplesPerBatch = 1024;
 
 }  // namespace
 
-TileRenderer::TileRenderer(const RenderScene& scene, const Backend& backend, const FilmLayout& layout)
+TileRenderer::TileRenderer(const RenderScene& scene, const Backend& backend, const FilmLayout& layout,
+                           const TextureLookup* textures)
     : scene_(scene),
       backend_(backend),
       layout_(layout),
+      textures_(textures),
       sampler_(scene.render.spp, scene.render.seed),
-      pixels_per_batch_(std::max<std::size_t>(1, kSamplesPerBatch / static_cast<std::size_t>(scene.render.spp))) {}
+      pixels_per_batch_(std::max<std::size_t>(1, kSamplesPerBatch / static_cast<std::size_t>(scene.render.spp))) {
+  if (!scene.textures.empty() && !textures)
+    throw std::logic_error("TileRenderer: the scene has image textures but none were opened for it");
+}
 
 TileResult TileRenderer::render(std::size_t index, const PixelRegion& tile, Workspace& ws) const {
   TileResult out;
@@ -56,7 +62,7 @@ void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixe
     }
   }
   ws.samples.resize(ws.camera_rays.size());
-  shade_batch(scene_, backend_, sampler_, ws.camera_rays, ws.sample_keys, ws.samples, out.rays, ws.shading);
+  shade_batch(scene_, backend_, sampler_, ws.camera_rays, ws.sample_keys, ws.samples, out.rays, ws.shading, textures_);
 
   const auto channels = static_cast<std::size_t>(layout_.channel_count());
   for (std::size_t p = 0; p < pixel_count; ++p) {

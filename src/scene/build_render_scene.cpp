@@ -17,8 +17,19 @@ namespace rtpro {
 
 namespace {
 
-// A material's diffuse colour as shading evaluates it.
-ColorTexture color_texture(const MaterialDesc& m) {
+// A material's diffuse colour as shading evaluates it; image textures are registered in `textures`.
+ColorTexture color_texture(const MaterialDesc& m, std::vector<TextureImage>& textures) {
+  if (!m.color_texture.empty()) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(m.color_texture, error))
+      throw InputError(m.texture_where, "texture '" + m.color_texture.string() + "' not found");
+    std::uint32_t index = 0;
+    while (index < textures.size() &&
+           !(textures[index].file == m.color_texture && textures[index].colorspace == m.texture_colorspace))
+      ++index;
+    if (index == textures.size()) textures.push_back({m.color_texture, m.texture_colorspace});
+    return ImageTexture{index, m.color, m.texture_wrap};
+  }
   if (!m.checker) return m.color;
   CheckerTexture checker;
   checker.inv_size = 1.0f / m.checker->size;
@@ -54,7 +65,7 @@ class RenderSceneBuilder {
   std::uint32_t add_material(const MaterialDesc& m, const std::string& name) {
     std::optional<Dielectric> dielectric;
     if (m.ior) dielectric = Dielectric{*m.ior, m.transmittance, m.transmittance_distance};
-    scene_.materials.push_back({color_texture(m), m.specular, m.shininess, m.reflectivity, dielectric});
+    scene_.materials.push_back({color_texture(m, scene_.textures), m.specular, m.shininess, m.reflectivity, dielectric});
     scene_.material_names.push_back(name);
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);
   }

@@ -23,7 +23,11 @@ std::filesystem::path texture_path(const tinygltf::Model& model, int texture, co
   }
   const int source = model.textures[std::size_t(texture)].source;
   const tinygltf::Image& image = model.images[std::size_t(source)];
-  if (image.uri.empty() || image.uri.rfind("data:", 0) == 0) return file.string() + "#images[" + std::to_string(source) + "]";
+  if (image.uri.empty() || image.uri.rfind("data:", 0) == 0) {
+    warnings.push_back(file.string() + ": images[" + std::to_string(source) +
+                       "] is stored inside the glTF (a buffer view or data: URI): rtpro reads texture files only; ignored");
+    return {};
+  }
   const std::filesystem::path relative(image.uri);
   const std::filesystem::path normal = relative.lexically_normal();
   if (relative.is_absolute() || normal.empty() || *normal.begin() == "..") {
@@ -64,6 +68,7 @@ MaterialDesc read_material(const tinygltf::Model& model, int index, const std::f
   desc.specular = std::min(f0 * (n + 2.0f) / 2.0f, 2.0f) * std::min(1.0f, n / kFullHighlightNs);
   desc.opacity = alpha;
   desc.color_texture = texture_path(model, pbr.baseColorTexture.index, file, path + ".pbrMetallicRoughness.baseColorTexture", warnings);
+  desc.texture_where = SourceLocation{file.string() + ": " + path + ".pbrMetallicRoughness.baseColorTexture"};
   return desc;
 }
 

@@ -129,6 +129,7 @@ class MtlParser {
       return;
     }
     current_->color_texture = path_.parent_path() / normal;
+    current_->texture_where = SourceLocation{file_, static_cast<int>(line_), 0};
   }
 
   // "r g b", or a single "r" meaning grey as the MTL specification allows.

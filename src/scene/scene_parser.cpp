@@ -164,14 +164,45 @@ CheckerDesc read_checker(const YamlNode& node, const std::string& name) {
   return desc;
 }
 
-MaterialDesc read_material(const std::string& name, const YamlNode& node) {
+// color: {texture: FILE, colorspace: srgb | linear | an OpenColorIO colour space, wrap: repeat |
+// clamp | mirror | black, tint: [r, g, b]}
+void read_image_texture(const YamlNode& node, const std::string& name, const std::filesystem::path& folder,
+                        MaterialDesc& desc) {
+  const MappingReader texture(node, name, {"texture", "colorspace", "wrap", "tint"});
+  const YamlNode& file = texture.required("texture");
+  const std::string written = read_string(file, texture.field("texture"));
+  if (written.empty()) fail_at(file, texture.field("texture") + " must name an image file");
+  desc.color_texture = folder / written;
+  desc.texture_where = file.at.location();
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(desc.color_texture, error))
+    fail_at(file, texture.field("texture") + ": image file '" + desc.color_texture.string() + "' not found");
+  if (const YamlNode* colorspace = texture.optional("colorspace")) {
+    const std::string text = read_string(*colorspace, texture.field("colorspace"));
+    desc.texture_colorspace = text == "srgb" ? "sRGB - Texture" : text == "linear" ? "Linear Rec.709 (sRGB)" : text;
+  }
+  if (const YamlNode* wrap = texture.optional("wrap")) {
+    const std::string text = read_string(*wrap, texture.field("wrap"));
+    if (text == "repeat") desc.texture_wrap = TextureWrap::kRepeat;
+    else if (text == "clamp") desc.texture_wrap = TextureWrap::kClamp;
+    else if (text == "mirror") desc.texture_wrap = TextureWrap::kMirror;
+    else if (text == "black") desc.texture_wrap = TextureWrap::kBlack;
+    else fail_at(*wrap, texture.field("wrap") + " must be repeat, clamp, mirror or black, got '" + text + "'");
+  }
+  desc.color = Color(1.0f);
+  if (const YamlNode* tint = texture.optional("tint")) desc.color = read_color(*tint, texture.field("tint"));
+}
+
+MaterialDesc read_material(const std::string& name, const YamlNode& node, const std::filesystem::path& folder) {
   const MappingReader material(node, "material '" + name + "'",
                                {"color", "specular", "shininess", "reflectivity", "ior", "transmittance",
                                 "transmittance_distance"});
   MaterialDesc desc;
   desc.name = name;
   if (const YamlNode* color = material.optional("color")) {
-    if (color->is_mapping()) {
+    if (color->is_mapping() && color->find("texture")) {
+      read_image_texture(*color, material.field("color"), folder, desc);
+    } else if (color->is_mapping()) {
       desc.checker = read_checker(*color, material.field("color"));
     } else {
       desc.color = read_color(*color, material.field("color"));
@@ -213,14 +244,14 @@ MaterialDesc read_material(const std::string& name, const YamlNode& node) {
   return desc;
 }
 
-std::vector<MaterialDesc> read_materials(const YamlNode* node) {
+std::vector<MaterialDesc> read_materials(const YamlNode* node, const std::filesystem::path& folder) {
   std::vector<MaterialDesc> materials(1);
   materials[0].name = "default";
   if (absent(node)) return materials;
   if (!node->is_mapping())
     fail_at(*node, "materials: expected a mapping of name: {color: ...}, got " + node->describe());
   for (const YamlEntry& entry : node->entries) {
-    MaterialDesc material = read_material(entry.key, *entry.value);
+    MaterialDesc material = read_material(entry.key, *entry.value, folder);
     if (entry.key == "default") {
       materials[0] = std::move(material);
     } else {
@@ -323,7 +354,7 @@ SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& f
   desc.file = file;
   desc.camera = read_camera(scene.required("camera"));
   desc.render = read_render(scene.optional("render"));
-  desc.materials = read_materials(scene.optional("materials"));
+  desc.materials = read_materials(scene.optional("materials"), file.parent_path());
   desc.lights = read_lights(scene.optional("lights"));
   read_scene_objects(scene.optional("objects"), scene.optional("world"), file.parent_path(), desc);
   return desc;

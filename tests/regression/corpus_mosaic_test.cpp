@@ -5,6 +5,7 @@
 // tile) and no tile is the background alone.
 #include "html_report.h"
 #include "regression_paths.h"
+#include "test_fixtures.h"
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/error.h"
 #include "rtpro/image/image_io.h"
@@ -94,7 +95,10 @@ TEST(CorpusMosaic, EveryLoadableModelIsInItsFrame) {
     const BBox bounds = scene.bounds();
     scene.camera = make_render_camera(framing(bounds));
     const auto backend = make_backend(BackendKind::kEmbree, scene, BackendOptions{});
-    Image tile = render_image(scene, *backend, RenderOptions{}).image;
+    const std::unique_ptr<TextureLookup> textures = test::open_scene_textures(scene);
+    RenderOptions options;
+    options.textures = textures.get();
+    Image tile = render_image(scene, *backend, options).image;
     std::size_t covered = 0;
     for (std::size_t p = 0; p < tile.data.size(); p += 3)
       covered += std::fabs(tile.data[p] - kBackground) > 1e-3f || std::fabs(tile.data[p + 2] - kBackground) > 1e-3f;

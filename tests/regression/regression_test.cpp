@@ -8,6 +8,7 @@
 #include "html_report.h"
 #include "regression_paths.h"
 #include "regression_tolerance.h"
+#include "test_fixtures.h"
 #include "test_paths.h"
 
 #include "rtpro/backend/backend.h"
@@ -89,7 +90,10 @@ SmallRender render_small(const fs::path& scene_file, BackendKind backend_kind) {
                    "camera.resolution=[" + std::to_string(kReferenceWidth) + "," + std::to_string(height) + "]"});
   const RenderScene scene = build_render_scene(small);
   const auto backend = make_backend(backend_kind, scene, BackendOptions{});
-  return {render_image(scene, *backend, RenderOptions{}).image, regression::tolerance_for(backend_kind, scene)};
+  const std::unique_ptr<TextureLookup> textures = test::open_scene_textures(scene);
+  RenderOptions options;
+  options.textures = textures.get();
+  return {render_image(scene, *backend, options).image, regression::tolerance_for(backend_kind, scene)};
 }
 
 // Rewrites the reference only when a pixel changed, so unchanged references stay byte-identical

@@ -50,6 +50,11 @@ class ColorConfig {
   // InputError listing the available displays (or views) for an unknown name.
   DisplayTransform display_transform(const std::string& display, const std::string& view) const;
 
+  // From the named colour space (e.g. "sRGB - Texture") to scene_linear: textures are decoded
+  // with it before shading. The result is a DisplayTransform only in type (an RGB processor;
+  // display() is empty, view() the colour space). Throws InputError for an unknown name.
+  DisplayTransform to_scene_linear(const std::string& colorspace) const;
+
  private:
   struct Config;
   ColorConfig(std::shared_ptr<const Config> config, std::string source);

@@ -71,6 +71,8 @@ struct RenderOptions {
   // Renders the tiles `source` hands out into `sink`; unset, this process's workers do
   // (render_tiles). A distributed render shares them with other processes.
   std::function<void(const TileRenderer&, const TileGrid&, TileSource&, TileSink&)> tile_executor;
+  // The scene's image textures, opened (open_textures); required when it has any.
+  const TextureLookup* textures = nullptr;
 };
 
 struct RenderResult {

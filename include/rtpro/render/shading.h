@@ -10,6 +10,7 @@
 // its own rays were spawned — so a pixel never depends on what else shares its batch.
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/ray.h"
+#include "rtpro/image/texture_lookup.h"
 #include "rtpro/render/sampler.h"
 #include "rtpro/render/surface.h"
 #include "rtpro/scene/render_scene.h"
@@ -105,13 +106,15 @@ class ShadingWorkspace {
   std::vector<int> light_samples_per_axis;
   std::vector<std::uint8_t> is_emitter;
   std::vector<std::uint32_t> emitters;
+  const TextureLookup* textures = nullptr;  // the scene's image textures, for this batch
 };
 
 // Traces and shades one batch of camera rays; results[i] receives camera_rays[i]'s radiance and
 // primary hit, keys[i] says which camera sample it is (area lights draw their shadow samples from
-// `sampler` with it). Ray counts are added to `counts`.
+// `sampler` with it). Ray counts are added to `counts`. `textures`: the scene's image textures,
+// opened (needed only when it has some).
 void shade_batch(const RenderScene& scene, const Backend& backend, const StratifiedSampler& sampler,
                  std::span<const Ray> camera_rays, std::span<const SampleKey> keys, std::span<SampleResult> results,
-                 RayCounts& counts, ShadingWorkspace& workspace);
+                 RayCounts& counts, ShadingWorkspace& workspace, const TextureLookup* textures = nullptr);
 
 }  // namespace rtpro

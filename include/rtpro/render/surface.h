@@ -17,6 +17,10 @@ struct SurfacePoint {
   float position_error;   // conservative bound on the rounding error of each coordinate
   std::uint32_t material;
   std::uint32_t object_id;  // top-level geometry (the instance, for instanced hits)
+  // Texture coordinates (v up), worked out only when the material has an image texture: a mesh's
+  // own, interpolated (its barycentrics when it has none); on a sphere longitude u (0.5 facing
+  // the object's +z) and latitude v (0 at the bottom, 1 at the top, in the object's frame).
+  float tex_u = 0.0f, tex_v = 0.0f;
 };
 
 SurfacePoint make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit);

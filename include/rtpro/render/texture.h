@@ -1,11 +1,15 @@
 #pragma once
 // Evaluating a material's colour texture at a shading point.
 #include "rtpro/core/vec3.h"
+#include "rtpro/image/texture_lookup.h"
+#include "rtpro/render/surface.h"
 #include "rtpro/scene/render_scene.h"
 
 namespace rtpro {
 
-// The colour of `texture` at world position `position`.
-Color evaluate(const ColorTexture& texture, const Vec3& position);
+// The colour of `texture` at the shading point: procedural ones from its world position, image
+// ones from its texture coordinates through `images` (the scene's textures, opened; needed only
+// when the scene has image textures).
+Color evaluate(const ColorTexture& texture, const SurfacePoint& point, const TextureLookup* images);
 
 }  // namespace rtpro

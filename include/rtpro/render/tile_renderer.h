@@ -22,7 +22,9 @@ class TileRenderer {
     ShadingWorkspace shading;
   };
 
-  TileRenderer(const RenderScene& scene, const Backend& backend, const FilmLayout& layout);
+  // `textures`: the scene's image textures, opened (open_textures); required when it has any.
+  TileRenderer(const RenderScene& scene, const Backend& backend, const FilmLayout& layout,
+               const TextureLookup* textures = nullptr);
 
   TileResult render(std::size_t index, const PixelRegion& tile, Workspace& workspace) const;
 
@@ -35,6 +37,7 @@ class TileRenderer {
   const RenderScene& scene_;
   const Backend& backend_;
   const FilmLayout& layout_;
+  const TextureLookup* textures_;
   StratifiedSampler sampler_;
   std::size_t pixels_per_batch_;
 };

@@ -3,6 +3,7 @@
 // loaded yet (meshes are still paths). Produced by the scene parser, consumed by
 // build_render_scene().
 #include "rtpro/core/error.h"
+#include "rtpro/core/texture_wrap.h"
 #include "rtpro/core/transform.h"
 #include "rtpro/core/vec3.h"
 #include "rtpro/scene/checker_axes.h"
@@ -54,9 +55,14 @@ struct MaterialDesc {
   float specular = 0.5f;          // Phong highlight weight
   float shininess = 10.0f;        // Phong exponent
   float reflectivity = 0.0f;      // weight of the mirror reflection
-  // Kept from mesh files for the texture and transparency work to come; not rendered yet.
-  std::filesystem::path color_texture;  // multiplies `color` (MTL map_Kd, glTF baseColorTexture)
-  float opacity = 1.0f;                 // MTL d (or 1 - Tr), glTF baseColorFactor alpha
+  // An image whose colour multiplies `color` (`color: {texture: ...}`, MTL map_Kd, glTF
+  // baseColorTexture), looked up at the surface's texture coordinates; decoded from
+  // `texture_colorspace` (an OpenColorIO colour space) to scene-linear first.
+  std::filesystem::path color_texture;
+  std::string texture_colorspace = "sRGB - Texture";
+  TextureWrap texture_wrap = TextureWrap::kRepeat;
+  SourceLocation texture_where;  // where the texture was named, for a missing file
+  float opacity = 1.0f;          // MTL d (or 1 - Tr), glTF baseColorFactor alpha; not rendered yet
 };
 
 // How a mesh entry gets its shading normals (`normals:` in the scene file).

@@ -2,6 +2,7 @@
 // The immutable render scene: everything a backend and the shading need, fully loaded, with
 // instances flattened to one level (top-level group → prototype groups).
 #include "rtpro/core/bbox.h"
+#include "rtpro/core/texture_wrap.h"
 #include "rtpro/core/transform.h"
 #include "rtpro/scene/checker_axes.h"
 #include "rtpro/scene/light.h"
@@ -10,6 +11,8 @@
 #include "rtpro/scene/render_settings.h"
 
 #include <cstdint>
+#include <filesystem>
+#include <string>
 #include <optional>
 #include <span>
 #include <variant>
@@ -65,7 +68,21 @@ struct CheckerTexture {
 
 // A material's diffuse colour: constant, or a texture evaluated at the shading point
 // (render/texture.h). Adding a kind fails to compile where it is not evaluated.
-using ColorTexture = std::variant<Color, CheckerTexture>;
+// An image texture (RenderScene::textures[image]) times `tint`, at the surface's texture
+// coordinates.
+struct ImageTexture {
+  std::uint32_t image;
+  Color tint;
+  TextureWrap wrap;
+};
+
+using ColorTexture = std::variant<Color, CheckerTexture, ImageTexture>;
+
+// An image file a texture reads, and the OpenColorIO colour space its values are encoded in.
+struct TextureImage {
+  std::filesystem::path file;
+  std::string colorspace;
+};
 
 // A smooth dielectric (glass, water): refraction index and interior absorption.
 struct Dielectric {
@@ -88,6 +105,7 @@ struct RenderScene {
   std::vector<Material> materials;
   std::vector<std::string> material_names;
   std::vector<Light> lights;
+  std::vector<TextureImage> textures;  // each file and colour space once
   Group top;                     // may contain instances
   std::vector<Group> prototypes; // never contain instances
 

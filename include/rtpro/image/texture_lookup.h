@@ -1,0 +1,36 @@
+#pragma once
+// Image textures, looked up through OpenImageIO's TextureSystem (mip-mapped, filtered, cached).
+// OpenImageIO 2.4's TextureSystem has no per-texture colour space, so each texture is decoded
+// once, when it is opened: read whole, converted from its colour space to scene-linear through
+// OpenColorIO (the bundled config's "sRGB - Texture", or "Linear Rec.709 (sRGB)" for linear
+// data), and written as a tiled, mip-mapped float .tx file in a private temporary folder that
+// lives as long as the lookup. Shading then reads linear values only.
+#include "rtpro/core/texture_wrap.h"
+#include "rtpro/core/vec3.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+
+namespace rtpro {
+
+struct TextureSource {
+  std::filesystem::path file;
+  std::string colorspace;  // an OpenColorIO colour space of the bundled config
+};
+
+class TextureLookup {
+ public:
+  virtual ~TextureLookup() = default;
+  // The RGB colour of texture `index` (into the sources it was opened with) at (s, t): s across
+  // the image, t down it, both 0 to 1 over the image. Without a footprint the finest level is
+  // read, bilinearly filtered. Safe from any thread.
+  virtual Color lookup(std::uint32_t index, float s, float t, TextureWrap wrap) const = 0;
+};
+
+// Opens every source. Throws InputError naming the file when one cannot be read or decoded.
+std::unique_ptr<TextureLookup> open_textures(std::span<const TextureSource> sources);
+
+}  // namespace rtpro

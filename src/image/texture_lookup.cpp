@@ -1,0 +1,114 @@
+#include "rtpro/image/texture_lookup.h"
+
+#include "rtpro/core/error.h"
+#include "rtpro/image/color_config.h"
+#include "rtpro/image/image_io.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/texture.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace rtpro {
+
+namespace {
+
+// A private folder for the decoded .tx files, removed with the lookup.
+class TemporaryFolder {
+ public:
+  TemporaryFolder() {
+    const char* base = std::getenv("TMPDIR");
+    std::string pattern = std::string(base && *base ? base : "/tmp") + "/rtpro-textures-XXXXXX";
+    if (!mkdtemp(pattern.data()))
+      throw RuntimeError("cannot create a folder for decoded textures under " + pattern.substr(0, pattern.rfind('/')));
+    path_ = pattern;
+  }
+  ~TemporaryFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  TemporaryFolder(const TemporaryFolder&) = delete;
+  TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// The file's pixels as linear RGB floats: grey and grey-alpha images repeat their first channel,
+// extra channels (alpha) are dropped, then the colour space is converted to scene_linear.
+std::vector<float> linear_rgb(const Image& image, const DisplayTransform& to_linear) {
+  const std::size_t pixels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+  const std::size_t channels = image.channels.size();
+  std::vector<float> rgb(pixels * 3);
+  for (std::size_t p = 0; p < pixels; ++p)
+    for (std::size_t c = 0; c < 3; ++c) rgb[3 * p + c] = image.data[p * channels + (channels >= 3 ? c : 0)];
+  to_linear.apply(rgb.data(), pixels);
+  return rgb;
+}
+
+OIIO::TextureOpt::Wrap oiio_wrap(TextureWrap wrap) {
+  switch (wrap) {
+    case TextureWrap::kRepeat: return OIIO::TextureOpt::WrapPeriodic;
+    case TextureWrap::kClamp: return OIIO::TextureOpt::WrapClamp;
+    case TextureWrap::kMirror: return OIIO::TextureOpt::WrapMirror;
+    case TextureWrap::kBlack: return OIIO::TextureOpt::WrapBlack;
+  }
+  return OIIO::TextureOpt::WrapPeriodic;
+}
+
+class OiioTextureLookup final : public TextureLookup {
+ public:
+  explicit OiioTextureLookup(std::span<const TextureSource> sources)
+      : system_(OIIO::TextureSystem::create(/*shared=*/false)) {
+    // Every file is opened once and kept: rtpro's textures are its own decoded copies.
+    system_->attribute("max_open_files", 100);
+    system_->attribute("autotile", 0);
+    const ColorConfig config = ColorConfig::bundled();
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+      const TextureSource& source = sources[i];
+      const Image image = read_image(source.file);
+      const std::vector<float> rgb = linear_rgb(image, config.to_scene_linear(source.colorspace));
+      const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
+      const OIIO::ImageBuf linear(spec, const_cast<float*>(rgb.data()));
+      const std::filesystem::path tx = folder_.path() / (std::to_string(i) + ".tx");
+      OIIO::ImageSpec config_spec;
+      config_spec.attribute("maketx:filtername", "box");
+      if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, linear, tx.string(), config_spec))
+        throw InputError(source.file.string() + ": cannot prepare the texture: " + OIIO::geterror());
+      OIIO::TextureSystem::TextureHandle* handle = system_->get_texture_handle(OIIO::ustring(tx.string()));
+      if (!handle) throw InputError(source.file.string() + ": the texture system cannot open its decoded copy");
+      handles_.push_back(handle);
+    }
+  }
+
+  Color lookup(std::uint32_t index, float s, float t, TextureWrap wrap) const override {
+    OIIO::TextureOpt options;
+    options.swrap = options.twrap = oiio_wrap(wrap);
+    // Bilinear: OpenImageIO's default (smart bicubic) smooths even at a texel's centre when there
+    // is no footprint to filter over; camera rays carry none, and supersampling does the rest.
+    options.interpmode = OIIO::TextureOpt::InterpBilinear;
+    float rgb[3] = {0.0f, 0.0f, 0.0f};
+    system_->texture(handles_[index], system_->get_perthread_info(), options, s, t, 0.0f, 0.0f, 0.0f, 0.0f, 3, rgb);
+    return {rgb[0], rgb[1], rgb[2]};
+  }
+
+ private:
+  TemporaryFolder folder_;
+  struct Destroy {
+    void operator()(OIIO::TextureSystem* system) const { OIIO::TextureSystem::destroy(system); }
+  };
+  std::unique_ptr<OIIO::TextureSystem, Destroy> system_;
+  std::vector<OIIO::TextureSystem::TextureHandle*> handles_;
+};
+
+}  // namespace
+
+std::unique_ptr<TextureLookup> open_textures(std::span<const TextureSource> sources) {
+  return std::make_unique<OiioTextureLookup>(sources);
+}
+
+}  // namespace rtpro

@@ -1,0 +1,76 @@
+// Image textures in scene descriptions: `color: {texture: ...}` and MTL map_Kd, their colour
+// spaces and wrap modes, and missing files refused where they are named.
+#include "rtpro/core/error.h"
+#include "rtpro/scene/build_render_scene.h"
+#include "rtpro/scene/scene_parser.h"
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+
+namespace rtpro {
+namespace {
+
+std::string scene_with(const std::string& material) {
+  return "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\nmaterials:\n  m: " + material +
+         "\nworld:\n  - {type: sphere, center: [0, 0, 0], radius: 1, material: m}\n";
+}
+
+TEST(ImageTexture, SceneTextureIsRegisteredOnceWithItsColourSpaceAndWrap) {
+  const auto image = test::write_file("maps/wood.png", "not read until rendering");
+  const auto scene_file = test::write_file("s.yaml", "");
+  const std::string text = "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\nmaterials:\n"
+                           "  a: {color: {texture: maps/wood.png}}\n"
+                           "  b: {color: {texture: maps/wood.png, wrap: clamp, tint: [1, 0.5, 0.5]}}\n"
+                           "  c: {color: {texture: maps/wood.png, colorspace: linear}}\n"
+                           "world:\n  - {type: sphere, center: [0, 0, 0], radius: 1, material: a}\n";
+  const RenderScene scene = build_render_scene(parse_scene_text(text, scene_file));
+  ASSERT_EQ(scene.textures.size(), 2u);  // a and b share the file and colour space
+  EXPECT_EQ(scene.textures[0].file, image);
+  EXPECT_EQ(scene.textures[0].colorspace, "sRGB - Texture");
+  EXPECT_EQ(scene.textures[1].colorspace, "Linear Rec.709 (sRGB)");
+  const auto& a = std::get<ImageTexture>(scene.materials[1].color);
+  const auto& b = std::get<ImageTexture>(scene.materials[2].color);
+  EXPECT_EQ(a.image, 0u);
+  EXPECT_EQ(a.wrap, TextureWrap::kRepeat);
+  EXPECT_EQ(a.tint.x, 1.0f);
+  EXPECT_EQ(b.image, 0u);
+  EXPECT_EQ(b.wrap, TextureWrap::kClamp);
+  EXPECT_EQ(b.tint.y, 0.5f);
+}
+
+TEST(ImageTexture, MissingSceneTextureIsRefusedAtItsKey) {
+  const auto scene_file = test::write_file("s.yaml", "");
+  try {
+    parse_scene_text(scene_with("{color: {texture: missing.png}}"), scene_file);
+    FAIL() << "a missing texture was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 4) << e.what();
+    EXPECT_GT(e.where().column, 0) << e.what();
+    EXPECT_NE(std::string(e.what()).find("missing.png"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(parse_scene_text(scene_with("{color: {texture: x.png, wrap: tile}}"), scene_file), InputError);
+  EXPECT_THROW(parse_scene_text(scene_with("{color: {texture: ''}}"), scene_file), InputError);
+}
+
+TEST(ImageTexture, MissingMapKdIsRefusedAtItsMtlLine) {
+  test::scratch_dir();  // empty: wood.png is written below, after the refusal
+  test::write_file("box.obj", "mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl wood\nf 1/1 2/2 3/3\n");
+  const auto mtl = test::write_file("box.mtl", "newmtl wood\nKd 1 1 1\nmap_Kd wood.png\n");
+  const auto scene_file = test::write_file("s.yaml", "");
+  const std::string text =
+      "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\nworld:\n  - {type: mesh, file: box.obj}\n";
+  try {
+    build_render_scene(parse_scene_text(text, scene_file));
+    FAIL() << "a missing map_Kd was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().file, mtl.string()) << e.what();
+    EXPECT_EQ(e.where().line, 3) << e.what();
+  }
+  test::write_file("wood.png", "present");
+  const RenderScene scene = build_render_scene(parse_scene_text(text, scene_file));
+  ASSERT_EQ(scene.textures.size(), 1u);
+  EXPECT_EQ(scene.textures[0].file.filename(), "wood.png");
+}
+
+}  // namespace
+}  // namespace rtpro
