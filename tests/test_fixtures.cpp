@@ -27,7 +27,8 @@ InputError mesh_load_error(const std::filesystem::path& file) {
 std::unique_ptr<TextureLookup> open_scene_textures(const RenderScene& scene) {
   if (scene.textures.empty()) return nullptr;
   std::vector<TextureSource> sources;
-  for (const TextureImage& texture : scene.textures) sources.push_back({texture.file, texture.colorspace});
+  for (const TextureImage& texture : scene.textures)
+    sources.push_back({texture.file, texture.colorspace, texture.bytes.get()});
   return open_textures(sources);
 }
 

@@ -235,7 +235,8 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   std::unique_ptr<TextureLookup> textures;
   if (!scene.textures.empty()) {
     std::vector<TextureSource> sources;
-    for (const TextureImage& texture : scene.textures) sources.push_back({texture.file, texture.colorspace});
+    for (const TextureImage& texture : scene.textures)
+      sources.push_back({texture.file, texture.colorspace, texture.bytes.get()});
     textures = open_textures(sources);
     render_options.textures = textures.get();
     log.verbose("opened " + std::to_string(sources.size()) + " image textures");

@@ -21,7 +21,7 @@ std::string quality_name(EmbreeBuildQuality quality) {
 
 JobIdentity render_job_identity(const SceneDescription& description, const SceneBuildReport& report,
                                 const RenderScene& scene, const RenderJobSettings& settings) {
-  JobIdentity identity = scene_identity(description, report);
+  JobIdentity identity = scene_identity(description, report, scene);
   for (std::size_t i = 0; i < settings.overrides.size(); ++i)
     identity.set("override " + std::to_string(i + 1), settings.overrides[i]);
   identity.set("image", std::to_string(scene.camera.width) + "x" + std::to_string(scene.camera.height));

@@ -9,6 +9,7 @@
 #include <OpenImageIO/texture.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -70,7 +71,7 @@ class OiioTextureLookup final : public TextureLookup {
     const ColorConfig config = ColorConfig::bundled();
     for (std::size_t i = 0; i < sources.size(); ++i) {
       const TextureSource& source = sources[i];
-      const Image image = read_image(source.file);
+      const Image image = read_image(source.bytes ? write_embedded(source, i) : source.file);
       const std::vector<float> rgb = linear_rgb(image, config.to_scene_linear(source.colorspace));
       const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
       const OIIO::ImageBuf linear(spec, const_cast<float*>(rgb.data()));
@@ -83,6 +84,15 @@ class OiioTextureLookup final : public TextureLookup {
       if (!handle) throw InputError(source.file.string() + ": the texture system cannot open its decoded copy");
       handles_.push_back(handle);
     }
+  }
+
+  // An image stored inside a glTF, as a file in the private folder (for rtpro's checked reader).
+  std::filesystem::path write_embedded(const TextureSource& source, std::size_t index) const {
+    const std::filesystem::path file = folder_.path() / ("embedded" + std::to_string(index) + source.file.extension().string());
+    std::ofstream out(file, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(source.bytes->data()), static_cast<std::streamsize>(source.bytes->size()));
+    if (!out.flush()) throw RuntimeError("cannot write a decoded texture into " + folder_.path().string());
+    return file;
   }
 
   Color lookup(std::uint32_t index, float s, float t, TextureWrap wrap) const override {

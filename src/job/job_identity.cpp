@@ -108,7 +108,8 @@ std::string file_digest(const std::filesystem::path& file) {
   return hex64(digest);
 }
 
-JobIdentity scene_identity(const SceneDescription& description, const SceneBuildReport& report) {
+JobIdentity scene_identity(const SceneDescription& description, const SceneBuildReport& report,
+                           const RenderScene& scene) {
   JobIdentity identity;
   identity.set("rtpro", RTPRO_VERSION);
   std::set<std::filesystem::path> seen;
@@ -121,8 +122,9 @@ JobIdentity scene_identity(const SceneDescription& description, const SceneBuild
     add("mesh", mesh.file);
     for (const auto& file : mesh.stats.files_read) add("mesh data", file);
   }
-  for (const MaterialDesc& material : description.materials)
-    if (!material.color_texture.empty()) add("texture", material.color_texture);
+  // Images stored inside a glTF are covered by the glTF's own digest.
+  for (const TextureImage& texture : scene.textures)
+    if (!texture.bytes) add("texture", texture.file);
   return identity;
 }
 

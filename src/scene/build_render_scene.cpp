@@ -21,13 +21,13 @@ namespace {
 ColorTexture color_texture(const MaterialDesc& m, std::vector<TextureImage>& textures) {
   if (!m.color_texture.empty()) {
     std::error_code error;
-    if (!std::filesystem::is_regular_file(m.color_texture, error))
+    if (!m.texture_bytes && !std::filesystem::is_regular_file(m.color_texture, error))
       throw InputError(m.texture_where, "texture '" + m.color_texture.string() + "' not found");
     std::uint32_t index = 0;
     while (index < textures.size() &&
            !(textures[index].file == m.color_texture && textures[index].colorspace == m.texture_colorspace))
       ++index;
-    if (index == textures.size()) textures.push_back({m.color_texture, m.texture_colorspace});
+    if (index == textures.size()) textures.push_back({m.color_texture, m.texture_colorspace, m.texture_bytes});
     return ImageTexture{index, m.color, m.texture_wrap};
   }
   if (!m.checker) return m.color;

@@ -108,8 +108,13 @@ bool write_whole_file(std::string* err, const std::string&, const std::vector<un
   return false;
 }
 
-// Images are read by OpenImageIO when texturing needs them; tinygltf only records where they are.
-bool keep_image_reference(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// Images are decoded by OpenImageIO when texturing needs them, never by tinygltf: an image file
+// is found again by its URI; an image inside the glTF (a buffer view or a data: URI) is kept
+// encoded in Image::image for the texture to read.
+bool keep_image_reference(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                          const unsigned char* bytes, int size, void*) {
+  const bool inside = image->uri.empty() || image->uri.rfind("data:", 0) == 0;
+  if (inside && bytes && size > 0) image->image.assign(bytes, bytes + size);
   return true;
 }
 

@@ -14,7 +14,8 @@ float clamped_unit(double value) { return float(std::clamp(std::isfinite(value) 
 // The image a texture reference points at, as a path rtpro can open later; empty when the
 // reference leads nowhere (a warning).
 std::filesystem::path texture_path(const tinygltf::Model& model, int texture, const std::filesystem::path& file,
-                                   const std::string& where, std::vector<std::string>& warnings) {
+                                   const std::string& where, std::vector<std::string>& warnings,
+                                   std::shared_ptr<const std::vector<unsigned char>>* bytes) {
   if (texture < 0) return {};
   if (std::size_t(texture) >= model.textures.size() || model.textures[std::size_t(texture)].source < 0 ||
       std::size_t(model.textures[std::size_t(texture)].source) >= model.images.size()) {
@@ -24,9 +25,18 @@ std::filesystem::path texture_path(const tinygltf::Model& model, int texture, co
   const int source = model.textures[std::size_t(texture)].source;
   const tinygltf::Image& image = model.images[std::size_t(source)];
   if (image.uri.empty() || image.uri.rfind("data:", 0) == 0) {
-    warnings.push_back(file.string() + ": images[" + std::to_string(source) +
-                       "] is stored inside the glTF (a buffer view or data: URI): rtpro reads texture files only; ignored");
-    return {};
+    if (image.image.empty()) {
+      warnings.push_back(file.string() + ": images[" + std::to_string(source) + "] has no data; ignored");
+      return {};
+    }
+    // Stored inside the glTF: kept encoded, named with an extension OpenImageIO picks a reader by.
+    const std::string mime = !image.mimeType.empty() ? image.mimeType
+                                                     : image.uri.substr(5, image.uri.find(';') == std::string::npos
+                                                                               ? 0
+                                                                               : image.uri.find(';') - 5);
+    const std::string extension = mime == "image/png" ? ".png" : mime == "image/jpeg" ? ".jpg" : ".img";
+    *bytes = std::make_shared<const std::vector<unsigned char>>(image.image);
+    return file.string() + "#images[" + std::to_string(source) + "]" + extension;
   }
   const std::filesystem::path relative(image.uri);
   const std::filesystem::path normal = relative.lexically_normal();
@@ -67,7 +77,8 @@ MaterialDesc read_material(const tinygltf::Model& model, int index, const std::f
   desc.shininess = n;
   desc.specular = std::min(f0 * (n + 2.0f) / 2.0f, 2.0f) * std::min(1.0f, n / kFullHighlightNs);
   desc.opacity = alpha;
-  desc.color_texture = texture_path(model, pbr.baseColorTexture.index, file, path + ".pbrMetallicRoughness.baseColorTexture", warnings);
+  desc.color_texture = texture_path(model, pbr.baseColorTexture.index, file, path + ".pbrMetallicRoughness.baseColorTexture",
+                                    warnings, &desc.texture_bytes);
   desc.texture_where = SourceLocation{file.string() + ": " + path + ".pbrMetallicRoughness.baseColorTexture"};
   return desc;
 }

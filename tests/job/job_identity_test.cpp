@@ -52,12 +52,18 @@ TEST(JobIdentity, SceneIdentityCoversSourcesMeshesAndWhatTheyRead) {
   SceneBuildReport report;
   report.meshes.push_back({test::write_file("m.obj", "mtllib m.mtl\n").string(), {}, 0.0});
   report.meshes.back().stats.files_read.push_back(test::write_file("m.mtl", "newmtl a\n"));
-  const JobIdentity before = scene_identity(description, report);
-  EXPECT_EQ(before.entries().size(), 5u);  // rtpro version + 4 files
+  RenderScene scene;
+  scene.textures.push_back({test::write_file("wood.png", "pixels"), "sRGB - Texture", nullptr});
+  scene.textures.push_back({"m.glb#images[0].png", "sRGB - Texture",
+                            std::make_shared<const std::vector<unsigned char>>(4, 0)});  // inside a glTF
+  const JobIdentity before = scene_identity(description, report, scene);
+  EXPECT_EQ(before.entries().size(), 6u);  // rtpro version + 4 files + the texture file
   test::write_file("m.mtl", "newmtl b\n");
-  const std::vector<std::string> d = scene_identity(description, report).differences(before, "the journal");
-  ASSERT_EQ(d.size(), 1u);
+  test::write_file("wood.png", "other pixels");
+  const std::vector<std::string> d = scene_identity(description, report, scene).differences(before, "the journal");
+  ASSERT_EQ(d.size(), 2u);
   EXPECT_NE(d[0].find("m.mtl"), std::string::npos) << d[0];
+  EXPECT_NE(d[1].find("wood.png"), std::string::npos) << d[1];
 }
 
 }  // namespace

@@ -13,12 +13,16 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace rtpro {
 
 struct TextureSource {
   std::filesystem::path file;
   std::string colorspace;  // an OpenColorIO colour space of the bundled config
+  // When set, the encoded image itself (an image stored inside a glTF); `file` only names it, its
+  // extension telling the format.
+  const std::vector<unsigned char>* bytes = nullptr;
 };
 
 class TextureLookup {

@@ -42,8 +42,9 @@ std::string file_digest(const std::filesystem::path& file);
 std::string text_digest(std::string_view text);
 
 // The rtpro version and the digest of every file the scene's pixels depend on, each once: the
-// description's source files and textures, and what building it loaded (meshes, glTF files and
-// the files they read, such as MTL libraries and glTF buffers).
-JobIdentity scene_identity(const SceneDescription& description, const SceneBuildReport& report);
+// description's source files, what building it loaded (meshes, glTF files and the files they read,
+// such as MTL libraries and glTF buffers) and the image textures of the built scene.
+JobIdentity scene_identity(const SceneDescription& description, const SceneBuildReport& report,
+                           const RenderScene& scene);
 
 }  // namespace rtpro

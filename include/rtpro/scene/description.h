@@ -62,6 +62,9 @@ struct MaterialDesc {
   std::string texture_colorspace = "sRGB - Texture";
   TextureWrap texture_wrap = TextureWrap::kRepeat;
   SourceLocation texture_where;  // where the texture was named, for a missing file
+  // An image stored inside a glTF: its encoded bytes (color_texture then names it, e.g.
+  // "model.glb#images[0].png", the extension telling its format).
+  std::shared_ptr<const std::vector<unsigned char>> texture_bytes;
   float opacity = 1.0f;          // MTL d (or 1 - Tr), glTF baseColorFactor alpha; not rendered yet
 };
 

@@ -11,6 +11,7 @@
 #include "rtpro/scene/render_settings.h"
 
 #include <cstdint>
+#include <memory>
 #include <filesystem>
 #include <string>
 #include <optional>
@@ -82,6 +83,8 @@ using ColorTexture = std::variant<Color, CheckerTexture, ImageTexture>;
 struct TextureImage {
   std::filesystem::path file;
   std::string colorspace;
+  // An image stored inside a glTF: its encoded bytes (`file` then only names it).
+  std::shared_ptr<const std::vector<unsigned char>> bytes;
 };
 
 // A smooth dielectric (glass, water): refraction index and interior absorption.
