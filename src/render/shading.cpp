@@ -83,19 +83,26 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
     for (std::uint32_t l = 0; l < scene.lights.size(); ++l) {
       const Light& light = scene.lights[l];
       const int per_axis = ws.light_samples_per_axis[l];
-      const int count = per_axis * per_axis;
-      const float share = 1.0f / static_cast<float>(count);
-      for (int j = 0; j < count; ++j) {
-        const Sample2D u = per_axis == 1 && !ws.is_emitter[l]
-                               ? Sample2D{0.5f, 0.5f}
-                               : sampler.light_sample(key.pixel_key, key.sample_index, depth, int(l), j, per_axis);
-        const LightSample ls = sample_light(light, s.point.position, u);
-        if (ws.is_emitter[l] && is_black(ls.radiance)) continue;
+      if (per_axis == 1 && !ws.is_emitter[l]) {  // a point or directional light: one shadow ray
+        const LightSample ls = sample_light(light, s.point.position, Sample2D{0.5f, 0.5f});
         const float n_dot_l = dot(s.point.shading_normal, ls.direction);
         if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) continue;
         ws.shadow_rays.push_back(std::isinf(ls.distance) ? spawn_ray(s.point, ls.direction)
                                                          : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
-        ws.shadow_queries.push_back({count == 1 ? ls.radiance : ls.radiance * share, n_dot_l, dot(s.mirror, ls.direction)});
+        ws.shadow_queries.push_back({ls.radiance, n_dot_l, dot(s.mirror, ls.direction)});
+        continue;
+      }
+      const int count = per_axis * per_axis;
+      const float share = 1.0f / static_cast<float>(count);
+      for (int j = 0; j < count; ++j) {
+        const Sample2D u = sampler.light_sample(key.pixel_key, key.sample_index, depth, int(l), j, per_axis);
+        const LightSample ls = sample_light(light, s.point.position, u);
+        if (is_black(ls.radiance)) continue;
+        const float n_dot_l = dot(s.point.shading_normal, ls.direction);
+        if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) continue;
+        ws.shadow_rays.push_back(std::isinf(ls.distance) ? spawn_ray(s.point, ls.direction)
+                                                         : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
+        ws.shadow_queries.push_back({ls.radiance * share, n_dot_l, dot(s.mirror, ls.direction)});
       }
     }
     s.end_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
