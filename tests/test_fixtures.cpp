@@ -1,8 +1,11 @@
 #include "test_fixtures.h"
 
+#include "rtpro/image/image_io.h"
 #include "rtpro/scene/mesh_loader.h"
 
 #include <gtest/gtest.h>
+
+#include <cstring>
 
 namespace rtpro::test {
 
@@ -24,12 +27,12 @@ InputError mesh_load_error(const std::filesystem::path& file) {
   return InputError("none");
 }
 
-std::unique_ptr<TextureLookup> open_scene_textures(const RenderScene& scene) {
-  if (scene.textures.empty()) return nullptr;
-  std::vector<TextureSource> sources;
-  for (const TextureImage& texture : scene.textures)
-    sources.push_back({texture.file, texture.colorspace, texture.bytes.get()});
-  return open_textures(sources);
+void expect_same_pixels(const std::filesystem::path& reference, const std::filesystem::path& test) {
+  const Image a = read_image(reference), b = read_image(test);
+  ASSERT_EQ(a.channels, b.channels);
+  ASSERT_EQ(a.data.size(), b.data.size());
+  EXPECT_EQ(std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)), 0)
+      << test << " differs from " << reference;
 }
 
 }  // namespace rtpro::test

@@ -2,11 +2,8 @@
 // Small fixtures several test files share.
 #include "rtpro/core/error.h"
 #include "rtpro/image/image.h"
-#include "rtpro/image/texture_lookup.h"
-#include "rtpro/scene/render_scene.h"
 
 #include <filesystem>
-#include <memory>
 
 namespace rtpro::test {
 
@@ -16,7 +13,8 @@ Image gradient_image(int width, int height);
 // The InputError load_mesh_file throws for `file`; records a test failure if none is thrown.
 InputError mesh_load_error(const std::filesystem::path& file);
 
-// The scene's image textures, opened as rtpro render opens them; null when it has none.
-std::unique_ptr<TextureLookup> open_scene_textures(const RenderScene& scene);
+// Reads both image files and records a test failure unless their channels and every float of
+// their pixels are the same, bit for bit.
+void expect_same_pixels(const std::filesystem::path& reference, const std::filesystem::path& test);
 
 }  // namespace rtpro::test

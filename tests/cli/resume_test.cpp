@@ -1,6 +1,7 @@
 // `rtpro render --resume` through the real binary: a render killed at any moment and resumed gives
 // the image of an uninterrupted render, bit for bit; a journal of another job is refused.
 #include "rtpro/image/image_io.h"
+#include "test_fixtures.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -17,6 +18,7 @@ namespace rtpro {
 namespace {
 
 using test::rtpro_executable;
+using test::expect_same_pixels;
 using test::run_command;
 
 const char* kScene = R"(rtpro: 1
@@ -62,13 +64,6 @@ std::size_t recorded_tiles(const std::filesystem::path& journal) {
   const std::uintmax_t header = sizeof magic + 2 * sizeof length + length;
   const std::uintmax_t size = file_size_or_zero(journal);
   return size > header ? static_cast<std::size_t>((size - header) / kRecordBytes) : 0;
-}
-
-void expect_same_pixels(const std::filesystem::path& a, const std::filesystem::path& b) {
-  const Image x = read_image(a), y = read_image(b);
-  ASSERT_EQ(x.channels, y.channels);
-  ASSERT_EQ(x.data.size(), y.data.size());
-  EXPECT_EQ(std::memcmp(x.data.data(), y.data.data(), x.data.size() * sizeof(float)), 0) << a << " vs " << b;
 }
 
 // Starts a single-threaded render, SIGKILLs it once its journal holds `tiles` records.

@@ -5,7 +5,7 @@
 // tile) and no tile is the background alone.
 #include "html_report.h"
 #include "regression_paths.h"
-#include "test_fixtures.h"
+#include "scene_textures.h"
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/error.h"
 #include "rtpro/image/image_io.h"
@@ -95,7 +95,7 @@ TEST(CorpusMosaic, EveryLoadableModelIsInItsFrame) {
     const BBox bounds = scene.bounds();
     scene.camera = make_render_camera(framing(bounds));
     const auto backend = make_backend(BackendKind::kEmbree, scene, BackendOptions{});
-    const std::unique_ptr<TextureLookup> textures = test::open_scene_textures(scene);
+    const std::unique_ptr<TextureLookup> textures = regression::open_scene_textures(scene);
     RenderOptions options;
     options.textures = textures.get();
     Image tile = render_image(scene, *backend, options).image;

@@ -8,7 +8,7 @@
 #include "html_report.h"
 #include "regression_paths.h"
 #include "regression_tolerance.h"
-#include "test_fixtures.h"
+#include "scene_textures.h"
 #include "test_paths.h"
 
 #include "rtpro/backend/backend.h"
@@ -90,7 +90,7 @@ SmallRender render_small(const fs::path& scene_file, BackendKind backend_kind) {
                    "camera.resolution=[" + std::to_string(kReferenceWidth) + "," + std::to_string(height) + "]"});
   const RenderScene scene = build_render_scene(small);
   const auto backend = make_backend(backend_kind, scene, BackendOptions{});
-  const std::unique_ptr<TextureLookup> textures = test::open_scene_textures(scene);
+  const std::unique_ptr<TextureLookup> textures = regression::open_scene_textures(scene);
   RenderOptions options;
   options.textures = textures.get();
   return {render_image(scene, *backend, options).image, regression::tolerance_for(backend_kind, scene)};

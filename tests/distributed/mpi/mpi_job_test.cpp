@@ -3,6 +3,7 @@
 // both backends; ranks that would render different things are refused; a killed rank ends the job
 // without touching the output, and --resume finishes it exactly.
 #include "rtpro/image/image_io.h"
+#include "test_fixtures.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -19,6 +20,7 @@ namespace rtpro {
 namespace {
 
 using test::rtpro_executable;
+using test::expect_same_pixels;
 using test::run_command;
 
 const char* kScene = R"(rtpro: 1
@@ -56,13 +58,6 @@ std::string mpirun(int ranks) {
 
 std::string render_args(const std::filesystem::path& scene, const std::filesystem::path& out) {
   return rtpro_executable().string() + " render " + scene.string() + " -o " + out.string() + kAovs + " -q";
-}
-
-void expect_same_pixels(const std::filesystem::path& reference, const std::filesystem::path& test) {
-  const Image a = read_image(reference), b = read_image(test);
-  ASSERT_EQ(a.channels, b.channels);
-  ASSERT_EQ(a.data.size(), b.data.size());
-  EXPECT_EQ(std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)), 0) << test << " differs from " << reference;
 }
 
 TEST(MpiJob, ImageIsBitIdenticalToOneProcessForAnyRanksThreadsAndTiles) {
