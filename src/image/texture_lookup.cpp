@@ -61,13 +61,23 @@ OIIO::TextureOpt::Wrap oiio_wrap(TextureWrap wrap) {
   return OIIO::TextureOpt::WrapPeriodic;
 }
 
+// One texture system for the process, never destroyed: OpenImageIO 2.4.7's TextureSystem::destroy
+// deletes the implementation through the base class with a sized delete of the wrong size
+// (AddressSanitizer: new-delete-type-mismatch, 184 against 1 bytes). Lookups invalidate their
+// own files when they end.
+OIIO::TextureSystem& texture_system() {
+  static OIIO::TextureSystem* const system = [] {
+    OIIO::TextureSystem* created = OIIO::TextureSystem::create(/*shared=*/false);
+    created->attribute("max_open_files", 100);
+    created->attribute("autotile", 0);
+    return created;
+  }();
+  return *system;
+}
+
 class OiioTextureLookup final : public TextureLookup {
  public:
-  explicit OiioTextureLookup(std::span<const TextureSource> sources)
-      : system_(OIIO::TextureSystem::create(/*shared=*/false)) {
-    // Every file is opened once and kept: rtpro's textures are its own decoded copies.
-    system_->attribute("max_open_files", 100);
-    system_->attribute("autotile", 0);
+  explicit OiioTextureLookup(std::span<const TextureSource> sources) : system_(&texture_system()) {
     const ColorConfig config = ColorConfig::bundled();
     for (std::size_t i = 0; i < sources.size(); ++i) {
       const TextureSource& source = sources[i];
@@ -80,7 +90,8 @@ class OiioTextureLookup final : public TextureLookup {
       config_spec.attribute("maketx:filtername", "box");
       if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, linear, tx.string(), config_spec))
         throw InputError(source.file.string() + ": cannot prepare the texture: " + OIIO::geterror());
-      OIIO::TextureSystem::TextureHandle* handle = system_->get_texture_handle(OIIO::ustring(tx.string()));
+      files_.emplace_back(tx.string());
+      OIIO::TextureSystem::TextureHandle* handle = system_->get_texture_handle(files_.back());
       if (!handle) throw InputError(source.file.string() + ": the texture system cannot open its decoded copy");
       handles_.push_back(handle);
     }
@@ -107,11 +118,19 @@ class OiioTextureLookup final : public TextureLookup {
   }
 
  private:
+  // Declared first so it is removed last, after the files are forgotten by the system.
   TemporaryFolder folder_;
-  struct Destroy {
-    void operator()(OIIO::TextureSystem* system) const { OIIO::TextureSystem::destroy(system); }
+  // Forgets this lookup's files (closing them) before the folder holding them goes.
+  struct Forget {
+    OIIO::TextureSystem* system;
+    std::vector<OIIO::ustring>* files;
+    ~Forget() {
+      for (const OIIO::ustring& file : *files) system->invalidate(file, true);
+    }
   };
-  std::unique_ptr<OIIO::TextureSystem, Destroy> system_;
+  OIIO::TextureSystem* system_;
+  std::vector<OIIO::ustring> files_;
+  Forget forget_{system_, &files_};
   std::vector<OIIO::TextureSystem::TextureHandle*> handles_;
 };
 
