@@ -17,6 +17,8 @@ namespace {
 
 constexpr unsigned char kExrMagic[4] = {0x76, 0x2f, 0x31, 0x01};
 constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+constexpr unsigned char kGif87[6] = {'G', 'I', 'F', '8', '7', 'a'};
+constexpr unsigned char kGif89[6] = {'G', 'I', 'F', '8', '9', 'a'};
 constexpr std::uint32_t kExrLongNames = 0x400;
 constexpr std::uint32_t kExrMultipart = 0x1000;
 
@@ -172,6 +174,46 @@ void check_png(Reader& in, const SourceLocation& where) {
   }
 }
 
+// OpenImageIO's GIF reader allocates an RGBA canvas of the logical screen's size, and giflib a
+// raster per frame, when the file is opened: a 30-byte GIF declaring 65535x65535 asked for 16 GiB
+// (a fuzz finding). The largest of the screen and every frame is returned as the declared size.
+// A block list cut short or malformed is left to giflib, which reports it.
+DeclaredImageSize check_gif(Reader& in) {
+  const auto u8 = [&] { return static_cast<unsigned char>(in.chars(1)[0]); };
+  const auto u16 = [&] {
+    const std::string b = in.chars(2);
+    return static_cast<std::uint64_t>(static_cast<unsigned char>(b[0]) | static_cast<unsigned char>(b[1]) << 8);
+  };
+  const auto colour_table_bytes = [](unsigned char flags) {
+    return (flags & 0x80) ? std::uintmax_t{3} << ((flags & 7) + 1) : std::uintmax_t{0};
+  };
+  const auto skip_sub_blocks = [&] {
+    for (unsigned char length = u8(); in.ok() && length != 0; length = u8()) in.skip(length);
+  };
+  DeclaredImageSize declared;  // the signature has been read: the screen descriptor follows
+  declared.channels = 4;
+  declared.width = u16();
+  declared.height = u16();
+  const unsigned char screen_flags = u8();
+  in.skip(2 + colour_table_bytes(screen_flags));
+  while (in.ok() && in.left() > 0) {
+    const unsigned char block = u8();
+    if (block == 0x21) {  // extension: label, then data sub-blocks
+      in.skip(1);
+      skip_sub_blocks();
+    } else if (block == 0x2c) {  // image descriptor: left, top, width, height, flags
+      in.skip(4);
+      declared.width = std::max(declared.width, u16());
+      declared.height = std::max(declared.height, u16());
+      in.skip(colour_table_bytes(u8()) + 1);  // local colour table, LZW code size
+      skip_sub_blocks();
+    } else {
+      break;  // the trailer, or bytes giflib will refuse
+    }
+  }
+  return declared;
+}
+
 // Binary PNM (P5 grey, P6 RGB) and PFM (Pf grey, PF RGB) store raw samples: the header's size
 // must fit in the bytes that follow it. Comments and odd whitespace are left to the reader.
 void check_raw_pnm(const std::string& head, std::uintmax_t file_size, const SourceLocation& where) {
@@ -202,6 +244,7 @@ std::optional<DeclaredImageSize> check_image_header(const std::filesystem::path&
   Reader in(file, size);
   const SourceLocation where{file.string()};
   if (in.starts_with(kExrMagic, sizeof kExrMagic)) return check_exr(in, where);
+  if (in.starts_with(kGif87, sizeof kGif87) || in.starts_with(kGif89, sizeof kGif89)) return check_gif(in);
   if (in.starts_with(kPngSignature, sizeof kPngSignature)) check_png(in, where);
   else if (in.starts_with(reinterpret_cast<const unsigned char*>("P"), 1)) {
     in.skip(0);

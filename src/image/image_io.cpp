@@ -4,6 +4,7 @@
 
 #include "display_encoding.h"
 #include "pixel_encoding.h"
+#include "image_format_sniff.h"
 #include "image_header_check.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
@@ -15,9 +16,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <cstring>
 #include <ctime>
 #include <memory>
 #include <variant>
+#include <vector>
 
 namespace rtpro {
 
@@ -186,6 +189,71 @@ void write_pixels(const std::filesystem::path& file, const OIIO::ImageSpec& spec
   replacement.commit();
 }
 
+// Reads an image a band of rows at a time in the file's own pixel types and converts each band
+// to float here. OpenImageIO 2.4's converting read_scanlines allocates a 64 MB buffer per call
+// whatever the image's size (its chunk is 2^26 bytes of scanlines: most of a fuzz execution's time
+// under ASan), and on a tiled file it divides by a rows-per-strip of zero (SIGFPE: every tiled TIFF
+// or EXR crashed `rtpro compare`). Tiles are read one whole tile at a time: the OpenEXR reader's
+// read_native_tiles writes a partial edge tile past the caller's rectangle (CVE-2026-63422, fixed
+// only in OpenImageIO 3.x).
+class NativeBands {
+ public:
+  NativeBands(OIIO::ImageInput& input, const OIIO::ImageSpec& spec, int band_rows)
+      : input_(input),
+        spec_(spec),
+        pixel_bytes_(spec.pixel_bytes(/*native=*/true)),
+        row_bytes_(pixel_bytes_ * static_cast<std::size_t>(spec.width)),
+        native_(row_bytes_ * static_cast<std::size_t>(band_rows)),
+        tile_(spec.tile_width > 0 ? static_cast<std::size_t>(spec.tile_bytes(/*native=*/true)) : 0) {}
+
+  // Rows [y, end) of the image (counted from its data window's top) as floats, channel after
+  // channel; false when the reader fails (its error is on the ImageInput).
+  bool read(int y, int end, float* out) {
+    if (!(spec_.tile_width > 0 ? read_tiles(y, end)
+                                : input_.read_native_scanlines(0, 0, spec_.y + y, spec_.y + end, spec_.z, native_.data())))
+      return false;
+    return convert(end - y, out);
+  }
+
+ private:
+  bool read_tiles(int y, int end) {
+    const std::size_t tile_row_bytes = pixel_bytes_ * static_cast<std::size_t>(spec_.tile_width);
+    for (int x = 0; x < spec_.width; x += spec_.tile_width) {
+      if (!input_.read_native_tile(0, 0, spec_.x + x, spec_.y + y, spec_.z, tile_.data())) return false;
+      const std::size_t columns_bytes = pixel_bytes_ * static_cast<std::size_t>(std::min(spec_.tile_width, spec_.width - x));
+      for (int row = 0; row < end - y; ++row)
+        std::memcpy(native_.data() + static_cast<std::size_t>(row) * row_bytes_ + pixel_bytes_ * static_cast<std::size_t>(x),
+                    tile_.data() + static_cast<std::size_t>(row) * tile_row_bytes, columns_bytes);
+    }
+    return true;
+  }
+
+  bool convert(int rows, float* out) {
+    const std::size_t values = static_cast<std::size_t>(spec_.width) * static_cast<std::size_t>(spec_.nchannels);
+    if (spec_.channelformats.empty())
+      return OIIO::convert_pixel_values(spec_.format, native_.data(), OIIO::TypeDesc::FLOAT, out,
+                                        static_cast<int>(values) * rows);
+    // Per-channel types (an EXR of half colour and float depth): one channel at a time.
+    std::size_t offset = 0;
+    for (int c = 0; c < spec_.nchannels; ++c) {
+      const OIIO::TypeDesc type = spec_.channelformats[static_cast<std::size_t>(c)];
+      if (!OIIO::convert_image(1, spec_.width, rows, 1, native_.data() + offset, type,
+                               static_cast<OIIO::stride_t>(pixel_bytes_), static_cast<OIIO::stride_t>(row_bytes_),
+                               OIIO::AutoStride, out + c, OIIO::TypeDesc::FLOAT,
+                               static_cast<OIIO::stride_t>(sizeof(float)) * spec_.nchannels,
+                               static_cast<OIIO::stride_t>(sizeof(float) * values), OIIO::AutoStride))
+        return false;
+      offset += type.size();
+    }
+    return true;
+  }
+
+  OIIO::ImageInput& input_;
+  const OIIO::ImageSpec& spec_;
+  std::size_t pixel_bytes_, row_bytes_;
+  std::vector<unsigned char> native_, tile_;
+};
+
 }  // namespace
 
 void write_image(const std::filesystem::path& file, const Image& image, const ImageWriteOptions& options) {
@@ -232,8 +300,17 @@ Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
   };
   if (const auto declared = check_image_header(file))
     refuse_if_too_large(declared->width, declared->height, declared->channels);
-  const auto input = OIIO::ImageInput::open(file.string());
-  if (!input) throw InputError(where, "cannot read image: " + oiio_errors(""));
+  // One reader, chosen by signature or extension (image_format_sniff.h); OpenImageIO's fallback
+  // to every reader it has is never taken.
+  const std::string reader = image_reader_name(file);
+  if (reader.empty())
+    throw InputError(where, "cannot tell what kind of image this is: it has no extension and no signature rtpro knows");
+  const auto input = OIIO::ImageInput::create(reader, /*do_open=*/false);
+  if (!input) throw InputError(where, "cannot read image: no reader for '" + reader + "' images (" + oiio_errors("") + ")");
+  OIIO::ImageSpec opened_spec;
+  if (!input->open(file.string(), opened_spec))
+    throw InputError(where, "cannot read image as " + std::string(input->format_name()) + ": " +
+                                oiio_errors(input->geterror()));
   const OIIO::ImageSpec& spec = input->spec();
   if (spec.deep || spec.depth > 1) throw InputError(where, "deep and volume images are not supported");
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
@@ -250,17 +327,30 @@ Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
   image.channels = spec.channelnames;
   const std::size_t row_values = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.nchannels);
   image.data.reserve(row_values * static_cast<std::size_t>(spec.height));
-  // Bands of at least 64 rows and about a million values: each call costs OpenImageIO a buffer of
+  // Bands of at least 64 rows and about a million values: each read costs the library a call of
   // its own, so a narrow image must not take one call per 64 rows (a 5x32864 TIFF took 514 calls and
   // 53 s under ASan, a fuzz finding).
   constexpr std::size_t kBandValues = std::size_t{1} << 20;
-  const int band_rows = static_cast<int>(std::clamp<std::size_t>(kBandValues / row_values, 64,
-                                                                 static_cast<std::size_t>(spec.height)));
+  // A tiled image is read one row of tiles at a time.
+  const bool tiled = spec.tile_width > 0;
+  const std::size_t wanted_rows = std::max<std::size_t>(kBandValues / row_values, 64);
+  const int band_rows = static_cast<int>(std::min<std::size_t>(
+      tiled ? static_cast<std::size_t>(std::max(spec.tile_height, 1)) : wanted_rows, static_cast<std::size_t>(spec.height)));
+  if (tiled) {
+    const std::uint64_t tile_bytes =
+        saturating_multiply(saturating_multiply(static_cast<std::uint64_t>(spec.tile_width),
+                                                static_cast<std::uint64_t>(std::max(spec.tile_height, 1))),
+                            spec.pixel_bytes(/*native=*/true));
+    if (tile_bytes > max_bytes)
+      throw InputError(where, "the image's tiles are too large to read: " + std::to_string(spec.tile_width) + "x" +
+                                  std::to_string(spec.tile_height) + " pixels, " + format_bytes(tile_bytes) +
+                                  "; the limit is " + format_bytes(max_bytes));
+  }
+  NativeBands bands(*input, spec, band_rows);
   for (int y = 0; y < spec.height; y += band_rows) {
     const int end = std::min(y + band_rows, spec.height);
     image.data.resize(row_values * static_cast<std::size_t>(end));
-    if (!input->read_scanlines(0, 0, y, end, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
-                               image.data.data() + row_values * static_cast<std::size_t>(y)))
+    if (!bands.read(y, end, image.data.data() + row_values * static_cast<std::size_t>(y)))
       throw InputError(where, "cannot read image: " + oiio_errors(input->geterror()));
   }
   return image;

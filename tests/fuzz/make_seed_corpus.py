@@ -103,6 +103,15 @@ def image_seeds(work):
     path = pathlib.Path(work) / "aovs.exr"
     subprocess.run(["oiiotool", "--pattern", "constant:color=0.5,0.25,1,0.5,2", "3x2", "5", "--chnames", "R,G,B,A,depth.Z", "-o", str(path)], check=True)
     put("image", "channels.exr", bytes([0]) + path.read_bytes())
+    # Tiled files with partial edge tiles (OpenImageIO 2.4's converting read divides by zero on
+    # them, its EXR tile reader overruns on a partial rectangle), and a GIF (read by its signature).
+    for name, selector_byte, data_type in (("tiled.exr", 0, "half"), ("tiled.tif", 2, "uint8")):
+        path = pathlib.Path(work) / name
+        subprocess.run(["oiiotool", "--pattern", "checker", "20x18", "3", "--tile", "16", "16", "-d", data_type, "-o", str(path)], check=True)
+        put("image", name, bytes([selector_byte]) + path.read_bytes())
+    path = pathlib.Path(work) / "small.gif"
+    subprocess.run(["oiiotool", "--pattern", "checker", "6x5", "3", "-d", "uint8", "-o", str(path)], check=True)
+    put("image", "small.gif", bytes([1]) + path.read_bytes())
     # A valid PNG signature and header declaring 65535 x 65535 pixels, and nothing else.
     ihdr = struct.pack(">IIBBBBB", 65535, 65535, 8, 2, 0, 0, 0)
     png = b"\x89PNG\r\n\x1a\n" + struct.pack(">I", len(ihdr)) + b"IHDR" + ihdr + struct.pack(">I", zlib.crc32(b"IHDR" + ihdr))

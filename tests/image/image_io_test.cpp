@@ -3,6 +3,7 @@
 #include "rtpro/core/error.h"
 #include "test_paths.h"
 
+#include <Imath/half.h>
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
@@ -18,6 +19,7 @@ namespace rtpro {
 namespace {
 
 namespace fs = std::filesystem;
+using namespace std::string_literals;
 
 Image grey_image(int width, int height, float value) {
   Image image(width, height);
@@ -303,6 +305,81 @@ TEST(ImageIo, ReadingGarbageIsAnInputErrorNamingIt) {
   const auto file = test::write_file("garbage.png", "this is not a PNG file at all");
   const std::string message = error_message_of<InputError>([&] { read_image(file); });
   EXPECT_NE(message.find(file.string()), std::string::npos) << message;
+}
+
+TEST(ImageIo, AnImageIsReadByItsSignatureWhateverItsExtension) {
+  const auto folder = test::scratch_dir();
+  write_image(folder / "real.png", grey_image(5, 3, 0.5f), {});
+  std::ofstream(folder / "misnamed.exr", std::ios::binary) << file_bytes(folder / "real.png");
+  const Image image = read_image(folder / "misnamed.exr");
+  EXPECT_EQ(image.width, 5);
+  EXPECT_EQ(image.height, 3);
+}
+
+TEST(ImageIo, GarbageIsTriedOnlyByTheReaderItsExtensionNames) {
+  // OpenImageIO alone would hand these bytes to every reader it has after the PNG reader refused.
+  const auto file = test::write_file("garbage_named.png", "this is not a PNG file at all");
+  const std::string message = error_message_of<InputError>([&] { read_image(file); });
+  EXPECT_NE(message.find("as png"), std::string::npos) << message;
+}
+
+TEST(ImageIo, AFileWithNeitherExtensionNorSignatureIsRefusedSayingSo) {
+  const auto file = test::write_file("image_without_extension", "plain text, no image signature");
+  const std::string message = error_message_of<InputError>([&] { read_image(file); });
+  EXPECT_NE(message.find("cannot tell what kind of image"), std::string::npos) << message;
+}
+
+TEST(ImageIo, AGifWhoseScreenOrFrameExceedsTheReadBudgetIsRefusedBeforeOpening) {
+  // OpenImageIO's GIF reader allocates an RGBA canvas of the screen's size when it opens the file.
+  const std::string huge_screen = "GIF89a\xff\xff\xff\xff\0\0\0;"s;
+  const std::string huge_frame = "GIF89a\x01\0\x01\0\0\0\0,\0\0\0\0\xff\xff\xff\xff\0\x02\0;"s;
+  for (const std::string& bytes : {huge_screen, huge_frame}) {
+    const auto file = test::write_file("huge.gif", bytes);
+    const std::string message = error_message_of<InputError>([&] { read_image(file, std::uint64_t{64} << 20); });
+    EXPECT_NE(message.find("65535x65535"), std::string::npos) << message;
+  }
+}
+
+// Writes `image` with OpenImageIO directly, in the layout `shape` gives the spec (tiles, a data
+// window, per-channel types), as files from other programs come.
+void write_with_oiio(const fs::path& file, const Image& image, OIIO::TypeDesc type,
+                     const std::function<void(OIIO::ImageSpec&)>& shape) {
+  OIIO::ImageSpec spec(image.width, image.height, static_cast<int>(image.channels.size()), type);
+  spec.channelnames = image.channels;
+  shape(spec);
+  const auto output = OIIO::ImageOutput::create(file.string());
+  ASSERT_TRUE(output && output->open(file.string(), spec)) << OIIO::geterror();
+  ASSERT_TRUE(output->write_image(OIIO::TypeDesc::FLOAT, image.data.data())) << output->geterror();
+  ASSERT_TRUE(output->close());
+}
+
+TEST(ImageIo, TiledFilesReadAsTheirScanlineTwins) {
+  // OpenImageIO 2.4's own converting read divides by zero on tiled files (SIGFPE).
+  const auto folder = test::scratch_dir();
+  const Image image = varied_image(37, 29);  // tiles of 16 leave partial tiles at both edges
+  const auto tiled = [](OIIO::ImageSpec& spec) { spec.tile_width = spec.tile_height = 16; };
+  write_with_oiio(folder / "tiled.exr", image, OIIO::TypeDesc::FLOAT, tiled);
+  EXPECT_EQ(read_image(folder / "tiled.exr").data, image.data);
+  write_with_oiio(folder / "tiled.tif", image, OIIO::TypeDesc::FLOAT, tiled);
+  EXPECT_EQ(read_image(folder / "tiled.tif").data, image.data);
+}
+
+TEST(ImageIo, PerChannelTypesAndAnOffsetDataWindowAreReadInPlace) {
+  const auto folder = test::scratch_dir();
+  Image image = varied_image(9, 7, {"R", "G", "B", "Z"});
+  write_with_oiio(folder / "mixed.exr", image, OIIO::TypeDesc::FLOAT, [](OIIO::ImageSpec& spec) {
+    spec.channelformats = {OIIO::TypeDesc::HALF, OIIO::TypeDesc::HALF, OIIO::TypeDesc::HALF, OIIO::TypeDesc::FLOAT};
+    spec.x = 3;
+    spec.y = 5;
+  });
+  const Image read = read_image(folder / "mixed.exr");
+  ASSERT_EQ(read.data.size(), image.data.size());
+  for (std::size_t i = 0; i < image.data.size(); ++i) {
+    // Colour went through half, depth stayed float.
+    const bool depth = i % 4 == 3;
+    const float expected = depth ? image.data[i] : static_cast<float>(Imath::half(image.data[i]));
+    ASSERT_EQ(read.data[i], expected) << "value " << i;
+  }
 }
 
 TEST(ImageIo, ReadingATruncatedExrIsAnInputError) {
