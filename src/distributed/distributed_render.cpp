@@ -6,12 +6,15 @@
 #include "rtpro/render/renderer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
-#include <ctime>
+#include <cmath>
 #include <condition_variable>
+#include <ctime>
 #include <cstring>
 #include <deque>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -22,30 +25,21 @@ namespace {
 
 enum Tag : int { kHello = 1, kVerdict = 2, kRequest = 3, kGrant = 4, kTile = 5, kDone = 6 };
 
-// While nothing arrives the talking thread sleeps, from kShortestPause doubling to kLongestPause:
-// quick answers while messages flow, and no core spun away from the workers when they do not.
-// Followers ask for tiles well ahead (kTilesAheadPerThread), so a pause never starves a worker.
-// Followers wait longer: each wake-up polls MPI, and the tiles they queue ahead cover the wait.
-constexpr auto kShortestPause = std::chrono::microseconds(20);
-constexpr auto kLeaderLongestPause = std::chrono::microseconds(1000);
-constexpr auto kFollowerLongestPause = std::chrono::microseconds(4000);
+// The talking threads wake rarely: on a machine whose cores all render, every wake-up takes a core
+// from a worker. Measured on 2 cores, 2 ranks x 1 thread: with pauses from 20 us up, each rank's
+// talking thread woke ~800 times a second, its worker lost its core ~900 times a second (one
+// process's two threads: ~40), and the two ranks rendered ~10% slower than one process with two
+// threads. So rank 0 looks for messages every kLeaderPause, and a follower sleeps until its
+// workers are about to run short of tiles or finish, polling only while it waits for a grant. To
+// keep its workers fed across that latency a follower keeps kQueuedWork of rendering queued,
+// counted in tiles of its own measured speed.
+constexpr auto kLeaderPause = std::chrono::microseconds(3000);
+constexpr auto kGrantPollPause = std::chrono::microseconds(1000);
+constexpr auto kFollowerIdlePause = std::chrono::milliseconds(50);
+constexpr double kQueuedWorkSeconds = 0.02;
+constexpr std::size_t kMinTilesAheadPerThread = 2;
+constexpr std::size_t kMaxTilesAheadPerThread = 64;
 constexpr auto kPollPause = std::chrono::microseconds(200);
-constexpr std::size_t kTilesAheadPerThread = 2;
-
-class Backoff {
- public:
-  explicit Backoff(std::chrono::microseconds longest) : longest_(longest) {}
-  void reset() { pause_ = kShortestPause; }
-  std::chrono::microseconds next() {
-    const auto pause = pause_;
-    pause_ = std::min(pause_ * 2, longest_);
-    return pause;
-  }
-
- private:
-  std::chrono::microseconds longest_;
-  std::chrono::microseconds pause_ = kShortestPause;
-};
 
 // CPU time of the calling thread: what handling messages costs rank 0, whatever else runs.
 double thread_cpu_seconds() {
@@ -116,7 +110,9 @@ class BackgroundRender {
 // A follower's tiles: indices granted by rank 0, taken by its workers.
 class GrantedTiles final : public TileSource {
  public:
-  GrantedTiles(RankClock& clock, const std::atomic<bool>* cancel) : clock_(clock), cancel_(cancel) {}
+  // `running_low` is called (by a worker) when a tile taken leaves fewer than the low-water mark.
+  GrantedTiles(RankClock& clock, const std::atomic<bool>* cancel, std::function<void()> running_low)
+      : clock_(clock), cancel_(cancel), running_low_(std::move(running_low)) {}
   std::optional<std::size_t> next() override {
     const RankClock::Wait wait(clock_);
     std::unique_lock lock(mutex_);
@@ -124,7 +120,14 @@ class GrantedTiles final : public TileSource {
     if (queue_.empty() || (cancel_ && cancel_->load())) return std::nullopt;
     const std::size_t index = queue_.front();
     queue_.pop_front();
+    const bool low = queue_.size() < low_water_ && !no_more_;
+    lock.unlock();
+    if (low) running_low_();
     return index;
+  }
+  void set_low_water(std::size_t tiles) {
+    const std::lock_guard lock(mutex_);
+    low_water_ = tiles;
   }
   void add(const std::vector<std::uint64_t>& indices) {
     {
@@ -148,9 +151,11 @@ class GrantedTiles final : public TileSource {
  private:
   RankClock& clock_;
   const std::atomic<bool>* cancel_;
+  std::function<void()> running_low_;
   std::mutex mutex_;
   std::condition_variable ready_;
   std::deque<std::size_t> queue_;
+  std::size_t low_water_ = 0;
   bool no_more_ = false;
 };
 
@@ -158,26 +163,34 @@ class GrantedTiles final : public TileSource {
 class OutgoingTiles final : public TileSink {
  public:
   explicit OutgoingTiles(RankClock& clock) : clock_(clock) {}
+  // Finished tiles wait for the talking thread's next wake-up: one per tile would cost a worker its
+  // core each time.
   void put(TileResult&& tile) override {
     clock_.tile_done(tile);
+    const std::lock_guard lock(mutex_);
+    tiles_.push_back(std::move(tile));
+  }
+  // Waits until wake() or `wait` has passed, then takes the finished tiles.
+  std::deque<TileResult> take(std::chrono::microseconds wait) {
+    std::unique_lock lock(mutex_);
+    changed_.wait_for(lock, wait, [&] { return woken_; });
+    woken_ = false;
+    return std::exchange(tiles_, {});
+  }
+  void wake() {
     {
       const std::lock_guard lock(mutex_);
-      tiles_.push_back(std::move(tile));
+      woken_ = true;
     }
     changed_.notify_one();
   }
-  std::deque<TileResult> take(std::chrono::microseconds wait) {
-    std::unique_lock lock(mutex_);
-    changed_.wait_for(lock, wait, [&] { return !tiles_.empty(); });
-    return std::exchange(tiles_, {});
-  }
-  void wake() { changed_.notify_one(); }
 
  private:
   RankClock& clock_;
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<TileResult> tiles_;
+  bool woken_ = false;
 };
 
 // Rank 0's own workers: timed like a follower's, tiles straight into the real sink.
@@ -206,6 +219,20 @@ class TimedSink final : public TileSink {
   TileSink& inner_;
   RankClock& clock_;
 };
+
+// Tiles a follower keeps queued: kQueuedWorkSeconds of rendering at its mean tile time so far,
+// per thread, within [kMinTilesAheadPerThread, kMaxTilesAheadPerThread].
+std::size_t tiles_ahead(const RankClock& clock, int threads) {
+  std::size_t per_thread = kMinTilesAheadPerThread;
+  if (const std::uint64_t tiles = clock.tiles(); tiles > 0) {
+    const double mean_seconds = clock.busy_seconds() / static_cast<double>(tiles);
+    const double wanted = mean_seconds > 0.0 ? std::ceil(kQueuedWorkSeconds / mean_seconds)
+                                             : static_cast<double>(kMaxTilesAheadPerThread);
+    per_thread = static_cast<std::size_t>(std::clamp(wanted, static_cast<double>(kMinTilesAheadPerThread),
+                                                     static_cast<double>(kMaxTilesAheadPerThread)));
+  }
+  return per_thread * static_cast<std::size_t>(std::max(1, threads));
+}
 
 }  // namespace
 
@@ -248,7 +275,6 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
   if (on_started) on_started();
 
   int following = communicator.size() - 1;
-  Backoff backoff(kLeaderLongestPause);
   double handling_seconds = 0.0;
   std::uint64_t remote_tiles = 0;
   while (following > 0) {
@@ -256,16 +282,21 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
     std::optional<Message> message = communicator.poll();
     if (!message) {
       handling_seconds += thread_cpu_seconds() - handling_start;
-      std::this_thread::sleep_for(backoff.next());
+      std::this_thread::sleep_for(kLeaderPause);
       continue;
     }
-    backoff.reset();
     RankStats& from = ranks[std::size_t(message->source)];
     switch (message->tag) {
       case kRequest: {
-        const auto wanted = value_of<std::uint32_t>(*message);
+        // Guided hand-out: a follower gets what it asks for, but never more than half of its
+        // share of what is left, so the pool's tail is spread over the ranks instead of sitting in
+        // one follower's queue.
+        std::uint64_t wanted = value_of<std::uint32_t>(*message);
+        if (const std::optional<std::size_t> left = source.remaining())
+          wanted = std::min<std::uint64_t>(
+              wanted, std::max<std::uint64_t>(1, *left / (2 * static_cast<std::uint64_t>(communicator.size()))));
         std::vector<std::uint64_t> granted;
-        for (std::uint32_t i = 0; i < wanted; ++i) {
+        for (std::uint64_t i = 0; i < wanted; ++i) {
           const std::optional<std::size_t> index = source.next();
           if (!index) break;
           granted.push_back(*index);
@@ -310,38 +341,33 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
                                int threads, const std::atomic<bool>* cancel) {
   const int channels = renderer.layout().channel_count();
   RankClock clock;
-  GrantedTiles granted(clock, cancel);
   OutgoingTiles outgoing(clock);
+  GrantedTiles granted(clock, cancel, [&outgoing] { outgoing.wake(); });
   BackgroundRender render(renderer, grid, granted, outgoing, [&outgoing] { outgoing.wake(); });
-  // Keep kTilesAheadPerThread tiles per thread queued beyond the ones being rendered: ask for a
-  // refill whenever fewer are left.
-  const auto ahead = kTilesAheadPerThread * static_cast<std::size_t>(std::max(1, threads));
   std::uint64_t bytes_sent = 0;
-  bool asked = false, no_more = false;
-  Backoff backoff(kFollowerLongestPause);
-  std::chrono::microseconds wait = kShortestPause;
-  while (true) {
-    // Wakes at once when a worker finishes a tile; otherwise after `wait`, to look for grants.
-    std::deque<TileResult> finished = outgoing.take(wait);
-    bool active = !finished.empty();
-    for (const TileResult& tile : finished) {
+  const auto send_tiles = [&](const std::deque<TileResult>& tiles) {
+    for (const TileResult& tile : tiles) {
       const std::vector<std::byte> bytes = encode_tile(tile, channels);
       communicator.send(0, kTile, bytes);
       bytes_sent += bytes.size();
     }
+  };
+  bool asked = false, no_more = false;
+  outgoing.wake();  // the first pass asks for tiles at once
+  while (true) {
+    // Wakes when a worker runs low on tiles or the render ends; polls every kGrantPollPause while a
+    // request is out, and otherwise looks in every kFollowerIdlePause (finished tiles, a cancel).
+    send_tiles(outgoing.take(asked ? kGrantPollPause : kFollowerIdlePause));
     if (render.finished()) {
-      std::deque<TileResult> last = outgoing.take(std::chrono::microseconds(0));
-      for (const TileResult& tile : last) {
-        const std::vector<std::byte> bytes = encode_tile(tile, channels);
-        communicator.send(0, kTile, bytes);
-        bytes_sent += bytes.size();
-      }
+      send_tiles(outgoing.take(std::chrono::microseconds(0)));
       break;
     }
     if (!no_more && cancel && cancel->load()) {
       no_more = true;  // the tiles in flight are finished and sent; the queued ones are left to rank 0's journal
       granted.finish();
     }
+    const std::size_t ahead = tiles_ahead(clock, threads);
+    granted.set_low_water(ahead);
     if (!no_more && !asked && granted.queued() < ahead) {
       const auto wanted = static_cast<std::uint32_t>(2 * ahead - granted.queued());
       communicator.send(0, kRequest, bytes_of(wanted));
@@ -349,7 +375,6 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
       asked = true;
     }
     while (std::optional<Message> message = communicator.poll()) {
-      active = true;
       if (message->tag != kGrant) throw RuntimeError("distributed render: rank 0 sent an unexpected message");
       std::vector<std::uint64_t> indices(message->bytes.size() / sizeof(std::uint64_t));
       if (!indices.empty()) std::memcpy(indices.data(), message->bytes.data(), indices.size() * sizeof(std::uint64_t));
@@ -363,8 +388,6 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
         granted.add(indices);
       }
     }
-    if (active) backoff.reset();
-    wait = backoff.next();
   }
   render.join();
   const RayCounts rays = clock.rays();

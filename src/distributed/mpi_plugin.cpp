@@ -6,7 +6,10 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
+#include <list>
 #include <string>
+#include <vector>
 
 namespace rtpro {
 namespace {
@@ -17,16 +20,28 @@ class MpiCommunicator final : public Communicator {
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
   }
-  ~MpiCommunicator() override { MPI_Finalize(); }
+  ~MpiCommunicator() override {
+    for (PendingSend& send : pending_) MPI_Wait(&send.request, MPI_STATUS_IGNORE);
+    MPI_Finalize();
+  }
 
   int rank() const override { return rank_; }
   int size() const override { return size_; }
 
+  // A copy of the bytes goes out with MPI_Isend. A blocking MPI_Send of a tile larger than the
+  // eager limit (4 KB on shared memory) waits for rank 0 to post the receive, spinning in
+  // opal_progress meanwhile: rank 0 looks for messages every few milliseconds, so the follower's
+  // talking thread burned ~8% of a core that its worker needed.
   void send(int destination, int tag, std::span<const std::byte> bytes) override {
-    MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, destination, tag, MPI_COMM_WORLD);
+    complete_sends();
+    PendingSend& send = pending_.emplace_back();
+    send.bytes.assign(bytes.begin(), bytes.end());
+    MPI_Isend(send.bytes.data(), static_cast<int>(send.bytes.size()), MPI_BYTE, destination, tag, MPI_COMM_WORLD,
+              &send.request);
   }
 
   std::optional<Message> poll() override {
+    complete_sends();
     int arrived = 0;
     MPI_Status status;
     MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &arrived, &status);
@@ -48,7 +63,21 @@ class MpiCommunicator final : public Communicator {
   }
 
  private:
+  struct PendingSend {
+    std::vector<std::byte> bytes;
+    MPI_Request request = MPI_REQUEST_NULL;
+  };
+
+  void complete_sends() {
+    for (auto send = pending_.begin(); send != pending_.end();) {
+      int done = 0;
+      MPI_Test(&send->request, &done, MPI_STATUS_IGNORE);
+      send = done ? pending_.erase(send) : std::next(send);
+    }
+  }
+
   int rank_ = 0, size_ = 1;
+  std::list<PendingSend> pending_;  // a list: the buffers must not move while MPI holds them
 };
 
 }  // namespace

@@ -33,6 +33,26 @@ bool bit_identical(const Image& a, const Image& b) {
          std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
 }
 
+TEST(TileSources, CountWhatIsLeftAsTheyHandTilesOut) {
+  AllTilesSource all(3);
+  TileListSource listed({7, 2});
+  EXPECT_EQ(all.remaining(), 3u);
+  EXPECT_EQ(listed.remaining(), 2u);
+  all.next();
+  listed.next();
+  EXPECT_EQ(all.remaining(), 2u);
+  EXPECT_EQ(listed.remaining(), 1u);
+  while (all.next()) {
+  }
+  while (listed.next()) {
+  }
+  // Asking past the end must not wrap the count.
+  all.next();
+  listed.next();
+  EXPECT_EQ(all.remaining(), 0u);
+  EXPECT_EQ(listed.remaining(), 0u);
+}
+
 TEST(Renderer, ImageIsIndependentOfThreadsAndTiles) {
   const RenderScene scene = test_scene();
   const RenderResult one = render_with(scene, 1, 32);

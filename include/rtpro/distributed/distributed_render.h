@@ -46,8 +46,8 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
                                                const std::function<void()>& on_started = {});
 
 // Other ranks: renders what rank 0 hands out until it has no more, or until `cancel` becomes true
-// (the tiles in flight are still finished and sent). `threads` sets how many tiles are asked for
-// ahead.
+// (the tiles in flight are still finished and sent). It keeps about 20 ms of rendering queued at
+// its measured speed per tile, for each of its `threads`.
 void follow_distributed_render(Communicator& communicator, const TileRenderer& renderer, const TileGrid& grid,
                                int threads, const std::atomic<bool>* cancel = nullptr);
 

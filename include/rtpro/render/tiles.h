@@ -7,6 +7,7 @@
 // but the scene, the settings, the seed and the tile's own region.
 #include "rtpro/render/shading.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -53,6 +54,9 @@ class TileSource {
   virtual ~TileSource() = default;
   // The next tile index to render, or nothing when the worker should stop.
   virtual std::optional<std::size_t> next() = 0;
+  // How many more tiles next() would return, when the source knows: a distributed scheduler
+  // hands out smaller batches as the pool drains, so that no rank is left holding the tail.
+  virtual std::optional<std::size_t> remaining() const { return std::nullopt; }
 };
 
 class TileSink {
@@ -67,6 +71,7 @@ class AllTilesSource final : public TileSource {
   explicit AllTilesSource(std::size_t count, const std::atomic<bool>* cancel = nullptr)
       : count_(count), cancel_(cancel) {}
   std::optional<std::size_t> next() override;
+  std::optional<std::size_t> remaining() const override { return count_ - std::min(next_.load(), count_); }
 
  private:
   std::size_t count_;
@@ -80,6 +85,9 @@ class TileListSource final : public TileSource {
   explicit TileListSource(std::vector<std::size_t> indices, const std::atomic<bool>* cancel = nullptr)
       : indices_(std::move(indices)), cancel_(cancel) {}
   std::optional<std::size_t> next() override;
+  std::optional<std::size_t> remaining() const override {
+    return indices_.size() - std::min(next_.load(), indices_.size());
+  }
 
  private:
   std::vector<std::size_t> indices_;
