@@ -219,9 +219,11 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   // OpenImageIO takes about half a second to load: do it while the scene renders. Not earlier:
   // its hundreds of mmap calls slow the page faults of a large scene file's parse.
   start_tbb_workers(threads);
-  // In a job, rank 0 starts loading once its render thread exists (see below): a thread created
-  // while a dlopen runs waits for it, and that one serves the other ranks.
-  if (!job) start_loading_image_layer();
+  // Rank 0 of a job loads it too, but creates its render thread first: a thread created while a
+  // dlopen runs waits for it (prestarted_thread.h). The other ranks write no image.
+  std::optional<PrestartedThread> render_thread;
+  if (job && leader) render_thread.emplace();
+  if (leader) start_loading_image_layer();
 
   BackendOptions backend_options = o.backend_options;
   backend_options.threads = threads;
@@ -282,9 +284,9 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
     return kExitOk;
   }
   if (job)
-    render_options.tile_executor = [&job, &stats](const TileRenderer& renderer, const TileGrid& tiles,
+    render_options.tile_executor = [&job, &stats, &render_thread](const TileRenderer& renderer, const TileGrid& tiles,
                                                   TileSource& source, TileSink& sink) {
-      stats.ranks = lead_distributed_render(*job, renderer, tiles, source, sink, [] { start_loading_image_layer(); });
+      stats.ranks = lead_distributed_render(*job, renderer, tiles, source, sink, &*render_thread);
     };
   const InterruptGuard interrupt;
   ProgressReporter progress(progress_mode, isatty(STDERR_FILENO) == 1, o.frame);

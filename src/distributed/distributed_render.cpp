@@ -77,31 +77,43 @@ struct DoneRecord {
   std::uint64_t bytes_sent;
 };
 
-// Runs render_tiles on a thread of its own while the calling thread talks to the other ranks;
-// rethrows what the render threw.
+// Runs render_tiles on a thread of its own (a prestarted one when given) while the calling thread
+// talks to the other ranks; rethrows what the render threw.
 class BackgroundRender {
  public:
   BackgroundRender(const TileRenderer& renderer, const TileGrid& grid, TileSource& source, TileSink& sink,
-                   std::function<void()> on_finish)
-      : thread_([&, on_finish] {
-          try {
-            render_tiles(renderer, grid, source, sink);
-          } catch (...) {
-            error_ = std::current_exception();
-          }
-          finished_ = true;
-          on_finish();
-        }) {}
-  ~BackgroundRender() {
-    if (thread_.joinable()) thread_.join();
+                   std::function<void()> on_finish, PrestartedThread* prestarted = nullptr)
+      : prestarted_(prestarted) {
+    auto task = [this, &renderer, &grid, &source, &sink, on_finish] {
+      try {
+        render_tiles(renderer, grid, source, sink);
+      } catch (...) {
+        error_ = std::current_exception();
+      }
+      finished_ = true;
+      on_finish();
+    };
+    if (prestarted_)
+      prestarted_->run(std::move(task));
+    else
+      thread_ = std::thread(std::move(task));
   }
+  ~BackgroundRender() { wait(); }
   bool finished() const { return finished_.load(); }
   void join() {
-    thread_.join();
+    wait();
     if (error_) std::rethrow_exception(error_);
   }
 
  private:
+  void wait() {
+    if (prestarted_)
+      prestarted_->join();
+    else if (thread_.joinable())
+      thread_.join();
+  }
+
+  PrestartedThread* prestarted_;
   std::atomic<bool> finished_{false};
   std::exception_ptr error_;
   std::thread thread_;
@@ -264,15 +276,14 @@ void agree_on_job(Communicator& communicator, const JobIdentity& identity) {
 
 std::vector<RankStats> lead_distributed_render(Communicator& communicator, const TileRenderer& renderer,
                                                const TileGrid& grid, TileSource& source, TileSink& sink,
-                                               const std::function<void()>& on_started) {
+                                               PrestartedThread* render_thread) {
   const int channels = renderer.layout().channel_count();
   std::vector<RankStats> ranks(static_cast<std::size_t>(communicator.size()));
   for (int r = 0; r < communicator.size(); ++r) ranks[std::size_t(r)].rank = r;
   RankClock clock;
   TimedSource local_source(source, clock);
   TimedSink local_sink(sink, clock);
-  BackgroundRender render(renderer, grid, local_source, local_sink, [] {});
-  if (on_started) on_started();
+  BackgroundRender render(renderer, grid, local_source, local_sink, [] {}, render_thread);
 
   int following = communicator.size() - 1;
   double handling_seconds = 0.0;

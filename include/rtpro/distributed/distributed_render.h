@@ -6,6 +6,7 @@
 // it is done, holding nothing but the tiles in flight. A tile's pixels depend on its region alone,
 // so the image is bit-identical for any number of ranks, threads and hand-out order.
 #include "rtpro/distributed/communicator.h"
+#include "rtpro/distributed/prestarted_thread.h"
 #include "rtpro/job/job_identity.h"
 #include "rtpro/render/shading.h"
 #include "rtpro/render/tile_renderer.h"
@@ -39,11 +40,11 @@ void agree_on_job(Communicator& communicator, const JobIdentity& identity);
 // Rank 0: renders the tiles `source` hands out, with its workers and the other ranks, into `sink`;
 // returns every rank's figures (indexed by rank) once all have finished. Stops handing out tiles
 // when the source does (it checks the cancel flag).
-// `on_started` runs once rank 0's own render thread exists: a caller about to dlopen a large
-// library (which holds back every thread created meanwhile) waits for it.
+// Rank 0's own workers run on `render_thread` when given (see prestarted_thread.h), else on a
+// thread created here.
 std::vector<RankStats> lead_distributed_render(Communicator& communicator, const TileRenderer& renderer,
                                                const TileGrid& grid, TileSource& source, TileSink& sink,
-                                               const std::function<void()>& on_started = {});
+                                               PrestartedThread* render_thread = nullptr);
 
 // Other ranks: renders what rank 0 hands out until it has no more, or until `cancel` becomes true
 // (the tiles in flight are still finished and sent). It keeps about 20 ms of rendering queued at
