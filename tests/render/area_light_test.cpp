@@ -32,7 +32,7 @@ RenderScene irradiance_probe(const Light& light, int spp) {
   scene.render.max_depth = 0;
   scene.render.ambient = 0.0f;
   scene.render.background = Color(0.0f);
-  scene.materials.push_back({Color(1.0f), 0.0f, 1.0f, 0.0f});
+  scene.materials.push_back({Color(1.0f), 0.0f, 1.0f, 0.0f, std::nullopt});
   scene.material_names = {"default"};
   scene.lights.push_back(light);
   SphereSet ground;
