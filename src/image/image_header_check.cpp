@@ -122,7 +122,7 @@ std::optional<DeclaredImageSize> check_exr(Reader& in, const SourceLocation& whe
   for (bool first = true;; first = false) {
     std::size_t attributes = 0;
     std::int64_t window[4] = {0, 0, -1, -1};
-    std::uint64_t channels = 0;
+    std::uint64_t channels = 0, tile_width = 0, tile_height = 0;
     while (true) {
       if (!in.name(name, max_name)) bad("an attribute name is too long or the header is cut short");
       if (name.empty()) break;
@@ -140,6 +140,10 @@ std::optional<DeclaredImageSize> check_exr(Reader& in, const SourceLocation& whe
       if (const auto fixed = exr_fixed_size(type); fixed && *fixed != size) out_of_step();
       if (name == "dataWindow" && type == "box2i") {
         for (std::int64_t& bound : window) bound = in.i32();
+      } else if (name == "tiles" && type == "tiledesc") {
+        tile_width = in.u32(false);
+        tile_height = in.u32(false);
+        in.skip(1);  // level and rounding modes
       } else if (type == "chlist") {
         const auto count = exr_channel_count(in.chars(size));  // size is at most the bytes left
         if (!count) out_of_step();
@@ -156,7 +160,11 @@ std::optional<DeclaredImageSize> check_exr(Reader& in, const SourceLocation& whe
         in.skip(size);
       }
     }
-    if (first) declared = exr_declared_size(window[0], window[1], window[2], window[3], channels);
+    if (first) {
+      declared = exr_declared_size(window[0], window[1], window[2], window[3], channels);
+      declared.tile_width = tile_width;
+      declared.tile_height = tile_height;
+    }
     if (!(flags & kExrMultipart) || (attributes == 0 && !first)) return declared;
   }
 }

@@ -19,6 +19,10 @@ namespace rtpro {
 // The size an image header declares, for formats whose library allocates from it at open.
 struct DeclaredImageSize {
   std::uint64_t width = 0, height = 0, channels = 0;
+  // An EXR's declared tile size (0 when it stores scanlines): OpenEXR allocates its tile and
+  // compressor buffers from it at open, whatever the data window (a 796-byte file of a 20x18 image
+  // declared 16x5063184 tiles and asked for 648 MB, a fuzz finding).
+  std::uint64_t tile_width = 0, tile_height = 0;
 };
 
 // Throws InputError naming the attribute or chunk when an EXR header or a PNG chunk list is cut

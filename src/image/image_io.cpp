@@ -282,24 +282,30 @@ Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
   // A small hostile header can declare an enormous image: its size is checked before the library
   // allocates for it (at open for OpenEXR, whose declared size the header check returns) and
   // again from the opened spec.
-  const auto refuse_if_too_large = [&](std::uint64_t width, std::uint64_t height, std::uint64_t channels) {
+  const auto refuse_if_too_large = [&](std::uint64_t width, std::uint64_t height, std::uint64_t channels,
+                                       std::uint64_t tile_pixels = 0) {
     // Each factor is at most 2^32, so the product of the first two cannot overflow 64 bits.
     const std::uint64_t pixels = width * height;
     // OpenImageIO reads up to 256 scanlines at once into a buffer of its own, whatever the image's
     // height: a 2-row image 681553 pixels wide made it allocate 3.5 GB (a fuzz finding). The
     // estimate counts the larger of the image and that buffer.
     constexpr std::uint64_t kLibraryRows = 256;
-    const std::uint64_t read_pixels = std::max(pixels, saturating_multiply(width, kLibraryRows));
+    // A tiled file costs its tile buffers too (a tile and its compressor's, counted as two).
+    const std::uint64_t read_pixels =
+        std::max({pixels, saturating_multiply(width, kLibraryRows), saturating_multiply(tile_pixels, 2)});
     const std::uint64_t bytes = saturating_multiply(saturating_multiply(read_pixels, channels), sizeof(float));
     if (pixels > kMaxReadValues || saturating_multiply(pixels, channels) > kMaxReadValues || bytes > max_bytes)
       throw InputError(where, "the image is too large to read: " + std::to_string(width) + "x" +
-                                  std::to_string(height) + ", " + std::to_string(channels) + " channels is " +
+                                  std::to_string(height) + ", " + std::to_string(channels) + " channels" +
+                                  (tile_pixels > pixels ? " in tiles of " + std::to_string(tile_pixels) + " pixels" : "") +
+                                  " is " +
                                   format_bytes(bytes) + " as floats; the limit is " + format_bytes(max_bytes) +
                                   " (the smaller of " + format_bytes(kDefaultMemoryBudgetCap) +
                                   " and the available memory)");
   };
   if (const auto declared = check_image_header(file))
-    refuse_if_too_large(declared->width, declared->height, declared->channels);
+    refuse_if_too_large(declared->width, declared->height, declared->channels,
+                        saturating_multiply(declared->tile_width, declared->tile_height));
   // One reader, chosen by signature or extension (image_format_sniff.h); OpenImageIO's fallback
   // to every reader it has is never taken.
   const std::string reader = image_reader_name(file);

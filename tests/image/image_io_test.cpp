@@ -416,6 +416,21 @@ TEST(ImageIo, AnExrAttributeWhoseStatedSizeItsContentsDoNotFillIsRefused) {
   }
 }
 
+TEST(ImageIo, AnExrWhoseTilesExceedTheReadBudgetIsRefusedBeforeOpenExrAllocatesThem) {
+  // OpenEXR sizes its tile buffers from the declared tile size when it opens the file.
+  const auto folder = test::scratch_dir();
+  write_with_oiio(folder / "tiled.exr", varied_image(20, 18), OIIO::TypeDesc::HALF,
+                  [](OIIO::ImageSpec& spec) { spec.tile_width = spec.tile_height = 16; });
+  ASSERT_NO_THROW(read_image(folder / "tiled.exr"));
+  std::string bytes = file_bytes(folder / "tiled.exr");
+  const std::size_t size_field = exr_attribute_size_field(bytes, "tiles", "tiledesc");
+  put_u32(bytes, size_field + 8, 5063184);  // tile height
+  std::ofstream(folder / "huge_tiles.exr", std::ios::binary) << bytes;
+  const std::string message =
+      error_message_of<InputError>([&] { read_image(folder / "huge_tiles.exr", std::uint64_t{64} << 20); });
+  EXPECT_NE(message.find("in tiles of"), std::string::npos) << message;
+}
+
 TEST(ImageIo, AnExrWhoseDataWindowExceedsTheReadBudgetIsRefusedNamingItsSize) {
   const auto folder = test::scratch_dir();
   write_image(folder / "small.exr", varied_image(8, 2), {});
