@@ -12,11 +12,11 @@
 #
 # DIR (default build-fuzz) must be configured with -DRTPRO_FUZZ=ON, e.g.
 #   CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DRTPRO_FUZZ=ON -DRTPRO_SANITIZE=address,undefined
-# The script builds the targets it runs. Fuzzers run under the idle scheduling class (`chrt
-# --idle`, else `nice -n 19`): they take only CPU time nothing else wants, so a benchmark can run
-# beside a campaign. Their PIDs are written to /tmp/rtpro-fuzz.pid (one per line). Do not pause
-# them with SIGSTOP: libFuzzer's -timeout is wall time, and a pause longer than it ends the
-# campaign with a false "timeout" finding.
+# The script builds the targets it runs. Fuzzers run under `nice -n 19`; their PIDs are written to
+# /tmp/rtpro-fuzz.pid (one per line). Never starve them: libFuzzer's -timeout is wall time, so a
+# SIGSTOP pause, or the idle scheduling class (`chrt --idle`) on a machine busy with a build or a
+# test run, ends the campaign with a false "timeout" finding (both happened here; the inputs ran in
+# milliseconds). Keep heavy work off the machine while a campaign runs, or stop the campaign.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -42,9 +42,6 @@ done
 # memory (ASan's own shadow and quarantine included) and no single allocation over 512 MB.
 limits=(-timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=512 -max_len=16384 -print_final_stats=1)
 
-low_priority=(nice -n 19)
-chrt --idle 0 true 2>/dev/null && low_priority=(chrt --idle 0 nice -n 19)
-
 binaries=()
 for target in "${targets[@]}"; do binaries+=("rtpro_fuzz_$target"); done
 cmake --build "$build" --target "${binaries[@]}" >/dev/null
@@ -65,7 +62,7 @@ run_target() {
   [ -z "$runs" ] || budget=(-runs="$runs")
   local inputs=(tests/fuzz/corpus/"$target")
   [ -d tests/fuzz/regressions/"$target" ] && inputs+=(tests/fuzz/regressions/"$target")
-  "${low_priority[@]}" "$build/tests/fuzz/rtpro_fuzz_$target" "${limits[@]}" "${budget[@]}" \
+  nice -n 19 "$build/tests/fuzz/rtpro_fuzz_$target" "${limits[@]}" "${budget[@]}" \
     -dict=tests/fuzz/dict/"$target".dict -artifact_prefix="$findings/" \
     "$corpus" "${inputs[@]}" > "$build/fuzz/$target.log" 2>&1 &
   local pid=$!
