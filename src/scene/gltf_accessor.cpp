@@ -99,6 +99,8 @@ template <int N>
 std::vector<std::array<float, N>> AccessorReader::floats(const View& v) const {
   std::vector<std::array<float, N>> out;
   resize_large(out, v.count);
+  // An empty accessor leaves `out` without storage: memcpy must not see its null pointer.
+  if (v.count == 0) return out;
   if (v.data && v.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT && v.stride == sizeof(float) * N) {
     // The common case, tightly packed floats: one copy, then one pass checking them.
     std::memcpy(out.data(), v.data, v.count * sizeof(float) * N);
@@ -122,6 +124,7 @@ std::vector<Vec3> AccessorReader::positions(int accessor, const std::string& whe
   static_assert(sizeof(Vec3) == 3 * sizeof(float));
   std::vector<Vec3> out;
   resize_large(out, v.count);
+  if (v.count == 0) return out;  // no storage: memcpy must not see a null pointer
   if (v.data && v.stride == sizeof(Vec3)) std::memcpy(out.data(), v.data, v.count * sizeof(Vec3));
   else if (v.data)
     for (std::size_t i = 0; i < v.count; ++i) std::memcpy(&out[i], v.data + i * v.stride, sizeof(Vec3));
@@ -173,6 +176,7 @@ std::vector<std::uint32_t> AccessorReader::indices(int accessor, std::uint32_t v
   if (v.normalized) fail(v.path + ".normalized", "indices must not be normalized");
   std::vector<std::uint32_t> out;
   resize_large(out, v.count);
+  if (v.count == 0) return out;  // no storage: memcpy must not see a null pointer
   if (v.data && v.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT && v.stride == 4) {
     std::memcpy(out.data(), v.data, v.count * 4);
     for (std::size_t i = 0; i < v.count; ++i)

@@ -144,6 +144,21 @@ TEST(GltfHostile, AccessorsMustFitTheirBufferView) {
             std::string::npos);
 }
 
+TEST(GltfHostile, EmptyAccessorsAreReadWithoutTouchingTheirMissingStorage) {
+  // A fuzz finding: an accessor of count 0 reached memcpy with a null destination (UBSan).
+  GltfFile gltf;
+  gltf.scene({gltf.node({{"mesh", gltf.mesh(gltf.floats(kTriangle, "VEC3"), gltf.indices({0, 1, 2}))}})});
+  gltf.json["accessors"][0]["count"] = 0;
+  gltf.json["accessors"][1]["count"] = 0;
+  const std::filesystem::path file = gltf.write("empty_accessors");
+  const GltfAsset asset = load_gltf_file(file);
+  EXPECT_EQ(asset.stats.triangles, 0u);
+  for (const TriangleMesh& mesh : asset.meshes) {
+    EXPECT_TRUE(mesh.vertices.empty());
+    EXPECT_TRUE(mesh.triangles.empty());
+  }
+}
+
 TEST(GltfHostile, CyclesSharedChildrenAndDeepTreesAreRefused) {
   GltfFile cycle;
   const int mesh = cycle.mesh(cycle.floats(kTriangle, "VEC3"));
