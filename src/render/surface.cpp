@@ -24,6 +24,9 @@ struct LocalSurface {
   Vec3 shading_normal;    // not necessarily unit
   float magnitude;        // largest coordinate magnitude that fed the computation
   std::uint32_t material;
+  // The shading normal is the geometric one (spheres, meshes without normals): its unit, facing
+  // version is then the geometric one's too, bit for bit, and is not worked out twice.
+  bool shading_is_geometric;
 };
 
 LocalSurface sphere_surface(const Sphere& s, const Ray& ray, float t) {
@@ -33,7 +36,7 @@ LocalSurface sphere_surface(const Sphere& s, const Ray& ray, float t) {
   const float len = length(from_center);
   const Vec3 n = len > 0.0f ? from_center / len : Vec3(0.0f, 1.0f, 0.0f);
   const Vec3 on_surface = s.center + n * s.radius;
-  return {on_surface, n, n, std::max(magnitude(on_surface), magnitude(s.center) + s.radius), s.material};
+  return {on_surface, n, n, std::max(magnitude(on_surface), magnitude(s.center) + s.radius), s.material, true};
 }
 
 LocalSurface triangle_surface(const TriangleMesh& mesh, std::uint32_t prim, float u, float v) {
@@ -42,10 +45,10 @@ LocalSurface triangle_surface(const TriangleMesh& mesh, std::uint32_t prim, floa
   const float w = 1.0f - u - v;
   const Vec3 p = p0 * w + p1 * u + p2 * v;
   const Vec3 ng = cross(p1 - p0, p2 - p0);
-  Vec3 ns = ng;
-  if (!mesh.normals.empty()) ns = mesh.normals[tri.v0] * w + mesh.normals[tri.v1] * u + mesh.normals[tri.v2] * v;
+  const bool flat = mesh.normals.empty();
+  const Vec3 ns = flat ? ng : mesh.normals[tri.v0] * w + mesh.normals[tri.v1] * u + mesh.normals[tri.v2] * v;
   const float mag = std::max(magnitude(p0), std::max(magnitude(p1), magnitude(p2)));
-  return {p, ng, ns, mag, mesh.material_of(prim)};
+  return {p, ng, ns, mag, mesh.material_of(prim), flat};
 }
 
 LocalSurface local_surface(const Group& group, const Hit& hit, const Ray& local_ray) {
@@ -100,8 +103,9 @@ Vec3 safe_normalize(const Vec3& v, const Vec3& fallback) {
 
 }  // namespace
 
-SurfacePoint make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit) {
-  SurfacePoint sp;
+void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfacePoint& sp) {
+  sp.tex_u = 0.0f;
+  sp.tex_v = 0.0f;
   LocalSurface local;
   if (hit.inst_id == kInvalidId) {
     local = local_surface(scene.top, hit, ray);
@@ -128,11 +132,15 @@ SurfacePoint make_surface(const RenderScene& scene, const Ray& ray, const Hit& h
   Vec3 ng = safe_normalize(local.geometric_normal, -normalize(ray.dir));
   sp.front_face = !(dot(ng, ray.dir) > 0.0f);
   if (!sp.front_face) ng = -ng;
+  sp.geometric_normal = ng;
+  if (local.shading_is_geometric) {
+    // safe_normalize of the same vector, flipped to ng's side, is ng itself.
+    sp.shading_normal = ng;
+    return;
+  }
   Vec3 ns = safe_normalize(local.shading_normal, ng);
   if (dot(ns, ng) < 0.0f) ns = -ns;
-  sp.geometric_normal = ng;
   sp.shading_normal = ns;
-  return sp;
 }
 
 }  // namespace rtpro

@@ -71,6 +71,9 @@ class ShadingWorkspace {
   static constexpr std::uint32_t kOutside = ~0u;
   // A surface the current generation reached, waiting for its shadow rays.
   struct ShadedSurface {
+    // Every field is set where a surface is queued; value-initialising the whole record first
+    // (emplace_back()) showed up as a zeroing loop in profiles.
+    ShadedSurface() {}
     std::uint32_t task;
     SurfacePoint point;
     Color albedo;                // the material's diffuse colour at the point

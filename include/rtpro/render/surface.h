@@ -23,6 +23,14 @@ struct SurfacePoint {
   float tex_u = 0.0f, tex_v = 0.0f;
 };
 
-SurfacePoint make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit);
+// Writes the shading point of `hit` (a hit of `ray`) into `out`; every field is set. Filling the
+// caller's record in place spares the copy of a returned one, which stalled on store forwarding.
+void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfacePoint& out);
+
+inline SurfacePoint make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit) {
+  SurfacePoint sp;
+  make_surface(scene, ray, hit, sp);
+  return sp;
+}
 
 }  // namespace rtpro
