@@ -72,7 +72,7 @@ RenderScene random_mixed_scene(std::uint32_t seed, int spheres, int triangles, i
   if (instances > 0) {
     Group prototype;
     prototype.geometries.emplace_back(random_spheres(rng, std::max(1, spheres / 4), 1.0f));
-    prototype.geometries.emplace_back(random_triangles(rng, std::max(1, triangles / 4), 1.0f));
+    if (triangles > 0) prototype.geometries.emplace_back(random_triangles(rng, std::max(1, triangles / 4), 1.0f));
     scene.prototypes.push_back(std::move(prototype));
     for (int i = 0; i < instances; ++i) {
       // One draw per statement: the order in which function arguments are evaluated is

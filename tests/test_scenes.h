@@ -20,7 +20,8 @@ SphereSet random_spheres(std::mt19937& rng, int count, float extent);
 TriangleMesh random_triangles(std::mt19937& rng, int count, float extent);
 
 // Spheres and a triangle mesh at the top level, plus `instances` instances of a prototype holding
-// both, under random rotation, non-uniform scale and translation.
+// both (only spheres when `triangles` is 0), under random rotation, non-uniform scale and
+// translation.
 RenderScene random_mixed_scene(std::uint32_t seed, int spheres, int triangles, int instances);
 
 // A random ray with origin in [-extent, extent]³ and a uniformly distributed direction.

@@ -8,16 +8,27 @@
 #include <limits>
 #include <random>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace rtpro {
 namespace {
 
-// Batches must answer exactly what single rays answer, for every backend and coherence hint:
-// the renderer traces everything in batches and the references were made with single rays.
-class BatchQueries : public ::testing::TestWithParam<std::tuple<BackendKind, RayCoherence>> {
+// Which primitives the scene holds: with spheres alone (instances of spheres included) the Embree
+// backend traces scattered rays in packets, with triangles one by one.
+enum class SceneKind { kMixed, kSpheresOnly };
+
+// Batches must answer exactly what single rays answer, for every backend, coherence hint and
+// scene kind: the renderer traces everything in batches, the references were made with single
+// rays, and a ray's answer must not depend on which rays share its batch (tiles, threads, ranks).
+class BatchQueries : public ::testing::TestWithParam<std::tuple<BackendKind, RayCoherence, SceneKind>> {
  protected:
   void SetUp() override { set_tracing_fp_mode(); }
+
+  static RenderScene scene(std::uint32_t seed) {
+    const bool triangles = std::get<2>(GetParam()) == SceneKind::kMixed;
+    return test::random_mixed_scene(seed, 500, triangles ? 500 : 0, 10);
+  }
 };
 
 std::vector<Ray> test_rays() {
@@ -34,8 +45,8 @@ std::vector<Ray> test_rays() {
 }
 
 TEST_P(BatchQueries, IntersectMatchesSingleRays) {
-  const auto [kind, coherence] = GetParam();
-  const RenderScene scene = test::random_mixed_scene(7, 500, 500, 10);
+  const auto [kind, coherence] = std::pair(std::get<0>(GetParam()), std::get<1>(GetParam()));
+  const RenderScene scene = BatchQueries::scene(7);
   const auto backend = make_backend(kind, scene, {});
   const std::vector<Ray> rays = test_rays();
   std::vector<Hit> hits(rays.size());
@@ -58,8 +69,8 @@ TEST_P(BatchQueries, IntersectMatchesSingleRays) {
 }
 
 TEST_P(BatchQueries, OccludedMatchesSingleRays) {
-  const auto [kind, coherence] = GetParam();
-  const RenderScene scene = test::random_mixed_scene(8, 500, 500, 10);
+  const auto [kind, coherence] = std::pair(std::get<0>(GetParam()), std::get<1>(GetParam()));
+  const RenderScene scene = BatchQueries::scene(8);
   const auto backend = make_backend(kind, scene, {});
   const std::vector<Ray> rays = test_rays();
   std::vector<std::uint8_t> occluded(rays.size(), 7);
@@ -76,10 +87,12 @@ TEST_P(BatchQueries, OccludedMatchesSingleRays) {
 
 INSTANTIATE_TEST_SUITE_P(Backends, BatchQueries,
                          ::testing::Combine(::testing::Values(BackendKind::kNative, BackendKind::kEmbree),
-                                            ::testing::Values(RayCoherence::kCoherent, RayCoherence::kIncoherent)),
+                                            ::testing::Values(RayCoherence::kCoherent, RayCoherence::kIncoherent),
+                                            ::testing::Values(SceneKind::kMixed, SceneKind::kSpheresOnly)),
                          [](const auto& info) {
                            return std::string(backend_name(std::get<0>(info.param))) +
-                                  (std::get<1>(info.param) == RayCoherence::kCoherent ? "_coherent" : "_incoherent");
+                                  (std::get<1>(info.param) == RayCoherence::kCoherent ? "_coherent" : "_incoherent") +
+                                  (std::get<2>(info.param) == SceneKind::kMixed ? "_mixed" : "_spheres");
                          });
 
 }  // namespace
