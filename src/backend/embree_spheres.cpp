@@ -1,7 +1,9 @@
 #include "embree_spheres.h"
 
 #include "rtpro/geometry/sphere_intersect.h"
+#include "sphere_lanes.h"
 
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -24,12 +26,18 @@ void bound_sphere(const RTCBoundsFunctionArguments* args) {
   out.upper_z = std::nextafter(box.upper.z, kInfinity);
 }
 
-Vec3 ray_origin(RTCRayN* rays, unsigned n, unsigned i) {
-  return {RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)};
+// The rays of a packet (or the one ray of rtcIntersect1/rtcOccluded1) that Embree asks about.
+RayLanes lanes_of(RTCRayN* rays, unsigned n) {
+  float* base = reinterpret_cast<float*>(rays);
+  // RTCRayN is a structure of arrays: org_x[n], org_y[n], org_z[n], tnear[n], dir_x[n], ...
+  return {base, base + n, base + 2 * n, base + 4 * n, base + 5 * n, base + 6 * n, base + 3 * n, base + 8 * n, n};
 }
 
-Vec3 ray_direction(RTCRayN* rays, unsigned n, unsigned i) {
-  return {RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)};
+std::uint32_t valid_lanes(const int* valid, unsigned n) {
+  std::uint32_t active = 0;
+  for (unsigned i = 0; i < n; ++i)
+    if (valid[i] == -1) active |= 1u << i;
+  return active;
 }
 
 // Embree calls this with the ray in the sphere's own space (already transformed when instanced)
@@ -44,14 +52,13 @@ void intersect_spheres(const RTCIntersectFunctionNArguments* args) {
   RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, n);
   RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, n);
 
-  for (unsigned i = 0; i < n; ++i) {
-    if (args->valid[i] != -1) continue;
-    const Vec3 org = ray_origin(rays, n, i);
-    const Vec3 dir = ray_direction(rays, n, i);
+  float distances[32];
+  std::uint32_t found = intersect_sphere_lanes(sphere.center, sphere.radius, lanes_of(rays, n),
+                                               valid_lanes(args->valid, n), distances);
+  for (; found != 0; found &= found - 1) {
+    const auto i = static_cast<unsigned>(std::countr_zero(found));
+    const float t = distances[i];
     float& tfar = RTCRayN_tfar(rays, n, i);
-    float t;
-    if (!intersect_sphere(sphere.center, sphere.radius, org, dir, RTCRayN_tnear(rays, n, i), tfar, t)) continue;
-
     Hit& closest = closest_spheres[RTCRayN_id(rays, n, i)];
     const bool wins_tie = t == closest.t && is_closer(t, inst, args->geomID, args->primID, closest, closest.t);
     if (!(t < tfar || wins_tie)) continue;
@@ -62,6 +69,8 @@ void intersect_spheres(const RTCIntersectFunctionNArguments* args) {
     closest.prim_id = args->primID;
 
     tfar = t;
+    const Vec3 org{RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)};
+    const Vec3 dir{RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)};
     const Vec3 normal = org + dir * t - sphere.center;
     RTCHitN_Ng_x(hits, n, i) = normal.x;
     RTCHitN_Ng_y(hits, n, i) = normal.y;
@@ -80,15 +89,11 @@ void occlude_spheres(const RTCOccludedFunctionNArguments* args) {
   const Sphere& sphere = static_cast<const SphereSet*>(args->geometryUserPtr)->spheres[args->primID];
   const unsigned n = args->N;
   RTCRayN* rays = args->ray;
-  for (unsigned i = 0; i < n; ++i) {
-    if (args->valid[i] != -1) continue;
-    float& tfar = RTCRayN_tfar(rays, n, i);
-    float t;
-    if (intersect_sphere(sphere.center, sphere.radius, ray_origin(rays, n, i), ray_direction(rays, n, i),
-                         RTCRayN_tnear(rays, n, i), tfar, t)) {
-      tfar = -kInfinity;
-    }
-  }
+  float distances[32];
+  std::uint32_t found = intersect_sphere_lanes(sphere.center, sphere.radius, lanes_of(rays, n),
+                                               valid_lanes(args->valid, n), distances);
+  for (; found != 0; found &= found - 1)
+    RTCRayN_tfar(rays, n, static_cast<unsigned>(std::countr_zero(found))) = -kInfinity;
 }
 
 }  // namespace
