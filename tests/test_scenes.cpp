@@ -3,6 +3,7 @@
 #include "rtpro/scene/build_render_scene.h"
 
 #include <cmath>
+#include <optional>
 
 namespace rtpro::test {
 
@@ -34,8 +35,8 @@ RenderScene empty_scene(int width, int height) {
   set_camera(scene, width, height);
   scene.render.spp = 4;
   scene.render.max_depth = 3;
-  scene.materials.push_back({Color{0.8f, 0.8f, 0.8f}, 0.5f, 10.0f, 0.0f});
-  scene.materials.push_back({Color{0.9f, 0.2f, 0.2f}, 0.8f, 20.0f, 0.5f});
+  scene.materials.push_back({Color{0.8f, 0.8f, 0.8f}, 0.5f, 10.0f, 0.0f, std::nullopt});
+  scene.materials.push_back({Color{0.9f, 0.2f, 0.2f}, 0.8f, 20.0f, 0.5f, std::nullopt});
   scene.material_names = {"default", "mirror-red"};
   scene.lights.push_back(make_light(PointLightDesc{{5.0f, 8.0f, 10.0f}, {1.0f, 1.0f, 1.0f}, 1.0f}));
   scene.lights.push_back(make_light(DirectionalLightDesc{{-1.0f, -1.0f, -0.5f}, {0.4f, 0.4f, 0.5f}, 1.0f}));

@@ -48,7 +48,7 @@ TEST(TextureLookup, MatchesOpenImageIOsOwnTextureCallOnTheSameFile) {
   // (see src/image/texture_lookup.cpp).
   OIIO::TextureSystem* system = OIIO::TextureSystem::create(true);
   for (const TextureWrap wrap : {TextureWrap::kRepeat, TextureWrap::kClamp, TextureWrap::kMirror, TextureWrap::kBlack})
-    for (const auto [s, t] : {std::pair{0.3f, 0.7f}, {0.01f, 0.99f}, {1.37f, -0.2f}, {-0.6f, 2.45f}}) {
+    for (const auto& [s, t] : {std::pair{0.3f, 0.7f}, {0.01f, 0.99f}, {1.37f, -0.2f}, {-0.6f, 2.45f}}) {
       OIIO::TextureOpt options;
       options.swrap = options.twrap = wrap == TextureWrap::kRepeat  ? OIIO::TextureOpt::WrapPeriodic
                                       : wrap == TextureWrap::kClamp ? OIIO::TextureOpt::WrapClamp
