@@ -4,12 +4,14 @@
 
 #include "bvh.h"
 #include "ray_gate.h"
+#include "sphere_lanes.h"
 #include "rtpro/geometry/sphere_intersect.h"
 #include "rtpro/geometry/triangle_intersect.h"
 
 #include <immintrin.h>
 
 #include <atomic>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -58,9 +60,67 @@ inline bool hits_box(const BBox& box, const RayBoxData& d, float tnear, float tm
   return entry <= _mm_cvtss_f32(t1);
 }
 
+// Eight rays traced through a BVH together (scattered rays of a batch start close to each other
+// and go the same way often enough), laid out as Embree lays out its packets so the sphere test of
+// sphere_lanes.h applies. `tmax` is each lane's closest hit so far (or its tfar for occlusion).
+constexpr unsigned kPacketSize = 8;
+
+struct RayPacket {
+  alignas(32) float org_x[kPacketSize], org_y[kPacketSize], org_z[kPacketSize];
+  alignas(32) float dir_x[kPacketSize], dir_y[kPacketSize], dir_z[kPacketSize];
+  alignas(32) float inv_x[kPacketSize], inv_y[kPacketSize], inv_z[kPacketSize];
+  alignas(32) float tnear[kPacketSize], tmax[kPacketSize];
+  const Ray* rays[kPacketSize];
+
+  void set(unsigned lane, const Ray& ray, float t_max) {
+    org_x[lane] = ray.org.x;
+    org_y[lane] = ray.org.y;
+    org_z[lane] = ray.org.z;
+    dir_x[lane] = ray.dir.x;
+    dir_y[lane] = ray.dir.y;
+    dir_z[lane] = ray.dir.z;
+    inv_x[lane] = 1.0f / ray.dir.x;
+    inv_y[lane] = 1.0f / ray.dir.y;
+    inv_z[lane] = 1.0f / ray.dir.z;
+    tnear[lane] = ray.tnear;
+    tmax[lane] = t_max;
+    rays[lane] = &ray;
+  }
+  // Lanes past the last ray: a copy of lane 0, never active, so every lane holds finite values.
+  void pad(unsigned count) {
+    for (unsigned lane = count; lane < kPacketSize; ++lane) set(lane, *rays[0], tmax[0]);
+  }
+  RayLanes lanes() const { return {org_x, org_y, org_z, dir_x, dir_y, dir_z, tnear, tmax, kPacketSize}; }
+};
+
+// One axis of the slab test for eight lanes, in hits_box's operand order: a NaN axis (0·∞) leaves
+// `near` at tnear and `far` at tmax.
+[[gnu::target("avx2")]] inline void packet_slab(float lower, float upper, const float* org, const float* inv,
+                                                __m256 tnear, __m256 tmax, __m256& near, __m256& far) {
+  constexpr float kRoundingSlack = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
+  const __m256 o = _mm256_load_ps(org), i = _mm256_load_ps(inv);
+  const __m256 tn = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(lower), o), i);
+  const __m256 tf = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(upper), o), i);
+  near = _mm256_max_ps(_mm256_min_ps(tf, tn), tnear);
+  far = _mm256_min_ps(_mm256_mul_ps(_mm256_max_ps(tn, tf), _mm256_set1_ps(kRoundingSlack)), tmax);
+}
+
+// hits_box for the eight lanes at once, the same slab arithmetic lane by lane.
+[[gnu::target("avx2")]] inline std::uint32_t packet_hits_box(const BBox& box, const RayPacket& p) {
+  const __m256 tnear = _mm256_load_ps(p.tnear);
+  const __m256 tmax = _mm256_load_ps(p.tmax);
+  __m256 nx, fx, ny, fy, nz, fz;
+  packet_slab(box.lower.x, box.upper.x, p.org_x, p.inv_x, tnear, tmax, nx, fx);
+  packet_slab(box.lower.y, box.upper.y, p.org_y, p.inv_y, tnear, tmax, ny, fy);
+  packet_slab(box.lower.z, box.upper.z, p.org_z, p.inv_z, tnear, tmax, nz, fz);
+  const __m256 near = _mm256_max_ps(_mm256_max_ps(nx, ny), nz);
+  const __m256 far = _mm256_min_ps(_mm256_min_ps(fx, fy), fz);
+  return static_cast<std::uint32_t>(_mm256_movemask_ps(_mm256_cmp_ps(near, far, _CMP_LE_OQ)));
+}
+
 class NativeBackend final : public Backend {
  public:
-  NativeBackend(const RenderScene& scene) : scene_(scene) {
+  NativeBackend(const RenderScene& scene) : scene_(scene), packets_(sphere_lanes_vectorised()) {
     const auto start = std::chrono::steady_clock::now();
     top_bvh_ = build_bvh(scene.top, scene.prototype_bounds());
     prototype_bvhs_.reserve(scene.prototypes.size());
@@ -86,6 +146,56 @@ class NativeBackend final : public Backend {
   bool occluded(const Ray& ray) const override {
     if (!gate_.admit(ray)) return false;
     return any_in_group(scene_.top, top_bvh_, ray);
+  }
+
+  // Scattered rays in packets of eight through the top-level BVH: one node test for eight rays,
+  // spheres four lanes at a time. The answers are the single-ray ones: every primitive a lane's
+  // single traversal would test is tested (the box test is the same, lane by lane), and the
+  // closest hit under the shared tie rule does not depend on the order of the tests.
+  void intersect(std::span<const Ray> rays, std::span<Hit> hits, RayCoherence coherence) const override {
+    if (!packets_) return Backend::intersect(rays, hits, coherence);
+    RayPacket packet;
+    Hit best[kPacketSize];
+    std::size_t slots[kPacketSize];
+    std::size_t i = 0;
+    while (i < rays.size()) {
+      unsigned count = 0;
+      for (; i < rays.size() && count < kPacketSize; ++i) {
+        hits[i] = Hit{};
+        if (!gate_.admit(rays[i])) continue;
+        packet.set(count, rays[i], rays[i].tfar);
+        best[count] = Hit{};
+        slots[count++] = i;
+      }
+      if (count == 0) continue;
+      packet.pad(count);
+      closest_in_packet(packet, (1u << count) - 1u, best);
+      for (unsigned k = 0; k < count; ++k) {
+        if (!best[k].valid()) continue;
+        best[k].t = packet.tmax[k];
+        hits[slots[k]] = best[k];
+      }
+    }
+  }
+
+  void occluded(std::span<const Ray> rays, std::span<std::uint8_t> result, RayCoherence coherence) const override {
+    if (!packets_) return Backend::occluded(rays, result, coherence);
+    RayPacket packet;
+    std::size_t slots[kPacketSize];
+    std::size_t i = 0;
+    while (i < rays.size()) {
+      unsigned count = 0;
+      for (; i < rays.size() && count < kPacketSize; ++i) {
+        result[i] = 0;
+        if (!gate_.admit(rays[i])) continue;
+        packet.set(count, rays[i], rays[i].tfar);
+        slots[count++] = i;
+      }
+      if (count == 0) continue;
+      packet.pad(count);
+      std::uint32_t blocked = any_in_packet(packet, (1u << count) - 1u);
+      for (; blocked != 0; blocked &= blocked - 1) result[slots[std::countr_zero(blocked)]] = 1;
+    }
   }
 
   BackendStats stats() const override {
@@ -214,7 +324,133 @@ class NativeBackend final : public Backend {
     return found;
   }
 
+  // Visits every top-level leaf reference whose node box some active lane enters, with the mask
+  // of those lanes; near child first by the first active lane's direction. `visit(ref, lanes)`
+  // returns the lanes still active (occlusion retires the blocked ones).
+  template <typename Visit>
+  [[gnu::target("avx2")]] static void traverse_packet(const Bvh& bvh, const RayPacket& packet, std::uint32_t active,
+                                                      Visit&& visit) {
+    if (bvh.nodes.empty() || active == 0) return;
+    const unsigned lead = static_cast<unsigned>(std::countr_zero(active));
+    const int dir_negative[3] = {packet.dir_x[lead] < 0.0f, packet.dir_y[lead] < 0.0f, packet.dir_z[lead] < 0.0f};
+    std::uint32_t stack[kBvhMaxDepth + 1];
+    int top = 0;
+    std::uint32_t node_index = 0;
+    for (;;) {
+      const BvhNode& node = bvh.nodes[node_index];
+      const std::uint32_t entering = packet_hits_box(node.bounds, packet) & active;
+      if (entering != 0) {
+        if (node.is_leaf()) {
+          for (std::uint32_t i = 0; i < node.count; ++i) {
+            active = visit(bvh.refs[node.index + i], entering & active);
+            if (active == 0) return;
+          }
+        } else {
+          const std::uint32_t near_child = node.index + dir_negative[node.axis];
+          stack[top++] = node.index + 1 - dir_negative[node.axis];
+          node_index = near_child;
+          continue;
+        }
+      }
+      if (top == 0) return;
+      node_index = stack[--top];
+    }
+  }
+
+  void closest_in_packet(RayPacket& packet, std::uint32_t active, Hit* best) const {
+    const Group& group = scene_.top;
+    traverse_packet(top_bvh_, packet, active, [&](const PrimitiveRef& ref, std::uint32_t lanes) {
+      const Geometry& geometry = group.geometries[ref.geom];
+      switch (kind_of(geometry)) {
+        case GeometryKind::kSpheres: {
+          const Sphere& s = std::get<SphereSet>(geometry).spheres[ref.prim];
+          float t[kPacketSize];
+          for (std::uint32_t hit = intersect_sphere_lanes(s.center, s.radius, packet.lanes(), lanes, t); hit != 0;
+               hit &= hit - 1) {
+            const auto k = static_cast<unsigned>(std::countr_zero(hit));
+            offer_hit(t[k], 0.0f, 0.0f, kInvalidId, ref, best[k], packet.tmax[k]);
+          }
+          break;
+        }
+        case GeometryKind::kTriangles: {
+          const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
+          const TriangleIndices& tri = mesh.triangles[ref.prim];
+          for (; lanes != 0; lanes &= lanes - 1) {
+            const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+            const Ray& ray = *packet.rays[k];
+            TriangleHit th;
+            if (intersect_triangle(mesh.vertex(tri.v0), mesh.vertex(tri.v1), mesh.vertex(tri.v2), ray.org, ray.dir,
+                                   ray.tnear, packet.tmax[k], th))
+              offer_hit(th.t, th.u, th.v, kInvalidId, ref, best[k], packet.tmax[k]);
+          }
+          break;
+        }
+        case GeometryKind::kInstance: {
+          const Instance& instance = std::get<Instance>(geometry);
+          for (; lanes != 0; lanes &= lanes - 1) {
+            const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+            const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
+            if (is_traceable(local))
+              closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local,
+                               ref.geom, best[k], packet.tmax[k]);
+          }
+          break;
+        }
+      }
+      return active;
+    });
+  }
+
+  // The lanes that something blocks in (tnear, tfar).
+  std::uint32_t any_in_packet(const RayPacket& packet, std::uint32_t active) const {
+    const Group& group = scene_.top;
+    std::uint32_t blocked = 0;
+    traverse_packet(top_bvh_, packet, active, [&](const PrimitiveRef& ref, std::uint32_t lanes) {
+      const Geometry& geometry = group.geometries[ref.geom];
+      switch (kind_of(geometry)) {
+        case GeometryKind::kSpheres: {
+          const Sphere& s = std::get<SphereSet>(geometry).spheres[ref.prim];
+          float t[kPacketSize];
+          for (std::uint32_t hit = intersect_sphere_lanes(s.center, s.radius, packet.lanes(), lanes, t); hit != 0;
+               hit &= hit - 1) {
+            const auto k = static_cast<unsigned>(std::countr_zero(hit));
+            if (t[k] < packet.tmax[k]) blocked |= 1u << k;
+          }
+          break;
+        }
+        case GeometryKind::kTriangles: {
+          const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
+          const TriangleIndices& tri = mesh.triangles[ref.prim];
+          for (; lanes != 0; lanes &= lanes - 1) {
+            const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+            const Ray& ray = *packet.rays[k];
+            TriangleHit th;
+            if (intersect_triangle(mesh.vertex(tri.v0), mesh.vertex(tri.v1), mesh.vertex(tri.v2), ray.org, ray.dir,
+                                   ray.tnear, packet.tmax[k], th) &&
+                th.t < packet.tmax[k])
+              blocked |= 1u << k;
+          }
+          break;
+        }
+        case GeometryKind::kInstance: {
+          const Instance& instance = std::get<Instance>(geometry);
+          for (; lanes != 0; lanes &= lanes - 1) {
+            const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+            const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
+            if (is_traceable(local) && any_in_group(scene_.prototypes[instance.prototype],
+                                                    prototype_bvhs_[instance.prototype], local))
+              blocked |= 1u << k;
+          }
+          break;
+        }
+      }
+      return active & ~blocked;
+    });
+    return blocked;
+  }
+
   const RenderScene& scene_;
+  const bool packets_;  // the CPU has AVX2
   Bvh top_bvh_;
   std::vector<Bvh> prototype_bvhs_;
   double build_seconds_ = 0.0;

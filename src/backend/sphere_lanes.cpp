@@ -95,22 +95,25 @@ std::uint32_t scalar_lanes(const Vec3& center, float radius, const RayLanes& ray
   return hits;
 }
 
-// __builtin_cpu_init first: this runs from a static initialiser, possibly before the one of the
-// runtime that fills in the CPU model.
+// __builtin_cpu_init first: the first call may come from a static initialiser, before the one of
+// the runtime that fills in the CPU model.
 bool cpu_has_avx2() {
   __builtin_cpu_init();
   return __builtin_cpu_supports("avx2");
 }
 
-const bool kAvx2 = cpu_has_avx2();
-
 }  // namespace
 
-bool sphere_lanes_vectorised() { return kAvx2; }
+// A function-local static, not a namespace-scope constant: other files' static initialisers ask
+// too, and the order of initialisation across files is unspecified.
+bool sphere_lanes_vectorised() {
+  static const bool avx2 = cpu_has_avx2();
+  return avx2;
+}
 
 std::uint32_t intersect_sphere_lanes(const Vec3& center, float radius, const RayLanes& rays, std::uint32_t active,
                                      float* t_hit) {
-  if (kAvx2 && rays.count % 4 == 0) return vector_lanes(center, radius, rays, active, t_hit);
+  if (sphere_lanes_vectorised() && rays.count % 4 == 0) return vector_lanes(center, radius, rays, active, t_hit);
   return scalar_lanes(center, radius, rays, active, t_hit);
 }
 
