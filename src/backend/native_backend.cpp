@@ -111,7 +111,7 @@ class NativeBackend final : public Backend {
         slots[count++] = i;
       }
       if (count == 0) continue;
-      packet.pad(count);
+      packet.finish(count);
       closest_in_packet(packet, (1u << count) - 1u, best);
       for (unsigned k = 0; k < count; ++k) {
         if (!best[k].valid()) continue;
@@ -135,7 +135,7 @@ class NativeBackend final : public Backend {
         slots[count++] = i;
       }
       if (count == 0) continue;
-      packet.pad(count);
+      packet.finish(count);
       std::uint32_t blocked = any_in_packet(packet, (1u << count) - 1u);
       for (; blocked != 0; blocked &= blocked - 1) result[slots[std::countr_zero(blocked)]] = 1;
     }

@@ -29,16 +29,19 @@ struct RayPacket {
     dir_x[lane] = ray.dir.x;
     dir_y[lane] = ray.dir.y;
     dir_z[lane] = ray.dir.z;
-    inv_x[lane] = 1.0f / ray.dir.x;
-    inv_y[lane] = 1.0f / ray.dir.y;
-    inv_z[lane] = 1.0f / ray.dir.z;
     tnear[lane] = ray.tnear;
     tmax[lane] = t_max;
     rays[lane] = &ray;
   }
-  // Lanes past the last ray: a copy of lane 0, never active, so every lane holds finite values.
-  void pad(unsigned count) {
+  // Lanes past the last ray become copies of lane 0, never active, so every lane holds finite
+  // values; then the reciprocal directions of all eight lanes in one division each (IEEE division,
+  // the very 1.0f / d of the single-ray code).
+  [[gnu::target("avx2")]] void finish(unsigned count) {
     for (unsigned lane = count; lane < kPacketSize; ++lane) set(lane, *rays[0], tmax[0]);
+    const __m256 one = _mm256_set1_ps(1.0f);
+    _mm256_store_ps(inv_x, _mm256_div_ps(one, _mm256_load_ps(dir_x)));
+    _mm256_store_ps(inv_y, _mm256_div_ps(one, _mm256_load_ps(dir_y)));
+    _mm256_store_ps(inv_z, _mm256_div_ps(one, _mm256_load_ps(dir_z)));
   }
   RayLanes lanes() const { return {org_x, org_y, org_z, dir_x, dir_y, dir_z, tnear, tmax, kPacketSize}; }
 };
