@@ -431,6 +431,21 @@ TEST(ImageIo, AnExrWhoseTilesExceedTheReadBudgetIsRefusedBeforeOpenExrAllocatesT
   EXPECT_NE(message.find("in tiles of"), std::string::npos) << message;
 }
 
+TEST(ImageIo, AnExrWithoutADataWindowIsRefusedBeforeOpenExrSizesItsTiles) {
+  // Renaming the attribute leaves OpenEXR its default window and a tile description alone, from
+  // which it sized a 1.6 GB compressor buffer at open (a fuzz finding).
+  const auto folder = test::scratch_dir();
+  write_with_oiio(folder / "tiled.exr", varied_image(20, 18), OIIO::TypeDesc::HALF,
+                  [](OIIO::ImageSpec& spec) { spec.tile_width = spec.tile_height = 16; });
+  std::string bytes = file_bytes(folder / "tiled.exr");
+  const std::size_t window = bytes.find(std::string("dataWindow\0box2i", 16));
+  ASSERT_NE(window, std::string::npos);
+  bytes[window + 10] = 'b';  // "dataWindowb", of type "ox2i": the same number of bytes
+  std::ofstream(folder / "no_window.exr", std::ios::binary) << bytes;
+  const std::string message = error_message_of<InputError>([&] { read_image(folder / "no_window.exr"); });
+  EXPECT_NE(message.find("no dataWindow"), std::string::npos) << message;
+}
+
 TEST(ImageIo, AnExrWhoseDataWindowExceedsTheReadBudgetIsRefusedNamingItsSize) {
   const auto folder = test::scratch_dir();
   write_image(folder / "small.exr", varied_image(8, 2), {});
