@@ -96,9 +96,12 @@ void texture_coordinates(const Group& group, const Hit& hit, const LocalSurface&
   throw RuntimeError("hit record names an instance as its primitive");
 }
 
-Vec3 safe_normalize(const Vec3& v, const Vec3& fallback) {
+// `fallback()` is called only when `v` has no direction: callers pass work (a normalisation) that
+// the common case must not pay for.
+template <typename Fallback>
+Vec3 safe_normalize(const Vec3& v, Fallback&& fallback) {
   const float len = length(v);
-  return len > 0.0f && std::isfinite(len) ? v / len : fallback;
+  return len > 0.0f && std::isfinite(len) ? v / len : fallback();
 }
 
 }  // namespace
@@ -106,30 +109,32 @@ Vec3 safe_normalize(const Vec3& v, const Vec3& fallback) {
 void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfacePoint& sp) {
   sp.tex_u = 0.0f;
   sp.tex_v = 0.0f;
-  LocalSurface local;
-  if (hit.inst_id == kInvalidId) {
-    local = local_surface(scene.top, hit, ray);
-    if (has_image_texture(scene, local.material)) texture_coordinates(scene.top, hit, local, sp);
-    sp.object_id = hit.geom_id;
-  } else {
-    const Instance& instance = std::get<Instance>(scene.top.geometries[hit.inst_id]);
-    const Ray object_ray{instance.world_to_object.apply_point(ray.org), ray.tnear,
-                         instance.world_to_object.apply_vector(ray.dir), ray.tfar};
-    local = local_surface(scene.prototypes[instance.prototype], hit, object_ray);
-    if (has_image_texture(scene, local.material)) texture_coordinates(scene.prototypes[instance.prototype], hit, local, sp);
-    local.position = instance.object_to_world.apply_point(local.position);
-    local.geometric_normal = instance.world_to_object.apply_normal_of_inverse(local.geometric_normal);
-    local.shading_normal = instance.world_to_object.apply_normal_of_inverse(local.shading_normal);
+  // `local` is initialised from the call's result, not assigned: an assignment copied the returned
+  // record with 16-byte loads over the callee's 4-byte stores (a store-forwarding stall per hit).
+  const bool instanced = hit.inst_id != kInvalidId;
+  const Instance* instance = instanced ? &std::get<Instance>(scene.top.geometries[hit.inst_id]) : nullptr;
+  const Group& group = instanced ? scene.prototypes[instance->prototype] : scene.top;
+  LocalSurface local = instanced ? local_surface(group, hit,
+                                                 Ray{instance->world_to_object.apply_point(ray.org), ray.tnear,
+                                                     instance->world_to_object.apply_vector(ray.dir), ray.tfar})
+                                 : local_surface(group, hit, ray);
+  if (has_image_texture(scene, local.material)) texture_coordinates(group, hit, local, sp);
+  if (instanced) {
+    local.position = instance->object_to_world.apply_point(local.position);
+    local.geometric_normal = instance->world_to_object.apply_normal_of_inverse(local.geometric_normal);
+    local.shading_normal = instance->world_to_object.apply_normal_of_inverse(local.shading_normal);
     // The transform adds error proportional to the translation and the transformed magnitude.
     local.magnitude = std::max(local.magnitude, magnitude(local.position)) * 4.0f;
     sp.object_id = hit.inst_id;
+  } else {
+    sp.object_id = hit.geom_id;
   }
 
   sp.position = local.position;
   sp.material = local.material;
   sp.position_error = kRelativePositionError * std::max(local.magnitude, magnitude(local.position));
 
-  Vec3 ng = safe_normalize(local.geometric_normal, -normalize(ray.dir));
+  Vec3 ng = safe_normalize(local.geometric_normal, [&] { return -normalize(ray.dir); });
   sp.front_face = !(dot(ng, ray.dir) > 0.0f);
   if (!sp.front_face) ng = -ng;
   sp.geometric_normal = ng;
@@ -138,7 +143,7 @@ void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, Surf
     sp.shading_normal = ng;
     return;
   }
-  Vec3 ns = safe_normalize(local.shading_normal, ng);
+  Vec3 ns = safe_normalize(local.shading_normal, [&] { return ng; });
   if (dot(ns, ng) < 0.0f) ns = -ns;
   sp.shading_normal = ns;
 }
