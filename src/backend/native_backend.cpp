@@ -103,15 +103,23 @@ class NativeBackend final : public Backend {
     std::size_t i = 0;
     while (i < rays.size()) {
       unsigned count = 0;
-      for (; i < rays.size() && count < kPacketSize; ++i) {
-        hits[i] = Hit{};
-        if (!gate_.admit(rays[i])) continue;
-        packet.set(count, rays[i], rays[i].tfar);
-        best[count] = Hit{};
-        slots[count++] = i;
+      if (rays.size() - i >= kPacketSize && packet.load_traceable(&rays[i])) {
+        for (; count < kPacketSize; ++count, ++i) {
+          hits[i] = Hit{};
+          best[count] = Hit{};
+          slots[count] = i;
+        }
+      } else {
+        for (; i < rays.size() && count < kPacketSize; ++i) {
+          hits[i] = Hit{};
+          if (!gate_.admit(rays[i])) continue;
+          packet.set(count, rays[i], rays[i].tfar);
+          best[count] = Hit{};
+          slots[count++] = i;
+        }
+        if (count == 0) continue;
+        packet.finish(count);
       }
-      if (count == 0) continue;
-      packet.finish(count);
       closest_in_packet(packet, (1u << count) - 1u, best);
       for (unsigned k = 0; k < count; ++k) {
         if (!best[k].valid()) continue;
@@ -128,14 +136,21 @@ class NativeBackend final : public Backend {
     std::size_t i = 0;
     while (i < rays.size()) {
       unsigned count = 0;
-      for (; i < rays.size() && count < kPacketSize; ++i) {
-        result[i] = 0;
-        if (!gate_.admit(rays[i])) continue;
-        packet.set(count, rays[i], rays[i].tfar);
-        slots[count++] = i;
+      if (rays.size() - i >= kPacketSize && packet.load_traceable(&rays[i])) {
+        for (; count < kPacketSize; ++count, ++i) {
+          result[i] = 0;
+          slots[count] = i;
+        }
+      } else {
+        for (; i < rays.size() && count < kPacketSize; ++i) {
+          result[i] = 0;
+          if (!gate_.admit(rays[i])) continue;
+          packet.set(count, rays[i], rays[i].tfar);
+          slots[count++] = i;
+        }
+        if (count == 0) continue;
+        packet.finish(count);
       }
-      if (count == 0) continue;
-      packet.finish(count);
       std::uint32_t blocked = any_in_packet(packet, (1u << count) - 1u);
       for (; blocked != 0; blocked &= blocked - 1) result[slots[std::countr_zero(blocked)]] = 1;
     }
