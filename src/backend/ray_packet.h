@@ -22,6 +22,48 @@ constexpr unsigned kPacketSize = 8;
   return _mm256_cmp_ps(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), v), _mm256_set1_ps(kMaxTraceableMagnitude), _CMP_LT_OQ);
 }
 
+// Eight consecutive rays at once, for the packets of both backends: an 8x8 transpose of their
+// fields (a Ray is eight floats) into `fields` (org x, y, z, tnear, dir x, y, z, tfar: a Ray's own
+// order), in place of 64 scalar stores, and the backends' admission test (is_traceable) lane by
+// lane. Returns false, writing nothing, when any of the eight is not traceable: the caller then
+// takes them one by one through RayGate, so that rejected rays are counted as ever.
+[[gnu::target("avx2")]] inline bool load_traceable_lanes(const Ray* eight, float* const (&fields)[8]) {
+  static_assert(sizeof(Ray) == 8 * sizeof(float) && offsetof(Ray, tnear) == 3 * sizeof(float) &&
+                offsetof(Ray, dir) == 4 * sizeof(float) && offsetof(Ray, tfar) == 7 * sizeof(float));
+  const float* f = reinterpret_cast<const float*>(eight);
+  __m256 r[8];
+  for (int k = 0; k < 8; ++k) r[k] = _mm256_loadu_ps(f + 8 * k);
+  const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
+  const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
+  const __m256 t4 = _mm256_unpacklo_ps(r[4], r[5]), t5 = _mm256_unpackhi_ps(r[4], r[5]);
+  const __m256 t6 = _mm256_unpacklo_ps(r[6], r[7]), t7 = _mm256_unpackhi_ps(r[6], r[7]);
+  const __m256 u0 = _mm256_shuffle_ps(t0, t2, 0x44), u1 = _mm256_shuffle_ps(t0, t2, 0xEE);
+  const __m256 u2 = _mm256_shuffle_ps(t1, t3, 0x44), u3 = _mm256_shuffle_ps(t1, t3, 0xEE);
+  const __m256 u4 = _mm256_shuffle_ps(t4, t6, 0x44), u5 = _mm256_shuffle_ps(t4, t6, 0xEE);
+  const __m256 u6 = _mm256_shuffle_ps(t5, t7, 0x44), u7 = _mm256_shuffle_ps(t5, t7, 0xEE);
+  const __m256 ox = _mm256_permute2f128_ps(u0, u4, 0x20), oy = _mm256_permute2f128_ps(u1, u5, 0x20);
+  const __m256 oz = _mm256_permute2f128_ps(u2, u6, 0x20), tn = _mm256_permute2f128_ps(u3, u7, 0x20);
+  const __m256 dx = _mm256_permute2f128_ps(u0, u4, 0x31), dy = _mm256_permute2f128_ps(u1, u5, 0x31);
+  const __m256 dz = _mm256_permute2f128_ps(u2, u6, 0x31), tf = _mm256_permute2f128_ps(u3, u7, 0x31);
+
+  // is_traceable, lane by lane: ordered comparisons are false for NaN, as the scalar tests are.
+  const __m256 zero = _mm256_setzero_ps();
+  const __m256 infinity = _mm256_set1_ps(std::numeric_limits<float>::infinity());
+  __m256 ok = _mm256_and_ps(lanes_in_traceable_range(ox), lanes_in_traceable_range(oy));
+  ok = _mm256_and_ps(ok, _mm256_and_ps(lanes_in_traceable_range(oz), lanes_in_traceable_range(dx)));
+  ok = _mm256_and_ps(ok, _mm256_and_ps(lanes_in_traceable_range(dy), lanes_in_traceable_range(dz)));
+  const __m256 x_or_y = _mm256_or_ps(_mm256_cmp_ps(dx, zero, _CMP_NEQ_OQ), _mm256_cmp_ps(dy, zero, _CMP_NEQ_OQ));
+  ok = _mm256_and_ps(ok, _mm256_or_ps(x_or_y, _mm256_cmp_ps(dz, zero, _CMP_NEQ_OQ)));
+  ok = _mm256_and_ps(ok, _mm256_cmp_ps(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), tn), infinity, _CMP_LT_OQ));
+  ok = _mm256_and_ps(ok, _mm256_cmp_ps(tf, tf, _CMP_ORD_Q));
+  ok = _mm256_and_ps(ok, _mm256_and_ps(_mm256_cmp_ps(tn, zero, _CMP_GE_OQ), _mm256_cmp_ps(tn, tf, _CMP_LE_OQ)));
+  if (_mm256_movemask_ps(ok) != 0xFF) return false;
+
+  const __m256 rows[8] = {ox, oy, oz, tn, dx, dy, dz, tf};
+  for (int k = 0; k < 8; ++k) _mm256_storeu_ps(fields[k], rows[k]);
+  return true;
+}
+
 struct RayPacket {
   alignas(32) float org_x[kPacketSize], org_y[kPacketSize], org_z[kPacketSize];
   alignas(32) float dir_x[kPacketSize], dir_y[kPacketSize], dir_z[kPacketSize];
@@ -45,65 +87,26 @@ struct RayPacket {
   // the very 1.0f / d of the single-ray code).
   [[gnu::target("avx2")]] void finish(unsigned count) {
     for (unsigned lane = count; lane < kPacketSize; ++lane) set(lane, *rays[0], tmax[0]);
+    reciprocals();
+  }
+  // Eight consecutive rays, if all are traceable (load_traceable_lanes); the packet is then
+  // finished (as by finish(8)).
+  [[gnu::target("avx2")]] bool load_traceable(const Ray* eight) {
+    if (!load_traceable_lanes(eight, {org_x, org_y, org_z, tnear, dir_x, dir_y, dir_z, tmax})) return false;
+    for (unsigned lane = 0; lane < kPacketSize; ++lane) rays[lane] = eight + lane;
+    reciprocals();
+    return true;
+  }
+
+  RayLanes lanes() const { return {org_x, org_y, org_z, dir_x, dir_y, dir_z, tnear, tmax, kPacketSize}; }
+
+ private:
+  [[gnu::target("avx2")]] void reciprocals() {
     const __m256 one = _mm256_set1_ps(1.0f);
     _mm256_store_ps(inv_x, _mm256_div_ps(one, _mm256_load_ps(dir_x)));
     _mm256_store_ps(inv_y, _mm256_div_ps(one, _mm256_load_ps(dir_y)));
     _mm256_store_ps(inv_z, _mm256_div_ps(one, _mm256_load_ps(dir_z)));
   }
-  // Eight consecutive rays at once: an 8x8 transpose of their fields (a Ray is eight floats) in
-  // place of 64 scalar stores, and the backend's admission test (is_traceable) lane by lane.
-  // Returns false, with the packet unusable, when any of them is not traceable: the caller then
-  // takes them one by one, so that rejected rays are counted as ever. On success the packet is
-  // finished (as by finish(8)).
-  [[gnu::target("avx2")]] bool load_traceable(const Ray* eight) {
-    static_assert(sizeof(Ray) == 8 * sizeof(float) && offsetof(Ray, tnear) == 3 * sizeof(float) &&
-                  offsetof(Ray, dir) == 4 * sizeof(float) && offsetof(Ray, tfar) == 7 * sizeof(float));
-    const float* f = reinterpret_cast<const float*>(eight);
-    __m256 r[8];
-    for (int k = 0; k < 8; ++k) r[k] = _mm256_loadu_ps(f + 8 * k);
-    const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
-    const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
-    const __m256 t4 = _mm256_unpacklo_ps(r[4], r[5]), t5 = _mm256_unpackhi_ps(r[4], r[5]);
-    const __m256 t6 = _mm256_unpacklo_ps(r[6], r[7]), t7 = _mm256_unpackhi_ps(r[6], r[7]);
-    const __m256 u0 = _mm256_shuffle_ps(t0, t2, 0x44), u1 = _mm256_shuffle_ps(t0, t2, 0xEE);
-    const __m256 u2 = _mm256_shuffle_ps(t1, t3, 0x44), u3 = _mm256_shuffle_ps(t1, t3, 0xEE);
-    const __m256 u4 = _mm256_shuffle_ps(t4, t6, 0x44), u5 = _mm256_shuffle_ps(t4, t6, 0xEE);
-    const __m256 u6 = _mm256_shuffle_ps(t5, t7, 0x44), u7 = _mm256_shuffle_ps(t5, t7, 0xEE);
-    const __m256 ox = _mm256_permute2f128_ps(u0, u4, 0x20), oy = _mm256_permute2f128_ps(u1, u5, 0x20);
-    const __m256 oz = _mm256_permute2f128_ps(u2, u6, 0x20), tn = _mm256_permute2f128_ps(u3, u7, 0x20);
-    const __m256 dx = _mm256_permute2f128_ps(u0, u4, 0x31), dy = _mm256_permute2f128_ps(u1, u5, 0x31);
-    const __m256 dz = _mm256_permute2f128_ps(u2, u6, 0x31), tf = _mm256_permute2f128_ps(u3, u7, 0x31);
-
-    // is_traceable, lane by lane: ordered comparisons are false for NaN, as the scalar tests are.
-    const __m256 sign = _mm256_set1_ps(-0.0f);
-    const __m256 zero = _mm256_setzero_ps();
-    __m256 ok = _mm256_and_ps(_mm256_and_ps(lanes_in_traceable_range(ox), lanes_in_traceable_range(oy)), _mm256_and_ps(lanes_in_traceable_range(oz), lanes_in_traceable_range(dx)));
-    ok = _mm256_and_ps(ok, _mm256_and_ps(lanes_in_traceable_range(dy), lanes_in_traceable_range(dz)));
-    const __m256 nonzero = _mm256_or_ps(_mm256_or_ps(_mm256_cmp_ps(dx, zero, _CMP_NEQ_OQ), _mm256_cmp_ps(dy, zero, _CMP_NEQ_OQ)),
-                                        _mm256_cmp_ps(dz, zero, _CMP_NEQ_OQ));
-    ok = _mm256_and_ps(ok, nonzero);
-    ok = _mm256_and_ps(ok, _mm256_cmp_ps(_mm256_andnot_ps(sign, tn), _mm256_set1_ps(std::numeric_limits<float>::infinity()), _CMP_LT_OQ));
-    ok = _mm256_and_ps(ok, _mm256_cmp_ps(tf, tf, _CMP_ORD_Q));
-    ok = _mm256_and_ps(ok, _mm256_and_ps(_mm256_cmp_ps(tn, zero, _CMP_GE_OQ), _mm256_cmp_ps(tn, tf, _CMP_LE_OQ)));
-    if (_mm256_movemask_ps(ok) != 0xFF) return false;
-
-    _mm256_store_ps(org_x, ox);
-    _mm256_store_ps(org_y, oy);
-    _mm256_store_ps(org_z, oz);
-    _mm256_store_ps(tnear, tn);
-    _mm256_store_ps(dir_x, dx);
-    _mm256_store_ps(dir_y, dy);
-    _mm256_store_ps(dir_z, dz);
-    _mm256_store_ps(tmax, tf);
-    for (unsigned lane = 0; lane < kPacketSize; ++lane) rays[lane] = eight + lane;
-    const __m256 one = _mm256_set1_ps(1.0f);
-    _mm256_store_ps(inv_x, _mm256_div_ps(one, dx));
-    _mm256_store_ps(inv_y, _mm256_div_ps(one, dy));
-    _mm256_store_ps(inv_z, _mm256_div_ps(one, dz));
-    return true;
-  }
-
-  RayLanes lanes() const { return {org_x, org_y, org_z, dir_x, dir_y, dir_z, tnear, tmax, kPacketSize}; }
 };
 
 // One axis of the slab test for eight lanes, in hits_box's operand order: a NaN axis (0·∞) leaves
