@@ -22,6 +22,13 @@ constexpr unsigned kPacketSize = 8;
   return _mm256_cmp_ps(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), v), _mm256_set1_ps(kMaxTraceableMagnitude), _CMP_LT_OQ);
 }
 
+// Floats [4·half, 4·half + 4) of rays k and k + 4 (of eight consecutive rays at `f`), one per
+// 128-bit half.
+[[gnu::target("avx2")]] inline __m256 ray_halves(const float* f, int k, int half) {
+  return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(f + 8 * k + 4 * half)),
+                              _mm_loadu_ps(f + 8 * (k + 4) + 4 * half), 1);
+}
+
 // Eight consecutive rays at once, for the packets of both backends: an 8x8 transpose of their
 // fields (a Ray is eight floats) into `fields` (org x, y, z, tnear, dir x, y, z, tfar: a Ray's own
 // order), in place of 64 scalar stores, and the backends' admission test (is_traceable) lane by
@@ -30,21 +37,20 @@ constexpr unsigned kPacketSize = 8;
 [[gnu::target("avx2")]] inline bool load_traceable_lanes(const Ray* eight, float* const (&fields)[8]) {
   static_assert(sizeof(Ray) == 8 * sizeof(float) && offsetof(Ray, tnear) == 3 * sizeof(float) &&
                 offsetof(Ray, dir) == 4 * sizeof(float) && offsetof(Ray, tfar) == 7 * sizeof(float));
+  // Rays k and k + 4 share a register, one in each 128-bit half, so the transpose is two 4x4
+  // transposes within halves. 128-bit loads: a 256-bit array spilled to the stack was reloaded
+  // over the halves' stores (a store-forwarding stall per group).
   const float* f = reinterpret_cast<const float*>(eight);
-  __m256 r[8];
-  for (int k = 0; k < 8; ++k) r[k] = _mm256_loadu_ps(f + 8 * k);
-  const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
-  const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
-  const __m256 t4 = _mm256_unpacklo_ps(r[4], r[5]), t5 = _mm256_unpackhi_ps(r[4], r[5]);
-  const __m256 t6 = _mm256_unpacklo_ps(r[6], r[7]), t7 = _mm256_unpackhi_ps(r[6], r[7]);
-  const __m256 u0 = _mm256_shuffle_ps(t0, t2, 0x44), u1 = _mm256_shuffle_ps(t0, t2, 0xEE);
-  const __m256 u2 = _mm256_shuffle_ps(t1, t3, 0x44), u3 = _mm256_shuffle_ps(t1, t3, 0xEE);
-  const __m256 u4 = _mm256_shuffle_ps(t4, t6, 0x44), u5 = _mm256_shuffle_ps(t4, t6, 0xEE);
-  const __m256 u6 = _mm256_shuffle_ps(t5, t7, 0x44), u7 = _mm256_shuffle_ps(t5, t7, 0xEE);
-  const __m256 ox = _mm256_permute2f128_ps(u0, u4, 0x20), oy = _mm256_permute2f128_ps(u1, u5, 0x20);
-  const __m256 oz = _mm256_permute2f128_ps(u2, u6, 0x20), tn = _mm256_permute2f128_ps(u3, u7, 0x20);
-  const __m256 dx = _mm256_permute2f128_ps(u0, u4, 0x31), dy = _mm256_permute2f128_ps(u1, u5, 0x31);
-  const __m256 dz = _mm256_permute2f128_ps(u2, u6, 0x31), tf = _mm256_permute2f128_ps(u3, u7, 0x31);
+  const __m256 a0 = ray_halves(f, 0, 0), a1 = ray_halves(f, 1, 0), a2 = ray_halves(f, 2, 0), a3 = ray_halves(f, 3, 0);
+  const __m256 b0 = ray_halves(f, 0, 1), b1 = ray_halves(f, 1, 1), b2 = ray_halves(f, 2, 1), b3 = ray_halves(f, 3, 1);
+  const __m256 s0 = _mm256_unpacklo_ps(a0, a1), s1 = _mm256_unpackhi_ps(a0, a1);
+  const __m256 s2 = _mm256_unpacklo_ps(a2, a3), s3 = _mm256_unpackhi_ps(a2, a3);
+  const __m256 e0 = _mm256_unpacklo_ps(b0, b1), e1 = _mm256_unpackhi_ps(b0, b1);
+  const __m256 e2 = _mm256_unpacklo_ps(b2, b3), e3 = _mm256_unpackhi_ps(b2, b3);
+  const __m256 ox = _mm256_shuffle_ps(s0, s2, 0x44), oy = _mm256_shuffle_ps(s0, s2, 0xEE);
+  const __m256 oz = _mm256_shuffle_ps(s1, s3, 0x44), tn = _mm256_shuffle_ps(s1, s3, 0xEE);
+  const __m256 dx = _mm256_shuffle_ps(e0, e2, 0x44), dy = _mm256_shuffle_ps(e0, e2, 0xEE);
+  const __m256 dz = _mm256_shuffle_ps(e1, e3, 0x44), tf = _mm256_shuffle_ps(e1, e3, 0xEE);
 
   // is_traceable, lane by lane: ordered comparisons are false for NaN, as the scalar tests are.
   const __m256 zero = _mm256_setzero_ps();
