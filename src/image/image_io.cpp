@@ -19,6 +19,7 @@
 #include <cstring>
 #include <ctime>
 #include <memory>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -196,30 +197,63 @@ void write_pixels(const std::filesystem::path& file, const OIIO::ImageSpec& spec
 // or EXR crashed `rtpro compare`). Tiles are read one whole tile at a time: the OpenEXR reader's
 // read_native_tiles writes a partial edge tile past the caller's rectangle (CVE-2026-63422, fixed
 // only in OpenImageIO 3.x).
+//
+// A TIFF whose PhotometricInterpretation is MinIsWhite is read one scanline per call: on whole
+// deflate strips OpenImageIO 2.4 inverts nchannels times too many values (stripvals * stripchans
+// in TIFFInput::read_native_scanlines), writing up to (nchannels - 1) strips past the caller's
+// buffer (a fuzz finding: a 397-byte TIFF of 5x32864 RGB pixels). And every buffer the library
+// writes into ends in a guard of known bytes, checked after each call: an overrun it makes on a
+// file nobody has met yet is refused as an input error instead of passing silently into the heap.
 class NativeBands {
  public:
-  NativeBands(OIIO::ImageInput& input, const OIIO::ImageSpec& spec, int band_rows)
+  NativeBands(OIIO::ImageInput& input, const OIIO::ImageSpec& spec, int band_rows, const SourceLocation& where)
       : input_(input),
         spec_(spec),
+        where_(where),
         pixel_bytes_(spec.pixel_bytes(/*native=*/true)),
         row_bytes_(pixel_bytes_ * static_cast<std::size_t>(spec.width)),
-        native_(row_bytes_ * static_cast<std::size_t>(band_rows)),
-        tile_(spec.tile_width > 0 ? static_cast<std::size_t>(spec.tile_bytes(/*native=*/true)) : 0) {}
+        row_by_row_(std::string_view(input.format_name()) == "tiff" &&
+                    spec.get_int_attribute("tiff:PhotometricInterpretation", -1) == 0),
+        native_(row_bytes_ * static_cast<std::size_t>(band_rows) + kGuardBytes, kGuardByte),
+        tile_(spec.tile_width > 0 ? static_cast<std::size_t>(spec.tile_bytes(/*native=*/true)) + kGuardBytes : 0,
+              kGuardByte) {}
 
   // Rows [y, end) of the image (counted from its data window's top) as floats, channel after
   // channel; false when the reader fails (its error is on the ImageInput).
   bool read(int y, int end, float* out) {
-    if (!(spec_.tile_width > 0 ? read_tiles(y, end)
-                                : input_.read_native_scanlines(0, 0, spec_.y + y, spec_.y + end, spec_.z, native_.data())))
-      return false;
+    if (!(spec_.tile_width > 0 ? read_tiles(y, end) : read_scanlines(y, end))) return false;
     return convert(end - y, out);
   }
 
  private:
+  static constexpr std::size_t kGuardBytes = 4096;
+  static constexpr unsigned char kGuardByte = 0xA5;
+
+  void require_guard_intact(const std::vector<unsigned char>& buffer) const {
+    static const std::vector<unsigned char> guard(kGuardBytes, kGuardByte);
+    if (std::memcmp(buffer.data() + buffer.size() - kGuardBytes, guard.data(), kGuardBytes) != 0)
+      throw InputError(where_, "the image library wrote past the pixels it was asked for while decoding this " +
+                                   std::string(input_.format_name()) + " file; it is not read");
+  }
+
+  bool read_scanlines(int y, int end) {
+    if (row_by_row_) {
+      for (int row = y; row < end; ++row)
+        if (!input_.read_native_scanline(0, 0, spec_.y + row, spec_.z,
+                                         native_.data() + static_cast<std::size_t>(row - y) * row_bytes_))
+          return false;
+    } else if (!input_.read_native_scanlines(0, 0, spec_.y + y, spec_.y + end, spec_.z, native_.data())) {
+      return false;
+    }
+    require_guard_intact(native_);
+    return true;
+  }
+
   bool read_tiles(int y, int end) {
     const std::size_t tile_row_bytes = pixel_bytes_ * static_cast<std::size_t>(spec_.tile_width);
     for (int x = 0; x < spec_.width; x += spec_.tile_width) {
       if (!input_.read_native_tile(0, 0, spec_.x + x, spec_.y + y, spec_.z, tile_.data())) return false;
+      require_guard_intact(tile_);
       const std::size_t columns_bytes = pixel_bytes_ * static_cast<std::size_t>(std::min(spec_.tile_width, spec_.width - x));
       for (int row = 0; row < end - y; ++row)
         std::memcpy(native_.data() + static_cast<std::size_t>(row) * row_bytes_ + pixel_bytes_ * static_cast<std::size_t>(x),
@@ -250,7 +284,9 @@ class NativeBands {
 
   OIIO::ImageInput& input_;
   const OIIO::ImageSpec& spec_;
+  const SourceLocation& where_;
   std::size_t pixel_bytes_, row_bytes_;
+  bool row_by_row_;
   std::vector<unsigned char> native_, tile_;
 };
 
@@ -352,7 +388,7 @@ Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
                                   std::to_string(spec.tile_height) + " pixels, " + format_bytes(tile_bytes) +
                                   "; the limit is " + format_bytes(max_bytes));
   }
-  NativeBands bands(*input, spec, band_rows);
+  NativeBands bands(*input, spec, band_rows, where);
   for (int y = 0; y < spec.height; y += band_rows) {
     const int end = std::min(y + band_rows, spec.height);
     image.data.resize(row_values * static_cast<std::size_t>(end));

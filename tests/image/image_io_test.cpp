@@ -364,6 +364,34 @@ TEST(ImageIo, TiledFilesReadAsTheirScanlineTwins) {
   EXPECT_EQ(read_image(folder / "tiled.tif").data, image.data);
 }
 
+TEST(ImageIo, AMinIsWhiteRgbTiffInDeflateStripsIsReadInvertedAndWithinItsBuffer) {
+  // OpenImageIO 2.4 inverts nchannels times too many values on whole deflate strips of a MinIsWhite
+  // TIFF, up to two strips past the caller's buffer for RGB (a fuzz finding: the overrun corrupted
+  // the heap). read_image takes such a file one scanline at a time, and the guard after its buffer
+  // turns an overrun into an error: without the first, this test fails on the second.
+  const auto folder = test::scratch_dir();
+  Image image(8, 64, {"R", "G", "B"});
+  for (std::size_t i = 0; i < image.data.size(); ++i) image.data[i] = static_cast<float>((i * 37) % 256) / 255.0f;
+  write_with_oiio(folder / "rgb.tif", image, OIIO::TypeDesc::UINT8, [](OIIO::ImageSpec& spec) {
+    spec.attribute("compression", "zip");
+    spec.attribute("tiff:RowsPerStrip", 16);
+  });
+  std::string bytes = file_bytes(folder / "rgb.tif");
+  // The PhotometricInterpretation entry (tag 262, SHORT, count 1, RGB = 2) becomes MinIsWhite (0).
+  const std::string rgb_entry("\x06\x01\x03\x00\x01\x00\x00\x00\x02\x00", 10);
+  const std::size_t entry = bytes.find(rgb_entry);
+  ASSERT_NE(entry, std::string::npos) << "no little-endian RGB PhotometricInterpretation entry";
+  bytes[entry + 8] = 0;
+  std::ofstream(folder / "white_is_zero.tif", std::ios::binary) << bytes;
+  ASSERT_EQ(spec_of(folder / "white_is_zero.tif").get_int_attribute("tiff:PhotometricInterpretation", -1), 0);
+  ASSERT_EQ(spec_of(folder / "white_is_zero.tif").get_int_attribute("tiff:Compression", -1), 8);  // Adobe deflate
+
+  const Image read = read_image(folder / "white_is_zero.tif");
+  ASSERT_EQ(read.data.size(), image.data.size());
+  for (std::size_t i = 0; i < image.data.size(); ++i)
+    ASSERT_EQ(std::lround(read.data[i] * 255.0f), 255 - static_cast<long>((i * 37) % 256)) << "value " << i;
+}
+
 TEST(ImageIo, PerChannelTypesAndAnOffsetDataWindowAreReadInPlace) {
   const auto folder = test::scratch_dir();
   Image image = varied_image(9, 7, {"R", "G", "B", "Z"});
