@@ -4,14 +4,18 @@
 # primary + shadow rays at 1024×1024, time to first image of the whole process, peak RSS and bytes
 # per triangle, and Embree's own `viewer` (Debian package embree-tools) on the same model and
 # camera when it is installed. Usage: benchmarks/dragon_benchmark.sh
+#   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-build="$root/build-release"
+build=${RTPRO_BUILD_DIR:-$root/build-release}
 out="$build/benchmark-results/dragon"
 threads=${RTPRO_BENCH_THREADS:-$(nproc)}
 
 "$root/scripts/fetch-dragon.sh" >/dev/null
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTPRO_BUILD_TESTS=OFF >/dev/null
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTPRO_BUILD_TESTS=OFF >/dev/null
+fi
+grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$build/CMakeCache.txt" || { echo "$build is not a Release tree" >&2; exit 2; }
 cmake --build "$build" --target rtpro rtpro_backend_benchmark rtpro_mesh_load_benchmark >/dev/null
 mkdir -p "$out"
 
