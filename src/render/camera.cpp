@@ -15,23 +15,4 @@ Sample2D concentric_disk(Sample2D square) {
   return {radius * std::cos(angle), radius * std::sin(angle)};
 }
 
-Ray camera_ray(const RenderCamera& camera, float px, float py, Sample2D lens) {
-  const float x = (2.0f * px * camera.inv_width - 1.0f) * camera.half_width;
-  const float y = (1.0f - 2.0f * py * camera.inv_height) * camera.half_height;
-  // The film point's direction at distance 1 along `forward`.
-  const Vec3 through = camera.forward + camera.right * x + camera.true_up * y;
-  Ray ray;
-  if (camera.lens_radius == 0.0f) {
-    ray.org = camera.position;
-    ray.dir = normalize(through);
-    return ray;
-  }
-  const Sample2D disk = concentric_disk(lens);
-  const Vec3 on_lens = (camera.right * disk.x + camera.true_up * disk.y) * camera.lens_radius;
-  const Vec3 in_focus = through * camera.focus_distance;  // relative to the lens centre
-  ray.org = camera.position + on_lens;
-  ray.dir = normalize(in_focus - on_lens);
-  return ray;
-}
-
 }  // namespace rtpro

@@ -1,5 +1,6 @@
 #include "rtpro/render/shading.h"
 
+#include "append_ray.h"
 #include "rtpro/render/beer_lambert.h"
 #include "rtpro/render/dielectric.h"
 #include "rtpro/render/light_sample.h"
@@ -19,21 +20,6 @@ using Workspace = ShadingWorkspace;
 // traced: below what an 8-bit output resolves even at full exposure, and it bounds the tree that
 // glass (two children per hit) would otherwise double at every depth.
 constexpr float kMinThroughput = 1.0f / 4096.0f;
-
-// Appends a just-built ray field by field. push_back(ray) made the compiler assemble the ray on
-// the stack in 8- and 4-byte stores and copy it with 16-byte loads: a store-forwarding stall at
-// every shadow and reflection ray, about a sixth of the shading loop.
-inline void append_ray(std::vector<Ray>& rays, const Ray& ray) {
-  Ray& r = rays.emplace_back();
-  r.org.x = ray.org.x;
-  r.org.y = ray.org.y;
-  r.org.z = ray.org.z;
-  r.tnear = ray.tnear;
-  r.dir.x = ray.dir.x;
-  r.dir.y = ray.dir.y;
-  r.dir.z = ray.dir.z;
-  r.tfar = ray.tfar;
-}
 
 float max_channel(const Color& c) { return std::max(c.x, std::max(c.y, c.z)); }
 

@@ -1,5 +1,6 @@
 #include "rtpro/render/tile_renderer.h"
 
+#include "append_ray.h"
 #include "rtpro/render/camera.h"
 #include "rtpro/render/sample_dimensions.h"
 
@@ -56,8 +57,8 @@ void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixe
       const Sample2D lens = scene_.camera.lens_radius > 0.0f
                                 ? sampler_.sample_2d(pixel_key, s, sample_dimension::kLens)
                                 : Sample2D{0.5f, 0.5f};
-      ws.camera_rays.push_back(
-          camera_ray(scene_.camera, static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y, lens));
+      append_ray(ws.camera_rays,
+                 camera_ray(scene_.camera, static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y, lens));
       ws.sample_keys.push_back({pixel_key, s});
     }
   }
