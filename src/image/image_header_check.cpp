@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -229,6 +230,27 @@ DeclaredImageSize check_gif(Reader& in) {
   return declared;
 }
 
+// OpenImageIO's BMP reader decodes a run-length-encoded image whole when the file is opened, into a
+// buffer of the declared width x height (a 118-byte file declaring 5x536870917 made it throw
+// std::length_error at open; a smaller absurd height would allocate). The declared size is returned
+// from the info header: Windows (40 bytes or more: signed 32-bit width and height, a negative height
+// meaning top-down rows) or OS/2 core (12 bytes: unsigned 16-bit width and height).
+DeclaredImageSize check_bmp(Reader& in) {
+  DeclaredImageSize declared;  // "BM" has been read: file size, two reserved words, pixel offset
+  in.skip(12);
+  const std::uint32_t info_size = in.u32(false);
+  if (info_size == 12) {
+    const std::string b = in.chars(4);
+    declared.width = static_cast<unsigned char>(b[0]) | static_cast<unsigned char>(b[1]) << 8;
+    declared.height = static_cast<unsigned char>(b[2]) | static_cast<unsigned char>(b[3]) << 8;
+  } else {
+    declared.width = static_cast<std::uint64_t>(std::abs(static_cast<std::int64_t>(in.i32())));
+    declared.height = static_cast<std::uint64_t>(std::abs(static_cast<std::int64_t>(in.i32())));
+  }
+  declared.channels = 4;  // at most RGBA
+  return declared;
+}
+
 // Binary PNM (P5 grey, P6 RGB) and PFM (Pf grey, PF RGB) store raw samples: the header's size
 // must fit in the bytes that follow it. Comments and odd whitespace are left to the reader.
 void check_raw_pnm(const std::string& head, std::uintmax_t file_size, const SourceLocation& where) {
@@ -260,6 +282,7 @@ std::optional<DeclaredImageSize> check_image_header(const std::filesystem::path&
   const SourceLocation where{file.string()};
   if (in.starts_with(kExrMagic, sizeof kExrMagic)) return check_exr(in, where);
   if (in.starts_with(kGif87, sizeof kGif87) || in.starts_with(kGif89, sizeof kGif89)) return check_gif(in);
+  if (size >= 26 && in.starts_with(reinterpret_cast<const unsigned char*>("BM"), 2)) return check_bmp(in);
   if (in.starts_with(kPngSignature, sizeof kPngSignature)) check_png(in, where);
   else if (in.starts_with(reinterpret_cast<const unsigned char*>("P"), 1)) {
     in.skip(0);

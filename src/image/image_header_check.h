@@ -8,8 +8,9 @@
 //
 // OpenEXR also sizes its line buffers from the header's data window when a file is opened (a
 // block of up to 256 rows of the full width, twice for compressed files), before any pixel is
-// read; OpenImageIO's GIF reader allocates a canvas of the declared screen size. The declared size
-// is returned so that the read budget applies before opening.
+// read; OpenImageIO's GIF reader allocates a canvas of the declared screen size, its BMP reader
+// decodes a run-length-encoded image whole at open. The declared size is returned so that the read
+// budget applies before opening.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -28,7 +29,7 @@ struct DeclaredImageSize {
 // Throws InputError naming the attribute or chunk when an EXR header or a PNG chunk list is cut
 // short, malformed, or claims more bytes than the file holds. Returns the data window and channel
 // count of an EXR file's first part (the one read_image opens), the largest of a GIF's screen and
-// frames (as RGBA), nothing for other formats.
+// frames (as RGBA), a BMP's declared size (as RGBA), nothing for other formats.
 std::optional<DeclaredImageSize> check_image_header(const std::filesystem::path& file);
 
 }  // namespace rtpro

@@ -349,53 +349,66 @@ Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
     throw InputError(where, "cannot tell what kind of image this is: it has no extension and no signature rtpro knows");
   const auto input = OIIO::ImageInput::create(reader, /*do_open=*/false);
   if (!input) throw InputError(where, "cannot read image: no reader for '" + reader + "' images (" + oiio_errors("") + ")");
-  OIIO::ImageSpec opened_spec;
-  if (!input->open(file.string(), opened_spec))
-    throw InputError(where, "cannot read image as " + std::string(input->format_name()) + ": " +
-                                oiio_errors(input->geterror()));
-  const OIIO::ImageSpec& spec = input->spec();
-  if (spec.deep || spec.depth > 1) throw InputError(where, "deep and volume images are not supported");
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-    throw InputError(where, "the image has no pixels");
-  refuse_if_too_large(static_cast<std::uint64_t>(spec.width), static_cast<std::uint64_t>(spec.height),
-                      static_cast<std::uint64_t>(spec.nchannels));
-  // The data window is the image: an offset or a differing display window is not kept.
-  // Pixels are decoded a band of rows at a time and the image grows as they arrive: the address
-  // space is reserved once, but memory is touched only for rows that really decode, so a
-  // 75-byte PPM declaring 100000x100 fails after one band instead of after clearing 120 MB.
-  Image image;
-  image.width = spec.width;
-  image.height = spec.height;
-  image.channels = spec.channelnames;
-  const std::size_t row_values = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.nchannels);
-  image.data.reserve(row_values * static_cast<std::size_t>(spec.height));
-  // Bands of at least 64 rows and about a million values: each read costs the library a call of
-  // its own, so a narrow image must not take one call per 64 rows (a 5x32864 TIFF took 514 calls and
-  // 53 s under ASan, a fuzz finding).
-  constexpr std::size_t kBandValues = std::size_t{1} << 20;
-  // A tiled image is read one row of tiles at a time.
-  const bool tiled = spec.tile_width > 0;
-  const std::size_t wanted_rows = std::max<std::size_t>(kBandValues / row_values, 64);
-  const int band_rows = static_cast<int>(std::min<std::size_t>(
-      tiled ? static_cast<std::size_t>(std::max(spec.tile_height, 1)) : wanted_rows, static_cast<std::size_t>(spec.height)));
-  if (tiled) {
-    const std::uint64_t tile_bytes =
-        saturating_multiply(saturating_multiply(static_cast<std::uint64_t>(spec.tile_width),
-                                                static_cast<std::uint64_t>(std::max(spec.tile_height, 1))),
-                            spec.pixel_bytes(/*native=*/true));
-    if (tile_bytes > max_bytes)
-      throw InputError(where, "the image's tiles are too large to read: " + std::to_string(spec.tile_width) + "x" +
-                                  std::to_string(spec.tile_height) + " pixels, " + format_bytes(tile_bytes) +
-                                  "; the limit is " + format_bytes(max_bytes));
+  // OpenImageIO's readers can throw from inside open and read (its BMP reader's RLE decoding at
+  // open resized a vector to a corrupt file's size and threw std::length_error: a fuzz finding
+  // that ended `rtpro compare` in std::terminate). Anything the library throws is this file's
+  // fault: an input error naming it.
+  const auto decode = [&]() -> Image {
+    OIIO::ImageSpec opened_spec;
+    if (!input->open(file.string(), opened_spec))
+      throw InputError(where, "cannot read image as " + std::string(input->format_name()) + ": " +
+                                  oiio_errors(input->geterror()));
+    const OIIO::ImageSpec& spec = input->spec();
+    if (spec.deep || spec.depth > 1) throw InputError(where, "deep and volume images are not supported");
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+      throw InputError(where, "the image has no pixels");
+    refuse_if_too_large(static_cast<std::uint64_t>(spec.width), static_cast<std::uint64_t>(spec.height),
+                        static_cast<std::uint64_t>(spec.nchannels));
+    // The data window is the image: an offset or a differing display window is not kept.
+    // Pixels are decoded a band of rows at a time and the image grows as they arrive: the address
+    // space is reserved once, but memory is touched only for rows that really decode, so a
+    // 75-byte PPM declaring 100000x100 fails after one band instead of after clearing 120 MB.
+    Image image;
+    image.width = spec.width;
+    image.height = spec.height;
+    image.channels = spec.channelnames;
+    const std::size_t row_values = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.nchannels);
+    image.data.reserve(row_values * static_cast<std::size_t>(spec.height));
+    // Bands of at least 64 rows and about a million values: each read costs the library a call of
+    // its own, so a narrow image must not take one call per 64 rows (a 5x32864 TIFF took 514 calls and
+    // 53 s under ASan, a fuzz finding).
+    constexpr std::size_t kBandValues = std::size_t{1} << 20;
+    // A tiled image is read one row of tiles at a time.
+    const bool tiled = spec.tile_width > 0;
+    const std::size_t wanted_rows = std::max<std::size_t>(kBandValues / row_values, 64);
+    const int band_rows = static_cast<int>(std::min<std::size_t>(
+        tiled ? static_cast<std::size_t>(std::max(spec.tile_height, 1)) : wanted_rows, static_cast<std::size_t>(spec.height)));
+    if (tiled) {
+      const std::uint64_t tile_bytes =
+          saturating_multiply(saturating_multiply(static_cast<std::uint64_t>(spec.tile_width),
+                                                  static_cast<std::uint64_t>(std::max(spec.tile_height, 1))),
+                              spec.pixel_bytes(/*native=*/true));
+      if (tile_bytes > max_bytes)
+        throw InputError(where, "the image's tiles are too large to read: " + std::to_string(spec.tile_width) + "x" +
+                                    std::to_string(spec.tile_height) + " pixels, " + format_bytes(tile_bytes) +
+                                    "; the limit is " + format_bytes(max_bytes));
+    }
+    NativeBands bands(*input, spec, band_rows, where);
+    for (int y = 0; y < spec.height; y += band_rows) {
+      const int end = std::min(y + band_rows, spec.height);
+      image.data.resize(row_values * static_cast<std::size_t>(end));
+      if (!bands.read(y, end, image.data.data() + row_values * static_cast<std::size_t>(y)))
+        throw InputError(where, "cannot read image: " + oiio_errors(input->geterror()));
+    }
+    return image;
+  };
+  try {
+    return decode();
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& failure) {
+    throw InputError(where, "the image library failed on this file: " + std::string(failure.what()));
   }
-  NativeBands bands(*input, spec, band_rows, where);
-  for (int y = 0; y < spec.height; y += band_rows) {
-    const int end = std::min(y + band_rows, spec.height);
-    image.data.resize(row_values * static_cast<std::size_t>(end));
-    if (!bands.read(y, end, image.data.data() + row_values * static_cast<std::size_t>(y)))
-      throw InputError(where, "cannot read image: " + oiio_errors(input->geterror()));
-  }
-  return image;
 }
 
 }  // namespace rtpro

@@ -487,5 +487,30 @@ TEST(ImageIo, AnExrWhoseDataWindowExceedsTheReadBudgetIsRefusedNamingItsSize) {
   EXPECT_NE(message.find("too large"), std::string::npos) << message;
 }
 
+TEST(ImageIo, ABmpDeclaringMorePixelsThanTheBudgetIsRefusedBeforeOpenImageIoDecodesIt) {
+  // OpenImageIO's BMP reader decodes a run-length-encoded image whole at open, into a buffer of the
+  // declared size: a 118-byte file declaring 536870917x4 made it throw std::length_error there (a
+  // fuzz finding that ended in std::terminate). The info header's size is checked first.
+  const auto folder = test::scratch_dir();
+  write_with_oiio(folder / "small.bmp", varied_image(8, 2), OIIO::TypeDesc::UINT8, [](OIIO::ImageSpec&) {});
+  ASSERT_NO_THROW(read_image(folder / "small.bmp"));
+  std::string bytes = file_bytes(folder / "small.bmp");
+  ASSERT_EQ(bytes.substr(0, 2), "BM");
+  // The finding's shape: run-length encoded (compression 2), 536870917x4.
+  put_u32(bytes, 18, 536870917);
+  put_u32(bytes, 22, 4);
+  put_u32(bytes, 30, 2);
+  std::ofstream(folder / "wide.bmp", std::ios::binary) << bytes;
+  const std::string message =
+      error_message_of<InputError>([&] { read_image(folder / "wide.bmp", std::uint64_t{256} << 20); });
+  EXPECT_NE(message.find("536870917x4"), std::string::npos) << message;
+  EXPECT_NE(message.find("too large"), std::string::npos) << message;
+  put_u32(bytes, 18, 8);
+  put_u32(bytes, 22, 0x80000000u);  // a height of INT32_MIN: top-down, and no absolute value in 32 bits
+  std::ofstream(folder / "tall.bmp", std::ios::binary) << bytes;
+  const std::string tall = error_message_of<InputError>([&] { read_image(folder / "tall.bmp", std::uint64_t{256} << 20); });
+  EXPECT_NE(tall.find("8x2147483648"), std::string::npos) << tall;
+}
+
 }  // namespace
 }  // namespace rtpro
