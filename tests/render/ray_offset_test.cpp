@@ -11,7 +11,11 @@
 
 #include <xmmintrin.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <limits>
 #include <random>
 
 namespace rtpro {
@@ -149,6 +153,48 @@ TEST(RayOffset, RoundsAwayFromTheSurfaceUnderTheTracingFloatingPointMode) {
   const unsigned saved = _mm_getcsr();
   set_tracing_fp_mode();
   expect_rounding_away_from_the_surface();
+  _mm_setcsr(saved);
+}
+
+// The SSE offset against its per-axis definition, bit for bit, over random points, normals and
+// error bounds with the values where the rounding step branches: zeros of both signs, denormals,
+// the smallest normal float, coordinates whose step crosses a power of two, axis-aligned normals.
+void expect_sse_offset_equals_per_axis_definition() {
+  std::mt19937 rng(17);
+  const float specials[] = {0.0f, -0.0f, 1e-40f, -1e-40f, std::numeric_limits<float>::min(),
+                            -std::numeric_limits<float>::min(), 1.0f, -1.0f, 2.0f, 0x1.fffffep0f, -3.5e7f, 1e30f};
+  std::uniform_int_distribution<int> pick(0, 2 * static_cast<int>(std::size(specials)));
+  std::uniform_real_distribution<float> coordinate(-100.0f, 100.0f);
+  auto value = [&] {
+    const int k = pick(rng);
+    return k < static_cast<int>(std::size(specials)) ? specials[k] : coordinate(rng);
+  };
+  int moved = 0;
+  for (int i = 0; i < 200000; ++i) {
+    SurfacePoint sp{};
+    sp.position = {value(), value(), value()};
+    Vec3 n{value(), value(), value()};
+    if (i % 3 == 0) n = Vec3(0.0f);
+    n[i % 3] = i % 2 ? 1.0f : -1.0f;
+    sp.geometric_normal = n;
+    sp.position_error = i % 5 == 0 ? 1e-38f : std::fabs(coordinate(rng)) * 1e-6f;
+    const Vec3 direction{value(), value(), value()};
+    const Vec3 expected = offset_ray_origin_per_axis(sp, direction);
+    const Vec3 actual = offset_ray_origin(sp, direction);
+    for (int axis = 0; axis < 3; ++axis)
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(actual[axis]), std::bit_cast<std::uint32_t>(expected[axis]))
+          << "case " << i << " axis " << axis << ": " << actual[axis] << " vs " << expected[axis];
+    moved += !(expected == sp.position);
+  }
+  EXPECT_GT(moved, 190000);
+}
+
+TEST(RayOffset, SseOffsetIsThePerAxisDefinitionBitForBit) { expect_sse_offset_equals_per_axis_definition(); }
+
+TEST(RayOffset, SseOffsetIsThePerAxisDefinitionUnderTheTracingFloatingPointMode) {
+  const unsigned saved = _mm_getcsr();
+  set_tracing_fp_mode();
+  expect_sse_offset_equals_per_axis_definition();
   _mm_setcsr(saved);
 }
 
