@@ -9,8 +9,6 @@ namespace rtpro {
 
 namespace {
 
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
-
 // An orthonormal frame around unit `w` (Duff et al. 2017, branch-free).
 void frame_around(const Vec3& w, Vec3& t1, Vec3& t2) {
   const float sign = std::copysign(1.0f, w.z);
@@ -20,19 +18,11 @@ void frame_around(const Vec3& w, Vec3& t1, Vec3& t2) {
   t2 = Vec3(b, sign + w.y * w.y * a, -w.y);
 }
 
-LightSample sample(const PointLight& light, const Vec3& point, Sample2D) {
-  const Vec3 to_light = light.position - point;
-  const float distance = length(to_light);
-  return {to_light / distance, distance, light.radiance};
-}
-
-LightSample sample(const DirectionalLight& light, const Vec3&, Sample2D) {
-  return {light.to_light, kInfinity, light.radiance};
-}
+}  // namespace
 
 // Uniform over the cone of directions the sphere fills: every sample sees the light's radiance
 // over the cone's solid angle 2π(1 − cos θmax).
-LightSample sample(const SphereLight& light, const Vec3& point, Sample2D u) {
+LightSample sample_light_of_kind(const SphereLight& light, const Vec3& point, Sample2D u) {
   const Vec3 to_center = light.center - point;
   const float d2 = dot(to_center, to_center);
   const float r2 = light.radius * light.radius;
@@ -58,7 +48,7 @@ LightSample sample(const SphereLight& light, const Vec3& point, Sample2D u) {
 
 // Uniform over the area: a point seen at distance d and cosine cos_l stands for area·cos_l/d² of
 // solid angle.
-LightSample sample(const QuadLight& light, const Vec3& point, Sample2D u) {
+LightSample sample_light_of_kind(const QuadLight& light, const Vec3& point, Sample2D u) {
   const Vec3 on_light = light.corner + light.edge1 * u.x + light.edge2 * u.y;
   const Vec3 to_light = on_light - point;
   const float d2 = dot(to_light, to_light);
@@ -69,6 +59,8 @@ LightSample sample(const QuadLight& light, const Vec3& point, Sample2D u) {
   if (!(cos_light > 0.0f)) return {direction, distance, Color(0.0f)};
   return {direction, distance, light.radiance * (cos_light * light.area / d2)};
 }
+
+namespace {
 
 int per_axis(const PointLight&) { return 1; }
 int per_axis(const DirectionalLight&) { return 1; }
@@ -118,10 +110,6 @@ Color emission(const QuadLight& light) { return light.radiance; }
 
 int light_samples_per_axis(const Light& light) {
   return std::visit([](const auto& l) { return per_axis(l); }, light);
-}
-
-LightSample sample_light(const Light& light, const Vec3& point, Sample2D u) {
-  return std::visit([&](const auto& l) { return sample(l, point, u); }, light);
 }
 
 std::optional<float> hit_light(const Light& light, const Ray& ray, float t_max) {

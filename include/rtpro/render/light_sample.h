@@ -9,7 +9,9 @@
 #include "rtpro/render/sampler.h"
 #include "rtpro/scene/light.h"
 
+#include <limits>
 #include <optional>
+#include <variant>
 
 namespace rtpro {
 
@@ -25,8 +27,23 @@ struct LightSample {
 // The side of the stratified grid of shadow samples: 1 for point and directional lights.
 int light_samples_per_axis(const Light& light);
 
-// `u` picks the sample (area lights: a point of [0,1)²; ignored by point and directional lights).
-LightSample sample_light(const Light& light, const Vec3& point, Sample2D u);
+// One overload per light kind; `u` picks the sample (area lights: a point of [0,1)²; ignored by
+// point and directional lights, whose overloads are inline: every shading point of a Whitted scene
+// calls them, and out of line the call and the variant's dispatch cost more than the arithmetic).
+inline LightSample sample_light_of_kind(const PointLight& light, const Vec3& point, Sample2D) {
+  const Vec3 to_light = light.position - point;
+  const float distance = length(to_light);
+  return {to_light / distance, distance, light.radiance};
+}
+inline LightSample sample_light_of_kind(const DirectionalLight& light, const Vec3&, Sample2D) {
+  return {light.to_light, std::numeric_limits<float>::infinity(), light.radiance};
+}
+LightSample sample_light_of_kind(const SphereLight& light, const Vec3& point, Sample2D u);
+LightSample sample_light_of_kind(const QuadLight& light, const Vec3& point, Sample2D u);
+
+inline LightSample sample_light(const Light& light, const Vec3& point, Sample2D u) {
+  return std::visit([&](const auto& l) { return sample_light_of_kind(l, point, u); }, light);
+}
 
 // An area light's emitting surface as seen by a camera or mirror ray: the ray parameter of the
 // nearest visible hit in (ray.tnear, t_max), or nothing (always for point and directional lights,
