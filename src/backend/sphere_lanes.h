@@ -5,8 +5,8 @@
 // exact per lane whatever the vector width; no contraction into fused multiply-adds), so a sphere
 // hit does not depend on whether it came through a packet, a single ray or the native backend.
 //
-// AVX2 (four doubles) where the CPU has it, chosen once at run time; otherwise the scalar
-// function lane by lane.
+// AVX-512 (eight doubles) for whole groups of eight lanes, else AVX2 (four doubles), where the CPU
+// has them, chosen once at run time; otherwise the scalar function lane by lane.
 #include "rtpro/core/vec3.h"
 
 #include <cstdint>
