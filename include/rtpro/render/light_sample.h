@@ -2,8 +2,8 @@
 // What shading needs from a light at a point: where it is and what arrives, one shadow ray's
 // worth at a time. Point and directional lights need one sample; an area light needs
 // samples_per_axis² stratified ones, whose radiances average to what the whole light delivers.
-// Each light kind in the Light variant adds one overload of each function in light_sample.cpp;
-// shading never names a kind.
+// Each light kind in the Light variant adds one sample_light_of_kind overload (below) and one
+// overload of each function in light_sample.cpp; shading never names a kind.
 #include "rtpro/core/ray.h"
 #include "rtpro/core/vec3.h"
 #include "rtpro/render/sampler.h"
