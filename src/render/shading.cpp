@@ -1,6 +1,7 @@
 #include "rtpro/render/shading.h"
 
 #include "append_ray.h"
+#include "point_light_lanes.h"
 #include "rtpro/render/beer_lambert.h"
 #include "rtpro/render/dielectric.h"
 #include "rtpro/render/light_sample.h"
@@ -9,6 +10,7 @@
 
 #include <cmath>
 #include <optional>
+#include <variant>
 
 namespace rtpro {
 
@@ -47,6 +49,84 @@ Color through_medium(const RenderScene& scene, const Workspace::RayTask& task, c
   return task.weight * beer_lambert_transmittance(glass.transmittance, glass.transmittance_distance, t * length(ray.dir));
 }
 
+// The shadow rays of light `l` for surface `s`: one for a point or directional light, samples² for
+// an area light (none for a light behind the surface, by either normal).
+void queue_light_shadow_rays(const RenderScene& scene, const StratifiedSampler& sampler, const SampleKey& key,
+                             int depth, const Workspace::ShadedSurface& s, std::uint32_t l, Workspace& ws) {
+  const Light& light = scene.lights[l];
+  const int per_axis = ws.light_samples_per_axis[l];
+  if (per_axis == 1 && !ws.is_emitter[l]) {  // a point or directional light: one shadow ray
+    const LightSample ls = sample_light(light, s.point.position, Sample2D{0.5f, 0.5f});
+    const float n_dot_l = dot(s.point.shading_normal, ls.direction);
+    if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) return;
+    append_ray(ws.shadow_rays, std::isinf(ls.distance) ? spawn_ray(s.point, ls.direction)
+                                                       : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
+    ws.shadow_queries.push_back({ls.radiance, n_dot_l, dot(s.mirror, ls.direction)});
+    return;
+  }
+  const int count = per_axis * per_axis;
+  const float share = 1.0f / static_cast<float>(count);
+  for (int j = 0; j < count; ++j) {
+    const Sample2D u = sampler.light_sample(key.pixel_key, key.sample_index, depth, int(l), j, per_axis);
+    const LightSample ls = sample_light(light, s.point.position, u);
+    if (is_black(ls.radiance)) continue;
+    const float n_dot_l = dot(s.point.shading_normal, ls.direction);
+    if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) continue;
+    append_ray(ws.shadow_rays, std::isinf(ls.distance) ? spawn_ray(s.point, ls.direction)
+                                                       : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
+    ws.shadow_queries.push_back({ls.radiance * share, n_dot_l, dot(s.mirror, ls.direction)});
+  }
+}
+
+// Lights a batch of four surfaces takes through point_light_lanes at most (a scene with more
+// takes the one-by-one path).
+constexpr std::size_t kMaxLanedLights = 8;
+
+// The shadow rays of every surface of the generation: surface by surface, lights in scene order.
+// Where every light is a point or directional light, four surfaces at a time take each point
+// light through point_light_lanes (the same rays, bit for bit) and are queued in the same order.
+void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sampler, std::span<const SampleKey> keys,
+                       const Workspace::Generation& generation, int depth, Workspace& ws) {
+  const std::size_t light_count = scene.lights.size();
+  bool laned = light_count <= kMaxLanedLights;
+  for (std::size_t l = 0; l < light_count && laned; ++l)
+    laned = ws.light_samples_per_axis[l] == 1 && !ws.is_emitter[l];
+  std::size_t i = 0;
+  PointLightLanes lanes[kMaxLanedLights];
+  for (; laned && i + 4 <= ws.surfaces.size(); i += 4) {
+    const SurfacePoint* points[4];
+    const Vec3* mirrors[4];
+    for (int k = 0; k < 4; ++k) {
+      points[k] = &ws.surfaces[i + k].point;
+      mirrors[k] = &ws.surfaces[i + k].mirror;
+    }
+    for (std::size_t l = 0; l < light_count; ++l)
+      if (const auto* point = std::get_if<PointLight>(&scene.lights[l])) point_light_lanes(*point, points, mirrors, lanes[l]);
+    for (unsigned k = 0; k < 4; ++k) {
+      Workspace::ShadedSurface& s = ws.surfaces[i + k];
+      s.first_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
+      for (std::uint32_t l = 0; l < light_count; ++l) {
+        const auto* point = std::get_if<PointLight>(&scene.lights[l]);
+        if (!point || (lanes[l].infinite >> k & 1u)) {
+          queue_light_shadow_rays(scene, sampler, keys[generation.tasks[s.task].sample], depth, s, l, ws);
+          continue;
+        }
+        if (!(lanes[l].lit >> k & 1u)) continue;
+        append_ray(ws.shadow_rays, lanes[l].rays[k]);
+        ws.shadow_queries.push_back({point->radiance, lanes[l].n_dot_l[k], lanes[l].r_dot_l[k]});
+      }
+      s.end_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
+    }
+  }
+  for (; i < ws.surfaces.size(); ++i) {
+    Workspace::ShadedSurface& s = ws.surfaces[i];
+    s.first_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
+    for (std::uint32_t l = 0; l < light_count; ++l)
+      queue_light_shadow_rays(scene, sampler, keys[generation.tasks[s.task].sample], depth, s, l, ws);
+    s.end_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
+  }
+}
+
 // Reads the hits of one generation: misses see the background (or an area light), hits become
 // shaded surfaces with their shadow rays queued, one per light or samples² per area light (lights
 // behind the surface, by either normal, need none).
@@ -78,36 +158,8 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
     s.albedo = evaluate(scene.materials[s.point.material].color, s.point, ws.textures);
     if (depth == 0)
       results[task.sample].primary = {true, s.albedo, s.point.shading_normal, hit.t * length(ray.dir), s.point.object_id};
-
-    s.first_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
-    const SampleKey& key = keys[task.sample];
-    for (std::uint32_t l = 0; l < scene.lights.size(); ++l) {
-      const Light& light = scene.lights[l];
-      const int per_axis = ws.light_samples_per_axis[l];
-      if (per_axis == 1 && !ws.is_emitter[l]) {  // a point or directional light: one shadow ray
-        const LightSample ls = sample_light(light, s.point.position, Sample2D{0.5f, 0.5f});
-        const float n_dot_l = dot(s.point.shading_normal, ls.direction);
-        if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) continue;
-        append_ray(ws.shadow_rays, std::isinf(ls.distance) ? spawn_ray(s.point, ls.direction)
-                                                           : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
-        ws.shadow_queries.push_back({ls.radiance, n_dot_l, dot(s.mirror, ls.direction)});
-        continue;
-      }
-      const int count = per_axis * per_axis;
-      const float share = 1.0f / static_cast<float>(count);
-      for (int j = 0; j < count; ++j) {
-        const Sample2D u = sampler.light_sample(key.pixel_key, key.sample_index, depth, int(l), j, per_axis);
-        const LightSample ls = sample_light(light, s.point.position, u);
-        if (is_black(ls.radiance)) continue;
-        const float n_dot_l = dot(s.point.shading_normal, ls.direction);
-        if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) continue;
-        append_ray(ws.shadow_rays, std::isinf(ls.distance) ? spawn_ray(s.point, ls.direction)
-                                                           : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
-        ws.shadow_queries.push_back({ls.radiance * share, n_dot_l, dot(s.mirror, ls.direction)});
-      }
-    }
-    s.end_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
   }
+  queue_shadow_rays(scene, sampler, keys, generation, depth, ws);
 }
 
 // Queues a child ray of the ray tree unless its weight is negligible.

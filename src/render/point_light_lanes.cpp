@@ -1,0 +1,99 @@
+#include "point_light_lanes.h"
+
+#include "rtpro/render/ray_offset.h"
+
+#include <emmintrin.h>
+
+#include <limits>
+
+namespace rtpro {
+
+namespace {
+
+// A coordinate of four vectors in one register.
+struct Lanes3 {
+  __m128 x, y, z;
+};
+
+template <typename Field>
+Lanes3 gather(const Field& field) {
+  const Vec3& a = field(0);
+  const Vec3& b = field(1);
+  const Vec3& c = field(2);
+  const Vec3& d = field(3);
+  return {_mm_setr_ps(a.x, b.x, c.x, d.x), _mm_setr_ps(a.y, b.y, c.y, d.y), _mm_setr_ps(a.z, b.z, c.z, d.z)};
+}
+
+// dot(a, b) lane by lane: a.x·b.x + a.y·b.y + a.z·b.z, summed left to right as the scalar dot.
+__m128 dot(const Lanes3& a, const Lanes3& b) {
+  return _mm_add_ps(_mm_add_ps(_mm_mul_ps(a.x, b.x), _mm_mul_ps(a.y, b.y)), _mm_mul_ps(a.z, b.z));
+}
+
+}  // namespace
+
+void point_light_lanes(const PointLight& light, const SurfacePoint* const surfaces[4], const Vec3* const mirrors[4],
+                       PointLightLanes& out) {
+  const Lanes3 p = gather([&](int i) -> const Vec3& { return surfaces[i]->position; });
+  const Lanes3 ns = gather([&](int i) -> const Vec3& { return surfaces[i]->shading_normal; });
+  const Lanes3 ng = gather([&](int i) -> const Vec3& { return surfaces[i]->geometric_normal; });
+  const Lanes3 mirror = gather([&](int i) -> const Vec3& { return *mirrors[i]; });
+  const __m128 error = _mm_setr_ps(surfaces[0]->position_error, surfaces[1]->position_error,
+                                   surfaces[2]->position_error, surfaces[3]->position_error);
+
+  // sample_light: to_light = position − point, distance = |to_light|, direction = to_light / distance.
+  const Lanes3 to_light{_mm_sub_ps(_mm_set1_ps(light.position.x), p.x), _mm_sub_ps(_mm_set1_ps(light.position.y), p.y),
+                        _mm_sub_ps(_mm_set1_ps(light.position.z), p.z)};
+  const __m128 distance = _mm_sqrt_ps(dot(to_light, to_light));
+  const Lanes3 direction{_mm_div_ps(to_light.x, distance), _mm_div_ps(to_light.y, distance),
+                         _mm_div_ps(to_light.z, distance)};
+  const __m128 n_dot_l = dot(ns, direction);
+  const __m128 g_dot_l = dot(ng, direction);
+  const __m128 r_dot_l = dot(mirror, direction);
+
+  // spawn_ray_to(surface, point + direction·distance): the origin pushed off along the geometric
+  // normal on the side of the target, then rounded away from the surface.
+  const Lanes3 target{_mm_add_ps(p.x, _mm_mul_ps(direction.x, distance)),
+                      _mm_add_ps(p.y, _mm_mul_ps(direction.y, distance)),
+                      _mm_add_ps(p.z, _mm_mul_ps(direction.z, distance))};
+  const Lanes3 towards{_mm_sub_ps(target.x, p.x), _mm_sub_ps(target.y, p.y), _mm_sub_ps(target.z, p.z)};
+  const __m128 sign_bit = _mm_set1_ps(-0.0f);
+  const __m128 behind = _mm_andnot_ps(_mm_cmpge_ps(dot(towards, ng), _mm_setzero_ps()), sign_bit);
+  const Lanes3 n{_mm_xor_ps(ng.x, behind), _mm_xor_ps(ng.y, behind), _mm_xor_ps(ng.z, behind)};
+  // dot(|n|, (e, e, e)); |−g| is |g|.
+  const __m128 offset = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_andnot_ps(sign_bit, ng.x), error),
+                                              _mm_mul_ps(_mm_andnot_ps(sign_bit, ng.y), error)),
+                                   _mm_mul_ps(_mm_andnot_ps(sign_bit, ng.z), error));
+  const Lanes3 origin{round_away_from_surface(_mm_add_ps(p.x, _mm_mul_ps(n.x, offset)), n.x),
+                      round_away_from_surface(_mm_add_ps(p.y, _mm_mul_ps(n.y, offset)), n.y),
+                      round_away_from_surface(_mm_add_ps(p.z, _mm_mul_ps(n.z, offset)), n.z)};
+  const Lanes3 ray_direction{_mm_sub_ps(target.x, origin.x), _mm_sub_ps(target.y, origin.y),
+                             _mm_sub_ps(target.z, origin.z)};
+
+  alignas(16) float ox[4], oy[4], oz[4], dx[4], dy[4], dz[4];
+  _mm_store_ps(ox, origin.x);
+  _mm_store_ps(oy, origin.y);
+  _mm_store_ps(oz, origin.z);
+  _mm_store_ps(dx, ray_direction.x);
+  _mm_store_ps(dy, ray_direction.y);
+  _mm_store_ps(dz, ray_direction.z);
+  _mm_storeu_ps(out.n_dot_l, n_dot_l);
+  _mm_storeu_ps(out.r_dot_l, r_dot_l);
+  for (int i = 0; i < 4; ++i) {
+    Ray& ray = out.rays[i];
+    ray.org.x = ox[i];
+    ray.org.y = oy[i];
+    ray.org.z = oz[i];
+    ray.tnear = 0.0f;
+    ray.dir.x = dx[i];
+    ray.dir.y = dy[i];
+    ray.dir.z = dz[i];
+    ray.tfar = 1.0f - 0x1p-16f;
+  }
+  const __m128 zero = _mm_setzero_ps();
+  out.lit = static_cast<std::uint32_t>(
+      _mm_movemask_ps(_mm_and_ps(_mm_cmpnle_ps(n_dot_l, zero), _mm_cmpnle_ps(g_dot_l, zero))));
+  out.infinite = static_cast<std::uint32_t>(_mm_movemask_ps(
+      _mm_cmpeq_ps(_mm_andnot_ps(sign_bit, distance), _mm_set1_ps(std::numeric_limits<float>::infinity()))));
+}
+
+}  // namespace rtpro

@@ -1,0 +1,33 @@
+#pragma once
+// One point light's shadow rays from four surfaces at once, in SSE2 registers: for every lane the
+// answer of the scalar chain shading uses for a point light — sample_light (the direction and
+// distance to the light), the three cosines, spawn_ray_to towards the light — bit for bit. IEEE
+// add, subtract, multiply, divide and square root are exact per lane, the operations are the scalar
+// ones in their order, and nothing is contracted, so a shadow ray does not depend on which
+// surfaces shared its lanes. The scalar chain is a latency chain per surface and light (a square
+// root, then divisions by it, then the offset); four lanes run one chain for four surfaces.
+#include "rtpro/core/ray.h"
+#include "rtpro/render/surface.h"
+#include "rtpro/scene/light.h"
+
+#include <cstdint>
+
+namespace rtpro {
+
+struct PointLightLanes {
+  Ray rays[4];        // spawn_ray_to(surface, light position), for lanes with a finite distance
+  float n_dot_l[4];   // shading normal · direction to the light
+  float r_dot_l[4];   // mirror direction · direction to the light
+  // Bit i: lane i needs its shadow ray (neither normal faces away from the light: the scalar test
+  // `n_dot_l <= 0 || g_dot_l <= 0` is false, NaNs included).
+  std::uint32_t lit = 0;
+  // Bit i: the distance to the light overflowed to infinity; the lane's ray is not set (the scalar
+  // chain spawns a ray along the direction instead).
+  std::uint32_t infinite = 0;
+};
+
+// surfaces[i] and mirrors[i] (unit mirror direction about surfaces[i]'s shading normal), i < 4.
+void point_light_lanes(const PointLight& light, const SurfacePoint* const surfaces[4], const Vec3* const mirrors[4],
+                       PointLightLanes& out);
+
+}  // namespace rtpro
