@@ -136,6 +136,32 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
   ws.surfaces.clear();
   ws.shadow_queries.clear();
   ws.shadow_rays.clear();
+  // What follows the surface point: the mirror direction, the albedo and the camera hit's AOVs.
+  auto complete = [&](Workspace::ShadedSurface& s) {
+    const Ray& ray = generation.rays[s.task];
+    s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
+    s.albedo = evaluate(scene.materials[s.point.material].color, s.point, ws.textures);
+    if (depth == 0)
+      results[generation.tasks[s.task].sample].primary = {true, s.albedo, s.point.shading_normal,
+                                                          ws.hits[s.task].t * length(ray.dir), s.point.object_id};
+  };
+  // Plain sphere hits wait in fours for make_sphere_surfaces4 (the same surfaces, bit for bit).
+  std::uint32_t waiting[4];
+  unsigned waiting_count = 0;
+  auto make_waiting_surfaces = [&] {
+    const Ray* rays[4];
+    const Hit* hits[4];
+    SurfacePoint* points[4];
+    for (unsigned k = 0; k < 4; ++k) {
+      Workspace::ShadedSurface& s = ws.surfaces[waiting[k]];
+      rays[k] = &generation.rays[s.task];
+      hits[k] = &ws.hits[s.task];
+      points[k] = &s.point;
+    }
+    make_sphere_surfaces4(scene, rays, hits, points);
+    for (unsigned k = 0; k < 4; ++k) complete(ws.surfaces[waiting[k]]);
+    waiting_count = 0;
+  };
   for (std::uint32_t i = 0; i < generation.tasks.size(); ++i) {
     const Workspace::RayTask& task = generation.tasks[i];
     const Hit& hit = ws.hits[i];
@@ -153,11 +179,18 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
     s.task = i;
     // Absorbed over the path inside glass (t is in units of the ray's direction length).
     s.weight = through_medium(scene, task, ray, hit.t);
+    if (is_plain_sphere_hit(scene, hit)) {
+      waiting[waiting_count++] = static_cast<std::uint32_t>(ws.surfaces.size() - 1);
+      if (waiting_count == 4) make_waiting_surfaces();
+      continue;
+    }
     make_surface(scene, ray, hit, s.point);
-    s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
-    s.albedo = evaluate(scene.materials[s.point.material].color, s.point, ws.textures);
-    if (depth == 0)
-      results[task.sample].primary = {true, s.albedo, s.point.shading_normal, hit.t * length(ray.dir), s.point.object_id};
+    complete(s);
+  }
+  for (unsigned k = 0; k < waiting_count; ++k) {
+    Workspace::ShadedSurface& s = ws.surfaces[waiting[k]];
+    make_surface(scene, generation.rays[s.task], ws.hits[s.task], s.point);
+    complete(s);
   }
   queue_shadow_rays(scene, sampler, keys, generation, depth, ws);
 }

@@ -2,8 +2,11 @@
 
 #include "rtpro/core/error.h"
 
+#include <emmintrin.h>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <variant>
 
@@ -161,6 +164,112 @@ void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, Surf
   Vec3 ns = safe_normalize(local.shading_normal, [&] { return ng; });
   if (dot(ns, ng) < 0.0f) ns = -ns;
   sp.shading_normal = ns;
+}
+
+bool is_plain_sphere_hit(const RenderScene& scene, const Hit& hit) {
+  if (hit.inst_id != kInvalidId) return false;
+  const auto* set = std::get_if<SphereSet>(&scene.top.geometries[hit.geom_id]);
+  return set && !has_image_texture(scene, set->spheres[hit.prim_id].material);
+}
+
+namespace {
+
+// Four vectors, a coordinate a register.
+struct Lanes3 {
+  __m128 x, y, z;
+};
+
+template <typename Field>
+Lanes3 gather(const Field& field) {
+  const Vec3 a = field(0), b = field(1), c = field(2), d = field(3);
+  return {_mm_setr_ps(a.x, b.x, c.x, d.x), _mm_setr_ps(a.y, b.y, c.y, d.y), _mm_setr_ps(a.z, b.z, c.z, d.z)};
+}
+
+__m128 dot(const Lanes3& a, const Lanes3& b) {
+  return _mm_add_ps(_mm_add_ps(_mm_mul_ps(a.x, b.x), _mm_mul_ps(a.y, b.y)), _mm_mul_ps(a.z, b.z));
+}
+
+Lanes3 divide(const Lanes3& v, __m128 s) { return {_mm_div_ps(v.x, s), _mm_div_ps(v.y, s), _mm_div_ps(v.z, s)}; }
+
+// c ? a : b, lane by lane.
+__m128 select(__m128 c, __m128 a, __m128 b) { return _mm_or_ps(_mm_and_ps(c, a), _mm_andnot_ps(c, b)); }
+Lanes3 select(__m128 c, const Lanes3& a, const Lanes3& b) {
+  return {select(c, a.x, b.x), select(c, a.y, b.y), select(c, a.z, b.z)};
+}
+
+// std::max(a, b) is (a < b) ? b : a, which maxps computes with its operands swapped (it returns its
+// second operand when they are equal or either is NaN).
+__m128 std_max(__m128 a, __m128 b) { return _mm_max_ps(b, a); }
+
+// magnitude(v): std::max(|x|, std::max(|y|, |z|)).
+__m128 magnitude(const Lanes3& v) {
+  const __m128 sign_bit = _mm_set1_ps(-0.0f);
+  return std_max(_mm_andnot_ps(sign_bit, v.x), std_max(_mm_andnot_ps(sign_bit, v.y), _mm_andnot_ps(sign_bit, v.z)));
+}
+
+}  // namespace
+
+void make_sphere_surfaces4(const RenderScene& scene, const Ray* const rays[4], const Hit* const hits[4],
+                           SurfacePoint* const out[4]) {
+  const Sphere* spheres[4];
+  for (int i = 0; i < 4; ++i)
+    spheres[i] = &std::get<SphereSet>(scene.top.geometries[hits[i]->geom_id]).spheres[hits[i]->prim_id];
+  const Lanes3 org = gather([&](int i) { return rays[i]->org; });
+  const Lanes3 dir = gather([&](int i) { return rays[i]->dir; });
+  const Lanes3 center = gather([&](int i) { return spheres[i]->center; });
+  const __m128 radius = _mm_setr_ps(spheres[0]->radius, spheres[1]->radius, spheres[2]->radius, spheres[3]->radius);
+  const __m128 t = _mm_setr_ps(hits[0]->t, hits[1]->t, hits[2]->t, hits[3]->t);
+  const __m128 zero = _mm_setzero_ps();
+  const __m128 sign_bit = _mm_set1_ps(-0.0f);
+
+  // sphere_surface: the hit point re-projected onto the sphere.
+  const Lanes3 from_center{_mm_sub_ps(_mm_add_ps(org.x, _mm_mul_ps(dir.x, t)), center.x),
+                           _mm_sub_ps(_mm_add_ps(org.y, _mm_mul_ps(dir.y, t)), center.y),
+                           _mm_sub_ps(_mm_add_ps(org.z, _mm_mul_ps(dir.z, t)), center.z)};
+  const __m128 len = _mm_sqrt_ps(dot(from_center, from_center));
+  const __m128 has_direction = _mm_cmpgt_ps(len, zero);
+  const Lanes3 up{zero, _mm_set1_ps(1.0f), zero};
+  const Lanes3 n = select(has_direction, divide(from_center, len), up);
+  const Lanes3 position{_mm_add_ps(center.x, _mm_mul_ps(n.x, radius)), _mm_add_ps(center.y, _mm_mul_ps(n.y, radius)),
+                        _mm_add_ps(center.z, _mm_mul_ps(n.z, radius))};
+  const __m128 local_magnitude = std_max(magnitude(position), _mm_add_ps(magnitude(center), radius));
+  const __m128 position_error =
+      _mm_mul_ps(_mm_set1_ps(kRelativePositionError), std_max(local_magnitude, magnitude(position)));
+
+  // safe_normalize(n), falling back to −normalize(ray.dir); then facing the side the ray came from.
+  const __m128 n_length = _mm_sqrt_ps(dot(n, n));
+  const __m128 normalizable = _mm_and_ps(_mm_cmpgt_ps(n_length, zero),
+                                         _mm_cmplt_ps(n_length, _mm_set1_ps(std::numeric_limits<float>::infinity())));
+  const Lanes3 back = divide(dir, _mm_sqrt_ps(dot(dir, dir)));
+  Lanes3 ng = select(normalizable, divide(n, n_length),
+                     Lanes3{_mm_xor_ps(back.x, sign_bit), _mm_xor_ps(back.y, sign_bit), _mm_xor_ps(back.z, sign_bit)});
+  const __m128 back_face = _mm_cmpgt_ps(dot(ng, dir), zero);
+  const __m128 flip = _mm_and_ps(back_face, sign_bit);
+  ng = {_mm_xor_ps(ng.x, flip), _mm_xor_ps(ng.y, flip), _mm_xor_ps(ng.z, flip)};
+
+  alignas(16) float px[4], py[4], pz[4], nx[4], ny[4], nz[4], error[4];
+  _mm_store_ps(px, position.x);
+  _mm_store_ps(py, position.y);
+  _mm_store_ps(pz, position.z);
+  _mm_store_ps(nx, ng.x);
+  _mm_store_ps(ny, ng.y);
+  _mm_store_ps(nz, ng.z);
+  _mm_store_ps(error, position_error);
+  const int back_faces = _mm_movemask_ps(back_face);
+  // Field by field from the lane arrays: reading a just-written field back (shading_normal from
+  // geometric_normal) stalled on store forwarding.
+  for (int i = 0; i < 4; ++i) {
+    SurfacePoint& sp = *out[i];
+    sp.position = Vec3(px[i], py[i], pz[i]);
+    sp.geometric_normal = Vec3(nx[i], ny[i], nz[i]);
+    sp.front_face = !(back_faces >> i & 1);
+    sp.shading_normal = Vec3(nx[i], ny[i], nz[i]);
+    sp.position_error = error[i];
+    sp.material = spheres[i]->material;
+    sp.object_id = hits[i]->geom_id;
+    sp.tex_u = 0.0f;
+    sp.tex_v = 0.0f;
+  }
 }
 
 }  // namespace rtpro

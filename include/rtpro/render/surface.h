@@ -27,6 +27,17 @@ struct SurfacePoint {
 // caller's record in place spares the copy of a returned one, which stalled on store forwarding.
 void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfacePoint& out);
 
+// Whether make_sphere_surfaces4 may take `hit`: a sphere of the top level (not instanced) whose
+// material has no image texture (no texture coordinates to work out).
+bool is_plain_sphere_hit(const RenderScene& scene, const Hit& hit);
+
+// make_surface for four plain sphere hits at once (is_plain_sphere_hit), lane by lane in SSE2
+// registers with make_surface's operations in its order: each out[i] is make_surface(scene,
+// *rays[i], *hits[i]) bit for bit. The square roots and divisions of a surface's normal are a
+// latency chain; four lanes run one chain for four surfaces.
+void make_sphere_surfaces4(const RenderScene& scene, const Ray* const rays[4], const Hit* const hits[4],
+                           SurfacePoint* const out[4]);
+
 inline SurfacePoint make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit) {
   SurfacePoint sp;
   make_surface(scene, ray, hit, sp);

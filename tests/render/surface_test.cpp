@@ -1,0 +1,115 @@
+// Surface reconstruction four sphere hits at a time must be make_surface's, bit for bit.
+#include "rtpro/render/surface.h"
+
+#include "rtpro/backend/backend.h"
+#include "rtpro/core/fp_env.h"
+#include "test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <xmmintrin.h>
+
+#include <bit>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace rtpro {
+namespace {
+
+std::uint32_t bits(float v) { return std::bit_cast<std::uint32_t>(v); }
+
+void expect_same_vector(const Vec3& actual, const Vec3& expected, const char* what, int hit) {
+  for (int axis = 0; axis < 3; ++axis)
+    ASSERT_EQ(bits(actual[axis]), bits(expected[axis])) << what << " axis " << axis << " of hit " << hit;
+}
+
+// Hits of random rays (from outside and inside spheres, at several scales) on the top-level
+// spheres of a mixed scene, made four at a time and one at a time.
+void expect_four_at_a_time_is_make_surface() {
+  for (const float extent : {0.01f, 1.0f, 1000.0f}) {
+    RenderScene scene = test::random_mixed_scene(7, 300, 100, 10);
+    for (Geometry& g : scene.top.geometries)
+      if (auto* set = std::get_if<SphereSet>(&g))
+        for (Sphere& s : set->spheres) {
+          s.center = s.center * extent;
+          s.radius *= extent;
+        }
+    const auto backend = make_backend(BackendKind::kNative, scene, {});
+    std::mt19937 rng(3);
+    std::vector<Ray> rays;
+    std::vector<Hit> hits;
+    for (int i = 0; i < 40000 && hits.size() < 8000; ++i) {
+      const Ray ray = test::random_ray(rng, extent * 4.0f);
+      Hit hit;
+      if (backend->intersect(ray, hit) && is_plain_sphere_hit(scene, hit)) {
+        rays.push_back(ray);
+        hits.push_back(hit);
+      }
+    }
+    ASSERT_GT(hits.size(), 2000u) << "extent " << extent;
+    int back_faces = 0;
+    for (std::size_t first = 0; first + 4 <= hits.size(); first += 4) {
+      const Ray* ray_ptrs[4];
+      const Hit* hit_ptrs[4];
+      SurfacePoint four[4];
+      SurfacePoint* out[4];
+      for (int k = 0; k < 4; ++k) {
+        ray_ptrs[k] = &rays[first + k];
+        hit_ptrs[k] = &hits[first + k];
+        out[k] = &four[k];
+      }
+      make_sphere_surfaces4(scene, ray_ptrs, hit_ptrs, out);
+      for (int k = 0; k < 4; ++k) {
+        const int hit = static_cast<int>(first) + k;
+        const SurfacePoint one = make_surface(scene, rays[first + k], hits[first + k]);
+        expect_same_vector(four[k].position, one.position, "position", hit);
+        expect_same_vector(four[k].geometric_normal, one.geometric_normal, "geometric normal", hit);
+        expect_same_vector(four[k].shading_normal, one.shading_normal, "shading normal", hit);
+        ASSERT_EQ(four[k].front_face, one.front_face) << hit;
+        ASSERT_EQ(bits(four[k].position_error), bits(one.position_error)) << hit;
+        ASSERT_EQ(four[k].material, one.material);
+        ASSERT_EQ(four[k].object_id, one.object_id);
+        ASSERT_EQ(bits(four[k].tex_u), bits(one.tex_u));
+        ASSERT_EQ(bits(four[k].tex_v), bits(one.tex_v));
+        back_faces += !one.front_face;
+      }
+    }
+    EXPECT_GT(back_faces, 50) << "rays from inside spheres are exercised, extent " << extent;
+  }
+}
+
+TEST(Surface, FourSphereHitsAtATimeAreMakeSurfaceBitForBit) { expect_four_at_a_time_is_make_surface(); }
+
+TEST(Surface, FourSphereHitsAtATimeAreMakeSurfaceUnderTheTracingFloatingPointMode) {
+  const unsigned saved = _mm_getcsr();
+  set_tracing_fp_mode();
+  expect_four_at_a_time_is_make_surface();
+  _mm_setcsr(saved);
+}
+
+// Plain: a top-level sphere whose material has no image texture (instances and triangles are not,
+// and a textured sphere needs its texture coordinates from make_surface).
+TEST(Surface, OnlyTopLevelSpheresWithoutImageTexturesArePlain) {
+  RenderScene scene = test::random_mixed_scene(7, 50, 50, 5);
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
+  std::mt19937 rng(9);
+  std::vector<Hit> hits;
+  int plain = 0, other = 0;
+  for (int i = 0; i < 20000; ++i) {
+    Hit hit;
+    if (!backend->intersect(test::random_ray(rng, 4.0f), hit)) continue;
+    hits.push_back(hit);
+    const bool top_sphere =
+        hit.inst_id == kInvalidId && std::holds_alternative<SphereSet>(scene.top.geometries[hit.geom_id]);
+    EXPECT_EQ(is_plain_sphere_hit(scene, hit), top_sphere);
+    (top_sphere ? plain : other) += 1;
+  }
+  EXPECT_GT(plain, 100);
+  EXPECT_GT(other, 100);
+  for (Material& m : scene.materials) m.color = ImageTexture{0, Color(1.0f), TextureWrap{}};
+  for (const Hit& hit : hits) EXPECT_FALSE(is_plain_sphere_hit(scene, hit));
+}
+
+}  // namespace
+}  // namespace rtpro
