@@ -9,7 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <random>
 
 namespace rtpro {
 namespace {
@@ -29,6 +32,42 @@ RenderCamera lens_camera(float aperture, float focus_distance) {
 Vec3 at_depth(const Ray& ray, const RenderCamera& camera, float distance) {
   const float t = distance / dot(ray.dir, camera.forward);
   return ray.org + ray.dir * t;
+}
+
+// Pinhole rays four at a time are camera_ray's, bit for bit, for oblique cameras and film points
+// all over (and beyond) the image.
+TEST(Camera, FourPinholeRaysAtATimeAreCameraRaysBitForBit) {
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<float> coordinate(-20.0f, 20.0f);
+  std::uniform_real_distribution<float> film(-8.0f, 1100.0f);
+  const auto bits = [](float v) { return std::bit_cast<std::uint32_t>(v); };
+  for (int c = 0; c < 50; ++c) {
+    CameraDesc desc;
+    desc.position = {coordinate(rng), coordinate(rng), coordinate(rng)};
+    desc.look_at = {coordinate(rng), coordinate(rng), coordinate(rng)};
+    desc.fov_degrees = 10.0f + static_cast<float>(c) * 3.0f;
+    desc.width = 1000 + c;
+    desc.height = 700 + 3 * c;
+    const RenderCamera camera = make_render_camera(desc);
+    for (int group = 0; group < 500; ++group) {
+      alignas(16) float px[4], py[4];
+      for (int i = 0; i < 4; ++i) {
+        px[i] = film(rng);
+        py[i] = film(rng);
+      }
+      Ray four[4];
+      pinhole_rays4(camera, px, py, four);
+      for (int i = 0; i < 4; ++i) {
+        const Ray one = camera_ray(camera, px[i], py[i], {0.5f, 0.5f});
+        for (int axis = 0; axis < 3; ++axis) {
+          ASSERT_EQ(bits(four[i].org[axis]), bits(one.org[axis]));
+          ASSERT_EQ(bits(four[i].dir[axis]), bits(one.dir[axis])) << "camera " << c << " lane " << i;
+        }
+        ASSERT_EQ(bits(four[i].tnear), bits(one.tnear));
+        ASSERT_EQ(bits(four[i].tfar), bits(one.tfar));
+      }
+    }
+  }
 }
 
 TEST(Camera, WithoutAnApertureTheLensSampleChangesNothing) {
