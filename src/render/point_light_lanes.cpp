@@ -1,5 +1,6 @@
 #include "point_light_lanes.h"
 
+#include "lanes3.h"
 #include "rtpro/render/ray_offset.h"
 
 #include <emmintrin.h>
@@ -8,35 +9,16 @@
 
 namespace rtpro {
 
-namespace {
-
-// A coordinate of four vectors in one register.
-struct Lanes3 {
-  __m128 x, y, z;
-};
-
-template <typename Field>
-Lanes3 gather(const Field& field) {
-  const Vec3& a = field(0);
-  const Vec3& b = field(1);
-  const Vec3& c = field(2);
-  const Vec3& d = field(3);
-  return {_mm_setr_ps(a.x, b.x, c.x, d.x), _mm_setr_ps(a.y, b.y, c.y, d.y), _mm_setr_ps(a.z, b.z, c.z, d.z)};
-}
-
-// dot(a, b) lane by lane: a.x·b.x + a.y·b.y + a.z·b.z, summed left to right as the scalar dot.
-__m128 dot(const Lanes3& a, const Lanes3& b) {
-  return _mm_add_ps(_mm_add_ps(_mm_mul_ps(a.x, b.x), _mm_mul_ps(a.y, b.y)), _mm_mul_ps(a.z, b.z));
-}
-
-}  // namespace
+using lanes::dot;
+using lanes::gather;
+using lanes::Lanes3;
 
 void point_light_lanes(const PointLight& light, const SurfacePoint* const surfaces[4], const Vec3* const mirrors[4],
                        PointLightLanes& out) {
-  const Lanes3 p = gather([&](int i) -> const Vec3& { return surfaces[i]->position; });
-  const Lanes3 ns = gather([&](int i) -> const Vec3& { return surfaces[i]->shading_normal; });
-  const Lanes3 ng = gather([&](int i) -> const Vec3& { return surfaces[i]->geometric_normal; });
-  const Lanes3 mirror = gather([&](int i) -> const Vec3& { return *mirrors[i]; });
+  const Lanes3 p = gather([&](int i) { return surfaces[i]->position; });
+  const Lanes3 ns = gather([&](int i) { return surfaces[i]->shading_normal; });
+  const Lanes3 ng = gather([&](int i) { return surfaces[i]->geometric_normal; });
+  const Lanes3 mirror = gather([&](int i) { return *mirrors[i]; });
   const __m128 error = _mm_setr_ps(surfaces[0]->position_error, surfaces[1]->position_error,
                                    surfaces[2]->position_error, surfaces[3]->position_error);
 
@@ -69,13 +51,9 @@ void point_light_lanes(const PointLight& light, const SurfacePoint* const surfac
   const Lanes3 ray_direction{_mm_sub_ps(target.x, origin.x), _mm_sub_ps(target.y, origin.y),
                              _mm_sub_ps(target.z, origin.z)};
 
-  alignas(16) float ox[4], oy[4], oz[4], dx[4], dy[4], dz[4];
-  _mm_store_ps(ox, origin.x);
-  _mm_store_ps(oy, origin.y);
-  _mm_store_ps(oz, origin.z);
-  _mm_store_ps(dx, ray_direction.x);
-  _mm_store_ps(dy, ray_direction.y);
-  _mm_store_ps(dz, ray_direction.z);
+  float ox[4], oy[4], oz[4], dx[4], dy[4], dz[4];
+  lanes::store(origin, ox, oy, oz);
+  lanes::store(ray_direction, dx, dy, dz);
   _mm_storeu_ps(out.n_dot_l, n_dot_l);
   _mm_storeu_ps(out.r_dot_l, r_dot_l);
   for (int i = 0; i < 4; ++i) {

@@ -1,5 +1,6 @@
 #include "rtpro/render/surface.h"
 
+#include "lanes3.h"
 #include "rtpro/core/error.h"
 
 #include <emmintrin.h>
@@ -174,28 +175,11 @@ bool is_plain_sphere_hit(const RenderScene& scene, const Hit& hit) {
 
 namespace {
 
-// Four vectors, a coordinate a register.
-struct Lanes3 {
-  __m128 x, y, z;
-};
-
-template <typename Field>
-Lanes3 gather(const Field& field) {
-  const Vec3 a = field(0), b = field(1), c = field(2), d = field(3);
-  return {_mm_setr_ps(a.x, b.x, c.x, d.x), _mm_setr_ps(a.y, b.y, c.y, d.y), _mm_setr_ps(a.z, b.z, c.z, d.z)};
-}
-
-__m128 dot(const Lanes3& a, const Lanes3& b) {
-  return _mm_add_ps(_mm_add_ps(_mm_mul_ps(a.x, b.x), _mm_mul_ps(a.y, b.y)), _mm_mul_ps(a.z, b.z));
-}
-
-Lanes3 divide(const Lanes3& v, __m128 s) { return {_mm_div_ps(v.x, s), _mm_div_ps(v.y, s), _mm_div_ps(v.z, s)}; }
-
-// c ? a : b, lane by lane.
-__m128 select(__m128 c, __m128 a, __m128 b) { return _mm_or_ps(_mm_and_ps(c, a), _mm_andnot_ps(c, b)); }
-Lanes3 select(__m128 c, const Lanes3& a, const Lanes3& b) {
-  return {select(c, a.x, b.x), select(c, a.y, b.y), select(c, a.z, b.z)};
-}
+using lanes::divide;
+using lanes::dot;
+using lanes::gather;
+using lanes::Lanes3;
+using lanes::select;
 
 // std::max(a, b) is (a < b) ? b : a, which maxps computes with its operands swapped (it returns its
 // second operand when they are equal or either is NaN).
@@ -247,14 +231,10 @@ void make_sphere_surfaces4(const RenderScene& scene, const Ray* const rays[4], c
   const __m128 flip = _mm_and_ps(back_face, sign_bit);
   ng = {_mm_xor_ps(ng.x, flip), _mm_xor_ps(ng.y, flip), _mm_xor_ps(ng.z, flip)};
 
-  alignas(16) float px[4], py[4], pz[4], nx[4], ny[4], nz[4], error[4];
-  _mm_store_ps(px, position.x);
-  _mm_store_ps(py, position.y);
-  _mm_store_ps(pz, position.z);
-  _mm_store_ps(nx, ng.x);
-  _mm_store_ps(ny, ng.y);
-  _mm_store_ps(nz, ng.z);
-  _mm_store_ps(error, position_error);
+  float px[4], py[4], pz[4], nx[4], ny[4], nz[4], error[4];
+  lanes::store(position, px, py, pz);
+  lanes::store(ng, nx, ny, nz);
+  _mm_storeu_ps(error, position_error);
   const int back_faces = _mm_movemask_ps(back_face);
   // Field by field from the lane arrays: reading a just-written field back (shading_normal from
   // geometric_normal) stalled on store forwarding.
