@@ -1,7 +1,10 @@
 #pragma once
 // Small fixtures several test files share.
 #include "rtpro/core/error.h"
+#include "rtpro/core/fp_env.h"
 #include "rtpro/image/image.h"
+
+#include <xmmintrin.h>
 
 #include <filesystem>
 
@@ -16,5 +19,15 @@ InputError mesh_load_error(const std::filesystem::path& file);
 // Reads both image files and records a test failure unless their channels and every float of
 // their pixels are the same, bit for bit.
 void expect_same_pixels(const std::filesystem::path& reference, const std::filesystem::path& test);
+
+// Runs `check` in the floating-point mode of tracing threads (set_tracing_fp_mode: denormals flush
+// to zero), then restores this thread's own mode.
+template <typename Check>
+void in_tracing_fp_mode(Check&& check) {
+  const unsigned saved = _mm_getcsr();
+  set_tracing_fp_mode();
+  check();
+  _mm_setcsr(saved);
+}
 
 }  // namespace rtpro::test

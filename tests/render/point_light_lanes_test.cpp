@@ -1,13 +1,11 @@
 // Four surfaces' point-light shadow rays at once must be the scalar chain's, bit for bit.
 #include "point_light_lanes.h"
 
-#include "rtpro/core/fp_env.h"
 #include "rtpro/render/light_sample.h"
 #include "rtpro/render/ray_offset.h"
+#include "test_fixtures.h"
 
 #include <gtest/gtest.h>
-
-#include <xmmintrin.h>
 
 #include <bit>
 #include <cmath>
@@ -93,10 +91,7 @@ void expect_lanes_are_the_scalar_chain() {
 TEST(PointLightLanes, EveryLaneIsTheScalarChainBitForBit) { expect_lanes_are_the_scalar_chain(); }
 
 TEST(PointLightLanes, EveryLaneIsTheScalarChainUnderTheTracingFloatingPointMode) {
-  const unsigned saved = _mm_getcsr();
-  set_tracing_fp_mode();
-  expect_lanes_are_the_scalar_chain();
-  _mm_setcsr(saved);
+  test::in_tracing_fp_mode(expect_lanes_are_the_scalar_chain);
 }
 
 }  // namespace

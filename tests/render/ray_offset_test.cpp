@@ -5,6 +5,7 @@
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/fp_env.h"
 #include "rtpro/render/surface.h"
+#include "test_fixtures.h"
 #include "test_scenes.h"
 
 #include <gtest/gtest.h>
@@ -146,20 +147,11 @@ void expect_rounding_away_from_the_surface() {
 
 TEST(RayOffset, RoundsAwayFromTheSurfaceIncludingAtZero) { expect_rounding_away_from_the_surface(); }
 
-// Runs `check` in the floating-point mode of tracing threads, then restores this thread's own.
-template <typename Check>
-void in_tracing_fp_mode(Check&& check) {
-  const unsigned saved = _mm_getcsr();
-  set_tracing_fp_mode();
-  check();
-  _mm_setcsr(saved);
-}
-
 // Tracing threads flush denormals to zero (core/fp_env.h): an error bound of 1e-38 is then zero
 // and a step from 0 onto a denormal would be no step. A test earlier in the same process that
 // rendered on this thread used to leave that mode behind and make the test above fail.
 TEST(RayOffset, RoundsAwayFromTheSurfaceUnderTheTracingFloatingPointMode) {
-  in_tracing_fp_mode(expect_rounding_away_from_the_surface);
+  test::in_tracing_fp_mode(expect_rounding_away_from_the_surface);
 }
 
 // The SSE offset against its per-axis definition, bit for bit, over random points, normals and
@@ -198,7 +190,7 @@ void expect_sse_offset_equals_per_axis_definition() {
 TEST(RayOffset, SseOffsetIsThePerAxisDefinitionBitForBit) { expect_sse_offset_equals_per_axis_definition(); }
 
 TEST(RayOffset, SseOffsetIsThePerAxisDefinitionUnderTheTracingFloatingPointMode) {
-  in_tracing_fp_mode(expect_sse_offset_equals_per_axis_definition);
+  test::in_tracing_fp_mode(expect_sse_offset_equals_per_axis_definition);
 }
 
 }  // namespace

@@ -2,12 +2,10 @@
 #include "rtpro/render/surface.h"
 
 #include "rtpro/backend/backend.h"
-#include "rtpro/core/fp_env.h"
+#include "test_fixtures.h"
 #include "test_scenes.h"
 
 #include <gtest/gtest.h>
-
-#include <xmmintrin.h>
 
 #include <bit>
 #include <cstdint>
@@ -82,10 +80,7 @@ void expect_four_at_a_time_is_make_surface() {
 TEST(Surface, FourSphereHitsAtATimeAreMakeSurfaceBitForBit) { expect_four_at_a_time_is_make_surface(); }
 
 TEST(Surface, FourSphereHitsAtATimeAreMakeSurfaceUnderTheTracingFloatingPointMode) {
-  const unsigned saved = _mm_getcsr();
-  set_tracing_fp_mode();
-  expect_four_at_a_time_is_make_surface();
-  _mm_setcsr(saved);
+  test::in_tracing_fp_mode(expect_four_at_a_time_is_make_surface);
 }
 
 // Plain: a top-level sphere whose material has no image texture (instances and triangles are not,
