@@ -84,8 +84,7 @@ bool has_image_texture(const RenderScene& scene, std::uint32_t material) {
   return std::holds_alternative<ImageTexture>(scene.materials[material].color);
 }
 
-// Texture coordinates of the hit, from the object-space surface (`local`, before any instance
-// transform).
+// Texture coordinates of the hit, from the object-space surface (before any instance transform).
 // `object_normal` is the local surface's geometric normal, passed by value so that the local
 // surface's address never escapes make_surface and its fields stay in registers.
 void texture_coordinates(const Group& group, const Hit& hit, const Vec3 object_normal, SurfacePoint& sp) {
