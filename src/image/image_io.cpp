@@ -201,7 +201,12 @@ void write_pixels(const std::filesystem::path& file, const OIIO::ImageSpec& spec
 // A TIFF whose PhotometricInterpretation is MinIsWhite is read one scanline per call: on whole
 // deflate strips OpenImageIO 2.4 inverts nchannels times too many values (stripvals * stripchans
 // in TIFFInput::read_native_scanlines), writing up to (nchannels - 1) strips past the caller's
-// buffer (a fuzz finding: a 397-byte TIFF of 5x32864 RGB pixels). And every buffer the library
+// buffer (a fuzz finding: a 397-byte TIFF of 5x32864 RGB pixels). So is a TIFF whose RowsPerStrip
+// is not between 1 and its height: for whole strips the library sizes its compressed-strip scratch
+// from RowsPerStrip (an int product that overflows), not from the rows it reads, and a 366-byte
+// deflate TIFF 5 pixels wide declaring 704,662,861 rows per strip asked for 5.6 PB (a fuzz
+// finding). RowsPerStrip above the height is legal (it means one strip), so such files are read,
+// one scanline per call. And every buffer the library
 // writes into ends in a guard of known bytes, checked after each call: an overrun it makes on a
 // file nobody has met yet is refused as an input error instead of passing silently into the heap.
 class NativeBands {
@@ -213,7 +218,9 @@ class NativeBands {
         pixel_bytes_(spec.pixel_bytes(/*native=*/true)),
         row_bytes_(pixel_bytes_ * static_cast<std::size_t>(spec.width)),
         row_by_row_(std::string_view(input.format_name()) == "tiff" &&
-                    spec.get_int_attribute("tiff:PhotometricInterpretation", -1) == 0),
+                    (spec.get_int_attribute("tiff:PhotometricInterpretation", -1) == 0 ||
+                     spec.get_int_attribute("tiff:RowsPerStrip", 0) < 1 ||
+                     spec.get_int_attribute("tiff:RowsPerStrip", 0) > spec.height)),
         native_(row_bytes_ * static_cast<std::size_t>(band_rows) + kGuardBytes, kGuardByte),
         tile_(spec.tile_width > 0 ? static_cast<std::size_t>(spec.tile_bytes(/*native=*/true)) + kGuardBytes : 0,
               kGuardByte) {}

@@ -392,6 +392,36 @@ TEST(ImageIo, AMinIsWhiteRgbTiffInDeflateStripsIsReadInvertedAndWithinItsBuffer)
     ASSERT_EQ(std::lround(read.data[i] * 255.0f), 255 - static_cast<long>((i * 37) % 256)) << "value " << i;
 }
 
+TEST(ImageIo, ATiffWhoseRowsPerStripExceedItsHeightIsReadAsOneStrip) {
+  // RowsPerStrip above the height is legal TIFF (one strip holds the image; 2^32 - 1 is the
+  // specification's default), but OpenImageIO 2.4 sizes its whole-strip scratch from it: a 366-byte
+  // fuzz input declaring 704,662,861 rows per strip asked for 5.6 PB. read_image takes such a file
+  // one scanline at a time; without that this test fails (std::bad_alloc, or an ASan abort).
+  const auto folder = test::scratch_dir();
+  Image image(8, 20, {"R", "G", "B"});
+  for (std::size_t i = 0; i < image.data.size(); ++i) image.data[i] = static_cast<float>((i * 29) % 256) / 255.0f;
+  write_with_oiio(folder / "one_strip.tif", image, OIIO::TypeDesc::UINT8, [](OIIO::ImageSpec& spec) {
+    spec.attribute("compression", "zip");
+    spec.attribute("tiff:RowsPerStrip", 20);
+  });
+  const std::string written = file_bytes(folder / "one_strip.tif");
+  // The RowsPerStrip entry (tag 278, SHORT, count 1, 20) becomes a LONG of the declared value.
+  const std::string rows_entry("\x16\x01\x03\x00\x01\x00\x00\x00\x14\x00", 10);
+  const std::size_t entry = written.find(rows_entry);
+  ASSERT_NE(entry, std::string::npos) << "no little-endian SHORT RowsPerStrip entry of 20";
+  for (const std::uint32_t rows_per_strip : {std::uint32_t{0x2a004d4d}, std::uint32_t{0xffffffff}, std::uint32_t{21}}) {
+    SCOPED_TRACE(rows_per_strip);
+    std::string bytes = written;
+    bytes[entry + 2] = 4;
+    for (int b = 0; b < 4; ++b) bytes[entry + 8 + b] = static_cast<char>((rows_per_strip >> (8 * b)) & 0xff);
+    std::ofstream(folder / "declared.tif", std::ios::binary | std::ios::trunc) << bytes;
+    const Image read = read_image(folder / "declared.tif");
+    ASSERT_EQ(read.data.size(), image.data.size());
+    for (std::size_t i = 0; i < image.data.size(); ++i)
+      ASSERT_EQ(std::lround(read.data[i] * 255.0f), static_cast<long>((i * 29) % 256)) << "value " << i;
+  }
+}
+
 TEST(ImageIo, PerChannelTypesAndAnOffsetDataWindowAreReadInPlace) {
   const auto folder = test::scratch_dir();
   Image image = varied_image(9, 7, {"R", "G", "B", "Z"});
