@@ -136,11 +136,12 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
   ws.surfaces.clear();
   ws.shadow_queries.clear();
   ws.shadow_rays.clear();
-  // What follows the surface point: the mirror direction, the albedo and the camera hit's AOVs.
+  // What follows the surface point and its mirror direction: the albedo and the camera hit's AOVs.
   auto complete = [&](Workspace::ShadedSurface& s) {
     const Ray& ray = generation.rays[s.task];
-    s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
-    s.albedo = evaluate(scene.materials[s.point.material].color, s.point, ws.textures);
+    const ColorTexture& color = scene.materials[s.point.material].color;
+    const Color* plain = std::get_if<Color>(&color);
+    s.albedo = plain ? *plain : evaluate(color, s.point, ws.textures);
     if (depth == 0)
       results[generation.tasks[s.task].sample].primary = {true, s.albedo, s.point.shading_normal,
                                                           ws.hits[s.task].t * length(ray.dir), s.point.object_id};
@@ -152,13 +153,15 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
     const Ray* rays[4];
     const Hit* hits[4];
     SurfacePoint* points[4];
+    Vec3* mirrors[4];
     for (unsigned k = 0; k < 4; ++k) {
       Workspace::ShadedSurface& s = ws.surfaces[waiting[k]];
       rays[k] = &generation.rays[s.task];
       hits[k] = &ws.hits[s.task];
       points[k] = &s.point;
+      mirrors[k] = &s.mirror;
     }
-    make_sphere_surfaces4(scene, rays, hits, points);
+    make_sphere_surfaces4(scene, rays, hits, points, mirrors);
     for (unsigned k = 0; k < 4; ++k) complete(ws.surfaces[waiting[k]]);
     waiting_count = 0;
   };
@@ -185,11 +188,14 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
       continue;
     }
     make_surface(scene, ray, hit, s.point);
+    s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
     complete(s);
   }
   for (unsigned k = 0; k < waiting_count; ++k) {
     Workspace::ShadedSurface& s = ws.surfaces[waiting[k]];
-    make_surface(scene, generation.rays[s.task], ws.hits[s.task], s.point);
+    const Ray& ray = generation.rays[s.task];
+    make_surface(scene, ray, ws.hits[s.task], s.point);
+    s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
     complete(s);
   }
   queue_shadow_rays(scene, sampler, keys, generation, depth, ws);

@@ -193,7 +193,7 @@ __m128 magnitude(const Lanes3& v) {
 }  // namespace
 
 void make_sphere_surfaces4(const RenderScene& scene, const Ray* const rays[4], const Hit* const hits[4],
-                           SurfacePoint* const out[4]) {
+                           SurfacePoint* const out[4], Vec3* const mirrors[4]) {
   const Sphere* spheres[4];
   for (int i = 0; i < 4; ++i)
     spheres[i] = &std::get<SphereSet>(scene.top.geometries[hits[i]->geom_id]).spheres[hits[i]->prim_id];
@@ -230,9 +230,16 @@ void make_sphere_surfaces4(const RenderScene& scene, const Ray* const rays[4], c
   const __m128 flip = _mm_and_ps(back_face, sign_bit);
   ng = {_mm_xor_ps(ng.x, flip), _mm_xor_ps(ng.y, flip), _mm_xor_ps(ng.z, flip)};
 
-  float px[4], py[4], pz[4], nx[4], ny[4], nz[4], error[4];
+  // reflect(back, ng): back − ng · (2 · dot(back, ng)).
+  const __m128 twice_cosine = _mm_mul_ps(_mm_set1_ps(2.0f), dot(back, ng));
+  const Lanes3 mirror{_mm_sub_ps(back.x, _mm_mul_ps(ng.x, twice_cosine)),
+                      _mm_sub_ps(back.y, _mm_mul_ps(ng.y, twice_cosine)),
+                      _mm_sub_ps(back.z, _mm_mul_ps(ng.z, twice_cosine))};
+
+  float px[4], py[4], pz[4], nx[4], ny[4], nz[4], mx[4], my[4], mz[4], error[4];
   lanes::store(position, px, py, pz);
   lanes::store(ng, nx, ny, nz);
+  lanes::store(mirror, mx, my, mz);
   _mm_storeu_ps(error, position_error);
   const int back_faces = _mm_movemask_ps(back_face);
   // Field by field from the lane arrays: reading a just-written field back (shading_normal from
@@ -248,6 +255,7 @@ void make_sphere_surfaces4(const RenderScene& scene, const Ray* const rays[4], c
     sp.object_id = hits[i]->geom_id;
     sp.tex_u = 0.0f;
     sp.tex_v = 0.0f;
+    *mirrors[i] = Vec3(mx[i], my[i], mz[i]);
   }
 }
 

@@ -1,4 +1,5 @@
-// Surface reconstruction four sphere hits at a time must be make_surface's, bit for bit.
+// Surface reconstruction four sphere hits at a time must be make_surface's, bit for bit, and its
+// mirror directions the scalar reflect's.
 #include "rtpro/render/surface.h"
 
 #include "rtpro/backend/backend.h"
@@ -52,12 +53,15 @@ void expect_four_at_a_time_is_make_surface() {
       const Hit* hit_ptrs[4];
       SurfacePoint four[4];
       SurfacePoint* out[4];
+      Vec3 four_mirrors[4];
+      Vec3* mirrors[4];
       for (int k = 0; k < 4; ++k) {
         ray_ptrs[k] = &rays[first + k];
         hit_ptrs[k] = &hits[first + k];
         out[k] = &four[k];
+        mirrors[k] = &four_mirrors[k];
       }
-      make_sphere_surfaces4(scene, ray_ptrs, hit_ptrs, out);
+      make_sphere_surfaces4(scene, ray_ptrs, hit_ptrs, out, mirrors);
       for (int k = 0; k < 4; ++k) {
         const int hit = static_cast<int>(first) + k;
         const SurfacePoint one = make_surface(scene, rays[first + k], hits[first + k]);
@@ -70,6 +74,7 @@ void expect_four_at_a_time_is_make_surface() {
         ASSERT_EQ(four[k].object_id, one.object_id);
         ASSERT_EQ(bits(four[k].tex_u), bits(one.tex_u));
         ASSERT_EQ(bits(four[k].tex_v), bits(one.tex_v));
+        expect_same_vector(four_mirrors[k], reflect(normalize(rays[first + k].dir), one.shading_normal), "mirror", hit);
         back_faces += !one.front_face;
       }
     }

@@ -33,10 +33,12 @@ bool is_plain_sphere_hit(const RenderScene& scene, const Hit& hit);
 
 // make_surface for four plain sphere hits at once (is_plain_sphere_hit), lane by lane in SSE2
 // registers with make_surface's operations in its order: each out[i] is make_surface(scene,
-// *rays[i], *hits[i]) bit for bit. The square roots and divisions of a surface's normal are a
-// latency chain; four lanes run one chain for four surfaces.
+// *rays[i], *hits[i]) bit for bit, and mirrors[i] is the mirror direction there,
+// reflect(normalize(rays[i]->dir), out[i]->shading_normal), bit for bit. The square roots and
+// divisions of a surface's normal and mirror direction are a latency chain; four lanes run one
+// chain for four surfaces.
 void make_sphere_surfaces4(const RenderScene& scene, const Ray* const rays[4], const Hit* const hits[4],
-                           SurfacePoint* const out[4]);
+                           SurfacePoint* const out[4], Vec3* const mirrors[4]);
 
 inline SurfacePoint make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit) {
   SurfacePoint sp;
