@@ -70,6 +70,17 @@ PixelOffset StratifiedSampler::pixel_offset(std::uint64_t pixel_key, int sample_
   return {(static_cast<float>(sx) + jitter_x) * inv_columns_, (static_cast<float>(sy) + jitter_y) * inv_rows_};
 }
 
+void StratifiedSampler::pixel_offsets(std::uint64_t pixel_key, PixelOffset* out) const {
+  const std::uint64_t pixel_bits = hash_combine(seed_, pixel_key);
+  int sample_index = 0;
+  for (int sy = 0; sy < grid_.rows; ++sy)
+    for (int sx = 0; sx < grid_.columns; ++sx, ++sample_index) {
+      const std::uint64_t bits = hash_combine(pixel_bits, static_cast<std::uint64_t>(sample_index));
+      out[sample_index] = {(static_cast<float>(sx) + to_unit_float(bits)) * inv_columns_,
+                           (static_cast<float>(sy) + to_unit_float(bits << 24)) * inv_rows_};
+    }
+}
+
 StratifiedSampler::PermutedSample StratifiedSampler::permuted(std::uint64_t pixel_key, int sample_index,
                                                                int dimension) const {
   const std::uint64_t pixel_dimension = hash_combine(hash_combine(seed_, pixel_key), 0x5eed0000ull + dimension);

@@ -50,25 +50,27 @@ void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixe
   // Sized once per batch and written in place (a resize to the same size does nothing).
   ws.camera_rays.resize(pixel_count * static_cast<std::size_t>(spp));
   ws.sample_keys.resize(ws.camera_rays.size());
+  ws.pixel_offsets.resize(static_cast<std::size_t>(spp));
+  const PixelOffset* offsets = ws.pixel_offsets.data();
   std::size_t next = 0;
   for (std::size_t p = first_pixel; p < first_pixel + pixel_count; ++p) {
     const int x = tile.x0 + static_cast<int>(p % tile_width);
     const int y = tile.y0 + static_cast<int>(p / tile_width);
     const std::uint64_t pixel_key = static_cast<std::uint64_t>(y) * image_width + static_cast<std::uint64_t>(x);
+    sampler_.pixel_offsets(pixel_key, ws.pixel_offsets.data());
     int s = 0;
     // Pinhole rays four at a time (camera_ray's rays, bit for bit), the rest one by one.
     for (; pinhole && s + 4 <= spp; s += 4, next += 4) {
       alignas(16) float px[4], py[4];
       for (int i = 0; i < 4; ++i) {
-        const PixelOffset offset = sampler_.pixel_offset(pixel_key, s + i);
-        px[i] = static_cast<float>(x) + offset.x;
-        py[i] = static_cast<float>(y) + offset.y;
+        px[i] = static_cast<float>(x) + offsets[s + i].x;
+        py[i] = static_cast<float>(y) + offsets[s + i].y;
         ws.sample_keys[next + static_cast<std::size_t>(i)] = {pixel_key, s + i};
       }
       pinhole_rays4(scene_.camera, px, py, &ws.camera_rays[next]);
     }
     for (; s < spp; ++s, ++next) {
-      const PixelOffset offset = sampler_.pixel_offset(pixel_key, s);
+      const PixelOffset& offset = offsets[s];
       const Sample2D lens = pinhole ? Sample2D{0.5f, 0.5f} : sampler_.sample_2d(pixel_key, s, sample_dimension::kLens);
       copy_ray(camera_ray(scene_.camera, static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y, lens),
                ws.camera_rays[next]);

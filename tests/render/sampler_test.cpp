@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cstdint>
 #include <set>
+#include <vector>
 
 namespace rtpro {
 namespace {
@@ -38,6 +41,26 @@ TEST(StratifiedSampler, IsAPureFunctionOfSeedPixelAndIndex) {
   EXPECT_GT(differing, 12);
   // Neighbouring pixels are jittered independently.
   EXPECT_NE(a.pixel_offset(99, 0).x, a.pixel_offset(100, 0).x);
+}
+
+TEST(StratifiedSampler, AllOffsetsOfAPixelAtOnceArePixelOffsetBitForBit) {
+  // Square, oblong (8x6), prime (7x1) and single-sample grids; keys near the ends of the range.
+  for (const int spp : {1, 7, 16, 48, 64, 100}) {
+    for (const std::uint64_t seed : {0ull, 12345ull}) {
+      const StratifiedSampler sampler(spp, seed);
+      std::vector<PixelOffset> all(static_cast<std::size_t>(spp));
+      for (const std::uint64_t pixel : {0ull, 1ull, 640ull * 480ull - 1ull, ~0ull}) {
+        sampler.pixel_offsets(pixel, all.data());
+        for (int s = 0; s < spp; ++s) {
+          const PixelOffset one = sampler.pixel_offset(pixel, s);
+          ASSERT_EQ(std::bit_cast<std::uint32_t>(all[static_cast<std::size_t>(s)].x), std::bit_cast<std::uint32_t>(one.x))
+              << "spp " << spp << " pixel " << pixel << " sample " << s;
+          ASSERT_EQ(std::bit_cast<std::uint32_t>(all[static_cast<std::size_t>(s)].y), std::bit_cast<std::uint32_t>(one.y))
+              << "spp " << spp << " pixel " << pixel << " sample " << s;
+        }
+      }
+    }
+  }
 }
 
 TEST(StratifiedSampler, RejectsCountsBelowOne) {

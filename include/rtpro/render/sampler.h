@@ -36,6 +36,11 @@ class StratifiedSampler {
   // `pixel_key` identifies the pixel in the full image (y·width + x). Dimensions 0–1.
   PixelOffset pixel_offset(std::uint64_t pixel_key, int sample_index) const;
 
+  // pixel_offset(pixel_key, s) for every sample s of the pixel, in sample order, into
+  // out[0, samples_per_pixel()), bit for bit: the pixel's hash is worked out once and the strata
+  // are walked in order instead of divided out sample by sample.
+  void pixel_offsets(std::uint64_t pixel_key, PixelOffset* out) const;
+
   // The 2D value of dimension pair (dimension, dimension + 1) for this sample; dimension is even
   // and at least 2.
   Sample2D sample_2d(std::uint64_t pixel_key, int sample_index, int dimension) const;

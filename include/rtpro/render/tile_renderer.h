@@ -18,6 +18,7 @@ class TileRenderer {
   struct Workspace {
     std::vector<Ray> camera_rays;
     std::vector<SampleKey> sample_keys;
+    std::vector<PixelOffset> pixel_offsets;  // one pixel's, spp of them
     std::vector<SampleResult> samples;
     ShadingWorkspace shading;
   };
