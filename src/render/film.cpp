@@ -24,19 +24,6 @@ std::vector<std::string> aov_channel_names(Aov aov) {
   throw InputError("unknown AOV");
 }
 
-void PixelAccumulator::add(const Color& sample_radiance, const PrimaryHit& primary) {
-  radiance += sample_radiance;
-  if (!has_first) {
-    has_first = true;
-    first_object_id = primary.hit ? primary.object_id + 1 : 0;
-  }
-  if (!primary.hit) return;
-  albedo += primary.albedo;
-  normal += primary.normal;
-  depth_sum += primary.depth;
-  ++hits;
-}
-
 namespace {
 std::vector<std::string> channels_for(const std::vector<Aov>& aovs) {
   std::vector<std::string> channels{"R", "G", "B"};

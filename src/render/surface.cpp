@@ -166,12 +166,6 @@ void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, Surf
   sp.shading_normal = ns;
 }
 
-bool is_plain_sphere_hit(const RenderScene& scene, const Hit& hit) {
-  if (hit.inst_id != kInvalidId) return false;
-  const auto* set = std::get_if<SphereSet>(&scene.top.geometries[hit.geom_id]);
-  return set && !has_image_texture(scene, set->spheres[hit.prim_id].material);
-}
-
 namespace {
 
 using lanes::divide;

@@ -27,7 +27,19 @@ struct PixelAccumulator {
   int hits = 0;
   std::uint32_t first_object_id = 0;  // of sample 0; 0 when it missed (ids are stored + 1)
   bool has_first = false;
-  void add(const Color& sample_radiance, const PrimaryHit& primary);
+  // Inline: it runs once per camera sample.
+  void add(const Color& sample_radiance, const PrimaryHit& primary) {
+    radiance += sample_radiance;
+    if (!has_first) {
+      has_first = true;
+      first_object_id = primary.hit ? primary.object_id + 1 : 0;
+    }
+    if (!primary.hit) return;
+    albedo += primary.albedo;
+    normal += primary.normal;
+    depth_sum += primary.depth;
+    ++hits;
+  }
 };
 
 class FilmLayout {

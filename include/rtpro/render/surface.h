@@ -28,8 +28,12 @@ struct SurfacePoint {
 void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfacePoint& out);
 
 // Whether make_sphere_surfaces4 may take `hit`: a sphere of the top level (not instanced) whose
-// material has no image texture (no texture coordinates to work out).
-bool is_plain_sphere_hit(const RenderScene& scene, const Hit& hit);
+// material has no image texture (no texture coordinates to work out). Inline: it runs per hit.
+inline bool is_plain_sphere_hit(const RenderScene& scene, const Hit& hit) {
+  if (hit.inst_id != kInvalidId) return false;
+  const auto* set = std::get_if<SphereSet>(&scene.top.geometries[hit.geom_id]);
+  return set && !std::holds_alternative<ImageTexture>(scene.materials[set->spheres[hit.prim_id].material].color);
+}
 
 // make_surface for four plain sphere hits at once (is_plain_sphere_hit), lane by lane in SSE2
 // registers with make_surface's operations in its order: each out[i] is make_surface(scene,
