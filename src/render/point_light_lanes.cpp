@@ -1,6 +1,7 @@
 #include "point_light_lanes.h"
 
 #include "lanes3.h"
+#include "rtpro/core/avx2_clones.h"
 #include "rtpro/render/ray_offset.h"
 
 #include <emmintrin.h>
@@ -13,6 +14,7 @@ using lanes::dot;
 using lanes::gather;
 using lanes::Lanes3;
 
+RTPRO_AVX2_CLONES
 void point_light_lanes(const PointLight& light, const SurfacePoint* const surfaces[4], const Vec3* const mirrors[4],
                        PointLightLanes& out) {
   const Lanes3 p = gather([&](int i) { return surfaces[i]->position; });

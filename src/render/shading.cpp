@@ -2,6 +2,7 @@
 
 #include "append_ray.h"
 #include "point_light_lanes.h"
+#include "rtpro/core/avx2_clones.h"
 #include "rtpro/render/beer_lambert.h"
 #include "rtpro/render/dielectric.h"
 #include "rtpro/render/light_sample.h"
@@ -85,6 +86,7 @@ constexpr std::size_t kMaxLanedLights = 8;
 // The shadow rays of every surface of the generation: surface by surface, lights in scene order.
 // Where every light is a point or directional light, four surfaces at a time take each point
 // light through point_light_lanes (the same rays, bit for bit) and are queued in the same order.
+RTPRO_AVX2_CLONES
 void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sampler, std::span<const SampleKey> keys,
                        const Workspace::Generation& generation, int depth, Workspace& ws) {
   const std::size_t light_count = scene.lights.size();
@@ -130,6 +132,7 @@ void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sample
 // Reads the hits of one generation: misses see the background (or an area light), hits become
 // shaded surfaces with their shadow rays queued, one per light or samples² per area light (lights
 // behind the surface, by either normal, need none).
+RTPRO_AVX2_CLONES
 void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler, std::span<const SampleKey> keys,
                      const Workspace::Generation& generation, int depth, std::span<SampleResult> results,
                      Workspace& ws) {
@@ -231,6 +234,7 @@ void queue_dielectric_children(const Material& m, const Workspace::ShadedSurface
 // Adds each surface's direct light (ambient, then each unshadowed light in scene order) to its
 // sample and queues the reflection and refraction rays of the next generation. Glass has no
 // diffuse part: only highlights, then its two children.
+RTPRO_AVX2_CLONES
 void light_surfaces(const RenderScene& scene, const Workspace::Generation& generation, int depth,
                     std::span<SampleResult> results, Workspace& ws) {
   ws.next.clear();

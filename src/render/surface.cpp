@@ -1,6 +1,7 @@
 #include "rtpro/render/surface.h"
 
 #include "lanes3.h"
+#include "rtpro/core/avx2_clones.h"
 #include "rtpro/core/error.h"
 
 #include <emmintrin.h>
@@ -186,6 +187,7 @@ __m128 magnitude(const Lanes3& v) {
 
 }  // namespace
 
+RTPRO_AVX2_CLONES
 void make_sphere_surfaces4(const RenderScene& scene, const Ray* const rays[4], const Hit* const hits[4],
                            SurfacePoint* const out[4], Vec3* const mirrors[4]) {
   const Sphere* spheres[4];
