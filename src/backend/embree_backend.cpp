@@ -7,6 +7,7 @@
 #include "embree_spheres.h"
 #include "ray_gate.h"
 #include "ray_packet.h"
+#include "rtpro/core/avx2_clones.h"
 
 #include <algorithm>
 #include <atomic>
@@ -226,7 +227,7 @@ class EmbreeBackend final : public Backend {
     packet.flags[lane] = 0;
   }
 
-  void intersect_packets(std::span<const Ray> rays, std::span<Hit> hits) const {
+  RTPRO_AVX2_CLONES void intersect_packets(std::span<const Ray> rays, std::span<Hit> hits) const {
     alignas(32) RTCRayHit8 packet;
     alignas(32) int valid[kPacket];
     Hit closest_spheres[kPacket];
@@ -287,7 +288,7 @@ class EmbreeBackend final : public Backend {
     }
   }
 
-  void occluded_packets(std::span<const Ray> rays, std::span<std::uint8_t> result) const {
+  RTPRO_AVX2_CLONES void occluded_packets(std::span<const Ray> rays, std::span<std::uint8_t> result) const {
     alignas(32) RTCRay8 packet;
     alignas(32) int valid[kPacket];
     std::size_t slots[kPacket];

@@ -1,5 +1,6 @@
 #include "embree_spheres.h"
 
+#include "rtpro/core/avx2_clones.h"
 #include "rtpro/geometry/sphere_intersect.h"
 #include "sphere_lanes.h"
 
@@ -44,6 +45,7 @@ std::uint32_t valid_lanes(const int* valid, unsigned n) {
 // and tfar = the closest hit so far; the hit part is undefined and is never read. A distance
 // equal to tfar wins only over an equal-distance sphere with a higher (inst, geom, prim) key —
 // which the context remembers — never over a triangle that Embree accepted at that distance.
+RTPRO_AVX2_CLONES
 void intersect_spheres(const RTCIntersectFunctionNArguments* args) {
   const Sphere& sphere = static_cast<const SphereSet*>(args->geometryUserPtr)->spheres[args->primID];
   Hit* const closest_spheres = reinterpret_cast<const EmbreeIntersectContext*>(args->context)->closest_spheres;
@@ -85,6 +87,7 @@ void intersect_spheres(const RTCIntersectFunctionNArguments* args) {
 
 // Occlusion queries arrive with tfar already lowered by one ulp (see the backend), so the closed
 // interval of intersect_sphere here is exactly the open (tnear, tfar) of Backend::occluded.
+RTPRO_AVX2_CLONES
 void occlude_spheres(const RTCOccludedFunctionNArguments* args) {
   const Sphere& sphere = static_cast<const SphereSet*>(args->geometryUserPtr)->spheres[args->primID];
   const unsigned n = args->N;

@@ -1,6 +1,7 @@
 #include "rtpro/render/tile_renderer.h"
 
 #include "append_ray.h"
+#include "rtpro/core/avx2_clones.h"
 #include "rtpro/render/camera.h"
 #include "rtpro/render/sample_dimensions.h"
 
@@ -30,17 +31,8 @@ TileRenderer::TileRenderer(const RenderScene& scene, const Backend& backend, con
     throw std::logic_error("TileRenderer: the scene has image textures but none were opened for it");
 }
 
-TileResult TileRenderer::render(std::size_t index, const PixelRegion& tile, Workspace& ws) const {
-  TileResult out;
-  out.index = index;
-  out.region = tile;
-  out.pixels.resize(tile.pixel_count() * static_cast<std::size_t>(layout_.channel_count()));
-  for (std::size_t first = 0; first < tile.pixel_count(); first += pixels_per_batch_)
-    render_pixels(tile, first, std::min(pixels_per_batch_, tile.pixel_count() - first), out, ws);
-  return out;
-}
-
 // Pixels [first_pixel, first_pixel + pixel_count) of the tile, in row-major order.
+RTPRO_AVX2_CLONES
 void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixel, std::size_t pixel_count,
                                  TileResult& out, Workspace& ws) const {
   const int spp = sampler_.samples_per_pixel();
@@ -93,6 +85,16 @@ void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixe
     }
     layout_.resolve(acc, spp, std::span<float>(out.pixels).subspan((first_pixel + p) * channels, channels));
   }
+}
+
+TileResult TileRenderer::render(std::size_t index, const PixelRegion& tile, Workspace& ws) const {
+  TileResult out;
+  out.index = index;
+  out.region = tile;
+  out.pixels.resize(tile.pixel_count() * static_cast<std::size_t>(layout_.channel_count()));
+  for (std::size_t first = 0; first < tile.pixel_count(); first += pixels_per_batch_)
+    render_pixels(tile, first, std::min(pixels_per_batch_, tile.pixel_count() - first), out, ws);
+  return out;
 }
 
 }  // namespace rtpro
