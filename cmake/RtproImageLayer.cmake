@@ -58,6 +58,12 @@ if(NOT RTPRO_SANITIZE)
   target_link_options(rtpro_image_oiio PRIVATE -Wl,--no-undefined)
 endif()
 set_target_properties(rtpro_image_oiio PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR})
+# The libraries the plugin pulls in, deepest first, for the loader to open one by one before it.
+add_custom_command(TARGET rtpro_image_oiio POST_BUILD
+                   COMMAND ${CMAKE_COMMAND} -DPLUGIN=$<TARGET_FILE:rtpro_image_oiio>
+                           -DOUTPUT=$<TARGET_FILE:rtpro_image_oiio>.libraries
+                           -P ${CMAKE_CURRENT_LIST_DIR}/list_plugin_libraries.cmake
+                   VERBATIM)
 
 add_library(rtpro_image_loader STATIC ${image_src}/image_layer.cpp)
 target_include_directories(rtpro_image_loader PRIVATE ${image_src})

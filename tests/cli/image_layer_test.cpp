@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace rtpro {
@@ -73,6 +74,49 @@ TEST(ImageLayer, WithoutThePluginImagesFailWithAClearErrorAndEverythingElseWorks
                         &out),
             1);
   EXPECT_NE(out.find("librtpro_image_oiio.so"), std::string::npos) << out;
+}
+
+// The build lists the plugin's libraries beside it; the loader opens them one by one first (a
+// matter of speed only). With the list, without it, or with a list of names that do not load, the
+// render writes the same image; the dynamic loader's report shows who opened OpenImageIO.
+TEST(ImageLayer, ThePluginsLibraryListChangesOnlyWhoOpensThem) {
+  const auto folder = test::scratch_dir();
+  const auto plugin = rtpro_executable().parent_path() / "librtpro_image_oiio.so";
+  const auto list = plugin.string() + ".libraries";
+  ASSERT_TRUE(std::filesystem::exists(list)) << "the build writes " << list;
+  std::filesystem::copy_file(rtpro_executable(), folder / "rtpro");
+  std::filesystem::copy_file(plugin, folder / "librtpro_image_oiio.so");
+  const auto scene = test::write_file("scene.yaml", kTinyScene);
+  const auto render = [&](const std::string& image) {
+    std::string out;
+    const int code = run_command("LD_DEBUG=files " + (folder / "rtpro").string() + " render -q " + scene.string() +
+                                     " -o " + (folder / image).string() + " 2>&1",
+                                 &out);
+    EXPECT_EQ(code, 0) << out.substr(0, 2000);
+    const std::size_t line = out.find("file=libOpenImageIO.so");
+    EXPECT_NE(line, std::string::npos);
+    return out.substr(line, out.find('\n', line) - line);
+  };
+  // The same pixels (the files differ in their time stamps).
+  const auto same_pixels = [&](const std::string& a, const std::string& b) {
+    std::string out;
+    EXPECT_EQ(run_command(rtpro_executable().string() + " compare " + (folder / a).string() + " " +
+                              (folder / b).string(),
+                          &out),
+              0)
+        << out;
+    return out.find("max error   0 ") != std::string::npos;
+  };
+
+  std::filesystem::copy_file(list, folder / "librtpro_image_oiio.so.libraries");
+  EXPECT_NE(render("listed.png").find("dynamically loaded by"), std::string::npos);
+  std::filesystem::remove(folder / "librtpro_image_oiio.so.libraries");
+  EXPECT_NE(render("unlisted.png").find("needed by"), std::string::npos);
+  std::ofstream(folder / "librtpro_image_oiio.so.libraries") << "libnot-a-library.so.7\n\n/nonexistent/libx.so\n";
+  EXPECT_NE(render("bogus.png").find("needed by"), std::string::npos);
+
+  EXPECT_TRUE(same_pixels("listed.png", "unlisted.png"));
+  EXPECT_TRUE(same_pixels("listed.png", "bogus.png"));
 }
 
 }  // namespace
