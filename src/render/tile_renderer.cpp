@@ -87,6 +87,7 @@ void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixe
   }
 }
 
+// Below render_pixels: Clang multiversions a function only where its definition precedes its calls.
 TileResult TileRenderer::render(std::size_t index, const PixelRegion& tile, Workspace& ws) const {
   TileResult out;
   out.index = index;
