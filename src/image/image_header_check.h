@@ -4,7 +4,9 @@
 // claiming a 2 GB attribute or chunk costs gigabytes and seconds before failing (found by
 // fuzzing `rtpro compare`'s image inputs). This walks EXR headers and PNG chunks itself and
 // refuses any size larger than the bytes left in the file, and refuses raw PNM/PFM headers that
-// declare more pixels than the file holds. Other formats pass unchecked.
+// declare more pixels than the file holds, and JPEG files whose Photoshop IPTC block (APP13) claims
+// more bytes than its segment holds (OpenImageIO's JPEG reader reads past it). Other formats pass
+// unchecked.
 //
 // OpenEXR also sizes its line buffers from the header's data window when a file is opened (a
 // block of up to 256 rows of the full width, twice for compressed files), before any pixel is

@@ -422,6 +422,40 @@ TEST(ImageIo, ATiffWhoseRowsPerStripExceedItsHeightIsReadAsOneStrip) {
   }
 }
 
+TEST(ImageIo, AJpegWhosePhotoshopBlockClaimsMoreThanItsSegmentIsRefused) {
+  // OpenImageIO 2.4 reads a Photoshop IPTC block by the size it states: a fuzz input made it read
+  // 111 bytes past the segment while opening. Without the header check this test fails on the
+  // first EXPECT_THROW (the library reads past its buffer and the image comes back).
+  const auto folder = test::scratch_dir();
+  const Image image = varied_image(5, 4);
+  write_with_oiio(folder / "caption.jpg", image, OIIO::TypeDesc::UINT8, [](OIIO::ImageSpec& spec) {
+    spec.attribute("ImageDescription", "a caption that goes into the IPTC block of the JPEG file");
+  });
+  EXPECT_EQ(read_image(folder / "caption.jpg").width, 5);
+  const std::string written = file_bytes(folder / "caption.jpg");
+  const std::size_t resource = written.find(std::string("8BIM\x04\x04", 6));
+  ASSERT_NE(resource, std::string::npos) << "OpenImageIO wrote no IPTC block";
+  const std::size_t segment = written.rfind("\xff\xed", resource);
+  ASSERT_NE(segment, std::string::npos);
+
+  std::string claims_more = written;  // the block's own size: 0xffff bytes of records
+  claims_more[resource + 10] = '\xff';
+  claims_more[resource + 11] = '\xff';
+  std::ofstream(folder / "claims_more.jpg", std::ios::binary) << claims_more;
+  EXPECT_THROW(read_image(folder / "claims_more.jpg"), InputError);
+
+  std::string cut_short = written;  // the segment ends inside the block's header (16 bytes of data)
+  cut_short[segment + 2] = 0;
+  cut_short[segment + 3] = 18;
+  std::ofstream(folder / "cut_short.jpg", std::ios::binary) << cut_short;
+  try {
+    read_image(folder / "cut_short.jpg");
+    ADD_FAILURE() << "a block cut short was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("APP13"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ImageIo, PerChannelTypesAndAnOffsetDataWindowAreReadInPlace) {
   const auto folder = test::scratch_dir();
   Image image = varied_image(9, 7, {"R", "G", "B", "Z"});
