@@ -364,19 +364,31 @@ TEST(ImageIo, TiledFilesReadAsTheirScanlineTwins) {
   EXPECT_EQ(read_image(folder / "tiled.tif").data, image.data);
 }
 
+// An RGB image whose value i is ((i * step) mod 256) / 255, exact in 8 bits.
+Image ramp_image(int width, int height, std::size_t step) {
+  Image image(width, height, {"R", "G", "B"});
+  for (std::size_t i = 0; i < image.data.size(); ++i) image.data[i] = static_cast<float>((i * step) % 256) / 255.0f;
+  return image;
+}
+
+// `image` as an 8-bit deflate TIFF in strips of `rows_per_strip`, written by OpenImageIO; the
+// file's bytes, for a test to alter.
+std::string deflate_tiff_bytes(const fs::path& file, const Image& image, int rows_per_strip) {
+  write_with_oiio(file, image, OIIO::TypeDesc::UINT8, [&](OIIO::ImageSpec& spec) {
+    spec.attribute("compression", "zip");
+    spec.attribute("tiff:RowsPerStrip", rows_per_strip);
+  });
+  return file_bytes(file);
+}
+
 TEST(ImageIo, AMinIsWhiteRgbTiffInDeflateStripsIsReadInvertedAndWithinItsBuffer) {
   // OpenImageIO 2.4 inverts nchannels times too many values on whole deflate strips of a MinIsWhite
   // TIFF, up to two strips past the caller's buffer for RGB (a fuzz finding: the overrun corrupted
   // the heap). read_image takes such a file one scanline at a time, and the guard after its buffer
   // turns an overrun into an error: without the first, this test fails on the second.
   const auto folder = test::scratch_dir();
-  Image image(8, 64, {"R", "G", "B"});
-  for (std::size_t i = 0; i < image.data.size(); ++i) image.data[i] = static_cast<float>((i * 37) % 256) / 255.0f;
-  write_with_oiio(folder / "rgb.tif", image, OIIO::TypeDesc::UINT8, [](OIIO::ImageSpec& spec) {
-    spec.attribute("compression", "zip");
-    spec.attribute("tiff:RowsPerStrip", 16);
-  });
-  std::string bytes = file_bytes(folder / "rgb.tif");
+  const Image image = ramp_image(8, 64, 37);
+  std::string bytes = deflate_tiff_bytes(folder / "rgb.tif", image, 16);
   // The PhotometricInterpretation entry (tag 262, SHORT, count 1, RGB = 2) becomes MinIsWhite (0).
   const std::string rgb_entry("\x06\x01\x03\x00\x01\x00\x00\x00\x02\x00", 10);
   const std::size_t entry = bytes.find(rgb_entry);
@@ -398,13 +410,8 @@ TEST(ImageIo, ATiffWhoseRowsPerStripExceedItsHeightIsReadAsOneStrip) {
   // fuzz input declaring 704,662,861 rows per strip asked for 5.6 PB. read_image takes such a file
   // one scanline at a time; without that this test fails (std::bad_alloc, or an ASan abort).
   const auto folder = test::scratch_dir();
-  Image image(8, 20, {"R", "G", "B"});
-  for (std::size_t i = 0; i < image.data.size(); ++i) image.data[i] = static_cast<float>((i * 29) % 256) / 255.0f;
-  write_with_oiio(folder / "one_strip.tif", image, OIIO::TypeDesc::UINT8, [](OIIO::ImageSpec& spec) {
-    spec.attribute("compression", "zip");
-    spec.attribute("tiff:RowsPerStrip", 20);
-  });
-  const std::string written = file_bytes(folder / "one_strip.tif");
+  const Image image = ramp_image(8, 20, 29);
+  const std::string written = deflate_tiff_bytes(folder / "one_strip.tif", image, 20);
   // The RowsPerStrip entry (tag 278, SHORT, count 1, 20) becomes a LONG of the declared value.
   const std::string rows_entry("\x16\x01\x03\x00\x01\x00\x00\x00\x14\x00", 10);
   const std::size_t entry = written.find(rows_entry);
