@@ -60,14 +60,15 @@ std::uint64_t StratifiedSampler::sample_bits(std::uint64_t pixel_key, int sample
   return hash_combine(hash_combine(seed_, pixel_key), static_cast<std::uint64_t>(sample_index));
 }
 
-PixelOffset StratifiedSampler::pixel_offset(std::uint64_t pixel_key, int sample_index) const {
-  const std::uint64_t bits = sample_bits(pixel_key, sample_index);
-  const float jitter_x = to_unit_float(bits);
-  const float jitter_y = to_unit_float(bits << 24);
-  const int sx = sample_index % grid_.columns;
-  const int sy = sample_index / grid_.columns;
+PixelOffset StratifiedSampler::jittered_in_stratum(std::uint64_t bits, int sx, int sy) const {
   // (s + jitter) / n stays below 1 because jitter <= 1 − 2⁻²⁴.
-  return {(static_cast<float>(sx) + jitter_x) * inv_columns_, (static_cast<float>(sy) + jitter_y) * inv_rows_};
+  return {(static_cast<float>(sx) + to_unit_float(bits)) * inv_columns_,
+          (static_cast<float>(sy) + to_unit_float(bits << 24)) * inv_rows_};
+}
+
+PixelOffset StratifiedSampler::pixel_offset(std::uint64_t pixel_key, int sample_index) const {
+  return jittered_in_stratum(sample_bits(pixel_key, sample_index), sample_index % grid_.columns,
+                             sample_index / grid_.columns);
 }
 
 void StratifiedSampler::pixel_offsets(std::uint64_t pixel_key, PixelOffset* out) const {
@@ -75,9 +76,8 @@ void StratifiedSampler::pixel_offsets(std::uint64_t pixel_key, PixelOffset* out)
   int sample_index = 0;
   for (int sy = 0; sy < grid_.rows; ++sy)
     for (int sx = 0; sx < grid_.columns; ++sx, ++sample_index) {
-      const std::uint64_t bits = hash_combine(pixel_bits, static_cast<std::uint64_t>(sample_index));
-      out[sample_index] = {(static_cast<float>(sx) + to_unit_float(bits)) * inv_columns_,
-                           (static_cast<float>(sy) + to_unit_float(bits << 24)) * inv_rows_};
+      out[sample_index] =
+          jittered_in_stratum(hash_combine(pixel_bits, static_cast<std::uint64_t>(sample_index)), sx, sy);
     }
 }
 

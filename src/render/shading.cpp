@@ -168,6 +168,13 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
     for (unsigned k = 0; k < 4; ++k) complete(ws.surfaces[waiting[k]]);
     waiting_count = 0;
   };
+  // Any other hit, and plain sphere hits left over from the last four: one at a time.
+  auto make_one_surface = [&](Workspace::ShadedSurface& s) {
+    const Ray& ray = generation.rays[s.task];
+    make_surface(scene, ray, ws.hits[s.task], s.point);
+    s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
+    complete(s);
+  };
   for (std::uint32_t i = 0; i < generation.tasks.size(); ++i) {
     const Workspace::RayTask& task = generation.tasks[i];
     const Hit& hit = ws.hits[i];
@@ -190,17 +197,9 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
       if (waiting_count == 4) make_waiting_surfaces();
       continue;
     }
-    make_surface(scene, ray, hit, s.point);
-    s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
-    complete(s);
+    make_one_surface(s);
   }
-  for (unsigned k = 0; k < waiting_count; ++k) {
-    Workspace::ShadedSurface& s = ws.surfaces[waiting[k]];
-    const Ray& ray = generation.rays[s.task];
-    make_surface(scene, ray, ws.hits[s.task], s.point);
-    s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
-    complete(s);
-  }
+  for (unsigned k = 0; k < waiting_count; ++k) make_one_surface(ws.surfaces[waiting[k]]);
   queue_shadow_rays(scene, sampler, keys, generation, depth, ws);
 }
 

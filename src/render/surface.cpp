@@ -81,10 +81,6 @@ struct LocalSurface {
   throw RuntimeError("hit record names an instance as its primitive");
 }
 
-bool has_image_texture(const RenderScene& scene, std::uint32_t material) {
-  return std::holds_alternative<ImageTexture>(scene.materials[material].color);
-}
-
 // Texture coordinates of the hit, from the object-space surface (before any instance transform).
 // `object_normal` is the local surface's geometric normal, passed by value so that the local
 // surface's address never escapes make_surface and its fields stay in registers.

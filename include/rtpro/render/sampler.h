@@ -64,6 +64,8 @@ class StratifiedSampler {
   };
   PermutedSample permuted(std::uint64_t pixel_key, int sample_index, int dimension) const;
   std::uint64_t sample_bits(std::uint64_t pixel_key, int sample_index) const;
+  // Stratum (sx, sy) of the pixel grid, jittered by the top bits of `bits` (x) and the next (y).
+  PixelOffset jittered_in_stratum(std::uint64_t bits, int sx, int sy) const;
 
   StrataGrid grid_;
   float inv_columns_, inv_rows_;

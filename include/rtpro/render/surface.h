@@ -27,12 +27,17 @@ struct SurfacePoint {
 // caller's record in place spares the copy of a returned one, which stalled on store forwarding.
 void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfacePoint& out);
 
+// Whether `material` takes its colour from an image (and so needs texture coordinates).
+inline bool has_image_texture(const RenderScene& scene, std::uint32_t material) {
+  return std::holds_alternative<ImageTexture>(scene.materials[material].color);
+}
+
 // Whether make_sphere_surfaces4 may take `hit`: a sphere of the top level (not instanced) whose
 // material has no image texture (no texture coordinates to work out). Inline: it runs per hit.
 inline bool is_plain_sphere_hit(const RenderScene& scene, const Hit& hit) {
   if (hit.inst_id != kInvalidId) return false;
   const auto* set = std::get_if<SphereSet>(&scene.top.geometries[hit.geom_id]);
-  return set && !std::holds_alternative<ImageTexture>(scene.materials[set->spheres[hit.prim_id].material].color);
+  return set && !has_image_texture(scene, set->spheres[hit.prim_id].material);
 }
 
 // make_surface for four plain sphere hits at once (is_plain_sphere_hit), lane by lane in SSE2
