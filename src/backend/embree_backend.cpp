@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace rtpro {
 
@@ -140,28 +141,7 @@ class EmbreeBackend final : public Backend {
         if (!intersect(rays[i], hits[i])) hits[i] = Hit{};
       return;
     }
-    constexpr std::size_t kChunk = 64;
-    alignas(16) RTCRayHit queries[kChunk];
-    Hit closest_spheres[kChunk];
-    std::size_t slots[kChunk];
-    for (std::size_t begin = 0; begin < rays.size(); begin += kChunk) {
-      const std::size_t end = std::min(rays.size(), begin + kChunk);
-      unsigned count = 0;
-      for (std::size_t i = begin; i < end; ++i) {
-        hits[i] = Hit{};
-        if (!gate_.admit(rays[i])) continue;
-        closest_spheres[count] = no_sphere_yet(rays[i]);
-        to_embree(rays[i], count, queries[count]);
-        slots[count++] = i;
-      }
-      if (count == 0) continue;
-      EmbreeIntersectContext context;
-      rtcInitIntersectContext(&context.base);
-      context.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-      context.closest_spheres = closest_spheres;
-      rtcIntersect1M(scenes_.top.get(), &context.base, queries, count, sizeof(RTCRayHit));
-      for (unsigned k = 0; k < count; ++k) from_embree(queries[k], hits[slots[k]]);
-    }
+    intersect_stream(rays, hits);
   }
 
   void occluded(std::span<const Ray> rays, std::span<std::uint8_t> result, RayCoherence coherence) const override {
@@ -173,27 +153,7 @@ class EmbreeBackend final : public Backend {
       for (std::size_t i = 0; i < rays.size(); ++i) result[i] = occluded(rays[i]) ? 1 : 0;
       return;
     }
-    constexpr std::size_t kChunk = 64;
-    alignas(16) RTCRay queries[kChunk];
-    std::size_t slots[kChunk];
-    for (std::size_t begin = 0; begin < rays.size(); begin += kChunk) {
-      const std::size_t end = std::min(rays.size(), begin + kChunk);
-      unsigned count = 0;
-      for (std::size_t i = begin; i < end; ++i) {
-        result[i] = 0;
-        if (!gate_.admit(rays[i])) continue;
-        const float tfar = one_step_towards_zero(rays[i].tfar);
-        if (!(tfar > rays[i].tnear)) continue;
-        to_embree(rays[i], tfar, count, queries[count]);
-        slots[count++] = i;
-      }
-      if (count == 0) continue;
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
-      context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-      rtcOccluded1M(scenes_.top.get(), &context, queries, count, sizeof(RTCRay));
-      for (unsigned k = 0; k < count; ++k) result[slots[k]] = queries[k].tfar < 0.0f ? 1 : 0;
-    }
+    occluded_stream(rays, result);
   }
 
   // Embree's triangles accept t == tfar; asking for (tnear, previous float below tfar] instead
@@ -225,6 +185,125 @@ class EmbreeBackend final : public Backend {
     packet.mask[lane] = 0xFFFFFFFFu;
     packet.id[lane] = lane;
     packet.flags[lane] = 0;
+  }
+
+  // A coherent stream goes to Embree as packets of eight in its own layout (rtcIntersectNM with
+  // N = 8): with Embree's kernels at AVX2 that is its stream traversal's native width, so it
+  // traces the packets in place, 32 rays at a time, where an array of single rays is copied into
+  // packets and back. Lanes the gate refuses stay inactive (tnear 0, tfar -inf).
+  static constexpr unsigned kStreamPackets = 4;
+
+  template <typename Packet>
+  static void clear_stream_lanes(Packet (&packets)[kStreamPackets], unsigned from) {
+    for (unsigned k = from; k < kStreamPackets * kPacket; ++k) {
+      auto& ray = ray_of(packets[k / kPacket]);
+      const unsigned lane = k % kPacket;
+      ray.org_x[lane] = ray.org_y[lane] = ray.org_z[lane] = 0.0f;
+      ray.dir_x[lane] = ray.dir_y[lane] = 0.0f;
+      ray.dir_z[lane] = 1.0f;
+      ray.tnear[lane] = 0.0f;
+      ray.tfar[lane] = -std::numeric_limits<float>::infinity();
+      start_packet_lane(ray, lane);
+    }
+  }
+  static RTCRay8& ray_of(RTCRay8& packet) { return packet; }
+  static RTCRay8& ray_of(RTCRayHit8& packet) { return packet.ray; }
+
+  // Rays [first, first + 32) (fewer at the end) into the stream's lanes; tfar through `far`.
+  template <typename Packet, typename Far>
+  unsigned load_stream(std::span<const Ray> rays, std::size_t first, Packet (&packets)[kStreamPackets], Far far) const {
+    const unsigned count = static_cast<unsigned>(std::min<std::size_t>(rays.size() - first, kStreamPackets * kPacket));
+    for (unsigned k = 0; k < count;) {
+      RTCRay8& packet = ray_of(packets[k / kPacket]);
+      if (wide_loads_ && k % kPacket == 0 && count - k >= kPacket &&
+          load_traceable_lanes(&rays[first + k], {packet.org_x, packet.org_y, packet.org_z, packet.tnear, packet.dir_x,
+                                                  packet.dir_y, packet.dir_z, packet.tfar})) {
+        for (unsigned lane = 0; lane < kPacket; ++lane) {
+          packet.tfar[lane] = far(packet.tfar[lane], packet.tnear[lane]);
+          start_packet_lane(packet, lane);
+          packet.id[lane] = k + lane;
+        }
+        k += kPacket;
+        continue;
+      }
+      const unsigned lane = k % kPacket;
+      const Ray& ray = rays[first + k];
+      const bool admitted = gate_.admit(ray);
+      packet.org_x[lane] = admitted ? ray.org.x : 0.0f;
+      packet.org_y[lane] = admitted ? ray.org.y : 0.0f;
+      packet.org_z[lane] = admitted ? ray.org.z : 0.0f;
+      packet.dir_x[lane] = admitted ? ray.dir.x : 0.0f;
+      packet.dir_y[lane] = admitted ? ray.dir.y : 0.0f;
+      packet.dir_z[lane] = admitted ? ray.dir.z : 1.0f;
+      packet.tnear[lane] = admitted ? ray.tnear : 0.0f;
+      packet.tfar[lane] = admitted ? far(ray.tfar, ray.tnear) : -std::numeric_limits<float>::infinity();
+      start_packet_lane(packet, lane);
+      packet.id[lane] = k;
+      ++k;
+    }
+    clear_stream_lanes(packets, count);
+    return count;
+  }
+
+  RTPRO_AVX2_CLONES void intersect_stream(std::span<const Ray> rays, std::span<Hit> hits) const {
+    alignas(32) RTCRayHit8 packets[kStreamPackets];
+    Hit closest_spheres[kStreamPackets * kPacket];
+    for (std::size_t first = 0; first < rays.size(); first += kStreamPackets * kPacket) {
+      const unsigned count = load_stream(rays, first, packets, [](float tfar, float) { return tfar; });
+      for (unsigned k = 0; k < kStreamPackets * kPacket; ++k) {
+        RTCRayHit8& packet = packets[k / kPacket];
+        const unsigned lane = k % kPacket;
+        closest_spheres[k] = Hit{};
+        closest_spheres[k].t = packet.ray.tfar[lane];
+        packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+        packet.hit.primID[lane] = RTC_INVALID_GEOMETRY_ID;
+        packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+      }
+      EmbreeIntersectContext context;
+      rtcInitIntersectContext(&context.base);
+      context.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+      context.closest_spheres = closest_spheres;
+      rtcIntersectNM(scenes_.top.get(), &context.base, reinterpret_cast<RTCRayHitN*>(packets), kPacket,
+                     kStreamPackets, sizeof(RTCRayHit8));
+      for (unsigned k = 0; k < count; ++k) {
+        const RTCRayHit8& packet = packets[k / kPacket];
+        const unsigned lane = k % kPacket;
+        Hit& hit = hits[first + k];
+        hit = Hit{};
+        if (packet.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID) continue;
+        hit.t = packet.ray.tfar[lane];
+        hit.u = packet.hit.u[lane];
+        hit.v = packet.hit.v[lane];
+        hit.geom_id = packet.hit.geomID[lane];
+        hit.prim_id = packet.hit.primID[lane];
+        hit.inst_id = packet.hit.instID[0][lane];
+      }
+    }
+  }
+
+  // A segment too short for the open interval (tnear, tfar) is no query: its lane is left
+  // inactive, and the ray unoccluded.
+  RTPRO_AVX2_CLONES void occluded_stream(std::span<const Ray> rays, std::span<std::uint8_t> result) const {
+    alignas(32) RTCRay8 packets[kStreamPackets];
+    for (std::size_t first = 0; first < rays.size(); first += kStreamPackets * kPacket) {
+      const unsigned count = load_stream(rays, first, packets, [](float tfar, float tnear) {
+        const float below = one_step_towards_zero(tfar);
+        return below > tnear ? below : -std::numeric_limits<float>::infinity();
+      });
+      // Embree marks an occluded ray with tfar = -inf, as inactive lanes start.
+      std::uint32_t queried = 0;
+      for (unsigned k = 0; k < count; ++k)
+        if (packets[k / kPacket].tfar[k % kPacket] >= 0.0f) queried |= 1u << k;
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+      rtcOccludedNM(scenes_.top.get(), &context, reinterpret_cast<RTCRayN*>(packets), kPacket, kStreamPackets,
+                    sizeof(RTCRay8));
+      for (unsigned k = 0; k < count; ++k) {
+        const bool occluded = (queried >> k & 1u) != 0 && packets[k / kPacket].tfar[k % kPacket] < 0.0f;
+        result[first + k] = occluded ? 1 : 0;
+      }
+    }
   }
 
   RTPRO_AVX2_CLONES void intersect_packets(std::span<const Ray> rays, std::span<Hit> hits) const {
