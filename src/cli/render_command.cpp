@@ -217,13 +217,14 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   stats.load_seconds = seconds_since(start);
 
   // OpenImageIO takes about half a second to load: do it while the scene renders. Not earlier:
-  // its hundreds of mmap calls slow the page faults of a large scene file's parse.
+  // its hundreds of mmap calls slow the page faults of a large scene file's parse. An EXR is
+  // written without it (image textures load it when the render scene is made).
   start_tbb_workers(threads);
   // Rank 0 of a job loads it too, but creates its render thread first: a thread created while a
   // dlopen runs waits for it (prestarted_thread.h). The other ranks write no image.
   std::optional<PrestartedThread> render_thread;
   if (job && leader) render_thread.emplace();
-  if (leader) start_loading_image_layer();
+  if (leader && writing_needs_image_layer(output.file())) start_loading_image_layer();
 
   BackendOptions backend_options = o.backend_options;
   backend_options.threads = threads;

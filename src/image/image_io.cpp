@@ -3,6 +3,8 @@
 #include "rtpro/image/atomic_file_replacement.h"
 
 #include "display_encoding.h"
+#include "exr_output.h"
+#include "image_metadata.h"
 #include "pixel_encoding.h"
 #include "image_format_sniff.h"
 #include "image_header_check.h"
@@ -17,7 +19,6 @@
 #include <cctype>
 #include <cstdint>
 #include <cstring>
-#include <ctime>
 #include <memory>
 #include <string_view>
 #include <variant>
@@ -52,33 +53,6 @@ std::unique_ptr<OIIO::ImageOutput> writer_for(const std::filesystem::path& file)
   return output;
 }
 
-void require_writable_image(const std::filesystem::path& file, const Image& image) {
-  const std::size_t expected = static_cast<std::size_t>(std::max(image.width, 0)) *
-                               static_cast<std::size_t>(std::max(image.height, 0)) * image.channels.size();
-  if (image.width <= 0 || image.height <= 0 || image.channels.empty() || image.data.size() != expected)
-    throw RuntimeError("cannot write " + file.string() + ": the image is empty or inconsistent (" +
-                       std::to_string(image.width) + "x" + std::to_string(image.height) + ", " +
-                       std::to_string(image.channels.size()) + " channels, " + std::to_string(image.data.size()) +
-                       " values)");
-}
-
-std::string current_date_time() {
-  const std::time_t now = std::time(nullptr);
-  std::tm local{};
-  localtime_r(&now, &local);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &local);  // the TIFF/EXIF DateTime form
-  return text;
-}
-
-void add_metadata(OIIO::ImageSpec& spec, const ImageWriteOptions& options, const std::string& description) {
-  // Defaults first: ImageSpec::attribute replaces, so the caller's entries win.
-  spec.attribute("Software", "rtpro " RTPRO_VERSION);
-  spec.attribute("ImageDescription", description);
-  spec.attribute("DateTime", current_date_time());
-  for (const auto& [key, value] : options.metadata) spec.attribute(key, value);
-}
-
 // All channels, named as given, when the format takes any number of them; else R, G, B.
 std::vector<float> scene_linear_channels(const Image& image, int channel_count) {
   if (channel_count == image.channel_count()) return image.data;
@@ -101,7 +75,8 @@ void describe_scene_linear(OIIO::ImageSpec& spec, const Image& image, bool any_c
   spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), kRec709Chromaticities);
   spec.attribute("rtpro:colorspace", "Linear Rec.709 (sRGB)");
   spec.attribute("compression", "zip");
-  add_metadata(spec, options, "rtpro image, scene-linear Rec.709 primaries");
+  for (const auto& [key, value] : image_metadata("rtpro image, scene-linear Rec.709 primaries", options))
+    spec.attribute(key, value);
 }
 
 PixelBuffer encode_display_referred(OIIO::ImageSpec& spec, const Image& image, PixelEncoding encoding,
@@ -116,9 +91,9 @@ PixelBuffer encode_display_referred(OIIO::ImageSpec& spec, const Image& image, P
   // Without the tag OpenImageIO's PNG writer may declare the pixels linear (gAMA 1.0); other
   // displays' encodings have no OpenImageIO name, and untagged files are read as sRGB anyway.
   if (display_lowercase.find("srgb") != std::string::npos) spec.attribute("oiio:ColorSpace", "sRGB");
-  add_metadata(spec, options,
-               "rtpro image, display-referred: OpenColorIO display \"" + transform.display() + "\", view \"" +
-                   transform.view() + "\" (config: " + config.source() + ")");
+  const std::string description = "rtpro image, display-referred: OpenColorIO display \"" + transform.display() +
+                                  "\", view \"" + transform.view() + "\" (config: " + config.source() + ")";
+  for (const auto& [key, value] : image_metadata(description, options)) spec.attribute(key, value);
   if (sixteen_bits) return encode_for_display_16bit(image, transform);
   return encode_for_display_8bit(image, transform);
 }
@@ -300,6 +275,10 @@ class NativeBands {
 }  // namespace
 
 void write_image(const std::filesystem::path& file, const Image& image, const ImageWriteOptions& options) {
+  if (is_exr_file(file)) {
+    write_exr(file, image, options);
+    return;
+  }
   const bool any_channel_count = writer_for(file)->supports("nchannels");
   require_writable_image(file, image);
   OIIO::ImageSpec spec;

@@ -40,7 +40,9 @@ TEST(ImageLayer, OnlyReadingOrWritingAnImageLoadsOpenImageIo) {
   EXPECT_FALSE(loads_openimageio("render " + scene.string() + " -o " + (folder / "x.unknownformat").string(), 2));
   EXPECT_FALSE(loads_openimageio("render " + scene.string() + " -o " + (folder / "x.png").string() + " --view nope", 2));
   EXPECT_FALSE(loads_openimageio("render " + scene.string() + " --no-such-flag", 2));
-  // The control: the same check sees the load when an image is written.
+  // An EXR is written through OpenEXR alone.
+  EXPECT_FALSE(loads_openimageio("render -q " + scene.string() + " -o " + (folder / "x.exr").string(), 0));
+  // The control: the same check sees the load when an image is written through OpenImageIO.
   EXPECT_TRUE(loads_openimageio("render -q " + scene.string() + " -o " + (folder / "x.png").string(), 0));
 }
 
@@ -69,6 +71,10 @@ TEST(ImageLayer, WithoutThePluginImagesFailWithAClearErrorAndEverythingElseWorks
             1);
   EXPECT_NE(out.find("librtpro_image_oiio.so"), std::string::npos) << out;
   EXPECT_FALSE(std::filesystem::exists(folder / "x.png"));
+  EXPECT_EQ(run_command(lonely.string() + " render -q " + scene.string() + " -o " + (folder / "x.exr").string(), &out),
+            0)
+      << out;
+  EXPECT_TRUE(std::filesystem::exists(folder / "x.exr"));
   EXPECT_EQ(run_command(lonely.string() + " compare " + (folder / "a.exr").string() + " " +
                             (folder / "b.exr").string(),
                         &out),
