@@ -24,12 +24,13 @@ std::vector<std::pair<std::string, std::string>> image_metadata(std::string desc
                                                                 const ImageWriteOptions& options) {
   std::vector<std::pair<std::string, std::string>> entries = {
       {"Software", "rtpro " RTPRO_VERSION}, {"ImageDescription", std::move(description)}, {"DateTime", current_date_time()}};
-  for (const auto& [key, value] : options.metadata) {
-    const auto same = std::find_if(entries.begin(), entries.end(), [&](const auto& entry) { return entry.first == key; });
+  for (const auto& given : options.metadata) {
+    const auto same =
+        std::find_if(entries.begin(), entries.end(), [&](const auto& entry) { return entry.first == given.first; });
     if (same != entries.end())
-      same->second = value;
+      same->second = given.second;
     else
-      entries.emplace_back(key, value);
+      entries.push_back(given);
   }
   return entries;
 }
