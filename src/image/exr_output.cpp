@@ -12,6 +12,7 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfThreading.h>
 
 #include <algorithm>
 #include <cctype>
@@ -91,10 +92,16 @@ std::string encode_exr(const std::filesystem::path& file, const Image& image, co
       frame.insert(image.channels[c],
                    Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(image.data.data() + c)),
                               sizeof(float) * channels, sizeof(float) * channels * static_cast<std::size_t>(image.width)));
+    // Line blocks compressed on every core, as OpenImageIO has OpenEXR do: OpenEXR's own thread
+    // pool, started once (an OutputFile's thread count only sizes its buffers).
+    static const int threads = [] {
+      const int count = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+      Imf::setGlobalThreadCount(count);
+      return count;
+    }();
     MemoryStream stream;
     {
-      // Line blocks compressed on every core, as OpenImageIO has OpenEXR do.
-      Imf::OutputFile output(stream, header, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+      Imf::OutputFile output(stream, header, threads);
       output.setFrameBuffer(frame);
       output.writePixels(image.height);
     }
