@@ -149,26 +149,30 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
       results[generation.tasks[s.task].sample].primary = {true, s.albedo, s.point.shading_normal,
                                                           ws.hits[s.task].t * length(ray.dir), s.point.object_id};
   };
-  // Plain sphere hits wait in fours for make_sphere_surfaces4 (the same surfaces, bit for bit).
-  std::uint32_t waiting[4];
-  unsigned waiting_count = 0;
-  auto make_waiting_surfaces = [&] {
+  // Plain sphere hits and plain triangle hits wait in fours for make_sphere_surfaces4 and
+  // make_triangle_surfaces4 (the same surfaces, bit for bit).
+  struct Waiting {
+    std::uint32_t surfaces[4];
+    unsigned count = 0;
+  };
+  Waiting spheres, triangles;
+  auto make_waiting_surfaces = [&](Waiting& waiting, auto make_four) {
     const Ray* rays[4];
     const Hit* hits[4];
     SurfacePoint* points[4];
     Vec3* mirrors[4];
     for (unsigned k = 0; k < 4; ++k) {
-      Workspace::ShadedSurface& s = ws.surfaces[waiting[k]];
+      Workspace::ShadedSurface& s = ws.surfaces[waiting.surfaces[k]];
       rays[k] = &generation.rays[s.task];
       hits[k] = &ws.hits[s.task];
       points[k] = &s.point;
       mirrors[k] = &s.mirror;
     }
-    make_sphere_surfaces4(scene, rays, hits, points, mirrors);
-    for (unsigned k = 0; k < 4; ++k) complete(ws.surfaces[waiting[k]]);
-    waiting_count = 0;
+    make_four(scene, rays, hits, points, mirrors);
+    for (unsigned k = 0; k < 4; ++k) complete(ws.surfaces[waiting.surfaces[k]]);
+    waiting.count = 0;
   };
-  // Any other hit, and plain sphere hits left over from the last four: one at a time.
+  // Any other hit, and plain hits left over from the last four: one at a time.
   auto make_one_surface = [&](Workspace::ShadedSurface& s) {
     const Ray& ray = generation.rays[s.task];
     make_surface(scene, ray, ws.hits[s.task], s.point);
@@ -192,14 +196,21 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
     s.task = i;
     // Absorbed over the path inside glass (t is in units of the ray's direction length).
     s.weight = through_medium(scene, task, ray, hit.t);
+    const std::uint32_t index = static_cast<std::uint32_t>(ws.surfaces.size() - 1);
     if (is_plain_sphere_hit(scene, hit)) {
-      waiting[waiting_count++] = static_cast<std::uint32_t>(ws.surfaces.size() - 1);
-      if (waiting_count == 4) make_waiting_surfaces();
+      spheres.surfaces[spheres.count++] = index;
+      if (spheres.count == 4) make_waiting_surfaces(spheres, [](auto&&... four) { make_sphere_surfaces4(four...); });
+      continue;
+    }
+    if (is_plain_triangle_hit(scene, hit)) {
+      triangles.surfaces[triangles.count++] = index;
+      if (triangles.count == 4) make_waiting_surfaces(triangles, [](auto&&... four) { make_triangle_surfaces4(four...); });
       continue;
     }
     make_one_surface(s);
   }
-  for (unsigned k = 0; k < waiting_count; ++k) make_one_surface(ws.surfaces[waiting[k]]);
+  for (const Waiting* waiting : {&spheres, &triangles})
+    for (unsigned k = 0; k < waiting->count; ++k) make_one_surface(ws.surfaces[waiting->surfaces[k]]);
   queue_shadow_rays(scene, sampler, keys, generation, depth, ws);
 }
 

@@ -1,5 +1,5 @@
-// Surface reconstruction four sphere hits at a time must be make_surface's, bit for bit, and its
-// mirror directions the scalar reflect's.
+// Surface reconstruction four sphere or triangle hits at a time must be make_surface's, bit for
+// bit, and its mirror directions the scalar reflect's.
 #include "rtpro/render/surface.h"
 
 #include "rtpro/backend/backend.h"
@@ -82,7 +82,91 @@ void expect_four_at_a_time_is_make_surface() {
   }
 }
 
+// Every field of four surfaces made at once against make_surface and reflect, one hit at a time.
+template <typename MakeFour>
+void expect_same_surfaces(const RenderScene& scene, const std::vector<Ray>& rays, const std::vector<Hit>& hits,
+                          MakeFour make_four, int& back_faces) {
+  for (std::size_t first = 0; first + 4 <= hits.size(); first += 4) {
+    const Ray* ray_ptrs[4];
+    const Hit* hit_ptrs[4];
+    SurfacePoint four[4];
+    SurfacePoint* out[4];
+    Vec3 four_mirrors[4];
+    Vec3* mirrors[4];
+    for (int k = 0; k < 4; ++k) {
+      ray_ptrs[k] = &rays[first + k];
+      hit_ptrs[k] = &hits[first + k];
+      out[k] = &four[k];
+      mirrors[k] = &four_mirrors[k];
+    }
+    make_four(scene, ray_ptrs, hit_ptrs, out, mirrors);
+    for (int k = 0; k < 4; ++k) {
+      const int hit = static_cast<int>(first) + k;
+      const SurfacePoint one = make_surface(scene, rays[first + k], hits[first + k]);
+      expect_same_vector(four[k].position, one.position, "position", hit);
+      expect_same_vector(four[k].geometric_normal, one.geometric_normal, "geometric normal", hit);
+      expect_same_vector(four[k].shading_normal, one.shading_normal, "shading normal", hit);
+      ASSERT_EQ(four[k].front_face, one.front_face) << hit;
+      ASSERT_EQ(bits(four[k].position_error), bits(one.position_error)) << hit;
+      ASSERT_EQ(four[k].material, one.material) << hit;
+      ASSERT_EQ(four[k].object_id, one.object_id) << hit;
+      ASSERT_EQ(bits(four[k].tex_u), bits(one.tex_u));
+      ASSERT_EQ(bits(four[k].tex_v), bits(one.tex_v));
+      expect_same_vector(four_mirrors[k], reflect(normalize(rays[first + k].dir), one.shading_normal), "mirror", hit);
+      back_faces += !one.front_face;
+    }
+  }
+}
+
+// Hit records on two top-level meshes, one flat and one smooth with per-triangle materials,
+// degenerate triangles (no normal: the fallback to the ray) and vertex normals that are zero or
+// face away, at several scales. The records are drawn, not traced: make_surface takes any
+// barycentrics, so the edge cases come as often as wanted.
+void expect_four_triangle_hits_at_a_time_are_make_surface() {
+  for (const float extent : {0.01f, 1.0f, 1000.0f}) {
+    std::mt19937 rng(5);
+    RenderScene scene = test::empty_scene();
+    TriangleMesh flat = test::random_triangles(rng, 200, 4.0f * extent);
+    flat.material = 1;
+    TriangleMesh smooth = test::random_triangles(rng, 200, 4.0f * extent);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    for (std::size_t i = 0; i < smooth.vertices.size(); ++i)
+      smooth.normals.push_back(i % 7 == 0 ? Vec3() : Vec3(unit(rng), unit(rng), unit(rng)));
+    for (std::size_t t = 0; t < smooth.triangles.size(); ++t) {
+      smooth.triangle_materials.push_back(static_cast<std::uint32_t>(t % 2));
+      if (t % 11 == 0) smooth.triangles[t].v1 = smooth.triangles[t].v0;  // no area, no normal
+    }
+    scene.top.geometries.emplace_back(std::move(flat));
+    scene.top.geometries.emplace_back(std::move(smooth));
+    std::vector<Ray> rays;
+    std::vector<Hit> hits;
+    int degenerate = 0;
+    for (int i = 0; i < 8000; ++i) {
+      Hit hit;
+      hit.geom_id = static_cast<std::uint32_t>(rng() % 2);
+      hit.prim_id = static_cast<std::uint32_t>(rng() % 200);
+      hit.u = i % 13 == 0 ? 0.0f : std::uniform_real_distribution<float>(0.0f, 1.0f)(rng);
+      hit.v = std::uniform_real_distribution<float>(0.0f, 1.0f - hit.u)(rng);
+      hit.t = extent;
+      ASSERT_TRUE(is_plain_triangle_hit(scene, hit));
+      degenerate += hit.geom_id == 1 && hit.prim_id % 11 == 0;
+      rays.push_back(test::random_ray(rng, extent * 4.0f));
+      hits.push_back(hit);
+    }
+    int back_faces = 0;
+    expect_same_surfaces(scene, rays, hits, [](auto&&... four) { make_triangle_surfaces4(four...); }, back_faces);
+    EXPECT_GT(back_faces, 1000) << "extent " << extent;
+    EXPECT_GT(degenerate, 100) << "extent " << extent;
+  }
+}
+
 TEST(Surface, FourSphereHitsAtATimeAreMakeSurfaceBitForBit) { expect_four_at_a_time_is_make_surface(); }
+
+TEST(Surface, FourTriangleHitsAtATimeAreMakeSurfaceBitForBit) { expect_four_triangle_hits_at_a_time_are_make_surface(); }
+
+TEST(Surface, FourTriangleHitsAtATimeAreMakeSurfaceUnderTheTracingFloatingPointMode) {
+  test::in_tracing_fp_mode(expect_four_triangle_hits_at_a_time_are_make_surface);
+}
 
 TEST(Surface, FourSphereHitsAtATimeAreMakeSurfaceUnderTheTracingFloatingPointMode) {
   test::in_tracing_fp_mode(expect_four_at_a_time_is_make_surface);
@@ -109,6 +193,27 @@ TEST(Surface, OnlyTopLevelSpheresWithoutImageTexturesArePlain) {
   EXPECT_GT(other, 100);
   for (Material& m : scene.materials) m.color = ImageTexture{0, Color(1.0f), TextureWrap{}};
   for (const Hit& hit : hits) EXPECT_FALSE(is_plain_sphere_hit(scene, hit));
+}
+
+TEST(Surface, OnlyTopLevelTrianglesWithoutImageTexturesArePlain) {
+  RenderScene scene = test::random_mixed_scene(7, 50, 200, 5);
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
+  std::mt19937 rng(9);
+  std::vector<Hit> hits;
+  int plain = 0, other = 0;
+  for (int i = 0; i < 20000; ++i) {
+    Hit hit;
+    if (!backend->intersect(test::random_ray(rng, 4.0f), hit)) continue;
+    hits.push_back(hit);
+    const bool top_triangle =
+        hit.inst_id == kInvalidId && std::holds_alternative<TriangleMesh>(scene.top.geometries[hit.geom_id]);
+    EXPECT_EQ(is_plain_triangle_hit(scene, hit), top_triangle);
+    (top_triangle ? plain : other) += 1;
+  }
+  EXPECT_GT(plain, 100);
+  EXPECT_GT(other, 100);
+  for (Material& m : scene.materials) m.color = ImageTexture{0, Color(1.0f), TextureWrap{}};
+  for (const Hit& hit : hits) EXPECT_FALSE(is_plain_triangle_hit(scene, hit));
 }
 
 }  // namespace

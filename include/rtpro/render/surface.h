@@ -49,6 +49,20 @@ inline bool is_plain_sphere_hit(const RenderScene& scene, const Hit& hit) {
 void make_sphere_surfaces4(const RenderScene& scene, const Ray* const rays[4], const Hit* const hits[4],
                            SurfacePoint* const out[4], Vec3* const mirrors[4]);
 
+// Whether make_triangle_surfaces4 may take `hit`: a triangle of a top-level mesh (not instanced)
+// whose material has no image texture.
+inline bool is_plain_triangle_hit(const RenderScene& scene, const Hit& hit) {
+  if (hit.inst_id != kInvalidId) return false;
+  const auto* mesh = std::get_if<TriangleMesh>(&scene.top.geometries[hit.geom_id]);
+  return mesh && !has_image_texture(scene, mesh->material_of(hit.prim_id));
+}
+
+// make_surface for four plain triangle hits at once (is_plain_triangle_hit), with the same
+// guarantee as make_sphere_surfaces4: each out[i] is make_surface's, bit for bit, and mirrors[i]
+// the mirror direction there. The hits may lie on different meshes, flat or smooth.
+void make_triangle_surfaces4(const RenderScene& scene, const Ray* const rays[4], const Hit* const hits[4],
+                             SurfacePoint* const out[4], Vec3* const mirrors[4]);
+
 inline SurfacePoint make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit) {
   SurfacePoint sp;
   make_surface(scene, ray, hit, sp);
