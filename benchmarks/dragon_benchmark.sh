@@ -134,22 +134,20 @@ for frame in ("primary", "primary_shadow", "primary_ground", "primary_shadow_gro
         total = statistics.median(s["seconds"]["total"] for s in stats)
         print(f"  {frame:22} {backend:7} {fmt(frames[frame, backend]):>20} Msamples/s  ({all_kinds:.2f} Mrays/s of all kinds,"
               f" total process {total:.2f} s)")
-if have_viewer:
-    viewer = benchmark_values("viewer", "BENCHMARK_RENDER_MRAYPS_AVG")
-    print(f"  Embree viewer --shader eyelight (the mesh alone): {fmt(viewer)} Mrays/s")
-    print(f"  primary / viewer: embree {frames['primary', 'embree'][0] / viewer[0]:.2f}x,"
-          f" native {frames['primary', 'native'][0] / viewer[0]:.2f}x (with the ground sphere:"
-          f" {frames['primary_ground', 'embree'][0] / viewer[0]:.2f}x, {frames['primary_ground', 'native'][0] / viewer[0]:.2f}x)")
-else:
-    print("  Embree viewer: not run: install Debian's embree-tools")
-if have_pathtracer:
-    tracer = benchmark_values("pathtracer", "BENCHMARK_RENDER_MRAYPS_AVG")
-    print(f"  Embree pathtracer --max-path-length 1 (the mesh alone): {fmt(tracer)} Msamples/s")
-    print(f"  primary + shadow / pathtracer: embree {frames['primary_shadow', 'embree'][0] / tracer[0]:.2f}x,"
-          f" native {frames['primary_shadow', 'native'][0] / tracer[0]:.2f}x (with the ground sphere:"
-          f" {frames['primary_shadow_ground', 'embree'][0] / tracer[0]:.2f}x, {frames['primary_shadow_ground', 'native'][0] / tracer[0]:.2f}x)")
-else:
-    print("  Embree pathtracer: not run: install Debian's embree-tools")
+def against_peer(present, log, peer, unit, frame, label):
+    """The peer's rate and rtpro's frames over it, on the mesh alone and with the ground sphere."""
+    if not present:
+        print(f"  {peer}: not run: install Debian's embree-tools")
+        return
+    rate = benchmark_values(log, "BENCHMARK_RENDER_MRAYPS_AVG")
+    print(f"  {peer} (the mesh alone): {fmt(rate)} {unit}")
+    ratio = lambda f, b: frames[f, b][0] / rate[0]
+    print(f"  {label}: embree {ratio(frame, 'embree'):.2f}x, native {ratio(frame, 'native'):.2f}x (with the ground"
+          f" sphere: {ratio(frame + '_ground', 'embree'):.2f}x, {ratio(frame + '_ground', 'native'):.2f}x)")
+
+against_peer(have_viewer, "viewer", "Embree viewer --shader eyelight", "Mrays/s", "primary", "primary / viewer")
+against_peer(have_pathtracer, "pathtracer", "Embree pathtracer --max-path-length 1", "Msamples/s", "primary_shadow",
+             "primary + shadow / pathtracer")
 
 print(f"\ntime to first image: whole process to a 1024x1024 PNG at 1 spp, seconds, median (min-max) of {runs} runs")
 first = {}

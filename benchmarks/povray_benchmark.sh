@@ -9,17 +9,7 @@
 # Usage: benchmarks/povray_benchmark.sh [--runs N] [--threads "1 2"]
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-build=${RTPRO_BUILD_DIR:-$root/build-release}
-runs=3
-threads="1 2"
-while [ $# -gt 0 ]; do
-  case "$1" in
-    --runs) runs=$2; shift 2 ;;
-    --threads) threads=$2; shift 2 ;;
-    *) echo "usage: $0 [--runs N] [--threads \"1 2\"]" >&2; exit 2 ;;
-  esac
-done
+source "$(dirname "$0")/options.sh"
 command -v povray >/dev/null || { echo "povray not found: apt-get install povray (Debian package, 3.7)" >&2; exit 2; }
 
 if [ ! -f "$build/CMakeCache.txt" ]; then

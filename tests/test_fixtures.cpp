@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cstring>
 
 namespace rtpro::test {
@@ -33,6 +36,22 @@ void expect_same_pixels(const std::filesystem::path& reference, const std::files
   ASSERT_EQ(a.data.size(), b.data.size());
   EXPECT_EQ(std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)), 0)
       << test << " differs from " << reference;
+}
+
+void expect_same_channels(const Image& expected, const Image& actual) {
+  ASSERT_EQ(actual.width, expected.width);
+  ASSERT_EQ(actual.height, expected.height);
+  ASSERT_EQ(actual.channel_count(), expected.channel_count());
+  for (int c = 0; c < expected.channel_count(); ++c) {
+    const auto found = std::find(actual.channels.begin(), actual.channels.end(), expected.channels[c]);
+    ASSERT_NE(found, actual.channels.end()) << expected.channels[c];
+    const int actual_c = static_cast<int>(found - actual.channels.begin());
+    for (int y = 0; y < expected.height; ++y)
+      for (int x = 0; x < expected.width; ++x)
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(actual.at(x, y, actual_c)),
+                  std::bit_cast<std::uint32_t>(expected.at(x, y, c)))
+            << expected.channels[c] << " at " << x << "," << y;
+  }
 }
 
 }  // namespace rtpro::test

@@ -20,6 +20,10 @@ InputError mesh_load_error(const std::filesystem::path& file);
 // their pixels are the same, bit for bit.
 void expect_same_pixels(const std::filesystem::path& reference, const std::filesystem::path& test);
 
+// Records a test failure unless `actual` has `expected`'s size and each of its channels, found by
+// name (EXR stores channels sorted by name), with the same floats, bit for bit.
+void expect_same_channels(const Image& expected, const Image& actual);
+
 // Runs `check` in the floating-point mode of tracing threads (set_tracing_fp_mode: denormals flush
 // to zero), then restores this thread's own mode.
 template <typename Check>

@@ -87,6 +87,18 @@ bool rays_decided_by_callbacks(const RenderScene& scene) {
   return true;
 }
 
+// Lane `lane` of an answered packet, or nothing where it hit nothing.
+bool hit_of_lane(const RTCRayHit8& packet, unsigned lane, Hit& hit) {
+  if (packet.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID) return false;
+  hit.t = packet.ray.tfar[lane];
+  hit.u = packet.hit.u[lane];
+  hit.v = packet.hit.v[lane];
+  hit.geom_id = packet.hit.geomID[lane];
+  hit.prim_id = packet.hit.primID[lane];
+  hit.inst_id = packet.hit.instID[0][lane];
+  return true;
+}
+
 Hit no_sphere_yet(const Ray& ray) {
   Hit closest;
   closest.t = ray.tfar;
@@ -266,17 +278,8 @@ class EmbreeBackend final : public Backend {
       rtcIntersectNM(scenes_.top.get(), &context.base, reinterpret_cast<RTCRayHitN*>(packets), kPacket,
                      kStreamPackets, sizeof(RTCRayHit8));
       for (unsigned k = 0; k < count; ++k) {
-        const RTCRayHit8& packet = packets[k / kPacket];
-        const unsigned lane = k % kPacket;
-        Hit& hit = hits[first + k];
-        hit = Hit{};
-        if (packet.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID) continue;
-        hit.t = packet.ray.tfar[lane];
-        hit.u = packet.hit.u[lane];
-        hit.v = packet.hit.v[lane];
-        hit.geom_id = packet.hit.geomID[lane];
-        hit.prim_id = packet.hit.primID[lane];
-        hit.inst_id = packet.hit.instID[0][lane];
+        hits[first + k] = Hit{};
+        hit_of_lane(packets[k / kPacket], k % kPacket, hits[first + k]);
       }
     }
   }
@@ -354,16 +357,7 @@ class EmbreeBackend final : public Backend {
       rtcInitIntersectContext(&context.base);
       context.closest_spheres = closest_spheres;
       rtcIntersect8(valid, scenes_.top.get(), &context.base, &packet);
-      for (unsigned k = 0; k < count; ++k) {
-        if (packet.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) continue;
-        Hit& hit = hits[slots[k]];
-        hit.t = packet.ray.tfar[k];
-        hit.u = packet.hit.u[k];
-        hit.v = packet.hit.v[k];
-        hit.geom_id = packet.hit.geomID[k];
-        hit.prim_id = packet.hit.primID[k];
-        hit.inst_id = packet.hit.instID[0][k];
-      }
+      for (unsigned k = 0; k < count; ++k) hit_of_lane(packet, k, hits[slots[k]]);
     }
   }
 

@@ -2,6 +2,7 @@
 
 #include "rtpro/core/error.h"
 #include "rtpro/image/image_io.h"
+#include "test_fixtures.h"
 #include "test_paths.h"
 
 #include <OpenEXR/ImfHeader.h>
@@ -59,19 +60,7 @@ TEST(ExrOutput, EveryChannelReadsBackBitForBit) {
   const std::vector<std::string> names = {"R", "G", "B", "A", "N.X", "Z"};
   const Image image = every_kind_of_float(13, 7, names);
   write_exr(file, image, {});
-  const Image back = read_image(file);
-  ASSERT_EQ(back.width, image.width);
-  ASSERT_EQ(back.height, image.height);
-  ASSERT_EQ(back.channel_count(), image.channel_count());
-  for (int c = 0; c < image.channel_count(); ++c) {
-    const auto found = std::find(back.channels.begin(), back.channels.end(), image.channels[c]);
-    ASSERT_NE(found, back.channels.end()) << image.channels[c];
-    const int back_c = static_cast<int>(found - back.channels.begin());
-    for (int y = 0; y < image.height; ++y)
-      for (int x = 0; x < image.width; ++x)
-        EXPECT_EQ(std::bit_cast<std::uint32_t>(back.at(x, y, back_c)), std::bit_cast<std::uint32_t>(image.at(x, y, c)))
-            << image.channels[c] << " at " << x << "," << y;
-  }
+  test::expect_same_channels(image, read_image(file));
 }
 
 // OpenEXR writes what OpenImageIO's EXR writer wrote for rtpro: the same pixel type, compression,

@@ -1,6 +1,7 @@
 #include "rtpro/image/image_io.h"
 
 #include "rtpro/core/error.h"
+#include "test_fixtures.h"
 #include "test_paths.h"
 
 #include <Imath/half.h>
@@ -102,16 +103,7 @@ TEST(ImageIo, ExrKeepsEveryChannelByName) {
                                           "N.X", "N.Y", "N.Z", "Z"};
   const Image image = varied_image(5, 4, names);
   write_image(file, image, {});
-  const Image back = read_image(file);
-  ASSERT_EQ(back.channel_count(), image.channel_count());
-  // OpenEXR stores channels sorted by name, so compare by name rather than by position.
-  for (int c = 0; c < image.channel_count(); ++c) {
-    const auto found = std::find(back.channels.begin(), back.channels.end(), image.channels[c]);
-    ASSERT_NE(found, back.channels.end()) << image.channels[c];
-    const int back_c = static_cast<int>(found - back.channels.begin());
-    for (int y = 0; y < image.height; ++y)
-      for (int x = 0; x < image.width; ++x) EXPECT_EQ(back.at(x, y, back_c), image.at(x, y, c)) << image.channels[c];
-  }
+  test::expect_same_channels(image, read_image(file));
 }
 
 TEST(ImageIo, ExrCarriesChromaticitiesAndMetadata) {

@@ -23,65 +23,6 @@ void expect_same_vector(const Vec3& actual, const Vec3& expected, const char* wh
     ASSERT_EQ(bits(actual[axis]), bits(expected[axis])) << what << " axis " << axis << " of hit " << hit;
 }
 
-// Hits of random rays (from outside and inside spheres, at several scales) on the top-level
-// spheres of a mixed scene, made four at a time and one at a time.
-void expect_four_at_a_time_is_make_surface() {
-  for (const float extent : {0.01f, 1.0f, 1000.0f}) {
-    RenderScene scene = test::random_mixed_scene(7, 300, 100, 10);
-    for (Geometry& g : scene.top.geometries)
-      if (auto* set = std::get_if<SphereSet>(&g))
-        for (Sphere& s : set->spheres) {
-          s.center = s.center * extent;
-          s.radius *= extent;
-        }
-    const auto backend = make_backend(BackendKind::kNative, scene, {});
-    std::mt19937 rng(3);
-    std::vector<Ray> rays;
-    std::vector<Hit> hits;
-    for (int i = 0; i < 40000 && hits.size() < 8000; ++i) {
-      const Ray ray = test::random_ray(rng, extent * 4.0f);
-      Hit hit;
-      if (backend->intersect(ray, hit) && is_plain_sphere_hit(scene, hit)) {
-        rays.push_back(ray);
-        hits.push_back(hit);
-      }
-    }
-    ASSERT_GT(hits.size(), 2000u) << "extent " << extent;
-    int back_faces = 0;
-    for (std::size_t first = 0; first + 4 <= hits.size(); first += 4) {
-      const Ray* ray_ptrs[4];
-      const Hit* hit_ptrs[4];
-      SurfacePoint four[4];
-      SurfacePoint* out[4];
-      Vec3 four_mirrors[4];
-      Vec3* mirrors[4];
-      for (int k = 0; k < 4; ++k) {
-        ray_ptrs[k] = &rays[first + k];
-        hit_ptrs[k] = &hits[first + k];
-        out[k] = &four[k];
-        mirrors[k] = &four_mirrors[k];
-      }
-      make_sphere_surfaces4(scene, ray_ptrs, hit_ptrs, out, mirrors);
-      for (int k = 0; k < 4; ++k) {
-        const int hit = static_cast<int>(first) + k;
-        const SurfacePoint one = make_surface(scene, rays[first + k], hits[first + k]);
-        expect_same_vector(four[k].position, one.position, "position", hit);
-        expect_same_vector(four[k].geometric_normal, one.geometric_normal, "geometric normal", hit);
-        expect_same_vector(four[k].shading_normal, one.shading_normal, "shading normal", hit);
-        ASSERT_EQ(four[k].front_face, one.front_face) << hit;
-        ASSERT_EQ(bits(four[k].position_error), bits(one.position_error)) << hit;
-        ASSERT_EQ(four[k].material, one.material);
-        ASSERT_EQ(four[k].object_id, one.object_id);
-        ASSERT_EQ(bits(four[k].tex_u), bits(one.tex_u));
-        ASSERT_EQ(bits(four[k].tex_v), bits(one.tex_v));
-        expect_same_vector(four_mirrors[k], reflect(normalize(rays[first + k].dir), one.shading_normal), "mirror", hit);
-        back_faces += !one.front_face;
-      }
-    }
-    EXPECT_GT(back_faces, 50) << "rays from inside spheres are exercised, extent " << extent;
-  }
-}
-
 // Every field of four surfaces made at once against make_surface and reflect, one hit at a time.
 template <typename MakeFour>
 void expect_same_surfaces(const RenderScene& scene, const std::vector<Ray>& rays, const std::vector<Hit>& hits,
@@ -115,6 +56,36 @@ void expect_same_surfaces(const RenderScene& scene, const std::vector<Ray>& rays
       expect_same_vector(four_mirrors[k], reflect(normalize(rays[first + k].dir), one.shading_normal), "mirror", hit);
       back_faces += !one.front_face;
     }
+  }
+}
+
+// Hits of random rays (from outside and inside spheres, at several scales) on the top-level
+// spheres of a mixed scene, made four at a time and one at a time.
+void expect_four_at_a_time_is_make_surface() {
+  for (const float extent : {0.01f, 1.0f, 1000.0f}) {
+    RenderScene scene = test::random_mixed_scene(7, 300, 100, 10);
+    for (Geometry& g : scene.top.geometries)
+      if (auto* set = std::get_if<SphereSet>(&g))
+        for (Sphere& s : set->spheres) {
+          s.center = s.center * extent;
+          s.radius *= extent;
+        }
+    const auto backend = make_backend(BackendKind::kNative, scene, {});
+    std::mt19937 rng(3);
+    std::vector<Ray> rays;
+    std::vector<Hit> hits;
+    for (int i = 0; i < 40000 && hits.size() < 8000; ++i) {
+      const Ray ray = test::random_ray(rng, extent * 4.0f);
+      Hit hit;
+      if (backend->intersect(ray, hit) && is_plain_sphere_hit(scene, hit)) {
+        rays.push_back(ray);
+        hits.push_back(hit);
+      }
+    }
+    ASSERT_GT(hits.size(), 2000u) << "extent " << extent;
+    int back_faces = 0;
+    expect_same_surfaces(scene, rays, hits, [](auto&&... four) { make_sphere_surfaces4(four...); }, back_faces);
+    EXPECT_GT(back_faces, 50) << "rays from inside spheres are exercised, extent " << extent;
   }
 }
 
@@ -172,10 +143,11 @@ TEST(Surface, FourSphereHitsAtATimeAreMakeSurfaceUnderTheTracingFloatingPointMod
   test::in_tracing_fp_mode(expect_four_at_a_time_is_make_surface);
 }
 
-// Plain: a top-level sphere whose material has no image texture (instances and triangles are not,
-// and a textured sphere needs its texture coordinates from make_surface).
-TEST(Surface, OnlyTopLevelSpheresWithoutImageTexturesArePlain) {
-  RenderScene scene = test::random_mixed_scene(7, 50, 50, 5);
+// Plain: a top-level primitive of kind `Kind` whose material has no image texture (instances and
+// other kinds are not, and a textured one needs its texture coordinates from make_surface).
+template <typename Kind, typename IsPlain>
+void expect_plain_hits_are(int triangles, IsPlain is_plain) {
+  RenderScene scene = test::random_mixed_scene(7, 50, triangles, 5);
   const auto backend = make_backend(BackendKind::kNative, scene, {});
   std::mt19937 rng(9);
   std::vector<Hit> hits;
@@ -184,36 +156,25 @@ TEST(Surface, OnlyTopLevelSpheresWithoutImageTexturesArePlain) {
     Hit hit;
     if (!backend->intersect(test::random_ray(rng, 4.0f), hit)) continue;
     hits.push_back(hit);
-    const bool top_sphere =
-        hit.inst_id == kInvalidId && std::holds_alternative<SphereSet>(scene.top.geometries[hit.geom_id]);
-    EXPECT_EQ(is_plain_sphere_hit(scene, hit), top_sphere);
-    (top_sphere ? plain : other) += 1;
+    const bool top_level_kind =
+        hit.inst_id == kInvalidId && std::holds_alternative<Kind>(scene.top.geometries[hit.geom_id]);
+    EXPECT_EQ(is_plain(scene, hit), top_level_kind);
+    (top_level_kind ? plain : other) += 1;
   }
   EXPECT_GT(plain, 100);
   EXPECT_GT(other, 100);
   for (Material& m : scene.materials) m.color = ImageTexture{0, Color(1.0f), TextureWrap{}};
-  for (const Hit& hit : hits) EXPECT_FALSE(is_plain_sphere_hit(scene, hit));
+  for (const Hit& hit : hits) EXPECT_FALSE(is_plain(scene, hit));
+}
+
+TEST(Surface, OnlyTopLevelSpheresWithoutImageTexturesArePlain) {
+  expect_plain_hits_are<SphereSet>(50, [](const RenderScene& scene, const Hit& hit) { return is_plain_sphere_hit(scene, hit); });
 }
 
 TEST(Surface, OnlyTopLevelTrianglesWithoutImageTexturesArePlain) {
-  RenderScene scene = test::random_mixed_scene(7, 50, 200, 5);
-  const auto backend = make_backend(BackendKind::kNative, scene, {});
-  std::mt19937 rng(9);
-  std::vector<Hit> hits;
-  int plain = 0, other = 0;
-  for (int i = 0; i < 20000; ++i) {
-    Hit hit;
-    if (!backend->intersect(test::random_ray(rng, 4.0f), hit)) continue;
-    hits.push_back(hit);
-    const bool top_triangle =
-        hit.inst_id == kInvalidId && std::holds_alternative<TriangleMesh>(scene.top.geometries[hit.geom_id]);
-    EXPECT_EQ(is_plain_triangle_hit(scene, hit), top_triangle);
-    (top_triangle ? plain : other) += 1;
-  }
-  EXPECT_GT(plain, 100);
-  EXPECT_GT(other, 100);
-  for (Material& m : scene.materials) m.color = ImageTexture{0, Color(1.0f), TextureWrap{}};
-  for (const Hit& hit : hits) EXPECT_FALSE(is_plain_triangle_hit(scene, hit));
+  expect_plain_hits_are<TriangleMesh>(200, [](const RenderScene& scene, const Hit& hit) {
+    return is_plain_triangle_hit(scene, hit);
+  });
 }
 
 }  // namespace
