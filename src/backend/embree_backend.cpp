@@ -205,18 +205,14 @@ class EmbreeBackend final : public Backend {
   // packets and back. Lanes the gate refuses stay inactive (tnear 0, tfar -inf).
   static constexpr unsigned kStreamPackets = 4;
 
-  template <typename Packet>
-  static void clear_stream_lanes(Packet (&packets)[kStreamPackets], unsigned from) {
-    for (unsigned k = from; k < kStreamPackets * kPacket; ++k) {
-      auto& ray = ray_of(packets[k / kPacket]);
-      const unsigned lane = k % kPacket;
-      ray.org_x[lane] = ray.org_y[lane] = ray.org_z[lane] = 0.0f;
-      ray.dir_x[lane] = ray.dir_y[lane] = 0.0f;
-      ray.dir_z[lane] = 1.0f;
-      ray.tnear[lane] = 0.0f;
-      ray.tfar[lane] = -std::numeric_limits<float>::infinity();
-      start_packet_lane(ray, lane);
-    }
+  // A lane Embree skips: tnear 0, tfar −inf, a harmless direction.
+  static void leave_lane_inactive(RTCRay8& ray, unsigned lane) {
+    ray.org_x[lane] = ray.org_y[lane] = ray.org_z[lane] = 0.0f;
+    ray.dir_x[lane] = ray.dir_y[lane] = 0.0f;
+    ray.dir_z[lane] = 1.0f;
+    ray.tnear[lane] = 0.0f;
+    ray.tfar[lane] = -std::numeric_limits<float>::infinity();
+    start_packet_lane(ray, lane);
   }
   static RTCRay8& ray_of(RTCRay8& packet) { return packet; }
   static RTCRay8& ray_of(RTCRayHit8& packet) { return packet.ray; }
@@ -240,20 +236,23 @@ class EmbreeBackend final : public Backend {
       }
       const unsigned lane = k % kPacket;
       const Ray& ray = rays[first + k];
-      const bool admitted = gate_.admit(ray);
-      packet.org_x[lane] = admitted ? ray.org.x : 0.0f;
-      packet.org_y[lane] = admitted ? ray.org.y : 0.0f;
-      packet.org_z[lane] = admitted ? ray.org.z : 0.0f;
-      packet.dir_x[lane] = admitted ? ray.dir.x : 0.0f;
-      packet.dir_y[lane] = admitted ? ray.dir.y : 0.0f;
-      packet.dir_z[lane] = admitted ? ray.dir.z : 1.0f;
-      packet.tnear[lane] = admitted ? ray.tnear : 0.0f;
-      packet.tfar[lane] = admitted ? far(ray.tfar, ray.tnear) : -std::numeric_limits<float>::infinity();
-      start_packet_lane(packet, lane);
+      if (gate_.admit(ray)) {
+        packet.org_x[lane] = ray.org.x;
+        packet.org_y[lane] = ray.org.y;
+        packet.org_z[lane] = ray.org.z;
+        packet.dir_x[lane] = ray.dir.x;
+        packet.dir_y[lane] = ray.dir.y;
+        packet.dir_z[lane] = ray.dir.z;
+        packet.tnear[lane] = ray.tnear;
+        packet.tfar[lane] = far(ray.tfar, ray.tnear);
+        start_packet_lane(packet, lane);
+      } else {
+        leave_lane_inactive(packet, lane);
+      }
       packet.id[lane] = k;
       ++k;
     }
-    clear_stream_lanes(packets, count);
+    for (unsigned k = count; k < kStreamPackets * kPacket; ++k) leave_lane_inactive(ray_of(packets[k / kPacket]), k % kPacket);
     return count;
   }
 
