@@ -1,6 +1,7 @@
 #include "exr_output.h"
 
 #include "image_metadata.h"
+#include "pixel_encoding.h"
 #include "rtpro/core/error.h"
 #include "rtpro/image/atomic_file_replacement.h"
 
@@ -64,11 +65,10 @@ Imf::Header describe(const std::filesystem::path& file, const Image& image, cons
       throw RuntimeError("cannot write " + file.string() + ": channel names must be distinct and not empty");
     header.channels().insert(name, Imf::Channel(Imf::FLOAT));
   }
-  // Rec.709 red, green, blue and the D65 white point: EXR's own statement of the primaries.
-  Imf::addChromaticities(header, Imf::Chromaticities(Imath::V2f(0.64f, 0.33f), Imath::V2f(0.30f, 0.60f),
-                                                     Imath::V2f(0.15f, 0.06f), Imath::V2f(0.3127f, 0.3290f)));
-  header.insert("rtpro:colorspace", Imf::StringAttribute("Linear Rec.709 (sRGB)"));
-  for (const auto& [key, value] : image_metadata("rtpro image, scene-linear Rec.709 primaries", options))
+  // EXR's own statement of the primaries.
+  const float* xy = kRec709Chromaticities;
+  Imf::addChromaticities(header, Imf::Chromaticities({xy[0], xy[1]}, {xy[2], xy[3]}, {xy[4], xy[5]}, {xy[6], xy[7]}));
+  for (const auto& [key, value] : scene_linear_metadata(options))
     header.insert(exr_attribute_name(key), Imf::StringAttribute(value));
   return header;
 }
@@ -76,9 +76,7 @@ Imf::Header describe(const std::filesystem::path& file, const Image& image, cons
 }  // namespace
 
 bool is_exr_file(const std::filesystem::path& file) {
-  std::string extension = file.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension = lowercase_extension(file);
   return extension == ".exr" || extension == ".sxr" || extension == ".mxr";
 }
 

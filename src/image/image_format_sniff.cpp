@@ -1,5 +1,7 @@
 #include "image_format_sniff.h"
 
+#include "pixel_encoding.h"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -63,10 +65,8 @@ std::string image_reader_name(const std::filesystem::path& file) {
   }
   if (const std::string_view format = image_format_from_signature({head.data(), count}); !format.empty())
     return std::string(format);
-  std::string extension = file.extension().string();
+  std::string extension = lowercase_extension(file);
   if (!extension.empty()) extension.erase(0, 1);
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return extension;
 }
 

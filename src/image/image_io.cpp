@@ -69,13 +69,11 @@ void describe_scene_linear(OIIO::ImageSpec& spec, const Image& image, bool any_c
   const int channel_count = any_channel_count ? image.channel_count() : std::min(image.channel_count(), 3);
   spec = OIIO::ImageSpec(image.width, image.height, channel_count, OIIO::TypeDesc::FLOAT);
   spec.channelnames.assign(image.channels.begin(), image.channels.begin() + channel_count);
-  // EXR does not keep oiio:ColorSpace, so the primaries go in the standard chromaticities
-  // attribute: Rec.709 red, green, blue and the D65 white point (x, y pairs).
-  static constexpr float kRec709Chromaticities[8] = {0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+  // As in an EXR (exr_output.h): the primaries in the standard chromaticities attribute, which
+  // the float formats keep where they keep any colour information, not oiio:ColorSpace.
   spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), kRec709Chromaticities);
-  spec.attribute("rtpro:colorspace", "Linear Rec.709 (sRGB)");
   spec.attribute("compression", "zip");
-  for (const auto& [key, value] : image_metadata("rtpro image, scene-linear Rec.709 primaries", options))
+  for (const auto& [key, value] : scene_linear_metadata(options))
     spec.attribute(key, value);
 }
 
@@ -108,13 +106,6 @@ bool write_with(OIIO::ImageOutput& output, const std::string& name, const OIIO::
       },
       pixels);
   return output.close() && written;
-}
-
-std::string lowercase_extension(const std::filesystem::path& file) {
-  std::string extension = file.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
 }
 
 // OpenImageIO's TIFF writer fails on its Exif block when it writes to memory (2.4.7).

@@ -35,6 +35,12 @@ std::vector<std::pair<std::string, std::string>> image_metadata(std::string desc
   return entries;
 }
 
+std::vector<std::pair<std::string, std::string>> scene_linear_metadata(const ImageWriteOptions& options) {
+  ImageWriteOptions with_colorspace = options;
+  with_colorspace.metadata.insert(with_colorspace.metadata.begin(), {"rtpro:colorspace", "Linear Rec.709 (sRGB)"});
+  return image_metadata("rtpro image, scene-linear Rec.709 primaries", with_colorspace);
+}
+
 void require_writable_image(const std::filesystem::path& file, const Image& image) {
   const std::size_t expected = static_cast<std::size_t>(std::max(image.width, 0)) *
                                static_cast<std::size_t>(std::max(image.height, 0)) * image.channels.size();

@@ -16,6 +16,12 @@ namespace rtpro {
 std::vector<std::pair<std::string, std::string>> image_metadata(std::string description,
                                                                 const ImageWriteOptions& options);
 
+// What a scene-linear file (EXR and the other float formats) says of its colour: Rec.709 primaries
+// and the D65 white point as x, y pairs (red, green, blue, white) for the chromaticities attribute,
+// and image_metadata's entries with rtpro:colorspace among the defaults.
+inline constexpr float kRec709Chromaticities[8] = {0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+std::vector<std::pair<std::string, std::string>> scene_linear_metadata(const ImageWriteOptions& options);
+
 // Throws RuntimeError naming `file` when the image is empty or its data does not match its size.
 void require_writable_image(const std::filesystem::path& file, const Image& image);
 

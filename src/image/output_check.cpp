@@ -1,6 +1,7 @@
 #include "rtpro/image/output_check.h"
 
 #include "oiio_output_formats.h"
+#include "pixel_encoding.h"
 #include "rtpro/core/error.h"
 #include "rtpro/image/atomic_file_replacement.h"
 
@@ -17,11 +18,9 @@ namespace {
 // Answers from the list generated from OpenImageIO at build time, not from OpenImageIO itself,
 // which is only loaded when an image is written (see image_layer.h).
 bool openimageio_writes(const std::filesystem::path& file) {
-  std::string extension = file.extension().string();
+  std::string extension = lowercase_extension(file);
   if (extension.size() < 2) return false;  // no extension, or a bare "."
   extension.erase(0, 1);
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return std::binary_search(kOiioOutputExtensions.begin(), kOiioOutputExtensions.end(), extension);
 }
 

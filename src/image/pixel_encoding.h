@@ -5,11 +5,15 @@
 // Kept apart from image_io.cpp because the executable answers writes_scene_linear (image_io.h)
 // without loading OpenImageIO.
 #include <filesystem>
+#include <string>
 
 namespace rtpro {
 
 enum class PixelEncoding { kSceneLinearFloat, kDisplay8Bit, kDisplay16Bit };
 
 PixelEncoding encoding_for(const std::filesystem::path& file);
+
+// The file's extension with its dot, in lower case (".exr" for "a.EXR"; empty without one).
+std::string lowercase_extension(const std::filesystem::path& file);
 
 }  // namespace rtpro
