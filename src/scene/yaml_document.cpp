@@ -28,7 +28,7 @@ std::string YamlNode::describe() const {
       return "an empty value";
     case Kind::scalar: {
       constexpr std::size_t kShown = 40;
-      const std::string shown = scalar.size() > kShown ? scalar.substr(0, kShown) + "..." : scalar;
+      const std::string shown = scalar.size() > kShown ? std::string(scalar.substr(0, kShown)) + "..." : std::string(scalar);
       return (plain ? "'" : "the quoted string '") + shown + "'";
     }
     case Kind::sequence:
@@ -75,7 +75,8 @@ std::string_view text_of(const yaml_char_t* text) {
 // 1-based, or 0 when `known_positions` is false (override values).
 class TreeBuilder {
  public:
-  TreeBuilder(const std::string* source, bool known_positions) : source_(source), known_positions_(known_positions) {}
+  TreeBuilder(const std::string* source, bool known_positions, YamlNodeArena& arena)
+      : source_(source), known_positions_(known_positions), arena_(arena) {}
 
   YamlNodePtr root() { return root_ ? root_ : null_node(YamlPosition{source_, 0, 0}); }
   bool saw_include() const { return saw_include_; }
@@ -109,12 +110,12 @@ class TreeBuilder {
         } else if (anchor.empty() && expects_key()) {
           add_key(value, position(mark));  // most scalars are keys: no node for them
         } else {
-          auto node = new_node();
+          YamlNode* node = arena_.node();
           node->kind = YamlNode::Kind::scalar;
           node->at = position(mark);
-          node->scalar = value;
+          node->scalar = arena_.text(value);
           node->plain = event.data.scalar.style == YAML_PLAIN_SCALAR_STYLE;
-          complete(std::move(node), anchor);
+          complete(node, anchor);
         }
         break;
       }
@@ -145,10 +146,10 @@ class TreeBuilder {
 
  private:
   // A sequence or mapping being read. Its children gather in `items`/`entries`, which keep their
-  // capacity from one node to the next at the same depth, and move into the node, sized exactly,
-  // when it closes: one allocation per list instead of one per doubling.
+  // capacity from one node to the next at the same depth, and are copied into the arena, sized
+  // exactly, when it closes.
   struct Open {
-    std::shared_ptr<YamlNode> node;
+    YamlNode* node = nullptr;
     std::string anchor;
     std::vector<YamlNodePtr> items;
     std::vector<YamlEntry> entries;
@@ -169,10 +170,8 @@ class TreeBuilder {
     return false;
   }
 
-  std::shared_ptr<YamlNode> new_node() { return make_node(arena_); }
-
   YamlNodePtr null_node(YamlPosition at) {
-    auto node = new_node();
+    YamlNode* node = arena_.node();
     node->at = at;
     return node;
   }
@@ -191,7 +190,7 @@ class TreeBuilder {
     }
     if (key == "include") saw_include_ = true;
     if (key == "variables" || key == "keyframes") saw_dollar_ = true;
-    mapping.entries.push_back(YamlEntry{std::string(key), at, nullptr});
+    mapping.entries.push_back(YamlEntry{arena_.text(key), at, nullptr});
     mapping.pending = true;
   }
 
@@ -200,7 +199,7 @@ class TreeBuilder {
       fail(mark, "YAML nesting deeper than " + std::to_string(kMaxYamlNesting) + " levels");
     if (levels_.size() == depth_) levels_.emplace_back();
     Open& level = levels_[depth_++];
-    level.node = new_node();
+    level.node = arena_.node();
     level.node->kind = kind;
     level.node->at = position(mark);
     level.anchor = anchor;
@@ -211,24 +210,22 @@ class TreeBuilder {
 
   void close() {
     Open& level = levels_[--depth_];
-    level.node->items.assign(std::make_move_iterator(level.items.begin()), std::make_move_iterator(level.items.end()));
-    level.node->entries.assign(std::make_move_iterator(level.entries.begin()),
-                               std::make_move_iterator(level.entries.end()));
+    level.node->items = arena_.list(level.items);
+    level.node->entries = arena_.list(level.entries);
     level.items.clear();
     level.entries.clear();
-    YamlNodePtr node = std::move(level.node);
-    complete(std::move(node), level.anchor);
+    complete(level.node, level.anchor);
   }
 
   void complete(YamlNodePtr node, std::string_view anchor) {
     if (!anchor.empty()) anchors_[std::string(anchor)] = node;
     if (depth_ == 0) {
-      root_ = std::move(node);
+      root_ = node;
       return;
     }
     Open& parent = levels_[depth_ - 1];
     if (parent.node->is_sequence()) {
-      parent.items.push_back(std::move(node));
+      parent.items.push_back(node);
     } else if (!parent.pending) {
       // Keys that are plain scalars never get here (add_key); anything else is not a name.
       if (!node->is_scalar()) throw InputError(node->at.location(), "a mapping key must be a name, got " + node->describe());
@@ -237,7 +234,7 @@ class TreeBuilder {
       YamlEntry& entry = parent.entries.back();
       parent.pending = false;
       // An empty value is reported at its key, the place a reader looks for it.
-      entry.value = node->is_null() && anchor.empty() ? null_node(entry.key_at) : std::move(node);
+      entry.value = node->is_null() && anchor.empty() ? null_node(entry.key_at) : node;
     }
   }
 
@@ -245,12 +242,12 @@ class TreeBuilder {
   bool known_positions_;
   bool saw_include_ = false;
   bool saw_dollar_ = false;
-  std::shared_ptr<YamlNodeArena> arena_ = std::make_shared<YamlNodeArena>();
+  YamlNodeArena& arena_;
   int documents_ = 0;
   std::vector<Open> levels_;  // levels_[0, depth_) are open; the rest keep their capacity
   std::size_t depth_ = 0;
   std::unordered_map<std::string, YamlNodePtr> anchors_;
-  YamlNodePtr root_;
+  YamlNodePtr root_ = nullptr;
 };
 
 // libyaml's reader errors (bad UTF-8, control characters) carry a byte offset, not a mark.
@@ -287,12 +284,12 @@ yaml_mark_t mark_of_offset(std::string_view text, std::size_t offset) {
 // libyaml: an event-driven parser with positions on every event, about ten times faster than
 // yaml-cpp's on scene files (third_party_notes/libyaml.md).
 struct ParsedTree {
-  YamlNodePtr root;
+  YamlNodePtr root = nullptr;
   bool saw_include = false;
   bool saw_dollar = false;
 };
 
-ParsedTree parse_tree(std::string_view text, const std::string* source, bool known_positions) {
+ParsedTree parse_tree(std::string_view text, const std::string* source, bool known_positions, YamlNodeArena& arena) {
   struct Parser {
     yaml_parser_t parser;
     Parser() {
@@ -305,7 +302,7 @@ ParsedTree parse_tree(std::string_view text, const std::string* source, bool kno
     ~Event() { yaml_event_delete(&event); }
   };
   yaml_parser_set_input_string(&yaml.parser, reinterpret_cast<const unsigned char*>(text.data()), text.size());
-  TreeBuilder builder(source, known_positions);
+  TreeBuilder builder(source, known_positions, arena);
   while (true) {
     Event next;
     if (!yaml_parser_parse(&yaml.parser, &next.event)) throw_syntax_error(yaml.parser, text, builder);
@@ -317,24 +314,25 @@ ParsedTree parse_tree(std::string_view text, const std::string* source, bool kno
 
 // A copy of `node` (or a new mapping where there is nothing) with segments[i..] set to `value`.
 // Copies only the path, so aliases elsewhere keep the original subtree.
-YamlNodePtr with_value_at(const YamlNodePtr& node, const std::vector<std::string>& segments, std::size_t i,
-                          const YamlNodePtr& value, const YamlPosition& at) {
+YamlNodePtr with_value_at(YamlNodeArena& arena, YamlNodePtr node, const std::vector<std::string>& segments,
+                          std::size_t i, YamlNodePtr value, const YamlPosition& at) {
   if (i == segments.size()) return value;
   const std::string& segment = segments[i];
   const std::string parent = i == 0 ? std::string("the scene") : "'" + segments[i - 1] + "'";
-  auto copy = std::make_shared<YamlNode>(node ? *node : YamlNode{});
+  YamlNode* copy = arena.node(node ? *node : YamlNode{});
   if (copy->is_null()) {
     copy->kind = YamlNode::Kind::mapping;
     copy->at = at;
   }
   if (copy->is_mapping()) {
-    for (YamlEntry& entry : copy->entries) {
-      if (entry.key == segment) {
-        entry.value = with_value_at(entry.value, segments, i + 1, value, at);
-        return copy;
-      }
+    std::vector<YamlEntry> entries(copy->entries.begin(), copy->entries.end());
+    const auto same = std::find_if(entries.begin(), entries.end(), [&](const YamlEntry& e) { return e.key == segment; });
+    if (same != entries.end()) {
+      same->value = with_value_at(arena, same->value, segments, i + 1, value, at);
+    } else {
+      entries.push_back({arena.text(segment), at, with_value_at(arena, nullptr, segments, i + 1, value, at)});
     }
-    copy->entries.push_back({segment, at, with_value_at(nullptr, segments, i + 1, value, at)});
+    copy->entries = arena.list(entries);
     return copy;
   }
   if (copy->is_sequence()) {
@@ -344,7 +342,9 @@ YamlNodePtr with_value_at(const YamlNodePtr& node, const std::vector<std::string
       throw InputError(at.location(), parent + " is a list of " + std::to_string(copy->items.size()) +
                                           " items; expected an index from 0, got '" + segment + "'");
     }
-    copy->items[index] = with_value_at(copy->items[index], segments, i + 1, value, at);
+    std::vector<YamlNodePtr> items(copy->items.begin(), copy->items.end());
+    items[index] = with_value_at(arena, items[index], segments, i + 1, value, at);
+    copy->items = arena.list(items);
     return copy;
   }
   throw InputError(at.location(), parent + " is a single value, so it has no key '" + segment + "'");
@@ -380,10 +380,11 @@ YamlDocument YamlDocument::parse_included(std::string_view text, const std::stri
                                           const YamlFileReader& read_include,
                                           std::vector<std::filesystem::path>& chain) {
   YamlDocument document;
+  document.arena_ = std::make_shared<YamlNodeArena>();
   const std::string* source = &document.sources_.emplace_back(source_name);
   LineLengthGuard(*source).feed(text);
-  ParsedTree tree = parse_tree(text, source, true);
-  document.root_ = std::move(tree.root);
+  ParsedTree tree = parse_tree(text, source, true, *document.arena_);
+  document.root_ = tree.root;
   document.has_includes_ = tree.saw_include;
   document.has_variables_ = tree.saw_dollar;
   if (document.has_includes_ && read_include) {
@@ -400,9 +401,9 @@ void YamlDocument::apply_override(const std::string& override_text) {
   if (equals == std::string::npos || equals == 0)
     throw InputError(at.location(), "expected key=value, e.g. render.spp=64");
   const std::vector<std::string> segments = split_key(override_text.substr(0, equals), at);
-  ParsedTree value = parse_tree(std::string_view(override_text).substr(equals + 1), at.source, false);
+  ParsedTree value = parse_tree(std::string_view(override_text).substr(equals + 1), at.source, false, *arena_);
   if (value.saw_dollar || segments.front() == "variables") has_variables_ = true;
-  root_ = with_value_at(root_, segments, 0, value.root, at);
+  root_ = with_value_at(*arena_, root_, segments, 0, value.root, at);
 }
 
 }  // namespace rtpro

@@ -7,11 +7,12 @@
 #include "rtpro/core/error.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <filesystem>
 #include <functional>
 #include <memory>
-#include <memory_resource>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -50,31 +51,29 @@ struct YamlPosition {
 };
 
 struct YamlNode;
-using YamlNodePtr = std::shared_ptr<const YamlNode>;
+// Nodes, their lists and their text live in the arena of the document that made them
+// (yaml_node_arena.h), which outlives every view of them; aliases, includes, overrides and
+// substituted variables share subtrees by pointing at them.
+using YamlNodePtr = const YamlNode*;
 struct YamlEntry;
-// Polymorphic-allocator lists, so that a parsed document's lists share its nodes' arena
-// (yaml_node_arena.h); nodes made elsewhere (overrides) use the ordinary heap.
-using YamlNodeList = std::pmr::vector<YamlNodePtr>;
-using YamlEntryList = std::pmr::vector<YamlEntry>;
+using YamlNodeList = std::span<const YamlNodePtr>;
+using YamlEntryList = std::span<const YamlEntry>;
 
 struct YamlEntry {
-  std::string key;
+  std::string_view key;
   YamlPosition key_at;
-  YamlNodePtr value;
+  YamlNodePtr value = nullptr;
 };
 
 struct YamlNode {
-  enum class Kind { null, scalar, sequence, mapping };
+  enum class Kind : std::uint8_t { null, scalar, sequence, mapping };
 
   Kind kind = Kind::null;
+  bool plain = true;       // an unquoted scalar: only plain scalars are numbers
   YamlPosition at;
-  std::string scalar;              // scalar text
-  bool plain = true;               // an unquoted scalar: only plain scalars are numbers
-  YamlNodeList items;     // sequence
-  YamlEntryList entries;  // mapping, in document order, keys unique
-
-  YamlNode() = default;
-  explicit YamlNode(std::pmr::memory_resource* lists) : items(lists), entries(lists) {}
+  std::string_view scalar;  // scalar text
+  YamlNodeList items;       // sequence
+  YamlEntryList entries;    // mapping, in document order, keys unique
 
   bool is_null() const { return kind == Kind::null; }
   bool is_scalar() const { return kind == Kind::scalar; }
@@ -84,6 +83,8 @@ struct YamlNode {
   // "a number", "a list of 2 items", ... for "expected X, got Y" messages.
   std::string describe() const;
 };
+
+class YamlNodeArena;
 
 // Reads the text of an included file with the same checks as the scene file itself.
 using YamlFileReader = std::function<std::string(const std::filesystem::path&)>;
@@ -130,14 +131,15 @@ class YamlDocument {
   YamlDocument() = default;
   static YamlDocument parse_included(std::string_view text, const std::string& source_name,
                                      const YamlFileReader& read_include, std::vector<std::filesystem::path>& chain);
-  YamlNodePtr expand_includes(const YamlNodePtr& node, const YamlFileReader& read_include,
+  YamlNodePtr expand_includes(YamlNodePtr node, const YamlFileReader& read_include,
                               std::vector<std::filesystem::path>& chain);
   YamlNodePtr load_include(const YamlNode& file_name, const YamlFileReader& read_include,
                            std::vector<std::filesystem::path>& chain);
 
   std::deque<std::string> sources_;  // stable addresses for YamlPosition::source
-  std::vector<std::unique_ptr<YamlDocument>> includes_;  // keep the included files' sources
-  YamlNodePtr root_;
+  std::vector<std::unique_ptr<YamlDocument>> includes_;  // keep the included files' sources and nodes
+  std::shared_ptr<YamlNodeArena> arena_;  // this document's nodes, its overrides' and substitutions'
+  YamlNodePtr root_ = nullptr;
   bool has_includes_ = false;   // an `include` key was read: expansion walks the tree
   bool has_variables_ = false;  // a `$`, `variables` or `keyframes` was read: substitution walks it
 };

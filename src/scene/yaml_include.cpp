@@ -20,7 +20,7 @@ std::vector<const YamlNode*> include_names(const YamlNode& value) {
     std::vector<const YamlNode*> names;
     for (const YamlNodePtr& item : value.items) {
       if (!item->is_scalar()) throw InputError(item->at.location(), "include: expected a file name, got " + item->describe());
-      names.push_back(item.get());
+      names.push_back(item);
     }
     return names;
   }
@@ -34,7 +34,7 @@ std::string chain_text(const std::vector<std::filesystem::path>& chain, const st
 }
 
 // `entries` with `added` merged in: an added key replaces an existing one in place.
-void merge_entries(YamlEntryList& entries, const YamlEntryList& added) {
+void merge_entries(std::vector<YamlEntry>& entries, YamlEntryList added) {
   for (const YamlEntry& entry : added) {
     const auto same = std::find_if(entries.begin(), entries.end(), [&](const YamlEntry& e) { return e.key == entry.key; });
     if (same == entries.end()) {
@@ -53,7 +53,7 @@ YamlNodePtr YamlDocument::load_include(const YamlNode& file_name, const YamlFile
   if (file_name.scalar.empty()) throw InputError(where, "include: the file name is empty");
   const std::filesystem::path base = file_name.at.source ? std::filesystem::path(*file_name.at.source).parent_path()
                                                          : std::filesystem::path();
-  const std::filesystem::path file = base / file_name.scalar;
+  const std::filesystem::path file = base / std::filesystem::path(file_name.scalar);
   const std::filesystem::path identity = include_identity(file);
   if (std::find(chain.begin(), chain.end(), identity) != chain.end())
     throw InputError(where, "include cycle: " + chain_text(chain, identity));
@@ -64,7 +64,7 @@ YamlNodePtr YamlDocument::load_include(const YamlNode& file_name, const YamlFile
   try {
     text = read_include(file);
   } catch (const InputError& e) {
-    throw InputError(where, "cannot include '" + file_name.scalar + "' (" + file.string() + "): " + e.message());
+    throw InputError(where, "cannot include '" + std::string(file_name.scalar) + "' (" + file.string() + "): " + e.message());
   }
   auto included = std::make_unique<YamlDocument>(parse_included(text, file.string(), read_include, chain));
   YamlNodePtr root = included->root_;
@@ -73,46 +73,48 @@ YamlNodePtr YamlDocument::load_include(const YamlNode& file_name, const YamlFile
   return root;
 }
 
-YamlNodePtr YamlDocument::expand_includes(const YamlNodePtr& node, const YamlFileReader& read_include,
+YamlNodePtr YamlDocument::expand_includes(YamlNodePtr node, const YamlFileReader& read_include,
                                           std::vector<std::filesystem::path>& chain) {
   if (node->is_sequence()) {
-    auto copy = std::make_shared<YamlNode>(*node);
-    copy->items.clear();
+    std::vector<YamlNodePtr> items;
     for (const YamlNodePtr& item : node->items) {
       if (!is_include_only(*item)) {
-        copy->items.push_back(expand_includes(item, read_include, chain));
+        items.push_back(expand_includes(item, read_include, chain));
         continue;
       }
       for (const YamlNode* name : include_names(*item->entries[0].value)) {
         const YamlNodePtr included = load_include(*name, read_include, chain);
         if (included->is_sequence()) {
-          copy->items.insert(copy->items.end(), included->items.begin(), included->items.end());
+          items.insert(items.end(), included->items.begin(), included->items.end());
         } else if (included->is_mapping()) {
-          copy->items.push_back(included);
+          items.push_back(included);
         } else if (!included->is_null()) {
-          throw InputError(name->at.location(), "include '" + name->scalar + "': a list item includes a list or a mapping, got " + included->describe());
+          throw InputError(name->at.location(), "include '" + std::string(name->scalar) + "': a list item includes a list or a mapping, got " + included->describe());
         }
       }
     }
+    YamlNode* copy = arena_->node(*node);
+    copy->items = arena_->list(items);
     return copy;
   }
   if (!node->is_mapping()) return node;
-  auto copy = std::make_shared<YamlNode>(*node);
-  copy->entries.clear();
+  std::vector<YamlEntry> entries;
   const YamlEntry* include = node->find("include");
   if (include) {
     for (const YamlNode* name : include_names(*include->value)) {
       const YamlNodePtr included = load_include(*name, read_include, chain);
       if (included->is_null()) continue;
       if (!included->is_mapping())
-        throw InputError(name->at.location(), "include '" + name->scalar + "': a mapping includes a mapping, got " + included->describe());
-      merge_entries(copy->entries, included->entries);
+        throw InputError(name->at.location(), "include '" + std::string(name->scalar) + "': a mapping includes a mapping, got " + included->describe());
+      merge_entries(entries, included->entries);
     }
   }
-  YamlEntryList own(copy->entries.get_allocator());
+  std::vector<YamlEntry> own;
   for (const YamlEntry& entry : node->entries)
     if (&entry != include) own.push_back({entry.key, entry.key_at, expand_includes(entry.value, read_include, chain)});
-  merge_entries(copy->entries, own);
+  merge_entries(entries, own);
+  YamlNode* copy = arena_->node(*node);
+  copy->entries = arena_->list(entries);
   return copy;
 }
 

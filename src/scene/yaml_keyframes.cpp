@@ -1,6 +1,7 @@
 #include "yaml_keyframes.h"
 
 #include "rtpro/core/closest_match.h"
+#include "yaml_node_arena.h"
 
 #include <charconv>
 #include <cmath>
@@ -16,7 +17,7 @@ enum class Interpolation { kLinear, kSmooth, kStep };
 
 double parse_number(const YamlNode& node, const std::string& what) {
   double value = 0;
-  const std::string& text = node.scalar;
+  const std::string_view text = node.scalar;
   const char* begin = text.data() + (!text.empty() && text[0] == '+' ? 1 : 0);
   const auto [end, error] = std::from_chars(begin, text.data() + text.size(), value);
   if (!node.is_scalar() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
@@ -42,7 +43,8 @@ Interpolation read_interpolation(const YamlNode* node) {
     if (node->scalar == "smooth") return Interpolation::kSmooth;
     if (node->scalar == "step") return Interpolation::kStep;
   }
-  throw InputError(node->at.location(), "unknown interpolation " + node->describe() + suggestion(node->scalar, names));
+  throw InputError(node->at.location(),
+                   "unknown interpolation " + node->describe() + suggestion(std::string(node->scalar), names));
 }
 
 std::string number_text(double value) {
@@ -55,14 +57,14 @@ std::string number_text(double value) {
 
 bool is_keyframed(const YamlNode& node) { return node.is_mapping() && node.find("keyframes") != nullptr; }
 
-YamlNodePtr value_at_frame(const YamlNode& animated, double frame) {
+YamlNodePtr value_at_frame(const YamlNode& animated, double frame, YamlNodeArena& arena) {
   for (const YamlEntry& entry : animated.entries)
     if (entry.key != "keyframes" && entry.key != "interpolation")
-      throw InputError(entry.key_at.location(), "unknown key '" + entry.key + "' in an animated value" +
-                                                    suggestion(entry.key, {"keyframes", "interpolation"}));
+      throw InputError(entry.key_at.location(), "unknown key '" + std::string(entry.key) + "' in an animated value" +
+                                                    suggestion(std::string(entry.key), {"keyframes", "interpolation"}));
   const YamlNode& keys = *animated.find("keyframes")->value;
   const YamlEntry* interpolation_entry = animated.find("interpolation");
-  const Interpolation interpolation = read_interpolation(interpolation_entry ? interpolation_entry->value.get() : nullptr);
+  const Interpolation interpolation = read_interpolation(interpolation_entry ? interpolation_entry->value : nullptr);
   if (!keys.is_mapping() || keys.entries.empty())
     throw InputError(keys.at.location(), "keyframes: expected a mapping of frame numbers to values, got " + keys.describe());
 
@@ -78,7 +80,7 @@ YamlNodePtr value_at_frame(const YamlNode& animated, double frame) {
       throw InputError(key.value->at.location(), "keyframes: every key needs a value of the same shape as the first (" +
                                                      by_frame.begin()->second.second->describe() + "), got " +
                                                      key.value->describe());
-    by_frame[key_frame] = {std::move(numbers), key.value.get()};
+    by_frame[key_frame] = {std::move(numbers), key.value};
   }
 
   // The keys around `frame`: the same key when the frame is on one or outside them all.
@@ -108,20 +110,22 @@ YamlNodePtr value_at_frame(const YamlNode& animated, double frame) {
       break;
   }
 
-  const auto scalar_at = [&](double value) {
-    auto node = std::make_shared<YamlNode>();
+  const auto scalar_at = [&](double value) -> YamlNodePtr {
+    YamlNode* node = arena.node();
     node->kind = YamlNode::Kind::scalar;
     node->at = animated.at;
-    node->scalar = number_text(value);
+    node->scalar = arena.text(number_text(value));
     return node;
   };
   std::vector<double> values(from->size());
   for (std::size_t i = 0; i < values.size(); ++i) values[i] = t == 0.0 ? (*from)[i] : (*from)[i] + ((*to)[i] - (*from)[i]) * t;
   if (first.second->is_scalar()) return scalar_at(values[0]);
-  auto list = std::make_shared<YamlNode>();
+  std::vector<YamlNodePtr> items;
+  for (double value : values) items.push_back(scalar_at(value));
+  YamlNode* list = arena.node();
   list->kind = YamlNode::Kind::sequence;
   list->at = animated.at;
-  for (double value : values) list->items.push_back(scalar_at(value));
+  list->items = arena.list(items);
   return list;
 }
 

@@ -13,7 +13,7 @@ bool is_keyframed(const YamlNode& node);
 
 // The value of the keyframed `animated` at `frame`, positioned at `animated`. Throws InputError
 // at the offending node for keys that are not frame numbers, values of different shapes, or an
-// unknown interpolation.
-YamlNodePtr value_at_frame(const YamlNode& animated, double frame);
+// unknown interpolation. The value's nodes are made in `arena`.
+YamlNodePtr value_at_frame(const YamlNode& animated, double frame, YamlNodeArena& arena);
 
 }  // namespace rtpro

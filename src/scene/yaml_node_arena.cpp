@@ -2,7 +2,10 @@
 
 #include <sys/mman.h>
 
+#include <cstring>
+#include <memory>
 #include <new>
+#include <type_traits>
 
 namespace rtpro {
 
@@ -10,23 +13,9 @@ namespace {
 
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
 
-// The allocator of a node's shared_ptr control block: it owns a reference to the arena, so the
-// arena lives as long as any of its nodes.
-template <typename T>
-struct ArenaAllocator {
-  using value_type = T;
-  std::shared_ptr<YamlNodeArena> arena;
-
-  explicit ArenaAllocator(std::shared_ptr<YamlNodeArena> owner) : arena(std::move(owner)) {}
-  template <typename U>
-  ArenaAllocator(const ArenaAllocator<U>& other) : arena(other.arena) {}
-  T* allocate(std::size_t n) { return static_cast<T*>(arena->resource()->allocate(n * sizeof(T), alignof(T))); }
-  void deallocate(T*, std::size_t) {}  // the blocks are released all at once
-  template <typename U>
-  bool operator==(const ArenaAllocator<U>& other) const {
-    return arena == other.arena;
-  }
-};
+// The arena never runs destructors.
+static_assert(std::is_trivially_destructible_v<YamlNode>);
+static_assert(std::is_trivially_copyable_v<YamlEntry>);
 
 }  // namespace
 
@@ -44,8 +33,27 @@ void YamlNodeArena::HugePageBlocks::do_deallocate(void* block, std::size_t bytes
 
 YamlNodeArena::YamlNodeArena() : blocks_(kHugePage, &pages_) {}
 
-std::shared_ptr<YamlNode> make_node(const std::shared_ptr<YamlNodeArena>& arena) {
-  return std::allocate_shared<YamlNode>(ArenaAllocator<YamlNode>(arena), arena->resource());
+YamlNode* YamlNodeArena::node(const YamlNode& init) {
+  return new (blocks_.allocate(sizeof(YamlNode), alignof(YamlNode))) YamlNode(init);
 }
+
+std::string_view YamlNodeArena::text(std::string_view bytes) {
+  if (bytes.empty()) return {};
+  char* copy = static_cast<char*>(blocks_.allocate(bytes.size(), 1));
+  std::memcpy(copy, bytes.data(), bytes.size());
+  return {copy, bytes.size()};
+}
+
+template <typename T>
+std::span<const T> YamlNodeArena::copy(std::span<const T> values) {
+  if (values.empty()) return {};
+  T* copy = static_cast<T*>(blocks_.allocate(values.size_bytes(), alignof(T)));
+  std::uninitialized_copy(values.begin(), values.end(), copy);
+  return {copy, values.size()};
+}
+
+YamlNodeList YamlNodeArena::list(std::span<const YamlNodePtr> items) { return copy(items); }
+
+YamlEntryList YamlNodeArena::list(std::span<const YamlEntry> entries) { return copy(entries); }
 
 }  // namespace rtpro

@@ -42,24 +42,26 @@ Integer parse_integer(const YamlNode& node, const std::string& name, std::string
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (end != text.data() + text.size() || text.empty())
     fail_at(node, name + ": expected " + std::string(expected) + ", got " + node.describe());
-  if (error == std::errc::result_out_of_range) fail_at(node, name + ": " + node.scalar + " is out of range");
+  if (error == std::errc::result_out_of_range) fail_at(node, name + ": " + std::string(node.scalar) + " is out of range");
   return value;
 }
 
 }  // namespace
 
-MappingReader::MappingReader(const YamlNode& node, std::string what, std::vector<std::string> keys)
+MappingReader::MappingReader(const YamlNode& node, std::string what, std::initializer_list<std::string_view> keys)
     : node_(node), what_(std::move(what)) {
   if (!node.is_mapping()) fail_at(node, what_ + ": expected a mapping, got " + node.describe());
   for (const YamlEntry& entry : node.entries) {
-    if (std::find(keys.begin(), keys.end(), entry.key) == keys.end())
-      fail_at(entry.key_at, "unknown key '" + entry.key + "' in " + what_ + suggestion(entry.key, keys));
+    if (std::find(keys.begin(), keys.end(), entry.key) == keys.end()) {
+      fail_at(entry.key_at, "unknown key '" + std::string(entry.key) + "' in " + what_ +
+                                suggestion(entry.key, std::vector<std::string>(keys.begin(), keys.end())));
+    }
   }
 }
 
 const YamlNode* MappingReader::optional(std::string_view key) const {
   const YamlEntry* entry = node_.find(key);
-  return entry ? entry->value.get() : nullptr;
+  return entry ? entry->value : nullptr;
 }
 
 const YamlNode& MappingReader::required(std::string_view key) const {
@@ -84,13 +86,13 @@ std::string read_entry_type(const YamlNode& entry, const std::string& what, cons
 
 double read_number(const YamlNode& node, const std::string& name) {
   const std::string_view text = without_plus(scalar_or_fail(node, name, "a number").scalar);
-  if (is_yaml_special_float(text)) fail_at(node, name + ": expected a finite number, got '" + node.scalar + "'");
+  if (is_yaml_special_float(text)) fail_at(node, name + ": expected a finite number, got '" + std::string(node.scalar) + "'");
   double value = 0.0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (end != text.data() + text.size() || text.empty())
     fail_at(node, name + ": expected a number, got " + node.describe());
   if (error == std::errc::result_out_of_range || !std::isfinite(value) || std::fabs(value) > kMaxSceneNumber) {
-    fail_at(node, name + ": " + node.scalar + " is out of range (numbers must be finite and within ±1e9)");
+    fail_at(node, name + ": " + std::string(node.scalar) + " is out of range (numbers must be finite and within ±1e9)");
   }
   return value;
 }
@@ -105,10 +107,10 @@ std::uint64_t read_unsigned(const YamlNode& node, const std::string& name) {
 
 std::string read_string(const YamlNode& node, const std::string& name) {
   if (!node.is_scalar() || node.scalar.empty()) fail_at(node, name + ": expected a name, got " + node.describe());
-  return node.scalar;
+  return std::string(node.scalar);
 }
 
-const YamlNodeList& read_list(const YamlNode& node, const std::string& name, std::size_t count,
+YamlNodeList read_list(const YamlNode& node, const std::string& name, std::size_t count,
                                           std::string_view shape) {
   if (!node.is_sequence() || node.items.size() != count)
     fail_at(node, name + ": expected " + std::string(shape) + ", got " + node.describe());
@@ -123,30 +125,32 @@ Vec3 read_vec3(const YamlNode& node, const std::string& name) {
 
 namespace {
 
-bool is_whole_number_text(const std::string& text) {
-  return !text.empty() && text.find_first_not_of("+0123456789") == std::string::npos;
+bool is_whole_number_text(std::string_view text) {
+  return !text.empty() && text.find_first_not_of("+0123456789") == std::string_view::npos;
 }
+
+double whole_number(std::string_view text) { return std::strtod(std::string(text).c_str(), nullptr); }
 
 // [255, 128, 0] is an 8-bit colour picker's value, not a linear colour 255 times "full": a
 // material would reflect 255 times the light it receives. Whole numbers above 1, all at most
 // 255, are refused with the linear value; HDR colours are written with a decimal point, and a
 // brighter light raises its intensity.
-void reject_8bit_color(const YamlNode& node, const YamlNodeList& items, const std::string& name) {
+void reject_8bit_color(const YamlNode& node, YamlNodeList items, const std::string& name) {
   double largest = 0.0;
   for (const YamlNodePtr& item : items) {
     if (!is_whole_number_text(item->scalar)) return;
-    largest = std::max(largest, std::strtod(item->scalar.c_str(), nullptr));
+    largest = std::max(largest, whole_number(item->scalar));
   }
   if (largest <= 1.0 || largest > 255.0) return;
   std::string linear;
   for (const YamlNodePtr& item : items) {
     char text[32];
-    const double encoded = std::strtod(item->scalar.c_str(), nullptr) / 255.0;
+    const double encoded = whole_number(item->scalar) / 255.0;
     const double decoded = encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
     std::snprintf(text, sizeof text, "%.3g", decoded);
     linear += (linear.empty() ? "" : ", ") + std::string(text);
   }
-  fail_at(node, name + ": [" + items[0]->scalar + ", " + items[1]->scalar + ", " + items[2]->scalar +
+  fail_at(node, name + ": [" + std::string(items[0]->scalar) + ", " + std::string(items[1]->scalar) + ", " + std::string(items[2]->scalar) +
                     "] looks like 8-bit sRGB values; colours are linear with 1 as full: that colour is [" + linear +
                     "] (for a brighter light raise its intensity; write 2.0 for a deliberate value above 1)");
 }
@@ -158,7 +162,7 @@ Color read_color(const YamlNode& node, const std::string& name) {
   Color color;
   for (int i = 0; i < 3; ++i) {
     const double component = read_number(*items[i], name);
-    if (component < 0.0) fail_at(*items[i], name + ": colour components must be >= 0, got " + items[i]->scalar);
+    if (component < 0.0) fail_at(*items[i], name + ": colour components must be >= 0, got " + std::string(items[i]->scalar));
     color[i] = static_cast<float>(component);
   }
   reject_8bit_color(node, items, name);

@@ -6,6 +6,7 @@
 #include "yaml_document.h"
 
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -25,7 +26,7 @@ inline constexpr double kMaxSceneNumber = 1e9;
 class MappingReader {
  public:
   // `what` names the mapping in messages: "camera", "sphere", "material 'red'".
-  MappingReader(const YamlNode& node, std::string what, std::vector<std::string> keys);
+  MappingReader(const YamlNode& node, std::string what, std::initializer_list<std::string_view> keys);
 
   const YamlNode* optional(std::string_view key) const;
   const YamlNode& required(std::string_view key) const;
@@ -50,7 +51,7 @@ Vec3 read_vec3(const YamlNode& node, const std::string& name);
 // A vec3 whose components are all >= 0 (colours).
 Color read_color(const YamlNode& node, const std::string& name);
 // A list of exactly `count` items, or a failure naming the expected shape.
-const YamlNodeList& read_list(const YamlNode& node, const std::string& name, std::size_t count,
+YamlNodeList read_list(const YamlNode& node, const std::string& name, std::size_t count,
                                           std::string_view shape);
 
 }  // namespace rtpro

@@ -119,7 +119,7 @@ class ObjectsReader {
       fail_at(*objects, "objects: expected a mapping of name: [entries], got " + objects->describe());
     if (has_objects) {
       for (const YamlEntry& entry : objects->entries) {
-        objects_.add(entry.key, static_cast<std::uint32_t>(scene.objects.size()));
+        objects_.add(std::string(entry.key), static_cast<std::uint32_t>(scene.objects.size()));
         scene.objects.emplace_back().name = entry.key;
       }
     }
@@ -127,7 +127,7 @@ class ObjectsReader {
     if (has_objects) {
       for (std::size_t i = 0; i < objects->entries.size(); ++i) {
         const YamlEntry& entry = objects->entries[i];
-        read_entries(entry.value.get(), "object '" + entry.key + "'", scene.objects[i], links_[i]);
+        read_entries(entry.value, "object '" + std::string(entry.key) + "'", scene.objects[i], links_[i]);
       }
     }
     scene.world.name = "world";
@@ -166,7 +166,7 @@ class ObjectsReader {
     if (const YamlNode* center = sphere.optional("center")) desc.center = read_vec3(*center, sphere.field("center"));
     if (const YamlNode* radius = sphere.optional("radius")) {
       const double value = read_number(*radius, sphere.field("radius"));
-      if (!(value > 0.0)) fail_at(*radius, sphere.field("radius") + " must be > 0, got " + radius->scalar);
+      if (!(value > 0.0)) fail_at(*radius, sphere.field("radius") + " must be > 0, got " + std::string(radius->scalar));
       desc.radius = static_cast<float>(value);
     }
     if (const YamlNode* material = sphere.optional("material"))

@@ -9,7 +9,8 @@ namespace rtpro {
 
 namespace {
 
-const std::vector<std::string> kStepKeys = {"translate", "rotate", "scale", "matrix"};
+// The backing array of a namespace-scope initializer_list lives as long as the program.
+const std::initializer_list<std::string_view> kStepKeys = {"translate", "rotate", "scale", "matrix"};
 
 Affine read_rotation(const YamlNode& node, const std::string& name) {
   if (node.is_sequence()) {
@@ -52,14 +53,14 @@ Affine read_matrix(const YamlNode& node, const std::string& name) {
       if (row < 3) {
         matrix.m[row][column] = static_cast<float>(value);
       } else if (value != (column == 3 ? 1.0 : 0.0)) {
-        fail_at(item, name + ": the last row must be 0 0 0 1 (an affine transform), got " + item.scalar);
+        fail_at(item, name + ": the last row must be 0 0 0 1 (an affine transform), got " + std::string(item.scalar));
       }
     }
   }
   return matrix;
 }
 
-Affine read_step(const std::string& key, const YamlNode& value, const std::string& name) {
+Affine read_step(std::string_view key, const YamlNode& value, const std::string& name) {
   if (key == "translate") return Affine::translate(read_vec3(value, name));
   if (key == "rotate") return read_rotation(value, name);
   if (key == "scale") return read_scale(value, name);

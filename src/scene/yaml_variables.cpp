@@ -4,6 +4,7 @@
 
 #include "rtpro/core/closest_match.h"
 #include "yaml_keyframes.h"
+#include "yaml_node_arena.h"
 
 #include <charconv>
 #include <cmath>
@@ -20,14 +21,14 @@ bool is_name_char(char c) { return is_name_start(c) || (c >= '0' && c <= '9'); }
 
 class Substitution {
  public:
-  explicit Substitution(const YamlNode& variables) {
+  Substitution(const YamlNode& variables, YamlNodeArena& arena) : arena_(arena) {
     if (!variables.is_mapping() && !variables.is_null())
       throw InputError(variables.at.location(), "variables: expected a mapping of names to values, got " + variables.describe());
     for (const YamlEntry& entry : variables.entries) {
       if (entry.key.empty() || !is_name_start(entry.key[0]) ||
           entry.key.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
-        throw InputError(entry.key_at.location(), "variables: '" + entry.key + "' is not a name (letters, digits and '_', not starting with a digit)");
-      values_[entry.key] = entry.value;
+        throw InputError(entry.key_at.location(), "variables: '" + std::string(entry.key) + "' is not a name (letters, digits and '_', not starting with a digit)");
+      values_[std::string(entry.key)] = entry.value;
       if (entry.key_at.line == 0 && entry.key_at.source) command_line_.push_back(&entry);
     }
   }
@@ -37,7 +38,7 @@ class Substitution {
     for (const YamlEntry* entry : command_line_) {
       // --frames sets `frame` for every frame, whether or not this scene is animated.
       if (used_.count(entry->key) || entry->key == "frame") continue;
-      std::string message = "the scene uses no variable '$" + entry->key + "'";
+      std::string message = "the scene uses no variable '$" + std::string(entry->key) + "'";
       if (const auto near = closest_match(entry->key, unused_candidates())) message += "; did you mean '" + *near + "'?";
       throw InputError(entry->key_at.location(), message);
     }
@@ -46,29 +47,33 @@ class Substitution {
   // Each node is substituted once: YAML aliases share nodes, and a document of nested aliases
   // (a: [*b, *b], b: [*c, *c], ...) is a small graph that copying per path would blow up
   // exponentially (a fuzz finding: 766 bytes, 2 GB). The result shares nodes the same way.
-  YamlNodePtr apply(const YamlNodePtr& node) const {
-    if (const auto done = applied_.find(node.get()); done != applied_.end()) return done->second;
+  YamlNodePtr apply(YamlNodePtr node) const {
+    if (const auto done = applied_.find(node); done != applied_.end()) return done->second;
     YamlNodePtr result = apply_once(node);
-    applied_.emplace(node.get(), result);
+    applied_.emplace(node, result);
     return result;
   }
 
  private:
-  YamlNodePtr apply_once(const YamlNodePtr& node) const {
+  YamlNodePtr apply_once(YamlNodePtr node) const {
     switch (node->kind) {
       case YamlNode::Kind::null:
         return node;
       case YamlNode::Kind::scalar:
-        return node->scalar.find('$') == std::string::npos ? node : substitute(*node);
+        return node->scalar.find('$') == std::string_view::npos ? node : substitute(*node);
       case YamlNode::Kind::sequence: {
-        auto copy = std::make_shared<YamlNode>(*node);
-        for (YamlNodePtr& item : copy->items) item = apply(item);
+        std::vector<YamlNodePtr> items(node->items.begin(), node->items.end());
+        for (YamlNodePtr& item : items) item = apply(item);
+        YamlNode* copy = arena_.node(*node);
+        copy->items = arena_.list(items);
         return copy;
       }
       case YamlNode::Kind::mapping: {
-        auto copy = std::make_shared<YamlNode>(*node);
-        for (YamlEntry& entry : copy->entries) entry.value = apply(entry.value);
-        if (is_keyframed(*copy)) return value_at_frame(*copy, frame());
+        std::vector<YamlEntry> entries(node->entries.begin(), node->entries.end());
+        for (YamlEntry& entry : entries) entry.value = apply(entry.value);
+        YamlNode* copy = arena_.node(*node);
+        copy->entries = arena_.list(entries);
+        if (is_keyframed(*copy)) return value_at_frame(*copy, frame(), arena_);
         return copy;
       }
     }
@@ -82,21 +87,21 @@ class Substitution {
   };
 
   static Reference reference_at(const YamlNode& node, std::size_t i) {
-    const std::string& text = node.scalar;
+    const std::string_view text = node.scalar;
     if (i < text.size() && text[i] == '{') {
       const std::size_t close = text.find('}', i);
-      if (close == std::string::npos)
+      if (close == std::string_view::npos)
         throw InputError(node.at.location(), "'${' without its closing '}' in " + node.describe());
-      return {text.substr(i + 1, close - i - 1), close - i + 1};
+      return {std::string(text.substr(i + 1, close - i - 1)), close - i + 1};
     }
     std::size_t end = i;
     while (end < text.size() && is_name_char(text[end])) ++end;
     if (end == i || !is_name_start(text[i]))
       throw InputError(node.at.location(), "'$' must start a variable reference ($name or ${name}; '$$' for a '$') in " + node.describe());
-    return {text.substr(i, end - i), end - i};
+    return {std::string(text.substr(i, end - i)), end - i};
   }
 
-  const YamlNodePtr& lookup(const YamlNode& node, const std::string& name) const {
+  YamlNodePtr lookup(const YamlNode& node, const std::string& name) const {
     const auto found = values_.find(name);
     if (found != values_.end()) {
       used_.insert(name);
@@ -110,7 +115,7 @@ class Substitution {
   }
 
   YamlNodePtr substitute(const YamlNode& node) const {
-    const std::string& text = node.scalar;
+    const std::string_view text = node.scalar;
     if (text[0] == '$' && text.size() > 1 && text[1] != '$') {
       const Reference whole = reference_at(node, 1);
       if (1 + whole.length == text.size()) return lookup(node, whole.name);
@@ -124,7 +129,7 @@ class Substitution {
         ++i;
       } else {
         const Reference part = reference_at(node, i + 1);
-        const YamlNodePtr& value = lookup(node, part.name);
+        const YamlNodePtr value = lookup(node, part.name);
         if (!value->is_scalar())
           throw InputError(node.at.location(), "'$" + part.name + "' is " + value->describe() +
                                                    ", which cannot be part of a longer text; use it alone");
@@ -132,8 +137,8 @@ class Substitution {
         i += part.length;
       }
     }
-    auto copy = std::make_shared<YamlNode>(node);
-    copy->scalar = std::move(result);
+    YamlNode* copy = arena_.node(node);
+    copy->scalar = arena_.text(result);
     return copy;
   }
 
@@ -159,9 +164,10 @@ class Substitution {
     return names;
   }
 
+  YamlNodeArena& arena_;
   std::map<std::string, YamlNodePtr> values_;
   std::vector<const YamlEntry*> command_line_;
-  mutable std::set<std::string> used_;
+  mutable std::set<std::string, std::less<>> used_;
   mutable std::unordered_map<const YamlNode*, YamlNodePtr> applied_;
 };
 
@@ -169,15 +175,19 @@ class Substitution {
 
 void YamlDocument::resolve_variables() {
   if (!has_variables_ || !root_->is_mapping()) return;
-  auto root = std::make_shared<YamlNode>(*root_);
-  auto variables = std::make_shared<YamlNode>();  // held: the substitution points into it
-  for (auto entry = root->entries.begin(); entry != root->entries.end(); ++entry) {
-    if (entry->key != "variables") continue;
-    variables = std::const_pointer_cast<YamlNode>(entry->value);
-    root->entries.erase(entry);
-    break;
+  const YamlNode none;
+  const YamlNode* variables = &none;
+  std::vector<YamlEntry> entries;
+  for (const YamlEntry& entry : root_->entries) {
+    if (entry.key == "variables" && variables == &none) {
+      variables = entry.value;
+    } else {
+      entries.push_back(entry);
+    }
   }
-  const Substitution substitution(*variables);
+  YamlNode* root = arena_->node(*root_);
+  root->entries = arena_->list(entries);
+  const Substitution substitution(*variables, *arena_);
   root_ = substitution.apply(root);
   substitution.check_command_line_variables_used();
 }
