@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <type_traits>
 
@@ -32,20 +34,70 @@ constexpr std::size_t kChunk = 8192;
 
 // Trivially constructible, so that an array of them is filled by parallel tasks without first
 // being initialised by one thread (those first writes were a seventh of the build).
-struct BuildPrimitive {
-  float lower[3], upper[3], centroid[3];
-  PrimitiveRef ref;
+// 32 bytes, the reference in the bounds' fourth lanes: every level of the build streams the whole
+// array two or three times, so its size is the build's memory traffic. The centroid is computed
+// where it is needed, with BBox::center's operations.
+struct alignas(16) BuildPrimitive {
+  float lower[3];
+  std::uint32_t geom;
+  float upper[3];
+  std::uint32_t prim;
 
   BBox bounds() const { return {{lower[0], lower[1], lower[2]}, {upper[0], upper[1], upper[2]}}; }
+  float centroid(int axis) const { return (lower[axis] + upper[axis]) * 0.5f; }
+  PrimitiveRef ref() const { return {geom, prim}; }
 };
+static_assert(sizeof(BuildPrimitive) == 32);
 static_assert(std::is_trivially_default_constructible_v<BuildPrimitive>);
 
-struct Bin {
-  BBox bounds;
-  int count = 0;
+// The bins of one range along all three axes: per bin, a box and a primitive count for each axis
+// (lanes 0-2 of `counts`; lane 3 is unused).
+struct AxisBins {
+  std::array<std::array<Box4, 3>, kBinCount> boxes;  // [bin][axis]
+  alignas(16) std::array<std::array<std::int32_t, 4>, kBinCount> counts{};
+
+  void join(const AxisBins& other) {
+    for (int k = 0; k < kBinCount; ++k) {
+      for (int axis = 0; axis < 3; ++axis) boxes[k][axis].extend(other.boxes[k][axis].lower, other.boxes[k][axis].upper);
+      for (int axis = 0; axis < 3; ++axis) counts[k][axis] += other.counts[k][axis];
+    }
+  }
 };
-using Bins = std::array<Bin, kBinCount>;
-using AxisBins = std::array<Bins, 3>;
+
+// Three boxes as coordinates across boxes: x[a] is box a's x, and so on (lane 3 unused).
+struct Boxes3 {
+  __m128 lower[3], upper[3];
+
+  Boxes3() {
+    for (int c = 0; c < 3; ++c) {
+      lower[c] = _mm_set1_ps(std::numeric_limits<float>::infinity());
+      upper[c] = _mm_set1_ps(-std::numeric_limits<float>::infinity());
+    }
+  }
+  // Box4::extend (and so BBox::extend) lane by lane, for the three boxes of one bin.
+  void extend(const std::array<Box4, 3>& boxes) {
+    __m128 lo[4] = {boxes[0].lower, boxes[1].lower, boxes[2].lower, _mm_setzero_ps()};
+    __m128 hi[4] = {boxes[0].upper, boxes[1].upper, boxes[2].upper, _mm_setzero_ps()};
+    _MM_TRANSPOSE4_PS(lo[0], lo[1], lo[2], lo[3]);
+    _MM_TRANSPOSE4_PS(hi[0], hi[1], hi[2], hi[3]);
+    for (int c = 0; c < 3; ++c) {
+      lower[c] = _mm_min_ps(lo[c], lower[c]);
+      upper[c] = _mm_max_ps(hi[c], upper[c]);
+    }
+  }
+  // BBox::surface_area of each box, with its operations in its order: 0 for an empty box, else
+  // 2 * ((ex * ey + ey * ez) + ez * ex).
+  __m128 surface_areas() const {
+    const __m128 ex = _mm_sub_ps(upper[0], lower[0]);
+    const __m128 ey = _mm_sub_ps(upper[1], lower[1]);
+    const __m128 ez = _mm_sub_ps(upper[2], lower[2]);
+    const __m128 sum = _mm_add_ps(_mm_add_ps(_mm_mul_ps(ex, ey), _mm_mul_ps(ey, ez)), _mm_mul_ps(ez, ex));
+    const __m128 area = _mm_mul_ps(_mm_set1_ps(2.0f), sum);
+    const __m128 empty = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(lower[0], upper[0]), _mm_cmpgt_ps(lower[1], upper[1])),
+                                   _mm_cmpgt_ps(lower[2], upper[2]));
+    return _mm_andnot_ps(empty, area);
+  }
+};
 
 struct Split {
   int axis = -1;
@@ -66,10 +118,16 @@ struct Decision {
   int axis;
 };
 
-// A primitive's bounds as two lanes-of-four; the fourth lane holds the next field's bytes, which
-// are normal floats (upper.x, centroid.x) and never reach a result.
-__m128 lower4(const BuildPrimitive& p) { return _mm_loadu_ps(p.lower); }
-__m128 upper4(const BuildPrimitive& p) { return _mm_loadu_ps(p.upper); }
+// A primitive's bounds as two lanes-of-four. The fourth lanes hold the reference's bits, which
+// min and max carry along and no result reads.
+__m128 lower4(const BuildPrimitive& p) { return _mm_load_ps(p.lower); }
+__m128 upper4(const BuildPrimitive& p) { return _mm_load_ps(p.upper); }
+// The centroid, lane by lane as BBox::center computes it, the fourth lane 0: the reference's bits
+// could be denormals, which arithmetic on some processors takes slow paths for.
+__m128 centroid4(__m128 lower, __m128 upper) {
+  const __m128 xyz = _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0));
+  return _mm_mul_ps(_mm_add_ps(_mm_and_ps(lower, xyz), _mm_and_ps(upper, xyz)), _mm_set1_ps(0.5f));
+}
 
 BvhNode relocated(BvhNode node, std::uint32_t shift) {
   if (!node.is_leaf()) node.index += shift;
@@ -94,7 +152,7 @@ class BvhBuilder {
     if (count_ == 0) return bvh;
     const std::uint32_t count = count_;
     if (!parallel_) {
-      const std::uint32_t size = build_sequential(0, count, 0);
+      const std::uint32_t size = build_sequential(scratch_.get(), 0, count, 0);
       bvh.nodes.assign(scratch_.get(), scratch_.get() + size);
     } else {
       Part root;
@@ -107,15 +165,16 @@ class BvhBuilder {
     }
     bvh.refs.resize(count);
     for_range(0, count, [&](std::uint32_t begin, std::uint32_t end) {
-      for (std::uint32_t i = begin; i < end; ++i) bvh.refs[i] = prims_[i].ref;
+      for (std::uint32_t i = begin; i < end; ++i) bvh.refs[i] = prims_[i].ref();
     });
     return bvh;
   }
 
  private:
   // A subtree of the parallel phase: either an interior node whose children were built by two
-  // tasks, or a subtree built by one task into the scratch array (its root first, then its
-  // descendants as build_sequential lays them out, indices counted from the root).
+  // tasks, or a subtree built by one task into the scratch array from 2 * begin (its root first,
+  // then its descendants as build_sequential lays them out, indices counted from the root; a tree
+  // over n primitives has at most 2n - 1 nodes, so subtrees never overlap).
   struct Part {
     BvhNode node{};
     std::unique_ptr<Part> left, right;
@@ -130,11 +189,10 @@ class BvhBuilder {
   };
 
   // The single-threaded builder: depth first, both children of a node allocated together, the
-  // left subtree finished before the right one starts. Writes the subtree to scratch_ from
-  // 2 * begin (a tree over n primitives has at most 2n - 1 nodes, so ranges never overlap) and
-  // returns its node count.
-  std::uint32_t build_sequential(std::uint32_t begin, std::uint32_t end, int depth) {
-    BvhNode* const nodes = scratch_.get() + 2 * std::size_t{begin};
+  // left subtree finished before the right one starts. Writes the subtree to `nodes`, which has
+  // room for 2 * (end - begin) - 1 (the most a tree over that many primitives has), and returns
+  // its node count.
+  std::uint32_t build_sequential(BvhNode* nodes, std::uint32_t begin, std::uint32_t end, int depth) {
     std::uint32_t size = 1;
     struct Task {
       std::uint32_t node, begin, end;
@@ -163,7 +221,7 @@ class BvhBuilder {
   void build_part(Part& part, std::uint32_t begin, std::uint32_t end, int depth) {
     if (end - begin <= kParallelSubtree) {
       part.first = 2 * begin;
-      part.size = build_sequential(begin, end, depth);
+      part.size = build_sequential(scratch_.get() + part.first, begin, end, depth);
       return;
     }
     const Decision d = decide(begin, end, depth);
@@ -235,11 +293,11 @@ class BvhBuilder {
         begin, end,
         [this](RangeBounds r, std::uint32_t b, std::uint32_t e) {
           Box4 bounds(r.bounds), centroids(r.centroids);
-          const __m128 xyz = _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0));  // the centroid's 4th lane is a ref
           for (std::uint32_t i = b; i < e; ++i) {
             const BuildPrimitive& p = prims_[i];
-            bounds.extend(lower4(p), upper4(p));
-            const __m128 c = _mm_and_ps(_mm_loadu_ps(p.centroid), xyz);
+            const __m128 lower = lower4(p), upper = upper4(p);
+            bounds.extend(lower, upper);
+            const __m128 c = centroid4(lower, upper);
             centroids.extend(c, c);
           }
           return RangeBounds{bounds.box(), centroids.box()};
@@ -283,7 +341,7 @@ class BvhBuilder {
     const float scale = kBinCount / centroids.extent()[split.axis];
     // std::partition, not a parallel one: its exact order of the two sides is part of the tree.
     auto* middle = std::partition(prims_.get() + begin, prims_.get() + end, [&](const BuildPrimitive& p) {
-      return bin_of(p.centroid[split.axis], lo, scale) <= split.bin;
+      return bin_of(p.centroid(split.axis), lo, scale) <= split.bin;
     });
     const auto mid = static_cast<std::uint32_t>(middle - prims_.get());
     if (mid == begin || mid == end) return median_split(begin, end, axis);
@@ -295,84 +353,92 @@ class BvhBuilder {
     return std::clamp(b, 0, kBinCount - 1);
   }
 
-  // The bins of every axis whose centroids spread, in one pass over the range: each bin still
-  // sees its primitives in array order, so this is exactly three separate passes' result.
+  // bin_of lane by lane: cvttps2dq truncates as static_cast<int> does (and gives INT_MIN where
+  // it is out of range, as cvttss2si does), then the same clamp with SSE2's compares.
+  static __m128i bin_of(__m128 values, __m128 lo, __m128 scale) {
+    const __m128i b = _mm_cvttps_epi32(_mm_mul_ps(_mm_sub_ps(values, lo), scale));
+    const __m128i zero = _mm_setzero_si128(), last = _mm_set1_epi32(kBinCount - 1);
+    const __m128i at_least_zero = _mm_andnot_si128(_mm_cmplt_epi32(b, zero), b);
+    const __m128i above = _mm_cmpgt_epi32(at_least_zero, last);
+    return _mm_or_si128(_mm_and_si128(above, last), _mm_andnot_si128(above, at_least_zero));
+  }
+
+  // The bins of all three axes in one pass over the range: each bin still sees its primitives in
+  // array order, so this is exactly three separate passes' result. An axis whose centroids do
+  // not spread gets scale 0 (every primitive in bin 0) and is not used.
   AxisBins bin(std::uint32_t begin, std::uint32_t end, const BBox& centroids) const {
-    std::array<bool, 3> used{};
-    std::array<float, 3> lo{}, scale{};
+    alignas(16) float lo[4] = {centroids.lower.x, centroids.lower.y, centroids.lower.z, 0.0f};
+    alignas(16) float scale[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     for (int axis = 0; axis < 3; ++axis) {
       const float extent = centroids.extent()[axis];
-      used[axis] = extent > 0.0f;
-      lo[axis] = centroids.lower[axis];
-      scale[axis] = used[axis] ? kBinCount / extent : 0.0f;
+      if (extent > 0.0f) scale[axis] = kBinCount / extent;
     }
+    const __m128 lo4 = _mm_load_ps(lo), scale4 = _mm_load_ps(scale);
     // Fresh bins for [b, e): the per-node cost matters as much as the per-primitive one, since
     // most of the ~450,000 nodes of a million-triangle tree cover a few dozen primitives.
     auto fold = [&](std::uint32_t b, std::uint32_t e) {
-      std::array<std::array<Box4, kBinCount>, 3> boxes;
-      std::array<std::array<int, kBinCount>, 3> counts{};
+      AxisBins bins;
+      alignas(16) std::int32_t k[4];
       for (std::uint32_t i = b; i < e; ++i) {
         const BuildPrimitive& p = prims_[i];
         const __m128 lower = lower4(p), upper = upper4(p);
+        // bin_of for the three axes at once (lane 3 is never read).
+        _mm_store_si128(reinterpret_cast<__m128i*>(k), bin_of(centroid4(lower, upper), lo4, scale4));
         for (int axis = 0; axis < 3; ++axis) {
-          if (!used[axis]) continue;
-          const int k = bin_of(p.centroid[axis], lo[axis], scale[axis]);
-          boxes[axis][k].extend(lower, upper);
-          ++counts[axis][k];
+          bins.boxes[k[axis]][axis].extend(lower, upper);
+          ++bins.counts[k[axis]][axis];
         }
-      }
-      AxisBins bins;
-      for (int axis = 0; axis < 3; ++axis) {
-        if (!used[axis]) continue;
-        for (int k = 0; k < kBinCount; ++k) bins[axis][k] = {boxes[axis][k].box(), counts[axis][k]};
       }
       return bins;
-    };
-    auto join = [](AxisBins a, const AxisBins& b) {
-      for (int axis = 0; axis < 3; ++axis) {
-        for (int k = 0; k < kBinCount; ++k) {
-          a[axis][k].bounds.extend(b[axis][k].bounds);
-          a[axis][k].count += b[axis][k].count;
-        }
-      }
-      return a;
     };
     if (!parallel_ || end - begin < kParallelRange) return fold(begin, end);
     return tbb::parallel_deterministic_reduce(
         tbb::blocked_range<std::uint32_t>(begin, end, kChunk), AxisBins{},
-        [&](const tbb::blocked_range<std::uint32_t>& r, const AxisBins& so_far) {
-          return join(so_far, fold(r.begin(), r.end()));
+        [&](const tbb::blocked_range<std::uint32_t>& r, AxisBins so_far) {
+          so_far.join(fold(r.begin(), r.end()));
+          return so_far;
         },
-        join, tbb::simple_partitioner());
+        [](AxisBins a, const AxisBins& b) {
+          a.join(b);
+          return a;
+        },
+        tbb::simple_partitioner());
   }
 
+  // The sweeps run over the three axes at once, one lane each, with the scalar operations in
+  // their order; the choice among the costs stays scalar, in the order axis by axis, bin by bin.
   Split best_sah_split(std::uint32_t begin, std::uint32_t end, const RangeBounds& range) const {
+    const AxisBins bins = bin(begin, end, range.centroids);
+    // From the right, the area x count of every right side; then from the left, every split's cost.
+    alignas(16) float right_cost[kBinCount][4];
+    Boxes3 right;
+    __m128i right_count = _mm_setzero_si128();
+    for (int b = kBinCount - 1; b > 0; --b) {
+      right.extend(bins.boxes[b]);
+      right_count = _mm_add_epi32(right_count, _mm_load_si128(reinterpret_cast<const __m128i*>(bins.counts[b].data())));
+      _mm_store_ps(right_cost[b], _mm_mul_ps(right.surface_areas(), _mm_cvtepi32_ps(right_count)));
+    }
+    alignas(16) float cost[kBinCount][4];
+    alignas(16) std::int32_t left_count[kBinCount][4];
+    Boxes3 left;
+    __m128i count = _mm_setzero_si128();
+    for (int b = 0; b < kBinCount - 1; ++b) {
+      left.extend(bins.boxes[b]);
+      count = _mm_add_epi32(count, _mm_load_si128(reinterpret_cast<const __m128i*>(bins.counts[b].data())));
+      _mm_store_si128(reinterpret_cast<__m128i*>(left_count[b]), count);
+      const __m128 left_cost = _mm_mul_ps(left.surface_areas(), _mm_cvtepi32_ps(count));
+      _mm_store_ps(cost[b], _mm_add_ps(left_cost, _mm_load_ps(right_cost[b + 1])));
+    }
+
     Split best;
     float best_cost = 0.0f;
-    const AxisBins all_bins = bin(begin, end, range.centroids);
     for (int axis = 0; axis < 3; ++axis) {
-      const float extent = range.centroids.extent()[axis];
-      if (!(extent > 0.0f)) continue;
-      const Bins& bins = all_bins[axis];
-      // Sweep from the right to get the area × count of every right side, then from the left.
-      std::array<float, kBinCount> right_cost{};
-      BBox right;
-      int right_count = 0;
-      for (int b = kBinCount - 1; b > 0; --b) {
-        right.extend(bins[b].bounds);
-        right_count += bins[b].count;
-        right_cost[b] = right.surface_area() * right_count;
-      }
-      BBox left;
-      int left_count = 0;
+      if (!(range.centroids.extent()[axis] > 0.0f)) continue;
       for (int b = 0; b < kBinCount - 1; ++b) {
-        left.extend(bins[b].bounds);
-        left_count += bins[b].count;
-        if (left_count == 0 || left_count == static_cast<int>(end - begin)) continue;
-        const float cost = left.surface_area() * left_count + right_cost[b + 1];
-        if (best.axis < 0 || cost < best_cost) {
+        if (left_count[b][axis] == 0 || left_count[b][axis] == static_cast<std::int32_t>(end - begin)) continue;
+        if (best.axis < 0 || cost[b][axis] < best_cost) {
           best = {axis, b, 0.0f};
-          best_cost = cost;
+          best_cost = cost[b][axis];
         }
       }
     }
@@ -387,9 +453,9 @@ class BvhBuilder {
     const std::uint32_t mid = begin + (end - begin) / 2;
     std::nth_element(prims_.get() + begin, prims_.get() + mid, prims_.get() + end,
                      [axis](const BuildPrimitive& a, const BuildPrimitive& b) {
-                       const float ca = a.centroid[axis], cb = b.centroid[axis];
+                       const float ca = a.centroid(axis), cb = b.centroid(axis);
                        if (ca != cb) return ca < cb;
-                       return a.ref.geom != b.ref.geom ? a.ref.geom < b.ref.geom : a.ref.prim < b.ref.prim;
+                       return a.geom != b.geom ? a.geom < b.geom : a.prim < b.prim;
                      });
     return mid;
   }
@@ -412,11 +478,8 @@ HugePageBuffer<BuildPrimitive> build_primitives(const Group& group, std::span<co
                       [&](const tbb::blocked_range<std::uint32_t>& r) {
                         for (std::uint32_t p = r.begin(); p < r.end(); ++p) {
                           const BBox b = group.primitive_bounds(g, p, prototype_bounds);
-                          const Vec3 c = b.center();
-                          primitives[first[g] + p] = {{b.lower.x, b.lower.y, b.lower.z},
-                                                      {b.upper.x, b.upper.y, b.upper.z},
-                                                      {c.x, c.y, c.z},
-                                                      {g, p}};
+                          primitives[first[g] + p] = {{b.lower.x, b.lower.y, b.lower.z}, g,
+                                                      {b.upper.x, b.upper.y, b.upper.z}, p};
                         }
                       });
   });
