@@ -31,7 +31,7 @@ bool absent(const YamlNode* node) { return !node || node->is_null(); }
 
 float read_non_negative(const YamlNode& node, const std::string& name) {
   const double value = read_number(node, name);
-  if (value < 0.0) fail_at(node, name + " must be >= 0, got " + std::string(node.scalar));
+  if (value < 0.0) fail_at(node, name + " must be >= 0, got " + std::string(node.scalar()));
   return static_cast<float>(value);
 }
 
@@ -42,7 +42,7 @@ void read_version(const YamlNode& root) {
                       std::to_string(kSceneFormatVersion) + ")");
   }
   if (read_integer(*version->value, "rtpro") != kSceneFormatVersion) {
-    fail_at(*version->value, "rtpro: unsupported scene format version " + std::string(version->value->scalar) +
+    fail_at(*version->value, "rtpro: unsupported scene format version " + std::string(version->value->scalar()) +
                                  "; this rtpro reads version " + std::to_string(kSceneFormatVersion));
   }
 }
@@ -51,7 +51,7 @@ int read_image_side(const YamlNode& node, const std::string& name) {
   const std::int64_t side = read_integer(node, name);
   if (side < 1 || side > kMaxImageSide)
     fail_at(node,
-            name + ": each side must be from 1 to " + std::to_string(kMaxImageSide) + " pixels, got " + std::string(node.scalar));
+            name + ": each side must be from 1 to " + std::to_string(kMaxImageSide) + " pixels, got " + std::string(node.scalar()));
   return static_cast<int>(side);
 }
 
@@ -91,20 +91,20 @@ CameraDesc read_camera(const YamlNode& node) {
   if (const YamlNode* fov = camera.optional("fov")) {
     const double degrees = read_number(*fov, "camera.fov");
     if (!(degrees > 0.0 && degrees < 180.0))
-      fail_at(*fov, "camera.fov must be between 0 and 180 degrees (exclusive), got " + std::string(fov->scalar));
+      fail_at(*fov, "camera.fov must be between 0 and 180 degrees (exclusive), got " + std::string(fov->scalar()));
     desc.fov_degrees = static_cast<float>(degrees);
   }
   if (const YamlNode* resolution = camera.optional("resolution")) read_resolution(*resolution, desc);
   if (const YamlNode* aperture = camera.optional("aperture")) {
     const double radius = read_number(*aperture, "camera.aperture");
     if (!(radius >= 0.0) || !std::isfinite(radius))
-      fail_at(*aperture, "camera.aperture is the lens radius in scene units: 0 (a pinhole) or more, got " + std::string(aperture->scalar));
+      fail_at(*aperture, "camera.aperture is the lens radius in scene units: 0 (a pinhole) or more, got " + std::string(aperture->scalar()));
     desc.aperture = static_cast<float>(radius);
   }
   if (const YamlNode* focus = camera.optional("focus_distance")) {
     const double distance = read_number(*focus, "camera.focus_distance");
     if (!(distance > 0.0) || !std::isfinite(static_cast<float>(distance)))
-      fail_at(*focus, "camera.focus_distance must be a positive distance in scene units, got " + std::string(focus->scalar));
+      fail_at(*focus, "camera.focus_distance must be a positive distance in scene units, got " + std::string(focus->scalar()));
     desc.focus_distance = static_cast<float>(distance);
   }
   return desc;
@@ -113,7 +113,7 @@ CameraDesc read_camera(const YamlNode& node) {
 int read_spp(const YamlNode& node) {
   const std::int64_t spp = read_integer(node, "render.spp");
   if (spp < 1 || spp > kMaxSpp)
-    fail_at(node, "render.spp must be from 1 to " + std::to_string(kMaxSpp) + ", got " + std::string(node.scalar));
+    fail_at(node, "render.spp must be from 1 to " + std::to_string(kMaxSpp) + ", got " + std::string(node.scalar()));
   return static_cast<int>(spp);
 }
 
@@ -125,7 +125,7 @@ RenderSettings read_render(const YamlNode* node) {
   if (const YamlNode* depth = render.optional("max_depth")) {
     const std::int64_t value = read_integer(*depth, "render.max_depth");
     if (value < 0 || value > kMaxDepth)
-      fail_at(*depth, "render.max_depth must be from 0 to " + std::to_string(kMaxDepth) + ", got " + std::string(depth->scalar));
+      fail_at(*depth, "render.max_depth must be from 0 to " + std::to_string(kMaxDepth) + ", got " + std::string(depth->scalar()));
     settings.max_depth = static_cast<int>(value);
   }
   if (const YamlNode* seed = render.optional("seed")) settings.seed = read_unsigned(*seed, "render.seed");
@@ -145,7 +145,7 @@ CheckerDesc read_checker(const YamlNode& node, const std::string& name) {
     const double side = read_number(*size, checker.field("size"));
     if (!(side > 0.0) || !std::isfinite(static_cast<float>(1.0 / side)) || !std::isfinite(static_cast<float>(side)))
       fail_at(*size, checker.field("size") + " is the side of a square in scene units: positive and finite, got " +
-                         std::string(size->scalar));
+                         std::string(size->scalar()));
     desc.size = static_cast<float>(side);
   }
   if (const YamlNode* colors = checker.optional("colors")) {
@@ -215,13 +215,13 @@ MaterialDesc read_material(const std::string& name, const YamlNode& node, const 
   if (const YamlNode* reflectivity = material.optional("reflectivity")) {
     desc.reflectivity = read_non_negative(*reflectivity, material.field("reflectivity"));
     if (desc.reflectivity > 1.0f)
-      fail_at(*reflectivity, material.field("reflectivity") + " must be from 0 to 1, got " + std::string(reflectivity->scalar));
+      fail_at(*reflectivity, material.field("reflectivity") + " must be from 0 to 1, got " + std::string(reflectivity->scalar()));
   }
   if (const YamlNode* ior = material.optional("ior")) {
     const double index = read_number(*ior, material.field("ior"));
     if (!(index > 0.0) || !(index <= 100.0))
       fail_at(*ior, material.field("ior") + " is an index of refraction: above 0 (glass 1.5, water 1.33), got " +
-                        std::string(ior->scalar));
+                        std::string(ior->scalar()));
     desc.ior = static_cast<float>(index);
   }
   const YamlNode* transmittance = material.optional("transmittance");
@@ -238,7 +238,7 @@ MaterialDesc read_material(const std::string& name, const YamlNode& node, const 
   if (distance) {
     const double d = read_number(*distance, material.field("transmittance_distance"));
     if (!(d > 0.0) || !std::isfinite(static_cast<float>(d)))
-      fail_at(*distance, material.field("transmittance_distance") + " must be a positive distance, got " + std::string(distance->scalar));
+      fail_at(*distance, material.field("transmittance_distance") + " must be a positive distance, got " + std::string(distance->scalar()));
     desc.transmittance_distance = static_cast<float>(d);
   }
   return desc;
@@ -250,7 +250,7 @@ std::vector<MaterialDesc> read_materials(const YamlNode* node, const std::filesy
   if (absent(node)) return materials;
   if (!node->is_mapping())
     fail_at(*node, "materials: expected a mapping of name: {color: ...}, got " + node->describe());
-  for (const YamlEntry& entry : node->entries) {
+  for (const YamlEntry& entry : node->entries()) {
     MaterialDesc material = read_material(std::string(entry.key), *entry.value, folder);
     if (entry.key == "default") {
       materials[0] = std::move(material);
@@ -268,7 +268,7 @@ int read_light_samples(const MappingReader& light, int fallback) {
   const double n = read_number(*node, light.field("samples"));
   if (!(n >= 1.0 && n <= 64.0) || n != std::floor(n))
     fail_at(*node, light.field("samples") + " is shadow rays per axis (samples² per point): a whole number from 1 to 64, got " +
-                       std::string(node->scalar));
+                       std::string(node->scalar()));
   return static_cast<int>(n);
 }
 
@@ -279,7 +279,7 @@ LightDesc read_area_light(const YamlNode& node, const std::string& type) {
     desc.center = read_vec3(light.required("center"), light.field("center"));
     const YamlNode& radius = light.required("radius");
     desc.radius = static_cast<float>(read_number(radius, light.field("radius")));
-    if (!(desc.radius > 0.0f)) fail_at(radius, light.field("radius") + " must be positive, got " + std::string(radius.scalar));
+    if (!(desc.radius > 0.0f)) fail_at(radius, light.field("radius") + " must be positive, got " + std::string(radius.scalar()));
     if (const YamlNode* color = light.optional("color")) desc.color = read_color(*color, light.field("color"));
     if (const YamlNode* intensity = light.optional("intensity"))
       desc.intensity = read_non_negative(*intensity, light.field("intensity"));
@@ -331,7 +331,7 @@ std::vector<LightDesc> read_lights(const YamlNode* node) {
   std::vector<LightDesc> lights;
   if (absent(node)) return lights;
   if (!node->is_sequence()) fail_at(*node, "lights: expected a list of lights, got " + node->describe());
-  for (const YamlNodePtr& light : node->items) lights.push_back(read_light(*light));
+  for (const YamlNodePtr& light : node->items()) lights.push_back(read_light(*light));
   return lights;
 }
 

@@ -17,7 +17,7 @@ namespace rtpro {
 SourceLocation YamlPosition::location() const { return SourceLocation{source ? *source : std::string(), line, column}; }
 
 const YamlEntry* YamlNode::find(std::string_view key) const {
-  for (const YamlEntry& entry : entries)
+  for (const YamlEntry& entry : entries())
     if (entry.key == key) return &entry;
   return nullptr;
 }
@@ -28,11 +28,12 @@ std::string YamlNode::describe() const {
       return "an empty value";
     case Kind::scalar: {
       constexpr std::size_t kShown = 40;
-      const std::string shown = scalar.size() > kShown ? std::string(scalar.substr(0, kShown)) + "..." : std::string(scalar);
+      const std::string_view text = scalar();
+      const std::string shown = text.size() > kShown ? std::string(text.substr(0, kShown)) + "..." : std::string(text);
       return (plain ? "'" : "the quoted string '") + shown + "'";
     }
     case Kind::sequence:
-      return "a list of " + std::to_string(items.size()) + (items.size() == 1 ? " item" : " items");
+      return "a list of " + std::to_string(size_) + (size_ == 1 ? " item" : " items");
     case Kind::mapping:
       return "a mapping";
   }
@@ -113,7 +114,7 @@ class TreeBuilder {
           YamlNode* node = arena_.node();
           node->kind = YamlNode::Kind::scalar;
           node->at = position(mark);
-          node->scalar = arena_.text(value);
+          node->set_scalar(arena_.text(value));
           node->plain = event.data.scalar.style == YAML_PLAIN_SCALAR_STYLE;
           complete(node, anchor);
         }
@@ -151,8 +152,8 @@ class TreeBuilder {
   struct Open {
     YamlNode* node = nullptr;
     std::string anchor;
-    std::vector<YamlNodePtr> items;
-    std::vector<YamlEntry> entries;
+    std::vector<YamlNodePtr> item_list;
+    std::vector<YamlEntry> entry_list;
     bool pending = false;  // entries.back() is a key waiting for its value
   };
 
@@ -182,7 +183,7 @@ class TreeBuilder {
 
   void add_key(std::string_view key, const YamlPosition& at) {
     Open& mapping = levels_[depth_ - 1];
-    for (const YamlEntry& first : mapping.entries) {
+    for (const YamlEntry& first : mapping.entry_list) {
       if (first.key != key) continue;
       std::string message = "duplicate key '" + std::string(key) + "'";
       if (first.key_at.line > 0) message += " (first given at line " + std::to_string(first.key_at.line) + ")";
@@ -190,7 +191,7 @@ class TreeBuilder {
     }
     if (key == "include") saw_include_ = true;
     if (key == "variables" || key == "keyframes") saw_dollar_ = true;
-    mapping.entries.push_back(YamlEntry{arena_.text(key), at, nullptr});
+    mapping.entry_list.push_back(YamlEntry{arena_.text(key), at, nullptr});
     mapping.pending = true;
   }
 
@@ -203,17 +204,20 @@ class TreeBuilder {
     level.node->kind = kind;
     level.node->at = position(mark);
     level.anchor = anchor;
-    level.items.clear();
-    level.entries.clear();
+    level.item_list.clear();
+    level.entry_list.clear();
     level.pending = false;
   }
 
   void close() {
     Open& level = levels_[--depth_];
-    level.node->items = arena_.list(level.items);
-    level.node->entries = arena_.list(level.entries);
-    level.items.clear();
-    level.entries.clear();
+    if (level.node->is_sequence()) {
+      level.node->set_items(arena_.list(level.item_list));
+    } else {
+      level.node->set_entries(arena_.list(level.entry_list));
+    }
+    level.item_list.clear();
+    level.entry_list.clear();
     complete(level.node, level.anchor);
   }
 
@@ -225,13 +229,13 @@ class TreeBuilder {
     }
     Open& parent = levels_[depth_ - 1];
     if (parent.node->is_sequence()) {
-      parent.items.push_back(node);
+      parent.item_list.push_back(node);
     } else if (!parent.pending) {
       // Keys that are plain scalars never get here (add_key); anything else is not a name.
       if (!node->is_scalar()) throw InputError(node->at.location(), "a mapping key must be a name, got " + node->describe());
-      add_key(node->scalar, node->at);
+      add_key(node->scalar(), node->at);
     } else {
-      YamlEntry& entry = parent.entries.back();
+      YamlEntry& entry = parent.entry_list.back();
       parent.pending = false;
       // An empty value is reported at its key, the place a reader looks for it.
       entry.value = node->is_null() && anchor.empty() ? null_node(entry.key_at) : node;
@@ -325,26 +329,26 @@ YamlNodePtr with_value_at(YamlNodeArena& arena, YamlNodePtr node, const std::vec
     copy->at = at;
   }
   if (copy->is_mapping()) {
-    std::vector<YamlEntry> entries(copy->entries.begin(), copy->entries.end());
+    std::vector<YamlEntry> entries(copy->entries().begin(), copy->entries().end());
     const auto same = std::find_if(entries.begin(), entries.end(), [&](const YamlEntry& e) { return e.key == segment; });
     if (same != entries.end()) {
       same->value = with_value_at(arena, same->value, segments, i + 1, value, at);
     } else {
       entries.push_back({arena.text(segment), at, with_value_at(arena, nullptr, segments, i + 1, value, at)});
     }
-    copy->entries = arena.list(entries);
+    copy->set_entries(arena.list(entries));
     return copy;
   }
   if (copy->is_sequence()) {
     std::size_t index = 0;
     const auto [end, error] = std::from_chars(segment.data(), segment.data() + segment.size(), index);
-    if (error != std::errc() || end != segment.data() + segment.size() || index >= copy->items.size()) {
-      throw InputError(at.location(), parent + " is a list of " + std::to_string(copy->items.size()) +
+    if (error != std::errc() || end != segment.data() + segment.size() || index >= copy->items().size()) {
+      throw InputError(at.location(), parent + " is a list of " + std::to_string(copy->items().size()) +
                                           " items; expected an index from 0, got '" + segment + "'");
     }
-    std::vector<YamlNodePtr> items(copy->items.begin(), copy->items.end());
+    std::vector<YamlNodePtr> items(copy->items().begin(), copy->items().end());
     items[index] = with_value_at(arena, items[index], segments, i + 1, value, at);
-    copy->items = arena.list(items);
+    copy->set_items(arena.list(items));
     return copy;
   }
   throw InputError(at.location(), parent + " is a single value, so it has no key '" + segment + "'");

@@ -65,23 +65,41 @@ struct YamlEntry {
   YamlNodePtr value = nullptr;
 };
 
+// 32 bytes: the scalar's text, the items or the entries, whichever the kind has, are one pointer
+// and a size (a large scene is mostly nodes, and their memory is most of its reading time).
 struct YamlNode {
   enum class Kind : std::uint8_t { null, scalar, sequence, mapping };
 
-  Kind kind = Kind::null;
-  bool plain = true;       // an unquoted scalar: only plain scalars are numbers
   YamlPosition at;
-  std::string_view scalar;  // scalar text
-  YamlNodeList items;       // sequence
-  YamlEntryList entries;    // mapping, in document order, keys unique
+  Kind kind = Kind::null;
+  bool plain = true;  // an unquoted scalar: only plain scalars are numbers
 
   bool is_null() const { return kind == Kind::null; }
   bool is_scalar() const { return kind == Kind::scalar; }
   bool is_sequence() const { return kind == Kind::sequence; }
   bool is_mapping() const { return kind == Kind::mapping; }
+  // Empty for a node of another kind.
+  std::string_view scalar() const { return is_scalar() ? std::string_view(static_cast<const char*>(data_), size_) : std::string_view(); }
+  YamlNodeList items() const { return is_sequence() ? YamlNodeList(static_cast<const YamlNodePtr*>(data_), size_) : YamlNodeList(); }
+  // In document order, keys unique.
+  YamlEntryList entries() const { return is_mapping() ? YamlEntryList(static_cast<const YamlEntry*>(data_), size_) : YamlEntryList(); }
+  void set_scalar(std::string_view text) { set(text.data(), text.size()); }
+  void set_items(YamlNodeList list) { set(list.data(), list.size()); }
+  void set_entries(YamlEntryList list) { set(list.data(), list.size()); }
+
   const YamlEntry* find(std::string_view key) const;
   // "a number", "a list of 2 items", ... for "expected X, got Y" messages.
   std::string describe() const;
+
+ private:
+  // Sizes fit: a line is at most kMaxYamlLineBytes, and a list of 2^32 items would take 32 GB.
+  void set(const void* data, std::size_t size) {
+    data_ = data;
+    size_ = static_cast<std::uint32_t>(size);
+  }
+
+  std::uint32_t size_ = 0;
+  const void* data_ = nullptr;
 };
 
 class YamlNodeArena;

@@ -10,15 +10,15 @@ namespace rtpro {
 namespace {
 
 bool is_include_only(const YamlNode& node) {
-  return node.is_mapping() && node.entries.size() == 1 && node.entries[0].key == "include";
+  return node.is_mapping() && node.entries().size() == 1 && node.entries()[0].key == "include";
 }
 
 // The file names of an `include:` value: one name or a list of names.
 std::vector<const YamlNode*> include_names(const YamlNode& value) {
   if (value.is_scalar()) return {&value};
-  if (value.is_sequence() && !value.items.empty()) {
+  if (value.is_sequence() && !value.items().empty()) {
     std::vector<const YamlNode*> names;
-    for (const YamlNodePtr& item : value.items) {
+    for (const YamlNodePtr& item : value.items()) {
       if (!item->is_scalar()) throw InputError(item->at.location(), "include: expected a file name, got " + item->describe());
       names.push_back(item);
     }
@@ -50,10 +50,10 @@ void merge_entries(std::vector<YamlEntry>& entries, YamlEntryList added) {
 YamlNodePtr YamlDocument::load_include(const YamlNode& file_name, const YamlFileReader& read_include,
                                        std::vector<std::filesystem::path>& chain) {
   const SourceLocation where = file_name.at.location();
-  if (file_name.scalar.empty()) throw InputError(where, "include: the file name is empty");
+  if (file_name.scalar().empty()) throw InputError(where, "include: the file name is empty");
   const std::filesystem::path base = file_name.at.source ? std::filesystem::path(*file_name.at.source).parent_path()
                                                          : std::filesystem::path();
-  const std::filesystem::path file = base / std::filesystem::path(file_name.scalar);
+  const std::filesystem::path file = base / std::filesystem::path(file_name.scalar());
   const std::filesystem::path identity = include_identity(file);
   if (std::find(chain.begin(), chain.end(), identity) != chain.end())
     throw InputError(where, "include cycle: " + chain_text(chain, identity));
@@ -64,7 +64,7 @@ YamlNodePtr YamlDocument::load_include(const YamlNode& file_name, const YamlFile
   try {
     text = read_include(file);
   } catch (const InputError& e) {
-    throw InputError(where, "cannot include '" + std::string(file_name.scalar) + "' (" + file.string() + "): " + e.message());
+    throw InputError(where, "cannot include '" + std::string(file_name.scalar()) + "' (" + file.string() + "): " + e.message());
   }
   auto included = std::make_unique<YamlDocument>(parse_included(text, file.string(), read_include, chain));
   YamlNodePtr root = included->root_;
@@ -77,24 +77,24 @@ YamlNodePtr YamlDocument::expand_includes(YamlNodePtr node, const YamlFileReader
                                           std::vector<std::filesystem::path>& chain) {
   if (node->is_sequence()) {
     std::vector<YamlNodePtr> items;
-    for (const YamlNodePtr& item : node->items) {
+    for (const YamlNodePtr& item : node->items()) {
       if (!is_include_only(*item)) {
         items.push_back(expand_includes(item, read_include, chain));
         continue;
       }
-      for (const YamlNode* name : include_names(*item->entries[0].value)) {
+      for (const YamlNode* name : include_names(*item->entries()[0].value)) {
         const YamlNodePtr included = load_include(*name, read_include, chain);
         if (included->is_sequence()) {
-          items.insert(items.end(), included->items.begin(), included->items.end());
+          items.insert(items.end(), included->items().begin(), included->items().end());
         } else if (included->is_mapping()) {
           items.push_back(included);
         } else if (!included->is_null()) {
-          throw InputError(name->at.location(), "include '" + std::string(name->scalar) + "': a list item includes a list or a mapping, got " + included->describe());
+          throw InputError(name->at.location(), "include '" + std::string(name->scalar()) + "': a list item includes a list or a mapping, got " + included->describe());
         }
       }
     }
     YamlNode* copy = arena_->node(*node);
-    copy->items = arena_->list(items);
+    copy->set_items(arena_->list(items));
     return copy;
   }
   if (!node->is_mapping()) return node;
@@ -105,16 +105,16 @@ YamlNodePtr YamlDocument::expand_includes(YamlNodePtr node, const YamlFileReader
       const YamlNodePtr included = load_include(*name, read_include, chain);
       if (included->is_null()) continue;
       if (!included->is_mapping())
-        throw InputError(name->at.location(), "include '" + std::string(name->scalar) + "': a mapping includes a mapping, got " + included->describe());
-      merge_entries(entries, included->entries);
+        throw InputError(name->at.location(), "include '" + std::string(name->scalar()) + "': a mapping includes a mapping, got " + included->describe());
+      merge_entries(entries, included->entries());
     }
   }
   std::vector<YamlEntry> own;
-  for (const YamlEntry& entry : node->entries)
+  for (const YamlEntry& entry : node->entries())
     if (&entry != include) own.push_back({entry.key, entry.key_at, expand_includes(entry.value, read_include, chain)});
   merge_entries(entries, own);
   YamlNode* copy = arena_->node(*node);
-  copy->entries = arena_->list(entries);
+  copy->set_entries(arena_->list(entries));
   return copy;
 }
 

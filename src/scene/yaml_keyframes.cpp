@@ -17,7 +17,7 @@ enum class Interpolation { kLinear, kSmooth, kStep };
 
 double parse_number(const YamlNode& node, const std::string& what) {
   double value = 0;
-  const std::string_view text = node.scalar;
+  const std::string_view text = node.scalar();
   const char* begin = text.data() + (!text.empty() && text[0] == '+' ? 1 : 0);
   const auto [end, error] = std::from_chars(begin, text.data() + text.size(), value);
   if (!node.is_scalar() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
@@ -31,7 +31,7 @@ std::vector<double> numbers_of(const YamlNode& value, const std::string& what) {
   if (!value.is_sequence())
     throw InputError(value.at.location(), what + ": a keyframed value is a number or a list of numbers, got " + value.describe());
   std::vector<double> numbers;
-  for (const YamlNodePtr& item : value.items) numbers.push_back(parse_number(*item, what));
+  for (const YamlNodePtr& item : value.items()) numbers.push_back(parse_number(*item, what));
   return numbers;
 }
 
@@ -39,12 +39,12 @@ Interpolation read_interpolation(const YamlNode* node) {
   if (!node) return Interpolation::kLinear;
   const std::vector<std::string> names{"linear", "smooth", "step"};
   if (node->is_scalar()) {
-    if (node->scalar == "linear") return Interpolation::kLinear;
-    if (node->scalar == "smooth") return Interpolation::kSmooth;
-    if (node->scalar == "step") return Interpolation::kStep;
+    if (node->scalar() == "linear") return Interpolation::kLinear;
+    if (node->scalar() == "smooth") return Interpolation::kSmooth;
+    if (node->scalar() == "step") return Interpolation::kStep;
   }
   throw InputError(node->at.location(),
-                   "unknown interpolation " + node->describe() + suggestion(std::string(node->scalar), names));
+                   "unknown interpolation " + node->describe() + suggestion(std::string(node->scalar()), names));
 }
 
 std::string number_text(double value) {
@@ -58,21 +58,21 @@ std::string number_text(double value) {
 bool is_keyframed(const YamlNode& node) { return node.is_mapping() && node.find("keyframes") != nullptr; }
 
 YamlNodePtr value_at_frame(const YamlNode& animated, double frame, YamlNodeArena& arena) {
-  for (const YamlEntry& entry : animated.entries)
+  for (const YamlEntry& entry : animated.entries())
     if (entry.key != "keyframes" && entry.key != "interpolation")
       throw InputError(entry.key_at.location(), "unknown key '" + std::string(entry.key) + "' in an animated value" +
                                                     suggestion(std::string(entry.key), {"keyframes", "interpolation"}));
   const YamlNode& keys = *animated.find("keyframes")->value;
   const YamlEntry* interpolation_entry = animated.find("interpolation");
   const Interpolation interpolation = read_interpolation(interpolation_entry ? interpolation_entry->value : nullptr);
-  if (!keys.is_mapping() || keys.entries.empty())
+  if (!keys.is_mapping() || keys.entries().empty())
     throw InputError(keys.at.location(), "keyframes: expected a mapping of frame numbers to values, got " + keys.describe());
 
   std::map<double, std::pair<std::vector<double>, const YamlNode*>> by_frame;
-  for (const YamlEntry& key : keys.entries) {
+  for (const YamlEntry& key : keys.entries()) {
     YamlNode frame_name;
     frame_name.kind = YamlNode::Kind::scalar;
-    frame_name.scalar = key.key;
+    frame_name.set_scalar(key.key);
     frame_name.at = key.key_at;
     const double key_frame = parse_number(frame_name, "keyframes: a frame number");
     std::vector<double> numbers = numbers_of(*key.value, "keyframes");
@@ -114,7 +114,7 @@ YamlNodePtr value_at_frame(const YamlNode& animated, double frame, YamlNodeArena
     YamlNode* node = arena.node();
     node->kind = YamlNode::Kind::scalar;
     node->at = animated.at;
-    node->scalar = arena.text(number_text(value));
+    node->set_scalar(arena.text(number_text(value)));
     return node;
   };
   std::vector<double> values(from->size());
@@ -125,7 +125,7 @@ YamlNodePtr value_at_frame(const YamlNode& animated, double frame, YamlNodeArena
   YamlNode* list = arena.node();
   list->kind = YamlNode::Kind::sequence;
   list->at = animated.at;
-  list->items = arena.list(items);
+  list->set_items(arena.list(items));
   return list;
 }
 

@@ -15,6 +15,7 @@ constexpr std::size_t kHugePage = std::size_t{2} << 20;
 
 // The arena never runs destructors.
 static_assert(std::is_trivially_destructible_v<YamlNode>);
+static_assert(sizeof(YamlNode) == 32);
 static_assert(std::is_trivially_copyable_v<YamlEntry>);
 
 }  // namespace

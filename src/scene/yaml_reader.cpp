@@ -37,12 +37,12 @@ const YamlNode& scalar_or_fail(const YamlNode& node, const std::string& name, st
 
 template <typename Integer>
 Integer parse_integer(const YamlNode& node, const std::string& name, std::string_view expected) {
-  const std::string_view text = without_plus(scalar_or_fail(node, name, expected).scalar);
+  const std::string_view text = without_plus(scalar_or_fail(node, name, expected).scalar());
   Integer value{};
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (end != text.data() + text.size() || text.empty())
     fail_at(node, name + ": expected " + std::string(expected) + ", got " + node.describe());
-  if (error == std::errc::result_out_of_range) fail_at(node, name + ": " + std::string(node.scalar) + " is out of range");
+  if (error == std::errc::result_out_of_range) fail_at(node, name + ": " + std::string(node.scalar()) + " is out of range");
   return value;
 }
 
@@ -51,7 +51,7 @@ Integer parse_integer(const YamlNode& node, const std::string& name, std::string
 MappingReader::MappingReader(const YamlNode& node, std::string what, std::initializer_list<std::string_view> keys)
     : node_(node), what_(std::move(what)) {
   if (!node.is_mapping()) fail_at(node, what_ + ": expected a mapping, got " + node.describe());
-  for (const YamlEntry& entry : node.entries) {
+  for (const YamlEntry& entry : node.entries()) {
     if (std::find(keys.begin(), keys.end(), entry.key) == keys.end()) {
       fail_at(entry.key_at, "unknown key '" + std::string(entry.key) + "' in " + what_ +
                                 suggestion(entry.key, std::vector<std::string>(keys.begin(), keys.end())));
@@ -85,14 +85,14 @@ std::string read_entry_type(const YamlNode& entry, const std::string& what, cons
 }
 
 double read_number(const YamlNode& node, const std::string& name) {
-  const std::string_view text = without_plus(scalar_or_fail(node, name, "a number").scalar);
-  if (is_yaml_special_float(text)) fail_at(node, name + ": expected a finite number, got '" + std::string(node.scalar) + "'");
+  const std::string_view text = without_plus(scalar_or_fail(node, name, "a number").scalar());
+  if (is_yaml_special_float(text)) fail_at(node, name + ": expected a finite number, got '" + std::string(node.scalar()) + "'");
   double value = 0.0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (end != text.data() + text.size() || text.empty())
     fail_at(node, name + ": expected a number, got " + node.describe());
   if (error == std::errc::result_out_of_range || !std::isfinite(value) || std::fabs(value) > kMaxSceneNumber) {
-    fail_at(node, name + ": " + std::string(node.scalar) + " is out of range (numbers must be finite and within ±1e9)");
+    fail_at(node, name + ": " + std::string(node.scalar()) + " is out of range (numbers must be finite and within ±1e9)");
   }
   return value;
 }
@@ -106,15 +106,15 @@ std::uint64_t read_unsigned(const YamlNode& node, const std::string& name) {
 }
 
 std::string read_string(const YamlNode& node, const std::string& name) {
-  if (!node.is_scalar() || node.scalar.empty()) fail_at(node, name + ": expected a name, got " + node.describe());
-  return std::string(node.scalar);
+  if (!node.is_scalar() || node.scalar().empty()) fail_at(node, name + ": expected a name, got " + node.describe());
+  return std::string(node.scalar());
 }
 
 YamlNodeList read_list(const YamlNode& node, const std::string& name, std::size_t count,
                                           std::string_view shape) {
-  if (!node.is_sequence() || node.items.size() != count)
+  if (!node.is_sequence() || node.items().size() != count)
     fail_at(node, name + ": expected " + std::string(shape) + ", got " + node.describe());
-  return node.items;
+  return node.items();
 }
 
 Vec3 read_vec3(const YamlNode& node, const std::string& name) {
@@ -138,19 +138,19 @@ double whole_number(std::string_view text) { return std::strtod(std::string(text
 void reject_8bit_color(const YamlNode& node, YamlNodeList items, const std::string& name) {
   double largest = 0.0;
   for (const YamlNodePtr& item : items) {
-    if (!is_whole_number_text(item->scalar)) return;
-    largest = std::max(largest, whole_number(item->scalar));
+    if (!is_whole_number_text(item->scalar())) return;
+    largest = std::max(largest, whole_number(item->scalar()));
   }
   if (largest <= 1.0 || largest > 255.0) return;
   std::string linear;
   for (const YamlNodePtr& item : items) {
     char text[32];
-    const double encoded = whole_number(item->scalar) / 255.0;
+    const double encoded = whole_number(item->scalar()) / 255.0;
     const double decoded = encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
     std::snprintf(text, sizeof text, "%.3g", decoded);
     linear += (linear.empty() ? "" : ", ") + std::string(text);
   }
-  fail_at(node, name + ": [" + std::string(items[0]->scalar) + ", " + std::string(items[1]->scalar) + ", " + std::string(items[2]->scalar) +
+  fail_at(node, name + ": [" + std::string(items[0]->scalar()) + ", " + std::string(items[1]->scalar()) + ", " + std::string(items[2]->scalar()) +
                     "] looks like 8-bit sRGB values; colours are linear with 1 as full: that colour is [" + linear +
                     "] (for a brighter light raise its intensity; write 2.0 for a deliberate value above 1)");
 }
@@ -162,7 +162,7 @@ Color read_color(const YamlNode& node, const std::string& name) {
   Color color;
   for (int i = 0; i < 3; ++i) {
     const double component = read_number(*items[i], name);
-    if (component < 0.0) fail_at(*items[i], name + ": colour components must be >= 0, got " + std::string(items[i]->scalar));
+    if (component < 0.0) fail_at(*items[i], name + ": colour components must be >= 0, got " + std::string(items[i]->scalar()));
     color[i] = static_cast<float>(component);
   }
   reject_8bit_color(node, items, name);

@@ -118,15 +118,15 @@ class ObjectsReader {
     if (has_objects && !objects->is_mapping())
       fail_at(*objects, "objects: expected a mapping of name: [entries], got " + objects->describe());
     if (has_objects) {
-      for (const YamlEntry& entry : objects->entries) {
+      for (const YamlEntry& entry : objects->entries()) {
         objects_.add(std::string(entry.key), static_cast<std::uint32_t>(scene.objects.size()));
         scene.objects.emplace_back().name = entry.key;
       }
     }
     links_.resize(scene.objects.size() + 1);
     if (has_objects) {
-      for (std::size_t i = 0; i < objects->entries.size(); ++i) {
-        const YamlEntry& entry = objects->entries[i];
+      for (std::size_t i = 0; i < objects->entries().size(); ++i) {
+        const YamlEntry& entry = objects->entries()[i];
         read_entries(entry.value, "object '" + std::string(entry.key) + "'", scene.objects[i], links_[i]);
       }
     }
@@ -144,7 +144,7 @@ class ObjectsReader {
     if (!list || list->is_null()) return;
     if (!list->is_sequence())
       fail_at(*list, what + ": expected a list of entries (sphere, mesh, instance), got " + list->describe());
-    for (const YamlNodePtr& entry : list->items) {
+    for (const YamlNodePtr& entry : list->items()) {
       if (++entries_ > kMaxSceneEntries) {
         fail_at(*entry, "the scene has more than " + std::to_string(kMaxSceneEntries) +
                             " entries (counting every alias expansion); use meshes or instances");
@@ -166,7 +166,7 @@ class ObjectsReader {
     if (const YamlNode* center = sphere.optional("center")) desc.center = read_vec3(*center, sphere.field("center"));
     if (const YamlNode* radius = sphere.optional("radius")) {
       const double value = read_number(*radius, sphere.field("radius"));
-      if (!(value > 0.0)) fail_at(*radius, sphere.field("radius") + " must be > 0, got " + std::string(radius->scalar));
+      if (!(value > 0.0)) fail_at(*radius, sphere.field("radius") + " must be > 0, got " + std::string(radius->scalar()));
       desc.radius = static_cast<float>(value);
     }
     if (const YamlNode* material = sphere.optional("material"))

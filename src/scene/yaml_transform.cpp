@@ -53,7 +53,7 @@ Affine read_matrix(const YamlNode& node, const std::string& name) {
       if (row < 3) {
         matrix.m[row][column] = static_cast<float>(value);
       } else if (value != (column == 3 ? 1.0 : 0.0)) {
-        fail_at(item, name + ": the last row must be 0 0 0 1 (an affine transform), got " + std::string(item.scalar));
+        fail_at(item, name + ": the last row must be 0 0 0 1 (an affine transform), got " + std::string(item.scalar()));
       }
     }
   }
@@ -69,13 +69,13 @@ Affine read_step(std::string_view key, const YamlNode& value, const std::string&
 
 Affine read_step_list(const YamlNode& node, const std::string& name) {
   Affine transform;
-  for (const YamlNodePtr& step : node.items) {
-    if (!step->is_mapping() || step->entries.size() != 1) {
+  for (const YamlNodePtr& step : node.items()) {
+    if (!step->is_mapping() || step->entries().size() != 1) {
       fail_at(*step,
               name + ": expected a step with one key (translate, rotate, scale or matrix), got " + step->describe());
     }
     const MappingReader reader(*step, name, kStepKeys);
-    const YamlEntry& entry = step->entries.front();
+    const YamlEntry& entry = step->entries().front();
     transform = compose(read_step(entry.key, *entry.value, reader.field(entry.key)), transform);
   }
   return transform;
@@ -84,7 +84,7 @@ Affine read_step_list(const YamlNode& node, const std::string& name) {
 Affine read_transform_mapping(const YamlNode& node, const std::string& name) {
   const MappingReader reader(node, name, kStepKeys);
   if (const YamlNode* matrix = reader.optional("matrix")) {
-    if (node.entries.size() > 1)
+    if (node.entries().size() > 1)
       fail_at(*matrix, name + ": 'matrix' cannot be combined with translate, rotate or scale");
     return read_matrix(*matrix, reader.field("matrix"));
   }

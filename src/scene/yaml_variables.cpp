@@ -24,7 +24,7 @@ class Substitution {
   Substitution(const YamlNode& variables, YamlNodeArena& arena) : arena_(arena) {
     if (!variables.is_mapping() && !variables.is_null())
       throw InputError(variables.at.location(), "variables: expected a mapping of names to values, got " + variables.describe());
-    for (const YamlEntry& entry : variables.entries) {
+    for (const YamlEntry& entry : variables.entries()) {
       if (entry.key.empty() || !is_name_start(entry.key[0]) ||
           entry.key.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
         throw InputError(entry.key_at.location(), "variables: '" + std::string(entry.key) + "' is not a name (letters, digits and '_', not starting with a digit)");
@@ -60,19 +60,19 @@ class Substitution {
       case YamlNode::Kind::null:
         return node;
       case YamlNode::Kind::scalar:
-        return node->scalar.find('$') == std::string_view::npos ? node : substitute(*node);
+        return node->scalar().find('$') == std::string_view::npos ? node : substitute(*node);
       case YamlNode::Kind::sequence: {
-        std::vector<YamlNodePtr> items(node->items.begin(), node->items.end());
+        std::vector<YamlNodePtr> items(node->items().begin(), node->items().end());
         for (YamlNodePtr& item : items) item = apply(item);
         YamlNode* copy = arena_.node(*node);
-        copy->items = arena_.list(items);
+        copy->set_items(arena_.list(items));
         return copy;
       }
       case YamlNode::Kind::mapping: {
-        std::vector<YamlEntry> entries(node->entries.begin(), node->entries.end());
+        std::vector<YamlEntry> entries(node->entries().begin(), node->entries().end());
         for (YamlEntry& entry : entries) entry.value = apply(entry.value);
         YamlNode* copy = arena_.node(*node);
-        copy->entries = arena_.list(entries);
+        copy->set_entries(arena_.list(entries));
         if (is_keyframed(*copy)) return value_at_frame(*copy, frame(), arena_);
         return copy;
       }
@@ -87,7 +87,7 @@ class Substitution {
   };
 
   static Reference reference_at(const YamlNode& node, std::size_t i) {
-    const std::string_view text = node.scalar;
+    const std::string_view text = node.scalar();
     if (i < text.size() && text[i] == '{') {
       const std::size_t close = text.find('}', i);
       if (close == std::string_view::npos)
@@ -115,7 +115,7 @@ class Substitution {
   }
 
   YamlNodePtr substitute(const YamlNode& node) const {
-    const std::string_view text = node.scalar;
+    const std::string_view text = node.scalar();
     if (text[0] == '$' && text.size() > 1 && text[1] != '$') {
       const Reference whole = reference_at(node, 1);
       if (1 + whole.length == text.size()) return lookup(node, whole.name);
@@ -133,12 +133,12 @@ class Substitution {
         if (!value->is_scalar())
           throw InputError(node.at.location(), "'$" + part.name + "' is " + value->describe() +
                                                    ", which cannot be part of a longer text; use it alone");
-        result += value->scalar;
+        result += value->scalar();
         i += part.length;
       }
     }
     YamlNode* copy = arena_.node(node);
-    copy->scalar = arena_.text(result);
+    copy->set_scalar(arena_.text(result));
     return copy;
   }
 
@@ -149,8 +149,8 @@ class Substitution {
     used_.insert("frame");
     const YamlNode& value = *found->second;
     double number = 0;
-    const auto [end, error] = std::from_chars(value.scalar.data(), value.scalar.data() + value.scalar.size(), number);
-    if (!value.is_scalar() || error != std::errc() || end != value.scalar.data() + value.scalar.size() ||
+    const auto [end, error] = std::from_chars(value.scalar().data(), value.scalar().data() + value.scalar().size(), number);
+    if (!value.is_scalar() || error != std::errc() || end != value.scalar().data() + value.scalar().size() ||
         !std::isfinite(number))
       throw InputError(value.at.location(), "frame: expected a frame number, got " + value.describe());
     return number;
@@ -178,7 +178,7 @@ void YamlDocument::resolve_variables() {
   const YamlNode none;
   const YamlNode* variables = &none;
   std::vector<YamlEntry> entries;
-  for (const YamlEntry& entry : root_->entries) {
+  for (const YamlEntry& entry : root_->entries()) {
     if (entry.key == "variables" && variables == &none) {
       variables = entry.value;
     } else {
@@ -186,7 +186,7 @@ void YamlDocument::resolve_variables() {
     }
   }
   YamlNode* root = arena_->node(*root_);
-  root->entries = arena_->list(entries);
+  root->set_entries(arena_->list(entries));
   const Substitution substitution(*variables, *arena_);
   root_ = substitution.apply(root);
   substitution.check_command_line_variables_used();
