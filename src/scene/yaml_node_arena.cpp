@@ -1,7 +1,5 @@
 #include "yaml_node_arena.h"
 
-#include <sys/mman.h>
-
 #include <cstring>
 #include <memory>
 #include <new>
@@ -11,7 +9,7 @@ namespace rtpro {
 
 namespace {
 
-constexpr std::size_t kHugePage = std::size_t{2} << 20;
+constexpr std::size_t kFirstBlock = std::size_t{1} << 20;  // later blocks grow geometrically
 
 // The arena never runs destructors.
 static_assert(std::is_trivially_destructible_v<YamlNode>);
@@ -20,19 +18,7 @@ static_assert(std::is_trivially_copyable_v<YamlEntry>);
 
 }  // namespace
 
-void* YamlNodeArena::HugePageBlocks::do_allocate(std::size_t bytes, std::size_t) {
-  const std::size_t size = (bytes + kHugePage - 1) / kHugePage * kHugePage;
-  void* block = mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  if (block == MAP_FAILED) throw std::bad_alloc();
-  madvise(block, size, MADV_HUGEPAGE);  // advice only: without it the block works with 4 KiB pages
-  return block;
-}
-
-void YamlNodeArena::HugePageBlocks::do_deallocate(void* block, std::size_t bytes, std::size_t) {
-  munmap(block, (bytes + kHugePage - 1) / kHugePage * kHugePage);
-}
-
-YamlNodeArena::YamlNodeArena() : blocks_(kHugePage, &pages_) {}
+YamlNodeArena::YamlNodeArena() : blocks_(kFirstBlock) {}
 
 YamlNode* YamlNodeArena::node(const YamlNode& init) {
   return new (blocks_.allocate(sizeof(YamlNode), alignof(YamlNode))) YamlNode(init);

@@ -1,12 +1,14 @@
 #pragma once
 // Memory for the nodes of YAML documents: the nodes, their lists of items and entries, and their
-// text, given out from large blocks that ask the kernel for transparent huge pages and released
-// all at once with the arena. Nodes hold only views into the arena, so none needs destroying.
+// text, given out from large blocks and released all at once with the arena. Nodes hold only
+// views into the arena, so none needs destroying.
 //
-// Why: a fresh process spent most of its load time on page faults and allocations, not parsing.
-// The 10,000-sphere scene builds ~80,000 nodes; one 4 KiB fault costs ~13 us on these virtual
-// machines, and a reference-counted node with its own control block and heap strings took
-// ~1.6 KB per sphere to build, count and free. Here a sphere takes ~0.5 KB of plain records.
+// Why: reference-counted nodes with their own control blocks and heap strings took ~1.6 KB per
+// sphere of the 10,000-sphere scene to build, count and free, and the load 0.035 s; here a sphere
+// takes ~0.5 KB of plain records and the load 0.025 s. The blocks are ordinary pages: asking for
+// transparent huge pages (MADV_HUGEPAGE) made the load 0.023 s on a quiet machine but 0.022-0.072 s
+// (median 0.037) right after another process's exit, against 0.025-0.029 s with ordinary pages
+// (third_party_notes/libyaml.md).
 #include "yaml_document.h"
 
 #include <memory_resource>
@@ -32,13 +34,6 @@ class YamlNodeArena {
   template <typename T>
   std::span<const T> copy(std::span<const T> values);
 
-  class HugePageBlocks : public std::pmr::memory_resource {
-    void* do_allocate(std::size_t bytes, std::size_t alignment) override;
-    void do_deallocate(void* block, std::size_t bytes, std::size_t alignment) override;
-    bool do_is_equal(const std::pmr::memory_resource& other) const noexcept override { return this == &other; }
-  };
-
-  HugePageBlocks pages_;
   std::pmr::monotonic_buffer_resource blocks_;
 };
 
