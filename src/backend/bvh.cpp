@@ -64,7 +64,7 @@ struct AxisBins {
   }
 };
 
-// Three boxes as coordinates across boxes: x[a] is box a's x, and so on (lane 3 unused).
+// Three boxes, one per lane: lower[c] and upper[c] hold coordinate c of each box (lane 3 unused).
 struct Boxes3 {
   __m128 lower[3], upper[3];
 

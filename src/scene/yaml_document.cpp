@@ -146,15 +146,15 @@ class TreeBuilder {
   }
 
  private:
-  // A sequence or mapping being read. Its children gather in `items`/`entries`, which keep their
-  // capacity from one node to the next at the same depth, and are copied into the arena, sized
-  // exactly, when it closes.
+  // A sequence or mapping being read. Its children gather in `item_list`/`entry_list`, which
+  // keep their capacity from one node to the next at the same depth, and are copied into the
+  // arena, sized exactly, when it closes.
   struct Open {
     YamlNode* node = nullptr;
     std::string anchor;
     std::vector<YamlNodePtr> item_list;
     std::vector<YamlEntry> entry_list;
-    bool pending = false;  // entries.back() is a key waiting for its value
+    bool pending = false;  // entry_list.back() is a key waiting for its value
   };
 
   [[noreturn]] void fail(const yaml_mark_t& mark, const std::string& message) const {

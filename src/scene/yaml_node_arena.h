@@ -14,7 +14,6 @@
 #include <memory_resource>
 #include <span>
 #include <string_view>
-#include <vector>
 
 namespace rtpro {
 
