@@ -323,33 +323,31 @@ YamlNodePtr with_value_at(YamlNodeArena& arena, YamlNodePtr node, const std::vec
   if (i == segments.size()) return value;
   const std::string& segment = segments[i];
   const std::string parent = i == 0 ? std::string("the scene") : "'" + segments[i - 1] + "'";
-  YamlNode* copy = arena.node(node ? *node : YamlNode{});
-  if (copy->is_null()) {
-    copy->kind = YamlNode::Kind::mapping;
-    copy->at = at;
+  YamlNode base = node ? *node : YamlNode{};
+  if (base.is_null()) {
+    base.kind = YamlNode::Kind::mapping;
+    base.at = at;
   }
-  if (copy->is_mapping()) {
-    std::vector<YamlEntry> entries(copy->entries().begin(), copy->entries().end());
+  if (base.is_mapping()) {
+    std::vector<YamlEntry> entries(base.entries().begin(), base.entries().end());
     const auto same = std::find_if(entries.begin(), entries.end(), [&](const YamlEntry& e) { return e.key == segment; });
     if (same != entries.end()) {
       same->value = with_value_at(arena, same->value, segments, i + 1, value, at);
     } else {
       entries.push_back({arena.text(segment), at, with_value_at(arena, nullptr, segments, i + 1, value, at)});
     }
-    copy->set_entries(arena.list(entries));
-    return copy;
+    return arena.with_entries(base, entries);
   }
-  if (copy->is_sequence()) {
+  if (base.is_sequence()) {
     std::size_t index = 0;
     const auto [end, error] = std::from_chars(segment.data(), segment.data() + segment.size(), index);
-    if (error != std::errc() || end != segment.data() + segment.size() || index >= copy->items().size()) {
-      throw InputError(at.location(), parent + " is a list of " + std::to_string(copy->items().size()) +
+    if (error != std::errc() || end != segment.data() + segment.size() || index >= base.items().size()) {
+      throw InputError(at.location(), parent + " is a list of " + std::to_string(base.items().size()) +
                                           " items; expected an index from 0, got '" + segment + "'");
     }
-    std::vector<YamlNodePtr> items(copy->items().begin(), copy->items().end());
+    std::vector<YamlNodePtr> items(base.items().begin(), base.items().end());
     items[index] = with_value_at(arena, items[index], segments, i + 1, value, at);
-    copy->set_items(arena.list(items));
-    return copy;
+    return arena.with_items(base, items);
   }
   throw InputError(at.location(), parent + " is a single value, so it has no key '" + segment + "'");
 }

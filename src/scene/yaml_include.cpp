@@ -93,9 +93,7 @@ YamlNodePtr YamlDocument::expand_includes(YamlNodePtr node, const YamlFileReader
         }
       }
     }
-    YamlNode* copy = arena_->node(*node);
-    copy->set_items(arena_->list(items));
-    return copy;
+    return arena_->with_items(*node, items);
   }
   if (!node->is_mapping()) return node;
   std::vector<YamlEntry> entries;
@@ -113,9 +111,7 @@ YamlNodePtr YamlDocument::expand_includes(YamlNodePtr node, const YamlFileReader
   for (const YamlEntry& entry : node->entries())
     if (&entry != include) own.push_back({entry.key, entry.key_at, expand_includes(entry.value, read_include, chain)});
   merge_entries(entries, own);
-  YamlNode* copy = arena_->node(*node);
-  copy->set_entries(arena_->list(entries));
-  return copy;
+  return arena_->with_entries(*node, entries);
 }
 
 }  // namespace rtpro

@@ -122,11 +122,10 @@ YamlNodePtr value_at_frame(const YamlNode& animated, double frame, YamlNodeArena
   if (first.second->is_scalar()) return scalar_at(values[0]);
   std::vector<YamlNodePtr> items;
   for (double value : values) items.push_back(scalar_at(value));
-  YamlNode* list = arena.node();
-  list->kind = YamlNode::Kind::sequence;
-  list->at = animated.at;
-  list->set_items(arena.list(items));
-  return list;
+  YamlNode list;
+  list.kind = YamlNode::Kind::sequence;
+  list.at = animated.at;
+  return arena.with_items(list, items);
 }
 
 }  // namespace rtpro

@@ -43,4 +43,16 @@ YamlNodeList YamlNodeArena::list(std::span<const YamlNodePtr> items) { return co
 
 YamlEntryList YamlNodeArena::list(std::span<const YamlEntry> entries) { return copy(entries); }
 
+YamlNodePtr YamlNodeArena::with_items(const YamlNode& node, std::span<const YamlNodePtr> items) {
+  YamlNode* copy = this->node(node);
+  copy->set_items(list(items));
+  return copy;
+}
+
+YamlNodePtr YamlNodeArena::with_entries(const YamlNode& node, std::span<const YamlEntry> entries) {
+  YamlNode* copy = this->node(node);
+  copy->set_entries(list(entries));
+  return copy;
+}
+
 }  // namespace rtpro

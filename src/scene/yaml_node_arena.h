@@ -28,6 +28,10 @@ class YamlNodeArena {
   std::string_view text(std::string_view bytes);
   YamlNodeList list(std::span<const YamlNodePtr> items);
   YamlEntryList list(std::span<const YamlEntry> entries);
+  // A copy of `node` whose items (entries) are copies of `items` (`entries`): how a changed list
+  // or mapping is made, its unchanged children shared.
+  YamlNodePtr with_items(const YamlNode& node, std::span<const YamlNodePtr> items);
+  YamlNodePtr with_entries(const YamlNode& node, std::span<const YamlEntry> entries);
 
  private:
   template <typename T>

@@ -64,17 +64,13 @@ class Substitution {
       case YamlNode::Kind::sequence: {
         std::vector<YamlNodePtr> items(node->items().begin(), node->items().end());
         for (YamlNodePtr& item : items) item = apply(item);
-        YamlNode* copy = arena_.node(*node);
-        copy->set_items(arena_.list(items));
-        return copy;
+        return arena_.with_items(*node, items);
       }
       case YamlNode::Kind::mapping: {
         std::vector<YamlEntry> entries(node->entries().begin(), node->entries().end());
         for (YamlEntry& entry : entries) entry.value = apply(entry.value);
-        YamlNode* copy = arena_.node(*node);
-        copy->set_entries(arena_.list(entries));
-        if (is_keyframed(*copy)) return value_at_frame(*copy, frame(), arena_);
-        return copy;
+        const YamlNodePtr copy = arena_.with_entries(*node, entries);
+        return is_keyframed(*copy) ? value_at_frame(*copy, frame(), arena_) : copy;
       }
     }
     return node;
@@ -149,8 +145,9 @@ class Substitution {
     used_.insert("frame");
     const YamlNode& value = *found->second;
     double number = 0;
-    const auto [end, error] = std::from_chars(value.scalar().data(), value.scalar().data() + value.scalar().size(), number);
-    if (!value.is_scalar() || error != std::errc() || end != value.scalar().data() + value.scalar().size() ||
+    const std::string_view text = value.scalar();
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
+    if (!value.is_scalar() || error != std::errc() || end != text.data() + text.size() ||
         !std::isfinite(number))
       throw InputError(value.at.location(), "frame: expected a frame number, got " + value.describe());
     return number;
@@ -176,19 +173,17 @@ class Substitution {
 void YamlDocument::resolve_variables() {
   if (!has_variables_ || !root_->is_mapping()) return;
   const YamlNode none;
-  const YamlNode* variables = &none;
+  const YamlNode* variables = &none;  // keys are unique: at most one
   std::vector<YamlEntry> entries;
   for (const YamlEntry& entry : root_->entries()) {
-    if (entry.key == "variables" && variables == &none) {
+    if (entry.key == "variables") {
       variables = entry.value;
     } else {
       entries.push_back(entry);
     }
   }
-  YamlNode* root = arena_->node(*root_);
-  root->set_entries(arena_->list(entries));
   const Substitution substitution(*variables, *arena_);
-  root_ = substitution.apply(root);
+  root_ = substitution.apply(arena_->with_entries(*root_, entries));
   substitution.check_command_line_variables_used();
 }
 

@@ -38,6 +38,32 @@ TEST(YamlNodeArena, TextAndListsAreCopiesThatOutliveTheirSources) {
   EXPECT_EQ(entries[1].value, second);
 }
 
+// A changed list or mapping: a new node with the old one's kind and position, its children shared.
+TEST(YamlNodeArena, WithItemsAndWithEntriesCopyTheNodeAndShareTheChildren) {
+  YamlNodeArena arena;
+  YamlNode* child = arena.node();
+  YamlNode list;
+  list.kind = YamlNode::Kind::sequence;
+  list.at.line = 7;
+  const std::vector<YamlNodePtr> items{child, child};
+  const YamlNodePtr changed = arena.with_items(list, items);
+  EXPECT_NE(changed, &list);
+  EXPECT_TRUE(changed->is_sequence());
+  EXPECT_EQ(changed->at.line, 7);
+  ASSERT_EQ(changed->items().size(), 2u);
+  EXPECT_EQ(changed->items()[1], child);
+  EXPECT_TRUE(list.items().empty());
+
+  YamlNode mapping;
+  mapping.kind = YamlNode::Kind::mapping;
+  const std::vector<YamlEntry> entries{{arena.text("key"), {}, child}};
+  const YamlNodePtr with_key = arena.with_entries(mapping, entries);
+  EXPECT_TRUE(with_key->is_mapping());
+  ASSERT_NE(with_key->find("key"), nullptr);
+  EXPECT_EQ(with_key->find("key")->value, child);
+  EXPECT_TRUE(mapping.entries().empty());
+}
+
 TEST(YamlNodeArena, EmptyCopiesAreEmpty) {
   YamlNodeArena arena;
   EXPECT_TRUE(arena.text("").empty());
