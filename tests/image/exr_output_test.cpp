@@ -7,12 +7,14 @@
 
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfVersion.h>
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -61,6 +63,48 @@ TEST(ExrOutput, EveryChannelReadsBackBitForBit) {
   const Image image = every_kind_of_float(13, 7, names);
   write_exr(file, image, {});
   test::expect_same_channels(image, read_image(file));
+}
+
+// Chunks of 16 scanlines, the last one short, each holding its channels in the file's (sorted)
+// order: an image whose channels are not in that order, and whose rows differ, reads back whole.
+TEST(ExrOutput, ManyChunksReadBackBitForBitInEveryChannel) {
+  const auto file = test::scratch_dir() / "many_chunks.exr";
+  const Image image = every_kind_of_float(37, 53, {"R", "G", "B", "albedo.R", "N.X", "depth.Z", "A"});
+  write_exr(file, image, {});
+  test::expect_same_channels(image, read_image(file));
+
+  Imf::InputFile input(file.c_str());
+  EXPECT_EQ(input.header().compression(), Imf::ZIP_COMPRESSION);
+  const Imath::Box2i window = input.header().dataWindow();
+  EXPECT_EQ(window.max.x - window.min.x + 1, 37);
+  EXPECT_EQ(window.max.y - window.min.y + 1, 53);
+}
+
+// The version field after the magic number: format version 2 and its flags.
+std::int32_t version_field(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  char bytes[8] = {};
+  in.read(bytes, sizeof bytes);
+  std::int32_t version = 0;
+  std::memcpy(&version, bytes + 4, sizeof version);
+  return version;
+}
+
+// A name longer than 31 bytes needs the file's long-names flag (readers before OpenEXR 1.7 refuse
+// such files, others read names only up to 31 bytes without it); OpenEXR's writer sets it only then.
+TEST(ExrOutput, LongAttributeNamesAreFlaggedAndReadable) {
+  const auto file = test::scratch_dir() / "long_names.exr";
+  ImageWriteOptions options;
+  const std::string name = "rtpro:a_rather_long_attribute_name_for_a_test";
+  options.metadata = {{name, "kept"}};
+  write_exr(file, every_kind_of_float(3, 2, {"R", "G", "B"}), options);
+  EXPECT_EQ(version_field(file), Imf::EXR_VERSION | Imf::LONG_NAMES_FLAG);
+  EXPECT_EQ(attributes_of(file).at(name), "kept");
+  EXPECT_EQ(raw_attributes_of(file).at(name), "string");
+
+  const auto short_names = test::scratch_dir() / "short_names.exr";
+  write_exr(short_names, every_kind_of_float(3, 2, {"R", "G", "B"}), {});
+  EXPECT_EQ(version_field(short_names), Imf::EXR_VERSION);
 }
 
 // OpenEXR writes what OpenImageIO's EXR writer wrote for rtpro: the same pixel type, compression,
