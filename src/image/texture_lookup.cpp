@@ -88,6 +88,9 @@ class OiioTextureLookup final : public TextureLookup {
       const std::filesystem::path tx = folder_.path() / (std::to_string(i) + ".tx");
       OIIO::ImageSpec config_spec;
       config_spec.attribute("maketx:filtername", "box");
+      // A private copy, read once: zip-compressing its mip levels cost 20 ms of a textured
+      // render's serial start.
+      config_spec.attribute("compression", "none");
       if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, linear, tx.string(), config_spec))
         throw InputError(source.file.string() + ": cannot prepare the texture: " + OIIO::geterror());
       files_.emplace_back(tx.string());
