@@ -14,8 +14,8 @@ namespace rtpro {
 // Scanlines per chunk in EXR's ZIP_COMPRESSION.
 inline constexpr int kExrZipScanlines = 16;
 
-// Not thread-safe: one per thread. Holds the compressor's tables (about half a megabyte) and
-// scratch buffers, so an encoder is best reused for many chunks.
+// Not thread-safe: one per thread. Holds the compressor's hash tables and scratch buffers, so an
+// encoder is best reused for many chunks.
 class ExrZipEncoder {
  public:
   ExrZipEncoder();
