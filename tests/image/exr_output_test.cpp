@@ -90,8 +90,8 @@ std::int32_t version_field(const fs::path& file) {
   return version;
 }
 
-// A name longer than 31 bytes needs the file's long-names flag (readers before OpenEXR 1.7 refuse
-// such files, others read names only up to 31 bytes without it); OpenEXR's writer sets it only then.
+// A name longer than 31 bytes needs the file's long-names flag (the format's rule; readers before
+// OpenEXR 1.7 refuse such files), which OpenEXR's own writer sets only then.
 TEST(ExrOutput, LongAttributeNamesAreFlaggedAndReadable) {
   const auto file = test::scratch_dir() / "long_names.exr";
   ImageWriteOptions options;

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
-#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <span>
