@@ -14,25 +14,28 @@ std::filesystem::path source_dir() { return RTPRO_SOURCE_DIR; }
 std::filesystem::path scenes_dir() { return source_dir() / "scenes"; }
 std::filesystem::path rtpro_executable() { return RTPRO_EXECUTABLE; }
 
-std::filesystem::path scratch_dir() {
+namespace {
+
+// build/test_scratch/<suite>.<test> of the running test ('/' of parameterised names replaced).
+std::filesystem::path test_folder() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "no_test";
   for (char& c : name)
     if (c == '/') c = '_';
-  const auto dir = std::filesystem::path(RTPRO_BINARY_DIR) / "test_scratch" / name;
+  return std::filesystem::path(RTPRO_BINARY_DIR) / "test_scratch" / name;
+}
+
+}  // namespace
+
+std::filesystem::path scratch_dir() {
+  const auto dir = test_folder();
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
 }
 
 std::filesystem::path write_file(const std::string& name, const std::string& text) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string test = info ? std::string(info->test_suite_name()) + "." + info->name() : "no_test";
-  for (char& c : test)
-    if (c == '/') c = '_';
-  const auto dir = std::filesystem::path(RTPRO_BINARY_DIR) / "test_scratch" / test;
-  std::filesystem::create_directories(dir);
-  const auto path = dir / name;
+  const auto path = test_folder() / name;
   std::filesystem::create_directories(path.parent_path());
   std::ofstream(path, std::ios::binary) << text;
   return path;
@@ -56,6 +59,14 @@ int run_command(const std::string& command_line, std::string* output) {
   const int status = pclose(pipe);
   if (output) *output = text;
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::string rtpro_command(const std::string& args) { return rtpro_executable().string() + " " + args; }
+
+std::string run_rtpro(const std::string& args, int code) {
+  std::string out;
+  EXPECT_EQ(run_command(rtpro_command(args), &out), code) << args << "\n" << out;
+  return out;
 }
 
 }  // namespace rtpro::test

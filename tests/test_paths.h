@@ -21,4 +21,10 @@ bool fetched_assets_present();
 // Runs a shell command line; returns its exit code, and stderr+stdout in `output`.
 int run_command(const std::string& command_line, std::string* output = nullptr);
 
+// The rtpro binary followed by `args`: a command line for run_command.
+std::string rtpro_command(const std::string& args);
+// Runs rtpro with `args` and expects exit code `code` (a mismatch fails the test, showing the
+// arguments and the output); returns stderr+stdout.
+std::string run_rtpro(const std::string& args, int code);
+
 }  // namespace rtpro::test

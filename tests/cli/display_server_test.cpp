@@ -19,6 +19,7 @@ namespace rtpro {
 namespace {
 
 using test::run_command;
+using test::rtpro_command;
 
 std::string scene_text(int width, int height) {
   return "rtpro: 1\ncamera: {position: [0, 1, 6], look_at: [0, 0.5, 0], fov: 40, resolution: [" +
@@ -169,15 +170,14 @@ class TevTestServer {
   std::string error_;
 };
 
-std::string rtpro(const std::string& args) { return test::rtpro_executable().string() + " " + args; }
-
 TEST(DisplayServer, ViewerReceivesEveryTileOnceAndTheWrittenImage) {
   const auto scene = test::write_file("scene.yaml", scene_text(30, 20));
   const auto output = scene.parent_path() / "preview.exr";
   TevTestServer server;
   std::string out;
-  ASSERT_EQ(run_command(rtpro("render " + scene.string() + " -o " + output.string() + " --tile-size 8 --progress never" +
-                              " --display-server 127.0.0.1:" + std::to_string(server.port())),
+  ASSERT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + output.string() +
+                                      " --tile-size 8 --progress never --display-server 127.0.0.1:" +
+                                      std::to_string(server.port())),
                         &out),
             0)
       << out;
@@ -204,7 +204,7 @@ TEST(DisplayServer, AbsentViewerWarnsAndTheRenderGoesOn) {
   const auto scene = test::write_file("scene.yaml", scene_text(16, 12));
   const auto output = scene.parent_path() / "alone.exr";
   std::string out;
-  ASSERT_EQ(run_command(rtpro("render " + scene.string() + " -o " + output.string() + " --progress never" +
+  ASSERT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + output.string() + " --progress never" +
                               " --display-server 127.0.0.1:" + std::to_string(port)),
                         &out),
             0)
@@ -218,8 +218,9 @@ TEST(DisplayServer, ViewerThatGoesAwayWarnsOnceAndTheRenderGoesOn) {
   const auto output = scene.parent_path() / "gone.exr";
   TevTestServer server(true);
   std::string out;
-  ASSERT_EQ(run_command(rtpro("render " + scene.string() + " -o " + output.string() + " --tile-size 4 --progress never" +
-                              " --display-server 127.0.0.1:" + std::to_string(server.port())),
+  ASSERT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + output.string() +
+                                      " --tile-size 4 --progress never --display-server 127.0.0.1:" +
+                                      std::to_string(server.port())),
                         &out),
             0)
       << out;

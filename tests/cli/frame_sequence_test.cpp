@@ -13,6 +13,8 @@ namespace rtpro {
 namespace {
 
 using test::run_command;
+using test::rtpro_command;
+using test::run_rtpro;
 
 const char* kAnimated = R"(rtpro: 1
 camera:
@@ -28,16 +30,9 @@ world:
   - {type: sphere, center: [0, 0.7, 0], radius: 0.7}
 )";
 
-std::string rtpro(const std::string& args) { return test::rtpro_executable().string() + " " + args; }
-
-std::string run(const std::string& args, int code) {
-  std::string out;
-  EXPECT_EQ(run_command(rtpro(args), &out), code) << args << "\n" << out;
-  return out;
-}
-
 nlohmann::json camera_at(const std::filesystem::path& scene, int frame) {
-  return nlohmann::json::parse(run("info --json " + scene.string() + " -D frame=" + std::to_string(frame), 0))["camera"];
+  const std::string info = run_rtpro("info --json " + scene.string() + " -D frame=" + std::to_string(frame), 0);
+  return nlohmann::json::parse(info)["camera"];
 }
 
 TEST(Keyframes, InterpolateBetweenKeysAndHoldOutside) {
@@ -48,18 +43,18 @@ TEST(Keyframes, InterpolateBetweenKeysAndHoldOutside) {
   EXPECT_EQ(camera_at(scene, 9)["position"], nlohmann::json::array({2.0, 1.0, 5.0}));
   EXPECT_EQ(camera_at(scene, 2)["fov"], 35.0);  // smoothstep(0.5) = 0.5
   // Without a frame, a scene is at frame 1.
-  EXPECT_EQ(nlohmann::json::parse(run("info --json " + scene.string(), 0))["camera"]["fov"], 40.0);
+  EXPECT_EQ(nlohmann::json::parse(run_rtpro("info --json " + scene.string(), 0))["camera"]["fov"], 40.0);
 }
 
 TEST(Keyframes, MistakesAreErrorsAtTheirPlace) {
   const auto bad_shape = test::write_file(
       "a.yaml", std::string(kAnimated).replace(std::string(kAnimated).find("5: [2, 1, 5]"), 12, "5: [2, 1]"));
-  std::string out = run("info " + bad_shape.string(), 2);
+  std::string out = run_rtpro("info " + bad_shape.string(), 2);
   EXPECT_NE(out.find("a.yaml:3:"), std::string::npos) << out;
   EXPECT_NE(out.find("the same shape as the first"), std::string::npos) << out;
   const auto bad_mode = test::write_file(
       "b.yaml", std::string(kAnimated).replace(std::string(kAnimated).find("smooth"), 6, "smoth"));
-  out = run("info " + bad_mode.string(), 2);
+  out = run_rtpro("info " + bad_mode.string(), 2);
   EXPECT_NE(out.find("b.yaml:5:"), std::string::npos) << out;
   EXPECT_NE(out.find("did you mean 'smooth'?"), std::string::npos) << out;
 }
@@ -67,12 +62,12 @@ TEST(Keyframes, MistakesAreErrorsAtTheirPlace) {
 TEST(FrameSequence, EachFrameIsTheImageItRendersAlone) {
   const auto scene = test::write_file("anim.yaml", kAnimated);
   const auto dir = scene.parent_path();
-  run("render " + scene.string() + " -o " + (dir / "seq_##.exr").string() + " --frames 1-5:2 -q", 0);
+  run_rtpro("render " + scene.string() + " -o " + (dir / "seq_##.exr").string() + " --frames 1-5:2 -q", 0);
   EXPECT_FALSE(std::filesystem::exists(dir / "seq_02.exr"));
   std::vector<float> previous;
   for (int frame : {1, 3, 5}) {
     const auto alone = dir / ("alone_" + std::to_string(frame) + ".exr");
-    run("render " + scene.string() + " -o " + alone.string() + " -D frame=" + std::to_string(frame) + " -q", 0);
+    run_rtpro("render " + scene.string() + " -o " + alone.string() + " -D frame=" + std::to_string(frame) + " -q", 0);
     const Image in_sequence = read_image(dir / ("seq_0" + std::to_string(frame) + ".exr"));
     const Image single = read_image(alone);
     EXPECT_EQ(in_sequence.data, single.data) << "frame " << frame;
@@ -85,7 +80,8 @@ TEST(FrameSequence, SkipExistingLeavesWrittenFramesAlone) {
   const auto scene = test::write_file("anim.yaml", kAnimated);
   const auto dir = scene.parent_path();
   std::ofstream(dir / "f_0002.exr") << "rendered by another machine";
-  run("render " + scene.string() + " -o " + (dir / "f_####.exr").string() + " --frames 1-3 --skip-existing -q", 0);
+  run_rtpro("render " + scene.string() + " -o " + (dir / "f_####.exr").string() + " --frames 1-3 --skip-existing -q",
+            0);
   std::ifstream kept(dir / "f_0002.exr");
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "rendered by another machine");
   EXPECT_TRUE(std::filesystem::exists(dir / "f_0001.exr"));
@@ -96,8 +92,10 @@ TEST(FrameSequence, ProgressAndStatsNameTheFrame) {
   const auto scene = test::write_file("anim.yaml", kAnimated);
   const auto dir = scene.parent_path();
   std::string out;
-  ASSERT_EQ(run_command("{ " + rtpro("render " + scene.string() + " -o " + (dir / "p_#.exr").string() + " --frames 2-3 -q" +
-                                     " --progress json --stats-json " + (dir / "stats_#.json").string()) +
+  ASSERT_EQ(run_command("{ " +
+                            rtpro_command("render " + scene.string() + " -o " + (dir / "p_#.exr").string() +
+                                          " --frames 2-3 -q --progress json --stats-json " +
+                                          (dir / "stats_#.json").string()) +
                             " > /dev/null; }",
                         &out),
             0)
@@ -111,7 +109,7 @@ TEST(FrameSequence, ProgressAndStatsNameTheFrame) {
   EXPECT_EQ(finals, (std::vector<int>{2, 3})) << out;
   EXPECT_TRUE(std::filesystem::exists(dir / "stats_2.json"));
   EXPECT_TRUE(std::filesystem::exists(dir / "stats_3.json"));
-  out = run("render " + scene.string() + " -o " + (dir / "q_#.exr").string() + " --frames 2-3 --stats-json " +
+  out = run_rtpro("render " + scene.string() + " -o " + (dir / "q_#.exr").string() + " --frames 2-3 --stats-json " +
                 (dir / "stats.json").string(),
             2);
   EXPECT_NE(out.find("--stats-json with --frames needs a frame number pattern"), std::string::npos) << out;
@@ -120,15 +118,15 @@ TEST(FrameSequence, ProgressAndStatsNameTheFrame) {
 TEST(FrameSequence, PatternAndRangeMistakesAreRefused) {
   const auto scene = test::write_file("anim.yaml", kAnimated);
   const auto dir = scene.parent_path();
-  std::string out = run("render " + scene.string() + " -o " + (dir / "x.exr").string() + " --frames 1-3", 2);
+  std::string out = run_rtpro("render " + scene.string() + " -o " + (dir / "x.exr").string() + " --frames 1-3", 2);
   EXPECT_NE(out.find("--frames needs a frame number pattern"), std::string::npos) << out;
-  out = run("render " + scene.string() + " -o " + (dir / "x_##.exr").string(), 2);
+  out = run_rtpro("render " + scene.string() + " -o " + (dir / "x_##.exr").string(), 2);
   EXPECT_NE(out.find("give --frames"), std::string::npos) << out;
-  out = run("render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 5-1", 2);
+  out = run_rtpro("render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 5-1", 2);
   EXPECT_NE(out.find("the first frame is after the last"), std::string::npos) << out;
-  out = run("render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 1-3:0", 2);
+  out = run_rtpro("render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 1-3:0", 2);
   EXPECT_NE(out.find("the step must be at least 1"), std::string::npos) << out;
-  out = run("render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 1-3 -D frame=2", 2);
+  out = run_rtpro("render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 1-3 -D frame=2", 2);
   EXPECT_NE(out.find("--frames sets the frame"), std::string::npos) << out;
   EXPECT_FALSE(std::filesystem::exists(dir / "x_01.exr"));
 }

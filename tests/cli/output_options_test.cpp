@@ -14,6 +14,8 @@ namespace rtpro {
 namespace {
 
 using test::run_command;
+using test::rtpro_command;
+using test::run_rtpro;
 
 const char* kScene = R"(rtpro: 1
 camera: {position: [0, 1, 6], look_at: [0, 0.5, 0], fov: 40, resolution: [24, 16]}
@@ -25,18 +27,10 @@ world:
   - {type: sphere, center: [0, 0.7, 0], radius: 0.7}
 )";
 
-std::string rtpro(const std::string& args) { return test::rtpro_executable().string() + " " + args; }
-
-// Standard output to `file`, standard error to the output run() returns.
+// Standard output to `file`, standard error to the output run_rtpro() returns.
 std::string run_to(const std::string& args, const std::filesystem::path& file, int code) {
   std::string out;
-  EXPECT_EQ(run_command("{ " + rtpro(args) + " > " + file.string() + "; }", &out), code) << args << "\n" << out;
-  return out;
-}
-
-std::string run(const std::string& args, int code) {
-  std::string out;
-  EXPECT_EQ(run_command(rtpro(args), &out), code) << args << "\n" << out;
+  EXPECT_EQ(run_command("{ " + rtpro_command(args) + " > " + file.string() + "; }", &out), code) << args << "\n" << out;
   return out;
 }
 
@@ -48,7 +42,7 @@ std::string file_bytes(const std::filesystem::path& file) {
 TEST(OutputOptions, StandardOutputHoldsTheSameImageAsAFile) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto dir = scene.parent_path();
-  run("render " + scene.string() + " -o " + (dir / "file.exr").string() + " -q", 0);
+  run_rtpro("render " + scene.string() + " -o " + (dir / "file.exr").string() + " -q", 0);
   run_to("render " + scene.string() + " -o - --format exr -q", dir / "piped.exr", 0);
   const Image a = read_image(dir / "file.exr"), b = read_image(dir / "piped.exr");
   ASSERT_EQ(a.data.size(), b.data.size());
@@ -62,7 +56,7 @@ TEST(OutputOptions, FormatMistakesAreRefused) {
   const auto dir = scene.parent_path();
   std::string out = run_to("render " + scene.string() + " -o -", dir / "x", 2);
   EXPECT_NE(out.find("needs --format"), std::string::npos) << out;
-  out = run("render " + scene.string() + " -o " + (dir / "x.exr").string() + " --format png", 2);
+  out = run_rtpro("render " + scene.string() + " -o " + (dir / "x.exr").string() + " --format png", 2);
   EXPECT_NE(out.find("--format png contradicts"), std::string::npos) << out;
   EXPECT_FALSE(std::filesystem::exists(dir / "x.exr"));
 }
@@ -70,8 +64,8 @@ TEST(OutputOptions, FormatMistakesAreRefused) {
 TEST(OutputOptions, ExposureScalesTheColourByPowersOfTwo) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto dir = scene.parent_path();
-  run("render " + scene.string() + " -o " + (dir / "e0.exr").string() + " -q --aov depth", 0);
-  run("render " + scene.string() + " -o " + (dir / "e2.exr").string() + " -q --aov depth --exposure 2", 0);
+  run_rtpro("render " + scene.string() + " -o " + (dir / "e0.exr").string() + " -q --aov depth", 0);
+  run_rtpro("render " + scene.string() + " -o " + (dir / "e2.exr").string() + " -q --aov depth --exposure 2", 0);
   const Image base = read_image(dir / "e0.exr"), bright = read_image(dir / "e2.exr");
   ASSERT_EQ(base.channels, bright.channels);
   double sum = 0;
@@ -82,7 +76,8 @@ TEST(OutputOptions, ExposureScalesTheColourByPowersOfTwo) {
     sum += base.data[i];
   }
   EXPECT_GT(sum, 1.0);
-  const std::string out = run("render " + scene.string() + " -o " + (dir / "x.exr").string() + " --exposure 100", 2);
+  const std::string out =
+      run_rtpro("render " + scene.string() + " -o " + (dir / "x.exr").string() + " --exposure 100", 2);
   EXPECT_NE(out.find("--exposure must be"), std::string::npos) << out;
 }
 
@@ -111,16 +106,17 @@ TEST(OutputOptions, JsonProgressIsOneObjectPerLine) {
 TEST(OutputOptions, OldDisplaySpellingWarns) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto dir = scene.parent_path();
-  std::string out = run("render " + scene.string() + " -o " + (dir / "d.png").string() + " --display sRGB --progress never", 0);
+  const std::string render = "render " + scene.string() + " -o " + (dir / "d.png").string();
+  std::string out = run_rtpro(render + " --display sRGB --progress never", 0);
   EXPECT_NE(out.find("--display is deprecated"), std::string::npos) << out;
-  out = run("render " + scene.string() + " -o " + (dir / "d.png").string() + " --ocio-display sRGB --progress never", 0);
+  out = run_rtpro(render + " --ocio-display sRGB --progress never", 0);
   EXPECT_EQ(out.find("deprecated"), std::string::npos) << out;
-  out = run("render " + scene.string() + " -o " + (dir / "d.png").string() + " --ocio-display sRGB --display sRGB", 2);
+  out = run_rtpro(render + " --ocio-display sRGB --display sRGB", 2);
   EXPECT_NE(out.find("give only --ocio-display"), std::string::npos) << out;
 }
 
 TEST(OutputOptions, HelpListsFormatsAndTheirEncodings) {
-  const std::string out = run("render --help", 0);
+  const std::string out = run_rtpro("render --help", 0);
   for (const char* fragment : {".exr", "scene-linear", ".tif", "16-bit", ".png", "8-bit", "--ocio-display", "-D,--define"})
     EXPECT_NE(out.find(fragment), std::string::npos) << fragment << "\n" << out;
 }

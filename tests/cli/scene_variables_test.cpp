@@ -9,16 +9,10 @@ namespace rtpro {
 namespace {
 
 using test::run_command;
+using test::rtpro_command;
+using test::run_rtpro;
 
-std::string rtpro(const std::string& args) { return test::rtpro_executable().string() + " " + args; }
-
-std::string run(const std::string& args, int code) {
-  std::string out;
-  EXPECT_EQ(run_command(rtpro(args), &out), code) << args << "\n" << out;
-  return out;
-}
-
-nlohmann::json info(const std::string& args) { return nlohmann::json::parse(run("info --json " + args, 0)); }
+nlohmann::json info(const std::string& args) { return nlohmann::json::parse(run_rtpro("info --json " + args, 0)); }
 
 const char* kCamera = "camera: {position: [0, 0, 5], look_at: [0, 0, 0], fov: 40, resolution: [16, 12]}\n";
 
@@ -47,18 +41,18 @@ TEST(SceneVariables, MistakesAreErrorsAtTheirPlace) {
   const auto scene = test::write_file("v.yaml", std::string("rtpro: 1\n") + kCamera +
                                                     "variables: {radius: 1}\n"
                                                     "world: [{type: sphere, center: [0, 0, 0], radius: $raduis}]\n");
-  std::string out = run("info " + scene.string(), 2);
+  std::string out = run_rtpro("info " + scene.string(), 2);
   EXPECT_NE(out.find("v.yaml:4:"), std::string::npos) << out;
   EXPECT_NE(out.find("undefined variable '$raduis'; did you mean '$radius'?"), std::string::npos) << out;
   const auto good = test::write_file("g.yaml", std::string("rtpro: 1\n") + kCamera +
                                                    "variables: {radius: 1}\n"
                                                    "world: [{type: sphere, center: [0, 0, 0], radius: $radius}]\n");
-  out = run("info " + good.string() + " -D radiu=2", 2);
+  out = run_rtpro("info " + good.string() + " -D radiu=2", 2);
   EXPECT_NE(out.find("-D radiu=2: the scene uses no variable '$radiu'; did you mean 'radius'?"), std::string::npos)
       << out;
-  out = run("info " + good.string() + " -D radius=big", 2);
+  out = run_rtpro("info " + good.string() + " -D radius=big", 2);
   EXPECT_NE(out.find("-D radius=big: sphere.radius: expected a number"), std::string::npos) << out;
-  out = run("info " + good.string() + " -D 2x=1", 2);
+  out = run_rtpro("info " + good.string() + " -D 2x=1", 2);
   EXPECT_NE(out.find("-D 2x=1: variables: '2x' is not a name"), std::string::npos) << out;
 }
 
@@ -91,20 +85,20 @@ TEST(SceneIncludes, CyclesMissingFilesAndErrorsNameTheFile) {
   const auto dir = test::scratch_dir();
   test::write_file("a.yaml", std::string("rtpro: 1\n") + kCamera + "world: [{include: b.yaml}]\n");
   test::write_file("b.yaml", "- {include: a.yaml}\n");
-  std::string out = run("info " + (dir / "a.yaml").string(), 2);
+  std::string out = run_rtpro("info " + (dir / "a.yaml").string(), 2);
   EXPECT_NE(out.find("b.yaml:1:13: include cycle: a.yaml -> b.yaml -> a.yaml"), std::string::npos) << out;
 
   test::write_file("c.yaml", std::string("rtpro: 1\n") + kCamera + "world: [{include: missing.yaml}]\n");
-  out = run("info " + (dir / "c.yaml").string(), 2);
+  out = run_rtpro("info " + (dir / "c.yaml").string(), 2);
   EXPECT_NE(out.find("c.yaml:3:19: cannot include 'missing.yaml'"), std::string::npos) << out;
 
   test::write_file("bad.yaml", "- {type: sphere, center: [0, 0, 0], radius: -1}\n");
   test::write_file("d.yaml", std::string("rtpro: 1\n") + kCamera + "world: [{include: bad.yaml}]\n");
-  out = run("info " + (dir / "d.yaml").string(), 2);
+  out = run_rtpro("info " + (dir / "d.yaml").string(), 2);
   EXPECT_NE(out.find("bad.yaml:1:"), std::string::npos) << out;
 
   test::write_file("self.yaml", "include: self.yaml\n");
-  out = run("info " + (dir / "self.yaml").string(), 2);
+  out = run_rtpro("info " + (dir / "self.yaml").string(), 2);
   EXPECT_NE(out.find("include cycle: self.yaml -> self.yaml"), std::string::npos) << out;
 }
 
@@ -112,7 +106,7 @@ TEST(SceneIncludes, DepthIsLimited) {
   const auto dir = test::scratch_dir();
   for (int i = 0; i < 20; ++i) test::write_file("d" + std::to_string(i) + ".yaml", "include: d" + std::to_string(i + 1) + ".yaml\n");
   test::write_file("d20.yaml", std::string("rtpro: 1\n") + kCamera);
-  const std::string out = run("info " + (dir / "d0.yaml").string(), 2);
+  const std::string out = run_rtpro("info " + (dir / "d0.yaml").string(), 2);
   EXPECT_NE(out.find("includes nested deeper than 16 files"), std::string::npos) << out;
 }
 

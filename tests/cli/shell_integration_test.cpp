@@ -11,8 +11,7 @@ namespace rtpro {
 namespace {
 
 using test::run_command;
-
-std::string rtpro(const std::string& args) { return test::rtpro_executable().string() + " " + args; }
+using test::rtpro_command;
 
 std::string output_of(const std::string& command_line) {
   std::string out;
@@ -21,7 +20,7 @@ std::string output_of(const std::string& command_line) {
 }
 
 std::set<std::string> long_options_in_help(const std::string& command) {
-  const std::string help = output_of(rtpro(command + " --help"));
+  const std::string help = output_of(rtpro_command(command + " --help"));
   std::set<std::string> options;
   const std::regex option("(^|[ ,])(--[a-z][a-z0-9-]*)");
   for (auto it = std::sregex_iterator(help.begin(), help.end(), option); it != std::sregex_iterator(); ++it)
@@ -37,7 +36,7 @@ std::string complete(const std::filesystem::path& script, const std::string& wor
 
 TEST(ShellIntegration, BashCompletionCompletesCommandsOptionsAndValues) {
   const auto script = test::scratch_dir() / "rtpro.bash";
-  output_of(rtpro("completion bash > " + script.string()));
+  output_of(rtpro_command("completion bash > " + script.string()));
   output_of("bash -n " + script.string());
   EXPECT_EQ(complete(script, "rtpro ren"), "render\n");
   EXPECT_EQ(complete(script, "rtpro render --sp"), "--spp\n");
@@ -53,7 +52,7 @@ TEST(ShellIntegration, BashCompletionCompletesCommandsOptionsAndValues) {
 
 TEST(ShellIntegration, ManPageDocumentsEveryOptionAndIsValidRoff) {
   const auto page = test::scratch_dir() / "rtpro.1";
-  output_of(rtpro("manpage > " + page.string()));
+  output_of(rtpro_command("manpage > " + page.string()));
   std::string text = output_of("cat " + page.string());
   text = std::regex_replace(text, std::regex(R"(\\-)"), "-");
   EXPECT_EQ(text.rfind(".TH RTPRO 1", 0), 0u);

@@ -12,6 +12,8 @@ namespace rtpro {
 namespace {
 
 using test::run_command;
+using test::rtpro_command;
+using test::run_rtpro;
 
 const char* kScene = R"(rtpro: 1
 camera: {position: [0, 1, 6], look_at: [0, 0.5, 0], fov: 40, resolution: [24, 16]}
@@ -23,15 +25,6 @@ world:
   - {type: sphere, center: [0, 0.7, 0], radius: 0.7}
 )";
 
-std::string rtpro(const std::string& args) { return test::rtpro_executable().string() + " " + args; }
-
-// Runs rtpro, expecting exit code `code`; returns its output.
-std::string run(const std::string& args, int code) {
-  std::string out;
-  EXPECT_EQ(run_command(rtpro(args), &out), code) << args << "\n" << out;
-  return out;
-}
-
 std::size_t line_count(const std::string& text) {
   std::size_t lines = 0;
   for (char c : text) lines += c == '\n';
@@ -39,7 +32,7 @@ std::size_t line_count(const std::string& text) {
 }
 
 void expect_one_line_error(const std::string& args, const std::string& fragment) {
-  const std::string out = run(args, 2);
+  const std::string out = run_rtpro(args, 2);
   EXPECT_NE(out.find(fragment), std::string::npos) << args << "\n" << out;
   EXPECT_EQ(line_count(out), 1u) << args << "\n" << out;
   EXPECT_EQ(out.rfind("rtpro: error: ", 0), 0u) << out;
@@ -100,7 +93,7 @@ TEST(Usage, AovsNeedAnExrOutput) {
   EXPECT_FALSE(std::filesystem::exists(png));
   // A list option takes one value per occurrence: the scene after it stays the scene.
   const auto exr = scene.parent_path() / "out.exr";
-  run("render -o " + exr.string() + " --aov albedo --aov depth " + scene.string() + " -q", 0);
+  run_rtpro("render -o " + exr.string() + " --aov albedo --aov depth " + scene.string() + " -q", 0);
   EXPECT_TRUE(std::filesystem::exists(exr));
 }
 
@@ -109,16 +102,16 @@ TEST(Usage, OverridesApplyInCommandLineOrder) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const std::string base = "render " + scene.string() + " -o " + (scene.parent_path() / "o.exr").string() +
                            " --stats --progress never";
-  EXPECT_NE(run(base + " --set render.spp=9 --spp 16", 0).find(", 16 spp"), std::string::npos);
-  EXPECT_NE(run(base + " --spp 16 --set render.spp=9", 0).find(", 9 spp"), std::string::npos);
-  EXPECT_NE(run(base + " --size 8x8 --set camera.resolution=[10,6]", 0).find("10x6"), std::string::npos);
-  EXPECT_NE(run(base + " --set camera.resolution=[10,6] --size 8x8", 0).find("8x8"), std::string::npos);
+  EXPECT_NE(run_rtpro(base + " --set render.spp=9 --spp 16", 0).find(", 16 spp"), std::string::npos);
+  EXPECT_NE(run_rtpro(base + " --spp 16 --set render.spp=9", 0).find(", 9 spp"), std::string::npos);
+  EXPECT_NE(run_rtpro(base + " --size 8x8 --set camera.resolution=[10,6]", 0).find("10x6"), std::string::npos);
+  EXPECT_NE(run_rtpro(base + " --set camera.resolution=[10,6] --size 8x8", 0).find("8x8"), std::string::npos);
 }
 
 TEST(Usage, AnySampleCountRenders) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto out = scene.parent_path() / "six.exr";
-  const std::string text = run("render " + scene.string() + " -o " + out.string() + " --spp 6", 0);
+  const std::string text = run_rtpro("render " + scene.string() + " -o " + out.string() + " --spp 6", 0);
   EXPECT_NE(text.find("6 spp"), std::string::npos) << text;
   const Image image = read_image(out);
   float sum = 0;
@@ -129,12 +122,12 @@ TEST(Usage, AnySampleCountRenders) {
 TEST(Usage, SceneFromStandardInput) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto dir = scene.parent_path();
-  run("render " + scene.string() + " -o " + (dir / "file.exr").string() + " -q", 0);
-  run("render - -o " + (dir / "stdin.exr").string() + " -q < " + scene.string(), 0);
+  run_rtpro("render " + scene.string() + " -o " + (dir / "file.exr").string() + " -q", 0);
+  run_rtpro("render - -o " + (dir / "stdin.exr").string() + " -q < " + scene.string(), 0);
   const Image a = read_image(dir / "file.exr"), b = read_image(dir / "stdin.exr");
   ASSERT_EQ(a.data.size(), b.data.size());
   EXPECT_EQ(std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)), 0);
-  const std::string out = run("info - < /dev/null", 2);
+  const std::string out = run_rtpro("info - < /dev/null", 2);
   EXPECT_NE(out.find("<stdin>"), std::string::npos) << out;
 }
 
