@@ -216,15 +216,15 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   stats.height = scene.camera.height;
   stats.load_seconds = seconds_since(start);
 
-  // OpenImageIO takes about half a second to load: do it while the scene renders. Not earlier:
-  // its hundreds of mmap calls slow the page faults of a large scene file's parse. An EXR is
-  // written without it (image textures load it when the render scene is made).
+  // OpenImageIO takes 0.15–0.5 s to load: do it while the BVH builds and the scene renders. Not
+  // earlier: its hundreds of mmap calls slow the page faults of a large scene file's parse. An EXR
+  // is written without it; image textures need it before the render starts, every rank's.
   start_tbb_workers(threads);
-  // Rank 0 of a job loads it too, but creates its render thread first: a thread created while a
-  // dlopen runs waits for it (prestarted_thread.h). The other ranks write no image.
+  // Rank 0 of a job creates its render thread first: a thread created while a dlopen runs waits
+  // for it (prestarted_thread.h). The other ranks write no image.
   std::optional<PrestartedThread> render_thread;
   if (job && leader) render_thread.emplace();
-  if (leader && writing_needs_image_layer(output.file())) start_loading_image_layer();
+  if ((leader && writing_needs_image_layer(output.file())) || !scene.textures.empty()) start_loading_image_layer();
 
   BackendOptions backend_options = o.backend_options;
   backend_options.threads = threads;
@@ -234,7 +234,8 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   stats.build_seconds = backend->stats().build_seconds;
   log.verbose("built " + stats.backend + " acceleration structure in " + std::to_string(stats.build_seconds) + " s");
 
-  // Image textures are decoded to linear .tx copies before the render (through the image layer).
+  // Image textures are decoded to linear .tx copies before the render (through the image layer,
+  // waiting for its load to finish).
   std::unique_ptr<TextureLookup> textures;
   if (!scene.textures.empty()) {
     std::vector<TextureSource> sources;
