@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Start-up of the rtpro executable: wall time and peak RSS (/usr/bin/time) of `--version`,
 # `info scenes/demo.yaml`, an input error (unknown output format) and a 64x48 render of the demo
-# to PNG, as the median and range of N runs. With other rtpro binaries given (e.g. one built from
+# to PNG (written through libpng) and to TIFF (through OpenImageIO, which the render then loads),
+# as the median and range of N runs. With other rtpro binaries given (e.g. one built from
 # an older commit), every binary runs each command in turn, interleaved, so a busy machine affects
 # all of them alike. Usage: benchmarks/startup_benchmark.sh [-n N] [OTHER_RTPRO ...]
 # (RTPRO_BUILD_DIR: use that build folder instead of build-release.)
@@ -26,6 +27,7 @@ commands=(
   "info|info $demo"
   "input-error|render $demo -o $out/x.unknownformat"
   "render-64x48-png|render -q $demo -o $out/demo.png --size 64x48"
+  "render-64x48-tif|render -q $demo -o $out/demo.tif --size 64x48"
 )
 for ((run = 0; run < runs; run++)); do
   for entry in "${commands[@]}"; do
@@ -42,7 +44,7 @@ python3 - "$out" "$runs" "${binaries[@]}" <<'PY'
 import statistics, sys, pathlib
 out, runs, binaries = pathlib.Path(sys.argv[1]), sys.argv[2], sys.argv[3:]
 print(f"median [min-max] of {runs} interleaved runs; wall seconds, peak RSS MB")
-for name in ("version", "info", "input-error", "render-64x48-png"):
+for name in ("version", "info", "input-error", "render-64x48-png", "render-64x48-tif"):
     for b, binary in enumerate(binaries):
         rows = [l.split() for l in (out / f"{name}.{b}").read_text().splitlines() if l[:1].isdigit()]
         t = [float(r[0]) for r in rows]; m = [int(r[1]) / 1024 for r in rows]

@@ -2,9 +2,9 @@
 # does not load OpenImageIO's ~260 shared libraries (half a second, 120 MB) unless it reads or
 # writes an image. See include/rtpro/image/image_layer.h.
 #
-#   rtpro_image_common   output checks, pixel encodings, OpenColorIO colour configs and the EXR
-#                        writer (OpenEXR, libdeflate): no OpenImageIO (the output check uses a list generated
-#                        from it at build time)
+#   rtpro_image_common   output checks, pixel encodings, OpenColorIO colour configs, the EXR
+#                        writer (OpenEXR, libdeflate) and the PNG writer (libpng): no OpenImageIO (the
+#                        output check uses a list generated from it at build time)
 #   rtpro_image          the whole module, calling OpenImageIO directly: what tests link
 #   rtpro_image_oiio     librtpro_image_oiio.so, rtpro_image as a plugin beside the executable
 #   rtpro_image_loader   the executable's stand-in for rtpro_image: loads the plugin and forwards
@@ -26,8 +26,8 @@ add_custom_command(
   DEPENDS rtpro_generate_oiio_output_formats
   COMMENT "Listing the output formats OpenImageIO can write")
 
-set(image_common_sources atomic_file_replacement.cpp color_config.cpp exr_output.cpp exr_zip_block.cpp image_metadata.cpp
-                         output_check.cpp pixel_encoding.cpp)
+set(image_common_sources atomic_file_replacement.cpp color_config.cpp display_encoding.cpp exr_output.cpp
+                         exr_zip_block.cpp image_metadata.cpp output_check.cpp pixel_encoding.cpp png_output.cpp)
 set(image_loader_sources image_layer.cpp)
 set(image_plugin_sources image_plugin.cpp)
 set(image_tool_sources generate_oiio_output_formats.cpp)
@@ -42,7 +42,7 @@ add_library(rtpro_image_common STATIC ${common_files} ${CMAKE_BINARY_DIR}/genera
 target_include_directories(rtpro_image_common PUBLIC ${image_root} PRIVATE ${image_src})
 target_compile_definitions(rtpro_image_common PRIVATE RTPRO_VERSION="${PROJECT_VERSION}")
 target_link_libraries(rtpro_image_common PUBLIC rtpro_core PRIVATE PkgConfig::OpenColorIO OpenEXR::OpenEXR
-                      PkgConfig::libdeflate TBB::tbb)
+                      PkgConfig::libdeflate PNG::PNG TBB::tbb)
 
 rtpro_add_module(image DEPENDS core image_common PRIVATE_DEPENDS OpenImageIO::OpenImageIO
                  EXCLUDE ${image_common_sources} ${image_loader_sources} ${image_plugin_sources}

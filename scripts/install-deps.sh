@@ -10,7 +10,7 @@ packages=(
   libopenimageio-dev openimageio-tools python3-imath libopenexr-dev
   libopencolorio-dev opencolorio-tools
   libgtest-dev libgmock-dev libbenchmark-dev
-  libtinyobjloader-dev libcli11-dev libyaml-dev libyaml-cpp-dev libfmt-dev libfast-float-dev libdeflate-dev
+  libtinyobjloader-dev libcli11-dev libyaml-dev libyaml-cpp-dev libfmt-dev libfast-float-dev libdeflate-dev libpng-dev
   nlohmann-json3-dev libtinygltf-dev libxxhash-dev
   openmpi-bin libopenmpi-dev
   assimp-testmodels

@@ -217,8 +217,8 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   stats.load_seconds = seconds_since(start);
 
   // OpenImageIO takes 0.15–0.5 s to load: do it while the BVH builds and the scene renders. Not
-  // earlier: its hundreds of mmap calls slow the page faults of a large scene file's parse. An EXR
-  // is written without it; image textures need it before the render starts, every rank's.
+  // earlier: its hundreds of mmap calls slow the page faults of a large scene file's parse. EXR
+  // and PNG are written without it; image textures need it before the render starts, every rank's.
   start_tbb_workers(threads);
   // Rank 0 of a job creates its render thread first: a thread created while a dlopen runs waits
   // for it (prestarted_thread.h). The other ranks write no image.

@@ -1,6 +1,7 @@
 #include "display_encoding.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -34,6 +35,17 @@ std::vector<Code> quantise(const std::vector<float>& rgb) {
 }
 
 }  // namespace
+
+DisplayEncoding display_encoding(const ImageWriteOptions& options) {
+  const ColorConfig config = ColorConfig::load(options.ocio_config);
+  DisplayTransform transform = config.display_transform(options.display, options.view);
+  std::string display_lowercase = transform.display();
+  std::transform(display_lowercase.begin(), display_lowercase.end(), display_lowercase.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::string description = "rtpro image, display-referred: OpenColorIO display \"" + transform.display() +
+                            "\", view \"" + transform.view() + "\" (config: " + config.source() + ")";
+  return {std::move(transform), std::move(description), display_lowercase.find("srgb") != std::string::npos};
+}
 
 std::vector<std::uint8_t> encode_for_display_8bit(const Image& image, const DisplayTransform& transform) {
   return quantise<std::uint8_t>(display_rgb(image, transform));

@@ -6,17 +6,16 @@
 #include "exr_output.h"
 #include "image_metadata.h"
 #include "pixel_encoding.h"
+#include "png_output.h"
 #include "image_format_sniff.h"
 #include "image_header_check.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
-#include "rtpro/image/color_config.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <memory>
@@ -79,21 +78,14 @@ void describe_scene_linear(OIIO::ImageSpec& spec, const Image& image, bool any_c
 
 PixelBuffer encode_display_referred(OIIO::ImageSpec& spec, const Image& image, PixelEncoding encoding,
                                     const ImageWriteOptions& options) {
-  const ColorConfig config = ColorConfig::load(options.ocio_config);
-  const DisplayTransform transform = config.display_transform(options.display, options.view);
+  const DisplayEncoding display = display_encoding(options);
   const bool sixteen_bits = encoding == PixelEncoding::kDisplay16Bit;
   spec = OIIO::ImageSpec(image.width, image.height, 3, sixteen_bits ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
-  std::string display_lowercase = transform.display();
-  std::transform(display_lowercase.begin(), display_lowercase.end(), display_lowercase.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  // Without the tag OpenImageIO's PNG writer may declare the pixels linear (gAMA 1.0); other
-  // displays' encodings have no OpenImageIO name, and untagged files are read as sRGB anyway.
-  if (display_lowercase.find("srgb") != std::string::npos) spec.attribute("oiio:ColorSpace", "sRGB");
-  const std::string description = "rtpro image, display-referred: OpenColorIO display \"" + transform.display() +
-                                  "\", view \"" + transform.view() + "\" (config: " + config.source() + ")";
-  for (const auto& [key, value] : image_metadata(description, options)) spec.attribute(key, value);
-  if (sixteen_bits) return encode_for_display_16bit(image, transform);
-  return encode_for_display_8bit(image, transform);
+  // Without the tag OpenImageIO's writers may declare the pixels linear (PNG's gAMA 1.0).
+  if (display.srgb) spec.attribute("oiio:ColorSpace", "sRGB");
+  for (const auto& [key, value] : image_metadata(display.description, options)) spec.attribute(key, value);
+  if (sixteen_bits) return encode_for_display_16bit(image, display.transform);
+  return encode_for_display_8bit(image, display.transform);
 }
 
 bool write_with(OIIO::ImageOutput& output, const std::string& name, const OIIO::ImageSpec& spec,
@@ -268,6 +260,10 @@ class NativeBands {
 void write_image(const std::filesystem::path& file, const Image& image, const ImageWriteOptions& options) {
   if (is_exr_file(file)) {
     write_exr(file, image, options);
+    return;
+  }
+  if (is_png_file(file)) {
+    write_png(file, image, options);
     return;
   }
   const bool any_channel_count = writer_for(file)->supports("nchannels");

@@ -5,6 +5,7 @@
 #include "rtpro/image/image_layer.h"
 
 #include "exr_output.h"
+#include "png_output.h"
 #include "image_layer_api.h"
 #include "rtpro/core/error.h"
 #include "rtpro/image/diff_image.h"
@@ -119,11 +120,15 @@ void start_loading_image_layer() { start_load(true); }
 
 bool image_layer_loading() { return load_state().in_flight; }
 
-bool writing_needs_image_layer(const std::filesystem::path& file) { return !is_exr_file(file); }
+bool writing_needs_image_layer(const std::filesystem::path& file) { return !is_exr_file(file) && !is_png_file(file); }
 
 void write_image(const std::filesystem::path& file, const Image& image, const ImageWriteOptions& options) {
   if (is_exr_file(file)) {
     write_exr(file, image, options);
+    return;
+  }
+  if (is_png_file(file)) {
+    write_png(file, image, options);
     return;
   }
   image_layer().write_image(file, image, options);

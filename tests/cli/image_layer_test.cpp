@@ -38,12 +38,14 @@ TEST(ImageLayer, OnlyReadingOrWritingAnImageLoadsOpenImageIo) {
   EXPECT_FALSE(loads_openimageio("--help", 0));
   EXPECT_FALSE(loads_openimageio("info " + scene.string(), 0));
   EXPECT_FALSE(loads_openimageio("render " + scene.string() + " -o " + (folder / "x.unknownformat").string(), 2));
-  EXPECT_FALSE(loads_openimageio("render " + scene.string() + " -o " + (folder / "x.png").string() + " --view nope", 2));
+  EXPECT_FALSE(
+      loads_openimageio("render " + scene.string() + " -o " + (folder / "x.tif").string() + " --view nope", 2));
   EXPECT_FALSE(loads_openimageio("render " + scene.string() + " --no-such-flag", 2));
-  // An EXR is written through OpenEXR alone.
+  // An EXR is written through OpenEXR alone, a PNG through libpng alone.
   EXPECT_FALSE(loads_openimageio("render -q " + scene.string() + " -o " + (folder / "x.exr").string(), 0));
+  EXPECT_FALSE(loads_openimageio("render -q " + scene.string() + " -o " + (folder / "x.png").string(), 0));
   // The control: the same check sees the load when an image is written through OpenImageIO.
-  EXPECT_TRUE(loads_openimageio("render -q " + scene.string() + " -o " + (folder / "x.png").string(), 0));
+  EXPECT_TRUE(loads_openimageio("render -q " + scene.string() + " -o " + (folder / "x.tif").string(), 0));
 }
 
 // The render starts loading the image layer in the background before it reads the scene; an error
@@ -53,11 +55,11 @@ TEST(ImageLayer, SceneErrorsDuringABackgroundLoadAreReportedInFull) {
       "scene.yaml", std::string(kTinyScene) + "  - {type: mesh, file: missing_mesh.obj}\n");
   std::string out;
   EXPECT_EQ(run_command(rtpro_executable().string() + " render " + scene.string() + " -o " +
-                            (scene.parent_path() / "x.png").string(),
+                            (scene.parent_path() / "x.tif").string(),
                         &out),
             2);
   EXPECT_NE(out.find("missing_mesh.obj"), std::string::npos) << out;
-  EXPECT_FALSE(std::filesystem::exists(scene.parent_path() / "x.png"));
+  EXPECT_FALSE(std::filesystem::exists(scene.parent_path() / "x.tif"));
 }
 
 TEST(ImageLayer, WithoutThePluginImagesFailWithAClearErrorAndEverythingElseWorks) {
@@ -67,14 +69,15 @@ TEST(ImageLayer, WithoutThePluginImagesFailWithAClearErrorAndEverythingElseWorks
   const auto scene = test::write_file("scene.yaml", kTinyScene);
   std::string out;
   EXPECT_EQ(run_command(lonely.string() + " info " + scene.string(), &out), 0) << out;
-  EXPECT_EQ(run_command(lonely.string() + " render -q " + scene.string() + " -o " + (folder / "x.png").string(), &out),
+  EXPECT_EQ(run_command(lonely.string() + " render -q " + scene.string() + " -o " + (folder / "x.tif").string(), &out),
             1);
   EXPECT_NE(out.find("librtpro_image_oiio.so"), std::string::npos) << out;
-  EXPECT_FALSE(std::filesystem::exists(folder / "x.png"));
-  EXPECT_EQ(run_command(lonely.string() + " render -q " + scene.string() + " -o " + (folder / "x.exr").string(), &out),
-            0)
-      << out;
-  EXPECT_TRUE(std::filesystem::exists(folder / "x.exr"));
+  EXPECT_FALSE(std::filesystem::exists(folder / "x.tif"));
+  for (const char* written_without_it : {"x.exr", "x.png"}) {
+    const auto image = folder / written_without_it;
+    EXPECT_EQ(run_command(lonely.string() + " render -q " + scene.string() + " -o " + image.string(), &out), 0) << out;
+    EXPECT_TRUE(std::filesystem::exists(image));
+  }
   EXPECT_EQ(run_command(lonely.string() + " compare " + (folder / "a.exr").string() + " " +
                             (folder / "b.exr").string(),
                         &out),
@@ -115,14 +118,14 @@ TEST(ImageLayer, ThePluginsLibraryListChangesOnlyWhoOpensThem) {
   };
 
   std::filesystem::copy_file(list, folder / "librtpro_image_oiio.so.libraries");
-  EXPECT_NE(render("listed.png").find("dynamically loaded by"), std::string::npos);
+  EXPECT_NE(render("listed.tif").find("dynamically loaded by"), std::string::npos);
   std::filesystem::remove(folder / "librtpro_image_oiio.so.libraries");
-  EXPECT_NE(render("unlisted.png").find("needed by"), std::string::npos);
+  EXPECT_NE(render("unlisted.tif").find("needed by"), std::string::npos);
   std::ofstream(folder / "librtpro_image_oiio.so.libraries") << "libnot-a-library.so.7\n\n/nonexistent/libx.so\n";
-  EXPECT_NE(render("bogus.png").find("needed by"), std::string::npos);
+  EXPECT_NE(render("bogus.tif").find("needed by"), std::string::npos);
 
-  EXPECT_TRUE(same_pixels("listed.png", "unlisted.png"));
-  EXPECT_TRUE(same_pixels("listed.png", "bogus.png"));
+  EXPECT_TRUE(same_pixels("listed.tif", "unlisted.tif"));
+  EXPECT_TRUE(same_pixels("listed.tif", "bogus.tif"));
 }
 
 }  // namespace

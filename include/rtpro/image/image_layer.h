@@ -3,8 +3,8 @@
 // libraries that take about half a second and 120 MB to load, so the executable does not link it:
 // write_image, read_image, compare_images and write_diff_image go through librtpro_image_oiio.so,
 // a plugin loaded from the executable's own folder on first use. Everything else in this module
-// (output checks, OpenColorIO colour configs, and writing EXR files, through OpenEXR) works
-// without it. Tests and other programs that link
+// (output checks, OpenColorIO colour configs, writing EXR files through OpenEXR and PNG files
+// through libpng) works without it. Tests and other programs that link
 // rtpro_image call OpenImageIO directly and never load the plugin; these functions exist only in
 // the executable's rtpro_image_loader.
 
@@ -12,7 +12,7 @@
 
 namespace rtpro {
 
-// Whether write_image needs the plugin for this file (every format but EXR).
+// Whether write_image needs the plugin for this file (every format but EXR and PNG).
 bool writing_needs_image_layer(const std::filesystem::path& file);
 
 // Starts loading the plugin on a background thread and returns at once, so that the image layer
