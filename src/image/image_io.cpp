@@ -3,10 +3,9 @@
 #include "rtpro/image/atomic_file_replacement.h"
 
 #include "display_encoding.h"
-#include "exr_output.h"
+#include "direct_output.h"
 #include "image_metadata.h"
 #include "pixel_encoding.h"
-#include "png_output.h"
 #include "image_format_sniff.h"
 #include "image_header_check.h"
 #include "rtpro/core/error.h"
@@ -81,7 +80,8 @@ PixelBuffer encode_display_referred(OIIO::ImageSpec& spec, const Image& image, P
   const DisplayEncoding display = display_encoding(options);
   const bool sixteen_bits = encoding == PixelEncoding::kDisplay16Bit;
   spec = OIIO::ImageSpec(image.width, image.height, 3, sixteen_bits ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
-  // Without the tag OpenImageIO's writers may declare the pixels linear (PNG's gAMA 1.0).
+  // OpenImageIO records the encoding where the format has a way to say it; an untagged file is
+  // read as sRGB anyway.
   if (display.srgb) spec.attribute("oiio:ColorSpace", "sRGB");
   for (const auto& [key, value] : image_metadata(display.description, options)) spec.attribute(key, value);
   if (sixteen_bits) return encode_for_display_16bit(image, display.transform);
@@ -258,14 +258,7 @@ class NativeBands {
 }  // namespace
 
 void write_image(const std::filesystem::path& file, const Image& image, const ImageWriteOptions& options) {
-  if (is_exr_file(file)) {
-    write_exr(file, image, options);
-    return;
-  }
-  if (is_png_file(file)) {
-    write_png(file, image, options);
-    return;
-  }
+  if (write_without_openimageio(file, image, options)) return;
   const bool any_channel_count = writer_for(file)->supports("nchannels");
   require_writable_image(file, image);
   OIIO::ImageSpec spec;

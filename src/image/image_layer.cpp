@@ -1,11 +1,10 @@
 // The executable's side of the image layer (see rtpro/image/image_layer.h): finds and loads
 // librtpro_image_oiio.so once, on a background thread or on first use, and forwards the
-// OpenImageIO-backed calls of image_io.h, image_compare.h and diff_image.h to it. EXR files are
-// written here, through OpenEXR (exr_output.h), without it.
+// OpenImageIO-backed calls of image_io.h, image_compare.h and diff_image.h to it. EXR and PNG
+// files are written here without it (direct_output.h).
 #include "rtpro/image/image_layer.h"
 
-#include "exr_output.h"
-#include "png_output.h"
+#include "direct_output.h"
 #include "image_layer_api.h"
 #include "rtpro/core/error.h"
 #include "rtpro/image/diff_image.h"
@@ -120,18 +119,10 @@ void start_loading_image_layer() { start_load(true); }
 
 bool image_layer_loading() { return load_state().in_flight; }
 
-bool writing_needs_image_layer(const std::filesystem::path& file) { return !is_exr_file(file) && !is_png_file(file); }
+bool writing_needs_image_layer(const std::filesystem::path& file) { return !written_without_openimageio(file); }
 
 void write_image(const std::filesystem::path& file, const Image& image, const ImageWriteOptions& options) {
-  if (is_exr_file(file)) {
-    write_exr(file, image, options);
-    return;
-  }
-  if (is_png_file(file)) {
-    write_png(file, image, options);
-    return;
-  }
-  image_layer().write_image(file, image, options);
+  if (!write_without_openimageio(file, image, options)) image_layer().write_image(file, image, options);
 }
 
 Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
