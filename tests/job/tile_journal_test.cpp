@@ -6,6 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
 #include <cstring>
 #include <fstream>
 #include <thread>
@@ -34,6 +38,10 @@ JobIdentity identity_of(const std::string& spp) {
 std::vector<char> bytes_of(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::ptrdiff_t entries_in(const std::filesystem::path& folder) {
+  return std::distance(std::filesystem::directory_iterator(folder), std::filesystem::directory_iterator());
 }
 
 void write_bytes(const std::filesystem::path& file, const std::vector<char>& bytes) {
@@ -136,9 +144,59 @@ TEST(TileJournal, NewJournalReplacesTheOldOneWholeAndRemoveDeletesIt) {
   const JournalContents contents = read_journal(file, grid, kChannels);
   ASSERT_EQ(contents.tiles.size(), 1u);
   EXPECT_EQ(contents.tiles[0].index, 1u);
-  EXPECT_FALSE(std::filesystem::exists(file.string() + ".tmp"));
+  EXPECT_EQ(entries_in(file.parent_path()), 1);  // the journal alone: no temporary left
   replaced.remove();
   EXPECT_FALSE(std::filesystem::exists(file));
+}
+
+// Two renders of one output each write a new journal at once (and then replace each other's):
+// each writes its own temporary file, so both succeed and the journal left is one of theirs, whole.
+TEST(TileJournal, JournalsCreatedAtOnceForOneFileAllSucceed) {
+  const TileGrid grid({0, 0, 16, 16}, 8);
+  const auto file = test::scratch_dir() / "j";
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<std::thread> writers;
+    std::atomic<int> failures{0};
+    for (int w = 0; w < 4; ++w)
+      writers.emplace_back([&, w] {
+        try {
+          const std::vector<TileResult> kept{tile_of(grid, static_cast<std::size_t>(w))};
+          TileJournal journal(file, identity_of("4"), kChannels, kept);
+        } catch (const RuntimeError&) {
+          ++failures;
+        }
+      });
+    for (std::thread& writer : writers) writer.join();
+    ASSERT_EQ(failures.load(), 0) << "trial " << trial;
+    ASSERT_EQ(read_journal(file, grid, kChannels).tiles.size(), 1u) << "trial " << trial;
+  }
+  EXPECT_EQ(entries_in(file.parent_path()), 1);
+}
+
+// A PID that is certainly not running: a child that has exited and been reaped.
+pid_t dead_pid() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return child;
+}
+
+// A render killed while it wrote its new journal leaves a temporary; the next journal of the
+// same file removes it, and leaves those of live processes and other files alone.
+TEST(TileJournal, TemporariesOfDeadProcessesAreRemoved) {
+  const auto folder = test::scratch_dir();
+  const auto file = folder / "j";
+  const std::string dead = std::to_string(dead_pid());
+  const std::string live = std::to_string(::getppid());
+  const std::vector<std::string> left = {"j.tmp-" + dead + "-0", "j.tmp-" + live + "-2", "k.tmp-" + dead + "-0",
+                                         "j.tmp-x-1"};
+  for (const std::string& name : left) std::ofstream(folder / name) << "half a journal";
+  TileJournal journal(file, identity_of("4"), kChannels, {});
+  EXPECT_FALSE(std::filesystem::exists(folder / ("j.tmp-" + dead + "-0")));
+  EXPECT_TRUE(std::filesystem::exists(folder / ("j.tmp-" + live + "-2")));
+  EXPECT_TRUE(std::filesystem::exists(folder / ("k.tmp-" + dead + "-0")));
+  EXPECT_TRUE(std::filesystem::exists(folder / "j.tmp-x-1"));
 }
 
 TEST(TileJournal, UnwritableFolderIsARuntimeErrorNamingTheFile) {
