@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace rtpro::test {
 
@@ -67,6 +68,13 @@ std::string run_rtpro(const std::string& args, int code) {
   std::string out;
   EXPECT_EQ(run_command(rtpro_command(args), &out), code) << args << "\n" << out;
   return out;
+}
+
+pid_t dead_pid() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ::waitpid(child, nullptr, 0);
+  return child;
 }
 
 }  // namespace rtpro::test

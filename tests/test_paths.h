@@ -1,5 +1,7 @@
 #pragma once
 // Paths the tests need: the source tree (scenes, fixtures), a scratch folder, the rtpro binary.
+#include <sys/types.h>
+
 #include <filesystem>
 #include <string>
 
@@ -26,5 +28,8 @@ std::string rtpro_command(const std::string& args);
 // Runs rtpro with `args` and expects exit code `code` (a mismatch fails the test, showing the
 // arguments and the output); returns stderr+stdout.
 std::string run_rtpro(const std::string& args, int code);
+
+// A PID that is certainly not running: a child that has exited and been reaped.
+pid_t dead_pid();
 
 }  // namespace rtpro::test

@@ -37,14 +37,6 @@ std::vector<std::string> temporaries_in(const std::filesystem::path& dir) {
   return found;
 }
 
-// A PID that is certainly not running: a child that has exited and been reaped.
-pid_t dead_pid() {
-  const pid_t child = ::fork();
-  if (child == 0) ::_exit(0);
-  ::waitpid(child, nullptr, 0);
-  return child;
-}
-
 TEST(AtomicWrite, RefusesToReplaceSymlinksAndDevices) {
   const auto dir = scratch_dir();
   const auto victim = write_file("victim.txt", "precious");

@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -173,21 +172,12 @@ TEST(TileJournal, JournalsCreatedAtOnceForOneFileAllSucceed) {
   EXPECT_EQ(entries_in(file.parent_path()), 1);
 }
 
-// A PID that is certainly not running: a child that has exited and been reaped.
-pid_t dead_pid() {
-  const pid_t child = ::fork();
-  if (child == 0) ::_exit(0);
-  int status = 0;
-  ::waitpid(child, &status, 0);
-  return child;
-}
-
 // A render killed while it wrote its new journal leaves a temporary; the next journal of the
 // same file removes it, and leaves those of live processes and other files alone.
 TEST(TileJournal, TemporariesOfDeadProcessesAreRemoved) {
   const auto folder = test::scratch_dir();
   const auto file = folder / "j";
-  const std::string dead = std::to_string(dead_pid());
+  const std::string dead = std::to_string(test::dead_pid());
   const std::string live = std::to_string(::getppid());
   const std::vector<std::string> left = {"j.tmp-" + dead + "-0", "j.tmp-" + live + "-2", "k.tmp-" + dead + "-0",
                                          "j.tmp-x-1"};
