@@ -1,16 +1,14 @@
 #include "rtpro/image/atomic_file_replacement.h"
 
 #include "rtpro/core/error.h"
+#include "rtpro/core/stale_temporaries.h"
 
 #include <fcntl.h>
-#include <signal.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
-#include <charconv>
 #include <cstring>
 #include <string>
 
@@ -42,31 +40,8 @@ const char* kind_of_special_file(mode_t mode) {
   return "not a regular file";
 }
 
-// Unique within the process too, so two threads writing one target never share a temporary.
 std::filesystem::path temporary_name_for(const std::filesystem::path& target) {
-  static std::atomic<unsigned> sequence{0};
-  return folder_of(target) /
-         (temporary_prefix(target) + std::to_string(::getpid()) + "-" + std::to_string(sequence.fetch_add(1)));
-}
-
-bool process_is_gone(long pid) { return pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH; }
-
-// Removes ".NAME.rtpro-tmp-PID-N" files whose PID no longer runs: left by a killed rtpro. A PID
-// reused by another process keeps its file until that process ends too; nothing is lost by waiting.
-void remove_stale_temporaries(const std::filesystem::path& target) {
-  const std::string prefix = temporary_prefix(target);
-  std::error_code error;
-  for (std::filesystem::directory_iterator it(folder_of(target), error), end; !error && it != end;
-       it.increment(error)) {
-    const std::string name = it->path().filename().string();
-    if (name.compare(0, prefix.size(), prefix) != 0) continue;
-    const char* digits = name.c_str() + prefix.size();
-    long pid = 0;
-    const auto [after, parsed] = std::from_chars(digits, name.c_str() + name.size(), pid);
-    if (parsed != std::errc() || *after != '-') continue;
-    std::error_code ignored;
-    if (process_is_gone(pid) && !it->is_symlink(ignored)) std::filesystem::remove(it->path(), ignored);
-  }
+  return folder_of(target) / owned_temporary_name(temporary_prefix(target));
 }
 
 void write_all(int descriptor, std::string_view bytes, const std::filesystem::path& target) {
@@ -117,7 +92,7 @@ void check_replaceable(const std::filesystem::path& target) {
 
 AtomicFileReplacement::AtomicFileReplacement(std::filesystem::path target) : target_(std::move(target)) {
   check_replaceable(target_);
-  remove_stale_temporaries(target_);
+  remove_stale_temporaries(folder_of(target_), temporary_prefix(target_));
   temporary_ = temporary_name_for(target_);
 }
 

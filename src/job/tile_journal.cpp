@@ -1,18 +1,16 @@
 #include "rtpro/job/tile_journal.h"
 
 #include "rtpro/core/error.h"
+#include "rtpro/core/stale_temporaries.h"
 #include "rtpro/job/tile_codec.h"
 
 #include <xxhash.h>
 
 #include <fcntl.h>
-#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
-#include <charconv>
 #include <cstdint>
 #include <cstring>
 #include <string_view>
@@ -37,32 +35,12 @@ bool write_all(int descriptor, const void* data, std::size_t size) {
   return true;
 }
 
-// "JOURNAL.tmp-PID-N": a new journal is written under a name of its own, so that two renders of
-// one output (or two journals of one process) never write into each other's file. A file already
-// there under this name was left by a dead process that had this PID: it is overwritten.
-std::filesystem::path temporary_journal(const std::filesystem::path& file) {
-  static std::atomic<unsigned> created{0};
-  std::filesystem::path temporary = file;
-  temporary += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(created++);
-  return temporary;
-}
+// "JOURNAL.tmp-": a new journal is written under a temporary name of its own
+// (stale_temporaries.h), so that two renders of one output never write into each other's file.
+std::string temporary_prefix(const std::filesystem::path& file) { return file.filename().string() + ".tmp-"; }
 
-// Removes what a render killed while it wrote its new journal left behind: temporaries of this
-// journal whose process is gone. Best effort: a folder that cannot be listed leaves them.
-void remove_stale_temporaries(const std::filesystem::path& file) {
-  const std::string prefix = file.filename().string() + ".tmp-";
-  const std::filesystem::path folder = file.has_parent_path() ? file.parent_path() : ".";
-  std::error_code error;
-  for (auto entry = std::filesystem::directory_iterator(folder, error);
-       !error && entry != std::filesystem::directory_iterator(); entry.increment(error)) {
-    const std::string name = entry->path().filename().string();
-    if (name.compare(0, prefix.size(), prefix) != 0) continue;
-    pid_t pid = 0;
-    const char* digits = name.data() + prefix.size();
-    const auto [end, parsed] = std::from_chars(digits, name.data() + name.size(), pid);
-    if (parsed != std::errc() || pid <= 0 || end == name.data() + name.size() || *end != '-') continue;
-    if (::kill(pid, 0) != 0 && errno == ESRCH) ::unlink(entry->path().c_str());
-  }
+std::filesystem::path folder_of(const std::filesystem::path& file) {
+  return file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
 }
 
 std::vector<std::byte> header_bytes(const JobIdentity& identity) {
@@ -158,7 +136,7 @@ JournalContents read_journal(const std::filesystem::path& file, const TileGrid& 
 TileJournal::TileJournal(std::filesystem::path file, const JobIdentity& identity, int channel_count,
                          std::span<const TileResult> kept)
     : file_(std::move(file)), channel_count_(channel_count) {
-  const std::filesystem::path temporary = temporary_journal(file_);
+  const std::filesystem::path temporary = folder_of(file_) / owned_temporary_name(temporary_prefix(file_));
   const auto fail = [&](const std::string& what) {
     const std::string reason = std::strerror(errno);
     if (descriptor_ >= 0) ::close(descriptor_);
@@ -175,7 +153,8 @@ TileJournal::TileJournal(std::filesystem::path file, const JobIdentity& identity
     if (!write_all(descriptor_, record.data(), record.size())) throw fail("write");
   }
   if (::rename(temporary.c_str(), file_.c_str()) != 0) throw fail("rename");
-  remove_stale_temporaries(file_);
+  // What a render killed while it wrote its new journal left behind.
+  remove_stale_temporaries(folder_of(file_), temporary_prefix(file_));
 }
 
 TileJournal::~TileJournal() {

@@ -1,0 +1,37 @@
+#include "rtpro/core/stale_temporaries.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <charconv>
+
+namespace rtpro {
+
+namespace {
+
+bool process_is_gone(long pid) { return pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH; }
+
+}  // namespace
+
+std::string owned_temporary_name(std::string_view prefix) {
+  static std::atomic<unsigned> sequence{0};
+  return std::string(prefix) + std::to_string(::getpid()) + "-" + std::to_string(sequence.fetch_add(1));
+}
+
+void remove_stale_temporaries(const std::filesystem::path& folder, std::string_view prefix) {
+  std::error_code error;
+  for (std::filesystem::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    const char* digits = name.c_str() + prefix.size();
+    long pid = 0;
+    const auto [after, parsed] = std::from_chars(digits, name.c_str() + name.size(), pid);
+    if (parsed != std::errc() || *after != '-') continue;
+    std::error_code ignored;
+    if (process_is_gone(pid) && !it->is_symlink(ignored)) std::filesystem::remove(it->path(), ignored);
+  }
+}
+
+}  // namespace rtpro
