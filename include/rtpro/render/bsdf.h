@@ -1,0 +1,26 @@
+#pragma once
+// The closed set of BSDF kinds the path tracer shades with. Adding a kind to the variant makes
+// every dispatch below fail to compile until it handles the new kind. All directions are in the
+// local shading frame (render/shading_frame.h), conventions in render/bsdf_sample.h.
+#include "rtpro/render/bsdf_sample.h"
+#include "rtpro/render/conductor_bsdf.h"
+#include "rtpro/render/dielectric_bsdf.h"
+#include "rtpro/render/diffuse_bsdf.h"
+
+#include <optional>
+#include <variant>
+
+namespace rtpro {
+
+using Bsdf = std::variant<DiffuseBsdf, ConductorBsdf, DielectricBsdf>;
+
+// f(wo, wi) without the cosine; 0 for delta BSDFs, whose lobes only sampling can find.
+Color bsdf_eval(const Bsdf& bsdf, const Vec3& wo, const Vec3& wi);
+// Density of bsdf_sample choosing wi, per unit solid angle; 0 for delta BSDFs.
+float bsdf_pdf(const Bsdf& bsdf, const Vec3& wo, const Vec3& wi);
+// A direction wi for wo: u_lobe chooses among lobes, u places the direction within one.
+std::optional<BsdfSample> bsdf_sample(const Bsdf& bsdf, const Vec3& wo, float u_lobe, Sample2D u);
+// True when every lobe is specular: sampling a light there can never be weighted in.
+bool bsdf_is_delta(const Bsdf& bsdf);
+
+}  // namespace rtpro

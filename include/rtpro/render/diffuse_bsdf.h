@@ -1,0 +1,19 @@
+#pragma once
+// Lambertian reflection: the same radiance towards every direction on the side it is lit from.
+#include "rtpro/render/bsdf_sample.h"
+
+#include <optional>
+
+namespace rtpro {
+
+struct DiffuseBsdf {
+  Color reflectance;  // the albedo, each channel in [0, 1]
+
+  bool is_delta() const { return false; }
+  Color eval(const Vec3& wo, const Vec3& wi) const;
+  float pdf(const Vec3& wo, const Vec3& wi) const;
+  // Cosine-weighted on wo's side, so f·cos/pdf is the reflectance itself. u_lobe is unused.
+  std::optional<BsdfSample> sample(const Vec3& wo, float u_lobe, Sample2D u) const;
+};
+
+}  // namespace rtpro

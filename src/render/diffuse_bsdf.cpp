@@ -1,0 +1,27 @@
+#include "rtpro/render/diffuse_bsdf.h"
+
+#include <numbers>
+
+namespace rtpro {
+
+Color DiffuseBsdf::eval(const Vec3& wo, const Vec3& wi) const {
+  if (!same_hemisphere(wo, wi)) return Color(0.0f);
+  return reflectance * std::numbers::inv_pi_v<float>;
+}
+
+float DiffuseBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
+  if (!same_hemisphere(wo, wi)) return 0.0f;
+  return cosine_hemisphere_pdf(abs_cos_theta(wi));
+}
+
+std::optional<BsdfSample> DiffuseBsdf::sample(const Vec3& wo, float /*u_lobe*/, Sample2D u) const {
+  if (wo.z == 0.0f) return std::nullopt;
+  Vec3 wi = sample_cosine_hemisphere(u);
+  if (wo.z < 0.0f) wi.z = -wi.z;
+  const float pdf = cosine_hemisphere_pdf(abs_cos_theta(wi));
+  // The disk's rim maps to the horizon, where the direction carries nothing.
+  if (pdf == 0.0f) return std::nullopt;
+  return BsdfSample{reflectance * std::numbers::inv_pi_v<float>, wi, pdf, false, false};
+}
+
+}  // namespace rtpro
