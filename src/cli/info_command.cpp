@@ -66,7 +66,8 @@ nlohmann::json info_json(const std::string& file, const RenderScene& scene, cons
             {"fov", scene.camera.fov_degrees},
             {"resolution", {scene.camera.width, scene.camera.height}}}},
           {"render",
-           {{"spp", scene.render.spp}, {"max_depth", scene.render.max_depth}, {"seed", scene.render.seed}}},
+           {{"spp", scene.render.spp}, {"max_depth", scene.render.max_depth}, {"seed", scene.render.seed},
+            {"integrator", integrator_name(scene.render.integrator)}}},
           {"materials", s.materials},
           {"lights", {{"point", s.point_lights}, {"directional", s.directional_lights}, {"area", s.area_lights}}},
           {"spheres", {{"stored", s.spheres_stored}, {"rendered", s.spheres_rendered}}},
@@ -88,7 +89,8 @@ void print_text(const std::string& file, const RenderScene& scene, const SceneSu
   std::cout << std::fixed << std::setprecision(1);
   std::cout << "scene        " << file << "\n"
             << "image        " << scene.camera.width << "x" << scene.camera.height << ", " << scene.render.spp
-            << " spp, max depth " << scene.render.max_depth << ", seed " << scene.render.seed << "\n"
+            << " spp, max depth " << scene.render.max_depth << ", seed " << scene.render.seed << ", "
+            << integrator_name(scene.render.integrator) << " integrator\n"
             << "materials    " << s.materials << "\n"
             << "lights       " << s.point_lights << " point, " << s.directional_lights << " directional, "
             << s.area_lights << " area\n"

@@ -52,7 +52,7 @@ struct RenderCommandOptions {
   std::string backend = "embree";
   // Kept as the user's text: they become scene overrides checked by the scene file's rules, so
   // "--seed -1" or "--size 4294967297x1" is an error instead of wrapping to another number.
-  std::string spp, max_depth, seed, size;
+  std::string spp, max_depth, seed, size, integrator;
   std::optional<int> threads;
   std::string ocio_config, display, deprecated_display, view;
   std::string format;      // for -o -
@@ -310,6 +310,7 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
       {"rtpro:spp", std::to_string(scene.render.spp)},
       {"rtpro:seed", std::to_string(scene.render.seed)},
       {"rtpro:max_depth", std::to_string(scene.render.max_depth)},
+      {"rtpro:integrator", integrator_name(scene.render.integrator)},
       {"rtpro:render_seconds", std::to_string(result.seconds)},
       {"rtpro:scene", o.scene},
   };
@@ -419,7 +420,7 @@ void add_render_command(CLI::App& app, Action& action) {
   auto o = std::make_shared<RenderCommandOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene file to an image");
   cmd->add_option("scene", o->scene, "Scene file (YAML or glTF), or '-' for a YAML scene on standard input")->required();
-  cmd->footer("Scene values: the file, then --set, -D, --spp, --size, --seed and --max-depth in the order typed (the "
+  cmd->footer("Scene values: the file, then --set, -D, --spp, --size, --seed, --max-depth and --integrator in the order typed (the "
               "last to set a key wins); every value is checked by the scene file's own rules.");
   cmd->add_option("-o,--output", o->output, kOutputFormatsHelp)->required();
   cmd->add_option("--format", o->format, "Image format for -o - (standard output): exr, png, tif, hdr, ...");
@@ -434,7 +435,12 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
   cmd->add_option("--threads", o->threads, "Worker threads (0: all cores)");
   cmd->add_option("--seed", o->seed, "Seed of the pixel sampler");
-  cmd->add_option("--max-depth", o->max_depth, "Maximum number of mirror bounces");
+  cmd->add_option("--max-depth", o->max_depth,
+                  "Most bounces after the camera ray: mirror bounces (whitted), path vertices (path)");
+  cmd->add_option("--integrator", o->integrator,
+                  "Light transport: path (physically based path tracing with MIS) or whitted (Phong, mirrors, "
+                  "glass); default: the scene's render.integrator, else whitted")
+      ->check(CLI::IsMember({"path", "whitted"}));
   add_scene_override_options(*cmd, o->overrides, o->defines);
   cmd->add_option("--display-server", o->display_server,
                   "Stream tiles as they finish to the tev image viewer listening at HOST:PORT (tev's default: "

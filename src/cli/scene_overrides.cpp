@@ -52,13 +52,14 @@ SceneOverride override_of(const std::string& option_name, const std::string& val
   if (option_name == "--spp") return integer_override("render.spp", "--spp", value);
   if (option_name == "--max-depth") return integer_override("render.max_depth", "--max-depth", value);
   if (option_name == "--seed") return integer_override("render.seed", "--seed", value);
+  if (option_name == "--integrator") return {"render.integrator=" + value, "--integrator " + value};
   if (option_name == "--size") return size_override(value);
   throw std::logic_error("not a scene override option: " + option_name);
 }
 
 bool is_override_option(const std::string& name) {
   return name == "--set" || name == "--define" || name == "--spp" || name == "--max-depth" || name == "--seed" ||
-         name == "--size";
+         name == "--size" || name == "--integrator";
 }
 
 constexpr std::size_t kMaxStdinSceneBytes = std::size_t{256} << 20;

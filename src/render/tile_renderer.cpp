@@ -27,6 +27,7 @@ TileRenderer::TileRenderer(const RenderScene& scene, const Backend& backend, con
       textures_(textures),
       sampler_(scene.render.spp, scene.render.seed),
       pixels_per_batch_(std::max<std::size_t>(1, kSamplesPerBatch / static_cast<std::size_t>(scene.render.spp))) {
+  if (scene.render.integrator == Integrator::kPath) path_lights_.emplace(scene);
   if (!scene.textures.empty() && !textures)
     throw std::logic_error("TileRenderer: the scene has image textures but none were opened for it");
 }
@@ -70,7 +71,16 @@ void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixe
     }
   }
   ws.samples.resize(ws.camera_rays.size());
-  shade_batch(scene_, backend_, sampler_, ws.camera_rays, ws.sample_keys, ws.samples, out.rays, ws.shading, textures_);
+  switch (scene_.render.integrator) {
+    case Integrator::kWhitted:
+      shade_batch(scene_, backend_, sampler_, ws.camera_rays, ws.sample_keys, ws.samples, out.rays, ws.shading,
+                  textures_);
+      break;
+    case Integrator::kPath:
+      trace_paths(scene_, backend_, *path_lights_, sampler_, ws.camera_rays, ws.sample_keys, ws.samples, out.rays,
+                  ws.paths, textures_);
+      break;
+  }
 
   const auto channels = static_cast<std::size_t>(layout_.channel_count());
   for (std::size_t p = 0; p < pixel_count; ++p) {

@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <tuple>
 
 namespace rtpro {
@@ -39,6 +40,44 @@ ColorTexture color_texture(const MaterialDesc& m, std::vector<TextureImage>& tex
   return checker;
 }
 
+SurfaceModel surface_model(const MaterialDesc& m) {
+  switch (m.kind) {
+    case MaterialKind::kPhong: return PhongSurface{};
+    case MaterialKind::kDiffuse: return DiffuseSurface{};
+    case MaterialKind::kConductor:
+      return ConductorSurface{m.roughness, m.conductor_eta.has_value(), m.conductor_eta.value_or(Color(0.0f)),
+                              m.conductor_k.value_or(Color(0.0f))};
+    case MaterialKind::kDielectric: return DielectricSurface{m.roughness};
+  }
+  throw std::logic_error("surface_model: unknown material kind");
+}
+
+// The Whitted fields of a physically based kind: what the Phong model can show of it, so the
+// whitted integrator still renders the scene (a preview; `path` renders it as it is). Phong
+// materials keep what their file says.
+void approximate_for_whitted(const MaterialDesc& m, Material& material) {
+  const float alpha = m.roughness * m.roughness;
+  // The Phong exponent whose lobe is about as wide as a GGX lobe of this alpha (Walter et al. 2007).
+  const float shininess = std::min(2.0f / std::max(alpha * alpha, 1e-4f) - 2.0f, 10000.0f);
+  switch (m.kind) {
+    case MaterialKind::kPhong: return;
+    case MaterialKind::kDiffuse:
+      material.specular = 0.0f;
+      material.reflectivity = 0.0f;
+      return;
+    case MaterialKind::kConductor:
+      material.specular = 1.0f - m.roughness;
+      material.shininess = shininess;
+      material.reflectivity = m.roughness < 0.1f ? 1.0f - m.roughness * 10.0f : 0.0f;
+      return;
+    case MaterialKind::kDielectric:
+      material.specular = 1.0f - m.roughness;
+      material.shininess = shininess;
+      material.reflectivity = 0.0f;
+      return;
+  }
+}
+
 class RenderSceneBuilder {
  public:
   RenderSceneBuilder(const SceneDescription& description, SceneBuildReport* report)
@@ -65,7 +104,11 @@ class RenderSceneBuilder {
   std::uint32_t add_material(const MaterialDesc& m, const std::string& name) {
     std::optional<Dielectric> dielectric;
     if (m.ior) dielectric = Dielectric{*m.ior, m.transmittance, m.transmittance_distance};
-    scene_.materials.push_back({color_texture(m, scene_.textures), m.specular, m.shininess, m.reflectivity, dielectric});
+    Material material{color_texture(m, scene_.textures), m.specular, m.shininess, m.reflectivity, dielectric};
+    material.model = surface_model(m);
+    material.emission = Emission{m.emission, m.emission_two_sided};
+    approximate_for_whitted(m, material);
+    scene_.materials.push_back(std::move(material));
     scene_.material_names.push_back(name);
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);
   }

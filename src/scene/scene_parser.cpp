@@ -120,8 +120,21 @@ int read_spp(const YamlNode& node) {
 RenderSettings read_render(const YamlNode* node) {
   RenderSettings settings;
   if (absent(node)) return settings;
-  const MappingReader render(*node, "render", {"spp", "max_depth", "seed", "ambient", "background"});
+  const MappingReader render(*node, "render", {"spp", "max_depth", "seed", "ambient", "background", "integrator", "sampling"});
   if (const YamlNode* spp = render.optional("spp")) settings.spp = read_spp(*spp);
+  if (const YamlNode* integrator = render.optional("integrator")) {
+    const std::string text = read_string(*integrator, "render.integrator");
+    if (text == "whitted") settings.integrator = Integrator::kWhitted;
+    else if (text == "path") settings.integrator = Integrator::kPath;
+    else fail_at(*integrator, "render.integrator must be path or whitted, got '" + text + "'");
+  }
+  if (const YamlNode* sampling = render.optional("sampling")) {
+    const std::string text = read_string(*sampling, "render.sampling");
+    if (text == "mis") settings.path_sampling = PathSampling::kMis;
+    else if (text == "light") settings.path_sampling = PathSampling::kLight;
+    else if (text == "bsdf") settings.path_sampling = PathSampling::kBsdf;
+    else fail_at(*sampling, "render.sampling must be mis, light or bsdf, got '" + text + "'");
+  }
   if (const YamlNode* depth = render.optional("max_depth")) {
     const std::int64_t value = read_integer(*depth, "render.max_depth");
     if (value < 0 || value > kMaxDepth)
@@ -193,12 +206,92 @@ void read_image_texture(const YamlNode& node, const std::string& name, const std
   if (const YamlNode* tint = texture.optional("tint")) desc.color = read_color(*tint, texture.field("tint"));
 }
 
+MaterialKind read_material_kind(const YamlNode& node, const std::string& name) {
+  const std::string text = read_string(node, name);
+  if (text == "phong") return MaterialKind::kPhong;
+  if (text == "diffuse") return MaterialKind::kDiffuse;
+  if (text == "conductor") return MaterialKind::kConductor;
+  if (text == "dielectric") return MaterialKind::kDielectric;
+  fail_at(node, name + " must be phong, diffuse, conductor or dielectric, got '" + text + "'");
+}
+
+// The keys a material of `kind` may have besides `type`, colour and emission: each kind names its
+// own, so a key of another kind (a conductor's `reflectivity`) is an error, not silently ignored.
+std::vector<std::string_view> material_keys(MaterialKind kind) {
+  std::vector<std::string_view> keys{"type", "color", "emission", "emission_strength", "emission_sides"};
+  const auto add = [&keys](std::initializer_list<std::string_view> more) { keys.insert(keys.end(), more); };
+  switch (kind) {
+    case MaterialKind::kPhong:
+      add({"specular", "shininess", "reflectivity", "ior", "transmittance", "transmittance_distance"});
+      break;
+    case MaterialKind::kDiffuse: break;
+    case MaterialKind::kConductor: add({"roughness", "eta", "k"}); break;
+    case MaterialKind::kDielectric: add({"roughness", "ior", "transmittance", "transmittance_distance"}); break;
+  }
+  return keys;
+}
+
+// emission: [r, g, b] radiance, times emission_strength (1), from the front side or both
+// (emission_sides: front | both).
+void read_emission(const MappingReader& material, MaterialDesc& desc) {
+  const YamlNode* emission = material.optional("emission");
+  const YamlNode* strength = material.optional("emission_strength");
+  const YamlNode* sides = material.optional("emission_sides");
+  if (!emission && (strength || sides))
+    fail_at(strength ? *strength : *sides, material.field(strength ? "emission_strength" : "emission_sides") +
+                                               " qualifies the emission: give the material an emission colour too");
+  if (!emission) return;
+  desc.emission = read_vec3(*emission, material.field("emission"));  // radiance: no 1-is-full rule
+  if (std::min({desc.emission.x, desc.emission.y, desc.emission.z}) < 0.0f)
+    fail_at(*emission, material.field("emission") + " is emitted radiance: each channel 0 or more");
+  if (strength) {
+    const float factor = read_non_negative(*strength, material.field("emission_strength"));
+    desc.emission = desc.emission * factor;
+    if (!is_finite(desc.emission))
+      fail_at(*strength, material.field("emission_strength") + " makes the emission overflow");
+  }
+  if (sides) {
+    const std::string text = read_string(*sides, material.field("emission_sides"));
+    if (text == "front") desc.emission_two_sided = false;
+    else if (text == "both") desc.emission_two_sided = true;
+    else fail_at(*sides, material.field("emission_sides") + " must be front or both, got '" + text + "'");
+  }
+}
+
+// roughness 0..1 and a conductor's complex index (eta and k together).
+void read_microfacet_keys(const MappingReader& material, MaterialDesc& desc) {
+  if (const YamlNode* roughness = material.optional("roughness")) {
+    desc.roughness = read_non_negative(*roughness, material.field("roughness"));
+    if (desc.roughness > 1.0f)
+      fail_at(*roughness, material.field("roughness") + " must be from 0 (smooth) to 1, got " + std::string(roughness->scalar()));
+  }
+  const YamlNode* eta = material.optional("eta");
+  const YamlNode* k = material.optional("k");
+  if (!eta != !k)
+    fail_at(eta ? *eta : *k, material.field(eta ? "eta" : "k") +
+                                 ": a complex index of refraction needs both eta and k (gold: eta [0.143, 0.374, 1.442], "
+                                 "k [3.983, 2.385, 1.603])");
+  if (eta) {
+    desc.conductor_eta = read_color(*eta, material.field("eta"));
+    desc.conductor_k = read_color(*k, material.field("k"));
+    if (std::min({desc.conductor_eta->x, desc.conductor_eta->y, desc.conductor_eta->z}) <= 0.0f)
+      fail_at(*eta, material.field("eta") + " must be above 0 in each channel");
+    if (std::min({desc.conductor_k->x, desc.conductor_k->y, desc.conductor_k->z}) < 0.0f)
+      fail_at(*k, material.field("k") + " must be 0 or more in each channel");
+  }
+}
+
 MaterialDesc read_material(const std::string& name, const YamlNode& node, const std::filesystem::path& folder) {
-  const MappingReader material(node, "material '" + name + "'",
-                               {"color", "specular", "shininess", "reflectivity", "ior", "transmittance",
-                                "transmittance_distance"});
+  if (!node.is_mapping())
+    fail_at(node, "material '" + name + "': expected a mapping such as {type: diffuse, color: [0.8, 0.8, 0.8]}, got " +
+                      node.describe());
   MaterialDesc desc;
   desc.name = name;
+  if (const YamlEntry* type = node.find("type")) desc.kind = read_material_kind(*type->value, "material '" + name + "'.type");
+  const std::vector<std::string_view> keys = material_keys(desc.kind);
+  const MappingReader material(node, "material '" + name + "'", keys);
+  read_emission(material, desc);
+  read_microfacet_keys(material, desc);
   if (const YamlNode* color = material.optional("color")) {
     if (color->is_mapping() && color->find("texture")) {
       read_image_texture(*color, material.field("color"), folder, desc);
@@ -217,6 +310,7 @@ MaterialDesc read_material(const std::string& name, const YamlNode& node, const 
     if (desc.reflectivity > 1.0f)
       fail_at(*reflectivity, material.field("reflectivity") + " must be from 0 to 1, got " + std::string(reflectivity->scalar()));
   }
+  if (desc.kind == MaterialKind::kDielectric) desc.ior = 1.5f;
   if (const YamlNode* ior = material.optional("ior")) {
     const double index = read_number(*ior, material.field("ior"));
     if (!(index > 0.0) || !(index <= 100.0))

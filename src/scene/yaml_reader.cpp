@@ -48,7 +48,7 @@ Integer parse_integer(const YamlNode& node, const std::string& name, std::string
 
 }  // namespace
 
-MappingReader::MappingReader(const YamlNode& node, std::string what, std::initializer_list<std::string_view> keys)
+MappingReader::MappingReader(const YamlNode& node, std::string what, std::span<const std::string_view> keys)
     : node_(node), what_(std::move(what)) {
   if (!node.is_mapping()) fail_at(node, what_ + ": expected a mapping, got " + node.describe());
   for (const YamlEntry& entry : node.entries()) {

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,7 +27,9 @@ inline constexpr double kMaxSceneNumber = 1e9;
 class MappingReader {
  public:
   // `what` names the mapping in messages: "camera", "sphere", "material 'red'".
-  MappingReader(const YamlNode& node, std::string what, std::initializer_list<std::string_view> keys);
+  MappingReader(const YamlNode& node, std::string what, std::initializer_list<std::string_view> keys)
+      : MappingReader(node, std::move(what), std::span<const std::string_view>(keys.begin(), keys.size())) {}
+  MappingReader(const YamlNode& node, std::string what, std::span<const std::string_view> keys);
 
   const YamlNode* optional(std::string_view key) const;
   const YamlNode& required(std::string_view key) const;

@@ -1,13 +1,16 @@
 #pragma once
-// Renders one tile: generates its camera samples, shades them in batches of whole pixels (see
-// shading.h) and resolves each pixel's samples, in sample order, into the tile's film layout.
+// Renders one tile: generates its camera samples, shades them in batches of whole pixels with the
+// scene's integrator (whitted: shading.h; path: path_integrator.h) and resolves each pixel's samples, in sample order, into the tile's film layout.
 #include "rtpro/backend/backend.h"
 #include "rtpro/render/film.h"
+#include "rtpro/render/light_set.h"
+#include "rtpro/render/path_integrator.h"
 #include "rtpro/render/sampler.h"
 #include "rtpro/render/shading.h"
 #include "rtpro/render/tiles.h"
 #include "rtpro/scene/render_scene.h"
 
+#include <optional>
 #include <vector>
 
 namespace rtpro {
@@ -21,6 +24,7 @@ class TileRenderer {
     std::vector<PixelOffset> pixel_offsets;  // one pixel's, spp of them
     std::vector<SampleResult> samples;
     ShadingWorkspace shading;
+    PathWorkspace paths;
   };
 
   // `textures`: the scene's image textures, opened (open_textures); required when it has any.
@@ -41,6 +45,7 @@ class TileRenderer {
   const TextureLookup* textures_;
   StratifiedSampler sampler_;
   std::size_t pixels_per_batch_;
+  std::optional<LightSet> path_lights_;  // built for the path integrator only
 };
 
 }  // namespace rtpro

@@ -42,8 +42,23 @@ struct CheckerDesc {
   CheckerAxes axes = CheckerAxes::kXZ;
 };
 
+// What kind of surface a material is (`type:` in the scene file). `phong` is the Whitted model
+// (colour, highlight, mirror reflectivity, glass with an ior); the others are physically based.
+enum class MaterialKind : std::uint8_t { kPhong, kDiffuse, kConductor, kDielectric };
+
 struct MaterialDesc {
   std::string name;
+  MaterialKind kind = MaterialKind::kPhong;
+  // Conductor and dielectric: GGX roughness from 0 (smooth, a perfect mirror or clear glass) to 1;
+  // the distribution's alpha is roughness².
+  float roughness = 0.0f;
+  // Conductor: a complex index of refraction eta + i·k per channel (measured metals); unset, the
+  // conductor's reflectance at normal incidence is `color` (Schlick's Fresnel).
+  std::optional<Color> conductor_eta, conductor_k;
+  // Emitted radiance (colour × strength), on the front side of a surface (the side its normal
+  // points to; a sphere's outside) or on both. Lights the scene under the path integrator.
+  Color emission{0.0f};
+  bool emission_two_sided = false;
   Color color{0.8f, 0.8f, 0.8f};  // diffuse (and ambient) colour
   std::optional<CheckerDesc> checker;  // when set, the diffuse colour instead of `color`
   // Glass: an index of refraction makes the material a smooth dielectric (Fresnel-weighted

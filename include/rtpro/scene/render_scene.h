@@ -94,12 +94,42 @@ struct Dielectric {
   float transmittance_distance;
 };
 
+// What the path integrator evaluates at a surface (render/material_bsdf.h makes its BSDF).
+// PhongSurface: the Whitted fields below, read as a Lambert surface of `color` (glass, with a
+// dielectric, as smooth glass). The others take their colour from Material::color.
+struct PhongSurface {};
+struct DiffuseSurface {};  // Lambert, reflectance `color`
+struct ConductorSurface {
+  float roughness;
+  // A complex index eta + i·k per channel; without one, `color` is the reflectance at normal
+  // incidence.
+  bool has_complex_ior;
+  Color eta, k;
+};
+struct DielectricSurface {
+  float roughness;  // index and absorption in Material::dielectric
+};
+using SurfaceModel = std::variant<PhongSurface, DiffuseSurface, ConductorSurface, DielectricSurface>;
+
+// Radiance a surface emits: from its front side (where its normal points; a sphere's outside) or
+// from both.
+struct Emission {
+  Color radiance{0.0f};
+  bool two_sided = false;
+  bool emits() const { return radiance.x > 0.0f || radiance.y > 0.0f || radiance.z > 0.0f; }
+};
+
+// A material as both integrators see it. The Whitted fields (colour, Phong highlight, mirror
+// reflectivity, glass) are set for every kind, physically based kinds approximated there, so the
+// whitted integrator renders any scene; the path integrator reads `model`.
 struct Material {
   ColorTexture color;
   float specular;
   float shininess;
   float reflectivity;
   std::optional<Dielectric> dielectric;  // glass: no diffuse part, Fresnel reflection and refraction
+  SurfaceModel model = PhongSurface{};
+  Emission emission{};
 };
 
 struct RenderScene {

@@ -7,9 +7,39 @@
 
 namespace rtpro {
 
+// How light is carried to the camera. `whitted` is the Phong model with mirrors, glass and hard or
+// soft shadows (render/shading.h); `path` is physically based unidirectional path tracing with
+// multiple importance sampling (render/path_integrator.h).
+enum class Integrator : std::uint8_t { kWhitted, kPath };
+
+// How the path integrator finds light arriving at a non-specular vertex: both strategies,
+// weighted by multiple importance sampling (the default), or one of them alone (for tests and
+// comparisons: each alone is unbiased, only noisier). Point and directional lights, which BSDF
+// samples cannot reach, are always light-sampled.
+enum class PathSampling : std::uint8_t { kMis, kLight, kBsdf };
+
+constexpr const char* path_sampling_name(PathSampling sampling) {
+  switch (sampling) {
+    case PathSampling::kMis: return "mis";
+    case PathSampling::kLight: return "light";
+    case PathSampling::kBsdf: return "bsdf";
+  }
+  return "?";
+}
+
+constexpr const char* integrator_name(Integrator integrator) {
+  switch (integrator) {
+    case Integrator::kWhitted: return "whitted";
+    case Integrator::kPath: return "path";
+  }
+  return "?";
+}
+
 struct RenderSettings {
   int spp = 16;        // samples per pixel, 1..65536 (stratified over the most nearly square grid)
-  int max_depth = 5;   // mirror bounces after the camera ray
+  int max_depth = 5;   // bounces after the camera ray: mirror bounces (whitted), path vertices (path)
+  Integrator integrator = Integrator::kWhitted;
+  PathSampling path_sampling = PathSampling::kMis;
   std::uint64_t seed = 0;
   float ambient = 0.2f;
   Color background{0.0f, 0.0f, 0.0f};

@@ -1,0 +1,85 @@
+#pragma once
+// Every light the path integrator samples: the scene's lights and its emissive surfaces (each
+// emissive triangle and sphere of the top level a light of its own), picked in proportion to
+// their power and sampled with an exact pdf, so a BSDF sample that reaches one of them can be
+// weighted against light sampling (multiple importance sampling).
+//
+// Emissive surfaces inside instances are not sampled: a path that hits one adds its emission with
+// weight 1, which is unbiased (BSDF sampling alone), only noisier.
+#include "rtpro/backend/hit.h"
+#include "rtpro/core/ray.h"
+#include "rtpro/render/alias_table.h"
+#include "rtpro/render/sampler.h"
+#include "rtpro/scene/render_scene.h"
+
+#include <cstdint>
+#include <optional>
+#include <variant>
+#include <vector>
+
+namespace rtpro {
+
+// A triangle of an emissive material: p0 + [0,1]·e1 + [0,1]·e2 with barycentrics summing to <= 1.
+struct EmissiveTriangle {
+  Vec3 p0, e1, e2;
+  Vec3 normal;  // unit e1 × e2: the front side
+  float area;
+  Emission emission;
+};
+
+// A sphere of an emissive material (outside: the front side).
+struct EmissiveSphere {
+  Vec3 center;
+  float radius;
+  Emission emission;
+};
+
+// Point lights fall off with the square of distance here: `radiance` is read as intensity (W/sr),
+// as every physically based renderer reads it.
+using PathLight = std::variant<PointLight, DirectionalLight, SphereLight, QuadLight, EmissiveTriangle, EmissiveSphere>;
+
+struct PathLightSample {
+  Vec3 direction;   // unit, from the point towards the light
+  float distance;   // to the sampled point; infinity for directional lights
+  Color radiance;   // arriving along `direction` (no pdf folded in)
+  float pdf;        // solid angle, times the probability of picking the light; 1 for delta lights
+  bool delta;       // point and directional lights: no BSDF sample can reach them
+  std::uint32_t light;  // which light of the set
+};
+
+class LightSet {
+ public:
+  explicit LightSet(const RenderScene& scene);
+
+  bool empty() const { return pick_.empty(); }
+  const std::vector<PathLight>& lights() const { return lights_; }
+
+  // A light picked by u_pick, then a point on it by u, as seen from `point`; nothing when the
+  // light sends nothing there (behind a one-sided emitter).
+  std::optional<PathLightSample> sample(const Vec3& point, float u_pick, Sample2D u) const;
+
+  // The light that an emissive surface hit is (kInvalidId when it is not sampled).
+  std::uint32_t light_of_hit(const Hit& hit) const;
+  // The pdf sample() has of reaching `on_light` on light `index` from `from` (solid angle, pick
+  // probability included), 0 for lights that cannot be hit.
+  float pdf(std::uint32_t index, const Vec3& from, const Vec3& on_light) const;
+
+  // The nearest light without geometry (sphere and rectangle lights) that `ray` sees before
+  // t_max, with its index and the radiance it shows.
+  struct SeenLight {
+    std::uint32_t index;
+    float t;
+    Color radiance;
+  };
+  std::optional<SeenLight> seen_light(const Ray& ray, float t_max) const;
+
+ private:
+  std::vector<PathLight> lights_;
+  AliasTable pick_;
+  std::vector<std::uint32_t> analytic_;  // indices of sphere and rectangle lights
+  // Per top-level geometry: the light index of each primitive (kInvalidId where it does not
+  // emit); empty for geometries without emitters.
+  std::vector<std::vector<std::uint32_t>> light_of_primitive_;
+};
+
+}  // namespace rtpro

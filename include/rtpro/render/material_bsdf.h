@@ -1,0 +1,22 @@
+#pragma once
+// A material's BSDF at a shading point, and the frame it is evaluated in: each surface kind of
+// the scene (SurfaceModel) maps to one BSDF kind here, exhaustively.
+#include "rtpro/render/bsdf.h"
+#include "rtpro/render/shading_frame.h"
+#include "rtpro/render/surface.h"
+#include "rtpro/scene/render_scene.h"
+
+namespace rtpro {
+
+struct SurfaceBsdf {
+  Bsdf bsdf;
+  // +z is the shading normal: on the side the ray came from for opaque kinds, which have no
+  // inside; on the outside (the side the primitive's normal points to) for dielectrics, whose
+  // BSDF tells entering from leaving.
+  ShadingFrame frame;
+};
+
+// `color`: the material's colour texture evaluated at the point.
+SurfaceBsdf material_bsdf(const Material& material, const Color& color, const SurfacePoint& point);
+
+}  // namespace rtpro

@@ -1,0 +1,72 @@
+#pragma once
+// Unidirectional path tracing with multiple importance sampling (the `path` integrator). At every
+// vertex whose BSDF is not purely specular, one light sample (LightSet: every light kind and every
+// emissive surface) and one BSDF sample, each weighted by the power heuristic against the other's
+// pdf; emission reached by a BSDF sample after a specular vertex (or by the camera ray) counts in
+// full. Russian roulette after kRouletteStart bounces, its number from the sampler.
+//
+// Paths are traced in generations, as shade_batch traces Whitted rays: every path's next ray of a
+// batch together, then every shadow ray of that generation together. Each sample's radiance sums
+// its contributions in the order its own path made them, so it never depends on what else shares
+// its batch; every random decision is a pure function of (pixel, sample, dimension, seed).
+#include "rtpro/backend/backend.h"
+#include "rtpro/image/texture_lookup.h"
+#include "rtpro/render/light_set.h"
+#include "rtpro/render/sampler.h"
+#include "rtpro/render/shading.h"
+#include "rtpro/scene/render_scene.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace rtpro {
+
+namespace path_dimension {
+// Offsets within a bounce's dimensions (sample_dimension::at_bounce).
+inline constexpr int kLightPoint = 0;   // and 1
+inline constexpr int kBsdfDirection = 2;  // and 3
+inline constexpr int kLightPick = 4;
+inline constexpr int kBsdfLobe = 5;
+inline constexpr int kRoulette = 6;
+}  // namespace path_dimension
+
+inline constexpr int kRouletteStart = 3;
+
+// The buffers one worker reuses from batch to batch.
+class PathWorkspace {
+ public:
+  struct Path {
+    std::uint32_t sample;
+    int bounce;
+    Color beta;             // throughput from the camera to this ray's origin
+    Vec3 origin;            // the vertex the ray leaves (for the pdf of light sampling)
+    float bsdf_pdf;         // solid-angle pdf of the ray's direction
+    bool specular;          // the ray left a specular vertex or the camera: emission counts in full
+    bool aov_pending;       // albedo and normal AOVs wait for the first non-specular vertex
+    bool transmitted;       // the ray was refracted into or out of a surface (counted as refraction)
+    std::uint32_t medium;   // the dielectric material whose inside the ray crosses, or kOutside
+  };
+  static constexpr std::uint32_t kOutside = ~0u;
+  struct ShadowQuery {
+    std::uint32_t sample;
+    Color contribution;  // added when the shadow ray is unoccluded
+  };
+
+  std::vector<Path> paths, next_paths;
+  std::vector<Ray> rays, next_rays;
+  std::vector<Hit> hits;
+  std::vector<ShadowQuery> shadow_queries;
+  std::vector<Ray> shadow_rays;
+  std::vector<std::uint8_t> occluded;
+};
+
+// Traces a batch of camera rays; results[i] receives camera_rays[i]'s radiance and its AOV hit,
+// keys[i] names its camera sample. Ray counts are added to `counts` (bounces as reflection or
+// refraction rays).
+void trace_paths(const RenderScene& scene, const Backend& backend, const LightSet& lights,
+                 const StratifiedSampler& sampler, std::span<const Ray> camera_rays, std::span<const SampleKey> keys,
+                 std::span<SampleResult> results, RayCounts& counts, PathWorkspace& workspace,
+                 const TextureLookup* textures);
+
+}  // namespace rtpro

@@ -1,0 +1,272 @@
+#include "rtpro/render/light_set.h"
+
+#include "rtpro/render/light_sample.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace rtpro {
+
+namespace {
+
+constexpr float kPi = std::numbers::pi_v<float>;
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+float average(const Color& c) { return (c.x + c.y + c.z) * (1.0f / 3.0f); }
+
+// An orthonormal frame around unit `w` (Duff et al. 2017, branch-free).
+void frame_around(const Vec3& w, Vec3& t1, Vec3& t2) {
+  const float sign = std::copysign(1.0f, w.z);
+  const float a = -1.0f / (sign + w.z);
+  const float b = w.x * w.y * a;
+  t1 = Vec3(1.0f + sign * w.x * w.x * a, sign * b, -sign * w.x);
+  t2 = Vec3(b, sign + w.y * w.y * a, -w.y);
+}
+
+// What the pick distribution weighs each light by: the power it emits (the average of its
+// channels). A directional light delivers its irradiance over the disk the scene fills.
+struct Power {
+  float scene_radius;
+  float operator()(const PointLight& l) const { return 4.0f * kPi * average(l.radiance); }
+  float operator()(const DirectionalLight& l) const { return kPi * scene_radius * scene_radius * average(l.radiance); }
+  float operator()(const SphereLight& l) const { return kPi * 4.0f * kPi * l.radius * l.radius * average(l.radiance); }
+  float operator()(const QuadLight& l) const { return kPi * l.area * average(l.radiance); }
+  float operator()(const EmissiveTriangle& l) const {
+    return kPi * l.area * average(l.emission.radiance) * (l.emission.two_sided ? 2.0f : 1.0f);
+  }
+  float operator()(const EmissiveSphere& l) const {
+    return kPi * 4.0f * kPi * l.radius * l.radius * average(l.emission.radiance) * (l.emission.two_sided ? 2.0f : 1.0f);
+  }
+};
+
+// A sphere is sampled by the cone it fills from points clearly outside it, by area from points on
+// or inside it (where the cone degenerates to a hemisphere or everything).
+bool clearly_outside(const Vec3& center, float radius, const Vec3& point) {
+  const Vec3 d = point - center;
+  return dot(d, d) > radius * radius * 1.0001f;
+}
+
+float one_minus_cos_cone(float d2, float r2) {
+  const float sin2_max = r2 / d2;
+  const float cos_max = std::sqrt(std::max(0.0f, 1.0f - sin2_max));
+  return sin2_max / (1.0f + cos_max);  // 1 − cos θmax without cancellation for small spheres
+}
+
+// Solid-angle pdf of an area-sampled point `on_light` (normal `n`, area pdf `area_pdf`) from `from`.
+float area_to_solid_angle(float area_pdf, const Vec3& from, const Vec3& on_light, const Vec3& n) {
+  const Vec3 d = on_light - from;
+  const float d2 = dot(d, d);
+  const float cos_light = std::fabs(dot(n, d)) / std::sqrt(d2);
+  return cos_light > 0.0f ? area_pdf * d2 / cos_light : 0.0f;
+}
+
+struct SphereSample {
+  Vec3 point, normal;
+  float pdf;  // solid angle
+};
+
+SphereSample sample_sphere(const Vec3& center, float radius, const Vec3& from, Sample2D u) {
+  if (clearly_outside(center, radius, from)) {
+    const Vec3 to_center = center - from;
+    const float d2 = dot(to_center, to_center), r2 = radius * radius;
+    const float d = std::sqrt(d2);
+    const float one_minus_cos_max = one_minus_cos_cone(d2, r2);
+    const float one_minus_cos = u.x * one_minus_cos_max;
+    const float cos_theta = 1.0f - one_minus_cos;
+    const float sin_theta = std::sqrt(std::max(0.0f, one_minus_cos * (2.0f - one_minus_cos)));
+    const float phi = 2.0f * kPi * u.y;
+    const Vec3 w = to_center / d;
+    Vec3 t1, t2;
+    frame_around(w, t1, t2);
+    const Vec3 direction =
+        normalize(t1 * (std::cos(phi) * sin_theta) + t2 * (std::sin(phi) * sin_theta) + w * cos_theta);
+    const float b = d * cos_theta;
+    const float distance = b - std::sqrt(std::max(0.0f, r2 - d2 * sin_theta * sin_theta));
+    const Vec3 point = from + direction * distance;
+    return {point, normalize(point - center), 1.0f / (2.0f * kPi * one_minus_cos_max)};
+  }
+  const float z = 1.0f - 2.0f * u.x;
+  const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+  const float phi = 2.0f * kPi * u.y;
+  const Vec3 normal(r * std::cos(phi), r * std::sin(phi), z);
+  const Vec3 point = center + normal * radius;
+  return {point, normal, area_to_solid_angle(1.0f / (4.0f * kPi * radius * radius), from, point, normal)};
+}
+
+float sphere_pdf(const Vec3& center, float radius, const Vec3& from, const Vec3& on_light) {
+  if (clearly_outside(center, radius, from)) {
+    const Vec3 to_center = center - from;
+    return 1.0f / (2.0f * kPi * one_minus_cos_cone(dot(to_center, to_center), radius * radius));
+  }
+  return area_to_solid_angle(1.0f / (4.0f * kPi * radius * radius), from, on_light, normalize(on_light - center));
+}
+
+// What an emitter with normal `n` sends along `direction` (from the point towards the emitter).
+Color emitted_towards(const Emission& e, const Vec3& n, const Vec3& direction) {
+  const float facing = -dot(n, direction);
+  return (facing > 0.0f || (e.two_sided && facing < 0.0f)) ? e.radiance : Color(0.0f);
+}
+
+struct Sampler {
+  const Vec3& from;
+  Sample2D u;
+
+  std::optional<PathLightSample> operator()(const PointLight& l) const {
+    const Vec3 to_light = l.position - from;
+    const float d2 = dot(to_light, to_light);
+    if (!(d2 > 0.0f)) return std::nullopt;
+    const float d = std::sqrt(d2);
+    return PathLightSample{to_light / d, d, l.radiance / d2, 1.0f, true, 0};
+  }
+  std::optional<PathLightSample> operator()(const DirectionalLight& l) const {
+    return PathLightSample{l.to_light, kInfinity, l.radiance, 1.0f, true, 0};
+  }
+  std::optional<PathLightSample> operator()(const SphereLight& l) const {
+    if (!clearly_outside(l.center, l.radius, from)) return std::nullopt;  // emits outwards only
+    return on_surface(sample_sphere(l.center, l.radius, from, u), Emission{l.radiance, false});
+  }
+  std::optional<PathLightSample> operator()(const QuadLight& l) const {
+    const Vec3 point = l.corner + l.edge1 * u.x + l.edge2 * u.y;
+    return on_surface({point, l.normal, area_to_solid_angle(1.0f / l.area, from, point, l.normal)},
+                      Emission{l.radiance, false});
+  }
+  std::optional<PathLightSample> operator()(const EmissiveTriangle& l) const {
+    // Uniform over the triangle (the square folded onto it).
+    float b1 = u.x, b2 = u.y;
+    if (b1 + b2 > 1.0f) {
+      b1 = 1.0f - b1;
+      b2 = 1.0f - b2;
+    }
+    const Vec3 point = l.p0 + l.e1 * b1 + l.e2 * b2;
+    return on_surface({point, l.normal, area_to_solid_angle(1.0f / l.area, from, point, l.normal)}, l.emission);
+  }
+  std::optional<PathLightSample> operator()(const EmissiveSphere& l) const {
+    return on_surface(sample_sphere(l.center, l.radius, from, u), l.emission);
+  }
+
+  std::optional<PathLightSample> on_surface(const SphereSample& s, const Emission& emission) const {
+    const Vec3 to_light = s.point - from;
+    const float d = length(to_light);
+    if (!(d > 0.0f) || !(s.pdf > 0.0f) || !std::isfinite(s.pdf)) return std::nullopt;
+    const Vec3 direction = to_light / d;
+    const Color radiance = emitted_towards(emission, s.normal, direction);
+    if (radiance == Color(0.0f)) return std::nullopt;
+    return PathLightSample{direction, d, radiance, s.pdf, false, 0};
+  }
+};
+
+struct Pdf {
+  const Vec3& from;
+  const Vec3& on_light;
+  float operator()(const PointLight&) const { return 0.0f; }
+  float operator()(const DirectionalLight&) const { return 0.0f; }
+  float operator()(const SphereLight& l) const {
+    return clearly_outside(l.center, l.radius, from) ? sphere_pdf(l.center, l.radius, from, on_light) : 0.0f;
+  }
+  float operator()(const QuadLight& l) const { return area_to_solid_angle(1.0f / l.area, from, on_light, l.normal); }
+  float operator()(const EmissiveTriangle& l) const {
+    return area_to_solid_angle(1.0f / l.area, from, on_light, l.normal);
+  }
+  float operator()(const EmissiveSphere& l) const { return sphere_pdf(l.center, l.radius, from, on_light); }
+};
+
+}  // namespace
+
+LightSet::LightSet(const RenderScene& scene) {
+  for (const Light& light : scene.lights) {
+    std::visit([&](const auto& l) { lights_.push_back(l); }, light);
+    if (std::holds_alternative<SphereLight>(light) || std::holds_alternative<QuadLight>(light))
+      analytic_.push_back(static_cast<std::uint32_t>(lights_.size() - 1));
+  }
+  light_of_primitive_.resize(scene.top.geometries.size());
+  for (std::size_t g = 0; g < scene.top.geometries.size(); ++g) {
+    const Geometry& geometry = scene.top.geometries[g];
+    std::vector<std::uint32_t>& of_primitive = light_of_primitive_[g];
+    const auto add = [&](std::uint32_t prim, std::uint32_t count, PathLight light) {
+      if (of_primitive.empty()) of_primitive.assign(count, kInvalidId);
+      of_primitive[prim] = static_cast<std::uint32_t>(lights_.size());
+      lights_.push_back(light);
+    };
+    switch (kind_of(geometry)) {
+      case GeometryKind::kSpheres: {
+        const auto& spheres = std::get<SphereSet>(geometry).spheres;
+        for (std::uint32_t i = 0; i < spheres.size(); ++i) {
+          const Emission& e = scene.materials[spheres[i].material].emission;
+          if (e.emits() && spheres[i].radius > 0.0f)
+            add(i, static_cast<std::uint32_t>(spheres.size()), EmissiveSphere{spheres[i].center, spheres[i].radius, e});
+        }
+        break;
+      }
+      case GeometryKind::kTriangles: {
+        const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
+        const auto count = static_cast<std::uint32_t>(mesh.triangle_count());
+        for (std::uint32_t t = 0; t < count; ++t) {
+          const Emission& e = scene.materials[mesh.material_of(t)].emission;
+          if (!e.emits()) continue;
+          const TriangleIndices& tri = mesh.triangles[t];
+          const Vec3 p0 = mesh.vertex(tri.v0);
+          const Vec3 e1 = mesh.vertex(tri.v1) - p0, e2 = mesh.vertex(tri.v2) - p0;
+          const Vec3 n = cross(e1, e2);
+          const float twice_area = length(n);
+          if (!(twice_area > 0.0f) || !std::isfinite(twice_area)) continue;  // degenerate: hit only by BSDF samples
+          add(t, count, EmissiveTriangle{p0, e1, e2, n / twice_area, 0.5f * twice_area, e});
+        }
+        break;
+      }
+      case GeometryKind::kInstance: break;  // see the header: instanced emitters are not sampled
+    }
+  }
+  const BBox bounds = scene.bounds();
+  const float scene_radius = bounds.empty() ? 1.0f : 0.5f * length(bounds.upper - bounds.lower);
+  std::vector<float> power;
+  power.reserve(lights_.size());
+  for (const PathLight& light : lights_) {
+    const float p = std::visit(Power{scene_radius}, light);
+    power.push_back(std::isfinite(p) && p > 0.0f ? p : 0.0f);
+  }
+  pick_ = AliasTable(power);
+}
+
+std::optional<PathLightSample> LightSet::sample(const Vec3& point, float u_pick, Sample2D u) const {
+  const AliasTable::Pick pick = pick_.sample(u_pick);
+  std::optional<PathLightSample> s = std::visit(Sampler{point, u}, lights_[pick.index]);
+  if (s) {
+    s->pdf *= pick.pmf;
+    s->light = pick.index;
+  }
+  return s;
+}
+
+std::uint32_t LightSet::light_of_hit(const Hit& hit) const {
+  if (hit.inst_id != kInvalidId || hit.geom_id >= light_of_primitive_.size()) return kInvalidId;
+  const std::vector<std::uint32_t>& of_primitive = light_of_primitive_[hit.geom_id];
+  return of_primitive.empty() ? kInvalidId : of_primitive[hit.prim_id];
+}
+
+float LightSet::pdf(std::uint32_t index, const Vec3& from, const Vec3& on_light) const {
+  if (index >= lights_.size() || pick_.empty()) return 0.0f;
+  return pick_.pmf(index) * std::visit(Pdf{from, on_light}, lights_[index]);
+}
+
+std::optional<LightSet::SeenLight> LightSet::seen_light(const Ray& ray, float t_max) const {
+  std::optional<SeenLight> nearest;
+  for (const std::uint32_t index : analytic_) {
+    const PathLight& light = lights_[index];
+    std::optional<float> t;
+    Color radiance;
+    if (const auto* sphere = std::get_if<SphereLight>(&light)) {
+      if (!clearly_outside(sphere->center, sphere->radius, ray.org)) continue;  // no light inside
+      t = hit_light(Light(*sphere), ray, nearest ? nearest->t : t_max);
+      radiance = sphere->radiance;
+    } else if (const auto* quad = std::get_if<QuadLight>(&light)) {
+      t = hit_light(Light(*quad), ray, nearest ? nearest->t : t_max);
+      radiance = quad->radiance;
+    }
+    if (t) nearest = SeenLight{index, *t, radiance};
+  }
+  return nearest;
+}
+
+}  // namespace rtpro

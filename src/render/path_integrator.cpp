@@ -1,0 +1,191 @@
+#include "rtpro/render/path_integrator.h"
+
+#include "rtpro/render/beer_lambert.h"
+#include "rtpro/render/material_bsdf.h"
+#include "rtpro/render/ray_offset.h"
+#include "rtpro/render/sample_dimensions.h"
+#include "rtpro/render/texture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rtpro {
+
+namespace {
+
+using Path = PathWorkspace::Path;
+
+// The power heuristic (β = 2) for a sample of pdf `a` against the other strategy's pdf `b`.
+float power_heuristic(float a, float b) {
+  if (std::isinf(a)) return 1.0f;
+  const float a2 = a * a, b2 = b * b;
+  return a2 + b2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
+}
+
+// Shadow rays to a sampled point stop this fraction short of it, so the emitter's own surface
+// (or a light's) does not occlude the point sampled on it.
+constexpr float kShadowEpsilon = 1e-4f;
+
+bool is_black(const Color& c) { return !(c.x > 0.0f || c.y > 0.0f || c.z > 0.0f); }
+
+class PathTracer {
+ public:
+  PathTracer(const RenderScene& scene, const LightSet& lights, const StratifiedSampler& sampler,
+             std::span<const SampleKey> keys, std::span<SampleResult> results, PathWorkspace& ws,
+             const TextureLookup* textures)
+      : scene_(scene), lights_(lights), sampler_(sampler), keys_(keys), results_(results), ws_(ws),
+        textures_(textures) {}
+
+  // Everything a path does at the surface (or miss) its ray reached: emission, then the light
+  // sample (queued as a shadow ray), then the BSDF sample (queued as the path's next ray).
+  void extend(const Path& path, const Ray& ray, const Hit& hit) {
+    SampleResult& result = results_[path.sample];
+    const float t_hit = hit.valid() ? hit.t : ray.tfar;
+    if (const std::optional<LightSet::SeenLight> seen = lights_.seen_light(ray, t_hit)) {
+      const Vec3 on_light = ray.at(seen->t);
+      add_emission(path, result, seen->radiance, seen->index, on_light, path.beta);
+      return;  // lights without geometry absorb what reaches them
+    }
+    if (!hit.valid()) {
+      result.radiance += path.beta * scene_.render.background;
+      return;
+    }
+    SurfacePoint sp;
+    make_surface(scene_, ray, hit, sp);
+    const Material& material = scene_.materials[sp.material];
+    Color beta = path.beta;
+    if (path.medium != PathWorkspace::kOutside) {
+      const Dielectric& medium = *scene_.materials[path.medium].dielectric;
+      beta = beta * beer_lambert_transmittance(medium.transmittance, medium.transmittance_distance,
+                                               hit.t * length(ray.dir));
+    }
+    if (material.emission.emits() && (material.emission.two_sided || sp.front_face))
+      add_emission(path, result, material.emission.radiance, lights_.light_of_hit(hit), sp.position, beta);
+
+    const Color color = evaluate(material.color, sp, textures_);
+    const SurfaceBsdf surface = material_bsdf(material, color, sp);
+    const bool delta = bsdf_is_delta(surface.bsdf);
+    if (path.bounce == 0) result.primary = {true, color, sp.shading_normal, hit.t * length(ray.dir), sp.object_id};
+    bool aov_pending = path.aov_pending;
+    if (aov_pending && !delta) {
+      result.primary.albedo = color;
+      result.primary.normal = sp.shading_normal;
+      aov_pending = false;
+    }
+    if (path.bounce >= scene_.render.max_depth) return;
+
+    const SampleKey& key = keys_[path.sample];
+    const auto dimension = [&](int offset) { return sample_dimension::at_bounce(path.bounce, offset); };
+    const Vec3 wo = surface.frame.to_local(-normalize(ray.dir));
+    if (!delta && !lights_.empty()) {
+      const float u_pick = sampler_.sample_1d(key.pixel_key, key.sample_index, dimension(path_dimension::kLightPick));
+      const Sample2D u = sampler_.sample_2d(key.pixel_key, key.sample_index, dimension(path_dimension::kLightPoint));
+      if (const std::optional<PathLightSample> ls = lights_.sample(sp.position, u_pick, u))
+        queue_shadow_ray(path.sample, sp, surface, wo, *ls, beta);
+    }
+
+    const float u_lobe = sampler_.sample_1d(key.pixel_key, key.sample_index, dimension(path_dimension::kBsdfLobe));
+    const Sample2D u = sampler_.sample_2d(key.pixel_key, key.sample_index, dimension(path_dimension::kBsdfDirection));
+    const std::optional<BsdfSample> bs = bsdf_sample(surface.bsdf, wo, u_lobe, u);
+    if (!bs || !(bs->pdf > 0.0f) || is_black(bs->f)) return;
+    Color next_beta = beta * bs->f * (std::fabs(bs->wi.z) / bs->pdf);
+    if (path.bounce >= kRouletteStart) {
+      const float q = std::max(0.05f, 1.0f - max_component(next_beta));
+      if (sampler_.sample_1d(key.pixel_key, key.sample_index, dimension(path_dimension::kRoulette)) < q) return;
+      next_beta = next_beta / (1.0f - q);
+    }
+    if (!is_finite(next_beta) || is_black(next_beta)) return;
+    const Vec3 direction = surface.frame.to_world(bs->wi);
+    std::uint32_t medium = path.medium;
+    if (bs->transmitted && material.dielectric) medium = sp.front_face ? sp.material : PathWorkspace::kOutside;
+    ws_.next_paths.push_back(
+        {path.sample, path.bounce + 1, next_beta, sp.position, bs->pdf, bs->delta, aov_pending, bs->transmitted, medium});
+    ws_.next_rays.push_back(spawn_ray(sp, direction));
+  }
+
+ private:
+  // Emission reaching the path: in full after the camera or a specular vertex, else weighted
+  // against the light sampling that could have found the same point.
+  void add_emission(const Path& path, SampleResult& result, const Color& radiance, std::uint32_t light,
+                    const Vec3& on_light, const Color& beta) {
+    float weight = 1.0f;
+    if (!path.specular && light != kInvalidId) {
+      switch (scene_.render.path_sampling) {
+        case PathSampling::kMis: weight = power_heuristic(path.bsdf_pdf, lights_.pdf(light, path.origin, on_light)); break;
+        case PathSampling::kLight: weight = 0.0f; break;  // light sampling found it already
+        case PathSampling::kBsdf: break;
+      }
+    }
+    result.radiance += beta * radiance * weight;
+  }
+
+  void queue_shadow_ray(std::uint32_t sample, const SurfacePoint& sp, const SurfaceBsdf& surface, const Vec3& wo,
+                        const PathLightSample& ls, const Color& beta) {
+    const Vec3 wi = surface.frame.to_local(ls.direction);
+    const Color f = bsdf_eval(surface.bsdf, wo, wi) * std::fabs(wi.z);
+    if (is_black(f)) return;
+    float weight = 1.0f;
+    if (!ls.delta) {
+      switch (scene_.render.path_sampling) {
+        case PathSampling::kMis: weight = power_heuristic(ls.pdf, bsdf_pdf(surface.bsdf, wo, wi)); break;
+        case PathSampling::kLight: break;
+        case PathSampling::kBsdf: return;  // BSDF samples find it
+      }
+    }
+    const Color contribution = beta * f * ls.radiance * (weight / ls.pdf);
+    if (!is_finite(contribution) || is_black(contribution)) return;
+    Ray ray;
+    if (std::isinf(ls.distance)) {
+      ray = spawn_ray(sp, ls.direction);
+    } else {
+      ray = spawn_ray_to(sp, sp.position + ls.direction * ls.distance);
+      ray.tfar = 1.0f - kShadowEpsilon;
+    }
+    ws_.shadow_queries.push_back({sample, contribution});
+    ws_.shadow_rays.push_back(ray);
+  }
+
+  const RenderScene& scene_;
+  const LightSet& lights_;
+  const StratifiedSampler& sampler_;
+  std::span<const SampleKey> keys_;
+  std::span<SampleResult> results_;
+  PathWorkspace& ws_;
+  const TextureLookup* textures_;
+};
+
+}  // namespace
+
+void trace_paths(const RenderScene& scene, const Backend& backend, const LightSet& lights,
+                 const StratifiedSampler& sampler, std::span<const Ray> camera_rays, std::span<const SampleKey> keys,
+                 std::span<SampleResult> results, RayCounts& counts, PathWorkspace& ws, const TextureLookup* textures) {
+  ws.paths.clear();
+  ws.rays.assign(camera_rays.begin(), camera_rays.end());
+  for (std::uint32_t i = 0; i < camera_rays.size(); ++i) {
+    results[i] = SampleResult{};
+    ws.paths.push_back({i, 0, Color(1.0f), camera_rays[i].org, 0.0f, true, true, false, PathWorkspace::kOutside});
+  }
+  counts.camera += camera_rays.size();
+  PathTracer tracer(scene, lights, sampler, keys, results, ws, textures);
+  for (int generation = 0; !ws.paths.empty(); ++generation) {
+    ws.hits.resize(ws.rays.size());
+    backend.intersect(ws.rays, ws.hits, generation == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
+    ws.next_paths.clear();
+    ws.next_rays.clear();
+    ws.shadow_queries.clear();
+    ws.shadow_rays.clear();
+    for (std::size_t i = 0; i < ws.paths.size(); ++i) tracer.extend(ws.paths[i], ws.rays[i], ws.hits[i]);
+
+    ws.occluded.resize(ws.shadow_rays.size());
+    backend.occluded(ws.shadow_rays, ws.occluded, RayCoherence::kIncoherent);
+    counts.shadow += ws.shadow_rays.size();
+    for (std::size_t i = 0; i < ws.shadow_queries.size(); ++i)
+      if (!ws.occluded[i]) results[ws.shadow_queries[i].sample].radiance += ws.shadow_queries[i].contribution;
+    for (const Path& next : ws.next_paths) (next.transmitted ? counts.refraction : counts.reflection) += 1;
+    std::swap(ws.paths, ws.next_paths);
+    std::swap(ws.rays, ws.next_rays);
+  }
+}
+
+}  // namespace rtpro

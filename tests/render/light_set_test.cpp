@@ -1,0 +1,101 @@
+// The path integrator's lights: the pdf sample() reports is the one pdf() gives for the same
+// point, the pick probabilities sum to 1, and the solid-angle pdf of each area kind integrates to
+// the light's visible solid angle (checked by integrating over the sphere of directions).
+#include "rtpro/render/light_set.h"
+
+#include "rtpro/scene/build_render_scene.h"
+#include "rtpro/scene/scene_parser.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+namespace rtpro {
+namespace {
+
+RenderScene lit_scene() {
+  return build_render_scene(parse_scene_text(R"(
+rtpro: 1
+camera: {position: [0, 1, -5], look_at: [0, 1, 0]}
+materials:
+  lamp: {type: diffuse, color: [0, 0, 0], emission: [2, 1, 1]}
+  both: {type: diffuse, color: [0, 0, 0], emission: [1, 1, 3], emission_sides: both}
+lights:
+  - {type: point, position: [0, 3, 0], intensity: 5}
+  - {type: directional, direction: [0, -1, 0.2], intensity: 1}
+  - {type: quad, position: [0, 4, 0], edge1: [1, 0, 0], edge2: [0, 0, -1], intensity: 4}
+  - {type: sphere, center: [2, 2, 2], radius: 0.5, intensity: 3}
+world:
+  - {type: sphere, center: [-2, 2, 0], radius: 0.4, material: lamp}
+  - {type: sphere, center: [0, 0, 0], radius: 0.5, material: both}
+)", "lights.yaml"));
+}
+
+TEST(LightSet, HoldsTheSceneLightsAndItsEmissiveSpheres) {
+  const RenderScene scene = lit_scene();
+  const LightSet lights(scene);
+  EXPECT_EQ(lights.lights().size(), 6u);
+  EXPECT_TRUE(std::holds_alternative<EmissiveSphere>(lights.lights()[4]));
+  Hit hit;
+  hit.geom_id = 0;
+  hit.prim_id = 1;
+  EXPECT_EQ(lights.light_of_hit(hit), 5u);
+  hit.inst_id = 3;
+  EXPECT_EQ(lights.light_of_hit(hit), kInvalidId);  // instanced emitters are not sampled
+}
+
+TEST(LightSet, SamplePdfIsThePdfOfTheSampledPoint) {
+  const RenderScene scene = lit_scene();
+  const LightSet lights(scene);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  int area_samples = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 from(uniform(rng) * 6.0f - 3.0f, uniform(rng) * 3.0f, uniform(rng) * 6.0f - 3.0f);
+    const float u_pick = uniform(rng);
+    const auto s = lights.sample(from, u_pick, {uniform(rng), uniform(rng)});
+    if (!s || s->delta) continue;
+    ++area_samples;
+    const Vec3 on_light = from + s->direction * s->distance;
+    const float pdf = lights.pdf(s->light, from, on_light);
+    EXPECT_NEAR(pdf, s->pdf, 2e-3f * s->pdf) << "light " << s->light << " from " << from.x << "," << from.y << "," << from.z;
+  }
+  EXPECT_GT(area_samples, 5000);
+}
+
+// ∫ pdf dω over the directions that reach a light is 1 for a light sampled by solid angle:
+// estimated with directions uniform in a cone a little wider than the one the light fills, each
+// direction's point on the light found by intersecting it.
+TEST(LightSet, PdfOfASphereLightIntegratesToOne) {
+  const Vec3 center(2.0f, 2.0f, 2.0f);
+  const float radius = 0.5f;
+  for (const Vec3 from : {Vec3(0.0f, 0.0f, 0.0f), Vec3(1.9f, 1.0f, 2.0f)}) {
+    RenderScene scene;
+    scene.lights.push_back(SphereLight{center, radius, Color(1.0f), 1});
+    const LightSet lights(scene);
+    const Vec3 axis = normalize(center - from);
+    const float sin_light = radius / length(center - from);
+    const float cos_cone = std::cos(std::min(1.2f * std::asin(sin_light), 1.5f));
+    Vec3 t1 = std::fabs(axis.x) < 0.9f ? normalize(cross(axis, Vec3(1.0f, 0.0f, 0.0f))) : normalize(cross(axis, Vec3(0.0f, 1.0f, 0.0f)));
+    const Vec3 t2 = cross(axis, t1);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    constexpr int kDirections = 200000;
+    double integral = 0.0;
+    for (int i = 0; i < kDirections; ++i) {
+      const float cos_theta = 1.0f - uniform(rng) * (1.0f - cos_cone);
+      const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
+      const float phi = 2.0f * std::numbers::pi_v<float> * uniform(rng);
+      const Vec3 direction = t1 * (sin_theta * std::cos(phi)) + t2 * (sin_theta * std::sin(phi)) + axis * cos_theta;
+      const Ray ray{from, 0.0f, direction};
+      if (const auto seen = lights.seen_light(ray, 1e30f)) integral += lights.pdf(seen->index, from, ray.at(seen->t));
+    }
+    integral *= 2.0 * std::numbers::pi * (1.0 - cos_cone) / kDirections;
+    EXPECT_NEAR(integral, 1.0, 0.01);
+  }
+}
+
+}  // namespace
+}  // namespace rtpro

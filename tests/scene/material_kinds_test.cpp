@@ -1,0 +1,102 @@
+// Material kinds in the scene file (`type:`), emission, and the path integrator's render keys:
+// what each reads, and the errors that name the key and its position.
+#include "rtpro/scene/build_render_scene.h"
+#include "rtpro/scene/scene_parser.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace rtpro {
+namespace {
+
+const std::string kHeader =
+    "rtpro: 1\n"
+    "camera: {position: [0, 1, -5], look_at: [0, 0, 0]}\n";
+
+SceneDescription parse(const std::string& body, const std::vector<std::string>& overrides = {}) {
+  return parse_scene_text(kHeader + body, "test.yaml", overrides);
+}
+
+std::string error_of(const std::string& body) {
+  try {
+    parse(body);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+TEST(MaterialKinds, EachTypeReadsItsOwnKeys) {
+  const SceneDescription d = parse(R"(materials:
+  wall: {type: diffuse, color: [0.5, 0.4, 0.3]}
+  gold: {type: conductor, color: [1, 0.78, 0.34], roughness: 0.3}
+  copper: {type: conductor, eta: [0.2, 0.92, 1.1], k: [3.9, 2.45, 2.14]}
+  glass: {type: dielectric, roughness: 0.1}
+  lamp: {type: diffuse, color: [0, 0, 0], emission: [17, 12, 4], emission_strength: 2, emission_sides: both}
+  old: {color: [0.9, 0.1, 0.1], reflectivity: 0.3}
+)");
+  ASSERT_EQ(d.materials.size(), 7u);
+  EXPECT_EQ(d.materials[1].kind, MaterialKind::kDiffuse);
+  EXPECT_EQ(d.materials[2].kind, MaterialKind::kConductor);
+  EXPECT_FLOAT_EQ(d.materials[2].roughness, 0.3f);
+  EXPECT_FALSE(d.materials[2].conductor_eta);
+  ASSERT_TRUE(d.materials[3].conductor_k);
+  EXPECT_FLOAT_EQ(d.materials[3].conductor_k->y, 2.45f);
+  EXPECT_EQ(d.materials[4].kind, MaterialKind::kDielectric);
+  ASSERT_TRUE(d.materials[4].ior);
+  EXPECT_FLOAT_EQ(*d.materials[4].ior, 1.5f);  // a dielectric's default index
+  EXPECT_EQ(d.materials[5].emission, Color(34.0f, 24.0f, 8.0f));  // radiance: values above 1 are meant
+  EXPECT_TRUE(d.materials[5].emission_two_sided);
+  EXPECT_EQ(d.materials[6].kind, MaterialKind::kPhong);
+}
+
+TEST(MaterialKinds, TheRenderSceneCarriesTheModelAndAWhittedApproximation) {
+  const RenderScene scene = build_render_scene(parse(R"(materials:
+  wall: {type: diffuse, color: [0.5, 0.4, 0.3]}
+  mirror: {type: conductor, color: [0.9, 0.9, 0.9]}
+  lamp: {type: diffuse, emission: [2, 2, 2]}
+)"));
+  ASSERT_EQ(scene.materials.size(), 4u);
+  EXPECT_TRUE(std::holds_alternative<PhongSurface>(scene.materials[0].model));
+  EXPECT_TRUE(std::holds_alternative<DiffuseSurface>(scene.materials[1].model));
+  EXPECT_EQ(scene.materials[1].specular, 0.0f);
+  ASSERT_TRUE(std::holds_alternative<ConductorSurface>(scene.materials[2].model));
+  EXPECT_EQ(scene.materials[2].reflectivity, 1.0f);  // a smooth conductor is a mirror under whitted
+  EXPECT_TRUE(scene.materials[3].emission.emits());
+  EXPECT_FALSE(scene.materials[3].emission.two_sided);
+  EXPECT_FALSE(scene.materials[0].emission.emits());
+}
+
+TEST(MaterialKinds, AKeyOfAnotherKindIsAnErrorAtItsPosition) {
+  const std::string error = error_of("materials:\n  gold: {type: conductor, reflectivity: 0.5}\n");
+  EXPECT_NE(error.find("test.yaml:4:"), std::string::npos) << error;
+  EXPECT_NE(error.find("unknown key 'reflectivity' in material 'gold'"), std::string::npos) << error;
+}
+
+TEST(MaterialKinds, BadValuesAreErrors) {
+  EXPECT_NE(error_of("materials:\n  m: {type: metal}\n").find("must be phong, diffuse, conductor or dielectric"),
+            std::string::npos);
+  EXPECT_NE(error_of("materials:\n  m: {type: conductor, roughness: 1.5}\n").find("from 0 (smooth) to 1"),
+            std::string::npos);
+  EXPECT_NE(error_of("materials:\n  m: {type: conductor, eta: [1, 1, 1]}\n").find("needs both eta and k"),
+            std::string::npos);
+  EXPECT_NE(error_of("materials:\n  m: {emission: [-1, 0, 0]}\n").find("each channel 0 or more"), std::string::npos);
+  EXPECT_NE(error_of("materials:\n  m: {emission_strength: 2}\n").find("give the material an emission colour"),
+            std::string::npos);
+  EXPECT_NE(error_of("materials:\n  m: {emission: [1, 1, 1], emission_sides: back}\n").find("front or both"),
+            std::string::npos);
+}
+
+TEST(MaterialKinds, RenderIntegratorAndSamplingAreReadAndChecked) {
+  const SceneDescription d = parse("render: {integrator: path, sampling: light}\n");
+  EXPECT_EQ(d.render.integrator, Integrator::kPath);
+  EXPECT_EQ(d.render.path_sampling, PathSampling::kLight);
+  EXPECT_EQ(parse("").render.integrator, Integrator::kWhitted);
+  EXPECT_EQ(parse("", {"render.integrator=path"}).render.integrator, Integrator::kPath);
+  EXPECT_NE(error_of("render: {integrator: bdpt}\n").find("must be path or whitted"), std::string::npos);
+  EXPECT_NE(error_of("render: {sampling: both}\n").find("must be mis, light or bsdf"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rtpro
