@@ -180,44 +180,10 @@ LightSet::LightSet(const RenderScene& scene) {
     if (std::holds_alternative<SphereLight>(light) || std::holds_alternative<QuadLight>(light))
       analytic_.push_back(static_cast<std::uint32_t>(lights_.size() - 1));
   }
-  light_of_primitive_.resize(scene.top.geometries.size());
-  for (std::size_t g = 0; g < scene.top.geometries.size(); ++g) {
-    const Geometry& geometry = scene.top.geometries[g];
-    std::vector<std::uint32_t>& of_primitive = light_of_primitive_[g];
-    const auto add = [&](std::uint32_t prim, std::uint32_t count, PathLight light) {
-      if (of_primitive.empty()) of_primitive.assign(count, kInvalidId);
-      of_primitive[prim] = static_cast<std::uint32_t>(lights_.size());
-      lights_.push_back(light);
-    };
-    switch (kind_of(geometry)) {
-      case GeometryKind::kSpheres: {
-        const auto& spheres = std::get<SphereSet>(geometry).spheres;
-        for (std::uint32_t i = 0; i < spheres.size(); ++i) {
-          const Emission& e = scene.materials[spheres[i].material].emission;
-          if (e.emits() && spheres[i].radius > 0.0f)
-            add(i, static_cast<std::uint32_t>(spheres.size()), EmissiveSphere{spheres[i].center, spheres[i].radius, e});
-        }
-        break;
-      }
-      case GeometryKind::kTriangles: {
-        const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
-        const auto count = static_cast<std::uint32_t>(mesh.triangle_count());
-        for (std::uint32_t t = 0; t < count; ++t) {
-          const Emission& e = scene.materials[mesh.material_of(t)].emission;
-          if (!e.emits()) continue;
-          const TriangleIndices& tri = mesh.triangles[t];
-          const Vec3 p0 = mesh.vertex(tri.v0);
-          const Vec3 e1 = mesh.vertex(tri.v1) - p0, e2 = mesh.vertex(tri.v2) - p0;
-          const Vec3 n = cross(e1, e2);
-          const float twice_area = length(n);
-          if (!(twice_area > 0.0f) || !std::isfinite(twice_area)) continue;  // degenerate: hit only by BSDF samples
-          add(t, count, EmissiveTriangle{p0, e1, e2, n / twice_area, 0.5f * twice_area, e});
-        }
-        break;
-      }
-      case GeometryKind::kInstance: break;  // see the header: instanced emitters are not sampled
-    }
-  }
+  add_emitters(scene, scene.top, kInvalidId, nullptr);
+  for (std::uint32_t g = 0; g < scene.top.geometries.size(); ++g)
+    if (const auto* instance = std::get_if<Instance>(&scene.top.geometries[g]))
+      add_emitters(scene, scene.prototypes[instance->prototype], g, &instance->object_to_world);
   const BBox bounds = scene.bounds();
   const float scene_radius = bounds.empty() ? 1.0f : 0.5f * length(bounds.upper - bounds.lower);
   std::vector<float> power;
@@ -239,10 +205,83 @@ std::optional<PathLightSample> LightSet::sample(const Vec3& point, float u_pick,
   return s;
 }
 
+namespace {
+
+std::uint64_t geometry_key(std::uint32_t instance, std::uint32_t geometry) {
+  return static_cast<std::uint64_t>(instance) << 32 | geometry;
+}
+
+// The factor a transform scales every length by, or nothing when it scales directions unequally.
+std::optional<float> uniform_scale(const Affine& m) {
+  const float x = length(m.apply_vector(Vec3(1.0f, 0.0f, 0.0f)));
+  const float y = length(m.apply_vector(Vec3(0.0f, 1.0f, 0.0f)));
+  const float z = length(m.apply_vector(Vec3(0.0f, 0.0f, 1.0f)));
+  const float tolerance = 1e-5f * std::max({x, y, z});
+  if (std::fabs(x - y) > tolerance || std::fabs(x - z) > tolerance) return std::nullopt;
+  return x;
+}
+
+}  // namespace
+
+// The emitting spheres and triangles of `group`, in world space through `to_world` (null: the top
+// level, already in world space). `instance` is the top-level geometry id hits report for them.
+void LightSet::add_emitters(const RenderScene& scene, const Group& group, std::uint32_t instance,
+                            const Affine* to_world) {
+  const auto world_point = [&](const Vec3& p) { return to_world ? to_world->apply_point(p) : p; };
+  for (std::uint32_t g = 0; g < group.geometries.size(); ++g) {
+    const Geometry& geometry = group.geometries[g];
+    std::vector<std::uint32_t>* of_primitive = nullptr;
+    const auto add = [&](std::uint32_t prim, std::size_t count, PathLight light) {
+      if (!of_primitive) {
+        of_primitive = &light_of_primitive_[geometry_key(instance, g)];
+        of_primitive->assign(count, kInvalidId);
+      }
+      (*of_primitive)[prim] = static_cast<std::uint32_t>(lights_.size());
+      lights_.push_back(light);
+    };
+    switch (kind_of(geometry)) {
+      case GeometryKind::kSpheres: {
+        const auto& spheres = std::get<SphereSet>(geometry).spheres;
+        const std::optional<float> scale = to_world ? uniform_scale(*to_world) : std::optional<float>(1.0f);
+        if (!scale) break;  // ellipsoids: see the header
+        for (std::uint32_t i = 0; i < spheres.size(); ++i) {
+          const Emission& e = scene.materials[spheres[i].material].emission;
+          const float radius = spheres[i].radius * *scale;
+          if (e.emits() && radius > 0.0f && std::isfinite(radius))
+            add(i, spheres.size(), EmissiveSphere{world_point(spheres[i].center), radius, e});
+        }
+        break;
+      }
+      case GeometryKind::kTriangles: {
+        const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
+        const auto count = static_cast<std::uint32_t>(mesh.triangle_count());
+        for (std::uint32_t t = 0; t < count; ++t) {
+          const Emission& e = scene.materials[mesh.material_of(t)].emission;
+          if (!e.emits()) continue;
+          const TriangleIndices& tri = mesh.triangles[t];
+          const Vec3 p0 = world_point(mesh.vertex(tri.v0));
+          const Vec3 e1 = world_point(mesh.vertex(tri.v1)) - p0, e2 = world_point(mesh.vertex(tri.v2)) - p0;
+          const Vec3 n = cross(e1, e2);
+          const float twice_area = length(n);
+          if (!(twice_area > 0.0f) || !std::isfinite(twice_area)) continue;  // degenerate: hit only by BSDF samples
+          // A mirroring transform turns the winding: the front stays where the surface's own
+          // normal, carried along, points (as make_surface sees it).
+          const bool mirrored = to_world && dot(cross(to_world->apply_vector(Vec3(1.0f, 0.0f, 0.0f)),
+                                                      to_world->apply_vector(Vec3(0.0f, 1.0f, 0.0f))),
+                                                to_world->apply_vector(Vec3(0.0f, 0.0f, 1.0f))) < 0.0f;
+          add(t, count, EmissiveTriangle{p0, e1, e2, n / (mirrored ? -twice_area : twice_area), 0.5f * twice_area, e});
+        }
+        break;
+      }
+      case GeometryKind::kInstance: break;  // the top level's instances are visited by the constructor
+    }
+  }
+}
+
 std::uint32_t LightSet::light_of_hit(const Hit& hit) const {
-  if (hit.inst_id != kInvalidId || hit.geom_id >= light_of_primitive_.size()) return kInvalidId;
-  const std::vector<std::uint32_t>& of_primitive = light_of_primitive_[hit.geom_id];
-  return of_primitive.empty() ? kInvalidId : of_primitive[hit.prim_id];
+  const auto found = light_of_primitive_.find(geometry_key(hit.inst_id, hit.geom_id));
+  return found == light_of_primitive_.end() || hit.prim_id >= found->second.size() ? kInvalidId
+                                                                                   : found->second[hit.prim_id];
 }
 
 float LightSet::pdf(std::uint32_t index, const Vec3& from, const Vec3& on_light) const {

@@ -47,6 +47,22 @@ std::filesystem::path texture_path(const tinygltf::Model& model, int texture, co
   return file.parent_path() / normal;
 }
 
+// emissiveFactor × KHR_materials_emissive_strength, from both sides of a double-sided material
+// (glTF renders its back faces as front faces with the normal flipped).
+void read_emission(const tinygltf::Material& m, MaterialDesc& desc) {
+  if (m.emissiveFactor.size() != 3) return;
+  Color emission(clamped_unit(m.emissiveFactor[0]), clamped_unit(m.emissiveFactor[1]), clamped_unit(m.emissiveFactor[2]));
+  if (const auto ext = m.extensions.find("KHR_materials_emissive_strength"); ext != m.extensions.end()) {
+    const tinygltf::Value& strength = ext->second.Get("emissiveStrength");
+    if (strength.IsNumber()) {
+      const double value = strength.GetNumberAsDouble();
+      emission = emission * (std::isfinite(value) && value > 0.0 ? static_cast<float>(std::min(value, 1e9)) : 0.0f);
+    }
+  }
+  desc.emission = emission;
+  desc.emission_two_sided = m.doubleSided;
+}
+
 }  // namespace
 
 MaterialDesc read_material(const tinygltf::Model& model, int index, const std::filesystem::path& file,
@@ -80,6 +96,7 @@ MaterialDesc read_material(const tinygltf::Model& model, int index, const std::f
   desc.color_texture = texture_path(model, pbr.baseColorTexture.index, file, path + ".pbrMetallicRoughness.baseColorTexture",
                                     warnings, &desc.texture_bytes);
   desc.texture_where = SourceLocation{file.string() + ": " + path + ".pbrMetallicRoughness.baseColorTexture"};
+  read_emission(m, desc);
   return desc;
 }
 

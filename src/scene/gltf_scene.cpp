@@ -55,34 +55,26 @@ std::string camera_yaml(const GltfAsset& asset, const BBox& bounds) {
          number(kDefaultFov) + ", resolution: [" + std::to_string(kDefaultWidth) + ", " + std::to_string(kDefaultHeight) + "]}\n";
 }
 
-std::string lights_yaml(const GltfAsset& asset, const BBox& bounds) {
-  if (asset.lights.empty())
+// glTF's photometric units as radiometric ones, as Blender's importer reads them (683 lm/W): a
+// point or spot light's candela become W/sr, a directional light's lux W/m².
+constexpr float kLumensPerWatt = 683.0f;
+
+bool has_emissive_material(const GltfAsset& asset) {
+  return std::any_of(asset.materials.begin(), asset.materials.end(),
+                     [](const MaterialDesc& m) { return max_component(m.emission) > 0.0f; });
+}
+
+// The file's punctual lights in physical units; a file that has no lights and nothing emissive
+// gets a sun from the upper front right, so a bare model is not black.
+std::string lights_yaml(const GltfAsset& asset) {
+  if (asset.lights.empty()) {
+    if (has_emissive_material(asset)) return "";
     return "lights:\n  - {type: directional, direction: [-0.3, -0.8, -0.5], intensity: 0.9}\n";
-  const Vec3 center = bounds.empty() ? Vec3(0.0f, 0.0f, 0.0f) : bounds.center();
-  const float floor_distance = bounds.empty() ? 1e-3f : std::max(1e-3f, 0.05f * length(bounds.extent()));
-  std::vector<float> illuminance;
-  for (const GltfLight& light : asset.lights) {
-    const float scale = [&] {
-      switch (light.kind) {
-        case GltfLight::Kind::kDirectional: return 1.0f;
-        case GltfLight::Kind::kPoint:
-        case GltfLight::Kind::kSpot: {
-          const float d = std::max(length(light.position - center), floor_distance);
-          return 1.0f / (d * d);
-        }
-      }
-      return 1.0f;
-    }();
-    illuminance.push_back(light.intensity * scale * max_component(light.color));
   }
-  const float brightest = *std::max_element(illuminance.begin(), illuminance.end());
   std::string text = "lights:\n";
-  for (std::size_t i = 0; i < asset.lights.size(); ++i) {
-    const GltfLight& light = asset.lights[i];
-    const float peak = max_component(light.color);
-    const Color color = peak > 0.0f ? light.color / peak : Color(1.0f, 1.0f, 1.0f);
-    const float intensity = brightest > 0.0f ? illuminance[i] / brightest : 0.0f;
-    const std::string common = ", color: " + vector(color) + ", intensity: " + number(intensity) + "}\n";
+  for (const GltfLight& light : asset.lights) {
+    const std::string common =
+        ", color: " + vector(light.color) + ", intensity: " + number(light.intensity / kLumensPerWatt) + "}\n";
     switch (light.kind) {
       case GltfLight::Kind::kDirectional:
         text += "  - {type: directional, direction: " + vector(light.direction) + common;
@@ -96,12 +88,20 @@ std::string lights_yaml(const GltfAsset& asset, const BBox& bounds) {
   return text;
 }
 
+// A glTF file as the whole scene is path traced. What lights it is the file's own lights and
+// emissive materials; only a file with neither gets the sun above and a grey sky (a uniform
+// environment of radiance 0.18 that escaping paths see), a lookdev studio's neutral default.
+std::string render_yaml(const GltfAsset& asset) {
+  const bool lit = !asset.lights.empty() || has_emissive_material(asset);
+  return std::string("render: {integrator: path, background: ") + (lit ? "[0, 0, 0]" : "[0.18, 0.18, 0.18]") + "}\n";
+}
+
 }  // namespace
 
 std::string gltf_scene_yaml(const GltfAsset& asset) {
   const BBox bounds = asset.bounds();
   return "# " + asset.file.filename().string() + " as a scene\nrtpro: 1\n" + camera_yaml(asset, bounds) +
-         "render: {background: [0.18, 0.18, 0.18]}\n" + lights_yaml(asset, bounds) + "world:\n  - {type: mesh, file: " +
+         render_yaml(asset) + lights_yaml(asset) + "world:\n  - {type: mesh, file: " +
          quoted_yaml(asset.file.filename().string()) + "}\n";
 }
 

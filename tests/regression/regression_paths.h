@@ -14,15 +14,22 @@ namespace rtpro::regression {
 inline std::vector<std::filesystem::path> scene_files() {
   std::vector<std::filesystem::path> scenes;
   for (const auto& entry : std::filesystem::directory_iterator(test::scenes_dir()))
-    if (entry.path().extension() == ".yaml") scenes.push_back(entry.path());
+    if (entry.path().extension() == ".yaml" || entry.path().extension() == ".gltf") scenes.push_back(entry.path());
   std::sort(scenes.begin(), scenes.end());
   return scenes;
 }
 
 inline std::filesystem::path references_dir() { return test::source_dir() / "tests" / "references"; }
 
+// A scene's name in references and test names: its stem for YAML, "cornell_box_gltf" for
+// scenes/cornell_box.gltf (a glTF rendered as the whole scene beside a YAML of the same stem).
+inline std::string scene_name(const std::filesystem::path& scene) {
+  return scene.extension() == ".yaml" ? scene.stem().string()
+                                      : scene.stem().string() + "_" + scene.extension().string().substr(1);
+}
+
 inline std::filesystem::path reference_file(const std::filesystem::path& scene) {
-  return references_dir() / (scene.stem().string() + ".exr");
+  return references_dir() / (scene_name(scene) + ".exr");
 }
 
 // Failure folders and report.html.

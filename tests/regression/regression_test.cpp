@@ -62,7 +62,7 @@ void PrintTo(const RegressionCase& c, std::ostream* out) {
 
 // "demo-native": the failure folder's name; the test name uses '_' (GoogleTest allows no '-').
 std::string case_folder(const RegressionCase& c) {
-  return c.scene.stem().string() + "-" + std::string(backend_name(c.backend));
+  return regression::scene_name(c.scene) + "-" + std::string(backend_name(c.backend));
 }
 
 std::string case_test_name(const testing::TestParamInfo<RegressionCase>& info) {

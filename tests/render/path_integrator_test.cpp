@@ -125,6 +125,34 @@ TEST_P(PathIntegrator, FurnaceHidesTheSameSphereWithEachEstimatorAlone) {
   }
 }
 
+// The same furnace with its emitter an instance: an emissive sphere scaled up from radius 1 and
+// moved, and a closed emissive box of triangles scaled and mirrored. Instanced emitters are
+// light-sampled in world space (the MIS weights would not sum to 1 otherwise), so the white
+// sphere still vanishes.
+TEST_P(PathIntegrator, FurnaceHidesAWhiteSphereInsideInstancedEmitters) {
+  const std::string common = R"(
+rtpro: 1
+camera: {position: [0, 0, -4], look_at: [0, 0, 0], fov: 40, resolution: [24, 24]}
+render: {spp: 64, max_depth: 64, integrator: path}
+materials:
+  sky: {type: diffuse, color: [0, 0, 0], emission: [1, 1, 1], emission_sides: both}
+  white: {type: diffuse, color: [1, 1, 1]}
+objects:
+  sky_sphere: [{type: sphere, center: [0, 0, 0], radius: 1, material: sky}]
+  sky_box: [{type: mesh, file: )" + std::string(RTPRO_SOURCE_DIR) + R"(/scenes/meshes/box.obj, material: sky}]
+world:
+  - {type: sphere, center: [0, 0, 0], radius: 1, material: white}
+)";
+  for (const std::string& enclosure :
+       {std::string("  - {type: instance, object: sky_sphere, transform: [{scale: 20}, {translate: [1, 0, 0]}]}\n"),
+        std::string("  - {type: instance, object: sky_box, transform: [{scale: [-30, 30, 30]}, {translate: [0, -15, 0]}]}\n")}) {
+    const RenderScene scene = scene_from(common + enclosure);
+    const LightSet lights(scene);
+    EXPECT_FALSE(lights.empty()) << enclosure;
+    EXPECT_NEAR(stats_of(render(scene, GetParam())).mean, 1.0, 0.003) << enclosure;
+  }
+}
+
 TEST_P(PathIntegrator, FurnaceHidesASmoothGlassSphere) {
   const ImageStats s = stats_of(render(scene_from(furnace("{type: dielectric, ior: 1.5}")), GetParam()));
   EXPECT_NEAR(s.mean, 1.0, 0.01);

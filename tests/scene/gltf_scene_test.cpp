@@ -66,17 +66,39 @@ TEST(GltfScene, TheFirstCameraAndThePunctualLightsAreUsed) {
   EXPECT_EQ(scene.camera.width, 2 * scene.camera.height);
   EXPECT_EQ(scene.render.spp, 4);  // --set works on glTF scenes too
   ASSERT_EQ(scene.lights.size(), 3u);
-  // Illuminance at the model's centre: point 400 cd at distance 10 gives 4 lux, the sun 2, the
-  // spot 100 cd at 10 gives 1: scaled so that the brightest is 1.
+  // Photometric units as radiometric ones (683 lm/W, as Blender's importer reads them): candela
+  // become W/sr, lux W/m²; the file's colours as they are. The file is path traced in the dark.
+  EXPECT_EQ(scene.render.integrator, Integrator::kPath);
+  EXPECT_EQ(scene.render.background, Color(0.0f));
   const auto& p = std::get<PointLightDesc>(scene.lights[0]);
   const auto& d = std::get<DirectionalLightDesc>(scene.lights[1]);
   const auto& s = std::get<PointLightDesc>(scene.lights[2]);
-  EXPECT_NEAR(p.intensity, 1.0f, 1e-5f);
+  EXPECT_NEAR(p.intensity, 400.0f / 683.0f, 1e-6f);
   EXPECT_EQ(p.color, Color(1.0f, 0.5f, 0.5f));
-  EXPECT_NEAR(d.intensity, 0.5f, 1e-5f);
+  EXPECT_NEAR(d.intensity, 2.0f / 683.0f, 1e-6f);
   EXPECT_NEAR(d.direction.y, -1.0f, 1e-5f);  // the node's -z turned to point down
-  EXPECT_NEAR(s.intensity, 0.25f, 1e-5f);
+  EXPECT_NEAR(s.intensity, 100.0f / 683.0f, 1e-6f);
   EXPECT_EQ(s.position, Vec3(10.5f, 0.5f, 10.5f));
+}
+
+TEST(GltfScene, AnEmissiveMaterialLightsTheSceneInsteadOfTheDefaultSunAndSky) {
+  GltfFile gltf = offset_model();
+  gltf.json["extensionsUsed"] = {"KHR_materials_emissive_strength"};
+  gltf.json["materials"] = {{{"emissiveFactor", {1.0, 0.5, 0.25}},
+                             {"doubleSided", true},
+                             {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 8.0}}}}}},
+                            {{"emissiveFactor", {0.0, 0.0, 0.0}}}};
+  gltf.json["meshes"][0]["primitives"][0]["material"] = 0;
+  const SceneDescription scene = parse_scene_file(gltf.write("glowing"));
+  EXPECT_TRUE(scene.lights.empty());
+  EXPECT_EQ(scene.render.background, Color(0.0f));
+  EXPECT_EQ(scene.render.integrator, Integrator::kPath);
+  const RenderScene render = build_render_scene(scene);
+  ASSERT_GE(render.materials.size(), 3u);
+  const Emission& lamp = render.materials[render.materials.size() - 2].emission;
+  EXPECT_EQ(lamp.radiance, Color(8.0f, 4.0f, 2.0f));
+  EXPECT_TRUE(lamp.two_sided);
+  EXPECT_FALSE(render.materials.back().emission.emits());
 }
 
 // One mesh drawn by `nodes` nodes side by side.

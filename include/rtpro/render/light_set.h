@@ -1,11 +1,12 @@
 #pragma once
 // Every light the path integrator samples: the scene's lights and its emissive surfaces (each
-// emissive triangle and sphere of the top level a light of its own), picked in proportion to
-// their power and sampled with an exact pdf, so a BSDF sample that reaches one of them can be
-// weighted against light sampling (multiple importance sampling).
+// emissive triangle and sphere a light of its own, in world space, instances included), picked in
+// proportion to their power and sampled with an exact pdf, so a BSDF sample that reaches one of
+// them can be weighted against light sampling (multiple importance sampling).
 //
-// Emissive surfaces inside instances are not sampled: a path that hits one adds its emission with
-// weight 1, which is unbiased (BSDF sampling alone), only noisier.
+// An emissive sphere under a transform that does not scale uniformly is an ellipsoid and is not
+// sampled: a path that hits one adds its emission with weight 1, which is unbiased (BSDF sampling
+// alone), only noisier.
 #include "rtpro/backend/hit.h"
 #include "rtpro/core/ray.h"
 #include "rtpro/render/alias_table.h"
@@ -14,6 +15,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <unordered_map>
 #include <variant>
 #include <vector>
 
@@ -77,9 +79,11 @@ class LightSet {
   std::vector<PathLight> lights_;
   AliasTable pick_;
   std::vector<std::uint32_t> analytic_;  // indices of sphere and rectangle lights
-  // Per top-level geometry: the light index of each primitive (kInvalidId where it does not
-  // emit); empty for geometries without emitters.
-  std::vector<std::vector<std::uint32_t>> light_of_primitive_;
+  // Per emitting geometry, keyed by (instance, geometry) as a hit names them: the light index of
+  // each primitive (kInvalidId where it does not emit).
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> light_of_primitive_;
+
+  void add_emitters(const RenderScene& scene, const Group& group, std::uint32_t instance, const Affine* to_world);
 };
 
 }  // namespace rtpro
