@@ -61,6 +61,12 @@ std::string percent_of_pixels(std::size_t pixels, const ImageComparison& compari
   return text.str();
 }
 
+std::string joined_numbers(const std::vector<double>& values) {
+  std::ostringstream text;
+  for (std::size_t i = 0; i < values.size(); ++i) text << (i ? " " : "") << values[i];
+  return text.str();
+}
+
 void print_report(const CompareCommandOptions& o, const Image& reference, const ImageComparison& c) {
   std::cout << "reference   " << o.reference << " (" << reference.width << "x" << reference.height << ", "
             << joined(reference.channels) << ")\n"
@@ -69,6 +75,9 @@ void print_report(const CompareCommandOptions& o, const Image& reference, const 
     std::cout << "mean error  " << c.mean_error << "\n"
               << "RMS error   " << c.rms_error << "\n"
               << "PSNR        " << c.psnr << (std::isinf(c.psnr) ? "" : " dB") << "\n"
+              << "relMSE      " << c.rel_mse << "\n"
+              << "means       reference " << joined_numbers(c.reference_means) << ", test "
+              << joined_numbers(c.test_means) << "\n"
               << "max error   " << c.max_error << " at x=" << c.max_x << " y=" << c.max_y << " channel "
               << c.max_channel << "\n"
               << "warn        " << percent_of_pixels(c.warn_pixels, c) << " over " << o.thresholds.warn << "\n"
@@ -106,6 +115,8 @@ void print_json(const CompareCommandOptions& o, const Image& reference, const Im
         {"mean_error", c.mean_error},
         {"rms_error", c.rms_error},
         {"psnr", c.psnr},
+        {"rel_mse", c.rel_mse},
+        {"means", {{"reference", c.reference_means}, {"test", c.test_means}}},
         {"max_error", c.max_error},
         {"max_error_at", {{"x", c.max_x}, {"y", c.max_y}, {"channel", c.max_channel}}},
         {"warn_pixels", c.warn_pixels},

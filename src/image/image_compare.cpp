@@ -66,6 +66,37 @@ void count_non_finite(const Image& reference, const Image& test, const CompareTh
   }
 }
 
+// Relative MSE and the per-channel means, in doubles over every finite channel value.
+void add_noise_figures(const Image& reference, const Image& test, ImageComparison& comparison) {
+  constexpr double kEpsilon = 0.01;
+  const std::size_t stride = reference.channels.size();
+  std::vector<double> reference_sum(stride, 0.0), test_sum(stride, 0.0);
+  std::vector<std::size_t> reference_count(stride, 0), test_count(stride, 0);
+  double rel_sum = 0.0;
+  std::size_t rel_count = 0;
+  for (std::size_t i = 0; i < reference.data.size(); ++i) {
+    const std::size_t c = i % stride;
+    const double a = reference.data[i], b = test.data[i];
+    if (std::isfinite(a)) {
+      reference_sum[c] += a;
+      ++reference_count[c];
+    }
+    if (std::isfinite(b)) {
+      test_sum[c] += b;
+      ++test_count[c];
+    }
+    if (std::isfinite(a) && std::isfinite(b)) {
+      rel_sum += (b - a) * (b - a) / (a * a + kEpsilon);
+      ++rel_count;
+    }
+  }
+  comparison.rel_mse = rel_count ? rel_sum / double(rel_count) : 0.0;
+  for (std::size_t c = 0; c < stride; ++c) {
+    comparison.reference_means.push_back(reference_count[c] ? reference_sum[c] / double(reference_count[c]) : 0.0);
+    comparison.test_means.push_back(test_count[c] ? test_sum[c] / double(test_count[c]) : 0.0);
+  }
+}
+
 void judge(const CompareThresholds& thresholds, ImageComparison& comparison) {
   std::ostringstream verdict;
   const double allowed_failures = thresholds.fail_percent / 100.0 * double(comparison.pixel_count);
@@ -115,6 +146,7 @@ ImageComparison compare_images(const Image& reference, const Image& test, const 
   comparison.warn_pixels = results.nwarn;
   comparison.fail_pixels = results.nfail;
   count_non_finite(reference, test, thresholds, comparison);
+  add_noise_figures(reference, test, comparison);
   judge(thresholds, comparison);
   return comparison;
 }

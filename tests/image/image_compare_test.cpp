@@ -84,6 +84,22 @@ TEST(ImageCompare, UniformOffsetGivesEqualMeanAndRms) {
   EXPECT_FALSE(compare_images(reference, test, thresholds).passed);
 }
 
+// relMSE weighs an error by the reference's value: the same absolute error counts 100 times less
+// on a value of 1 than on a black one (against the 0.01 that keeps black finite).
+TEST(ImageCompare, RelativeMseAndMeansPerChannel) {
+  Image reference(2, 1), test(2, 1);
+  reference.data = {0.0f, 1.0f, 2.0f, 0.0f, 1.0f, 4.0f};
+  test.data = {0.1f, 1.1f, 2.0f, 0.0f, 1.0f, 4.0f};
+  const ImageComparison result = compare_images(reference, test, {});
+  const double expected = (0.01 / 0.01 + 0.01 / 1.01) / 6.0;
+  EXPECT_NEAR(result.rel_mse, expected, 1e-6);
+  ASSERT_EQ(result.reference_means.size(), 3u);
+  EXPECT_NEAR(result.reference_means[2], 3.0, 1e-12);
+  EXPECT_NEAR(result.test_means[0], 0.05, 1e-7);
+  EXPECT_NEAR(result.test_means[1], 1.05, 1e-7);
+  EXPECT_EQ(compare_images(reference, reference, {}).rel_mse, 0.0);
+}
+
 TEST(ImageCompare, DifferentSizesAreAFailureNotAUnion) {
   const Image reference = gradient_image(8, 5);
   Image test = gradient_image(8, 6);

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rtpro {
 
@@ -35,6 +36,12 @@ struct ImageComparison {
   double mean_error = 0.0;  // mean over all channel values
   double rms_error = 0.0;
   double psnr = 0.0;        // dB with a peak of 1.0; +infinity for identical images
+  // Relative MSE: the mean over channel values of (test − reference)² / (reference² + 0.01)
+  // (Rousselle et al. 2011), how renderers compare noise against a long reference; finite
+  // channels only.
+  double rel_mse = 0.0;
+  // Per channel, the mean of each image's finite values.
+  std::vector<double> reference_means, test_means;
   double max_error = 0.0;
   int max_x = 0;
   int max_y = 0;

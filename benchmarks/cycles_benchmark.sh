@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# Cycles (Debian's Blender 3.4) as a measured peer of the path integrator, as POV-Ray is of the
+# Whitted one: the same glTF file rendered by both at the same size, samples per pixel and path
+# length (benchmarks/cycles/render_gltf.py states Cycles' settings and why), interleaved runs at
+# each thread count. Reported per renderer and thread count: the median time and its spread
+# (rtpro: the whole process; Cycles: its render call, scene sync, BVH and sampling, without
+# Blender's start-up and glTF import), rtpro's time over Cycles', each image's mean per channel
+# and its relMSE against a long Cycles render (REF_SPP samples).
+# Usage: benchmarks/cycles_benchmark.sh [--runs N] [--threads "1 2"]
+#   SCENE=scenes/cornell_box.gltf SIZE=256 SPP=64 MAX_DEPTH=8 REF_SPP=1024 pick the work;
+#   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
+set -euo pipefail
+source "$(dirname "$0")/options.sh"
+command -v blender >/dev/null || { echo "blender not found: apt-get install blender (Debian package, 3.4)" >&2; exit 2; }
+scene=${SCENE:-scenes/cornell_box.gltf}
+size=${SIZE:-256}
+spp=${SPP:-64}
+max_depth=${MAX_DEPTH:-8}
+ref_spp=${REF_SPP:-1024}
+
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTPRO_BUILD_TESTS=OFF >/dev/null
+fi
+grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$build/CMakeCache.txt" || { echo "$build is not a Release tree" >&2; exit 2; }
+cmake --build "$build" --target rtpro >/dev/null
+
+out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-cycles.XXXXXX")
+cycles() {  # OUT.exr SPP THREADS LOG
+  (cd "$out" && blender -b --factory-startup --python "$root/benchmarks/cycles/render_gltf.py" -- \
+    "$root/$scene" "$out/$1.rgba.exr" "$size" "$2" "$max_depth" "$3" >"$4" 2>&1) ||
+    { echo "blender failed, see $4" >&2; exit 1; }
+  oiiotool "$out/$1.rgba.exr" --ch R,G,B -o "$out/$1.exr"  # rtpro writes R,G,B
+}
+
+echo "long Cycles reference: $size x $size, $ref_spp spp ..." >&2
+cycles reference "$ref_spp" 2 "$out/reference.log"
+for t in $threads; do
+  for r in $(seq "$runs"); do
+    cycles "cycles-t$t-r$r" "$spp" "$t" "$out/cycles-t$t-r$r.log"
+    /usr/bin/time -f "%e" -o "$out/rtpro-t$t-r$r.seconds" "$build/rtpro" render "$root/$scene" \
+      -o "$out/rtpro-t$t-r$r.exr" --size "${size}x${size}" --spp "$spp" --max-depth "$max_depth" --threads "$t" \
+      --quiet --no-journal --stats-json "$out/rtpro-t$t-r$r.json"
+  done
+done
+for f in "$out"/cycles-t*-r*.exr "$out"/rtpro-t*-r*.exr; do
+  "$build/rtpro" compare "$out/reference.exr" "$f" --json >"${f%.exr}.compare.json" || true
+done
+
+python3 - "$out" "$runs" "$threads" "$scene" "$size" "$spp" "$max_depth" "$ref_spp" <<'PY'
+import json, re, statistics, sys
+out, runs, threads, scene, size, spp, depth, ref_spp = sys.argv[1:9]
+runs, threads = int(runs), threads.split()
+
+def seconds(who, t, r):
+    if who == "cycles":
+        return float(re.search(r"cycles_render_seconds ([\d.]+)", open(f"{out}/cycles-t{t}-r{r}.log").read()).group(1))
+    return float(open(f"{out}/rtpro-t{t}-r{r}.seconds").read().split()[-1])
+
+def compared(who, t, r):
+    return json.load(open(f"{out}/{who}-t{t}-r{r}.compare.json"))
+
+ref_means = compared("cycles", threads[0], 1)["means"]["reference"]
+print(f"{scene}, {size}x{size}, {spp} spp, max depth {depth} (rtpro) / {int(depth) - 1} bounces (Cycles), "
+      f"{runs} interleaved runs\nreference: Cycles at {ref_spp} spp, mean "
+      + " ".join(f"{m:.5f}" for m in ref_means) + "\n")
+header = f"{'renderer':8} {'thr':>3} {'median s':>9} {'min-max s':>13} {'rtpro/Cycles':>12} {'mean R G B':>26} {'vs ref %':>17} {'relMSE':>9}"
+print(header)
+print("-" * len(header))
+for t in threads:
+    cycles_median = statistics.median(seconds("cycles", t, r) for r in range(1, runs + 1))
+    for who in ("cycles", "rtpro"):
+        times = [seconds(who, t, r) for r in range(1, runs + 1)]
+        reports = [compared(who, t, r) for r in range(1, runs + 1)]
+        means = [statistics.median(rep["means"]["test"][c] for rep in reports) for c in range(3)]
+        off = " ".join(f"{100 * (m / rm - 1):+5.2f}" for m, rm in zip(means, ref_means))
+        ratio = f"{statistics.median(times) / cycles_median:11.2f}x" if who == "rtpro" else ""
+        rel = statistics.median(rep["rel_mse"] for rep in reports)
+        print(f"{who:8} {t:>3} {statistics.median(times):9.2f} {min(times):6.2f}-{max(times):<6.2f} {ratio:>12} "
+              f"{means[0]:8.5f} {means[1]:8.5f} {means[2]:8.5f} {off:>17} {rel:9.5f}")
+print(f"\nimages, logs and comparisons: {out}")
+PY
