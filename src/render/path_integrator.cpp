@@ -29,9 +29,10 @@ constexpr float kShadowEpsilon = 1e-4f;
 
 bool is_black(const Color& c) { return !(c.x > 0.0f || c.y > 0.0f || c.z > 0.0f); }
 
+template <class Sampler>
 class PathTracer {
  public:
-  PathTracer(const RenderScene& scene, const LightSet& lights, const StratifiedSampler& sampler,
+  PathTracer(const RenderScene& scene, const LightSet& lights, const Sampler& sampler,
              std::span<const SampleKey> keys, std::span<SampleResult> results, PathWorkspace& ws,
              const TextureLookup* textures)
       : scene_(scene), lights_(lights), sampler_(sampler), keys_(keys), results_(results), ws_(ws),
@@ -148,18 +149,17 @@ class PathTracer {
 
   const RenderScene& scene_;
   const LightSet& lights_;
-  const StratifiedSampler& sampler_;
+  const Sampler& sampler_;
   std::span<const SampleKey> keys_;
   std::span<SampleResult> results_;
   PathWorkspace& ws_;
   const TextureLookup* textures_;
 };
 
-}  // namespace
-
-void trace_paths(const RenderScene& scene, const Backend& backend, const LightSet& lights,
-                 const StratifiedSampler& sampler, std::span<const Ray> camera_rays, std::span<const SampleKey> keys,
-                 std::span<SampleResult> results, RayCounts& counts, PathWorkspace& ws, const TextureLookup* textures) {
+template <class Sampler>
+void trace(const RenderScene& scene, const Backend& backend, const LightSet& lights, const Sampler& sampler,
+           std::span<const Ray> camera_rays, std::span<const SampleKey> keys, std::span<SampleResult> results,
+           RayCounts& counts, PathWorkspace& ws, const TextureLookup* textures) {
   ws.paths.clear();
   ws.rays.assign(camera_rays.begin(), camera_rays.end());
   for (std::uint32_t i = 0; i < camera_rays.size(); ++i) {
@@ -167,7 +167,7 @@ void trace_paths(const RenderScene& scene, const Backend& backend, const LightSe
     ws.paths.push_back({i, 0, Color(1.0f), camera_rays[i].org, 0.0f, true, true, false, PathWorkspace::kOutside});
   }
   counts.camera += camera_rays.size();
-  PathTracer tracer(scene, lights, sampler, keys, results, ws, textures);
+  PathTracer<Sampler> tracer(scene, lights, sampler, keys, results, ws, textures);
   for (int generation = 0; !ws.paths.empty(); ++generation) {
     ws.hits.resize(ws.rays.size());
     backend.intersect(ws.rays, ws.hits, generation == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
@@ -186,6 +186,20 @@ void trace_paths(const RenderScene& scene, const Backend& backend, const LightSe
     std::swap(ws.paths, ws.next_paths);
     std::swap(ws.rays, ws.next_rays);
   }
+}
+
+}  // namespace
+
+void trace_paths(const RenderScene& scene, const Backend& backend, const LightSet& lights,
+                 const StratifiedSampler& sampler, std::span<const Ray> camera_rays, std::span<const SampleKey> keys,
+                 std::span<SampleResult> results, RayCounts& counts, PathWorkspace& ws, const TextureLookup* textures) {
+  trace(scene, backend, lights, sampler, camera_rays, keys, results, counts, ws, textures);
+}
+
+void trace_paths(const RenderScene& scene, const Backend& backend, const LightSet& lights, const SobolSampler& sampler,
+                 std::span<const Ray> camera_rays, std::span<const SampleKey> keys, std::span<SampleResult> results,
+                 RayCounts& counts, PathWorkspace& ws, const TextureLookup* textures) {
+  trace(scene, backend, lights, sampler, camera_rays, keys, results, counts, ws, textures);
 }
 
 }  // namespace rtpro

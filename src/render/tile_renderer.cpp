@@ -26,6 +26,7 @@ TileRenderer::TileRenderer(const RenderScene& scene, const Backend& backend, con
       layout_(layout),
       textures_(textures),
       sampler_(scene.render.spp, scene.render.seed),
+      sobol_(scene.render.seed),
       pixels_per_batch_(std::max<std::size_t>(1, kSamplesPerBatch / static_cast<std::size_t>(scene.render.spp))) {
   if (scene.render.integrator == Integrator::kPath) path_lights_.emplace(scene);
   if (!scene.textures.empty() && !textures)
@@ -50,7 +51,12 @@ void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixe
     const int x = tile.x0 + static_cast<int>(p % tile_width);
     const int y = tile.y0 + static_cast<int>(p / tile_width);
     const std::uint64_t pixel_key = static_cast<std::uint64_t>(y) * image_width + static_cast<std::uint64_t>(x);
-    sampler_.pixel_offsets(pixel_key, ws.pixel_offsets.data());
+    switch (scene_.render.sampler) {
+      case SamplerKind::kStratified: sampler_.pixel_offsets(pixel_key, ws.pixel_offsets.data()); break;
+      case SamplerKind::kSobol:
+        for (int i = 0; i < spp; ++i) ws.pixel_offsets[static_cast<std::size_t>(i)] = sobol_.pixel_offset(pixel_key, i);
+        break;
+    }
     int s = 0;
     // Pinhole rays four at a time (camera_ray's rays, bit for bit), the rest one by one.
     for (; pinhole && s + 4 <= spp; s += 4, next += 4) {
@@ -64,7 +70,9 @@ void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixe
     }
     for (; s < spp; ++s, ++next) {
       const PixelOffset& offset = offsets[s];
-      const Sample2D lens = pinhole ? Sample2D{0.5f, 0.5f} : sampler_.sample_2d(pixel_key, s, sample_dimension::kLens);
+      const Sample2D lens = pinhole                                             ? Sample2D{0.5f, 0.5f}
+                            : scene_.render.sampler == SamplerKind::kStratified ? sampler_.sample_2d(pixel_key, s, sample_dimension::kLens)
+                                                                                : sobol_.sample_2d(pixel_key, s, sample_dimension::kLens);
       copy_ray(camera_ray(scene_.camera, static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y, lens),
                ws.camera_rays[next]);
       ws.sample_keys[next] = {pixel_key, s};
@@ -77,8 +85,16 @@ void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixe
                   textures_);
       break;
     case Integrator::kPath:
-      trace_paths(scene_, backend_, *path_lights_, sampler_, ws.camera_rays, ws.sample_keys, ws.samples, out.rays,
-                  ws.paths, textures_);
+      switch (scene_.render.sampler) {
+        case SamplerKind::kStratified:
+          trace_paths(scene_, backend_, *path_lights_, sampler_, ws.camera_rays, ws.sample_keys, ws.samples, out.rays,
+                      ws.paths, textures_);
+          break;
+        case SamplerKind::kSobol:
+          trace_paths(scene_, backend_, *path_lights_, sobol_, ws.camera_rays, ws.sample_keys, ws.samples, out.rays,
+                      ws.paths, textures_);
+          break;
+      }
       break;
   }
 

@@ -120,7 +120,7 @@ int read_spp(const YamlNode& node) {
 RenderSettings read_render(const YamlNode* node) {
   RenderSettings settings;
   if (absent(node)) return settings;
-  const MappingReader render(*node, "render", {"spp", "max_depth", "seed", "ambient", "background", "integrator", "sampling"});
+  const MappingReader render(*node, "render", {"spp", "max_depth", "seed", "ambient", "background", "integrator", "sampling", "sampler"});
   if (const YamlNode* spp = render.optional("spp")) settings.spp = read_spp(*spp);
   if (const YamlNode* integrator = render.optional("integrator")) {
     const std::string text = read_string(*integrator, "render.integrator");
@@ -134,6 +134,13 @@ RenderSettings read_render(const YamlNode* node) {
     else if (text == "light") settings.path_sampling = PathSampling::kLight;
     else if (text == "bsdf") settings.path_sampling = PathSampling::kBsdf;
     else fail_at(*sampling, "render.sampling must be mis, light or bsdf, got '" + text + "'");
+  }
+  settings.sampler = settings.integrator == Integrator::kPath ? SamplerKind::kSobol : SamplerKind::kStratified;
+  if (const YamlNode* sampler = render.optional("sampler")) {
+    const std::string text = read_string(*sampler, "render.sampler");
+    if (text == "sobol") settings.sampler = SamplerKind::kSobol;
+    else if (text == "stratified") settings.sampler = SamplerKind::kStratified;
+    else fail_at(*sampler, "render.sampler must be sobol or stratified, got '" + text + "'");
   }
   if (const YamlNode* depth = render.optional("max_depth")) {
     const std::int64_t value = read_integer(*depth, "render.max_depth");

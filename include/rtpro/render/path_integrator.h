@@ -13,6 +13,7 @@
 #include "rtpro/image/texture_lookup.h"
 #include "rtpro/render/light_set.h"
 #include "rtpro/render/sampler.h"
+#include "rtpro/render/sobol_sampler.h"
 #include "rtpro/render/shading.h"
 #include "rtpro/scene/render_scene.h"
 
@@ -62,11 +63,14 @@ class PathWorkspace {
 };
 
 // Traces a batch of camera rays; results[i] receives camera_rays[i]'s radiance and its AOV hit,
-// keys[i] names its camera sample. Ray counts are added to `counts` (bounces as reflection or
-// refraction rays).
+// keys[i] names its camera sample, whose random numbers `sampler` draws (render.sampler). Ray
+// counts are added to `counts` (bounces as reflection or refraction rays).
 void trace_paths(const RenderScene& scene, const Backend& backend, const LightSet& lights,
                  const StratifiedSampler& sampler, std::span<const Ray> camera_rays, std::span<const SampleKey> keys,
                  std::span<SampleResult> results, RayCounts& counts, PathWorkspace& workspace,
                  const TextureLookup* textures);
+void trace_paths(const RenderScene& scene, const Backend& backend, const LightSet& lights, const SobolSampler& sampler,
+                 std::span<const Ray> camera_rays, std::span<const SampleKey> keys, std::span<SampleResult> results,
+                 RayCounts& counts, PathWorkspace& workspace, const TextureLookup* textures);
 
 }  // namespace rtpro

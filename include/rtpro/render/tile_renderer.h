@@ -44,6 +44,7 @@ class TileRenderer {
   const FilmLayout& layout_;
   const TextureLookup* textures_;
   StratifiedSampler sampler_;
+  SobolSampler sobol_;
   std::size_t pixels_per_batch_;
   std::optional<LightSet> path_lights_;  // built for the path integrator only
 };

@@ -27,6 +27,19 @@ constexpr const char* path_sampling_name(PathSampling sampling) {
   return "?";
 }
 
+// Where a pixel's samples fall in every dimension: `stratified` (render/sampler.h: a jittered grid
+// per dimension pair, the Whitted references' sampler) or `sobol` (render/sobol_sampler.h:
+// Owen-scrambled Sobol points, the path integrator's default, lower error at equal spp).
+enum class SamplerKind : std::uint8_t { kStratified, kSobol };
+
+constexpr const char* sampler_name(SamplerKind sampler) {
+  switch (sampler) {
+    case SamplerKind::kStratified: return "stratified";
+    case SamplerKind::kSobol: return "sobol";
+  }
+  return "?";
+}
+
 constexpr const char* integrator_name(Integrator integrator) {
   switch (integrator) {
     case Integrator::kWhitted: return "whitted";
@@ -40,6 +53,7 @@ struct RenderSettings {
   int max_depth = 5;   // bounces after the camera ray: mirror bounces (whitted), path vertices (path)
   Integrator integrator = Integrator::kWhitted;
   PathSampling path_sampling = PathSampling::kMis;
+  SamplerKind sampler = SamplerKind::kStratified;  // the scene parser makes `path` default to sobol
   std::uint64_t seed = 0;
   float ambient = 0.2f;
   Color background{0.0f, 0.0f, 0.0f};

@@ -1,0 +1,55 @@
+#pragma once
+// Owen-scrambled Sobol points with hash-based scrambling (Burley 2020, "Practical Hash-based Owen
+// Scrambling"), the path integrator's sampler. Every dimension pair of a pixel is the first two
+// Sobol dimensions, a (0, 2)-sequence: any power-of-two prefix of a pixel's samples is stratified
+// in every elementary interval, which the stratified sampler only is for its one grid. Each pixel
+// and dimension pair gets its own nested uniform scramble of the points and its own scrambled
+// order of the sample indices ("padding" the pairs into a high-dimensional sampler without the
+// correlation between pairs that plain Sobol dimensions show).
+//
+// Like StratifiedSampler, every value is a pure function of (seed, pixel, sample index,
+// dimension), with dimensions numbered as in render/sample_dimensions.h.
+#include "rtpro/render/sampler.h"
+
+#include <cstdint>
+
+namespace rtpro {
+
+class SobolSampler {
+ public:
+  explicit SobolSampler(std::uint64_t seed) : seed_(seed) {}
+
+  // The pixel position of this sample (dimensions 0–1).
+  PixelOffset pixel_offset(std::uint64_t pixel_key, int sample_index) const {
+    return sample_2d(pixel_key, sample_index, 0);
+  }
+  // The 2D value of dimension pair (dimension, dimension + 1); dimension is even.
+  Sample2D sample_2d(std::uint64_t pixel_key, int sample_index, int dimension) const;
+  // A 1D value of `dimension`: an Owen-scrambled van der Corput sequence.
+  float sample_1d(std::uint64_t pixel_key, int sample_index, int dimension) const;
+
+ private:
+  std::uint64_t seed_;
+};
+
+namespace sobol_detail {
+
+// The Laine–Karras permutation of Burley 2020: flips each bit by a hash of the bits below it.
+// Applied to a bit-reversed value it is a nested uniform (Owen) scramble.
+constexpr std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t seed) {
+  x += seed;
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+  return x;
+}
+
+std::uint32_t reverse_bits(std::uint32_t x);
+std::uint32_t nested_uniform_scramble(std::uint32_t x, std::uint32_t seed);
+// The second Sobol dimension of `index` (the first is reverse_bits(index)).
+std::uint32_t sobol_second_dimension(std::uint32_t index);
+
+}  // namespace sobol_detail
+
+}  // namespace rtpro

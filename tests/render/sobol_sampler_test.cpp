@@ -1,0 +1,86 @@
+// The Owen-scrambled Sobol sampler: every power-of-two prefix of a pixel's samples is a (0, m, 2)
+// net in each dimension pair (one point in every elementary interval of area 1/N), 1D values are
+// stratified the same way, and values are a pure function of (seed, pixel, sample, dimension).
+#include "rtpro/render/sobol_sampler.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <vector>
+
+namespace rtpro {
+namespace {
+
+TEST(SobolSampler, FirstTwoDimensionsAreTheSobolMatrices) {
+  using namespace sobol_detail;
+  EXPECT_EQ(reverse_bits(1u), 0x80000000u);
+  EXPECT_EQ(reverse_bits(0x12345678u), 0x1e6a2c48u);
+  // Sobol's second dimension: 1/2, 3/4, 1/4, 5/8 ... for indices 1, 2, 3, 4.
+  EXPECT_EQ(sobol_second_dimension(0), 0u);
+  EXPECT_EQ(sobol_second_dimension(1), 0x80000000u);
+  EXPECT_EQ(sobol_second_dimension(2), 0xc0000000u);
+  EXPECT_EQ(sobol_second_dimension(3), 0x40000000u);
+  EXPECT_EQ(sobol_second_dimension(4), 0xa0000000u);
+  // The Owen scramble is a bijection on bytes' worth of values (checked on the low 12 bits).
+  std::set<std::uint32_t> seen;
+  for (std::uint32_t x = 0; x < 4096; ++x) seen.insert(nested_uniform_scramble(x, 0x9e3779b9u) & 0xfffu);
+  EXPECT_EQ(seen.size(), 4096u);
+}
+
+// Every elementary interval [a/2^i, (a+1)/2^i) × [b/2^j, (b+1)/2^j) with i + j = m holds exactly
+// one of the first 2^m points.
+void expect_net(const std::vector<Sample2D>& points, int m) {
+  const int n = 1 << m;
+  for (int i = 0; i <= m; ++i) {
+    const int j = m - i;
+    std::vector<int> count(static_cast<std::size_t>(n), 0);
+    for (int p = 0; p < n; ++p) {
+      const int a = static_cast<int>(points[static_cast<std::size_t>(p)].x * static_cast<float>(1 << i));
+      const int b = static_cast<int>(points[static_cast<std::size_t>(p)].y * static_cast<float>(1 << j));
+      ++count[static_cast<std::size_t>(a * (1 << j) + b)];
+    }
+    for (int c = 0; c < n; ++c) ASSERT_EQ(count[static_cast<std::size_t>(c)], 1) << "2^" << i << " x 2^" << j << " cell " << c;
+  }
+}
+
+TEST(SobolSampler, EveryPowerOfTwoPrefixIsStratifiedInEveryDimensionPair) {
+  const SobolSampler sampler(7);
+  for (const std::uint64_t pixel : {0ull, 1ull, 12345ull})
+    for (const int dimension : {0, 2, 4, 12, 100}) {
+      std::vector<Sample2D> points;
+      for (int s = 0; s < 256; ++s) {
+        points.push_back(sampler.sample_2d(pixel, s, dimension));
+        ASSERT_GE(points.back().x, 0.0f);
+        ASSERT_LT(points.back().x, 1.0f);
+        ASSERT_GE(points.back().y, 0.0f);
+        ASSERT_LT(points.back().y, 1.0f);
+      }
+      for (int m = 0; m <= 8; ++m) expect_net(points, m);
+    }
+}
+
+TEST(SobolSampler, OneDimensionalValuesAreStratified) {
+  const SobolSampler sampler(3);
+  for (const int dimension : {5, 6, 21}) {
+    std::vector<int> count(64, 0);
+    for (int s = 0; s < 64; ++s) ++count[static_cast<std::size_t>(sampler.sample_1d(42, s, dimension) * 64.0f)];
+    for (const int c : count) EXPECT_EQ(c, 1);
+  }
+}
+
+TEST(SobolSampler, ValuesDependOnlyOnSeedPixelSampleAndDimension) {
+  const SobolSampler a(11), b(11), other_seed(12);
+  EXPECT_EQ(a.sample_2d(5, 3, 8).x, b.sample_2d(5, 3, 8).x);
+  EXPECT_EQ(a.sample_1d(5, 3, 9), b.sample_1d(5, 3, 9));
+  // Other pixels, dimensions and seeds are scrambled independently.
+  int same = 0;
+  for (int s = 0; s < 64; ++s) {
+    same += a.sample_2d(5, s, 8).x == a.sample_2d(6, s, 8).x;
+    same += a.sample_2d(5, s, 8).x == a.sample_2d(5, s, 10).x;
+    same += a.sample_2d(5, s, 8).x == other_seed.sample_2d(5, s, 8).x;
+  }
+  EXPECT_LT(same, 3);
+}
+
+}  // namespace
+}  // namespace rtpro
