@@ -79,16 +79,16 @@ class PathTracer {
     const SampleKey& key = keys_[path.sample];
     const auto dimension = [&](int offset) { return sample_dimension::at_bounce(path.bounce, offset); };
     const Vec3 wo = surface.frame.to_local(-normalize(ray.dir));
+    // The light's pick and the BSDF's lobe choice as one 2D sample: one draw instead of two.
+    const Sample2D choices = sampler_.sample_2d(key.pixel_key, key.sample_index, dimension(path_dimension::kChoices));
     if (!delta && !lights_.empty()) {
-      const float u_pick = sampler_.sample_1d(key.pixel_key, key.sample_index, dimension(path_dimension::kLightPick));
       const Sample2D u = sampler_.sample_2d(key.pixel_key, key.sample_index, dimension(path_dimension::kLightPoint));
-      if (const std::optional<PathLightSample> ls = lights_.sample(sp.position, u_pick, u))
+      if (const std::optional<PathLightSample> ls = lights_.sample(sp.position, choices.x, u))
         queue_shadow_ray(path.sample, sp, surface, wo, *ls, beta);
     }
 
-    const float u_lobe = sampler_.sample_1d(key.pixel_key, key.sample_index, dimension(path_dimension::kBsdfLobe));
     const Sample2D u = sampler_.sample_2d(key.pixel_key, key.sample_index, dimension(path_dimension::kBsdfDirection));
-    const std::optional<BsdfSample> bs = bsdf_sample(surface.bsdf, wo, u_lobe, u);
+    const std::optional<BsdfSample> bs = bsdf_sample(surface.bsdf, wo, choices.y, u);
     if (!bs || !(bs->pdf > 0.0f) || is_black(bs->f)) return;
     Color next_beta = beta * bs->f * (std::fabs(bs->wi.z) / bs->pdf);
     if (path.bounce >= kRouletteStart) {

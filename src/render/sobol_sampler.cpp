@@ -32,29 +32,46 @@ constexpr std::array<std::uint32_t, 32> second_dimension_directions() {
   return v;
 }
 
-// The generator matrix applied a byte at a time: table[b][v] is the xor of the directions of the
-// bits set in v, for byte b of the index. Four lookups instead of up to 32 conditional xors (the
+// A linear map over GF(2) applied a byte at a time: table[b][v] is the xor of the images of the
+// bits set in v, for byte b of the input. Four lookups instead of up to 32 conditional xors (the
 // scrambled indices have high bits set).
 using ByteTables = std::array<std::array<std::uint32_t, 256>, 4>;
-constexpr ByteTables second_dimension_byte_tables() {
-  const std::array<std::uint32_t, 32> directions = second_dimension_directions();
+template <class Image>
+constexpr ByteTables byte_tables(Image image_of_bit) {
   ByteTables tables{};
   for (int byte = 0; byte < 4; ++byte)
     for (int value = 0; value < 256; ++value) {
       std::uint32_t x = 0;
       for (int bit = 0; bit < 8; ++bit)
-        if (value >> bit & 1) x ^= directions[static_cast<std::size_t>(byte * 8 + bit)];
+        if (value >> bit & 1) x ^= image_of_bit(byte * 8 + bit);
       tables[static_cast<std::size_t>(byte)][static_cast<std::size_t>(value)] = x;
     }
   return tables;
 }
-constexpr ByteTables kSecondDimension = second_dimension_byte_tables();
+
+constexpr std::uint32_t apply(const ByteTables& t, std::uint32_t x) {
+  return t[0][x & 0xffu] ^ t[1][x >> 8 & 0xffu] ^ t[2][x >> 16 & 0xffu] ^ t[3][x >> 24];
+}
+
+constexpr std::uint32_t reversed(std::uint32_t x) {
+  std::uint32_t r = 0;
+  for (int i = 0; i < 32; ++i) r |= (x >> i & 1u) << (31 - i);
+  return r;
+}
+
+constexpr ByteTables kSecondDimension =
+    byte_tables([](int bit) { return second_dimension_directions()[static_cast<std::size_t>(bit)]; });
+// The second dimension read and written bit-reversed: reverse ∘ sobol ∘ reverse, the form the
+// scrambles below take it in. Bit b of the input is bit 31 − b of the index.
+constexpr ByteTables kSecondDimensionReversed =
+    byte_tables([](int bit) { return reversed(second_dimension_directions()[static_cast<std::size_t>(31 - bit)]); });
 
 }  // namespace
 
-std::uint32_t sobol_second_dimension(std::uint32_t index) {
-  return kSecondDimension[0][index & 0xffu] ^ kSecondDimension[1][index >> 8 & 0xffu] ^
-         kSecondDimension[2][index >> 16 & 0xffu] ^ kSecondDimension[3][index >> 24];
+std::uint32_t sobol_second_dimension(std::uint32_t index) { return apply(kSecondDimension, index); }
+
+std::uint32_t reversed_sobol_second_dimension(std::uint32_t reversed_index) {
+  return apply(kSecondDimensionReversed, reversed_index);
 }
 
 }  // namespace sobol_detail
@@ -65,32 +82,39 @@ constexpr float to_unit(std::uint32_t bits) {
   return static_cast<float>(bits >> 8) * (1.0f / 16777216.0f);  // the top 24 bits: exact, below 1
 }
 
-// Per pixel and dimension: the scramble of the sample order and of each coordinate.
+// Per pixel and dimension: the scramble of the sample order and of each coordinate, from one
+// SplitMix finalisation of the three inputs.
 struct Scrambles {
   std::uint32_t order, x, y;
 };
 
 Scrambles scrambles(std::uint64_t seed, std::uint64_t pixel_key, int dimension) {
-  const std::uint64_t h = hash_combine(hash_combine(seed, pixel_key), static_cast<std::uint64_t>(dimension));
-  const std::uint64_t h2 = mix64(h);
-  return {static_cast<std::uint32_t>(h), static_cast<std::uint32_t>(h >> 32), static_cast<std::uint32_t>(h2)};
+  const std::uint64_t h =
+      mix64(seed ^ (pixel_key * 0x9e3779b97f4a7c15ULL) ^ (static_cast<std::uint64_t>(dimension) * 0xd1b54a32d192ed03ULL));
+  const std::uint64_t h2 = (h ^ (h >> 29)) * 0xbf58476d1ce4e5b9ULL;
+  return {static_cast<std::uint32_t>(h), static_cast<std::uint32_t>(h >> 32), static_cast<std::uint32_t>(h2 >> 32)};
 }
 
 }  // namespace
 
+// With nus(v, s) = reverse(LK(reverse(v), s)) the nested uniform scramble, a sample is
+//   index = nus(sample, order),  x = nus(reverse(index), sx),  y = nus(sobol2(index), sy),
+// computed here with the reverses that cancel left out: r = LK(reverse(sample), order) is
+// reverse(index), x = reverse(LK(index, sx)), y = reverse(LK(reverse(sobol2(reverse(r))), sy)).
 Sample2D SobolSampler::sample_2d(std::uint64_t pixel_key, int sample_index, int dimension) const {
   using namespace sobol_detail;
   const Scrambles s = scrambles(seed_, pixel_key, dimension);
-  const std::uint32_t index = nested_uniform_scramble(static_cast<std::uint32_t>(sample_index), s.order);
-  return {to_unit(nested_uniform_scramble(reverse_bits(index), s.x)),
-          to_unit(nested_uniform_scramble(sobol_second_dimension(index), s.y))};
+  const std::uint32_t r = laine_karras_permutation(reverse_bits(static_cast<std::uint32_t>(sample_index)), s.order);
+  const std::uint32_t index = reverse_bits(r);
+  return {to_unit(reverse_bits(laine_karras_permutation(index, s.x))),
+          to_unit(reverse_bits(laine_karras_permutation(reversed_sobol_second_dimension(r), s.y)))};
 }
 
 float SobolSampler::sample_1d(std::uint64_t pixel_key, int sample_index, int dimension) const {
   using namespace sobol_detail;
   const Scrambles s = scrambles(seed_, pixel_key, dimension);
-  const std::uint32_t index = nested_uniform_scramble(static_cast<std::uint32_t>(sample_index), s.order);
-  return to_unit(nested_uniform_scramble(reverse_bits(index), s.x));
+  const std::uint32_t r = laine_karras_permutation(reverse_bits(static_cast<std::uint32_t>(sample_index)), s.order);
+  return to_unit(reverse_bits(laine_karras_permutation(reverse_bits(r), s.x)));
 }
 
 }  // namespace rtpro

@@ -21,6 +21,8 @@ TEST(SobolSampler, FirstTwoDimensionsAreTheSobolMatrices) {
   EXPECT_EQ(sobol_second_dimension(2), 0xc0000000u);
   EXPECT_EQ(sobol_second_dimension(3), 0x40000000u);
   EXPECT_EQ(sobol_second_dimension(4), 0xa0000000u);
+  for (std::uint32_t r : {0u, 1u, 0x80000000u, 0x12345678u, 0xdeadbeefu, 0xffffffffu})
+    EXPECT_EQ(reversed_sobol_second_dimension(r), reverse_bits(sobol_second_dimension(reverse_bits(r)))) << r;
   // The Owen scramble is a bijection on bytes' worth of values (checked on the low 12 bits).
   std::set<std::uint32_t> seen;
   for (std::uint32_t x = 0; x < 4096; ++x) seen.insert(nested_uniform_scramble(x, 0x9e3779b9u) & 0xfffu);

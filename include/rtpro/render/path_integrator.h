@@ -27,8 +27,7 @@ namespace path_dimension {
 // Offsets within a bounce's dimensions (sample_dimension::at_bounce).
 inline constexpr int kLightPoint = 0;   // and 1
 inline constexpr int kBsdfDirection = 2;  // and 3
-inline constexpr int kLightPick = 4;
-inline constexpr int kBsdfLobe = 5;
+inline constexpr int kChoices = 4;  // and 5: which light (x) and which BSDF lobe (y)
 inline constexpr int kRoulette = 6;
 }  // namespace path_dimension
 

@@ -47,8 +47,10 @@ constexpr std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t 
 
 std::uint32_t reverse_bits(std::uint32_t x);
 std::uint32_t nested_uniform_scramble(std::uint32_t x, std::uint32_t seed);
-// The second Sobol dimension of `index` (the first is reverse_bits(index)).
+// The second Sobol dimension of `index` (the first is reverse_bits(index)), and the same map
+// read and written bit-reversed: reverse_bits(sobol_second_dimension(reverse_bits(r))).
 std::uint32_t sobol_second_dimension(std::uint32_t index);
+std::uint32_t reversed_sobol_second_dimension(std::uint32_t reversed_index);
 
 }  // namespace sobol_detail
 
