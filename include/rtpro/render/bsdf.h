@@ -6,13 +6,14 @@
 #include "rtpro/render/conductor_bsdf.h"
 #include "rtpro/render/dielectric_bsdf.h"
 #include "rtpro/render/diffuse_bsdf.h"
+#include "rtpro/render/principled_bsdf.h"
 
 #include <optional>
 #include <variant>
 
 namespace rtpro {
 
-using Bsdf = std::variant<DiffuseBsdf, ConductorBsdf, DielectricBsdf>;
+using Bsdf = std::variant<DiffuseBsdf, ConductorBsdf, DielectricBsdf, PrincipledBsdf>;
 
 // f(wo, wi) without the cosine; 0 for delta BSDFs, whose lobes only sampling can find.
 Color bsdf_eval(const Bsdf& bsdf, const Vec3& wo, const Vec3& wi);
