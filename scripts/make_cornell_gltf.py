@@ -2,7 +2,9 @@
 """Writes scenes/cornell_box.gltf: the Cornell box as one glTF 2.0 file, as a new user would
 write it for any renderer. The measured geometry published by the Cornell Program of Computer
 Graphics (millimetres, the quads of scenes/meshes/cornell_*.obj); Lambertian walls as glTF
-metallic-roughness non-metals at roughness 1 with the RGB reflectances of Mitsuba 3's cbox; the
+metallic-roughness non-metals with the RGB reflectances of Mitsuba 3's cbox and
+KHR_materials_specular's specularFactor 0, which the extension defines as the pure Lambert base
+(a plain glTF non-metal has a GGX specular layer of F0 0.04 over it); the
 ceiling light an emissive quad with KHR_materials_emissive_strength; the camera of the published
 data (at z = -800 looking along +z, 39.3 degrees vertical field of view).
 
@@ -66,16 +68,17 @@ def main():
     materials = []
     for name, (base, emission, strength) in MATERIALS.items():
         m = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": [*base, 1.0], "metallicFactor": 0.0,
-                                                    "roughnessFactor": 1.0}}
+                                                    "roughnessFactor": 1.0},
+             "extensions": {"KHR_materials_specular": {"specularFactor": 0.0}}}
         if emission:
             m["emissiveFactor"] = list(emission)
-            m["extensions"] = {"KHR_materials_emissive_strength": {"emissiveStrength": strength}}
+            m["extensions"]["KHR_materials_emissive_strength"] = {"emissiveStrength": strength}
         materials.append(m)
     # A glTF camera looks along its node's -z: turned half a turn about y it looks along +z.
     nodes.append({"name": "camera", "camera": 0, "translation": [278.0, 273.0, -800.0], "rotation": [0.0, 1.0, 0.0, 0.0]})
     gltf = {
         "asset": {"version": "2.0", "generator": "rtpro scripts/make_cornell_gltf.py"},
-        "extensionsUsed": ["KHR_materials_emissive_strength"],
+        "extensionsUsed": ["KHR_materials_emissive_strength", "KHR_materials_specular"],
         "scene": 0,
         "scenes": [{"nodes": list(range(len(nodes)))}],
         "nodes": nodes,

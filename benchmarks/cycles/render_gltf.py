@@ -9,9 +9,10 @@ rtpro's max_depth counts path vertices after the camera ray (1 is direct light o
 max_bounces counts bounces (0 is direct light only), so Cycles gets MAX_DEPTH - 1.
 
 Materials are rebuilt from the glTF's own values as Lambert (Cycles' Diffuse BSDF at roughness 0)
-plus an Emission shader of emissiveFactor x KHR_materials_emissive_strength: the importer's
-Principled BSDF uses Disney diffuse, ~12% brighter than Lambert on the Cornell box, which is not
-what glTF specifies for a rough non-metal. Only non-metals are supported here (the benchmark's files).
+plus an Emission shader of emissiveFactor x KHR_materials_emissive_strength. Only materials that
+glTF defines as Lambert are accepted: non-metals with KHR_materials_specular's specularFactor 0
+(the pure Lambert base). The importer's Principled BSDF would use Disney diffuse, ~12% brighter
+on the Cornell box.
 Prints one line: "cycles_render_seconds S" (the render call: scene sync, BVH and sampling).
 """
 import json
@@ -38,8 +39,10 @@ for spec in gltf.get("materials", []):
     if material is None:
         continue
     pbr = spec.get("pbrMetallicRoughness", {})
-    if pbr.get("metallicFactor", 1.0) != 0.0:
-        sys.exit("render_gltf.py: only non-metals are mapped (material %s)" % spec.get("name"))
+    specular = spec.get("extensions", {}).get("KHR_materials_specular", {}).get("specularFactor", 1.0)
+    if pbr.get("metallicFactor", 1.0) != 0.0 or specular != 0.0:
+        sys.exit("render_gltf.py: only Lambert materials (non-metals, specularFactor 0) are mapped (material %s)"
+                 % spec.get("name"))
     base = pbr.get("baseColorFactor", [1, 1, 1, 1])
     emission = spec.get("emissiveFactor", [0, 0, 0])
     strength = spec.get("extensions", {}).get("KHR_materials_emissive_strength", {}).get("emissiveStrength", 1.0)

@@ -1,6 +1,7 @@
 #include "rtpro/render/material_bsdf.h"
 
 #include "rtpro/render/microfacet.h"
+#include "rtpro/render/texture.h"
 
 #include <variant>
 
@@ -24,14 +25,47 @@ struct ToBsdf {
   Bsdf operator()(const DielectricSurface& d) const {
     return DielectricBsdf{material.dielectric ? material.dielectric->ior : 1.5f, roughness_to_alpha(d.roughness)};
   }
+  // `color` is the Whitted approximation's; the base colour is the model's own texture.
+  Bsdf operator()(const PrincipledSurface& p) const {
+    PrincipledParameters parameters;
+    parameters.base_color = evaluate(p.base_color, point, textures);
+    parameters.metalness = p.metalness;
+    parameters.roughness = p.roughness;
+    parameters.ior = p.ior;
+    parameters.specular_weight = p.specular_weight;
+    parameters.specular_color = p.specular_color;
+    parameters.transmission_weight = p.transmission_weight;
+    parameters.coat_weight = p.coat_weight;
+    parameters.coat_roughness = p.coat_roughness;
+    parameters.fuzz_color = p.fuzz_color;
+    parameters.fuzz_roughness = p.fuzz_roughness;
+    // KHR_materials_specular's specularFactor 0 on a non-metal without other layers is the pure
+    // Lambert base, by the extension's definition: the same f and pdf from the cheaper kind.
+    if (p.specular_weight == 0.0f && p.metalness == 0.0f && p.transmission_weight == 0.0f && p.coat_weight == 0.0f &&
+        max_component(p.fuzz_color) == 0.0f)
+      return DiffuseBsdf{parameters.base_color};
+    return PrincipledBsdf(parameters);
+  }
+  const SurfacePoint& point;
+  const TextureLookup* textures;
+};
+
+// Whether the BSDF tells the inside from the outside (it transmits): then its frame's +z is the
+// outside rather than the side the ray came from.
+struct NeedsOutwardFrame {
+  bool operator()(const DiffuseBsdf&) const { return false; }
+  bool operator()(const ConductorBsdf&) const { return false; }
+  bool operator()(const DielectricBsdf&) const { return true; }
+  bool operator()(const PrincipledBsdf& p) const { return p.needs_outward_frame(); }
 };
 
 }  // namespace
 
-SurfaceBsdf material_bsdf(const Material& material, const Color& color, const SurfacePoint& point) {
-  Bsdf bsdf = std::visit(ToBsdf{material, color}, material.model);
-  const bool two_sided = !std::holds_alternative<DielectricBsdf>(bsdf);
-  const Vec3 normal = two_sided || point.front_face ? point.shading_normal : -point.shading_normal;
+SurfaceBsdf material_bsdf(const Material& material, const Color& color, const SurfacePoint& point,
+                          const TextureLookup* textures) {
+  Bsdf bsdf = std::visit(ToBsdf{material, color, point, textures}, material.model);
+  const bool outward = std::visit(NeedsOutwardFrame{}, bsdf);
+  const Vec3 normal = !outward || point.front_face ? point.shading_normal : -point.shading_normal;
   return {std::move(bsdf), ShadingFrame::from_normal(normal)};
 }
 

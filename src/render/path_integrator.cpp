@@ -65,7 +65,7 @@ class PathTracer {
       add_emission(path, result, material.emission.radiance, lights_.light_of_hit(hit), sp.position, beta);
 
     const Color color = evaluate(material.color, sp, textures_);
-    const SurfaceBsdf surface = material_bsdf(material, color, sp);
+    const SurfaceBsdf surface = material_bsdf(material, color, sp, textures_);
     const bool delta = bsdf_is_delta(surface.bsdf);
     if (path.bounce == 0) result.primary = {true, color, sp.shading_normal, hit.t * length(ray.dir), sp.object_id};
     bool aov_pending = path.aov_pending;

@@ -6,7 +6,9 @@
 #include "traceable_range_check.h"
 #include "gltf_asset.h"
 #include "gltf_loader.h"
+#include "mtl_parser.h"
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <memory>
@@ -40,7 +42,7 @@ ColorTexture color_texture(const MaterialDesc& m, std::vector<TextureImage>& tex
   return checker;
 }
 
-SurfaceModel surface_model(const MaterialDesc& m) {
+SurfaceModel surface_model(const MaterialDesc& m, std::vector<TextureImage>& textures) {
   switch (m.kind) {
     case MaterialKind::kPhong: return PhongSurface{};
     case MaterialKind::kDiffuse: return DiffuseSurface{};
@@ -48,8 +50,34 @@ SurfaceModel surface_model(const MaterialDesc& m) {
       return ConductorSurface{m.roughness, m.conductor_eta.has_value(), m.conductor_eta.value_or(Color(0.0f)),
                               m.conductor_k.value_or(Color(0.0f))};
     case MaterialKind::kDielectric: return DielectricSurface{m.roughness};
+    case MaterialKind::kPrincipled: {
+      const PrincipledDesc& p = m.principled;
+      return PrincipledSurface{color_texture(m, textures), p.metalness,          m.roughness,     m.ior.value_or(1.5f),
+                               p.specular_weight,          p.specular_color,     p.transmission_weight,
+                               p.coat_weight,              p.coat_roughness,     p.fuzz_color,
+                               p.fuzz_roughness};
+    }
   }
   throw std::logic_error("surface_model: unknown material kind");
+}
+
+// glTF's metallic-roughness model as the Phong highlight and mirror (FORMAT.md, "glTF files"):
+// with F0 = 0.04 + (mean(base) − 0.04) × metallic and gloss = (1 − roughness)², the mirror takes
+// F0 × gloss and the diffuse colour what the mirror leaves; the highlight is the peak of an
+// energy-normalised Phong lobe about as wide as the GGX one.
+MaterialDesc whitted_view_of_principled(const MaterialDesc& m) {
+  MaterialDesc whitted = m;
+  const Color base = m.color;
+  const float metallic = m.principled.metalness, roughness = m.roughness;
+  const float f0 = 0.04f + ((base.x + base.y + base.z) / 3.0f - 0.04f) * metallic;
+  const float gloss = (1.0f - roughness) * (1.0f - roughness);
+  const float alpha4 = std::max(roughness * roughness * roughness * roughness, 1e-6f);
+  const float n = std::clamp(2.0f / alpha4 - 2.0f, 1.0f, 10000.0f);
+  whitted.reflectivity = std::clamp(f0 * gloss, 0.0f, 1.0f);
+  whitted.color = base * (1.0f - whitted.reflectivity);
+  whitted.shininess = n;
+  whitted.specular = std::min(f0 * (n + 2.0f) / 2.0f, 2.0f) * std::min(1.0f, n / kFullHighlightNs);
+  return whitted;
 }
 
 // The Whitted fields of a physically based kind: what the Phong model can show of it, so the
@@ -75,6 +103,13 @@ void approximate_for_whitted(const MaterialDesc& m, Material& material) {
       material.shininess = shininess;
       material.reflectivity = 0.0f;
       return;
+    case MaterialKind::kPrincipled: {
+      const MaterialDesc whitted = whitted_view_of_principled(m);
+      material.specular = whitted.specular;
+      material.shininess = whitted.shininess;
+      material.reflectivity = whitted.reflectivity;
+      return;  // the caller sets the colour, which may be a texture
+    }
   }
 }
 
@@ -104,10 +139,12 @@ class RenderSceneBuilder {
   std::uint32_t add_material(const MaterialDesc& m, const std::string& name) {
     std::optional<Dielectric> dielectric;
     if (m.ior) dielectric = Dielectric{*m.ior, m.transmittance, m.transmittance_distance};
-    Material material{color_texture(m, scene_.textures), m.specular, m.shininess, m.reflectivity, dielectric};
-    material.model = surface_model(m);
+    std::optional<Dielectric> whitted_glass = m.kind == MaterialKind::kPrincipled ? std::nullopt : dielectric;
+    Material material{color_texture(m, scene_.textures), m.specular, m.shininess, m.reflectivity, whitted_glass};
+    material.model = surface_model(m, scene_.textures);
     material.emission = Emission{m.emission, m.emission_two_sided};
     approximate_for_whitted(m, material);
+    if (m.kind == MaterialKind::kPrincipled) material.color = color_texture(whitted_view_of_principled(m), scene_.textures);
     scene_.materials.push_back(std::move(material));
     scene_.material_names.push_back(name);
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);

@@ -27,8 +27,11 @@ namespace {
 // Extensions without which the geometry cannot be read at all.
 constexpr const char* kGeometryExtensions[] = {"KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_mesh_quantization"};
 // Extensions rtpro reads, or can ignore without misreading anything.
-constexpr const char* kKnownExtensions[] = {"KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_texture_transform",
-                                            "KHR_materials_pbrSpecularGlossiness", "KHR_materials_unlit"};
+constexpr const char* kKnownExtensions[] = {"KHR_lights_punctual",         "KHR_materials_emissive_strength",
+                                            "KHR_texture_transform",       "KHR_materials_pbrSpecularGlossiness",
+                                            "KHR_materials_unlit",         "KHR_materials_ior",
+                                            "KHR_materials_specular",      "KHR_materials_transmission",
+                                            "KHR_materials_clearcoat",     "KHR_materials_sheen"};
 
 // Characters of a tinygltf message line shown.
 constexpr std::size_t kMaxTinygltfLine = 300;

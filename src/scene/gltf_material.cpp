@@ -63,6 +63,55 @@ void read_emission(const tinygltf::Material& m, MaterialDesc& desc) {
   desc.emission_two_sided = m.doubleSided;
 }
 
+const tinygltf::Value* extension(const tinygltf::Material& m, const char* name) {
+  const auto found = m.extensions.find(name);
+  return found == m.extensions.end() || !found->second.IsObject() ? nullptr : &found->second;
+}
+
+// A number of an extension object, or `fallback` when absent or not a finite number.
+float number_of(const tinygltf::Value& object, const char* key, float fallback) {
+  const tinygltf::Value& value = object.Get(key);
+  if (!value.IsNumber()) return fallback;
+  const double number = value.GetNumberAsDouble();
+  return std::isfinite(number) ? static_cast<float>(number) : fallback;
+}
+
+Color color_of(const tinygltf::Value& object, const char* key, Color fallback) {
+  const tinygltf::Value& value = object.Get(key);
+  if (!value.IsArray() || value.ArrayLen() != 3) return fallback;
+  Color c;
+  for (int i = 0; i < 3; ++i) {
+    const tinygltf::Value& channel = value.Get(i);
+    if (!channel.IsNumber()) return fallback;
+    c[i] = clamped_unit(channel.GetNumberAsDouble());
+  }
+  return c;
+}
+
+// The material extensions tinygltf hands over, as their specifications define them (values
+// clamped to their ranges); their textures are not read.
+void read_extensions(const tinygltf::Material& m, MaterialDesc& desc) {
+  PrincipledDesc& p = desc.principled;
+  if (const tinygltf::Value* ior = extension(m, "KHR_materials_ior")) {
+    const float value = number_of(*ior, "ior", 1.5f);
+    desc.ior = value >= 1.0f ? std::min(value, 100.0f) : 1.5f;  // 0 (a glTF "infinite" index) is not modelled
+  }
+  if (const tinygltf::Value* specular = extension(m, "KHR_materials_specular")) {
+    p.specular_weight = clamped_unit(number_of(*specular, "specularFactor", 1.0f));
+    p.specular_color = color_of(*specular, "specularColorFactor", Color(1.0f));
+  }
+  if (const tinygltf::Value* transmission = extension(m, "KHR_materials_transmission"))
+    p.transmission_weight = clamped_unit(number_of(*transmission, "transmissionFactor", 0.0f));
+  if (const tinygltf::Value* clearcoat = extension(m, "KHR_materials_clearcoat")) {
+    p.coat_weight = clamped_unit(number_of(*clearcoat, "clearcoatFactor", 0.0f));
+    p.coat_roughness = clamped_unit(number_of(*clearcoat, "clearcoatRoughnessFactor", 0.0f));
+  }
+  if (const tinygltf::Value* sheen = extension(m, "KHR_materials_sheen")) {
+    p.fuzz_color = color_of(*sheen, "sheenColorFactor", Color(0.0f));
+    p.fuzz_roughness = clamped_unit(number_of(*sheen, "sheenRoughnessFactor", 0.0f));
+  }
+}
+
 }  // namespace
 
 MaterialDesc read_material(const tinygltf::Model& model, int index, const std::filesystem::path& file,
@@ -81,17 +130,15 @@ MaterialDesc read_material(const tinygltf::Model& model, int index, const std::f
   if (m.extensions.count("KHR_materials_pbrSpecularGlossiness"))
     warnings.push_back(file.string() + ": " + path + ": KHR_materials_pbrSpecularGlossiness is not read; using the metallic-roughness values");
 
-  const float f0 = 0.04f + ((base.x + base.y + base.z) / 3.0f - 0.04f) * metallic;
-  const float gloss = (1.0f - roughness) * (1.0f - roughness);
-  const float alpha4 = std::max(roughness * roughness * roughness * roughness, 1e-6f);
-  const float n = std::clamp(2.0f / alpha4 - 2.0f, 1.0f, 10000.0f);
-
+  // The path integrator's principled model; the Whitted fields are worked out from it when the
+  // render scene is built (build_render_scene.cpp, whitted_view_of_principled).
   MaterialDesc desc;
   desc.name = m.name.empty() ? path : m.name;
-  desc.reflectivity = std::clamp(f0 * gloss, 0.0f, 1.0f);
-  desc.color = base * (1.0f - desc.reflectivity);
-  desc.shininess = n;
-  desc.specular = std::min(f0 * (n + 2.0f) / 2.0f, 2.0f) * std::min(1.0f, n / kFullHighlightNs);
+  desc.kind = MaterialKind::kPrincipled;
+  desc.color = base;
+  desc.roughness = roughness;
+  desc.principled.metalness = metallic;
+  read_extensions(m, desc);
   desc.opacity = alpha;
   desc.color_texture = texture_path(model, pbr.baseColorTexture.index, file, path + ".pbrMetallicRoughness.baseColorTexture",
                                     warnings, &desc.texture_bytes);

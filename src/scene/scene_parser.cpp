@@ -219,7 +219,8 @@ MaterialKind read_material_kind(const YamlNode& node, const std::string& name) {
   if (text == "diffuse") return MaterialKind::kDiffuse;
   if (text == "conductor") return MaterialKind::kConductor;
   if (text == "dielectric") return MaterialKind::kDielectric;
-  fail_at(node, name + " must be phong, diffuse, conductor or dielectric, got '" + text + "'");
+  if (text == "principled") return MaterialKind::kPrincipled;
+  fail_at(node, name + " must be phong, diffuse, conductor, dielectric or principled, got '" + text + "'");
 }
 
 // The keys a material of `kind` may have besides `type`, colour and emission: each kind names its
@@ -234,6 +235,10 @@ std::vector<std::string_view> material_keys(MaterialKind kind) {
     case MaterialKind::kDiffuse: break;
     case MaterialKind::kConductor: add({"roughness", "eta", "k"}); break;
     case MaterialKind::kDielectric: add({"roughness", "ior", "transmittance", "transmittance_distance"}); break;
+    case MaterialKind::kPrincipled:
+      add({"roughness", "ior", "metalness", "specular_weight", "specular_color", "transmission_weight", "coat_weight",
+           "coat_roughness", "fuzz_color", "fuzz_roughness"});
+      break;
   }
   return keys;
 }
@@ -288,6 +293,31 @@ void read_microfacet_keys(const MappingReader& material, MaterialDesc& desc) {
   }
 }
 
+// A principled material's weights and colours, each from 0 to 1.
+void read_principled_keys(const MappingReader& material, MaterialDesc& desc) {
+  PrincipledDesc& p = desc.principled;
+  const auto unit = [&](const char* key, float& value) {
+    const YamlNode* node = material.optional(key);
+    if (!node) return;
+    value = read_non_negative(*node, material.field(key));
+    if (value > 1.0f) fail_at(*node, material.field(key) + " must be from 0 to 1, got " + std::string(node->scalar()));
+  };
+  const auto unit_color = [&](const char* key, Color& value) {
+    const YamlNode* node = material.optional(key);
+    if (!node) return;
+    value = read_color(*node, material.field(key));
+    if (max_component(value) > 1.0f) fail_at(*node, material.field(key) + " must be from 0 to 1 in each channel");
+  };
+  unit("metalness", p.metalness);
+  unit("specular_weight", p.specular_weight);
+  unit_color("specular_color", p.specular_color);
+  unit("transmission_weight", p.transmission_weight);
+  unit("coat_weight", p.coat_weight);
+  unit("coat_roughness", p.coat_roughness);
+  unit_color("fuzz_color", p.fuzz_color);
+  unit("fuzz_roughness", p.fuzz_roughness);
+}
+
 MaterialDesc read_material(const std::string& name, const YamlNode& node, const std::filesystem::path& folder) {
   if (!node.is_mapping())
     fail_at(node, "material '" + name + "': expected a mapping such as {type: diffuse, color: [0.8, 0.8, 0.8]}, got " +
@@ -298,7 +328,10 @@ MaterialDesc read_material(const std::string& name, const YamlNode& node, const 
   const std::vector<std::string_view> keys = material_keys(desc.kind);
   const MappingReader material(node, "material '" + name + "'", keys);
   read_emission(material, desc);
+  // glTF's default roughness is 1 and OpenPBR's 0.3; a principled material without one is in between.
+  if (desc.kind == MaterialKind::kPrincipled) desc.roughness = 0.5f;
   read_microfacet_keys(material, desc);
+  if (desc.kind == MaterialKind::kPrincipled) read_principled_keys(material, desc);
   if (const YamlNode* color = material.optional("color")) {
     if (color->is_mapping() && color->find("texture")) {
       read_image_texture(*color, material.field("color"), folder, desc);
@@ -317,7 +350,7 @@ MaterialDesc read_material(const std::string& name, const YamlNode& node, const 
     if (desc.reflectivity > 1.0f)
       fail_at(*reflectivity, material.field("reflectivity") + " must be from 0 to 1, got " + std::string(reflectivity->scalar()));
   }
-  if (desc.kind == MaterialKind::kDielectric) desc.ior = 1.5f;
+  if (desc.kind == MaterialKind::kDielectric || desc.kind == MaterialKind::kPrincipled) desc.ior = 1.5f;
   if (const YamlNode* ior = material.optional("ior")) {
     const double index = read_number(*ior, material.field("ior"));
     if (!(index > 0.0) || !(index <= 100.0))

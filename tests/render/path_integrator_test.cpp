@@ -188,6 +188,20 @@ TEST_P(PathIntegrator, FurnaceHidesAPerfectRoughConductorWithEnergyCompensation)
   }
 }
 
+// The glTF model keeps energy the way its layers are scaled (albedo scaling under the specular
+// layer, the coat and the fuzz; Kulla–Conty in the metal): a white sphere of it vanishes in the
+// furnace, whatever its roughness, metalness, coat or transmission.
+TEST_P(PathIntegrator, FurnaceHidesWhitePrincipledSpheres) {
+  for (const char* material :
+       {"{type: principled, color: [1, 1, 1], roughness: 0.5}", "{type: principled, color: [1, 1, 1], roughness: 0}",
+        "{type: principled, color: [1, 1, 1], metalness: 1, roughness: 0.6}",
+        "{type: principled, color: [1, 1, 1], roughness: 0.4, coat_weight: 1, coat_roughness: 0.1}",
+        "{type: principled, color: [1, 1, 1], transmission_weight: 1, roughness: 0}"}) {
+    const ImageStats s = stats_of(render(scene_from(furnace(material)), GetParam()));
+    EXPECT_NEAR(s.mean, 1.0, 0.02) << material;
+  }
+}
+
 // Small and large lights of every kind over rough and smooth surfaces: light sampling alone,
 // BSDF sampling alone and MIS estimate the same image. Each region's mean over independent seeds
 // must agree within 3 standard errors.

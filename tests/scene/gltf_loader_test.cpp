@@ -3,10 +3,14 @@
 #include "gltf_loader.h"
 #include "gltf_test_files.h"
 #include "mtl_parser.h"
+#include "rtpro/scene/build_render_scene.h"
+#include "rtpro/scene/scene_parser.h"
+#include "test_paths.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -81,28 +85,66 @@ TEST(GltfLoader, LinesAreSkippedWithAWarningNamingThePrimitive) {
   EXPECT_NE(asset.stats.warnings[0].find("meshes[0].primitives[0].mode: 1 (LINES) skipped"), std::string::npos);
 }
 
-TEST(GltfLoader, MaterialsMapOntoPhongAndMirror) {
+TEST(GltfLoader, MaterialsAreThePrincipledModelWithAPhongAndMirrorViewForWhitted) {
   GltfFile gltf;
+  gltf.json["extensionsUsed"] = {"KHR_materials_ior", "KHR_materials_clearcoat", "KHR_materials_sheen",
+                                 "KHR_materials_specular", "KHR_materials_transmission"};
   gltf.json["materials"] = {
       {{"name", "chrome"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 0.9, 0.9, 1}}, {"metallicFactor", 1}, {"roughnessFactor", 0}}}},
-      {{"name", "clay"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.4, 0.2, 0.5}}, {"metallicFactor", 0}, {"roughnessFactor", 1}, {"baseColorTexture", {{"index", 0}}}}}}};
+      {{"name", "clay"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.4, 0.2, 0.5}}, {"metallicFactor", 0}, {"roughnessFactor", 1}, {"baseColorTexture", {{"index", 0}}}}}},
+      {{"name", "coated"},
+       {"extensions",
+        {{"KHR_materials_ior", {{"ior", 1.33}}},
+         {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.7}, {"clearcoatRoughnessFactor", 0.2}}},
+         {"KHR_materials_sheen", {{"sheenColorFactor", {0.5, 0.25, 1.5}}, {"sheenRoughnessFactor", 0.3}}},
+         {"KHR_materials_specular", {{"specularFactor", 0.5}, {"specularColorFactor", {1, 0.5, 0.25}}}},
+         {"KHR_materials_transmission", {{"transmissionFactor", 0.25}}}}}}};
   gltf.json["textures"] = {{{"source", 0}}};
   gltf.json["images"] = {{{"uri", "textures/clay.png"}}};
   gltf.scene({gltf.node({{"mesh", gltf.mesh(gltf.floats(kTriangle, "VEC3"))}})});
-  const GltfAsset asset = load_gltf_file(gltf.write("materials"));
-  ASSERT_EQ(asset.materials.size(), 2u);
+  const std::filesystem::path file = gltf.write("materials");
+  std::filesystem::create_directories(file.parent_path() / "textures");
+  std::filesystem::copy_file(test::source_dir() / "scenes" / "textures" / "uv_grid.png",
+                             file.parent_path() / "textures" / "clay.png", std::filesystem::copy_options::overwrite_existing);
+  const GltfAsset asset = load_gltf_file(file);
+  ASSERT_EQ(asset.materials.size(), 3u);
   const MaterialDesc& chrome = asset.materials[0];
-  EXPECT_NEAR(chrome.reflectivity, 0.9f, 1e-6f);
-  EXPECT_NEAR(chrome.color.x, 0.09f, 1e-6f);
-  EXPECT_EQ(chrome.shininess, 10000.0f);
+  EXPECT_EQ(chrome.kind, MaterialKind::kPrincipled);
+  EXPECT_EQ(chrome.color, Color(0.9f, 0.9f, 0.9f));
+  EXPECT_EQ(chrome.principled.metalness, 1.0f);
+  EXPECT_EQ(chrome.roughness, 0.0f);
   const MaterialDesc& clay = asset.materials[1];
-  EXPECT_EQ(clay.reflectivity, 0.0f);  // rough: no mirror
   EXPECT_EQ(clay.color, Color(0.8f, 0.4f, 0.2f));
-  EXPECT_EQ(clay.shininess, 1.0f);
-  EXPECT_EQ(clay.specular, 0.04f * 1.5f / kFullHighlightNs);
   EXPECT_EQ(clay.opacity, 0.5f);
   EXPECT_EQ(clay.color_texture.filename(), "clay.png");
   EXPECT_EQ(clay.color_texture.parent_path().filename(), "textures");
+  const PrincipledDesc& coated = asset.materials[2].principled;
+  EXPECT_FLOAT_EQ(*asset.materials[2].ior, 1.33f);
+  EXPECT_FLOAT_EQ(coated.coat_weight, 0.7f);
+  EXPECT_FLOAT_EQ(coated.coat_roughness, 0.2f);
+  EXPECT_EQ(coated.fuzz_color, Color(0.5f, 0.25f, 1.0f));  // clamped to 1
+  EXPECT_FLOAT_EQ(coated.fuzz_roughness, 0.3f);
+  EXPECT_FLOAT_EQ(coated.specular_weight, 0.5f);
+  EXPECT_EQ(coated.specular_color, Color(1.0f, 0.5f, 0.25f));
+  EXPECT_FLOAT_EQ(coated.transmission_weight, 0.25f);
+  for (const std::string& warning : asset.stats.warnings) ADD_FAILURE() << warning;  // every extension is read
+
+  // The Whitted view (FORMAT.md, "glTF files"): a polished metal mirrors, a rough one does not.
+  const RenderScene scene = build_render_scene(parse_scene_file(file));
+  const auto material = [&](const std::string& name) -> const Material& {
+    for (std::size_t i = 0; i < scene.material_names.size(); ++i)
+      if (scene.material_names[i].ends_with(":" + name)) return scene.materials[i];
+    ADD_FAILURE() << "no material " << name;
+    return scene.materials[0];
+  };
+  EXPECT_NEAR(material("chrome").reflectivity, 0.9f, 1e-6f);
+  EXPECT_NEAR(std::get<Color>(material("chrome").color).x, 0.09f, 1e-6f);
+  EXPECT_EQ(material("chrome").shininess, 10000.0f);
+  EXPECT_EQ(material("clay").reflectivity, 0.0f);  // rough: no mirror
+  EXPECT_EQ(std::get<ImageTexture>(material("clay").color).tint, Color(0.8f, 0.4f, 0.2f));
+  EXPECT_EQ(material("clay").shininess, 1.0f);
+  EXPECT_EQ(material("clay").specular, 0.04f * 1.5f / kFullHighlightNs);
+  EXPECT_TRUE(std::holds_alternative<PrincipledSurface>(material("clay").model));
 }
 
 // Hostile and broken files: each refused with the JSON path of the element at fault.

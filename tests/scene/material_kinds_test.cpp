@@ -68,6 +68,31 @@ TEST(MaterialKinds, TheRenderSceneCarriesTheModelAndAWhittedApproximation) {
   EXPECT_FALSE(scene.materials[0].emission.emits());
 }
 
+TEST(MaterialKinds, PrincipledReadsTheGltfModelsParameters) {
+  const SceneDescription d = parse(R"(materials:
+  car_paint: {type: principled, color: [0.6, 0.05, 0.05], metalness: 0.2, roughness: 0.4, coat_weight: 1, coat_roughness: 0.05}
+  velvet: {type: principled, fuzz_color: [1, 0.5, 0.5], fuzz_roughness: 0.3, specular_weight: 0}
+  glass: {type: principled, transmission_weight: 1, roughness: 0, ior: 1.45, specular_color: [1, 0.9, 0.8]}
+)");
+  const MaterialDesc& paint = d.materials[1];
+  EXPECT_EQ(paint.kind, MaterialKind::kPrincipled);
+  EXPECT_FLOAT_EQ(paint.principled.metalness, 0.2f);
+  EXPECT_FLOAT_EQ(paint.roughness, 0.4f);
+  EXPECT_FLOAT_EQ(paint.principled.coat_weight, 1.0f);
+  EXPECT_FLOAT_EQ(d.materials[2].roughness, 0.5f);  // the principled default
+  EXPECT_EQ(d.materials[2].principled.fuzz_color, Color(1.0f, 0.5f, 0.5f));
+  EXPECT_FLOAT_EQ(d.materials[2].principled.specular_weight, 0.0f);
+  EXPECT_FLOAT_EQ(*d.materials[3].ior, 1.45f);
+  EXPECT_FLOAT_EQ(d.materials[3].principled.transmission_weight, 1.0f);
+  const RenderScene scene = build_render_scene(d);
+  const auto& model = std::get<PrincipledSurface>(scene.materials[3].model);
+  EXPECT_FLOAT_EQ(model.ior, 1.45f);
+  EXPECT_FALSE(scene.materials[3].dielectric);  // no Whitted glass: its transmission is the model's own
+  EXPECT_NE(error_of("materials:\n  m: {type: principled, metalness: 2}\n").find("from 0 to 1"), std::string::npos);
+  EXPECT_NE(error_of("materials:\n  m: {type: principled, eta: [1, 1, 1], k: [1, 1, 1]}\n").find("unknown key 'eta'"),
+            std::string::npos);
+}
+
 TEST(MaterialKinds, AKeyOfAnotherKindIsAnErrorAtItsPosition) {
   const std::string error = error_of("materials:\n  gold: {type: conductor, reflectivity: 0.5}\n");
   EXPECT_NE(error.find("test.yaml:4:"), std::string::npos) << error;
@@ -75,7 +100,7 @@ TEST(MaterialKinds, AKeyOfAnotherKindIsAnErrorAtItsPosition) {
 }
 
 TEST(MaterialKinds, BadValuesAreErrors) {
-  EXPECT_NE(error_of("materials:\n  m: {type: metal}\n").find("must be phong, diffuse, conductor or dielectric"),
+  EXPECT_NE(error_of("materials:\n  m: {type: metal}\n").find("must be phong, diffuse, conductor, dielectric or principled"),
             std::string::npos);
   EXPECT_NE(error_of("materials:\n  m: {type: conductor, roughness: 1.5}\n").find("from 0 (smooth) to 1"),
             std::string::npos);

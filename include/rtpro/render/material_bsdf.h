@@ -1,6 +1,7 @@
 #pragma once
 // A material's BSDF at a shading point, and the frame it is evaluated in: each surface kind of
 // the scene (SurfaceModel) maps to one BSDF kind here, exhaustively.
+#include "rtpro/image/texture_lookup.h"
 #include "rtpro/render/bsdf.h"
 #include "rtpro/render/shading_frame.h"
 #include "rtpro/render/surface.h"
@@ -16,7 +17,9 @@ struct SurfaceBsdf {
   ShadingFrame frame;
 };
 
-// `color`: the material's colour texture evaluated at the point.
-SurfaceBsdf material_bsdf(const Material& material, const Color& color, const SurfacePoint& point);
+// `color`: the material's colour texture evaluated at the point; `textures` (the scene's image
+// textures, opened) for the textures a model holds of its own.
+SurfaceBsdf material_bsdf(const Material& material, const Color& color, const SurfacePoint& point,
+                          const TextureLookup* textures);
 
 }  // namespace rtpro

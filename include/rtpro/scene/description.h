@@ -44,7 +44,20 @@ struct CheckerDesc {
 
 // What kind of surface a material is (`type:` in the scene file). `phong` is the Whitted model
 // (colour, highlight, mirror reflectivity, glass with an ior); the others are physically based.
-enum class MaterialKind : std::uint8_t { kPhong, kDiffuse, kConductor, kDielectric };
+enum class MaterialKind : std::uint8_t { kPhong, kDiffuse, kConductor, kDielectric, kPrincipled };
+
+// The glTF 2.0 metallic-roughness model and its extensions, with OpenPBR's names where one exists
+// (`color` is the base colour, `roughness` and `ior` are MaterialDesc's own).
+struct PrincipledDesc {
+  float metalness = 0.0f;            // glTF metallicFactor
+  float specular_weight = 1.0f;      // KHR_materials_specular specularFactor
+  Color specular_color{1.0f};        // KHR_materials_specular specularColorFactor
+  float transmission_weight = 0.0f;  // KHR_materials_transmission transmissionFactor
+  float coat_weight = 0.0f;          // KHR_materials_clearcoat clearcoatFactor
+  float coat_roughness = 0.0f;       // KHR_materials_clearcoat clearcoatRoughnessFactor
+  Color fuzz_color{0.0f};            // KHR_materials_sheen sheenColorFactor
+  float fuzz_roughness = 0.0f;       // KHR_materials_sheen sheenRoughnessFactor
+};
 
 struct MaterialDesc {
   std::string name;
@@ -59,6 +72,7 @@ struct MaterialDesc {
   // points to; a sphere's outside) or on both. Lights the scene under the path integrator.
   Color emission{0.0f};
   bool emission_two_sided = false;
+  PrincipledDesc principled;  // kind principled only
   Color color{0.8f, 0.8f, 0.8f};  // diffuse (and ambient) colour
   std::optional<CheckerDesc> checker;  // when set, the diffuse colour instead of `color`
   // Glass: an index of refraction makes the material a smooth dielectric (Fresnel-weighted

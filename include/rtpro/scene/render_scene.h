@@ -109,7 +109,20 @@ struct ConductorSurface {
 struct DielectricSurface {
   float roughness;  // index and absorption in Material::dielectric
 };
-using SurfaceModel = std::variant<PhongSurface, DiffuseSurface, ConductorSurface, DielectricSurface>;
+// The glTF 2.0 metallic-roughness model (render/principled_bsdf.h). Its base colour is its own
+// (Material::color holds the Whitted approximation's diffuse colour); index of refraction 1.5 unless
+// Material::dielectric says otherwise.
+struct PrincipledSurface {
+  ColorTexture base_color;
+  float metalness, roughness, ior;
+  float specular_weight;
+  Color specular_color;
+  float transmission_weight;
+  float coat_weight, coat_roughness;
+  Color fuzz_color;
+  float fuzz_roughness;
+};
+using SurfaceModel = std::variant<PhongSurface, DiffuseSurface, ConductorSurface, DielectricSurface, PrincipledSurface>;
 
 // Radiance a surface emits: from its front side (where its normal points; a sphere's outside) or
 // from both.
