@@ -36,15 +36,14 @@ constexpr std::array<std::uint32_t, 32> second_dimension_directions() {
 // bits set in v, for byte b of the input. Four lookups instead of up to 32 conditional xors (the
 // scrambled indices have high bits set).
 using ByteTables = std::array<std::array<std::uint32_t, 256>, 4>;
-template <class Image>
-constexpr ByteTables byte_tables(Image image_of_bit) {
+using BitImages = std::array<std::uint32_t, 32>;  // the image of each input bit
+constexpr ByteTables byte_tables(const BitImages& image_of_bit) {
   ByteTables tables{};
-  for (int byte = 0; byte < 4; ++byte)
-    for (int value = 0; value < 256; ++value) {
-      std::uint32_t x = 0;
-      for (int bit = 0; bit < 8; ++bit)
-        if (value >> bit & 1) x ^= image_of_bit(byte * 8 + bit);
-      tables[static_cast<std::size_t>(byte)][static_cast<std::size_t>(value)] = x;
+  for (std::size_t byte = 0; byte < 4; ++byte)
+    for (std::size_t value = 1; value < 256; ++value) {
+      // The value without its lowest set bit is already in the table.
+      const std::size_t lowest = static_cast<std::size_t>(__builtin_ctz(static_cast<unsigned>(value)));
+      tables[byte][value] = tables[byte][value & (value - 1)] ^ image_of_bit[byte * 8 + lowest];
     }
   return tables;
 }
@@ -59,12 +58,17 @@ constexpr std::uint32_t reversed(std::uint32_t x) {
   return r;
 }
 
-constexpr ByteTables kSecondDimension =
-    byte_tables([](int bit) { return second_dimension_directions()[static_cast<std::size_t>(bit)]; });
 // The second dimension read and written bit-reversed: reverse ∘ sobol ∘ reverse, the form the
 // scrambles below take it in. Bit b of the input is bit 31 − b of the index.
-constexpr ByteTables kSecondDimensionReversed =
-    byte_tables([](int bit) { return reversed(second_dimension_directions()[static_cast<std::size_t>(31 - bit)]); });
+constexpr BitImages reversed_directions() {
+  const BitImages directions = second_dimension_directions();
+  BitImages images{};
+  for (std::size_t bit = 0; bit < 32; ++bit) images[bit] = reversed(directions[31 - bit]);
+  return images;
+}
+
+constexpr ByteTables kSecondDimension = byte_tables(second_dimension_directions());
+constexpr ByteTables kSecondDimensionReversed = byte_tables(reversed_directions());
 
 }  // namespace
 
