@@ -1,6 +1,7 @@
 #include "rtpro/render/light_set.h"
 
 #include "rtpro/render/light_sample.h"
+#include "rtpro/render/shading_frame.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,15 +16,6 @@ constexpr float kPi = std::numbers::pi_v<float>;
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 float average(const Color& c) { return (c.x + c.y + c.z) * (1.0f / 3.0f); }
-
-// An orthonormal frame around unit `w` (Duff et al. 2017, branch-free).
-void frame_around(const Vec3& w, Vec3& t1, Vec3& t2) {
-  const float sign = std::copysign(1.0f, w.z);
-  const float a = -1.0f / (sign + w.z);
-  const float b = w.x * w.y * a;
-  t1 = Vec3(1.0f + sign * w.x * w.x * a, sign * b, -sign * w.x);
-  t2 = Vec3(b, sign + w.y * w.y * a, -w.y);
-}
 
 // What the pick distribution weighs each light by: the power it emits (the average of its
 // channels). A directional light delivers its irradiance over the disk the scene fills.
@@ -78,10 +70,9 @@ SphereSample sample_sphere(const Vec3& center, float radius, const Vec3& from, S
     const float sin_theta = std::sqrt(std::max(0.0f, one_minus_cos * (2.0f - one_minus_cos)));
     const float phi = 2.0f * kPi * u.y;
     const Vec3 w = to_center / d;
-    Vec3 t1, t2;
-    frame_around(w, t1, t2);
+    const ShadingFrame frame = ShadingFrame::from_normal(w);
     const Vec3 direction =
-        normalize(t1 * (std::cos(phi) * sin_theta) + t2 * (std::sin(phi) * sin_theta) + w * cos_theta);
+        normalize(frame.s * (std::cos(phi) * sin_theta) + frame.t * (std::sin(phi) * sin_theta) + w * cos_theta);
     const float b = d * cos_theta;
     const float distance = b - std::sqrt(std::max(0.0f, r2 - d2 * sin_theta * sin_theta));
     const Vec3 point = from + direction * distance;

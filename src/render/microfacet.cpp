@@ -1,5 +1,7 @@
 #include "rtpro/render/microfacet.h"
 
+#include "table_coordinate.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -87,17 +89,7 @@ const AlbedoTable& albedo_table() {
   return table;
 }
 
-struct TableCoordinate {
-  int index;
-  float fraction;
-};
-
-// Where √x falls between the nodes.
-TableCoordinate table_coordinate(float x) {
-  const float scaled = std::sqrt(std::clamp(x, 0.0f, 1.0f)) * (kTableSize - 1);
-  const int index = std::min(static_cast<int>(scaled), kTableSize - 2);
-  return {index, scaled - static_cast<float>(index)};
-}
+TableCoordinate table_coordinate(float x) { return sqrt_spaced_coordinate(x, kTableSize); }
 
 float lerp(float t, float a, float b) { return (1.0f - t) * a + t * b; }
 

@@ -1,5 +1,7 @@
 #include "rtpro/render/sheen.h"
 
+#include "table_coordinate.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -68,16 +70,7 @@ std::array<double, kQuadrature> row_integrals(const CharlieSheen& sheen, float m
 
 float lerp(float t, float a, float b) { return (1.0f - t) * a + t * b; }
 
-struct TableCoordinate {
-  int index;
-  float fraction;
-};
-
-TableCoordinate mu_coordinate(float mu) {
-  const float scaled = std::sqrt(std::clamp(mu, 0.0f, 1.0f)) * (kMuNodes - 1);
-  const int index = std::min(static_cast<int>(scaled), kMuNodes - 2);
-  return {index, scaled - static_cast<float>(index)};
-}
+TableCoordinate mu_coordinate(float mu) { return sqrt_spaced_coordinate(mu, kMuNodes); }
 
 // Below kMinRoughness the lobe is the one at kMinRoughness, so the nodes start there.
 float roughness_node(int r) {

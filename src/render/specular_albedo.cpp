@@ -1,5 +1,7 @@
 #include "rtpro/render/specular_albedo.h"
 
+#include "table_coordinate.h"
+
 #include "rtpro/render/microfacet.h"
 
 #include <algorithm>
@@ -96,16 +98,7 @@ const Tables& tables() {
   return built;
 }
 
-struct TableCoordinate {
-  int index;
-  float fraction;
-};
-
-TableCoordinate table_coordinate(float x) {
-  const float scaled = std::sqrt(std::clamp(x, 0.0f, 1.0f)) * (kTableSize - 1);
-  const int index = std::min(static_cast<int>(scaled), kTableSize - 2);
-  return {index, scaled - static_cast<float>(index)};
-}
+TableCoordinate table_coordinate(float x) { return sqrt_spaced_coordinate(x, kTableSize); }
 
 Node lerp(float t, const Node& a, const Node& b) {
   return {(1.0f - t) * a.e1 + t * b.e1, (1.0f - t) * a.e5 + t * b.e5};
