@@ -18,11 +18,7 @@ spp=${SPP:-64}
 max_depth=${MAX_DEPTH:-8}
 ref_spp=${REF_SPP:-1024}
 
-if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTPRO_BUILD_TESTS=OFF >/dev/null
-fi
-grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$build/CMakeCache.txt" || { echo "$build is not a Release tree" >&2; exit 2; }
-cmake --build "$build" --target rtpro >/dev/null
+build_release_rtpro
 
 out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-cycles.XXXXXX")
 cycles() {  # OUT.exr SPP THREADS LOG

@@ -13,11 +13,7 @@ source "$(dirname "$0")/options.sh"
 command -v pathtracer >/dev/null || { echo "pathtracer not found: apt-get install embree-tools" >&2; exit 2; }
 models=/usr/share/doc/embree3/models
 frames=${FRAMES:-10}
-if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTPRO_BUILD_TESTS=OFF >/dev/null
-fi
-grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$build/CMakeCache.txt" || { echo "$build is not a Release tree" >&2; exit 2; }
-cmake --build "$build" --target rtpro >/dev/null
+build_release_rtpro
 
 out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-embree-pt.XXXXXX")
 for t in $threads; do

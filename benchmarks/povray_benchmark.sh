@@ -12,12 +12,7 @@ set -euo pipefail
 source "$(dirname "$0")/options.sh"
 command -v povray >/dev/null || { echo "povray not found: apt-get install povray (Debian package, 3.7)" >&2; exit 2; }
 
-if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTPRO_BUILD_TESTS=OFF >/dev/null
-fi
-grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$build/CMakeCache.txt" ||
-  { echo "$build is not a Release tree" >&2; exit 2; }
-cmake --build "$build" --target rtpro >/dev/null
+build_release_rtpro
 
 out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-povray.XXXXXX")
 # name | rtpro scene | size | spp | max depth: the values the committed .pov/.ini were made with
