@@ -66,7 +66,9 @@ SurfaceBsdf material_bsdf(const Material& material, const Color& color, const Su
   Bsdf bsdf = std::visit(ToBsdf{material, color, point, textures}, material.model);
   const bool outward = std::visit(NeedsOutwardFrame{}, bsdf);
   const Vec3 normal = !outward || point.front_face ? point.shading_normal : -point.shading_normal;
-  return {std::move(bsdf), ShadingFrame::from_normal(normal)};
+  const auto* principled = std::get_if<PrincipledSurface>(&material.model);
+  const Color albedo = principled ? evaluate(principled->base_color, point, textures) : color;
+  return {std::move(bsdf), ShadingFrame::from_normal(normal), albedo};
 }
 
 }  // namespace rtpro

@@ -67,10 +67,11 @@ class PathTracer {
     const Color color = evaluate(material.color, sp, textures_);
     const SurfaceBsdf surface = material_bsdf(material, color, sp, textures_);
     const bool delta = bsdf_is_delta(surface.bsdf);
-    if (path.bounce == 0) result.primary = {true, color, sp.shading_normal, hit.t * length(ray.dir), sp.object_id};
+    if (path.bounce == 0)
+      result.primary = {true, surface.albedo, sp.shading_normal, hit.t * length(ray.dir), sp.object_id};
     bool aov_pending = path.aov_pending;
     if (aov_pending && !delta) {
-      result.primary.albedo = color;
+      result.primary.albedo = surface.albedo;
       result.primary.normal = sp.shading_normal;
       aov_pending = false;
     }

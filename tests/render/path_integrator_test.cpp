@@ -279,6 +279,31 @@ TEST_P(PathIntegrator, ImageIsIndependentOfThreadsAndTiles) {
   EXPECT_EQ(std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)), 0);
 }
 
+// The albedo and normal AOVs come from the first surface that is not a mirror: through a smooth
+// glass sphere, from what lies behind it; on a principled surface its base colour (not the
+// Whitted view's diffuse colour, which a glossy highlight darkens).
+TEST_P(PathIntegrator, AlbedoAovIsTheFirstNonSpecularSurfacesBaseColour) {
+  const RenderScene scene = scene_from(R"(
+rtpro: 1
+camera: {position: [0, 0, -5], look_at: [0, 0, 0], fov: 10, resolution: [4, 4]}
+render: {spp: 4, max_depth: 4, integrator: path, background: [1, 1, 1]}
+materials:
+  glass: {type: dielectric, ior: 1.0001}
+  paint: {type: principled, color: [0.2, 0.4, 0.6], roughness: 0}
+world:
+  - {type: sphere, center: [0, 0, 0], radius: 3, material: glass}
+  - {type: sphere, center: [0, 0, 50], radius: 30, material: paint}
+)");
+  const auto backend = make_backend(GetParam(), scene, {});
+  RenderOptions options;
+  options.aovs = {Aov::kAlbedo};
+  const Image image = render_image(scene, *backend, options).image;
+  ASSERT_EQ(image.channel_count(), 6);
+  EXPECT_NEAR(image.at(2, 2, 3), 0.2f, 1e-6f);
+  EXPECT_NEAR(image.at(2, 2, 4), 0.4f, 1e-6f);
+  EXPECT_NEAR(image.at(2, 2, 5), 0.6f, 1e-6f);
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, PathIntegrator, ::testing::Values(BackendKind::kNative, BackendKind::kEmbree),
                          [](const auto& info) { return std::string(backend_name(info.param)); });
 

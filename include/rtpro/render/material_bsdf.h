@@ -15,6 +15,7 @@ struct SurfaceBsdf {
   // inside; on the outside (the side the primitive's normal points to) for dielectrics, whose
   // BSDF tells entering from leaving.
   ShadingFrame frame;
+  Color albedo;  // what the albedo AOV shows: the base colour of the model at the point
 };
 
 // `color`: the material's colour texture evaluated at the point; `textures` (the scene's image
