@@ -9,24 +9,39 @@ namespace rtpro {
 
 namespace {
 
+// Each kind's BSDF and the albedo its AOV shows, evaluating only the colour textures it reads.
 struct ToBsdf {
   const Material& material;
-  const Color& color;
+  const SurfacePoint& point;
+  const TextureLookup* textures;
 
-  Bsdf operator()(const PhongSurface&) const {
-    if (material.dielectric) return DielectricBsdf{material.dielectric->ior, 0.0f};
-    return DiffuseBsdf{color};
+  struct Result {
+    Bsdf bsdf;
+    Color albedo;
+  };
+  Color color() const { return evaluate(material.color, point, textures); }
+
+  Result operator()(const PhongSurface&) const {
+    const Color c = color();
+    if (material.dielectric) return {DielectricBsdf{material.dielectric->ior, 0.0f}, c};
+    return {DiffuseBsdf{c}, c};
   }
-  Bsdf operator()(const DiffuseSurface&) const { return DiffuseBsdf{color}; }
-  Bsdf operator()(const ConductorSurface& c) const {
-    const float alpha = roughness_to_alpha(c.roughness);
-    return c.has_complex_ior ? ConductorBsdf::from_complex_ior(c.eta, c.k, alpha) : ConductorBsdf::from_f0(color, alpha);
+  Result operator()(const DiffuseSurface&) const {
+    const Color c = color();
+    return {DiffuseBsdf{c}, c};
   }
-  Bsdf operator()(const DielectricSurface& d) const {
-    return DielectricBsdf{material.dielectric ? material.dielectric->ior : 1.5f, roughness_to_alpha(d.roughness)};
+  Result operator()(const ConductorSurface& conductor) const {
+    const float alpha = roughness_to_alpha(conductor.roughness);
+    const Color c = color();
+    if (conductor.has_complex_ior) return {ConductorBsdf::from_complex_ior(conductor.eta, conductor.k, alpha), c};
+    return {ConductorBsdf::from_f0(c, alpha), c};
   }
-  // `color` is the Whitted approximation's; the base colour is the model's own texture.
-  Bsdf operator()(const PrincipledSurface& p) const {
+  Result operator()(const DielectricSurface& d) const {
+    return {DielectricBsdf{material.dielectric ? material.dielectric->ior : 1.5f, roughness_to_alpha(d.roughness)},
+            color()};
+  }
+  // Material::color is the Whitted view's; the model's base colour is its own texture.
+  Result operator()(const PrincipledSurface& p) const {
     PrincipledParameters parameters;
     parameters.base_color = evaluate(p.base_color, point, textures);
     parameters.metalness = p.metalness;
@@ -43,11 +58,9 @@ struct ToBsdf {
     // Lambert base, by the extension's definition: the same f and pdf from the cheaper kind.
     if (p.specular_weight == 0.0f && p.metalness == 0.0f && p.transmission_weight == 0.0f && p.coat_weight == 0.0f &&
         max_component(p.fuzz_color) == 0.0f)
-      return DiffuseBsdf{parameters.base_color};
-    return PrincipledBsdf(parameters);
+      return {DiffuseBsdf{parameters.base_color}, parameters.base_color};
+    return {PrincipledBsdf(parameters), parameters.base_color};
   }
-  const SurfacePoint& point;
-  const TextureLookup* textures;
 };
 
 // Whether the BSDF tells the inside from the outside (it transmits): then its frame's +z is the
@@ -61,14 +74,11 @@ struct NeedsOutwardFrame {
 
 }  // namespace
 
-SurfaceBsdf material_bsdf(const Material& material, const Color& color, const SurfacePoint& point,
-                          const TextureLookup* textures) {
-  Bsdf bsdf = std::visit(ToBsdf{material, color, point, textures}, material.model);
-  const bool outward = std::visit(NeedsOutwardFrame{}, bsdf);
+SurfaceBsdf material_bsdf(const Material& material, const SurfacePoint& point, const TextureLookup* textures) {
+  ToBsdf::Result made = std::visit(ToBsdf{material, point, textures}, material.model);
+  const bool outward = std::visit(NeedsOutwardFrame{}, made.bsdf);
   const Vec3 normal = !outward || point.front_face ? point.shading_normal : -point.shading_normal;
-  const auto* principled = std::get_if<PrincipledSurface>(&material.model);
-  const Color albedo = principled ? evaluate(principled->base_color, point, textures) : color;
-  return {std::move(bsdf), ShadingFrame::from_normal(normal), albedo};
+  return {std::move(made.bsdf), ShadingFrame::from_normal(normal), made.albedo};
 }
 
 }  // namespace rtpro

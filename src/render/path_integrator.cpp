@@ -4,7 +4,6 @@
 #include "rtpro/render/material_bsdf.h"
 #include "rtpro/render/ray_offset.h"
 #include "rtpro/render/sample_dimensions.h"
-#include "rtpro/render/texture.h"
 
 #include <algorithm>
 #include <cmath>
@@ -64,8 +63,7 @@ class PathTracer {
     if (material.emission.emits() && (material.emission.two_sided || sp.front_face))
       add_emission(path, result, material.emission.radiance, lights_.light_of_hit(hit), sp.position, beta);
 
-    const Color color = evaluate(material.color, sp, textures_);
-    const SurfaceBsdf surface = material_bsdf(material, color, sp, textures_);
+    const SurfaceBsdf surface = material_bsdf(material, sp, textures_);
     const bool delta = bsdf_is_delta(surface.bsdf);
     if (path.bounce == 0)
       result.primary = {true, surface.albedo, sp.shading_normal, hit.t * length(ray.dir), sp.object_id};

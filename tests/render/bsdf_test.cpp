@@ -18,6 +18,11 @@ TEST(Bsdf, DeltaOnlyWhenEveryLobeIsSpecular) {
   EXPECT_TRUE(bsdf_is_delta(DielectricBsdf{1.5f, 0.0f}));
   EXPECT_TRUE(bsdf_is_delta(DielectricBsdf{1.0f, 0.3f}));
   EXPECT_FALSE(bsdf_is_delta(DielectricBsdf{1.5f, 0.3f}));
+  PrincipledParameters mirror;
+  mirror.metalness = 1.0f;
+  mirror.roughness = 0.0f;
+  EXPECT_TRUE(bsdf_is_delta(PrincipledBsdf(mirror)));
+  EXPECT_FALSE(bsdf_is_delta(PrincipledBsdf(PrincipledParameters{})));
 }
 
 template <class Kind>
@@ -48,6 +53,16 @@ TEST(Bsdf, DispatchesToTheHeldKind) {
   expect_dispatch_matches(ConductorBsdf::from_complex_ior({0.2f, 0.4f, 1.4f}, {4.0f, 2.4f, 1.6f}, 0.3f));
   expect_dispatch_matches(DielectricBsdf{1.5f, 0.2f});
   expect_dispatch_matches(DielectricBsdf{1.5f, 0.0f});
+  // Every layer of the glTF model at once: a rough copper-coloured metal half, fuzz and a coat.
+  PrincipledParameters layered;
+  layered.base_color = Color(0.95f, 0.64f, 0.54f);
+  layered.metalness = 0.5f;
+  layered.roughness = 0.4f;
+  layered.fuzz_color = Color(0.5f);
+  layered.fuzz_roughness = 0.5f;
+  layered.coat_weight = 1.0f;
+  layered.coat_roughness = 0.2f;
+  expect_dispatch_matches(PrincipledBsdf(layered));
 }
 
 }  // namespace

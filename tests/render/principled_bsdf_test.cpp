@@ -350,25 +350,5 @@ TEST(PrincipledBsdf, SmoothGlassSplitsEnergyByFresnel) {
   }
 }
 
-TEST(PrincipledBsdf, DispatchesThroughTheVariant) {
-  const PrincipledBsdf kind(coated(fuzzy(metal(kCopper, 0.4f), Color(0.5f), 0.5f), 0.2f));
-  const Bsdf bsdf = kind;
-  EXPECT_FALSE(bsdf_is_delta(bsdf));
-  test::Uniforms uniforms(29);
-  for (int i = 0; i < 100; ++i) {
-    const Vec3 wo = uniforms.next_direction();
-    const Vec3 wi = uniforms.next_direction();
-    EXPECT_EQ(bsdf_eval(bsdf, wo, wi), kind.eval(wo, wi));
-    EXPECT_EQ(bsdf_pdf(bsdf, wo, wi), kind.pdf(wo, wi));
-    const float u_lobe = uniforms.next();
-    const Sample2D u = uniforms.next_2d();
-    const auto a = bsdf_sample(bsdf, wo, u_lobe, u), b = kind.sample(wo, u_lobe, u);
-    ASSERT_EQ(a.has_value(), b.has_value());
-    if (a) {
-      EXPECT_EQ(a->wi, b->wi);
-    }
-  }
-}
-
 }  // namespace
 }  // namespace rtpro

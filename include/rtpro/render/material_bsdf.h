@@ -18,9 +18,7 @@ struct SurfaceBsdf {
   Color albedo;  // what the albedo AOV shows: the base colour of the model at the point
 };
 
-// `color`: the material's colour texture evaluated at the point; `textures` (the scene's image
-// textures, opened) for the textures a model holds of its own.
-SurfaceBsdf material_bsdf(const Material& material, const Color& color, const SurfacePoint& point,
-                          const TextureLookup* textures);
+// `textures`: the scene's image textures, opened, for the colour textures the material reads.
+SurfaceBsdf material_bsdf(const Material& material, const SurfacePoint& point, const TextureLookup* textures);
 
 }  // namespace rtpro
