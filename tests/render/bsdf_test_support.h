@@ -286,4 +286,23 @@ void expect_sampler_matches_pdf(const std::string& label, const Bsdf& bsdf, cons
   }
 }
 
+// ∫ f(wo, wi) μi dωi over the upper hemisphere, wo at cosine `mu` in the xz plane, by a midpoint
+// rule over (x, φ) with μi = x² (nodes dense towards grazing wi) and φ over [0, π] (f symmetric
+// about the plane of wo): an albedo to check tables and lobes against, without random numbers.
+template <class F>
+double hemisphere_albedo(float mu, int steps, F f) {
+  const Vec3 wo{std::sqrt(1.0f - mu * mu), 0.0f, mu};
+  double sum = 0.0;
+  for (int i = 0; i < steps; ++i) {
+    const double x = (i + 0.5) / steps;
+    const float mu_i = static_cast<float>(x * x);
+    const float sin_i = std::sqrt(1.0f - mu_i * mu_i);
+    for (int j = 0; j < steps; ++j) {
+      const float phi = std::numbers::pi_v<float> * (static_cast<float>(j) + 0.5f) / static_cast<float>(steps);
+      sum += static_cast<double>(f(wo, Vec3{sin_i * std::cos(phi), sin_i * std::sin(phi), mu_i})) * mu_i * 2.0 * x;
+    }
+  }
+  return sum * 2.0 * std::numbers::pi / (static_cast<double>(steps) * steps);
+}
+
 }  // namespace rtpro::test

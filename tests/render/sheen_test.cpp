@@ -13,22 +13,9 @@
 namespace rtpro {
 namespace {
 
-// ∫ f(wo, wi) μi dωi by a midpoint rule over (x, φ), μi = x², for f either lobe.
 template <class Lobe>
 double integrate_albedo(const Lobe& lobe, float mu) {
-  const Vec3 wo{std::sqrt(1.0f - mu * mu), 0.0f, mu};
-  constexpr int kSteps = 400;
-  double sum = 0.0;
-  for (int i = 0; i < kSteps; ++i) {
-    const double x = (i + 0.5) / kSteps;
-    const float mu_i = static_cast<float>(x * x);
-    const float sin_i = std::sqrt(1.0f - mu_i * mu_i);
-    for (int j = 0; j < kSteps; ++j) {
-      const float phi = std::numbers::pi_v<float> * (static_cast<float>(j) + 0.5f) / kSteps;
-      sum += lobe.eval(wo, Vec3{sin_i * std::cos(phi), sin_i * std::sin(phi), mu_i}) * mu_i * 2.0 * x;
-    }
-  }
-  return sum * 2.0 * std::numbers::pi / (static_cast<double>(kSteps) * kSteps);
+  return test::hemisphere_albedo(mu, 400, [&](const Vec3& wo, const Vec3& wi) { return lobe.eval(wo, wi); });
 }
 
 TEST(Sheen, DistributionIsNormalised) {

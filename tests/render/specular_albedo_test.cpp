@@ -3,6 +3,7 @@
 // closed form, and the average is the cosine-weighted mean of what the lookup returns.
 #include "rtpro/render/specular_albedo.h"
 
+#include "bsdf_test_support.h"
 #include "rtpro/render/microfacet.h"
 
 #include <gtest/gtest.h>
@@ -18,25 +19,13 @@ float schlick(float f0, float f90, float cos_theta) {
   return f0 + (f90 - f0) * m * m * m * m * m;
 }
 
-// ∫ F(wo·wm) D G / (4 μo μi) μi dωi by a midpoint rule over (x, φ), μi = x².
+// ∫ F(wo·wm) D G / (4 μo μi) μi dωi.
 double integrate(float mu, float alpha, float f0, float f90) {
   const GgxDistribution ggx{alpha};
-  const Vec3 wo{std::sqrt(1.0f - mu * mu), 0.0f, mu};
-  constexpr int kSteps = 600;
-  double sum = 0.0;
-  for (int i = 0; i < kSteps; ++i) {
-    const double x = (i + 0.5) / kSteps;
-    const float mu_i = static_cast<float>(x * x);
-    const float sin_i = std::sqrt(1.0f - mu_i * mu_i);
-    for (int j = 0; j < kSteps; ++j) {
-      const float phi = std::numbers::pi_v<float> * (static_cast<float>(j) + 0.5f) / kSteps;
-      const Vec3 wi{sin_i * std::cos(phi), sin_i * std::sin(phi), mu_i};
-      const Vec3 wm = normalize(wo + wi);
-      const double f = ggx.d(wm) * ggx.g(wo, wi) / (4.0f * mu * mu_i) * schlick(f0, f90, dot(wo, wm));
-      sum += f * mu_i * 2.0 * x;
-    }
-  }
-  return sum * 2.0 * std::numbers::pi / (static_cast<double>(kSteps) * kSteps);
+  return test::hemisphere_albedo(mu, 600, [&](const Vec3& wo, const Vec3& wi) {
+    const Vec3 wm = normalize(wo + wi);
+    return ggx.d(wm) * ggx.g(wo, wi) / (4.0f * mu * wi.z) * schlick(f0, f90, dot(wo, wm));
+  });
 }
 
 TEST(SpecularAlbedo, WithoutFresnelIsTheGgxAlbedo) {
