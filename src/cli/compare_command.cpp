@@ -31,7 +31,7 @@ struct CompareCommandOptions {
   bool json = false;
 };
 
-std::string joined(const std::vector<std::string>& names) {
+std::string comma_separated(const std::vector<std::string>& names) {
   std::string text;
   for (const auto& name : names) text += (text.empty() ? "" : ",") + name;
   return text;
@@ -69,7 +69,7 @@ std::string joined_numbers(const std::vector<double>& values) {
 
 void print_report(const CompareCommandOptions& o, const Image& reference, const ImageComparison& c) {
   std::cout << "reference   " << o.reference << " (" << reference.width << "x" << reference.height << ", "
-            << joined(reference.channels) << ")\n"
+            << comma_separated(reference.channels) << ")\n"
             << "test        " << o.test << "\n";
   if (c.incompatibility.empty()) {
     std::cout << "mean error  " << c.mean_error << "\n"

@@ -1,6 +1,7 @@
 // `rtpro completion bash` and `rtpro manpage`: both generated from the option definitions the
 // commands register, so they list exactly what the parser accepts.
 #include "command.h"
+#include "usage_check.h"
 
 #include <iostream>
 #include <sstream>
@@ -26,8 +27,6 @@ std::vector<std::string> spellings(const CLI::Option& option) {
   return names;
 }
 
-bool takes_value(const CLI::Option& option) { return option.get_items_expected_max() > 0; }
-
 // The values CLI11's IsMember check lists in the type name: "TEXT:{native,embree}".
 std::vector<std::string> choices(const CLI::Option& option) {
   const std::string type = option.get_type_name();
@@ -47,7 +46,7 @@ bool names_a_file(const CLI::Option& option) {
   return false;
 }
 
-std::string joined(const std::vector<std::string>& words) {
+std::string space_separated(const std::vector<std::string>& words) {
   std::string text;
   for (const std::string& word : words) text += (text.empty() ? "" : " ") + word;
   return text;
@@ -62,7 +61,7 @@ std::string bash_completion(const CLI::App& app) {
          "  local cur=\"${COMP_WORDS[COMP_CWORD]}\" prev=\"${COMP_WORDS[COMP_CWORD-1]}\"\n"
          "  if [[ $COMP_CWORD -eq 1 ]]; then\n"
          "    COMPREPLY=($(compgen -W \""
-      << joined(names)
+      << space_separated(names)
       << " --help --version\" -- \"$cur\"))\n"
          "    return\n"
          "  fi\n"
@@ -72,7 +71,7 @@ std::string bash_completion(const CLI::App& app) {
     std::vector<std::string> all;
     for (const CLI::Option* option : visible_options(*command))
       for (const std::string& name : spellings(*option)) all.push_back(name);
-    out << "    " << command->get_name() << ")\n      options=\"" << joined(all) << "\"\n      case \"$prev\" in\n";
+    out << "    " << command->get_name() << ")\n      options=\"" << space_separated(all) << "\"\n      case \"$prev\" in\n";
     for (const CLI::Option* option : visible_options(*command)) {
       if (!takes_value(*option)) continue;
       std::string pattern;
@@ -82,7 +81,7 @@ std::string bash_completion(const CLI::App& app) {
         out << "        " << pattern << ") COMPREPLY=(" << (names_a_file(*option) ? "$(compgen -f -- \"$cur\")" : "")
             << "); return ;;\n";
       } else {
-        out << "        " << pattern << ") COMPREPLY=($(compgen -W \"" << joined(values) << "\" -- \"$cur\")); return ;;\n";
+        out << "        " << pattern << ") COMPREPLY=($(compgen -W \"" << space_separated(values) << "\" -- \"$cur\")); return ;;\n";
       }
     }
     out << "      esac\n      ;;\n";

@@ -76,8 +76,6 @@ std::string other_renderers_name(const std::string& spelling) {
 }
 
 // Flags expect no items; options with a value one (or more, for lists).
-bool takes_value(const CLI::Option& option) { return option.get_items_expected_max() > 0; }
-
 // Options whose later values would silently replace or reject earlier ones.
 bool takes_one_value(const CLI::Option& option) {
   return takes_value(option) && option.get_multi_option_policy() == CLI::MultiOptionPolicy::Throw &&

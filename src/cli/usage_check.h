@@ -10,6 +10,9 @@
 
 namespace rtpro::cli {
 
+// Whether the option reads a value (not a flag).
+inline bool takes_value(const CLI::Option& option) { return option.get_items_expected_max() > 0; }
+
 // Throws InputError for the first problem in argv (argv[0] is the program).
 void check_command_line(const CLI::App& app, const std::vector<std::string>& args);
 

@@ -1,6 +1,7 @@
 #include "rtpro/image/diff_image.h"
 
 #include "rtpro/core/error.h"
+#include "rtpro/image/image_compare.h"
 #include "rtpro/image/image_io.h"
 
 #include <algorithm>
@@ -27,8 +28,6 @@ Rgb ramp_colour(float error, float full_scale) {
     colour[c] = kRamp[lower][c] + blend * (kRamp[lower + 1][c] - kRamp[lower][c]);
   return colour;
 }
-
-bool same_non_finite(float a, float b) { return (std::isnan(a) && std::isnan(b)) || a == b; }
 
 // Infinite where one image is NaN or infinite and the other is not the same value.
 float pixel_error(const Image& reference, const Image& test, int x, int y) {

@@ -36,8 +36,6 @@ OIIO::ImageBuf wrap(const Image& image) {
   return OIIO::ImageBuf(spec, const_cast<float*>(image.data.data()));
 }
 
-bool same_non_finite(float a, float b) { return (std::isnan(a) && std::isnan(b)) || a == b; }
-
 // What ImageBufAlgo::compare leaves out: it reports an infinite max error where only one image is
 // NaN or infinite, but neither counts that pixel as failing nor counts NaNs. `comparison` holds
 // its results; this adds the non-finite pixels it skipped.

@@ -1,14 +1,14 @@
 #include "rtpro/render/conductor_bsdf.h"
 
+#include "rtpro/core/math_constants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <numbers>
 
 namespace rtpro {
 namespace {
 
-constexpr float kInvPi = std::numbers::inv_pi_v<float>;
 
 float channel_mean(const Color& c) { return (c.x + c.y + c.z) / 3.0f; }
 

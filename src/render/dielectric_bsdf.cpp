@@ -13,15 +13,7 @@ float fresnel_either_side(float cos_theta, float eta) {
   return cos_theta >= 0.0f ? fresnel_dielectric(cos_theta, eta) : fresnel_dielectric(-cos_theta, 1.0f / eta);
 }
 
-// The ratio n_wi / n_wo for a transmission starting on wo's side.
-float relative_eta(const Vec3& wo, float eta) { return wo.z > 0.0f ? eta : 1.0f / eta; }
 
-// wo refracted through the facet with normal wm (either orientation), or nothing under total
-// internal reflection.
-std::optional<Vec3> refract_through(const Vec3& wo, const Vec3& wm, float eta) {
-  const bool from_outside = dot(wo, wm) > 0.0f;
-  return refract(-wo, from_outside ? wm : -wm, from_outside ? eta : 1.0f / eta);
-}
 
 struct Evaluation {
   Color f;

@@ -1,18 +1,17 @@
 #include "rtpro/render/light_set.h"
 
+#include "rtpro/core/math_constants.h"
 #include "rtpro/render/light_sample.h"
 #include "rtpro/render/shading_frame.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 namespace rtpro {
 
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 float average(const Color& c) { return (c.x + c.y + c.z) * (1.0f / 3.0f); }

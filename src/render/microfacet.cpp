@@ -1,16 +1,15 @@
 #include "rtpro/render/microfacet.h"
 
+#include "rtpro/core/math_constants.h"
 #include "table_coordinate.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 
 namespace rtpro {
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
 
 float tan2_theta(const Vec3& w) {
   const float cos2 = w.z * w.z;

@@ -1,16 +1,15 @@
 #include "rtpro/render/principled_bsdf.h"
 
+#include "rtpro/core/math_constants.h"
 #include "rtpro/render/dielectric.h"
 #include "rtpro/render/specular_albedo.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace rtpro {
 namespace {
 
-constexpr float kInvPi = std::numbers::inv_pi_v<float>;
 constexpr float kCoatF0 = 0.04f;  // KHR_materials_clearcoat: ior 1.5
 // Every lobe that can contribute keeps at least this share of the samples: the albedo estimates
 // behind the choice can be near zero where f is not (a rough transmission beyond the critical
@@ -56,15 +55,7 @@ std::optional<Vec3> sample_reflection(const GgxDistribution& ggx, const Vec3& wo
   return wi;
 }
 
-// wo refracted through the facet with normal wm (either orientation), or nothing under total
-// internal reflection.
-std::optional<Vec3> refract_through(const Vec3& wo, const Vec3& wm, float eta) {
-  const bool from_outside = dot(wo, wm) > 0.0f;
-  return refract(-wo, from_outside ? wm : -wm, from_outside ? eta : 1.0f / eta);
-}
 
-// The ratio n_wi / n_wo for a transmission starting on wo's side.
-float relative_eta(const Vec3& wo, float eta) { return wo.z > 0.0f ? eta : 1.0f / eta; }
 
 struct TransmissionGeometry {
   Vec3 wm;  // the generalised half vector, facing +z
@@ -295,7 +286,7 @@ std::optional<Vec3> PrincipledBsdf::sample_direction(Lobe lobe, const Vec3& wo, 
       // thinnest (Estevez and Kulla's advice).
       const float z = u.x;
       const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
-      const float phi = 2.0f * std::numbers::pi_v<float> * u.y;
+      const float phi = 2.0f * kPi * u.y;
       return Vec3{r * std::cos(phi), r * std::sin(phi), wo.z < 0.0f ? -z : z};
     }
     case kDiffuse: {

@@ -1,16 +1,15 @@
 #include "rtpro/render/sheen.h"
 
+#include "rtpro/core/math_constants.h"
 #include "table_coordinate.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 
 namespace rtpro {
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
 constexpr float kMinRoughness = 0.07f;
 
 // The paper's fit of the exponent of Λ, interpolated between its fits at α = 0 and α = 1.
@@ -31,39 +30,39 @@ float lambda_exponent(float x, float alpha) {
 // doubled. The lookups agree with a fine integration to 3e-3 between the nodes (sheen_test.cpp).
 constexpr int kMuNodes = 32;
 constexpr int kRoughnessNodes = 32;
-constexpr int kQuadrature = 64;
-constexpr float kGrazingMu = 1e-4f;
+constexpr int kSheenQuadrature = 64;
+constexpr float kSheenGrazingMu = 1e-4f;
 
-struct Tables {
+struct SheenTables {
   std::array<std::array<float, kMuNodes>, kRoughnessNodes> raw{};      // E of eval, [roughness][√μ]
   std::array<std::array<float, kMuNodes>, kRoughnessNodes> bounded{};  // Ē of the bounded lobe
 };
 
 float mu_node(int m) {
   const float x = static_cast<float>(m) / (kMuNodes - 1);
-  return std::max(kGrazingMu, x * x);
+  return std::max(kSheenGrazingMu, x * x);
 }
 
 float quadrature_mu(int i) {
-  const double x = (i + 0.5) / kQuadrature;
+  const double x = (i + 0.5) / kSheenQuadrature;
   return static_cast<float>(x * x);
 }
 
 // ∫ eval · μi dφ over the row of quadrature points at μi = x², times dμi/dx = 2x, per row.
-std::array<double, kQuadrature> row_integrals(const CharlieSheen& sheen, float mu) {
+std::array<double, kSheenQuadrature> row_integrals(const CharlieSheen& sheen, float mu) {
   const Vec3 wo{std::sqrt(std::max(0.0f, 1.0f - mu * mu)), 0.0f, mu};
-  std::array<double, kQuadrature> rows{};
-  for (int i = 0; i < kQuadrature; ++i) {
+  std::array<double, kSheenQuadrature> rows{};
+  for (int i = 0; i < kSheenQuadrature; ++i) {
     const float mu_i = quadrature_mu(i);
     const float sin_i = std::sqrt(std::max(0.0f, 1.0f - mu_i * mu_i));
     double row = 0.0;
-    for (int j = 0; j < kQuadrature; ++j) {
-      const float phi = kPi * (static_cast<float>(j) + 0.5f) / kQuadrature;
+    for (int j = 0; j < kSheenQuadrature; ++j) {
+      const float phi = kPi * (static_cast<float>(j) + 0.5f) / kSheenQuadrature;
       row += sheen.eval(wo, Vec3{sin_i * std::cos(phi), sin_i * std::sin(phi), mu_i});
     }
     // dx = 1/n, dφ = π/n, twice for the other half of the circle.
     rows[i] = row * mu_i * 2.0 * std::sqrt(static_cast<double>(mu_i)) * 2.0 * kPi /
-              (static_cast<double>(kQuadrature) * kQuadrature);
+              (static_cast<double>(kSheenQuadrature) * kSheenQuadrature);
   }
   return rows;
 }
@@ -96,11 +95,11 @@ float albedo_bound(float e_o, float e_i) { return std::max(1.0f, kBoundMargin * 
 
 // Per roughness node: E from the rows, then Ē from the same rows divided by the bound, which
 // needs E at every quadrature μi of this roughness, i.e. the node row just made.
-Tables build_tables() {
-  Tables tables;
+SheenTables build_sheen_tables() {
+  SheenTables tables;
   for (int r = 0; r < kRoughnessNodes; ++r) {
     const CharlieSheen sheen{sheen_roughness_to_alpha(roughness_node(r))};
-    std::array<std::array<double, kQuadrature>, kMuNodes> rows;
+    std::array<std::array<double, kSheenQuadrature>, kMuNodes> rows;
     for (int m = 0; m < kMuNodes; ++m) {
       rows[m] = row_integrals(sheen, mu_node(m));
       double sum = 0.0;
@@ -109,7 +108,7 @@ Tables build_tables() {
     }
     for (int m = 0; m < kMuNodes; ++m) {
       double sum = 0.0;
-      for (int i = 0; i < kQuadrature; ++i)
+      for (int i = 0; i < kSheenQuadrature; ++i)
         sum += rows[m][i] / albedo_bound(tables.raw[r][m], along_mu(tables.raw[r], quadrature_mu(i)));
       tables.bounded[r][m] = static_cast<float>(sum);
     }
@@ -117,8 +116,8 @@ Tables build_tables() {
   return tables;
 }
 
-const Tables& tables() {
-  static const Tables built = build_tables();  // thread-safe one-time initialisation
+const SheenTables& sheen_tables() {
+  static const SheenTables built = build_sheen_tables();  // thread-safe one-time initialisation
   return built;
 }
 
@@ -157,7 +156,7 @@ float CharlieSheen::eval(const Vec3& wo, const Vec3& wi) const {
   return d(wm) * g / (4.0f * cos_o * cos_i);
 }
 
-float sheen_directional_albedo(float mu, float roughness) { return lookup(tables().raw, mu, roughness); }
+float sheen_directional_albedo(float mu, float roughness) { return lookup(sheen_tables().raw, mu, roughness); }
 
 SheenLobe::SheenLobe(float roughness)
     : roughness_(std::clamp(roughness, 0.0f, 1.0f)), charlie_{sheen_roughness_to_alpha(roughness)} {}
@@ -169,6 +168,6 @@ float SheenLobe::eval(const Vec3& wo, const Vec3& wi) const {
                           sheen_directional_albedo(std::fabs(wi.z), roughness_));
 }
 
-float SheenLobe::albedo(float mu) const { return lookup(tables().bounded, mu, roughness_); }
+float SheenLobe::albedo(float mu) const { return lookup(sheen_tables().bounded, mu, roughness_); }
 
 }  // namespace rtpro

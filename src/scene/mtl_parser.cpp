@@ -13,7 +13,6 @@
 
 namespace rtpro {
 
-using ascii::quoted;
 using ascii::skip_blanks;
 using ascii::skip_word;
 using ascii::word_at;
@@ -110,7 +109,7 @@ class MtlParser {
 
   float fraction(const char* p, const char* end, std::string_view keyword) {
     const float value = numbers(p, end, 1, keyword).values[0];
-    if (value > 1.0f) fail(p, std::string(keyword) + " must be from 0 to 1, found " + quoted(word_at(p, end)));
+    if (value > 1.0f) fail(p, std::string(keyword) + " must be from 0 to 1, found " + ascii::quoted(word_at(p, end)));
     return value;
   }
 
@@ -124,7 +123,7 @@ class MtlParser {
     const std::filesystem::path relative(written);
     const std::filesystem::path normal = relative.lexically_normal();
     if (relative.is_absolute() || relative.has_root_name() || normal.empty() || *normal.begin() == "..") {
-      library_.warnings.push_back(file_ + ":" + std::to_string(line_) + ": texture " + quoted(written) +
+      library_.warnings.push_back(file_ + ":" + std::to_string(line_) + ": texture " + ascii::quoted(written) +
                                   " is not inside the material library's folder; ignored");
       return;
     }
@@ -148,11 +147,11 @@ class MtlParser {
   Numbers numbers(const char* p, const char* end, int most, std::string_view keyword) {
     Numbers n;
     for (p = skip_blanks(p, end); p != end && *p != '#'; p = skip_blanks(skip_word(p, end), end)) {
-      if (n.count == most) fail(p, "unexpected " + quoted(word_at(p, end)) + " after " + std::string(keyword));
+      if (n.count == most) fail(p, "unexpected " + ascii::quoted(word_at(p, end)) + " after " + std::string(keyword));
       float value = 0.0f;
       const ascii::FloatScan scan = ascii::scan_real(p, end, value);
       if (scan.status != ascii::NumberStatus::kOk || value < 0.0f)
-        fail(p, std::string(keyword) + " needs non-negative finite numbers, found " + quoted(word_at(p, end)));
+        fail(p, std::string(keyword) + " needs non-negative finite numbers, found " + ascii::quoted(word_at(p, end)));
       n.values[std::size_t(n.count++)] = value;
     }
     if (n.count == 0) fail(p, std::string(keyword) + " needs a number");

@@ -12,7 +12,6 @@ namespace rtpro::obj {
 
 using ascii::is_blank;
 using ascii::is_word_end;
-using ascii::quoted;
 using ascii::skip_blanks;
 using ascii::skip_word;
 using ascii::word_at;
@@ -178,7 +177,7 @@ class ChunkParser {
         result.normal = index(p, seen_.normals, out_.totals.normals, "normal");
       }
     }
-    if (p != end_ && !is_word_end(*p) && *p != '#') fail(token, "malformed face vertex " + quoted(word_at(token, end_)));
+    if (p != end_ && !is_word_end(*p) && *p != '#') fail(token, "malformed face vertex " + ascii::quoted(word_at(token, end_)));
     return result;
   }
 
@@ -200,7 +199,7 @@ class ChunkParser {
 
   [[noreturn, gnu::cold, gnu::noinline]] void fail_index(const char* p, bool is_integer, std::int64_t raw, std::uint64_t declared,
                                                          std::uint64_t total, const char* what) const {
-    if (!is_integer) fail(p, std::string("expected a ") + what + " index, found " + quoted(word_at(p, end_)));
+    if (!is_integer) fail(p, std::string("expected a ") + what + " index, found " + ascii::quoted(word_at(p, end_)));
     if (raw == 0) fail(p, std::string(what) + " index 0 is invalid: OBJ indices start at 1");
     if (raw > 0)
       fail(p, std::string(what) + " index " + std::to_string(raw) + " is out of range: the file has " + std::to_string(total));
@@ -220,7 +219,7 @@ class ChunkParser {
     } else if (scan.ok && scan.next == word.data() + word.size() && number >= 0 && std::uint64_t(number) < kInherited) {
       group = std::uint32_t(number);
     } else {
-      fail(p, "expected 'off' or a smoothing group number, found " + quoted(word));
+      fail(p, "expected 'off' or a smoothing group number, found " + ascii::quoted(word));
     }
     chunk_.has_smoothing_statement = true;
     change_state().smoothing = group;
@@ -288,15 +287,15 @@ class ChunkParser {
   }
 
   [[noreturn, gnu::cold, gnu::noinline]] void fail_number(const char* p, ascii::NumberStatus status) const {
-    if (status == ascii::NumberStatus::kMalformed) fail(p, quoted(word_at(p, end_)) + " is not a number");
-    fail(p, quoted(word_at(p, end_)) + " is not a finite number in float range");
+    if (status == ascii::NumberStatus::kMalformed) fail(p, ascii::quoted(word_at(p, end_)) + " is not a number");
+    fail(p, ascii::quoted(word_at(p, end_)) + " is not a finite number in float range");
   }
 
   // Up to 3 more numbers into `values`; returns how many. p ends after the last one.
   int numbers_into(const char*& p, float (&values)[3], const char* where) const {
     int count = 0;
     for (p = skip_blanks(p, end_); !at_line_end(p); p = skip_blanks(p, end_)) {
-      if (count == 3) fail(p, "unexpected " + quoted(word_at(p, end_)) + " " + where);
+      if (count == 3) fail(p, "unexpected " + ascii::quoted(word_at(p, end_)) + " " + where);
       p = number(p, values[count++]);
     }
     return count;
@@ -305,7 +304,7 @@ class ChunkParser {
   // Up to `allowed` more numbers (validated, unused), then the end of the line.
   const char* numbers_then_line_end(const char* p, int allowed, const char* where) const {
     for (p = skip_blanks(p, end_); !at_line_end(p); p = skip_blanks(p, end_)) {
-      if (allowed-- == 0) fail(p, "unexpected " + quoted(word_at(p, end_)) + " " + where);
+      if (allowed-- == 0) fail(p, "unexpected " + ascii::quoted(word_at(p, end_)) + " " + where);
       float unused;
       p = number(p, unused);
     }

@@ -9,7 +9,6 @@
 
 namespace rtpro::obj {
 
-using ascii::quoted;
 namespace fs = std::filesystem;
 
 namespace {
@@ -24,10 +23,10 @@ fs::path material_library_path(const fs::path& obj_file, const LocatedName& libr
   const fs::path relative(library.name);
   const SourceLocation where{obj_file.string(), int(library.line)};
   if (relative.is_absolute() || relative.has_root_name() || relative.has_root_directory())
-    throw InputError(where, "mtllib path " + quoted(library.name) + " must be relative to the OBJ's folder");
+    throw InputError(where, "mtllib path " + ascii::quoted(library.name) + " must be relative to the OBJ's folder");
   const fs::path normal = relative.lexically_normal();
   if (normal.empty() || *normal.begin() == "..")
-    throw InputError(where, "mtllib path " + quoted(library.name) + " leaves the OBJ's folder");
+    throw InputError(where, "mtllib path " + ascii::quoted(library.name) + " leaves the OBJ's folder");
   const fs::path path = obj_file.parent_path() / normal;
   // A path the file system cannot resolve (a name over 255 bytes, say) is left to the existence
   // check: a missing library, a warning.
@@ -37,7 +36,7 @@ fs::path material_library_path(const fs::path& obj_file, const LocatedName& libr
   if (folder_error || target_error) return path;
   const fs::path inside = target.lexically_relative(folder);
   if (inside.empty() || *inside.begin() == "..")
-    throw InputError(where, "mtllib path " + quoted(library.name) + " leads outside the OBJ's folder (through a symbolic link)");
+    throw InputError(where, "mtllib path " + ascii::quoted(library.name) + " leads outside the OBJ's folder (through a symbolic link)");
   return path;
 }
 
@@ -54,7 +53,7 @@ std::vector<MaterialDesc> load_obj_materials(const fs::path& file, const std::ve
       if (!loaded.insert(path).second) continue;
       std::error_code not_readable;  // e.g. a name over 255 bytes: a warning, not an escaped filesystem_error
       if (!fs::is_regular_file(path, not_readable)) {
-        warnings.push_back(located(file.string(), library.line, "material library " + quoted(library.name) +
+        warnings.push_back(located(file.string(), library.line, "material library " + ascii::quoted(library.name) +
                                                                     " not found; its materials use defaults"));
         continue;
       }

@@ -20,7 +20,6 @@
 
 namespace rtpro {
 
-using ascii::quoted;
 
 namespace fs = std::filesystem;
 using namespace obj;
@@ -158,7 +157,7 @@ void warn_about_ignored_statements(const std::string& file, const std::vector<Ch
   for (std::size_t i = 0; i < all.size(); ++i) {
     const IgnoredKeyword& k = all[i];
     if (i < kListedIgnoredKeywords)
-      warnings.push_back(located(file, k.first_line, "ignored " + quoted(k.keyword) + " statements (" + std::to_string(k.count) + " in total)"));
+      warnings.push_back(located(file, k.first_line, "ignored " + ascii::quoted(k.keyword) + " statements (" + std::to_string(k.count) + " in total)"));
     else
       unlisted_statements += k.count;
   }

@@ -8,7 +8,6 @@
 
 namespace rtpro::ply {
 
-using ascii::quoted;
 
 namespace {
 
@@ -39,7 +38,7 @@ class HeaderParser {
     if (unknown_lines_ > 0)
       header_.warnings.push_back(file_ + ":" + std::to_string(first_unknown_line_) + ": ignored " +
                                  std::to_string(unknown_lines_) + " unknown header line(s), the first starting " +
-                                 quoted(first_unknown_word_));
+                                 ascii::quoted(first_unknown_word_));
     header_.body_offset = offset_;
     header_.body_line = line_ + 1;
     check_counts_fit();
@@ -79,8 +78,8 @@ class HeaderParser {
     if (words_[1] == "ascii") header_.encoding = Encoding::kAscii;
     else if (words_[1] == "binary_little_endian") header_.encoding = Encoding::kBinaryLittleEndian;
     else if (words_[1] == "binary_big_endian") header_.encoding = Encoding::kBinaryBigEndian;
-    else fail("unknown format " + quoted(words_[1]));
-    if (words_[2] != "1.0") fail("unsupported PLY version " + quoted(words_[2]));
+    else fail("unknown format " + ascii::quoted(words_[1]));
+    if (words_[2] != "1.0") fail("unsupported PLY version " + ascii::quoted(words_[2]));
     has_format_ = true;
   }
 
@@ -89,7 +88,7 @@ class HeaderParser {
     std::int64_t count = 0;
     const ascii::IntegerScan scan = ascii::scan_integer(words_[2].data(), words_[2].data() + words_[2].size(), count);
     if (!scan.ok || scan.next != words_[2].data() + words_[2].size() || count < 0)
-      fail("element count " + quoted(words_[2]) + " is not a non-negative integer");
+      fail("element count " + ascii::quoted(words_[2]) + " is not a non-negative integer");
     header_.elements.push_back({std::string(words_[1]), std::uint64_t(count), {}, line_});
   }
 
@@ -113,7 +112,7 @@ class HeaderParser {
   Type type(std::string_view name) const {
     for (const auto& [known, type] : kTypeNames)
       if (known == name) return type;
-    fail("unknown property type " + quoted(name));
+    fail("unknown property type " + ascii::quoted(name));
   }
 
   void expect_words(std::size_t count, const char* form) const {
@@ -130,9 +129,9 @@ class HeaderParser {
       for (const Property& p : element.properties)
         least += header_.encoding == Encoding::kAscii ? 2 : size_of(p.is_list ? p.count_type : p.type);
       if (element.count > 0 && least == 0)
-        fail_at(element.line, "element " + quoted(element.name) + " has no properties");
+        fail_at(element.line, "element " + ascii::quoted(element.name) + " has no properties");
       if (element.count > 0 && element.count > remaining / least)
-        fail_at(element.line, "element " + quoted(element.name) + " declares " + std::to_string(element.count) +
+        fail_at(element.line, "element " + ascii::quoted(element.name) + " declares " + std::to_string(element.count) +
                                   " instances, more than the " + std::to_string(bytes_.size() - header_.body_offset) +
                                   " bytes after the header can hold");
       remaining -= element.count * least;

@@ -21,7 +21,6 @@
 
 namespace rtpro {
 
-using ascii::quoted;
 
 using namespace ply;
 
@@ -118,7 +117,7 @@ class AsciiReader {
   void end_element() {
     p_ = ascii::skip_blanks(p_, line_end_);
     value_ = p_;
-    if (p_ != line_end_) fail("unexpected " + quoted(ascii::word_at(p_, line_end_)) + ": more values than the header declares");
+    if (p_ != line_end_) fail("unexpected " + ascii::quoted(ascii::word_at(p_, line_end_)) + ": more values than the header declares");
   }
 
   double value(Type type) {
@@ -138,8 +137,8 @@ class AsciiReader {
     std::int64_t v = 0;
     const ascii::IntegerScan scan = ascii::scan_integer(p_, line_end_, v);
     if (!scan.ok || (scan.next != line_end_ && !ascii::is_blank(*scan.next)))
-      fail(quoted(ascii::word_at(p_, line_end_)) + " is not an integer");
-    if (!fits(v, type)) fail(quoted(ascii::word_at(p_, line_end_)) + " is out of range for its property type");
+      fail(ascii::quoted(ascii::word_at(p_, line_end_)) + " is not an integer");
+    if (!fits(v, type)) fail(ascii::quoted(ascii::word_at(p_, line_end_)) + " is out of range for its property type");
     p_ = scan.next;
     return double(v);
   }
@@ -148,9 +147,9 @@ class AsciiReader {
   double real() {
     Real v = 0;
     const ascii::FloatScan scan = ascii::scan_real(p_, line_end_, v);
-    if (scan.status == ascii::NumberStatus::kMalformed) fail(quoted(ascii::word_at(p_, line_end_)) + " is not a number");
+    if (scan.status == ascii::NumberStatus::kMalformed) fail(ascii::quoted(ascii::word_at(p_, line_end_)) + " is not a number");
     if (scan.status == ascii::NumberStatus::kNotFinite)
-      fail(quoted(ascii::word_at(p_, line_end_)) + " is not a finite number in range");
+      fail(ascii::quoted(ascii::word_at(p_, line_end_)) + " is not a finite number in range");
     p_ = scan.next;
     return double(v);
   }
@@ -252,7 +251,7 @@ class BodyReader {
   int scalar_property(const Element& element, std::string_view name) const {
     const int index = element.find(name);
     if (index >= 0 && element.properties[std::size_t(index)].is_list)
-      fail_at(element, "property " + quoted(name) + " must not be a list");
+      fail_at(element, "property " + ascii::quoted(name) + " must not be a list");
     return index;
   }
 

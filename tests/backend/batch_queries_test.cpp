@@ -12,7 +12,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace batch_queries_test {
 
 // Which primitives the scene holds: with spheres alone (instances of spheres included) the Embree
 // backend traces scattered rays in packets, with triangles one by one.
@@ -95,5 +95,5 @@ INSTANTIATE_TEST_SUITE_P(Backends, BatchQueries,
                                   (std::get<2>(info.param) == SceneKind::kMixed ? "_mixed" : "_spheres");
                          });
 
-}  // namespace
+}  // namespace batch_queries_test
 }  // namespace rtpro

@@ -13,7 +13,7 @@
 #include <string>
 
 namespace rtpro {
-namespace {
+namespace bvh_test {
 
 // Large enough that the builder splits subtrees across tasks and bins ranges in parallel (both
 // thresholds are far below 100,000 primitives), with a stack of coincident spheres that SAH cannot
@@ -76,5 +76,5 @@ TEST(Bvh, IsTheTreeTheSingleThreadedBuilderMade) {
   EXPECT_EQ(fingerprint(prototype), 8099507034210695486ull);
 }
 
-}  // namespace
+}  // namespace bvh_test
 }  // namespace rtpro

@@ -22,7 +22,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace embree_backend_test {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
@@ -302,5 +302,5 @@ TEST_F(EmbreeBackendTest, EmptySceneMissesEverything) {
   EXPECT_EQ(backend->name(), "embree");
 }
 
-}  // namespace
+}  // namespace embree_backend_test
 }  // namespace rtpro

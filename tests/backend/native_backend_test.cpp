@@ -12,7 +12,7 @@
 #include <limits>
 
 namespace rtpro {
-namespace {
+namespace native_backend_test {
 
 // Closest hit by testing every primitive of the group (and every instance's prototype).
 void brute_force(const RenderScene& scene, const Group& group, const Ray& ray, std::uint32_t inst, Hit& best,
@@ -126,5 +126,5 @@ TEST(Bvh, IsDeterministicAndBoundsItsDepth) {
   EXPECT_EQ(hit.prim_id, 0u);  // the tie rule picks the lowest id
 }
 
-}  // namespace
+}  // namespace native_backend_test
 }  // namespace rtpro

@@ -15,7 +15,7 @@
 #include <random>
 
 namespace rtpro {
-namespace {
+namespace ray_packet_test {
 
 // A ray the renderer would send, or, with probability `broken`, one with a single bad field of the
 // kinds is_traceable refuses (and a few it accepts that look suspicious: -0 tnear, zero tfar).
@@ -85,5 +85,5 @@ TEST(RayPacket, WideLoadHoldsWhatEightSetsHoldAndRefusesExactlyWhatIsTraceableRe
   EXPECT_GT(refused, 2000);
 }
 
-}  // namespace
+}  // namespace ray_packet_test
 }  // namespace rtpro

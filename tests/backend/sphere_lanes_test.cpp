@@ -17,7 +17,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace sphere_lanes_test {
 
 struct LaneRay {
   Vec3 org, dir;
@@ -129,5 +129,5 @@ TEST(SphereLanes, OddLaneCountsAndSingleRaysWork) {
   }
 }
 
-}  // namespace
+}  // namespace sphere_lanes_test
 }  // namespace rtpro

@@ -6,7 +6,7 @@
 #include <vector>
 
 namespace rtpro::cli {
-namespace {
+namespace backend_options_test {
 
 // Parses `arguments` (without the program name) into fresh options.
 BackendOptions parsed(std::vector<std::string> arguments) {
@@ -42,5 +42,5 @@ TEST(BackendOptions, RobustTraversalIsAFlagPair) {
   EXPECT_THROW(parsed({"--embree-robust", "false"}), CLI::ExtrasError);
 }
 
-}  // namespace
+}  // namespace backend_options_test
 }  // namespace rtpro::cli

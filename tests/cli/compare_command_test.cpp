@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 namespace rtpro {
-namespace {
+namespace compare_command_test {
 
 namespace fs = std::filesystem;
 
@@ -141,5 +141,5 @@ TEST(CompareCommand, UsageErrorsAreExitCodeTwo) {
   EXPECT_EQ(compare(images + " --diff " + quoted(pair.reference.parent_path() / "diff.xyz"), &output), 2) << output;
 }
 
-}  // namespace
+}  // namespace compare_command_test
 }  // namespace rtpro

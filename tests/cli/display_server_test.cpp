@@ -16,7 +16,7 @@
 #include <thread>
 
 namespace rtpro {
-namespace {
+namespace display_server_test {
 
 using test::run_command;
 using test::rtpro_command;
@@ -231,5 +231,5 @@ TEST(DisplayServer, ViewerThatGoesAwayWarnsOnceAndTheRenderGoesOn) {
   EXPECT_EQ(written.width, 160);
 }
 
-}  // namespace
+}  // namespace display_server_test
 }  // namespace rtpro

@@ -10,7 +10,7 @@
 #include <sstream>
 
 namespace rtpro {
-namespace {
+namespace frame_sequence_test {
 
 using test::run_command;
 using test::rtpro_command;
@@ -131,5 +131,5 @@ TEST(FrameSequence, PatternAndRangeMistakesAreRefused) {
   EXPECT_FALSE(std::filesystem::exists(dir / "x_01.exr"));
 }
 
-}  // namespace
+}  // namespace frame_sequence_test
 }  // namespace rtpro

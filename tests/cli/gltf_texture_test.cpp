@@ -10,7 +10,7 @@
 #include <cstring>
 
 namespace rtpro {
-namespace {
+namespace gltf_texture_test {
 
 const std::filesystem::path kSamples = "/usr/share/assimp/models/glTF2";
 
@@ -44,5 +44,5 @@ TEST(GltfTexture, FileBufferViewAndDataUriGiveTheSameTexturedBox) {
   EXPECT_GT(most_saturated, 0.1f);
 }
 
-}  // namespace
+}  // namespace gltf_texture_test
 }  // namespace rtpro

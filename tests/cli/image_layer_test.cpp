@@ -9,7 +9,7 @@
 #include <string>
 
 namespace rtpro {
-namespace {
+namespace image_layer_test {
 
 using test::rtpro_executable;
 using test::run_command;
@@ -128,5 +128,5 @@ TEST(ImageLayer, ThePluginsLibraryListChangesOnlyWhoOpensThem) {
   EXPECT_TRUE(same_pixels("listed.tif", "bogus.tif"));
 }
 
-}  // namespace
+}  // namespace image_layer_test
 }  // namespace rtpro

@@ -11,7 +11,7 @@
 #include <sstream>
 
 namespace rtpro {
-namespace {
+namespace output_options_test {
 
 using test::run_command;
 using test::rtpro_command;
@@ -121,5 +121,5 @@ TEST(OutputOptions, HelpListsFormatsAndTheirEncodings) {
     EXPECT_NE(out.find(fragment), std::string::npos) << fragment << "\n" << out;
 }
 
-}  // namespace
+}  // namespace output_options_test
 }  // namespace rtpro

@@ -14,7 +14,7 @@
 #include <unistd.h>
 
 namespace rtpro {
-namespace {
+namespace render_command_test {
 
 using test::rtpro_executable;
 using test::run_command;
@@ -226,5 +226,5 @@ TEST(InfoCommand, CountsMatchTheScene) {
   EXPECT_NE(out.find("after instancing"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace render_command_test
 }  // namespace rtpro

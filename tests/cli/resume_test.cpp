@@ -15,7 +15,7 @@
 #include <unistd.h>
 
 namespace rtpro {
-namespace {
+namespace resume_test {
 
 using test::rtpro_executable;
 using test::expect_same_pixels;
@@ -173,5 +173,5 @@ TEST(Resume, WithoutAJournalRendersEverythingAndNoJournalKeepsNone) {
   EXPECT_NE(output.find("--no-journal"), std::string::npos) << output;
 }
 
-}  // namespace
+}  // namespace resume_test
 }  // namespace rtpro

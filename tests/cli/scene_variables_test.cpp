@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 namespace rtpro {
-namespace {
+namespace scene_variables_test {
 
 using test::run_command;
 using test::rtpro_command;
@@ -110,5 +110,5 @@ TEST(SceneIncludes, DepthIsLimited) {
   EXPECT_NE(out.find("includes nested deeper than 16 files"), std::string::npos) << out;
 }
 
-}  // namespace
+}  // namespace scene_variables_test
 }  // namespace rtpro

@@ -8,7 +8,7 @@
 #include <set>
 
 namespace rtpro {
-namespace {
+namespace shell_integration_test {
 
 using test::run_command;
 using test::rtpro_command;
@@ -69,5 +69,5 @@ TEST(ShellIntegration, ManPageDocumentsEveryOptionAndIsValidRoff) {
   EXPECT_EQ(warnings, "");
 }
 
-}  // namespace
+}  // namespace shell_integration_test
 }  // namespace rtpro

@@ -9,7 +9,7 @@
 #include <fstream>
 
 namespace rtpro {
-namespace {
+namespace usage_test {
 
 using test::run_command;
 using test::rtpro_command;
@@ -131,5 +131,5 @@ TEST(Usage, SceneFromStandardInput) {
   EXPECT_NE(out.find("<stdin>"), std::string::npos) << out;
 }
 
-}  // namespace
+}  // namespace usage_test
 }  // namespace rtpro

@@ -5,7 +5,7 @@
 #include <limits>
 
 namespace rtpro {
-namespace {
+namespace ray_test {
 
 TEST(Ray, OrdinaryRaysAreTraceable) {
   EXPECT_TRUE(is_traceable(Ray{{0, 0, 0}, 0.0f, {0, 0, 1}}));
@@ -24,5 +24,5 @@ TEST(Ray, NonFiniteHugeOrDegenerateRaysAreNot) {
   EXPECT_FALSE(is_traceable(Ray{{0, 0, 0}, 0.0f, {0, 0, 1}, nan}));
 }
 
-}  // namespace
+}  // namespace ray_test
 }  // namespace rtpro

@@ -10,7 +10,7 @@
 #include <string>
 
 namespace rtpro {
-namespace {
+namespace stale_temporaries_test {
 
 TEST(StaleTemporaries, NamesAreThisProcesssAndNeverRepeat) {
   const std::string first = owned_temporary_name("x.tmp-");
@@ -38,5 +38,5 @@ TEST(StaleTemporaries, OnlyDeadProcessesFilesOfThePrefixAreRemoved) {
   remove_stale_temporaries(folder / "missing", "j.tmp-");  // nothing to list: nothing happens
 }
 
-}  // namespace
+}  // namespace stale_temporaries_test
 }  // namespace rtpro

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace rtpro {
-namespace {
+namespace transform_test {
 
 void expect_near(const Vec3& a, const Vec3& b, float tolerance = 1e-5f) {
   EXPECT_NEAR(a.x, b.x, tolerance);
@@ -58,5 +58,5 @@ TEST(Transform, BoxBoundsContainTransformedCorners) {
   EXPECT_NEAR(b.upper.z, 1.0f, 1e-6f);
 }
 
-}  // namespace
+}  // namespace transform_test
 }  // namespace rtpro

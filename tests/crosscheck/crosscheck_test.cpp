@@ -18,7 +18,7 @@
 #include <string>
 
 namespace rtpro {
-namespace {
+namespace crosscheck_test {
 
 std::string summary(const CrosscheckReport& r) {
   std::string text = "identical " + std::to_string(r.identical) + ", within tolerance " +
@@ -176,5 +176,5 @@ TEST(TracingFpMode, FlushesDenormalsToZero) {
   EXPECT_EQ(std::bit_cast<std::uint32_t>(product), 0u);
 }
 
-}  // namespace
+}  // namespace crosscheck_test
 }  // namespace rtpro

@@ -16,7 +16,7 @@
 #include <thread>
 
 namespace rtpro {
-namespace {
+namespace distributed_render_test {
 
 // Mailboxes of every rank of an in-process job; messages between two ranks stay in order.
 struct Mailboxes {
@@ -158,5 +158,5 @@ TEST(DistributedRender, LoadImbalanceIsBusiestOverMean) {
   EXPECT_DOUBLE_EQ(load_imbalance(ranks), 1.0);
 }
 
-}  // namespace
+}  // namespace distributed_render_test
 }  // namespace rtpro

@@ -8,7 +8,7 @@
 #include <thread>
 
 namespace rtpro {
-namespace {
+namespace prestarted_thread_test {
 
 TEST(PrestartedThread, RunsItsTaskOnTheThreadCreatedBefore) {
   const std::thread::id caller = std::this_thread::get_id();
@@ -31,5 +31,5 @@ TEST(PrestartedThread, EndsWithoutATaskAndRunsOnlyOne) {
   EXPECT_EQ(runs.load(), 1);
 }
 
-}  // namespace
+}  // namespace prestarted_thread_test
 }  // namespace rtpro

@@ -6,7 +6,7 @@
 #include <limits>
 
 namespace rtpro {
-namespace {
+namespace sphere_intersect_test {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
@@ -68,5 +68,5 @@ TEST(SphereIntersect, ZeroDirectionNeverHits) {
   EXPECT_FALSE(intersect_sphere({0, 0, 0}, 1.0f, {0, 0, 0}, {0, 0, 0}, 0.0f, kInf, t));
 }
 
-}  // namespace
+}  // namespace sphere_intersect_test
 }  // namespace rtpro

@@ -6,7 +6,7 @@
 #include <random>
 
 namespace rtpro {
-namespace {
+namespace triangle_intersect_test {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 const Vec3 p0{0, 0, 0}, p1{1, 0, 0}, p2{0, 1, 0};
@@ -55,5 +55,5 @@ TEST(TriangleIntersect, RaysThroughASharedEdgeHitAtLeastOneSide) {
   }
 }
 
-}  // namespace
+}  // namespace triangle_intersect_test
 }  // namespace rtpro

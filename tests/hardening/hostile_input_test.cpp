@@ -13,7 +13,7 @@
 #include <vector>
 
 namespace rtpro::test {
-namespace {
+namespace hostile_input_test {
 
 constexpr double kExtraSeconds = 2.0;
 constexpr double kExtraMegabytes = 500.0;
@@ -180,5 +180,5 @@ TEST(HostileInput, AnObjFullOfUnknownStatementsIsReadInLinearTime) {
   expect_answer(run_capped({rtpro(), "info", scene.string()}), 0, {"ignored"});
 }
 
-}  // namespace
+}  // namespace hostile_input_test
 }  // namespace rtpro::test

@@ -22,7 +22,7 @@
 #include <thread>
 
 namespace rtpro::test {
-namespace {
+namespace output_faults_test {
 
 std::string read_all(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -216,5 +216,5 @@ TEST(OutputFaults, TwoRendersWritingOneFileEndWithOneCompleteImage) {
   EXPECT_TRUE(temporaries_in(dir).empty());
 }
 
-}  // namespace
+}  // namespace output_faults_test
 }  // namespace rtpro::test

@@ -11,7 +11,7 @@
 #include <optional>
 
 namespace rtpro {
-namespace {
+namespace color_config_test {
 
 // A config whose only view doubles the values, so a test can tell it was really used.
 constexpr const char* kDoublingConfig = R"(ocio_profile_version: 2
@@ -158,5 +158,5 @@ TEST(ColorConfig, MalformedConfigFileIsAnInputErrorNamingIt) {
   EXPECT_NE(message.find("--ocio-config"), std::string::npos) << message;
 }
 
-}  // namespace
+}  // namespace color_config_test
 }  // namespace rtpro

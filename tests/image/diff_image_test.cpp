@@ -10,7 +10,7 @@
 #include <cmath>
 
 namespace rtpro {
-namespace {
+namespace diff_image_test {
 
 using test::gradient_image;
 
@@ -73,5 +73,5 @@ TEST(DiffImage, WrittenPngAndExrShowTheSameHotSpot) {
   EXPECT_EQ(exr.channel_count(), 4);
 }
 
-}  // namespace
+}  // namespace diff_image_test
 }  // namespace rtpro

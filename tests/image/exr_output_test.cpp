@@ -21,7 +21,7 @@
 #include <map>
 
 namespace rtpro {
-namespace {
+namespace exr_output_test {
 
 namespace fs = std::filesystem;
 
@@ -172,5 +172,5 @@ TEST(ExrOutput, KnowsTheFormatsNamesInAnyCase) {
   EXPECT_FALSE(is_exr_file("a.hdr"));
 }
 
-}  // namespace
+}  // namespace exr_output_test
 }  // namespace rtpro

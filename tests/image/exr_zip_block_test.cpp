@@ -9,7 +9,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace exr_zip_block_test {
 
 // A reader's side of a ZIP chunk, written from the file format's description: inflate the zlib
 // stream, add each difference (less 128) to the byte before it, then put the even bytes (the
@@ -72,5 +72,5 @@ TEST(ExrZipEncoder, OneEncoderServesChunksOfEverySize) {
   }
 }
 
-}  // namespace
+}  // namespace exr_zip_block_test
 }  // namespace rtpro

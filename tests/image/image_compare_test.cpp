@@ -7,7 +7,7 @@
 #include <cmath>
 
 namespace rtpro {
-namespace {
+namespace image_compare_test {
 
 using test::gradient_image;
 
@@ -156,5 +156,5 @@ TEST(ImageCompare, NanAtTheSamePlaceInBothImagesMatches) {
   EXPECT_TRUE(result.passed);
 }
 
-}  // namespace
+}  // namespace image_compare_test
 }  // namespace rtpro

@@ -7,7 +7,7 @@
 #include <string>
 
 namespace rtpro {
-namespace {
+namespace image_format_sniff_test {
 
 using namespace std::string_literals;
 
@@ -46,5 +46,5 @@ TEST(ImageFormatSniff, WithoutASignatureTheLowerCaseExtensionNamesTheReader) {
   EXPECT_EQ(image_reader_name(test::scratch_dir() / "missing.Png"), "png");
 }
 
-}  // namespace
+}  // namespace image_format_sniff_test
 }  // namespace rtpro

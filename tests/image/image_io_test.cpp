@@ -17,7 +17,7 @@
 #include <sys/resource.h>
 
 namespace rtpro {
-namespace {
+namespace image_io_test {
 
 namespace fs = std::filesystem;
 using namespace std::string_literals;
@@ -575,5 +575,5 @@ TEST(ImageIo, ABmpDeclaringMorePixelsThanTheBudgetIsRefusedBeforeOpenImageIoDeco
   EXPECT_NE(tall.find("8x2147483648"), std::string::npos) << tall;
 }
 
-}  // namespace
+}  // namespace image_io_test
 }  // namespace rtpro

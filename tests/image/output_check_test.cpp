@@ -10,7 +10,7 @@
 #include <string>
 
 namespace rtpro {
-namespace {
+namespace output_check_test {
 
 // Every format name and extension OpenImageIO knows, readable or writable.
 std::vector<std::string> every_known_name() {
@@ -72,5 +72,5 @@ TEST(OutputCheck, MissingFolderIsARuntimeError) {
   EXPECT_THROW(check_image_output(test::scratch_dir() / "missing" / "image.png"), RuntimeError);
 }
 
-}  // namespace
+}  // namespace output_check_test
 }  // namespace rtpro

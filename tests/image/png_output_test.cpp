@@ -19,7 +19,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace png_output_test {
 
 namespace fs = std::filesystem;
 
@@ -177,5 +177,5 @@ TEST(PngOutput, KnowsItsFilesByExtensionInAnyCase) {
   EXPECT_FALSE(is_png_file("png"));
 }
 
-}  // namespace
+}  // namespace png_output_test
 }  // namespace rtpro

@@ -12,7 +12,7 @@
 #include <cmath>
 
 namespace rtpro {
-namespace {
+namespace texture_lookup_test {
 
 // A width x height float EXR whose pixel (x, y) is (x / width, y / height, 0.25) + 0.001 x y.
 std::filesystem::path write_ramp(const std::string& name, int width, int height) {
@@ -92,5 +92,5 @@ TEST(TextureLookup, UnreadableTexturesAreInputErrorsNamingTheFile) {
   EXPECT_THROW(open_textures(unknown_space), InputError);
 }
 
-}  // namespace
+}  // namespace texture_lookup_test
 }  // namespace rtpro

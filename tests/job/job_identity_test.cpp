@@ -8,7 +8,7 @@
 #include <fstream>
 
 namespace rtpro {
-namespace {
+namespace job_identity_test {
 
 TEST(JobIdentity, TextRoundTripsAndDifferencesNameKeyAndBothValues) {
   JobIdentity a;
@@ -66,5 +66,5 @@ TEST(JobIdentity, SceneIdentityCoversSourcesMeshesAndWhatTheyRead) {
   EXPECT_NE(d[1].find("wood.png"), std::string::npos) << d[1];
 }
 
-}  // namespace
+}  // namespace job_identity_test
 }  // namespace rtpro

@@ -8,7 +8,7 @@
 #include <limits>
 
 namespace rtpro {
-namespace {
+namespace tile_codec_test {
 
 TileResult sample_tile(const TileGrid& grid, std::size_t index, int channels) {
   TileResult tile;
@@ -62,5 +62,5 @@ TEST(TileCodec, TruncatedOrForeignRecordsAreRefused) {
   EXPECT_FALSE(decode_tile(bytes, TileGrid({0, 0, 4, 4}, 4), 3));  // index beyond the grid
 }
 
-}  // namespace
+}  // namespace tile_codec_test
 }  // namespace rtpro

@@ -14,7 +14,7 @@
 #include <thread>
 
 namespace rtpro {
-namespace {
+namespace tile_journal_test {
 
 constexpr int kChannels = 3;
 
@@ -199,5 +199,5 @@ TEST(TileJournal, UnwritableFolderIsARuntimeErrorNamingTheFile) {
   }
 }
 
-}  // namespace
+}  // namespace tile_journal_test
 }  // namespace rtpro

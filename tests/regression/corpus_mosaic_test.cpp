@@ -23,7 +23,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace corpus_mosaic_test {
 
 namespace fs = std::filesystem;
 
@@ -129,5 +129,5 @@ TEST(CorpusMosaic, EveryLoadableModelIsInItsFrame) {
   regression::regenerate_report(root, regression::update_command());
 }
 
-}  // namespace
+}  // namespace corpus_mosaic_test
 }  // namespace rtpro

@@ -8,7 +8,7 @@
 #include <sstream>
 
 namespace rtpro::regression {
-namespace {
+namespace html_report_test {
 
 std::string read_text(const std::filesystem::path& file) {
   std::ifstream in(file);
@@ -93,5 +93,5 @@ TEST(RegressionReport, ImagesOfDifferentSizesGetNoDiff) {
   EXPECT_NE(read_text(regenerate_report(root, "")).find("(none: the images differ in size)"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace html_report_test
 }  // namespace rtpro::regression

@@ -10,7 +10,7 @@
 #include <filesystem>
 
 namespace rtpro::regression {
-namespace {
+namespace reference_inventory_test {
 
 TEST(RegressionReferences, EverySceneHasAReference) {
   for (const auto& scene : scene_files()) {
@@ -30,5 +30,5 @@ TEST(RegressionReferences, EveryReferenceHasAScene) {
   }
 }
 
-}  // namespace
+}  // namespace reference_inventory_test
 }  // namespace rtpro::regression

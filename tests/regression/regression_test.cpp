@@ -31,7 +31,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace regression_test {
 
 namespace fs = std::filesystem;
 using regression::reference_file;
@@ -182,5 +182,5 @@ TEST_P(RegressionTest, MatchesReference) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, RegressionTest, testing::ValuesIn(regression_cases()), case_test_name);
 
-}  // namespace
+}  // namespace regression_test
 }  // namespace rtpro

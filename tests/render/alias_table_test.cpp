@@ -6,7 +6,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace alias_table_test {
 
 TEST(AliasTable, PicksInProportionToWeight) {
   const std::vector<float> weights{1.0f, 0.0f, 3.0f, 0.5f, 10.0f, 0.25f};
@@ -51,5 +51,5 @@ TEST(AliasTable, NoWeightMakesAnEmptyTable) {
   EXPECT_THROW(AliasTable(std::vector<float>{1.0f, -1.0f}), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace alias_table_test
 }  // namespace rtpro

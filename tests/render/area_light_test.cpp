@@ -13,7 +13,7 @@
 #include <numbers>
 
 namespace rtpro {
-namespace {
+namespace area_light_test {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -175,5 +175,5 @@ TEST(AreaLight, BadAreaLightsAreRefusedAtTheirLocation) {
   EXPECT_EQ(error_of("{type: quad, position: [0, 1, 0], edge1: [1, 0, 0], edge2: [0, 0, 1], samples: 3}"), "no error");
 }
 
-}  // namespace
+}  // namespace area_light_test
 }  // namespace rtpro

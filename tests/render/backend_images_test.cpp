@@ -11,7 +11,7 @@
 #include <random>
 
 namespace rtpro {
-namespace {
+namespace backend_images_test {
 
 Image render(const RenderScene& scene, BackendKind kind, int threads) {
   tbb::global_control cap(tbb::global_control::max_allowed_parallelism, threads);
@@ -40,5 +40,5 @@ TEST(BackendImages, RandomSpheresGiveFourIdenticalImages) {
     }
 }
 
-}  // namespace
+}  // namespace backend_images_test
 }  // namespace rtpro

@@ -7,7 +7,7 @@
 #include <cmath>
 
 namespace rtpro {
-namespace {
+namespace beer_lambert_test {
 
 TEST(BeerLambert, ReachesStatedColourAtStatedDistance) {
   const Vec3 colour{0.8f, 0.5f, 0.25f};
@@ -30,5 +30,5 @@ TEST(BeerLambert, ComposesMultiplicatively) {
   EXPECT_NEAR(whole.z, std::exp(-std::log(0.3f) / -1.5f * 3.7f), 1e-6f);
 }
 
-}  // namespace
+}  // namespace beer_lambert_test
 }  // namespace rtpro

@@ -9,7 +9,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace bsdf_test {
 
 TEST(Bsdf, DeltaOnlyWhenEveryLobeIsSpecular) {
   EXPECT_FALSE(bsdf_is_delta(DiffuseBsdf{Color(0.5f)}));
@@ -65,5 +65,5 @@ TEST(Bsdf, DispatchesToTheHeldKind) {
   expect_dispatch_matches(PrincipledBsdf(layered));
 }
 
-}  // namespace
+}  // namespace bsdf_test
 }  // namespace rtpro

@@ -15,7 +15,7 @@
 #include <random>
 
 namespace rtpro {
-namespace {
+namespace camera_test {
 
 RenderCamera lens_camera(float aperture, float focus_distance) {
   CameraDesc desc;
@@ -163,5 +163,5 @@ TEST(Camera, ThePlaneInFocusStaysSharpAndTheRestBlurs) {
   EXPECT_GT(far, 5.0 * near + 0.01) << "the sphere far behind the plane in focus did not blur";
 }
 
-}  // namespace
+}  // namespace camera_test
 }  // namespace rtpro

@@ -17,7 +17,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace conductor_bsdf_test {
 
 // Gold at roughly 650, 550 and 450 nm.
 const Color kGoldEta{0.143f, 0.374f, 1.442f};
@@ -182,5 +182,5 @@ TEST(ConductorBsdf, FresnelAverageIsTheCosineWeightedMean) {
   }
 }
 
-}  // namespace
+}  // namespace conductor_bsdf_test
 }  // namespace rtpro

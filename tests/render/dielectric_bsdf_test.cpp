@@ -14,7 +14,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace dielectric_bsdf_test {
 
 constexpr float kGlass = 1.5f;
 
@@ -202,5 +202,5 @@ TEST(DielectricBsdf, NeverCreatesEnergy) {
     }
 }
 
-}  // namespace
+}  // namespace dielectric_bsdf_test
 }  // namespace rtpro

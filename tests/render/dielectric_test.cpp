@@ -7,7 +7,7 @@
 #include <cmath>
 
 namespace rtpro {
-namespace {
+namespace dielectric_test {
 
 TEST(Dielectric, NormalIncidenceMatchesClosedForm) {
   for (float eta : {1.33f, 1.5f, 2.4f}) {
@@ -50,5 +50,5 @@ TEST(Dielectric, SlabLeavesRayParallelAndObeysSnell) {
   EXPECT_NEAR(out->y, d.y, 1e-6f);
 }
 
-}  // namespace
+}  // namespace dielectric_test
 }  // namespace rtpro

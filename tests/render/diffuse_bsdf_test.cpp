@@ -10,7 +10,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace diffuse_bsdf_test {
 
 const DiffuseBsdf kBsdf{{0.8f, 0.5f, 0.2f}};
 
@@ -59,5 +59,5 @@ TEST(DiffuseBsdf, AlbedoIsTheReflectance) {
   }
 }
 
-}  // namespace
+}  // namespace diffuse_bsdf_test
 }  // namespace rtpro

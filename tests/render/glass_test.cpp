@@ -11,7 +11,7 @@
 #include <string>
 
 namespace rtpro {
-namespace {
+namespace glass_test {
 
 // One sphere of `material` filling the middle of a 32x32 image under a uniform sky, no lights:
 // every path ends in the sky, so what a pixel shows is the sky times what the glass let through.
@@ -85,5 +85,5 @@ TEST(Glass, BadIndicesAndAbsorptionWithoutGlassAreInputErrors) {
   }
 }
 
-}  // namespace
+}  // namespace glass_test
 }  // namespace rtpro

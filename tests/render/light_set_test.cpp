@@ -13,7 +13,7 @@
 #include <random>
 
 namespace rtpro {
-namespace {
+namespace light_set_test {
 
 RenderScene lit_scene() {
   return build_render_scene(parse_scene_text(R"(
@@ -97,5 +97,5 @@ TEST(LightSet, PdfOfASphereLightIntegratesToOne) {
   }
 }
 
-}  // namespace
+}  // namespace light_set_test
 }  // namespace rtpro

@@ -12,7 +12,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace microfacet_test {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -134,5 +134,5 @@ TEST(Microfacet, AverageAlbedoIsTheCosineWeightedMeanOfTheLookup) {
   EXPECT_GT(ggx_average_albedo(0.5f), ggx_average_albedo(1.0f));
 }
 
-}  // namespace
+}  // namespace microfacet_test
 }  // namespace rtpro

@@ -18,7 +18,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace path_integrator_test {
 
 RenderScene scene_from(const std::string& yaml, const std::vector<std::string>& overrides = {}) {
   return build_render_scene(parse_scene_text(yaml, "test.yaml", overrides));
@@ -315,5 +315,5 @@ TEST(PathIntegratorBackends, SphereScenesAreBitIdenticalAcrossBackends) {
   EXPECT_EQ(std::memcmp(native.data.data(), embree.data.data(), native.data.size() * sizeof(float)), 0);
 }
 
-}  // namespace
+}  // namespace path_integrator_test
 }  // namespace rtpro

@@ -13,7 +13,7 @@
 #include <random>
 
 namespace rtpro {
-namespace {
+namespace point_light_lanes_test {
 
 std::uint32_t bits(float v) { return std::bit_cast<std::uint32_t>(v); }
 
@@ -94,5 +94,5 @@ TEST(PointLightLanes, EveryLaneIsTheScalarChainUnderTheTracingFloatingPointMode)
   test::in_tracing_fp_mode(expect_lanes_are_the_scalar_chain);
 }
 
-}  // namespace
+}  // namespace point_light_lanes_test
 }  // namespace rtpro

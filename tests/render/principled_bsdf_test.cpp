@@ -21,7 +21,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace principled_bsdf_test {
 
 // Fewer than the other kinds' χ² runs: eight stacks, and every sample evaluates all the lobes.
 constexpr int kChi2Samples = 200'000;
@@ -350,5 +350,5 @@ TEST(PrincipledBsdf, SmoothGlassSplitsEnergyByFresnel) {
   }
 }
 
-}  // namespace
+}  // namespace principled_bsdf_test
 }  // namespace rtpro

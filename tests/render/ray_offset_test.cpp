@@ -20,7 +20,7 @@
 #include <random>
 
 namespace rtpro {
-namespace {
+namespace ray_offset_test {
 
 struct ScaleCase {
   float extent;
@@ -120,11 +120,11 @@ TEST(RayOffset, OriginMovesToTheSideTheRayLeavesFrom) {
   EXPECT_LT(offset_ray_origin(sp, {0, 0, -1}).z, 0.0f);
 }
 
-}  // namespace
+}  // namespace ray_offset_test
 }  // namespace rtpro
 
 namespace rtpro {
-namespace {
+namespace ray_offset_test {
 
 // The whole check, run in the default floating-point mode and in the one tracing threads use.
 void expect_rounding_away_from_the_surface() {
@@ -193,5 +193,5 @@ TEST(RayOffset, SseOffsetIsThePerAxisDefinitionUnderTheTracingFloatingPointMode)
   test::in_tracing_fp_mode(expect_sse_offset_equals_per_axis_definition);
 }
 
-}  // namespace
+}  // namespace ray_offset_test
 }  // namespace rtpro

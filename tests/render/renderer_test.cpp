@@ -10,7 +10,7 @@
 #include <cstring>
 
 namespace rtpro {
-namespace {
+namespace renderer_test {
 
 RenderScene test_scene() {
   RenderScene scene = test::random_mixed_scene(21, 300, 300, 10);
@@ -131,5 +131,5 @@ TEST(Renderer, AovLayersHavePlausibleValues) {
   EXPECT_GT(hit_pixels, 100);
 }
 
-}  // namespace
+}  // namespace renderer_test
 }  // namespace rtpro

@@ -10,7 +10,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace sampler_test {
 
 TEST(StratifiedSampler, OneSamplePerStratum) {
   for (int n : {1, 2, 3, 8}) {
@@ -161,5 +161,5 @@ TEST(StratifiedSampler, OneDimensionalValuesFillEveryStratum) {
   EXPECT_EQ(strata.size(), 16u);
 }
 
-}  // namespace
+}  // namespace sampler_test
 }  // namespace rtpro

@@ -9,7 +9,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace shading_frame_test {
 
 std::vector<Vec3> test_normals() {
   std::vector<Vec3> normals{{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {0, -1, 0}, normalize(Vec3{1e-4f, 0, -1})};
@@ -46,5 +46,5 @@ TEST(ShadingFrame, NormalBecomesZAndRoundTrips) {
   }
 }
 
-}  // namespace
+}  // namespace shading_frame_test
 }  // namespace rtpro

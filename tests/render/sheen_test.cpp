@@ -11,7 +11,7 @@
 #include <numbers>
 
 namespace rtpro {
-namespace {
+namespace sheen_test {
 
 template <class Lobe>
 double integrate_albedo(const Lobe& lobe, float mu) {
@@ -75,5 +75,5 @@ TEST(Sheen, BoundedLobeNeverReflectsMoreThanItReceives) {
   }
 }
 
-}  // namespace
+}  // namespace sheen_test
 }  // namespace rtpro

@@ -9,7 +9,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace sobol_sampler_test {
 
 TEST(SobolSampler, FirstTwoDimensionsAreTheSobolMatrices) {
   using namespace sobol_detail;
@@ -84,5 +84,5 @@ TEST(SobolSampler, ValuesDependOnlyOnSeedPixelSampleAndDimension) {
   EXPECT_LT(same, 3);
 }
 
-}  // namespace
+}  // namespace sobol_sampler_test
 }  // namespace rtpro

@@ -12,7 +12,7 @@
 #include <numbers>
 
 namespace rtpro {
-namespace {
+namespace specular_albedo_test {
 
 float schlick(float f0, float f90, float cos_theta) {
   const float m = 1.0f - cos_theta;
@@ -69,5 +69,5 @@ TEST(SpecularAlbedo, AverageIsTheCosineWeightedMeanOfTheLookup) {
   }
 }
 
-}  // namespace
+}  // namespace specular_albedo_test
 }  // namespace rtpro

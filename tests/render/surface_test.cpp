@@ -14,7 +14,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace surface_test {
 
 std::uint32_t bits(float v) { return std::bit_cast<std::uint32_t>(v); }
 
@@ -177,5 +177,5 @@ TEST(Surface, OnlyTopLevelTrianglesWithoutImageTexturesArePlain) {
   });
 }
 
-}  // namespace
+}  // namespace surface_test
 }  // namespace rtpro

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 namespace rtpro {
-namespace {
+namespace texture_test {
 
 const Color kEven{0.9f, 0.8f, 0.7f}, kOdd{0.1f, 0.2f, 0.3f};
 
@@ -51,5 +51,5 @@ TEST(Texture, ASolidCheckerAlternatesAlongEveryAxis) {
   EXPECT_EQ(evaluate(solid, at({1.5f, 1.5f, 1.5f}), nullptr), kOdd);
 }
 
-}  // namespace
+}  // namespace texture_test
 }  // namespace rtpro

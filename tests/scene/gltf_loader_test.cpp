@@ -15,7 +15,7 @@
 #include <string>
 
 namespace rtpro {
-namespace {
+namespace gltf_loader_test {
 
 using test::GltfFile;
 
@@ -251,5 +251,5 @@ TEST(GltfHostile, DeepJsonAndForeignFilesAreRefusedBeforeParsing) {
   EXPECT_FALSE(error_of(test::write_file("broken.gltf", "{\"asset\": ")).empty());
 }
 
-}  // namespace
+}  // namespace gltf_loader_test
 }  // namespace rtpro

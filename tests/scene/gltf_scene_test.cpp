@@ -13,7 +13,7 @@
 #include <variant>
 
 namespace rtpro {
-namespace {
+namespace gltf_scene_test {
 
 using test::GltfFile;
 
@@ -211,5 +211,5 @@ TEST(GltfScene, InfoShowsLoaderWarningsAndNoInfiniteBoundsForAnEmptyMesh) {
   EXPECT_NE(output.find("\"bounds\": null"), std::string::npos) << output;
 }
 
-}  // namespace
+}  // namespace gltf_scene_test
 }  // namespace rtpro

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 namespace rtpro {
-namespace {
+namespace image_texture_test {
 
 std::string scene_with(const std::string& material) {
   return "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\nmaterials:\n  m: " + material +
@@ -72,5 +72,5 @@ TEST(ImageTexture, MissingMapKdIsRefusedAtItsMtlLine) {
   EXPECT_EQ(scene.textures[0].file.filename(), "wood.png");
 }
 
-}  // namespace
+}  // namespace image_texture_test
 }  // namespace rtpro

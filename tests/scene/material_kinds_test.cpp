@@ -8,7 +8,7 @@
 #include <string>
 
 namespace rtpro {
-namespace {
+namespace material_kinds_test {
 
 const std::string kHeader =
     "rtpro: 1\n"
@@ -123,5 +123,5 @@ TEST(MaterialKinds, RenderIntegratorAndSamplingAreReadAndChecked) {
   EXPECT_NE(error_of("render: {sampling: both}\n").find("must be mis, light or bsdf"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace material_kinds_test
 }  // namespace rtpro

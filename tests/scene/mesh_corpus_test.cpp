@@ -16,7 +16,7 @@
 #include <string>
 
 namespace rtpro {
-namespace {
+namespace mesh_corpus_test {
 
 namespace fs = std::filesystem;
 
@@ -179,5 +179,5 @@ TEST_F(AssimpCorpus, TheTableListsEveryObjPlyAndGltfFile) {
   }
 }
 
-}  // namespace
+}  // namespace mesh_corpus_test
 }  // namespace rtpro

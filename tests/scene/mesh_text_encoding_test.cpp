@@ -6,7 +6,7 @@
 #include <string>
 
 namespace rtpro {
-namespace {
+namespace mesh_text_encoding_test {
 
 using namespace std::string_literals;
 
@@ -33,5 +33,5 @@ TEST(QuotedWords, ControlBytesAreEscapedAndLongWordsCut) {
   EXPECT_EQ(quoted, "'" + std::string(ascii::kMaxQuotedBytes, 'x') + "' (cut: 1000 bytes)");
 }
 
-}  // namespace
+}  // namespace mesh_text_encoding_test
 }  // namespace rtpro

@@ -7,7 +7,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace mesh_triangulation_test {
 
 struct P2 {
   double x, y;
@@ -175,5 +175,5 @@ TEST(PolygonTriangulation, HugeConcavePolygonsAreFannedInsteadOfTakingMinutes) {
   EXPECT_EQ(out.size() + result.dropped, comb.size() - 2);
 }
 
-}  // namespace
+}  // namespace mesh_triangulation_test
 }  // namespace rtpro

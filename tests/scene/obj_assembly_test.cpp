@@ -9,7 +9,7 @@
 #include <string>
 
 namespace rtpro {
-namespace {
+namespace obj_assembly_test {
 
 using test::write_file;
 
@@ -198,5 +198,5 @@ f 1//2 3//2 2//2
   EXPECT_EQ(corner_normal(mesh, 2, 0), Vec3(0, 0, -1));
 }
 
-}  // namespace
+}  // namespace obj_assembly_test
 }  // namespace rtpro

@@ -12,7 +12,7 @@
 #include <string>
 
 namespace rtpro {
-namespace {
+namespace obj_materials_test {
 
 using test::mesh_load_error;
 using test::write_file;
@@ -143,5 +143,5 @@ TEST(ObjHardening, MaterialLibraryBehindASymlinkMustStayInsideTheFolder) {
   EXPECT_NO_THROW(load_mesh_file(write_file("model/c.obj", std::string("mtllib inside.mtl\n") + kTriangle)));
 }
 
-}  // namespace
+}  // namespace obj_materials_test
 }  // namespace rtpro

@@ -14,7 +14,7 @@
 #include <string>
 
 namespace rtpro {
-namespace {
+namespace obj_parser_test {
 
 using test::mesh_load_error;
 using test::write_file;
@@ -427,5 +427,5 @@ TEST(ObjLoader, ChunkedParseReportsTheFirstErrorWithItsFileLine) {
   }
 }
 
-}  // namespace
+}  // namespace obj_parser_test
 }  // namespace rtpro

@@ -13,7 +13,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace ply_parser_test {
 
 using test::mesh_load_error;
 using test::write_file;
@@ -259,5 +259,5 @@ TEST(PlyLoader, EmptyAndWideFilesAreRefusedClearly) {
   EXPECT_NE(mesh_load_error(write_file("wide.ply", wide)).message().find("UTF-16"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace ply_parser_test
 }  // namespace rtpro

@@ -8,7 +8,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace scene_parser_test {
 
 // Two lines; test documents add their own lines from line 3.
 const std::string kHeader =
@@ -623,5 +623,5 @@ TEST(SceneParserOverrides, ErrorsNameTheOverride) {
   check_override_error("camera.resolution=[1, 2", {"YAML syntax error"});
 }
 
-}  // namespace
+}  // namespace scene_parser_test
 }  // namespace rtpro

@@ -11,7 +11,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace shipped_scenes_test {
 
 std::vector<std::filesystem::path> shipped_scenes() {
   std::vector<std::filesystem::path> scenes;
@@ -75,5 +75,5 @@ TEST(ShippedScenes, InstancingNestsOneLevel) {
   EXPECT_LE(instance_entries, 50u);
 }
 
-}  // namespace
+}  // namespace shipped_scenes_test
 }  // namespace rtpro

@@ -12,7 +12,7 @@
 #include <string>
 
 namespace rtpro {
-namespace {
+namespace yaml_document_test {
 
 const YamlNode& value_of(const YamlNode& mapping, std::string_view key) {
   const YamlEntry* entry = mapping.find(key);
@@ -132,5 +132,5 @@ TEST(YamlDocument, VariablesAreSubstitutedIntoNewNodesAndRemoved) {
   EXPECT_EQ(value_of(root, "greeting").at.line, 3);
 }
 
-}  // namespace
+}  // namespace yaml_document_test
 }  // namespace rtpro

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace rtpro {
-namespace {
+namespace yaml_expansion_test {
 
 const std::string kScene = "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0], fov: 40, resolution: [8, 8]}\n";
 
@@ -65,5 +65,5 @@ TEST(YamlIncludes, IncludedErrorsNameTheIncludedFile) {
             std::string::npos);
 }
 
-}  // namespace
+}  // namespace yaml_expansion_test
 }  // namespace rtpro

@@ -8,7 +8,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace {
+namespace yaml_node_arena_test {
 
 TEST(YamlNodeArena, TextAndListsAreCopiesThatOutliveTheirSources) {
   YamlNodeArena arena;
@@ -90,5 +90,5 @@ TEST(YamlNodeArena, EarlierNodesAndTextSurviveManyBlocks) {
   }
 }
 
-}  // namespace
+}  // namespace yaml_node_arena_test
 }  // namespace rtpro

@@ -9,12 +9,16 @@
 // otherwise all be infinite or NaN and say nothing about the rest of the image.
 #include "rtpro/image/image.h"
 
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace rtpro {
+
+// Two channel values not finite both: the same infinity, or NaN both (whatever their payloads).
+inline bool same_non_finite(float a, float b) { return (std::isnan(a) && std::isnan(b)) || a == b; }
 
 struct CompareThresholds {
   // The defaults follow idiff: anything above float rounding noise fails.

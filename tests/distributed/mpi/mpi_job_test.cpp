@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 namespace rtpro {
-namespace {
+namespace mpi_job_test {
 
 using test::rtpro_executable;
 using test::expect_same_pixels;
@@ -183,5 +183,5 @@ TEST(MpiJob, KilledRankEndsTheJobAndResumeFinishesItExactly) {
   EXPECT_FALSE(std::filesystem::exists(journal));
 }
 
-}  // namespace
+}  // namespace mpi_job_test
 }  // namespace rtpro
