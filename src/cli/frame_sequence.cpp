@@ -42,6 +42,9 @@ FrameRange parse_frame_range(const std::string& text) {
     throw InputError(usage);
   }
   if (range.step < 1) throw InputError("--frames '" + text + "': the step must be at least 1");
+  // A longer step never reaches a second frame, and stepping past the last frame would overflow.
+  if (range.step > kMaxFrameNumber)
+    throw InputError("--frames '" + text + "': the step must be at most " + std::to_string(kMaxFrameNumber));
   if (range.first < 0 || range.last > kMaxFrameNumber)
     throw InputError("--frames '" + text + "': frame numbers go from 0 to " + std::to_string(kMaxFrameNumber));
   if (range.first > range.last)

@@ -14,7 +14,7 @@ struct FrameRange {
 };
 
 // Throws InputError naming --frames for anything but FIRST-LAST[:STEP] or N, FIRST <= LAST,
-// STEP >= 1, and at most kMaxFrames frames.
+// STEP from 1 to the largest frame number, and at most kMaxFrames frames.
 FrameRange parse_frame_range(const std::string& text);
 
 // Whether `output` holds a run of '#' (a frame number pattern).

@@ -32,6 +32,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cctype>
 #include <charconv>
@@ -150,7 +151,13 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   render_options.region = parse_region(o.region);
   if (o.tile_size < 1) throw InputError("--tile-size must be at least 1 pixel, got " + std::to_string(o.tile_size));
   render_options.tile_size = o.tile_size;
-  for (const std::string& name : o.aovs) render_options.aovs.push_back(parse_aov(name));
+  for (const std::string& name : o.aovs) {
+    const Aov aov = parse_aov(name);
+    // Refused now, not by the image writer after the render: each layer's channels appear once.
+    if (std::find(render_options.aovs.begin(), render_options.aovs.end(), aov) != render_options.aovs.end())
+      throw InputError("--aov " + name + " is given twice");
+    render_options.aovs.push_back(aov);
+  }
   const OutputTarget output(o.output, o.format);
   check_exposure(o.exposure);
   const std::optional<DisplayServerAddress> display_server =

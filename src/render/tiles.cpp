@@ -4,11 +4,13 @@
 
 namespace rtpro {
 
+// A tile larger than the region covers it all the same; clamped, the sums below stay within int
+// (--tile-size 2147483647 overflowed them into a grid of no tiles).
 TileGrid::TileGrid(const PixelRegion& region, int tile_size)
     : region_(region),
-      tile_size_(tile_size),
-      columns_(static_cast<std::size_t>((region.width() + tile_size - 1) / tile_size)),
-      rows_(static_cast<std::size_t>((region.height() + tile_size - 1) / tile_size)) {}
+      tile_size_(std::min(tile_size, std::max({region.width(), region.height(), 1}))),
+      columns_(static_cast<std::size_t>((region.width() + tile_size_ - 1) / tile_size_)),
+      rows_(static_cast<std::size_t>((region.height() + tile_size_ - 1) / tile_size_)) {}
 
 PixelRegion TileGrid::tile(std::size_t index) const {
   const int x0 = region_.x0 + static_cast<int>(index % columns_) * tile_size_;

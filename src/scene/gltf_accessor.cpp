@@ -153,6 +153,8 @@ std::vector<TexCoord> AccessorReader::texcoords(int accessor, const std::string&
                       {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
   std::vector<TexCoord> out;
   out.reserve(v.count);
+  // glTF's v grows down the image; rtpro's texture coordinates are OBJ's and PLY's (v up), which
+  // the texture lookup turns back. Flipped here and nowhere else.
   for (const auto& uv : floats<2>(v)) out.push_back({uv[0], 1.0f - uv[1]});
   return out;
 }

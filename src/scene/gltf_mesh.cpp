@@ -108,11 +108,7 @@ class MeshBuilder {
       }
     }
     if (const auto uv = prim.attributes.find("TEXCOORD_0"); uv != prim.attributes.end())
-    {
       p.uvs = read_sized(reader_.texcoords(uv->second, path + ".attributes.TEXCOORD_0"), vertex_count, path + ".attributes.TEXCOORD_0");
-      // glTF's v grows down the image; rtpro's texture coordinates are OBJ's and PLY's (v up).
-      for (TexCoord& t : p.uvs) t.v = 1.0f - t.v;
-    }
     if (const auto c = prim.attributes.find("COLOR_0"); c != prim.attributes.end())
       p.colors = read_sized(reader_.colors(c->second, path + ".attributes.COLOR_0"), vertex_count, path + ".attributes.COLOR_0");
     primitives_.push_back(std::move(p));

@@ -126,6 +126,9 @@ TEST(FrameSequence, PatternAndRangeMistakesAreRefused) {
   EXPECT_NE(out.find("the first frame is after the last"), std::string::npos) << out;
   out = run_rtpro("render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 1-3:0", 2);
   EXPECT_NE(out.find("the step must be at least 1"), std::string::npos) << out;
+  out = run_rtpro("render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 5-5:9223372036854775807", 2);
+  EXPECT_NE(out.find("--frames '5-5:9223372036854775807': the step must be at most 99999999"), std::string::npos)
+      << out;
   out = run_rtpro("render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 1-3 -D frame=2", 2);
   EXPECT_NE(out.find("--frames sets the frame"), std::string::npos) << out;
   EXPECT_FALSE(std::filesystem::exists(dir / "x_01.exr"));

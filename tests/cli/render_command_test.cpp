@@ -1,5 +1,6 @@
 // End-to-end tests of `rtpro render` and `rtpro info`, running the real binary.
 #include "rtpro/image/image_io.h"
+#include "test_fixtures.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -67,6 +68,16 @@ TEST(RenderCommand, SameImageAtOneAndTwoThreads) {
   EXPECT_GT(sum, 10.0f);
 }
 
+TEST(RenderCommand, SameImageWithATileLargerThanTheImage) {
+  const auto scene = test::write_file("scene.yaml", kSmallScene);
+  const auto dir = scene.parent_path();
+  const std::string base = rtpro_cmd("render " + scene.string() + " -q -o ");
+  std::string out;
+  ASSERT_EQ(run_command(base + (dir / "default.exr").string(), &out), 0) << out;
+  ASSERT_EQ(run_command(base + (dir / "one_tile.exr").string() + " --tile-size 2147483647", &out), 0) << out;
+  test::expect_same_pixels(dir / "default.exr", dir / "one_tile.exr");
+}
+
 TEST(RenderCommand, StatsJsonParsesAndCountsAddUp) {
   const auto scene = test::write_file("scene.yaml", kSmallScene);
   const auto dir = scene.parent_path();
@@ -131,6 +142,14 @@ TEST(RenderCommand, AovLayersAreWrittenWithCompositorNames) {
                            "object_id.id"})
     EXPECT_NE(std::find(image.channels.begin(), image.channels.end(), name), image.channels.end()) << name;
   EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -q -o " + file.string() + " --aov bogus"), &out), 2);
+  // A layer asked for twice is refused before the render, not when the image is written.
+  const auto twice = scene.parent_path() / "twice.exr";
+  EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -q -o " + twice.string() + " --aov depth,albedo,depth"),
+                        &out),
+            2)
+      << out;
+  EXPECT_NE(out.find("--aov depth"), std::string::npos) << out;
+  EXPECT_FALSE(std::filesystem::exists(twice));
 }
 
 TEST(RenderCommand, BadInputsFailCleanlyAndLeaveNoFile) {

@@ -77,6 +77,24 @@ TEST(Crosscheck, InstancedScenesAgreeWithinTolerance) {
   }
 }
 
+// The random rays of a flat scene all start in its plane, and Embree's triangles report a hit at
+// t = ±0 where rtpro's interval (tnear, tfar] is open: whether a ray hits the surface it starts on
+// is rounding, not a disagreement.
+TEST(Crosscheck, AOneTriangleSceneAgreesThoughRandomRaysStartOnIt) {
+  RenderScene scene = test::empty_scene();
+  TriangleMesh triangle;
+  triangle.vertices = {{-4.0f, -3.0f, 0.0f, 0.0f}, {4.0f, -3.0f, 0.0f, 0.0f}, {0.0f, 3.0f, 0.0f, 0.0f}};
+  triangle.triangles = {{0, 1, 2}};
+  scene.top.geometries.emplace_back(std::move(triangle));
+  ASSERT_EQ(scene.bounds().extent().z, 0.0f);
+  const CrosscheckReport report = check_backends(scene, 1000, 1);
+  EXPECT_TRUE(report.passed()) << summary(report);
+  EXPECT_EQ(report.ambiguous, 0u) << summary(report);
+  // Not vacuous: the camera rays that hit the triangle (a third of the view) each ask two more
+  // occlusion questions, around their hit.
+  EXPECT_GT(report.occlusion_queries, report.rays + report.rays / 10) << summary(report);
+}
+
 // A backend that is right except for one thing the checker must catch.
 class Perturbed final : public Backend {
  public:

@@ -8,6 +8,7 @@
 #include <tbb/global_control.h>
 
 #include <cstring>
+#include <limits>
 
 namespace rtpro {
 namespace renderer_test {
@@ -58,8 +59,11 @@ TEST(Renderer, ImageIsIndependentOfThreadsAndTiles) {
   const RenderResult one = render_with(scene, 1, 32);
   const RenderResult two = render_with(scene, 2, 32);
   const RenderResult odd_tiles = render_with(scene, 2, 7);
+  const RenderResult one_tile = render_with(scene, 2, std::numeric_limits<int>::max());
   EXPECT_TRUE(bit_identical(one.image, two.image));
   EXPECT_TRUE(bit_identical(one.image, odd_tiles.image));
+  EXPECT_TRUE(bit_identical(one.image, one_tile.image));
+  EXPECT_EQ(one_tile.tiles_total, 1u);
   EXPECT_EQ(one.rays.total(), two.rays.total());
   EXPECT_EQ(one.rays.camera, 48u * 32u * 4u);
   EXPECT_GT(one.rays.shadow, 0u);

@@ -76,6 +76,27 @@ TEST(GltfLoader, IndexedStripsAndFansKeepTheirWinding) {
   }
 }
 
+// glTF's v runs down the image from its top edge; rtpro's, like OBJ's and PLY's, runs up from the
+// bottom edge, which the texture lookup turns back: the loader flips v exactly once.
+TEST(GltfLoader, TexcoordsHaveTheirVFlippedOnce) {
+  GltfFile gltf;
+  const int positions = gltf.floats(kTriangle, "VEC3");
+  const int uvs = gltf.floats({0, 0, 1, 0.25f, 0.5f, 1}, "VEC2");
+  const int mesh = gltf.mesh(positions);
+  gltf.json["meshes"][mesh]["primitives"][0]["attributes"]["TEXCOORD_0"] = uvs;
+  gltf.scene({gltf.node({{"mesh", mesh}})});
+  const GltfAsset asset = load_gltf_file(gltf.write("uvs"));
+  ASSERT_EQ(asset.meshes.size(), 1u);
+  const std::vector<TexCoord>& loaded = asset.meshes[0].uvs;
+  ASSERT_EQ(loaded.size(), 3u);
+  EXPECT_EQ(loaded[0].u, 0.0f);
+  EXPECT_EQ(loaded[0].v, 1.0f);
+  EXPECT_EQ(loaded[1].u, 1.0f);
+  EXPECT_EQ(loaded[1].v, 0.75f);
+  EXPECT_EQ(loaded[2].u, 0.5f);
+  EXPECT_EQ(loaded[2].v, 0.0f);
+}
+
 TEST(GltfLoader, LinesAreSkippedWithAWarningNamingThePrimitive) {
   GltfFile gltf;
   gltf.scene({gltf.node({{"mesh", gltf.mesh(gltf.floats(kTriangle, "VEC3"), -1, 1)}})});

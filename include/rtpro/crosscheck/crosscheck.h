@@ -1,7 +1,8 @@
 #pragma once
 // Cross-checking two backends on the same scene — the point of having two. Rays (camera rays
-// through the scene camera, plus random rays from inside the scene bounds) go to both; their
-// closest hits and occlusion answers are compared under rules that say how far they may differ:
+// through the scene camera, plus random rays from inside the scene bounds, starting just past
+// their origin) go to both; their closest hits and occlusion answers are compared under rules that
+// say how far they may differ:
 //
 // - Top-level spheres: both backends call the same intersect_sphere with the same floats, so
 //   the distance bits and ids must be identical.

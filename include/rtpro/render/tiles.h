@@ -25,6 +25,8 @@ struct PixelRegion {
 };
 
 // Row-major tiles of `tile_size` pixels covering `region`; the last row and column may be smaller.
+// A tile size beyond the region's larger side is clamped to it (one tile either way), and
+// tile_size() is the clamped size.
 class TileGrid {
  public:
   TileGrid(const PixelRegion& region, int tile_size);
