@@ -1,6 +1,7 @@
 #pragma once
-// Statistical checks shared by the BSDF tests: pbrt's χ² test of a sampler against its pdf, and
-// the albedo a sampler estimates. Deterministic: every random number comes from mix64 of a seed.
+// Statistical checks shared by the BSDF tests: pbrt's χ² test of a sampler against its pdf (the
+// light set's test uses it too), and the albedo a sampler estimates. Deterministic: every random
+// number comes from mix64 of a seed.
 #include "rtpro/core/random.h"
 #include "rtpro/core/vec3.h"
 #include "rtpro/render/sampler.h"
@@ -129,12 +130,20 @@ double gauss_legendre_cell(PdfFn& pdf, double theta0, double theta1, double phi0
   return 0.25 * (theta1 - theta0) * (phi1 - phi0) * sum;
 }
 
+// Where a caller says the quarters' agreement cannot be trusted, given (θ0, θ1, φ0, φ1) of a cell
+// or part of one. Nowhere for the BSDFs.
+struct NoForcedSplits {
+  bool operator()(double, double, double, double) const { return false; }
+};
+
 // Adaptive: a cell is split in four while its quarters disagree with the whole, because pdfs
 // jump inside cells too (where the facet joining wo and wi turns its back on one of them) and peak
-// within a cell at small α, and a fixed rule misses there by more than the counts' noise.
-template <class PdfFn>
+// within a cell at small α, and a fixed rule misses there by more than the counts' noise. A pdf
+// whose support can be thinner than the nodes' spacing (a light seen edge-on) is also split where
+// `must_split` says its support's boundary runs, because there all nodes may read zero.
+template <class PdfFn, class SplitFn = NoForcedSplits>
 double integrate_over_cell(PdfFn& pdf, double theta0, double theta1, double phi0, double phi1, double whole,
-                           int depth = 6) {
+                           int depth = 6, const SplitFn& must_split = {}) {
   const double theta_mid = 0.5 * (theta0 + theta1), phi_mid = 0.5 * (phi0 + phi1);
   const std::array<std::array<double, 4>, 4> quarters{{{theta0, theta_mid, phi0, phi_mid},
                                                        {theta0, theta_mid, phi_mid, phi1},
@@ -146,11 +155,13 @@ double integrate_over_cell(PdfFn& pdf, double theta0, double theta1, double phi0
     parts[q] = gauss_legendre_cell(pdf, quarters[q][0], quarters[q][1], quarters[q][2], quarters[q][3]);
     sum += parts[q];
   }
-  if (depth == 0 || std::fabs(sum - whole) <= 1e-9 + 1e-4 * sum) return sum;
+  if (depth == 0 ||
+      (std::fabs(sum - whole) <= 1e-9 + 1e-4 * sum && !must_split(theta0, theta1, phi0, phi1)))
+    return sum;
   double refined = 0.0;
   for (int q = 0; q < 4; ++q)
     refined += integrate_over_cell(pdf, quarters[q][0], quarters[q][1], quarters[q][2], quarters[q][3], parts[q],
-                                   depth - 1);
+                                   depth - 1, must_split);
   return refined;
 }
 
@@ -160,9 +171,11 @@ inline constexpr int kPhiBins = 160;
 // pbrt's χ² test (src/pbrt/bsdfs_test.cpp, from Mitsuba): histogram `sample_count` samples over
 // kThetaBins × kPhiBins bins of the sphere, integrate pdf() over each bin for the expected counts,
 // pool the bins expecting fewer than 5, and return the p-value of the observed counts.
-// `sample(u_lobe, u)` returns a unit direction or nothing; `pdf(w)` its density per solid angle.
-template <class SampleFn, class PdfFn>
-Chi2Outcome chi2_test(SampleFn&& sample, PdfFn&& pdf, int sample_count, std::uint64_t seed) {
+// `sample(u_lobe, u)` returns a unit direction or nothing; `pdf(w)` its density per solid angle;
+// `must_split` as integrate_over_cell reads it.
+template <class SampleFn, class PdfFn, class SplitFn = NoForcedSplits>
+Chi2Outcome chi2_test(SampleFn&& sample, PdfFn&& pdf, int sample_count, std::uint64_t seed,
+                      const SplitFn& must_split = {}) {
   constexpr double kPi = std::numbers::pi;
   constexpr int kBins = kThetaBins * kPhiBins;
   Chi2Outcome outcome;
@@ -190,7 +203,7 @@ Chi2Outcome chi2_test(SampleFn&& sample, PdfFn&& pdf, int sample_count, std::uin
     for (int p = 0; p < kPhiBins; ++p) {
       const double theta0 = t * d_theta, theta1 = (t + 1) * d_theta, phi0 = p * d_phi, phi1 = (p + 1) * d_phi;
       const double whole = gauss_legendre_cell(pdf, theta0, theta1, phi0, phi1);
-      const double integral = integrate_over_cell(pdf, theta0, theta1, phi0, phi1, whole);
+      const double integral = integrate_over_cell(pdf, theta0, theta1, phi0, phi1, whole, 6, must_split);
       outcome.pdf_integral += integral;
       expected[t * kPhiBins + p] = integral * sample_count;
     }
