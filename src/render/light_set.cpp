@@ -3,6 +3,7 @@
 #include "rtpro/core/math_constants.h"
 #include "rtpro/render/light_sample.h"
 #include "rtpro/render/shading_frame.h"
+#include "rtpro/render/texture.h"
 
 #include <algorithm>
 #include <cmath>
@@ -102,6 +103,7 @@ Color emitted_towards(const Emission& e, const Vec3& n, const Vec3& direction) {
 struct Sampler {
   const Vec3& from;
   Sample2D u;
+  const TextureLookup* textures;
 
   std::optional<PathLightSample> operator()(const PointLight& l) const {
     const Vec3 to_light = l.position - from;
@@ -130,18 +132,31 @@ struct Sampler {
       b2 = 1.0f - b2;
     }
     const Vec3 point = l.p0 + l.e1 * b1 + l.e2 * b2;
-    return on_surface({point, l.normal, area_to_solid_angle(1.0f / l.area, from, point, l.normal)}, l.emission);
+    // The texture coordinates make_surface interpolates at the same barycentrics.
+    const float b0 = 1.0f - b1 - b2;
+    const float tex_u = l.uv[0].u * b0 + l.uv[1].u * b1 + l.uv[2].u * b2;
+    const float tex_v = l.uv[0].v * b0 + l.uv[1].v * b1 + l.uv[2].v * b2;
+    return on_surface({point, l.normal, area_to_solid_angle(1.0f / l.area, from, point, l.normal)}, l.emission,
+                      tex_u, tex_v);
   }
   std::optional<PathLightSample> operator()(const EmissiveSphere& l) const {
-    return on_surface(sample_sphere(l.center, l.radius, from, u), l.emission);
+    const SphereSample s = sample_sphere(l.center, l.radius, from, u);
+    // make_surface's sphere coordinates: longitude from +z towards +x, latitude up +y.
+    const Vec3& n = s.normal;
+    const float tex_u = 0.5f + std::atan2(n.x, n.z) * (0.5f / kPi);
+    const float tex_v = 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) * (1.0f / kPi);
+    return on_surface(s, l.emission, tex_u, tex_v);
   }
 
-  std::optional<PathLightSample> on_surface(const SphereSample& s, const Emission& emission) const {
+  std::optional<PathLightSample> on_surface(const SphereSample& s, const Emission& emission, float tex_u = 0.0f,
+                                            float tex_v = 0.0f) const {
     const Vec3 to_light = s.point - from;
     const float d = length(to_light);
     if (!(d > 0.0f) || !(s.pdf > 0.0f) || !std::isfinite(s.pdf)) return std::nullopt;
     const Vec3 direction = to_light / d;
-    const Color radiance = emitted_towards(emission, s.normal, direction);
+    Color radiance = emitted_towards(emission, s.normal, direction);
+    if (emission.texture && radiance != Color(0.0f))
+      radiance = radiance * evaluate(*emission.texture, tex_u, tex_v, textures);
     if (radiance == Color(0.0f)) return std::nullopt;
     return PathLightSample{direction, d, radiance, s.pdf, false, 0};
   }
@@ -185,9 +200,10 @@ LightSet::LightSet(const RenderScene& scene) {
   pick_ = AliasTable(power);
 }
 
-std::optional<PathLightSample> LightSet::sample(const Vec3& point, float u_pick, Sample2D u) const {
+std::optional<PathLightSample> LightSet::sample(const Vec3& point, float u_pick, Sample2D u,
+                                                const TextureLookup* textures) const {
   const AliasTable::Pick pick = pick_.sample(u_pick);
-  std::optional<PathLightSample> s = std::visit(Sampler{point, u}, lights_[pick.index]);
+  std::optional<PathLightSample> s = std::visit(Sampler{point, u, textures}, lights_[pick.index]);
   if (s) {
     s->pdf *= pick.pmf;
     s->light = pick.index;
@@ -237,7 +253,7 @@ void LightSet::add_emitters(const RenderScene& scene, const Group& group, std::u
         for (std::uint32_t i = 0; i < spheres.size(); ++i) {
           const Emission& e = scene.materials[spheres[i].material].emission;
           const float radius = spheres[i].radius * *scale;
-          if (e.emits() && radius > 0.0f && std::isfinite(radius))
+          if (e.emits() && radius > 0.0f && std::isfinite(radius) && !(e.texture && to_world))
             add(i, spheres.size(), EmissiveSphere{world_point(spheres[i].center), radius, e});
         }
         break;
@@ -259,7 +275,14 @@ void LightSet::add_emitters(const RenderScene& scene, const Group& group, std::u
           const bool mirrored = to_world && dot(cross(to_world->apply_vector(Vec3(1.0f, 0.0f, 0.0f)),
                                                       to_world->apply_vector(Vec3(0.0f, 1.0f, 0.0f))),
                                                 to_world->apply_vector(Vec3(0.0f, 0.0f, 1.0f))) < 0.0f;
-          add(t, count, EmissiveTriangle{p0, e1, e2, n / (mirrored ? -twice_area : twice_area), 0.5f * twice_area, e});
+          EmissiveTriangle light{p0, e1, e2, n / (mirrored ? -twice_area : twice_area), 0.5f * twice_area, e};
+          if (e.texture) {
+            if (mesh.uvs.empty())
+              light.uv = {TexCoord{0.0f, 0.0f}, TexCoord{1.0f, 0.0f}, TexCoord{0.0f, 1.0f}};
+            else
+              light.uv = {mesh.uvs[tri.v0], mesh.uvs[tri.v1], mesh.uvs[tri.v2]};
+          }
+          add(t, count, light);
         }
         break;
       }

@@ -2,6 +2,7 @@
 
 #include "rtpro/render/beer_lambert.h"
 #include "rtpro/render/material_bsdf.h"
+#include "rtpro/render/texture.h"
 #include "rtpro/render/ray_offset.h"
 #include "rtpro/render/sample_dimensions.h"
 
@@ -61,7 +62,8 @@ class PathTracer {
                                                hit.t * length(ray.dir));
     }
     if (material.emission.emits() && (material.emission.two_sided || sp.front_face))
-      add_emission(path, result, material.emission.radiance, lights_.light_of_hit(hit), sp.position, beta);
+      add_emission(path, result, emitted_radiance(material.emission, sp.tex_u, sp.tex_v, textures_),
+                   lights_.light_of_hit(hit), sp.position, beta);
 
     const SurfaceBsdf surface = material_bsdf(material, sp, textures_);
     const bool delta = bsdf_is_delta(surface.bsdf);
@@ -82,7 +84,7 @@ class PathTracer {
     const Sample2D choices = sampler_.sample_2d(key.pixel_key, key.sample_index, dimension(path_dimension::kChoices));
     if (!delta && !lights_.empty()) {
       const Sample2D u = sampler_.sample_2d(key.pixel_key, key.sample_index, dimension(path_dimension::kLightPoint));
-      if (const std::optional<PathLightSample> ls = lights_.sample(sp.position, choices.x, u))
+      if (const std::optional<PathLightSample> ls = lights_.sample(sp.position, choices.x, u, textures_))
         queue_shadow_ray(path.sample, sp, surface, wo, *ls, beta);
     }
 

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <variant>
 
 namespace rtpro {
@@ -81,30 +82,43 @@ struct LocalSurface {
   throw RuntimeError("hit record names an instance as its primitive");
 }
 
+// The surface's derivatives along its texture coordinates (object space, not unit).
+struct TextureDerivatives {
+  Vec3 dpdu, dpdv;
+};
+
 // Texture coordinates of the hit, from the object-space surface (before any instance transform).
 // `object_normal` is the local surface's geometric normal, passed by value so that the local
 // surface's address never escapes make_surface and its fields stay in registers.
-void texture_coordinates(const Group& group, const Hit& hit, const Vec3 object_normal, SurfacePoint& sp) {
+TextureDerivatives texture_coordinates(const Group& group, const Hit& hit, const Vec3 object_normal, SurfacePoint& sp) {
   const Geometry& geometry = group.geometries[hit.geom_id];
   switch (kind_of(geometry)) {
     case GeometryKind::kSpheres: {
       const Vec3& n = object_normal;  // unit, object space
       sp.tex_u = 0.5f + std::atan2(n.x, n.z) * (0.5f / std::numbers::pi_v<float>);
       sp.tex_v = 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) * (1.0f / std::numbers::pi_v<float>);
-      return;
+      // Longitude grows towards +x from +z; latitude towards +y.
+      return {Vec3(n.z, 0.0f, -n.x), Vec3(0.0f, 1.0f, 0.0f) - n * n.y};
     }
     case GeometryKind::kTriangles: {
       const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
+      const TriangleIndices& tri = mesh.triangles[hit.prim_id];
+      const Vec3 e1 = mesh.vertex(tri.v1) - mesh.vertex(tri.v0), e2 = mesh.vertex(tri.v2) - mesh.vertex(tri.v0);
       if (mesh.uvs.empty()) {
         sp.tex_u = hit.u;
         sp.tex_v = hit.v;
-        return;
+        return {e1, e2};
       }
-      const TriangleIndices& tri = mesh.triangles[hit.prim_id];
       const float w = 1.0f - hit.u - hit.v;
       sp.tex_u = mesh.uvs[tri.v0].u * w + mesh.uvs[tri.v1].u * hit.u + mesh.uvs[tri.v2].u * hit.v;
       sp.tex_v = mesh.uvs[tri.v0].v * w + mesh.uvs[tri.v1].v * hit.u + mesh.uvs[tri.v2].v * hit.v;
-      return;
+      const float du1 = mesh.uvs[tri.v1].u - mesh.uvs[tri.v0].u, dv1 = mesh.uvs[tri.v1].v - mesh.uvs[tri.v0].v;
+      const float du2 = mesh.uvs[tri.v2].u - mesh.uvs[tri.v0].u, dv2 = mesh.uvs[tri.v2].v - mesh.uvs[tri.v0].v;
+      const float determinant = du1 * dv2 - du2 * dv1;
+      // Texture coordinates that do not span the triangle give it no frame of their own.
+      if (!(std::fabs(determinant) > 0.0f) || !std::isfinite(1.0f / determinant)) return {e1, e2};
+      const float inverse = 1.0f / determinant;
+      return {(e1 * dv2 - e2 * dv1) * inverse, (e2 * du1 - e1 * du2) * inverse};
     }
     case GeometryKind::kInstance: break;
   }
@@ -133,8 +147,16 @@ void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, Surf
                                                  Ray{instance->world_to_object.apply_point(ray.org), ray.tnear,
                                                      instance->world_to_object.apply_vector(ray.dir), ray.tfar})
                                  : local_surface(group, hit, ray);
-  if (has_image_texture(scene, local.material)) texture_coordinates(group, hit, local.geometric_normal, sp);
+  sp.tangent = Vec3(0.0f);
+  sp.bitangent_sign = 1.0f;
+  std::optional<TextureDerivatives> derivatives;
+  if (has_image_texture(scene, local.material))
+    derivatives = texture_coordinates(group, hit, local.geometric_normal, sp);
   if (instanced) {
+    if (derivatives) {
+      derivatives->dpdu = instance->object_to_world.apply_vector(derivatives->dpdu);
+      derivatives->dpdv = instance->object_to_world.apply_vector(derivatives->dpdv);
+    }
     local.position = instance->object_to_world.apply_point(local.position);
     local.geometric_normal = instance->world_to_object.apply_normal_of_inverse(local.geometric_normal);
     local.shading_normal = instance->world_to_object.apply_normal_of_inverse(local.shading_normal);
@@ -145,6 +167,10 @@ void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, Surf
     sp.object_id = hit.geom_id;
   }
 
+  if (derivatives) {
+    sp.tangent = derivatives->dpdu;
+    if (dot(cross(local.geometric_normal, derivatives->dpdu), derivatives->dpdv) < 0.0f) sp.bitangent_sign = -1.0f;
+  }
   sp.position = local.position;
   sp.material = local.material;
   sp.position_error = kRelativePositionError * std::max(local.magnitude, magnitude(local.position));
@@ -242,6 +268,8 @@ template <bool kAllFlat>
     sp.object_id = hits[i]->geom_id;
     sp.tex_u = 0.0f;
     sp.tex_v = 0.0f;
+    sp.tangent = Vec3(0.0f);
+    sp.bitangent_sign = 1.0f;
     *mirrors[i] = Vec3(mx[i], my[i], mz[i]);
   }
 }

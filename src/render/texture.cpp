@@ -32,11 +32,17 @@ Color evaluate(const ColorTexture& texture, const SurfacePoint& point, const Tex
                  [&](const CheckerTexture& checker) {
                    return checker_parity(checker, point.position) == 0 ? checker.even : checker.odd;
                  },
-                 [&](const ImageTexture& image) {
-                   // Texture coordinates have v up; the lookup's t runs down the image.
-                   return image.tint * images->lookup(image.image, point.tex_u, 1.0f - point.tex_v, image.wrap);
-                 }},
+                 [&](const ImageTexture& image) { return evaluate(image, point.tex_u, point.tex_v, images); }},
       texture);
+}
+
+Color evaluate(const ImageTexture& texture, float u, float v, const TextureLookup* images) {
+  // Texture coordinates have v up; the lookup's t runs down the image.
+  return texture.tint * images->lookup(texture.image, u, 1.0f - v, texture.wrap);
+}
+
+Color emitted_radiance(const Emission& emission, float u, float v, const TextureLookup* images) {
+  return emission.texture ? emission.radiance * evaluate(*emission.texture, u, v, images) : emission.radiance;
 }
 
 }  // namespace rtpro

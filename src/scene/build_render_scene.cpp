@@ -20,19 +20,32 @@ namespace rtpro {
 
 namespace {
 
+// The index of an image in `textures`, each file and colour space registered once.
+std::uint32_t texture_index(const std::filesystem::path& file, const std::string& colorspace,
+                            const std::shared_ptr<const std::vector<unsigned char>>& bytes,
+                            const SourceLocation& where, std::vector<TextureImage>& textures) {
+  std::error_code error;
+  if (!bytes && !std::filesystem::is_regular_file(file, error))
+    throw InputError(where, "texture '" + file.string() + "' not found");
+  std::uint32_t index = 0;
+  while (index < textures.size() && !(textures[index].file == file && textures[index].colorspace == colorspace))
+    ++index;
+  if (index == textures.size()) textures.push_back({file, colorspace, bytes});
+  return index;
+}
+
+std::optional<ImageTexture> slot_texture(const std::optional<TextureSlotDesc>& slot, const Color& tint,
+                                         std::vector<TextureImage>& textures) {
+  if (!slot) return std::nullopt;
+  return ImageTexture{texture_index(slot->file, slot->colorspace, slot->bytes, slot->where, textures), tint,
+                      TextureWrap::kRepeat};
+}
+
 // A material's diffuse colour as shading evaluates it; image textures are registered in `textures`.
 ColorTexture color_texture(const MaterialDesc& m, std::vector<TextureImage>& textures) {
-  if (!m.color_texture.empty()) {
-    std::error_code error;
-    if (!m.texture_bytes && !std::filesystem::is_regular_file(m.color_texture, error))
-      throw InputError(m.texture_where, "texture '" + m.color_texture.string() + "' not found");
-    std::uint32_t index = 0;
-    while (index < textures.size() &&
-           !(textures[index].file == m.color_texture && textures[index].colorspace == m.texture_colorspace))
-      ++index;
-    if (index == textures.size()) textures.push_back({m.color_texture, m.texture_colorspace, m.texture_bytes});
-    return ImageTexture{index, m.color, m.texture_wrap};
-  }
+  if (!m.color_texture.empty())
+    return ImageTexture{texture_index(m.color_texture, m.texture_colorspace, m.texture_bytes, m.texture_where, textures),
+                        m.color, m.texture_wrap};
   if (!m.checker) return m.color;
   CheckerTexture checker;
   checker.inv_size = 1.0f / m.checker->size;
@@ -52,10 +65,15 @@ SurfaceModel surface_model(const MaterialDesc& m, std::vector<TextureImage>& tex
     case MaterialKind::kDielectric: return DielectricSurface{m.roughness};
     case MaterialKind::kPrincipled: {
       const PrincipledDesc& p = m.principled;
-      return PrincipledSurface{color_texture(m, textures), p.metalness,          m.roughness,     m.ior.value_or(1.5f),
-                               p.specular_weight,          p.specular_color,     p.transmission_weight,
-                               p.coat_weight,              p.coat_roughness,     p.fuzz_color,
-                               p.fuzz_roughness};
+      PrincipledSurface surface{color_texture(m, textures), p.metalness,          m.roughness,     m.ior.value_or(1.5f),
+                                p.specular_weight,          p.specular_color,     p.transmission_weight,
+                                p.coat_weight,              p.coat_roughness,     p.fuzz_color,
+                                p.fuzz_roughness,           std::nullopt,         std::nullopt};
+      surface.metallic_roughness =
+          slot_texture(p.metallic_roughness_texture, Color(1.0f, m.roughness, p.metalness), textures);
+      if (const std::optional<ImageTexture> normals = slot_texture(p.normal_texture, Color(1.0f), textures))
+        surface.normal_map = NormalMap{normals->image, p.normal_scale};
+      return surface;
     }
   }
   throw std::logic_error("surface_model: unknown material kind");
@@ -142,7 +160,7 @@ class RenderSceneBuilder {
     std::optional<Dielectric> whitted_glass = m.kind == MaterialKind::kPrincipled ? std::nullopt : dielectric;
     Material material{color_texture(m, scene_.textures), m.specular, m.shininess, m.reflectivity, whitted_glass};
     material.model = surface_model(m, scene_.textures);
-    material.emission = Emission{m.emission, m.emission_two_sided};
+    material.emission = Emission{m.emission, m.emission_two_sided, slot_texture(m.emission_texture, Color(1.0f), scene_.textures)};
     approximate_for_whitted(m, material);
     if (m.kind == MaterialKind::kPrincipled) material.color = color_texture(whitted_view_of_principled(m), scene_.textures);
     scene_.materials.push_back(std::move(material));

@@ -47,6 +47,20 @@ std::filesystem::path texture_path(const tinygltf::Model& model, int texture, co
   return file.parent_path() / normal;
 }
 
+// A texture slot other than the base colour; nothing when the reference leads nowhere (a warning).
+// Data textures (metallic-roughness, normals) are decoded as "Raw", colour ones as sRGB, as the
+// glTF specification defines them.
+std::optional<TextureSlotDesc> texture_slot(const tinygltf::Model& model, int texture, const std::filesystem::path& file,
+                                            const std::string& where, const char* colorspace,
+                                            std::vector<std::string>& warnings) {
+  TextureSlotDesc slot;
+  slot.file = texture_path(model, texture, file, where, warnings, &slot.bytes);
+  if (slot.file.empty()) return std::nullopt;
+  slot.colorspace = colorspace;
+  slot.where = SourceLocation{file.string() + ": " + where};
+  return slot;
+}
+
 // emissiveFactor × KHR_materials_emissive_strength, from both sides of a double-sided material
 // (glTF renders its back faces as front faces with the normal flipped).
 void read_emission(const tinygltf::Material& m, MaterialDesc& desc) {
@@ -144,6 +158,15 @@ MaterialDesc read_material(const tinygltf::Model& model, int index, const std::f
                                     warnings, &desc.texture_bytes);
   desc.texture_where = SourceLocation{file.string() + ": " + path + ".pbrMetallicRoughness.baseColorTexture"};
   read_emission(m, desc);
+  desc.principled.metallic_roughness_texture =
+      texture_slot(model, pbr.metallicRoughnessTexture.index, file, path + ".pbrMetallicRoughness.metallicRoughnessTexture",
+                   "Raw", warnings);
+  desc.principled.normal_texture =
+      texture_slot(model, m.normalTexture.index, file, path + ".normalTexture", "Raw", warnings);
+  desc.principled.normal_scale = std::isfinite(m.normalTexture.scale) ? static_cast<float>(m.normalTexture.scale) : 1.0f;
+  if (desc.emission != Color(0.0f))
+    desc.emission_texture =
+        texture_slot(model, m.emissiveTexture.index, file, path + ".emissiveTexture", "sRGB - Texture", warnings);
   return desc;
 }
 

@@ -1,9 +1,8 @@
 // glTF base colour textures through the real binary, on the Khronos BoxTextured sample of Debian's
 // assimp-testmodels: the texture as a file beside the .gltf, inside the .glb (a buffer view) and
-// as a data: URI give the same picture, and it is the textured one. And on a hand-made quad: the
-// image is the right way up.
+// as a data: URI give the same picture, and it is the textured one. Hand-made quads are in
+// gltf_texture_slots_test.cpp.
 #include "rtpro/image/image_io.h"
-#include "scene/gltf_test_files.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -44,40 +43,6 @@ TEST(GltfTexture, FileBufferViewAndDataUriGiveTheSameTexturedBox) {
     most_saturated = std::max(most_saturated, std::max({r, g, b}) - std::min({r, g, b}));
   }
   EXPECT_GT(most_saturated, 0.1f);
-}
-
-// By the glTF specification texture coordinate (0, 0) is the image's top-left corner: a quad whose
-// top corners have v = 0 shows the image's top half at its top.
-TEST(GltfTexture, TheImageIsTheRightWayUp) {
-  const auto dir = test::scratch_dir();
-  Image stripes(8, 8);  // red in the top half, blue in the bottom half
-  for (int y = 0; y < stripes.height; ++y)
-    for (int x = 0; x < stripes.width; ++x) stripes.at(x, y, y < stripes.height / 2 ? 0 : 2) = 1.0f;
-  write_image(dir / "stripes.png", stripes, {});
-
-  test::GltfFile gltf;
-  // Top-left, bottom-left, bottom-right and top-right corners of a quad facing +z.
-  const int positions = gltf.floats({-1, 1, 0, -1, -1, 0, 1, -1, 0, 1, 1, 0}, "VEC3");
-  const int uvs = gltf.floats({0, 0, 0, 1, 1, 1, 1, 0}, "VEC2");
-  const int quad = gltf.mesh(positions, gltf.indices({1, 2, 3, 1, 3, 0}));
-  nlohmann::json& primitive = gltf.json["meshes"][quad]["primitives"][0];
-  primitive["attributes"]["TEXCOORD_0"] = uvs;
-  primitive["material"] = 0;
-  gltf.json["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 0}}}}};
-  gltf.json["textures"] = {{{"source", 0}}};
-  gltf.json["images"] = {{{"uri", "stripes.png"}}};
-  gltf.json["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"aspectRatio", 1.0}, {"znear", 0.1}}}}};
-  gltf.scene({gltf.node({{"mesh", quad}}), gltf.node({{"camera", 0}, {"translation", {0, 0, 3}}})});
-  const auto scene = gltf.write("quad");
-
-  const auto out = dir / "quad.exr";
-  test::run_rtpro("render " + scene.string() + " -o " + out.string() + " --size 32x32 --spp 4 -q", 0);
-  const Image image = read_image(out);
-  // The camera looks straight at the quad, which fills the middle 80% of the picture.
-  const int x = image.width / 2;
-  const int top = image.height / 4, bottom = 3 * image.height / 4;
-  EXPECT_GT(image.at(x, top, 0), 2.0f * image.at(x, top, 2)) << "the top of the picture is not red";
-  EXPECT_GT(image.at(x, bottom, 2), 2.0f * image.at(x, bottom, 0)) << "the bottom of the picture is not blue";
 }
 
 }  // namespace gltf_texture_test

@@ -6,13 +6,16 @@
 //
 // An emissive sphere under a transform that does not scale uniformly is an ellipsoid and is not
 // sampled: a path that hits one adds its emission with weight 1, which is unbiased (BSDF sampling
-// alone), only noisier.
+// alone), only noisier. Nor is an instanced sphere with an emission texture, whose texture
+// coordinates are those of its prototype's frame.
 #include "rtpro/backend/hit.h"
 #include "rtpro/core/ray.h"
 #include "rtpro/render/alias_table.h"
+#include "rtpro/image/texture_lookup.h"
 #include "rtpro/render/sampler.h"
 #include "rtpro/scene/render_scene.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <unordered_map>
@@ -27,9 +30,11 @@ struct EmissiveTriangle {
   Vec3 normal;  // unit e1 × e2: the front side
   float area;
   Emission emission;
+  std::array<TexCoord, 3> uv{};  // at p0, p0 + e1, p0 + e2 (the mesh's, or its barycentrics)
 };
 
-// A sphere of an emissive material (outside: the front side).
+// A sphere of an emissive material (outside: the front side). A textured one is in the frame its
+// texture coordinates are defined in (it is not instanced: see the header).
 struct EmissiveSphere {
   Vec3 center;
   float radius;
@@ -58,7 +63,9 @@ class LightSet {
 
   // A light picked by u_pick, then a point on it by u, as seen from `point`; nothing when the
   // light sends nothing there (behind a one-sided emitter).
-  std::optional<PathLightSample> sample(const Vec3& point, float u_pick, Sample2D u) const;
+  // `textures`: the scene's images, for emitters with an emission texture.
+  std::optional<PathLightSample> sample(const Vec3& point, float u_pick, Sample2D u,
+                                        const TextureLookup* textures = nullptr) const;
 
   // The light that an emissive surface hit is (kInvalidId when it is not sampled).
   std::uint32_t light_of_hit(const Hit& hit) const;

@@ -21,15 +21,25 @@ struct SurfacePoint {
   // own, interpolated (its barycentrics when it has none); on a sphere longitude u (0.5 facing
   // the object's +z) and latitude v (0 at the bottom, 1 at the top, in the object's frame).
   float tex_u = 0.0f, tex_v = 0.0f;
+  // Worked out with the texture coordinates, for a normal map's frame: the direction of increasing
+  // u (world space, not unit; zero otherwise), and the sign that makes the outside normal × tangent
+  // point along increasing v (a mirrored mapping or transform makes it −1).
+  Vec3 tangent{0.0f};
+  float bitangent_sign = 1.0f;
 };
 
 // Writes the shading point of `hit` (a hit of `ray`) into `out`; every field is set. Filling the
 // caller's record in place spares the copy of a returned one, which stalled on store forwarding.
 void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfacePoint& out);
 
-// Whether `material` takes its colour from an image (and so needs texture coordinates).
+// Whether `material` reads an image (and so needs texture coordinates): its colour, its emission,
+// or a principled surface's metallic-roughness or normal map. (A principled base colour image is
+// its Whitted colour's too.)
 inline bool has_image_texture(const RenderScene& scene, std::uint32_t material) {
-  return std::holds_alternative<ImageTexture>(scene.materials[material].color);
+  const Material& m = scene.materials[material];
+  if (std::holds_alternative<ImageTexture>(m.color) || m.emission.texture) return true;
+  const auto* principled = std::get_if<PrincipledSurface>(&m.model);
+  return principled && (principled->metallic_roughness || principled->normal_map);
 }
 
 // Whether make_sphere_surfaces4 may take `hit`: a sphere of the top level (not instanced) whose

@@ -12,4 +12,10 @@ namespace rtpro {
 // when the scene has image textures).
 Color evaluate(const ColorTexture& texture, const SurfacePoint& point, const TextureLookup* images);
 
+// An image texture at texture coordinates (u, v), v up.
+Color evaluate(const ImageTexture& texture, float u, float v, const TextureLookup* images);
+
+// The radiance `emission` has at texture coordinates (u, v): its radiance, times its image there.
+Color emitted_radiance(const Emission& emission, float u, float v, const TextureLookup* images);
+
 }  // namespace rtpro

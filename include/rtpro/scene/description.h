@@ -46,6 +46,15 @@ struct CheckerDesc {
 // (colour, highlight, mirror reflectivity, glass with an ior); the others are physically based.
 enum class MaterialKind : std::uint8_t { kPhong, kDiffuse, kConductor, kDielectric, kPrincipled };
 
+// An image a material parameter other than the colour reads (glTF's metallicRoughnessTexture,
+// normalTexture and emissiveTexture), looked up at the surface's texture coordinates.
+struct TextureSlotDesc {
+  std::filesystem::path file;  // for an image stored inside a glTF, its name ("model.glb#images[0].png")
+  std::string colorspace;      // the OpenColorIO colour space its values are decoded from; "Raw" for data
+  std::shared_ptr<const std::vector<unsigned char>> bytes;  // an image stored inside a glTF
+  SourceLocation where;                                     // where it was named, for a missing file
+};
+
 // The glTF 2.0 metallic-roughness model and its extensions, with OpenPBR's names where one exists
 // (`color` is the base colour, `roughness` and `ior` are MaterialDesc's own).
 struct PrincipledDesc {
@@ -57,6 +66,12 @@ struct PrincipledDesc {
   float coat_roughness = 0.0f;       // KHR_materials_clearcoat clearcoatRoughnessFactor
   Color fuzz_color{0.0f};            // KHR_materials_sheen sheenColorFactor
   float fuzz_roughness = 0.0f;       // KHR_materials_sheen sheenRoughnessFactor
+  // glTF metallicRoughnessTexture: roughness × its green channel, metalness × its blue one.
+  std::optional<TextureSlotDesc> metallic_roughness_texture;
+  // glTF normalTexture: a tangent-space normal map (+x along increasing u, +y along increasing v
+  // on the image, i.e. towards its top), its x and y scaled by normal_scale.
+  std::optional<TextureSlotDesc> normal_texture;
+  float normal_scale = 1.0f;
 };
 
 struct MaterialDesc {
@@ -72,6 +87,7 @@ struct MaterialDesc {
   // points to; a sphere's outside) or on both. Lights the scene under the path integrator.
   Color emission{0.0f};
   bool emission_two_sided = false;
+  std::optional<TextureSlotDesc> emission_texture;  // multiplies `emission` (glTF emissiveTexture)
   PrincipledDesc principled;  // kind principled only
   Color color{0.8f, 0.8f, 0.8f};  // diffuse (and ambient) colour
   std::optional<CheckerDesc> checker;  // when set, the diffuse colour instead of `color`

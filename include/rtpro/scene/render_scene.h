@@ -87,6 +87,14 @@ struct TextureImage {
   std::shared_ptr<const std::vector<unsigned char>> bytes;
 };
 
+// A tangent-space normal map (glTF normalTexture): the image's RGB in [0, 1] read as a normal in
+// the frame of the surface's tangent (increasing u), bitangent (increasing v) and normal; x and y
+// scaled by `scale`.
+struct NormalMap {
+  std::uint32_t image;
+  float scale;
+};
+
 // A smooth dielectric (glass, water): refraction index and interior absorption.
 struct Dielectric {
   float ior;
@@ -121,6 +129,9 @@ struct PrincipledSurface {
   float coat_weight, coat_roughness;
   Color fuzz_color;
   float fuzz_roughness;
+  // roughness × green and metalness × blue of an image (its tint is (1, roughness, metalness)).
+  std::optional<ImageTexture> metallic_roughness;
+  std::optional<NormalMap> normal_map;
 };
 using SurfaceModel = std::variant<PhongSurface, DiffuseSurface, ConductorSurface, DielectricSurface, PrincipledSurface>;
 
@@ -129,6 +140,9 @@ using SurfaceModel = std::variant<PhongSurface, DiffuseSurface, ConductorSurface
 struct Emission {
   Color radiance{0.0f};
   bool two_sided = false;
+  // radiance × the image's colour at the point's texture coordinates (its tint is white); lights
+  // are still picked by `radiance`, the most the surface emits.
+  std::optional<ImageTexture> texture;
   bool emits() const { return radiance.x > 0.0f || radiance.y > 0.0f || radiance.z > 0.0f; }
 };
 
