@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace rtpro {
 namespace gltf_texture_slots_test {
@@ -33,8 +34,8 @@ std::filesystem::path solid_texture(const std::string& name, float r, float g, f
 // A quad of side 2 facing +z at the origin, its top corners at v = 0 as glTF has it (u grows along
 // +x, v down along −y), with `material`; a camera 3 units in front of it; and, unless `light` is
 // null, a directional light travelling against `from_light` (unit; from the front).
-std::filesystem::path quad_scene(const std::string& name, nlohmann::json material, nlohmann::json images,
-                                 const Vec3* from_light) {
+std::filesystem::path quad_scene(const std::string& name, const nlohmann::json& material,
+                                 const std::vector<std::string>& image_uris, const Vec3* from_light) {
   test::GltfFile gltf;
   const int positions = gltf.floats({-1, 1, 0, -1, -1, 0, 1, -1, 0, 1, 1, 0}, "VEC3");
   const int uvs = gltf.floats({0, 0, 0, 1, 1, 1, 1, 0}, "VEC2");
@@ -42,11 +43,16 @@ std::filesystem::path quad_scene(const std::string& name, nlohmann::json materia
   nlohmann::json& primitive = gltf.json["meshes"][quad]["primitives"][0];
   primitive["attributes"]["TEXCOORD_0"] = uvs;
   primitive["material"] = 0;
-  gltf.json["materials"] = {material};
-  nlohmann::json textures = nlohmann::json::array();
-  for (std::size_t i = 0; i < images.size(); ++i) textures.push_back({{"source", i}});
-  gltf.json["textures"] = textures;
-  gltf.json["images"] = images;
+  // Arrays built element by element: a braced list of one json value is that value to some
+  // compilers and a one-element array to others.
+  gltf.json["materials"] = nlohmann::json::array();
+  gltf.json["materials"].push_back(material);
+  gltf.json["textures"] = nlohmann::json::array();
+  gltf.json["images"] = nlohmann::json::array();
+  for (std::size_t i = 0; i < image_uris.size(); ++i) {
+    gltf.json["textures"].push_back(nlohmann::json::object({{"source", i}}));
+    gltf.json["images"].push_back(nlohmann::json::object({{"uri", image_uris[i]}}));
+  }
   gltf.json["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"aspectRatio", 1.0}, {"znear", 0.1}}}}};
   std::vector<int> roots{gltf.node({{"mesh", quad}}), gltf.node({{"camera", 0}, {"translation", {0, 0, 3}}})};
   if (from_light) {
@@ -111,7 +117,7 @@ void write_stripes(const std::filesystem::path& file) {
 TEST(GltfTextureSlots, TheBaseColourImageIsTheRightWayUp) {
   write_stripes(test::scratch_dir() / "stripes.png");
   const nlohmann::json material = {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 0}}}};
-  const Image image = render(quad_scene("quad", material, {{{"uri", "stripes.png"}}}, nullptr), "--spp 4");
+  const Image image = render(quad_scene("quad", material, {"stripes.png"}, nullptr), "--spp 4");
   const int x = image.width / 2, top = image.height / 4, bottom = 3 * image.height / 4;
   EXPECT_GT(image.at(x, top, 0), 2.0f * image.at(x, top, 2)) << "the top of the picture is not red";
   EXPECT_GT(image.at(x, bottom, 2), 2.0f * image.at(x, bottom, 0)) << "the bottom of the picture is not blue";
@@ -124,7 +130,7 @@ TEST(GltfTextureSlots, ANormalMapTiltsTheShadingTowardsItsTextureAxes) {
   const auto brightness = [&](const std::string& name, float degrees, bool along_v, const Vec3& light) {
     tilted_normal(name + ".exr", degrees, along_v);
     const nlohmann::json material = lambert({{"normalTexture", {{"index", 0}}}});
-    return centre_mean(render(quad_scene(name, material, {{{"uri", name + ".exr"}}}, &light)), 1);
+    return centre_mean(render(quad_scene(name, material, {name + ".exr"}, &light)), 1);
   };
   // Lambert under a light 45° off the normal: cos 45° flat, cos 15° tilted 30° towards the light,
   // cos 75° tilted away.
@@ -137,7 +143,7 @@ TEST(GltfTextureSlots, ANormalMapTiltsTheShadingTowardsItsTextureAxes) {
   // The map's scale multiplies its x and y: 0 undoes the tilt.
   tilted_normal("scaled.exr", 30.0f, false);
   const nlohmann::json unscaled = lambert({{"normalTexture", {{"index", 0}, {"scale", 0.0}}}});
-  EXPECT_NEAR(centre_mean(render(quad_scene("scaled", unscaled, {{{"uri", "scaled.exr"}}}, &from_right)), 1) / flat,
+  EXPECT_NEAR(centre_mean(render(quad_scene("scaled", unscaled, {"scaled.exr"}, &from_right)), 1) / flat,
               1.0, 0.01)
       << "scale 0 leaves the map's z alone, which normalises to the flat normal";
 }
@@ -155,10 +161,10 @@ TEST(GltfTextureSlots, MetallicRoughnessTextureScalesTheFactors) {
   solid_texture("metal.exr", 0.0f, 0.5f, 1.0f);
   nlohmann::json textured = red(1.0f, 1.0f);
   textured["pbrMetallicRoughness"]["metallicRoughnessTexture"] = {{"index", 0}};
-  const Image from_dielectric_texture = render(quad_scene("t_dielectric", textured, {{{"uri", "dielectric.exr"}}}, &light));
-  const Image from_metal_texture = render(quad_scene("t_metal", textured, {{{"uri", "metal.exr"}}}, &light));
-  const Image dielectric = render(quad_scene("dielectric", red(0.0f, 0.5f), nlohmann::json::array(), &light));
-  const Image metal = render(quad_scene("metal", red(1.0f, 0.5f), nlohmann::json::array(), &light));
+  const Image from_dielectric_texture = render(quad_scene("t_dielectric", textured, {"dielectric.exr"}, &light));
+  const Image from_metal_texture = render(quad_scene("t_metal", textured, {"metal.exr"}, &light));
+  const Image dielectric = render(quad_scene("dielectric", red(0.0f, 0.5f), {}, &light));
+  const Image metal = render(quad_scene("metal", red(1.0f, 0.5f), {}, &light));
   for (int c = 0; c < 3; ++c) {
     EXPECT_NEAR(centre_mean(from_dielectric_texture, c), centre_mean(dielectric, c), 0.01 * centre_mean(dielectric, c) + 1e-4)
         << "channel " << c;
@@ -175,7 +181,7 @@ TEST(GltfTextureSlots, TheEmissiveTextureColoursTheEmissionSeenAndSampled) {
   nlohmann::json emitter = {{"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}, {"metallicFactor", 0}}},
                             {"emissiveFactor", {1, 1, 1}},
                             {"emissiveTexture", {{"index", 0}}}};
-  const Image seen = render(quad_scene("emitter", emitter, {{{"uri", "stripes.png"}}}, nullptr), "--spp 4");
+  const Image seen = render(quad_scene("emitter", emitter, {"stripes.png"}, nullptr), "--spp 4");
   const int x = seen.width / 2, top = seen.height / 4, bottom = 3 * seen.height / 4;
   EXPECT_GT(seen.at(x, top, 0), 0.5f);
   EXPECT_LT(seen.at(x, top, 2), 0.05f);
