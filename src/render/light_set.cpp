@@ -141,11 +141,8 @@ struct Sampler {
   }
   std::optional<PathLightSample> operator()(const EmissiveSphere& l) const {
     const SphereSample s = sample_sphere(l.center, l.radius, from, u);
-    // make_surface's sphere coordinates: longitude from +z towards +x, latitude up +y.
-    const Vec3& n = s.normal;
-    const float tex_u = 0.5f + std::atan2(n.x, n.z) * (0.5f / kPi);
-    const float tex_v = 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) * (1.0f / kPi);
-    return on_surface(s, l.emission, tex_u, tex_v);
+    const TexCoord uv = sphere_texture_coordinates(s.normal);
+    return on_surface(s, l.emission, uv.u, uv.v);
   }
 
   std::optional<PathLightSample> on_surface(const SphereSample& s, const Emission& emission, float tex_u = 0.0f,

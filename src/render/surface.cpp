@@ -3,13 +3,13 @@
 #include "lanes3.h"
 #include "rtpro/core/avx2_clones.h"
 #include "rtpro/core/error.h"
+#include "rtpro/render/texture.h"
 
 #include <emmintrin.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <optional>
 #include <variant>
 
@@ -95,8 +95,9 @@ TextureDerivatives texture_coordinates(const Group& group, const Hit& hit, const
   switch (kind_of(geometry)) {
     case GeometryKind::kSpheres: {
       const Vec3& n = object_normal;  // unit, object space
-      sp.tex_u = 0.5f + std::atan2(n.x, n.z) * (0.5f / std::numbers::pi_v<float>);
-      sp.tex_v = 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) * (1.0f / std::numbers::pi_v<float>);
+      const TexCoord uv = sphere_texture_coordinates(n);
+      sp.tex_u = uv.u;
+      sp.tex_v = uv.v;
       // Longitude grows towards +x from +z; latitude towards +y.
       return {Vec3(n.z, 0.0f, -n.x), Vec3(0.0f, 1.0f, 0.0f) - n * n.y};
     }

@@ -1,7 +1,9 @@
 #include "rtpro/render/texture.h"
 
+#include "rtpro/core/math_constants.h"
 #include "rtpro/core/overloaded.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rtpro {
@@ -34,6 +36,10 @@ Color evaluate(const ColorTexture& texture, const SurfacePoint& point, const Tex
                  },
                  [&](const ImageTexture& image) { return evaluate(image, point.tex_u, point.tex_v, images); }},
       texture);
+}
+
+TexCoord sphere_texture_coordinates(const Vec3& n) {
+  return {0.5f + std::atan2(n.x, n.z) * (0.5f / kPi), 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) * (1.0f / kPi)};
 }
 
 Color evaluate(const ImageTexture& texture, float u, float v, const TextureLookup* images) {
