@@ -8,7 +8,13 @@ KHR_materials_specular's specularFactor 0, which the extension defines as the pu
 ceiling light an emissive quad with KHR_materials_emissive_strength; the camera of the published
 data (at z = -800 looking along +z, 39.3 degrees vertical field of view).
 
-Usage: scripts/make_cornell_gltf.py [OUT.gltf]   (default: scenes/cornell_box.gltf)
+With --metal-glass the tall block is a rough white metal (metallicFactor 1, base colour 1,
+roughness 0.4: Schlick's Fresnel is 1 at every angle, the model Cycles' Glossy BSDF has) and
+the short block clear glass (KHR_materials_transmission 1, ior 1.5, roughness 0), the second
+scene of benchmarks/cycles_benchmark.sh.
+
+Usage: scripts/make_cornell_gltf.py [--metal-glass] [OUT.gltf]
+  (default: scenes/cornell_box.gltf, or benchmarks/cycles/cornell_metal_glass.gltf)
 """
 import base64
 import json
@@ -23,6 +29,12 @@ MATERIALS = {  # name: (base colour, emission colour, emissive strength)
     "red": ((0.63, 0.065, 0.05), None, None),
     "green": ((0.14, 0.45, 0.091), None, None),
     "light": ((0.78, 0.78, 0.78), (1.0, 12.0 / 17.0, 4.0 / 17.0), 17.0),
+}
+# Metallic-roughness values replacing the Lambert ones of a material, and the extensions added.
+METAL_GLASS = {
+    "metal": ((1.0, 1.0, 1.0), 1.0, 0.4, {}),
+    "glass": ((1.0, 1.0, 1.0), 0.0, 0.0, {"KHR_materials_transmission": {"transmissionFactor": 1.0},
+                                          "KHR_materials_ior": {"ior": 1.5}}),
 }
 MESHES = [  # OBJ file, material
     ("cornell_white.obj", "white"), ("cornell_red.obj", "red"), ("cornell_green.obj", "green"),
@@ -42,11 +54,19 @@ def read_quads(path):
 
 
 def main():
-    out = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else ROOT / "scenes" / "cornell_box.gltf"
+    args = sys.argv[1:]
+    metal_glass = "--metal-glass" in args
+    args = [a for a in args if a != "--metal-glass"]
+    default = ROOT / "benchmarks" / "cycles" / "cornell_metal_glass.gltf" if metal_glass else ROOT / "scenes" / "cornell_box.gltf"
+    out = pathlib.Path(args[0]) if args else default
+    meshes_of = list(MESHES)
+    if metal_glass:
+        meshes_of[3] = ("cornell_short_block.obj", "glass")
+        meshes_of[4] = ("cornell_tall_block.obj", "metal")
     blob = bytearray()
     accessors, views, meshes, nodes = [], [], [], []
-    names = list(MATERIALS)
-    for file, material in MESHES:
+    names = list(MATERIALS) + (list(METAL_GLASS) if metal_glass else [])
+    for file, material in meshes_of:
         vertices, faces = read_quads(ROOT / "scenes" / "meshes" / file)
         indices = [i for f in faces for i in (f[0], f[1], f[2], f[0], f[2], f[3])]
         for data, target, kind in ((b"".join(struct.pack("<3f", *v) for v in vertices), 34962, "VEC3"),
@@ -74,11 +94,19 @@ def main():
             m["emissiveFactor"] = list(emission)
             m["extensions"]["KHR_materials_emissive_strength"] = {"emissiveStrength": strength}
         materials.append(m)
+    extensions_used = ["KHR_materials_emissive_strength", "KHR_materials_specular"]
+    if metal_glass:
+        for name, (base, metallic, roughness, extensions) in METAL_GLASS.items():
+            materials.append({"name": name, "pbrMetallicRoughness": {"baseColorFactor": [*base, 1.0],
+                                                                     "metallicFactor": metallic,
+                                                                     "roughnessFactor": roughness},
+                              "extensions": extensions})
+        extensions_used += ["KHR_materials_ior", "KHR_materials_transmission"]
     # A glTF camera looks along its node's -z: turned half a turn about y it looks along +z.
     nodes.append({"name": "camera", "camera": 0, "translation": [278.0, 273.0, -800.0], "rotation": [0.0, 1.0, 0.0, 0.0]})
     gltf = {
         "asset": {"version": "2.0", "generator": "rtpro scripts/make_cornell_gltf.py"},
-        "extensionsUsed": ["KHR_materials_emissive_strength", "KHR_materials_specular"],
+        "extensionsUsed": extensions_used,
         "scene": 0,
         "scenes": [{"nodes": list(range(len(nodes)))}],
         "nodes": nodes,
