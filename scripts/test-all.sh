@@ -26,7 +26,9 @@ if [[ $stages == *,2,* || $stages == *,3,* ]]; then
   CC=clang CXX=clang++ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DRTPRO_SANITIZE=address,undefined -DRTPRO_FUZZ=ON -DRTPRO_BUILD_BENCHMARKS=OFF
   cmake --build build-asan
-  [[ $stages != *,2,* ]] || ctest --test-dir build-asan --output-on-failure
+  # Two at a time: under the sanitizers most tests use one core; tests/CMakeLists.txt runs the
+  # ones that kill, cap or start ranks alone (SERIAL).
+  [[ $stages != *,2,* ]] || ctest --test-dir build-asan -j2 --output-on-failure
 fi
 
 if [[ $stages == *,3,* ]]; then
