@@ -22,6 +22,7 @@
 #include "rtpro/image/image_layer.h"
 #include "rtpro/image/output_check.h"
 #include "rtpro/image/texture_lookup.h"
+#include "rtpro/render/environment_light.h"
 #include "rtpro/render/renderer.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/render_cost.h"
@@ -231,7 +232,8 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   // for it (prestarted_thread.h). The other ranks write no image.
   std::optional<PrestartedThread> render_thread;
   if (job && leader) render_thread.emplace();
-  if ((leader && writing_needs_image_layer(output.file())) || !scene.textures.empty()) start_loading_image_layer();
+  const bool reads_images = !scene.textures.empty() || (scene.environment && !scene.environment->file.empty());
+  if ((leader && writing_needs_image_layer(output.file())) || reads_images) start_loading_image_layer();
 
   BackendOptions backend_options = o.backend_options;
   backend_options.threads = threads;
@@ -251,6 +253,24 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
     textures = open_textures(sources);
     render_options.textures = textures.get();
     log.verbose("opened " + std::to_string(sources.size()) + " image textures");
+  }
+
+  // The environment's image is read whole (through the image layer) and its sampling
+  // distribution built before the render.
+  std::optional<EnvironmentLight> environment;
+  if (scene.environment) {
+    Image image;
+    if (!scene.environment->file.empty()) {
+      const auto read_start = Clock::now();
+      image = read_image(scene.environment->file, memory.bytes);
+      log.verbose("read " + scene.environment->file.string() + " (" + std::to_string(image.width) + "x" +
+                  std::to_string(image.height) + ") in " + std::to_string(seconds_since(read_start)) + " s");
+    }
+    const auto build_start = Clock::now();
+    environment.emplace(*scene.environment, std::move(image));
+    render_options.environment = &*environment;
+    log.verbose("built the environment light in " + std::to_string(seconds_since(build_start)) + " s (" +
+                format_bytes(environment->bytes()) + ")");
   }
 
   std::unique_ptr<TevClient> preview;
@@ -284,7 +304,7 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
     render_options.on_tile_result = [journal = opened.journal.get()](const TileResult& tile) { journal->append(tile); };
   }
   if (!leader) {
-    const TileRenderer renderer(scene, *backend, layout, textures.get());
+    const TileRenderer renderer(scene, *backend, layout, textures.get(), render_options.environment);
     // mpirun passes Ctrl-C on as SIGTERM to every rank: each finishes its tiles in flight and
     // rank 0 writes the partial image, as a single process does (if mpirun allows the time:
     // its odls_base_sigkill_timeout, 1 s by default).

@@ -122,6 +122,7 @@ JobIdentity scene_identity(const SceneDescription& description, const SceneBuild
     add("mesh", mesh.file);
     for (const auto& file : mesh.stats.files_read) add("mesh data", file);
   }
+  if (scene.environment && !scene.environment->file.empty()) add("environment", scene.environment->file);
   // Images stored inside a glTF are covered by the glTF's own digest.
   for (const TextureImage& texture : scene.textures)
     if (!texture.bytes) add("texture", texture.file);

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace rtpro {
 
@@ -30,6 +31,10 @@ struct Power {
   }
   float operator()(const EmissiveSphere& l) const {
     return kPi * 4.0f * kPi * l.radius * l.radius * average(l.emission.radiance) * (l.emission.two_sided ? 2.0f : 1.0f);
+  }
+  // Its radiance from the whole sphere of directions through the disk the scene fills.
+  float operator()(const EnvironmentRef& l) const {
+    return kPi * scene_radius * scene_radius * 4.0f * kPi * l.light->mean_radiance();
   }
 };
 
@@ -144,6 +149,11 @@ struct Sampler {
     const TexCoord uv = sphere_texture_coordinates(s.normal);
     return on_surface(s, l.emission, uv.u, uv.v);
   }
+  std::optional<PathLightSample> operator()(const EnvironmentRef& l) const {
+    const std::optional<EnvironmentLight::Sample> s = l.light->sample(u);
+    if (!s || s->radiance == Color(0.0f)) return std::nullopt;
+    return PathLightSample{s->direction, kInfinity, s->radiance, s->pdf, false, 0};
+  }
 
   std::optional<PathLightSample> on_surface(const SphereSample& s, const Emission& emission, float tex_u = 0.0f,
                                             float tex_v = 0.0f) const {
@@ -172,11 +182,15 @@ struct Pdf {
     return area_to_solid_angle(1.0f / l.area, from, on_light, l.normal);
   }
   float operator()(const EmissiveSphere& l) const { return sphere_pdf(l.center, l.radius, from, on_light); }
+  // `on_light`: any point along the direction (the environment is infinitely far).
+  float operator()(const EnvironmentRef& l) const { return l.light->pdf(on_light - from); }
 };
 
 }  // namespace
 
-LightSet::LightSet(const RenderScene& scene) {
+LightSet::LightSet(const RenderScene& scene, const EnvironmentLight* environment) : environment_(environment) {
+  if (scene.environment && !environment)
+    throw std::logic_error("LightSet: the scene has an environment but none was built for it");
   for (const Light& light : scene.lights) {
     std::visit([&](const auto& l) { lights_.push_back(l); }, light);
     if (std::holds_alternative<SphereLight>(light) || std::holds_alternative<QuadLight>(light))
@@ -186,6 +200,10 @@ LightSet::LightSet(const RenderScene& scene) {
   for (std::uint32_t g = 0; g < scene.top.geometries.size(); ++g)
     if (const auto* instance = std::get_if<Instance>(&scene.top.geometries[g]))
       add_emitters(scene, scene.prototypes[instance->prototype], g, &instance->object_to_world);
+  if (environment_) {
+    environment_index_ = static_cast<std::uint32_t>(lights_.size());
+    lights_.push_back(EnvironmentRef{environment_});
+  }
   const BBox bounds = scene.bounds();
   const float scene_radius = bounds.empty() ? 1.0f : 0.5f * length(bounds.upper - bounds.lower);
   std::vector<float> power;
@@ -297,6 +315,11 @@ std::uint32_t LightSet::light_of_hit(const Hit& hit) const {
 float LightSet::pdf(std::uint32_t index, const Vec3& from, const Vec3& on_light) const {
   if (index >= lights_.size() || pick_.empty()) return 0.0f;
   return pick_.pmf(index) * std::visit(Pdf{from, on_light}, lights_[index]);
+}
+
+float LightSet::environment_pdf(const Vec3& direction) const {
+  if (environment_index_ == kInvalidId || pick_.empty()) return 0.0f;
+  return pick_.pmf(environment_index_) * environment_->pdf(direction);
 }
 
 std::optional<LightSet::SeenLight> LightSet::seen_light(const Ray& ray, float t_max) const {

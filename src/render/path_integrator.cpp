@@ -49,7 +49,7 @@ class PathTracer {
       return;  // lights without geometry absorb what reaches them
     }
     if (!hit.valid()) {
-      result.radiance += path.beta * scene_.render.background;
+      escape(path, ray, result);
       return;
     }
     SurfacePoint sp;
@@ -120,6 +120,26 @@ class PathTracer {
       }
     }
     result.radiance += beta * radiance * weight;
+  }
+
+  // A ray that leaves the scene: the environment, weighted against light sampling as emission
+  // is, or the background. Camera rays see the background where the environment is not visible.
+  void escape(const Path& path, const Ray& ray, SampleResult& result) {
+    const EnvironmentLight* environment = lights_.environment();
+    if (!environment || (path.bounce == 0 && !environment->visible())) {
+      result.radiance += path.beta * scene_.render.background;
+      return;
+    }
+    const Color radiance = environment->radiance(ray.dir);
+    float weight = 1.0f;
+    if (!path.specular) {
+      switch (scene_.render.path_sampling) {
+        case PathSampling::kMis: weight = power_heuristic(path.bsdf_pdf, lights_.environment_pdf(ray.dir)); break;
+        case PathSampling::kLight: weight = 0.0f; break;
+        case PathSampling::kBsdf: break;
+      }
+    }
+    result.radiance += path.beta * radiance * weight;
   }
 
   void queue_shadow_ray(std::uint32_t sample, const SurfacePoint& sp, const SurfaceBsdf& surface, const Vec3& wo,

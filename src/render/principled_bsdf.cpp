@@ -22,11 +22,6 @@ float clamp01(float x) { return std::clamp(x, 0.0f, 1.0f); }
 Color clamp01(const Color& c) { return {clamp01(c.x), clamp01(c.y), clamp01(c.z)}; }
 float mean(const Color& c) { return (c.x + c.y + c.z) / 3.0f; }
 
-float schlick_weight(float cos_theta) {
-  const float m = 1.0f - clamp01(cos_theta);
-  return (m * m) * (m * m) * m;
-}
-
 // The facet normal that reflects wo into wi, facing +z, or nothing for wi = −wo.
 std::optional<Vec3> reflection_normal(const Vec3& wo, const Vec3& wi) {
   const Vec3 half = wo + wi;

@@ -74,7 +74,7 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
   const auto start = std::chrono::steady_clock::now();
   const TileGrid grid(checked_region(scene, options), options.tile_size);
   const FilmLayout layout(options.aovs);
-  const TileRenderer renderer(scene, backend, layout, options.textures);
+  const TileRenderer renderer(scene, backend, layout, options.textures, options.environment);
 
   RenderResult result;
   result.image = Image(scene.camera.width, scene.camera.height, layout.channels());

@@ -189,7 +189,9 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
         continue;
       }
     if (!hit.valid()) {
-      results[task.sample].radiance += task.weight * scene.render.background;
+      const bool shows_environment = ws.environment && (depth > 0 || ws.environment->visible());
+      results[task.sample].radiance +=
+          task.weight * (shows_environment ? ws.environment->radiance(ray.dir) : scene.render.background);
       continue;
     }
     Workspace::ShadedSurface& s = ws.surfaces.emplace_back();
@@ -278,8 +280,10 @@ void light_surfaces(const RenderScene& scene, const Workspace::Generation& gener
 
 void shade_batch(const RenderScene& scene, const Backend& backend, const StratifiedSampler& sampler,
                  std::span<const Ray> camera_rays, std::span<const SampleKey> keys, std::span<SampleResult> results,
-                 RayCounts& counts, ShadingWorkspace& ws, const TextureLookup* textures) {
+                 RayCounts& counts, ShadingWorkspace& ws, const TextureLookup* textures,
+                 const EnvironmentLight* environment) {
   ws.textures = textures;
+  ws.environment = environment;
   ws.emitters.clear();
   ws.is_emitter.assign(scene.lights.size(), 0);
   ws.light_samples_per_axis.resize(scene.lights.size());

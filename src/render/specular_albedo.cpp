@@ -30,11 +30,6 @@ struct SpecularTables {
 
 float specular_node_coordinate(int i) { return static_cast<float>(i) / (kSpecularTableSize - 1); }
 
-float schlick_weight(float cos_theta) {
-  const float m = 1.0f - std::clamp(cos_theta, 0.0f, 1.0f);
-  return (m * m) * (m * m) * m;
-}
-
 // E₁ and E₅ as expectations over visible normals: the integrand G(wo,wi)/G1(wo) times 1 or (1 − c)⁵.
 Node integrate_node(float mu, float alpha) {
   const GgxDistribution ggx{alpha};

@@ -20,15 +20,18 @@ constexpr std::size_t kSamplesPerBatch = 1024;
 }  // namespace
 
 TileRenderer::TileRenderer(const RenderScene& scene, const Backend& backend, const FilmLayout& layout,
-                           const TextureLookup* textures)
+                           const TextureLookup* textures, const EnvironmentLight* environment)
     : scene_(scene),
       backend_(backend),
       layout_(layout),
       textures_(textures),
+      environment_(environment),
       sampler_(scene.render.spp, scene.render.seed),
       sobol_(scene.render.seed),
       pixels_per_batch_(std::max<std::size_t>(1, kSamplesPerBatch / static_cast<std::size_t>(scene.render.spp))) {
-  if (scene.render.integrator == Integrator::kPath) path_lights_.emplace(scene);
+  if (scene.environment && !environment)
+    throw std::logic_error("TileRenderer: the scene has an environment but none was built for it");
+  if (scene.render.integrator == Integrator::kPath) path_lights_.emplace(scene, environment);
   if (!scene.textures.empty() && !textures)
     throw std::logic_error("TileRenderer: the scene has image textures but none were opened for it");
 }
@@ -82,7 +85,7 @@ void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixe
   switch (scene_.render.integrator) {
     case Integrator::kWhitted:
       shade_batch(scene_, backend_, sampler_, ws.camera_rays, ws.sample_keys, ws.samples, out.rays, ws.shading,
-                  textures_);
+                  textures_, environment_);
       break;
     case Integrator::kPath:
       switch (scene_.render.sampler) {

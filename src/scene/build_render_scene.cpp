@@ -140,6 +140,8 @@ class RenderSceneBuilder {
     scene_.camera = make_render_camera(description_.camera);
     scene_.render = description_.render;
     for (const LightDesc& light : description_.lights) scene_.lights.push_back(make_light(light));
+    if (const std::optional<EnvironmentDesc>& e = description_.environment)
+      scene_.environment = Environment{e->file, e->color * e->intensity, e->rotation, e->visible};
     for (const MaterialDesc& m : description_.materials) add_material(m, m.name);
 
     check_instance_count();

@@ -3,6 +3,7 @@
 #include "gltf_loader.h"
 #include "gltf_scene.h"
 #include "yaml_document.h"
+#include "yaml_environment.h"
 #include "yaml_reader.h"
 #include "yaml_scene_objects.h"
 
@@ -482,7 +483,7 @@ SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& f
   check_scene_root(root);
   read_version(root);
   const MappingReader scene(root, "the scene",
-                            {"rtpro", "camera", "render", "materials", "lights", "objects", "world"});
+                            {"rtpro", "camera", "render", "materials", "lights", "environment", "objects", "world"});
 
   SceneDescription desc;
   desc.file = file;
@@ -490,6 +491,7 @@ SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& f
   desc.render = read_render(scene.optional("render"));
   desc.materials = read_materials(scene.optional("materials"), file.parent_path());
   desc.lights = read_lights(scene.optional("lights"));
+  desc.environment = read_environment(scene.optional("environment"), file.parent_path());
   read_scene_objects(scene.optional("objects"), scene.optional("world"), file.parent_path(), desc);
   return desc;
 }

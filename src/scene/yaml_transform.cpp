@@ -12,23 +12,6 @@ namespace {
 // The backing array of a namespace-scope initializer_list lives as long as the program.
 const std::initializer_list<std::string_view> kStepKeys = {"translate", "rotate", "scale", "matrix"};
 
-Affine read_rotation(const YamlNode& node, const std::string& name) {
-  if (node.is_sequence()) {
-    const Vec3 degrees = read_vec3(node, name);
-    return compose(Affine::rotate({0, 0, 1}, degrees.z),
-                   compose(Affine::rotate({0, 1, 0}, degrees.y), Affine::rotate({1, 0, 0}, degrees.x)));
-  }
-  if (!node.is_mapping()) {
-    fail_at(node,
-            name + ": expected {axis: [x, y, z], angle: degrees} or Euler angles [x, y, z], got " + node.describe());
-  }
-  const MappingReader rotate(node, name, {"axis", "angle"});
-  const YamlNode& axis_node = rotate.required("axis");
-  const Vec3 axis = read_vec3(axis_node, rotate.field("axis"));
-  if (!(length(axis) > 0.0f)) fail_at(axis_node, rotate.field("axis") + ": the rotation axis must not be zero");
-  return Affine::rotate(axis, static_cast<float>(read_number(rotate.required("angle"), rotate.field("angle"))));
-}
-
 Affine read_scale(const YamlNode& node, const std::string& name) {
   Vec3 factors;
   if (node.is_sequence()) {
@@ -103,6 +86,23 @@ std::string determinant_text(const Affine& transform) {
 }
 
 }  // namespace
+
+Affine read_rotation(const YamlNode& node, const std::string& name) {
+  if (node.is_sequence()) {
+    const Vec3 degrees = read_vec3(node, name);
+    return compose(Affine::rotate({0, 0, 1}, degrees.z),
+                   compose(Affine::rotate({0, 1, 0}, degrees.y), Affine::rotate({1, 0, 0}, degrees.x)));
+  }
+  if (!node.is_mapping()) {
+    fail_at(node,
+            name + ": expected {axis: [x, y, z], angle: degrees} or Euler angles [x, y, z], got " + node.describe());
+  }
+  const MappingReader rotate(node, name, {"axis", "angle"});
+  const YamlNode& axis_node = rotate.required("axis");
+  const Vec3 axis = read_vec3(axis_node, rotate.field("axis"));
+  if (!(length(axis) > 0.0f)) fail_at(axis_node, rotate.field("axis") + ": the rotation axis must not be zero");
+  return Affine::rotate(axis, static_cast<float>(read_number(rotate.required("angle"), rotate.field("angle"))));
+}
 
 Affine read_transform(const YamlNode& node, const std::string& name) {
   const Affine transform = node.is_sequence() ? read_step_list(node, name) : read_transform_mapping(node, name);

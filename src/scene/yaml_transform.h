@@ -9,6 +9,9 @@
 
 namespace rtpro {
 
+// A rotation: Euler angles [x, y, z] in degrees (about x, then y, then z) or {axis, angle}.
+Affine read_rotation(const YamlNode& node, const std::string& name);
+
 // Rejects singular, ill-conditioned, non-finite and out-of-range results at `node`.
 Affine read_transform(const YamlNode& node, const std::string& name);
 

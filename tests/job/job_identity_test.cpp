@@ -56,14 +56,17 @@ TEST(JobIdentity, SceneIdentityCoversSourcesMeshesAndWhatTheyRead) {
   scene.textures.push_back({test::write_file("wood.png", "pixels"), "sRGB - Texture", nullptr});
   scene.textures.push_back({"m.glb#images[0].png", "sRGB - Texture",
                             std::make_shared<const std::vector<unsigned char>>(4, 0)});  // inside a glTF
+  scene.environment = Environment{test::write_file("sky.exr", "sky"), Color(1.0f), Affine::identity(), true};
   const JobIdentity before = scene_identity(description, report, scene);
-  EXPECT_EQ(before.entries().size(), 6u);  // rtpro version + 4 files + the texture file
+  EXPECT_EQ(before.entries().size(), 7u);  // rtpro version + 4 files + the environment + the texture file
   test::write_file("m.mtl", "newmtl b\n");
   test::write_file("wood.png", "other pixels");
+  test::write_file("sky.exr", "another sky");
   const std::vector<std::string> d = scene_identity(description, report, scene).differences(before, "the journal");
-  ASSERT_EQ(d.size(), 2u);
-  EXPECT_NE(d[0].find("m.mtl"), std::string::npos) << d[0];
-  EXPECT_NE(d[1].find("wood.png"), std::string::npos) << d[1];
+  ASSERT_EQ(d.size(), 3u);
+  std::string all;
+  for (const std::string& line : d) all += line + "\n";
+  for (const char* file : {"m.mtl", "wood.png", "sky.exr"}) EXPECT_NE(all.find(file), std::string::npos) << all;
 }
 
 }  // namespace job_identity_test

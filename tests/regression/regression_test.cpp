@@ -91,8 +91,10 @@ SmallRender render_small(const fs::path& scene_file, BackendKind backend_kind) {
   const RenderScene scene = build_render_scene(small);
   const auto backend = make_backend(backend_kind, scene, BackendOptions{});
   const std::unique_ptr<TextureLookup> textures = regression::open_scene_textures(scene);
+  const std::optional<EnvironmentLight> environment = regression::build_scene_environment(scene);
   RenderOptions options;
   options.textures = textures.get();
+  options.environment = environment ? &*environment : nullptr;
   return {render_image(scene, *backend, options).image, regression::tolerance_for(backend_kind, scene)};
 }
 

@@ -10,8 +10,9 @@
 // coordinates are those of its prototype's frame.
 #include "rtpro/backend/hit.h"
 #include "rtpro/core/ray.h"
-#include "rtpro/render/alias_table.h"
 #include "rtpro/image/texture_lookup.h"
+#include "rtpro/render/alias_table.h"
+#include "rtpro/render/environment_light.h"
 #include "rtpro/render/sampler.h"
 #include "rtpro/scene/render_scene.h"
 
@@ -41,13 +42,19 @@ struct EmissiveSphere {
   Emission emission;
 };
 
+// The scene's environment, owned by whoever built it (it outlives the set).
+struct EnvironmentRef {
+  const EnvironmentLight* light;
+};
+
 // Point lights fall off with the square of distance here: `radiance` is read as intensity (W/sr),
 // as every physically based renderer reads it.
-using PathLight = std::variant<PointLight, DirectionalLight, SphereLight, QuadLight, EmissiveTriangle, EmissiveSphere>;
+using PathLight =
+    std::variant<PointLight, DirectionalLight, SphereLight, QuadLight, EmissiveTriangle, EmissiveSphere, EnvironmentRef>;
 
 struct PathLightSample {
   Vec3 direction;   // unit, from the point towards the light
-  float distance;   // to the sampled point; infinity for directional lights
+  float distance;   // to the sampled point; infinity for directional lights and the environment
   Color radiance;   // arriving along `direction` (no pdf folded in)
   float pdf;        // solid angle, times the probability of picking the light; 1 for delta lights
   bool delta;       // point and directional lights: no BSDF sample can reach them
@@ -56,7 +63,8 @@ struct PathLightSample {
 
 class LightSet {
  public:
-  explicit LightSet(const RenderScene& scene);
+  // `environment`: the scene's, built from its image (required when the scene has one).
+  explicit LightSet(const RenderScene& scene, const EnvironmentLight* environment = nullptr);
 
   bool empty() const { return pick_.empty(); }
   const std::vector<PathLight>& lights() const { return lights_; }
@@ -73,6 +81,12 @@ class LightSet {
   // probability included), 0 for lights that cannot be hit.
   float pdf(std::uint32_t index, const Vec3& from, const Vec3& on_light) const;
 
+  // The environment, or null; and the pdf sample() has of reaching it along `direction` (solid
+  // angle, pick probability included).
+  const EnvironmentLight* environment() const { return environment_; }
+  float environment_pdf(const Vec3& direction) const;
+  std::uint32_t environment_index() const { return environment_index_; }
+
   // The nearest light without geometry (sphere and rectangle lights) that `ray` sees before
   // t_max, with its index and the radiance it shows.
   struct SeenLight {
@@ -86,6 +100,8 @@ class LightSet {
   std::vector<PathLight> lights_;
   AliasTable pick_;
   std::vector<std::uint32_t> analytic_;  // indices of sphere and rectangle lights
+  const EnvironmentLight* environment_ = nullptr;
+  std::uint32_t environment_index_ = kInvalidId;
   // Per emitting geometry, keyed by (instance, geometry) as a hit names them: the light index of
   // each primitive (kInvalidId where it does not emit).
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> light_of_primitive_;

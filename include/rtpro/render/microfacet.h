@@ -5,12 +5,20 @@
 #include "rtpro/core/vec3.h"
 #include "rtpro/render/sampler.h"
 
+#include <algorithm>
+
 namespace rtpro {
 
 // Below this α a surface is treated as perfectly smooth (delta lobes): the lobe is narrower than
 // anything an image resolves, and sampling it as a distribution would only invite float trouble
 // in D's 1/α² peak (pbrt-v4's EffectivelySmooth).
 inline constexpr float kSmoothAlpha = 1e-3f;
+
+// Schlick's Fresnel weight (1 − cos θ)⁵, with cos θ clamped to [0, 1].
+inline float schlick_weight(float cos_theta) {
+  const float m = 1.0f - std::clamp(cos_theta, 0.0f, 1.0f);
+  return (m * m) * (m * m) * m;
+}
 
 // glTF / Disney: α = roughness², so the perceived roughness changes evenly along the slider.
 float roughness_to_alpha(float roughness);

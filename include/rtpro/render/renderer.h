@@ -73,6 +73,8 @@ struct RenderOptions {
   std::function<void(const TileRenderer&, const TileGrid&, TileSource&, TileSink&)> tile_executor;
   // The scene's image textures, opened (open_textures); required when it has any.
   const TextureLookup* textures = nullptr;
+  // The scene's environment, built from its image; required when it has one.
+  const EnvironmentLight* environment = nullptr;
 };
 
 struct RenderResult {

@@ -11,6 +11,7 @@
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/ray.h"
 #include "rtpro/image/texture_lookup.h"
+#include "rtpro/render/environment_light.h"
 #include "rtpro/render/sampler.h"
 #include "rtpro/render/surface.h"
 #include "rtpro/scene/render_scene.h"
@@ -110,14 +111,17 @@ class ShadingWorkspace {
   std::vector<std::uint8_t> is_emitter;
   std::vector<std::uint32_t> emitters;
   const TextureLookup* textures = nullptr;  // the scene's image textures, for this batch
+  const EnvironmentLight* environment = nullptr;  // the scene's environment, for this batch
 };
 
 // Traces and shades one batch of camera rays; results[i] receives camera_rays[i]'s radiance and
 // primary hit, keys[i] says which camera sample it is (area lights draw their shadow samples from
 // `sampler` with it). Ray counts are added to `counts`. `textures`: the scene's image textures,
-// opened (needed only when it has some).
+// opened (needed only when it has some). `environment`: what rays that escape see (needed only
+// when the scene has one); the Whitted integrator shows it but does not light with it.
 void shade_batch(const RenderScene& scene, const Backend& backend, const StratifiedSampler& sampler,
                  std::span<const Ray> camera_rays, std::span<const SampleKey> keys, std::span<SampleResult> results,
-                 RayCounts& counts, ShadingWorkspace& workspace, const TextureLookup* textures = nullptr);
+                 RayCounts& counts, ShadingWorkspace& workspace, const TextureLookup* textures = nullptr,
+                 const EnvironmentLight* environment = nullptr);
 
 }  // namespace rtpro

@@ -2,6 +2,7 @@
 // Renders one tile: generates its camera samples, shades them in batches of whole pixels with the
 // scene's integrator (whitted: shading.h; path: path_integrator.h) and resolves each pixel's samples, in sample order, into the tile's film layout.
 #include "rtpro/backend/backend.h"
+#include "rtpro/render/environment_light.h"
 #include "rtpro/render/film.h"
 #include "rtpro/render/light_set.h"
 #include "rtpro/render/path_integrator.h"
@@ -28,8 +29,9 @@ class TileRenderer {
   };
 
   // `textures`: the scene's image textures, opened (open_textures); required when it has any.
+  // `environment`: the scene's environment, built from its image; required when it has one.
   TileRenderer(const RenderScene& scene, const Backend& backend, const FilmLayout& layout,
-               const TextureLookup* textures = nullptr);
+               const TextureLookup* textures = nullptr, const EnvironmentLight* environment = nullptr);
 
   TileResult render(std::size_t index, const PixelRegion& tile, Workspace& workspace) const;
 
@@ -43,6 +45,7 @@ class TileRenderer {
   const Backend& backend_;
   const FilmLayout& layout_;
   const TextureLookup* textures_;
+  const EnvironmentLight* environment_;
   StratifiedSampler sampler_;
   SobolSampler sobol_;
   std::size_t pixels_per_batch_;

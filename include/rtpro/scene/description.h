@@ -199,6 +199,16 @@ struct ObjectDesc {
   std::vector<InstanceDesc> instances;
 };
 
+// `environment:` at the top of a scene file: what arrives where rays escape (see scenes/FORMAT.md).
+struct EnvironmentDesc {
+  std::filesystem::path file;  // empty: a constant environment of `color`
+  SourceLocation file_where;
+  Color color{1.0f};           // with a file: a tint multiplying the image
+  float intensity = 1.0f;
+  Affine rotation;             // image frame to world
+  bool visible = true;
+};
+
 struct SceneDescription {
   std::filesystem::path file;
   // Every scene text file the parser read: the file itself (unless it came from standard input)
@@ -209,6 +219,7 @@ struct SceneDescription {
   RenderSettings render;
   std::vector<MaterialDesc> materials;  // index 0 is always "default"
   std::vector<LightDesc> lights;
+  std::optional<EnvironmentDesc> environment;
   std::vector<ObjectDesc> objects;      // named, reachable only through instances
   ObjectDesc world;                     // what is rendered
 };

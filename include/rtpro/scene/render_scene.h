@@ -159,12 +159,22 @@ struct Material {
   Emission emission{};
 };
 
+// Light from infinitely far away in every direction a ray escapes along: a latitude-longitude
+// image (read by the caller, see render/environment_light.h) or, without a file, a constant.
+struct Environment {
+  std::filesystem::path file;  // empty: a constant environment of radiance `scale`
+  Color scale{1.0f};           // colour × intensity, multiplying the image's values
+  Affine to_world;             // rotation from the image's frame to the world
+  bool visible = true;         // false: camera rays that escape see render.background instead
+};
+
 struct RenderScene {
   RenderCamera camera;
   RenderSettings render;
   std::vector<Material> materials;
   std::vector<std::string> material_names;
   std::vector<Light> lights;
+  std::optional<Environment> environment;
   std::vector<TextureImage> textures;  // each file and colour space once
   Group top;                     // may contain instances
   std::vector<Group> prototypes; // never contain instances

@@ -1,0 +1,63 @@
+#pragma once
+// Piecewise-constant distributions over [0,1) and [0,1)² (pbrt's Distribution1D/2D): sampled by
+// inverting the cumulative sum, with the pdf of every point kept exactly as the sampler uses it,
+// for multiple importance sampling. The environment light samples its image through one.
+#include "rtpro/render/sampler.h"
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace rtpro {
+
+// n cells of width 1/n, each with the density func[i] / integral.
+class Distribution1D {
+ public:
+  Distribution1D() = default;
+  // Values >= 0 and finite (others count as 0); all zero gives the uniform distribution.
+  explicit Distribution1D(std::span<const float> func);
+
+  struct Sample {
+    float x;      // in [0, 1)
+    float pdf;    // density at x
+    std::size_t cell;
+  };
+  // u in [0, 1).
+  Sample sample(float u) const;
+  float pdf(std::size_t cell) const;
+  // The integral of the values over [0, 1) (their mean); 0 when all are zero.
+  float integral() const { return integral_; }
+  std::size_t size() const { return func_.size(); }
+
+ private:
+  std::vector<float> func_;
+  std::vector<float> cdf_;  // size() + 1 entries, cdf_[0] = 0, cdf_.back() = 1
+  float integral_ = 0.0f;
+};
+
+// width × height cells over [0,1)²: a marginal distribution over rows, a conditional one along
+// each row. `func` is row-major (row 0 at v = 0). Rows are built in parallel (oneTBB); the result
+// does not depend on the thread count.
+class Distribution2D {
+ public:
+  Distribution2D() = default;
+  Distribution2D(std::span<const float> func, int width, int height);
+
+  struct Sample {
+    float u, v;   // in [0, 1)
+    float pdf;    // density over [0,1)²
+  };
+  Sample sample(Sample2D u) const;
+  float pdf(float u, float v) const;  // u, v in [0, 1]; clamped to the cells
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // Bytes held, for memory figures.
+  std::size_t bytes() const;
+
+ private:
+  int width_ = 0, height_ = 0;
+  std::vector<Distribution1D> rows_;
+  Distribution1D marginal_;
+};
+
+}  // namespace rtpro

@@ -1,0 +1,66 @@
+#pragma once
+// The environment as a light: radiance arriving from every direction a ray escapes along, looked
+// up in a latitude-longitude image (bilinearly filtered, wrapping around the horizon) or constant,
+// and sampled in proportion to the image's luminance × sin θ from a piecewise-constant
+// distribution over its pixels, with the exact solid-angle pdf of every direction for multiple
+// importance sampling.
+//
+// The image's frame is +Y up; its top row looks up, its centre column looks along +X and its
+// quarter column (u = 0.25) along −Z: Blender's mapping of a world texture, as a scene exported
+// to glTF (+Y up) sees it. `rotation` turns that frame into the world.
+#include "rtpro/core/transform.h"
+#include "rtpro/core/vec3.h"
+#include "rtpro/image/image.h"
+#include "rtpro/render/distribution_2d.h"
+#include "rtpro/render/sampler.h"
+#include "rtpro/scene/render_scene.h"
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace rtpro {
+
+class EnvironmentLight {
+ public:
+  // `image`: the environment's file as read (scene-linear; one channel is grey, the first three
+  // of more are RGB), or empty for a constant environment. Negative and non-finite values read
+  // as 0. The distribution is built in parallel (oneTBB).
+  EnvironmentLight(const Environment& environment, Image image);
+
+  // What arrives from world direction `direction` (any length but 0).
+  Color radiance(const Vec3& direction) const;
+
+  struct Sample {
+    Vec3 direction;  // unit, world space, towards the environment
+    Color radiance;
+    float pdf;       // solid angle
+  };
+  // Nothing when the environment is black everywhere.
+  std::optional<Sample> sample(Sample2D u) const;
+  // The solid-angle pdf sample() has of `direction`.
+  float pdf(const Vec3& direction) const;
+
+  bool visible() const { return visible_; }
+  // The mean of radiance() over the sphere (averaged over channels): what the light picker weighs it by.
+  float mean_radiance() const { return mean_radiance_; }
+  // Bytes held (image and distribution).
+  std::size_t bytes() const;
+
+ private:
+  struct ImageCoordinates {
+    float u, v;  // u across from the left, v down from the top, both [0, 1]
+  };
+  ImageCoordinates image_coordinates(const Vec3& world_direction) const;
+  Color lookup(float u, float v) const;
+
+  Affine to_world_, to_local_;
+  Color scale_;
+  bool visible_;
+  int width_ = 0, height_ = 0;  // 0: constant
+  std::vector<Color> texels_;   // width × height, top row first, scale applied
+  Distribution2D distribution_;
+  float mean_radiance_ = 0.0f;
+};
+
+}  // namespace rtpro

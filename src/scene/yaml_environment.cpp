@@ -1,0 +1,63 @@
+#include "yaml_environment.h"
+
+#include "yaml_reader.h"
+#include "yaml_transform.h"
+
+#include <cctype>
+#include <cmath>
+#include <system_error>
+
+namespace rtpro {
+
+namespace {
+
+// The formats whose values are radiance as stored (no display encoding to undo).
+bool is_scene_linear_format(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* linear : {".exr", ".hdr", ".rgbe", ".pfm"})
+    if (extension == linear) return true;
+  return false;
+}
+
+bool read_bool(const YamlNode& node, const std::string& name) {
+  const std::string text = read_string(node, name);
+  if (text == "true") return true;
+  if (text == "false") return false;
+  fail_at(node, name + " must be true or false, got '" + text + "'");
+}
+
+}  // namespace
+
+std::optional<EnvironmentDesc> read_environment(const YamlNode* node, const std::filesystem::path& folder) {
+  if (!node || node->is_null()) return std::nullopt;
+  const MappingReader environment(*node, "environment", {"file", "color", "intensity", "rotation", "visible"});
+  EnvironmentDesc desc;
+  if (const YamlNode* file = environment.optional("file")) {
+    const std::string written = read_string(*file, environment.field("file"));
+    if (written.empty()) fail_at(*file, environment.field("file") + " must name a latitude-longitude image file");
+    desc.file = folder / written;
+    desc.file_where = file->at.location();
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(desc.file, error))
+      fail_at(*file, environment.field("file") + ": image file '" + desc.file.string() + "' not found");
+    if (!is_scene_linear_format(desc.file))
+      fail_at(*file, environment.field("file") + ": '" + desc.file.string() +
+                         "' is not a scene-linear image; an environment is read from an EXR, Radiance HDR or PFM file");
+  }
+  if (const YamlNode* color = environment.optional("color")) desc.color = read_color(*color, environment.field("color"));
+  if (const YamlNode* intensity = environment.optional("intensity")) {
+    const double value = read_number(*intensity, environment.field("intensity"));
+    if (!(value >= 0.0) || !std::isfinite(static_cast<float>(value)))
+      fail_at(*intensity, environment.field("intensity") + " must be 0 or more and finite, got " +
+                              std::string(intensity->scalar()));
+    desc.intensity = static_cast<float>(value);
+  }
+  if (const YamlNode* rotation = environment.optional("rotation"))
+    desc.rotation = read_rotation(*rotation, environment.field("rotation"));
+  if (const YamlNode* visible = environment.optional("visible"))
+    desc.visible = read_bool(*visible, environment.field("visible"));
+  return desc;
+}
+
+}  // namespace rtpro

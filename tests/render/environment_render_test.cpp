@@ -1,0 +1,167 @@
+// The path integrator lit by an environment, with both backends: the white furnace through the
+// environment (a constant one of radiance 1 hides a white Lambertian sphere, with every estimator
+// and rotated), camera visibility, the Whitted integrator's view of it, and MIS, environment
+// sampling alone and BSDF sampling alone agreeing under a real HDRI with a sun (sunset.exr).
+#include "rtpro/backend/backend.h"
+#include "rtpro/image/image_io.h"
+#include "rtpro/render/environment_light.h"
+#include "rtpro/render/renderer.h"
+#include "rtpro/scene/build_render_scene.h"
+#include "rtpro/scene/scene_parser.h"
+
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rtpro {
+namespace environment_render_test {
+
+class EnvironmentRender : public ::testing::TestWithParam<BackendKind> {};
+
+Image render(const std::string& yaml, BackendKind kind, const std::vector<std::string>& overrides = {}) {
+  const RenderScene scene = build_render_scene(parse_scene_text(yaml, test::scenes_dir() / "test.yaml", overrides));
+  const auto backend = make_backend(kind, scene, {});
+  Image image;
+  if (scene.environment && !scene.environment->file.empty()) image = read_image(scene.environment->file);
+  std::optional<EnvironmentLight> environment;
+  if (scene.environment) environment.emplace(*scene.environment, std::move(image));
+  RenderOptions options;
+  options.environment = environment ? &*environment : nullptr;
+  return render_image(scene, *backend, options).image;
+}
+
+struct Channels {
+  double mean = 0.0, min = 1e30, max = -1e30;
+};
+
+Channels stats_of(const Image& image) {
+  Channels s;
+  double sum = 0.0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const double v = image.at(x, y, c);
+        sum += v;
+        s.min = std::min(s.min, v);
+        s.max = std::max(s.max, v);
+      }
+  s.mean = sum / (3.0 * image.width * image.height);
+  return s;
+}
+
+// A white Lambertian sphere filling most of the view in a constant environment of radiance 1: a
+// convex object reflects what arrives once, so every pixel is exactly 1 in expectation.
+const std::string kFurnace = R"(
+rtpro: 1
+camera: {position: [0, 0, -3], look_at: [0, 0, 0], fov: 45, resolution: [24, 24]}
+render: {spp: 64, max_depth: 8, integrator: path}
+materials:
+  white: {type: diffuse, color: [1, 1, 1]}
+environment: {color: [1, 1, 1]}
+world: [{type: sphere, center: [0, 0, 0], radius: 1, material: white}]
+)";
+
+TEST_P(EnvironmentRender, BsdfSamplingHidesAWhiteSphereInEveryPixel) {
+  // Cosine sampling a white Lambertian surface carries weight exactly 1: no noise at all.
+  for (const char* rotation : {"[0, 0, 0]", "[30, 60, 10]"}) {
+    const Channels s = stats_of(
+        render(kFurnace, GetParam(), {"render.sampling=bsdf", std::string("environment.rotation=") + rotation}));
+    EXPECT_NEAR(s.min, 1.0, 0.003) << rotation;
+    EXPECT_NEAR(s.max, 1.0, 0.003) << rotation;
+  }
+}
+
+TEST_P(EnvironmentRender, MisAndEnvironmentSamplingHideAWhiteSphereOnAverage) {
+  for (const char* sampling : {"mis", "light"})
+    for (const char* rotation : {"[0, 0, 0]", "[30, 60, 10]"}) {
+      const Channels s = stats_of(render(kFurnace, GetParam(), {std::string("render.sampling=") + sampling,
+                                                                  std::string("environment.rotation=") + rotation}));
+      EXPECT_NEAR(s.mean, 1.0, 0.003) << sampling << " " << rotation;
+      EXPECT_GT(s.min, 0.8) << sampling << " " << rotation;
+      EXPECT_LT(s.max, 1.2) << sampling << " " << rotation;
+    }
+}
+
+TEST_P(EnvironmentRender, AnInvisibleEnvironmentStillLightsButTheCameraSeesTheBackground) {
+  const Image image = render(kFurnace, GetParam(),
+                             {"render.sampling=bsdf", "environment.visible=false", "render.background=[0.25, 0.5, 0.75]"});
+  // The corner misses the sphere, the centre sees it.
+  EXPECT_FLOAT_EQ(image.at(0, 0, 0), 0.25f);
+  EXPECT_FLOAT_EQ(image.at(0, 0, 2), 0.75f);
+  EXPECT_NEAR(image.at(12, 12, 1), 1.0f, 0.003f);
+}
+
+TEST_P(EnvironmentRender, WhittedShowsTheEnvironmentWhereRaysEscape) {
+  const std::string yaml = R"(
+rtpro: 1
+camera: {position: [0, 0, -3], look_at: [0, 0, 0], fov: 45, resolution: [16, 16]}
+render: {spp: 1, integrator: whitted, background: [0, 0, 0]}
+environment: {color: [0.25, 0.5, 0.75], intensity: 2}
+)";
+  const Channels red = stats_of(render(yaml, GetParam()));
+  EXPECT_FLOAT_EQ(static_cast<float>(red.min), 0.5f);
+  EXPECT_FLOAT_EQ(static_cast<float>(red.max), 1.5f);
+  const Image hidden = render(yaml, GetParam(), {"environment.visible=false"});
+  EXPECT_EQ(stats_of(hidden).max, 0.0);
+}
+
+// Image means and their standard error over independent seeds.
+struct Estimate {
+  double mean, standard_error;
+};
+
+Estimate mean_over_seeds(const std::string& yaml, BackendKind kind, const std::string& sampling, int seeds) {
+  std::vector<double> means;
+  for (int seed = 1; seed <= seeds; ++seed)
+    means.push_back(stats_of(render(yaml, kind, {"render.sampling=" + sampling, "render.seed=" + std::to_string(seed)})).mean);
+  double mean = 0.0;
+  for (double m : means) mean += m;
+  mean /= seeds;
+  double variance = 0.0;
+  for (double m : means) variance += (m - mean) * (m - mean);
+  variance /= seeds - 1;
+  return {mean, std::sqrt(variance / seeds)};
+}
+
+TEST_P(EnvironmentRender, EstimatorsAgreeUnderASunsetWithASun) {
+  const std::string yaml = R"(
+rtpro: 1
+camera: {position: [0, 0.6, -4], look_at: [0, 0.2, 0], fov: 40, resolution: [32, 20]}
+render: {spp: 32, max_depth: 4, integrator: path}
+materials:
+  clay: {type: diffuse, color: [0.8, 0.6, 0.5]}
+  metal: {type: conductor, color: [0.9, 0.9, 0.9], roughness: 0.3}
+environment: {file: environments/sunset.exr, rotation: [0, 120, 0]}
+world:
+  - {type: sphere, center: [-0.6, 0, 0], radius: 0.55, material: clay}
+  - {type: sphere, center: [0.6, 0, 0], radius: 0.55, material: metal}
+  - {type: sphere, center: [0, -100.55, 0], radius: 100, material: clay}
+)";
+  constexpr int kSeeds = 6;
+  const Estimate mis = mean_over_seeds(yaml, GetParam(), "mis", kSeeds);
+  const Estimate light = mean_over_seeds(yaml, GetParam(), "light", kSeeds);
+  const Estimate bsdf = mean_over_seeds(yaml, GetParam(), "bsdf", kSeeds);
+  std::cout << "[estimators] mis " << mis.mean << " ± " << mis.standard_error << ", light " << light.mean << " ± "
+            << light.standard_error << ", bsdf " << bsdf.mean << " ± " << bsdf.standard_error << "\n";
+  const auto agree = [](const Estimate& a, const Estimate& b) {
+    return std::fabs(a.mean - b.mean) <= 3.0 * std::hypot(a.standard_error, b.standard_error);
+  };
+  EXPECT_TRUE(agree(mis, light)) << "mis " << mis.mean << " ± " << mis.standard_error << ", light " << light.mean
+                                 << " ± " << light.standard_error;
+  EXPECT_TRUE(agree(mis, bsdf)) << "mis " << mis.mean << " ± " << mis.standard_error << ", bsdf " << bsdf.mean
+                                << " ± " << bsdf.standard_error;
+  // Environment sampling is what makes the sun tractable.
+  EXPECT_LT(mis.standard_error * 3.0, bsdf.standard_error);
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, EnvironmentRender, ::testing::Values(BackendKind::kEmbree, BackendKind::kNative),
+                         [](const auto& info) { return std::string(backend_name(info.param)); });
+
+}  // namespace environment_render_test
+}  // namespace rtpro
