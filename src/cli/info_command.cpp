@@ -69,7 +69,11 @@ nlohmann::json info_json(const std::string& file, const RenderScene& scene, cons
            {{"spp", scene.render.spp}, {"max_depth", scene.render.max_depth}, {"seed", scene.render.seed},
             {"integrator", integrator_name(scene.render.integrator)}}},
           {"materials", s.materials},
-          {"lights", {{"point", s.point_lights}, {"directional", s.directional_lights}, {"area", s.area_lights}}},
+          {"lights",
+           {{"point", s.point_lights},
+            {"spot", s.spot_lights},
+            {"directional", s.directional_lights},
+            {"area", s.area_lights}}},
           {"spheres", {{"stored", s.spheres_stored}, {"rendered", s.spheres_rendered}}},
           {"triangles", {{"stored", s.triangles_stored}, {"rendered", s.triangles_rendered}}},
           {"vertices", s.vertices_stored},
@@ -92,8 +96,8 @@ void print_text(const std::string& file, const RenderScene& scene, const SceneSu
             << " spp, max depth " << scene.render.max_depth << ", seed " << scene.render.seed << ", "
             << integrator_name(scene.render.integrator) << " integrator\n"
             << "materials    " << s.materials << "\n"
-            << "lights       " << s.point_lights << " point, " << s.directional_lights << " directional, "
-            << s.area_lights << " area\n"
+            << "lights       " << s.point_lights << " point, " << s.spot_lights << " spot, " << s.directional_lights
+            << " directional, " << s.area_lights << " area\n"
             << "spheres      " << s.spheres_stored << " stored, " << s.spheres_rendered << " after instancing\n"
             << "triangles    " << s.triangles_stored << " stored, " << s.triangles_rendered << " after instancing\n"
             << "meshes       " << s.meshes << " (" << s.vertices_stored << " vertices)\n"

@@ -30,7 +30,8 @@ JobIdentity render_job_identity(const SceneDescription& description, const Scene
   identity.set("max depth", std::to_string(scene.render.max_depth));
   identity.set("integrator", std::string(integrator_name(scene.render.integrator)) + ", " +
                                  path_sampling_name(scene.render.path_sampling) + " sampling, " +
-                                 sampler_name(scene.render.sampler) + " sampler");
+                                 sampler_name(scene.render.sampler) + " sampler, " +
+                                 light_sampler_name(scene.render.light_sampler) + " light sampler");
   identity.set("backend", settings.backend);
   if (settings.backend == "embree")
     identity.set("embree", "quality " + quality_name(settings.backend_options.embree_quality) +

@@ -63,11 +63,13 @@ LightSample sample_light_of_kind(const QuadLight& light, const Vec3& point, Samp
 namespace {
 
 int per_axis(const PointLight&) { return 1; }
+int per_axis(const SpotLight&) { return 1; }
 int per_axis(const DirectionalLight&) { return 1; }
 int per_axis(const SphereLight& light) { return light.samples_per_axis; }
 int per_axis(const QuadLight& light) { return light.samples_per_axis; }
 
 std::optional<float> hit(const PointLight&, const Ray&, float) { return std::nullopt; }
+std::optional<float> hit(const SpotLight&, const Ray&, float) { return std::nullopt; }
 std::optional<float> hit(const DirectionalLight&, const Ray&, float) { return std::nullopt; }
 
 std::optional<float> hit(const SphereLight& light, const Ray& ray, float t_max) {
@@ -102,6 +104,7 @@ std::optional<float> hit(const QuadLight& light, const Ray& ray, float t_max) {
 }
 
 Color emission(const PointLight&) { return Color(0.0f); }
+Color emission(const SpotLight&) { return Color(0.0f); }
 Color emission(const DirectionalLight&) { return Color(0.0f); }
 Color emission(const SphereLight& light) { return light.radiance; }
 Color emission(const QuadLight& light) { return light.radiance; }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <stdexcept>
 
@@ -23,6 +24,10 @@ float average(const Color& c) { return (c.x + c.y + c.z) * (1.0f / 3.0f); }
 struct Power {
   float scene_radius;
   float operator()(const PointLight& l) const { return 4.0f * kPi * average(l.radiance); }
+  // pbrt-v4's: the inner cone at full intensity, the falloff band counted at half.
+  float operator()(const SpotLight& l) const {
+    return 2.0f * kPi * average(l.radiance) * ((1.0f - l.cos_inner) + (l.cos_inner - l.cos_outer) * 0.5f);
+  }
   float operator()(const DirectionalLight& l) const { return kPi * scene_radius * scene_radius * average(l.radiance); }
   float operator()(const SphereLight& l) const { return kPi * 4.0f * kPi * l.radius * l.radius * average(l.radiance); }
   float operator()(const QuadLight& l) const { return kPi * l.area * average(l.radiance); }
@@ -36,6 +41,45 @@ struct Power {
   float operator()(const EnvironmentRef& l) const {
     return kPi * scene_radius * scene_radius * 4.0f * kPi * l.light->mean_radiance();
   }
+};
+
+// Where each light is and which way it shines, for the light tree; nothing for the lights
+// without a position. `power` is what Power gives it.
+struct Bounds {
+  float power;
+  static BBox box(std::initializer_list<Vec3> points) {
+    BBox b;
+    for (const Vec3& p : points) b.extend(p);
+    return b;
+  }
+  static BBox sphere_box(const Vec3& center, float radius) { return box({center - Vec3(radius), center + Vec3(radius)}); }
+  // A point light shines every way: a sphere of normals (cos θ_o = −1), each emitting over its
+  // hemisphere (θ_e = π/2), as pbrt-v4 bounds it.
+  std::optional<LightBounds> operator()(const PointLight& l) const {
+    return LightBounds{box({l.position}), Vec3(0, 0, 1), power, -1.0f, 0.0f, false};
+  }
+  // A spot light: its directions within the outer cone (θ_o), and no further (θ_e just above 0:
+  // the importance is zero only strictly outside, so the cone's edge is never ruled out). Its
+  // power as a point light's of the same intensity, as pbrt-v4 has it: the bounds already account
+  // for the cone, and two spots of equal intensity should be equally likely where both reach.
+  std::optional<LightBounds> operator()(const SpotLight& l) const {
+    return LightBounds{box({l.position}), l.axis, 4.0f * kPi * average(l.radiance), l.cos_outer, 0.999f, false};
+  }
+  std::optional<LightBounds> operator()(const DirectionalLight&) const { return std::nullopt; }
+  std::optional<LightBounds> operator()(const SphereLight& l) const {
+    return LightBounds{sphere_box(l.center, l.radius), Vec3(0, 0, 1), power, -1.0f, 0.0f, false};
+  }
+  std::optional<LightBounds> operator()(const QuadLight& l) const {
+    return LightBounds{box({l.corner, l.corner + l.edge1, l.corner + l.edge2, l.corner + l.edge1 + l.edge2}), l.normal,
+                       power, 1.0f, 0.0f, false};
+  }
+  std::optional<LightBounds> operator()(const EmissiveTriangle& l) const {
+    return LightBounds{box({l.p0, l.p0 + l.e1, l.p0 + l.e2}), l.normal, power, 1.0f, 0.0f, l.emission.two_sided};
+  }
+  std::optional<LightBounds> operator()(const EmissiveSphere& l) const {
+    return LightBounds{sphere_box(l.center, l.radius), Vec3(0, 0, 1), power, -1.0f, 0.0f, l.emission.two_sided};
+  }
+  std::optional<LightBounds> operator()(const EnvironmentRef&) const { return std::nullopt; }
 };
 
 // A sphere is sampled by the cone it fills from points clearly outside it, by area from points on
@@ -117,6 +161,16 @@ struct Sampler {
     const float d = std::sqrt(d2);
     return PathLightSample{to_light / d, d, l.radiance / d2, 1.0f, true, 0};
   }
+  std::optional<PathLightSample> operator()(const SpotLight& l) const {
+    const Vec3 to_light = l.position - from;
+    const float d2 = dot(to_light, to_light);
+    if (!(d2 > 0.0f)) return std::nullopt;
+    const float d = std::sqrt(d2);
+    const Vec3 direction = to_light / d;
+    const float falloff = l.falloff(-direction);
+    if (!(falloff > 0.0f)) return std::nullopt;  // outside the outer cone
+    return PathLightSample{direction, d, l.radiance * (falloff / d2), 1.0f, true, 0};
+  }
   std::optional<PathLightSample> operator()(const DirectionalLight& l) const {
     return PathLightSample{l.to_light, kInfinity, l.radiance, 1.0f, true, 0};
   }
@@ -173,6 +227,7 @@ struct Pdf {
   const Vec3& from;
   const Vec3& on_light;
   float operator()(const PointLight&) const { return 0.0f; }
+  float operator()(const SpotLight&) const { return 0.0f; }
   float operator()(const DirectionalLight&) const { return 0.0f; }
   float operator()(const SphereLight& l) const {
     return clearly_outside(l.center, l.radius, from) ? sphere_pdf(l.center, l.radius, from, on_light) : 0.0f;
@@ -188,7 +243,8 @@ struct Pdf {
 
 }  // namespace
 
-LightSet::LightSet(const RenderScene& scene, const EnvironmentLight* environment) : environment_(environment) {
+LightSet::LightSet(const RenderScene& scene, const EnvironmentLight* environment)
+    : sampler_kind_(scene.render.light_sampler), environment_(environment) {
   if (scene.environment && !environment)
     throw std::logic_error("LightSet: the scene has an environment but none was built for it");
   for (const Light& light : scene.lights) {
@@ -213,15 +269,65 @@ LightSet::LightSet(const RenderScene& scene, const EnvironmentLight* environment
     power.push_back(std::isfinite(p) && p > 0.0f ? p : 0.0f);
   }
   pick_ = AliasTable(power);
+
+  std::vector<std::optional<LightBounds>> light_bounds;
+  light_bounds.reserve(lights_.size());
+  for (std::uint32_t i = 0; i < lights_.size(); ++i) light_bounds.push_back(std::visit(Bounds{power[i]}, lights_[i]));
+  tree_ = LightTree(light_bounds);
+  infinite_slot_.assign(lights_.size(), kInvalidId);
+  std::vector<float> infinite_power;
+  double infinite_total = 0.0;
+  for (std::uint32_t i = 0; i < lights_.size(); ++i)
+    if (!light_bounds[i] && power[i] > 0.0f) {
+      infinite_slot_[i] = static_cast<std::uint32_t>(infinite_.size());
+      infinite_.push_back(i);
+      infinite_power.push_back(power[i]);
+      infinite_total += power[i];
+    }
+  infinite_pick_ = AliasTable(infinite_power);
+  const double total = infinite_total + static_cast<double>(tree_.power());
+  infinite_probability_ = total > 0.0 ? static_cast<float>(infinite_total / total) : 0.0f;
+}
+
+float LightSet::pick_probability(std::uint32_t index, const Vec3& point) const {
+  switch (sampler_kind_) {
+    case LightSamplerKind::kPower: return pick_.pmf(index);
+    case LightSamplerKind::kTree:
+      if (infinite_slot_[index] != kInvalidId) return infinite_probability_ * infinite_pick_.pmf(infinite_slot_[index]);
+      return (1.0f - infinite_probability_) * tree_.pmf(point, index);
+  }
+  return 0.0f;
 }
 
 std::optional<PathLightSample> LightSet::sample(const Vec3& point, float u_pick, Sample2D u,
                                                 const TextureLookup* textures) const {
-  const AliasTable::Pick pick = pick_.sample(u_pick);
-  std::optional<PathLightSample> s = std::visit(Sampler{point, u, textures}, lights_[pick.index]);
+  std::uint32_t index = kInvalidId;
+  float pmf = 0.0f;
+  switch (sampler_kind_) {
+    case LightSamplerKind::kPower: {
+      const AliasTable::Pick pick = pick_.sample(u_pick);
+      index = pick.index;
+      pmf = pick.pmf;
+      break;
+    }
+    case LightSamplerKind::kTree:
+      if (u_pick < infinite_probability_) {
+        const AliasTable::Pick pick = infinite_pick_.sample(std::min(u_pick / infinite_probability_, 0x1.fffffep-1f));
+        index = infinite_[pick.index];
+        pmf = infinite_probability_ * pick.pmf;
+      } else {
+        const float u_tree = std::min((u_pick - infinite_probability_) / (1.0f - infinite_probability_), 0x1.fffffep-1f);
+        const std::optional<LightTree::Pick> pick = tree_.sample(point, u_tree);
+        if (!pick) return std::nullopt;
+        index = pick->light;
+        pmf = (1.0f - infinite_probability_) * pick->pmf;
+      }
+      break;
+  }
+  std::optional<PathLightSample> s = std::visit(Sampler{point, u, textures}, lights_[index]);
   if (s) {
-    s->pdf *= pick.pmf;
-    s->light = pick.index;
+    s->pdf *= pmf;
+    s->light = index;
   }
   return s;
 }
@@ -314,12 +420,12 @@ std::uint32_t LightSet::light_of_hit(const Hit& hit) const {
 
 float LightSet::pdf(std::uint32_t index, const Vec3& from, const Vec3& on_light) const {
   if (index >= lights_.size() || pick_.empty()) return 0.0f;
-  return pick_.pmf(index) * std::visit(Pdf{from, on_light}, lights_[index]);
+  return pick_probability(index, from) * std::visit(Pdf{from, on_light}, lights_[index]);
 }
 
 float LightSet::environment_pdf(const Vec3& direction) const {
   if (environment_index_ == kInvalidId || pick_.empty()) return 0.0f;
-  return pick_.pmf(environment_index_) * environment_->pdf(direction);
+  return pick_probability(environment_index_, Vec3(0.0f)) * environment_->pdf(direction);
 }
 
 std::optional<LightSet::SeenLight> LightSet::seen_light(const Ray& ray, float t_max) const {

@@ -27,7 +27,8 @@ float power_heuristic(float a, float b) {
 // (or a light's) does not occlude the point sampled on it.
 constexpr float kShadowEpsilon = 1e-4f;
 
-bool is_black(const Color& c) { return !(c.x > 0.0f || c.y > 0.0f || c.z > 0.0f); }
+// No channel positive (NaN counts as nothing).
+bool carries_no_light(const Color& c) { return !(c.x > 0.0f || c.y > 0.0f || c.z > 0.0f); }
 
 template <class Sampler>
 class PathTracer {
@@ -90,14 +91,14 @@ class PathTracer {
 
     const Sample2D u = sampler_.sample_2d(key.pixel_key, key.sample_index, dimension(path_dimension::kBsdfDirection));
     const std::optional<BsdfSample> bs = bsdf_sample(surface.bsdf, wo, choices.y, u);
-    if (!bs || !(bs->pdf > 0.0f) || is_black(bs->f)) return;
+    if (!bs || !(bs->pdf > 0.0f) || carries_no_light(bs->f)) return;
     Color next_beta = beta * bs->f * (std::fabs(bs->wi.z) / bs->pdf);
     if (path.bounce >= kRouletteStart) {
       const float q = std::max(0.05f, 1.0f - max_component(next_beta));
       if (sampler_.sample_1d(key.pixel_key, key.sample_index, dimension(path_dimension::kRoulette)) < q) return;
       next_beta = next_beta / (1.0f - q);
     }
-    if (!is_finite(next_beta) || is_black(next_beta)) return;
+    if (!is_finite(next_beta) || carries_no_light(next_beta)) return;
     const Vec3 direction = surface.frame.to_world(bs->wi);
     std::uint32_t medium = path.medium;
     if (bs->transmitted && material.dielectric) medium = sp.front_face ? sp.material : PathWorkspace::kOutside;
@@ -146,7 +147,7 @@ class PathTracer {
                         const PathLightSample& ls, const Color& beta) {
     const Vec3 wi = surface.frame.to_local(ls.direction);
     const Color f = bsdf_eval(surface.bsdf, wo, wi) * std::fabs(wi.z);
-    if (is_black(f)) return;
+    if (carries_no_light(f)) return;
     float weight = 1.0f;
     if (!ls.delta) {
       switch (scene_.render.path_sampling) {
@@ -156,7 +157,7 @@ class PathTracer {
       }
     }
     const Color contribution = beta * f * ls.radiance * (weight / ls.pdf);
-    if (!is_finite(contribution) || is_black(contribution)) return;
+    if (!is_finite(contribution) || carries_no_light(contribution)) return;
     Ray ray;
     if (std::isinf(ls.distance)) {
       ray = spawn_ray(sp, ls.direction);

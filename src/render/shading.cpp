@@ -50,14 +50,15 @@ Color through_medium(const RenderScene& scene, const Workspace::RayTask& task, c
   return task.weight * beer_lambert_transmittance(glass.transmittance, glass.transmittance_distance, t * length(ray.dir));
 }
 
-// The shadow rays of light `l` for surface `s`: one for a point or directional light, samples² for
-// an area light (none for a light behind the surface, by either normal).
+// The shadow rays of light `l` for surface `s`: one for a point, spot or directional light, samples²
+// for an area light (none for a light behind the surface, by either normal, or sending nothing).
 void queue_light_shadow_rays(const RenderScene& scene, const StratifiedSampler& sampler, const SampleKey& key,
                              int depth, const Workspace::ShadedSurface& s, std::uint32_t l, Workspace& ws) {
   const Light& light = scene.lights[l];
   const int per_axis = ws.light_samples_per_axis[l];
-  if (per_axis == 1 && !ws.is_emitter[l]) {  // a point or directional light: one shadow ray
+  if (per_axis == 1 && !ws.is_emitter[l]) {  // a point, spot or directional light: one shadow ray
     const LightSample ls = sample_light(light, s.point.position, Sample2D{0.5f, 0.5f});
+    if (is_black(ls.radiance)) return;  // outside a spot light's cone
     const float n_dot_l = dot(s.point.shading_normal, ls.direction);
     if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) return;
     append_ray(ws.shadow_rays, std::isinf(ls.distance) ? spawn_ray(s.point, ls.direction)
@@ -84,8 +85,9 @@ void queue_light_shadow_rays(const RenderScene& scene, const StratifiedSampler& 
 constexpr std::size_t kMaxLanedLights = 8;
 
 // The shadow rays of every surface of the generation: surface by surface, lights in scene order.
-// Where every light is a point or directional light, four surfaces at a time take each point
-// light through point_light_lanes (the same rays, bit for bit) and are queued in the same order.
+// Where every light is a point, spot or directional light, four surfaces at a time take each point
+// light through point_light_lanes (the same rays, bit for bit; the others one surface at a time)
+// and are queued in the same order.
 RTPRO_AVX2_CLONES
 void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sampler, std::span<const SampleKey> keys,
                        const Workspace::Generation& generation, int depth, Workspace& ws) {

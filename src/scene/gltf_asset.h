@@ -36,6 +36,10 @@ struct GltfLight {
   Vec3 direction;  // directional and spot: the direction light travels in (the node's -z)
   Color color;
   float intensity;  // as the file says: candela (point, spot) or lux (directional)
+  // Spot: the cone's half-angles in radians, 0 <= inner <= outer <= π/2 (a light's spot.innerConeAngle
+  // and spot.outerConeAngle, default 0 and π/4).
+  float inner_cone_angle;
+  float outer_cone_angle;
 };
 
 struct GltfAsset {

@@ -2,13 +2,20 @@
 
 #include "ascii_scan.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <string>
 
 namespace rtpro::gltf {
 
 namespace {
 
 constexpr float kRadiansToDegrees = 57.29577951308232f;
+constexpr double kHalfPi = std::numbers::pi / 2.0;
+// How far past its limits a spot light's angle may lie and be read as the limit: rounding in
+// exporters (Blender's π/2 as a float is 4e-8 above it).
+constexpr double kConeAngleSlack = 1e-6;
 
 std::string node_path(int node) { return "nodes[" + std::to_string(node) + "]"; }
 
@@ -222,7 +229,22 @@ class NodeWalker {
     if (light.color.size() == 3 && all_finite(light.color))
       out.color = Color(float(std::max(light.color[0], 0.0)), float(std::max(light.color[1], 0.0)), float(std::max(light.color[2], 0.0)));
     out.intensity = std::isfinite(light.intensity) && light.intensity >= 0.0 && light.intensity <= 1e9 ? float(light.intensity) : 0.0f;
+    if (out.kind == GltfLight::Kind::kSpot) read_spot_cone(light.spot, index, out);
     asset_.lights.push_back(out);
+  }
+
+  // The glTF rule 0 <= innerConeAngle < outerConeAngle <= π/2, with equal angles allowed (a hard
+  // edge) and rounding past a limit read as the limit.
+  void read_spot_cone(const tinygltf::SpotLight& spot, int index, GltfLight& out) const {
+    const std::string path = "extensions.KHR_lights_punctual.lights[" + std::to_string(index) + "].spot.";
+    const double outer = spot.outerConeAngle, inner = spot.innerConeAngle;
+    if (!(outer > 0.0 && outer <= kHalfPi + kConeAngleSlack))
+      reader_.fail(path + "outerConeAngle", "is " + std::to_string(outer) + "; it must be > 0 and at most π/2 radians");
+    out.outer_cone_angle = float(std::min(outer, kHalfPi));
+    if (!(inner >= 0.0 && inner <= outer + kConeAngleSlack))
+      reader_.fail(path + "innerConeAngle", "is " + std::to_string(inner) + "; it must be >= 0 and at most outerConeAngle (" +
+                                                std::to_string(outer) + ")");
+    out.inner_cone_angle = std::min(float(inner), out.outer_cone_angle);
   }
 
   const tinygltf::Model& model_;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <numbers>
 
 namespace rtpro {
 
@@ -59,6 +60,16 @@ std::string camera_yaml(const GltfAsset& asset, const BBox& bounds) {
 // point or spot light's candela become W/sr, a directional light's lux W/m².
 constexpr float kLumensPerWatt = 683.0f;
 
+// A spot light's cone, glTF's half-angles in radians as the scene format's degrees: computed in
+// double and held to 90, so a float π/2 (just above it) stays within the format's limit, and
+// printing (monotonic) keeps inner <= outer.
+std::string spot_cone_yaml(const GltfLight& light) {
+  constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
+  const double outer = std::min(90.0, double(light.outer_cone_angle) * kDegreesPerRadian);
+  const double inner = std::min(outer, double(light.inner_cone_angle) * kDegreesPerRadian);
+  return ", inner_angle: " + number(inner) + ", outer_angle: " + number(outer);
+}
+
 bool has_emissive_material(const GltfAsset& asset) {
   return std::any_of(asset.materials.begin(), asset.materials.end(),
                      [](const MaterialDesc& m) { return max_component(m.emission) > 0.0f; });
@@ -80,8 +91,11 @@ std::string lights_yaml(const GltfAsset& asset) {
         text += "  - {type: directional, direction: " + vector(light.direction) + common;
         break;
       case GltfLight::Kind::kPoint:
-      case GltfLight::Kind::kSpot:
         text += "  - {type: point, position: " + vector(light.position) + common;
+        break;
+      case GltfLight::Kind::kSpot:
+        text += "  - {type: spot, position: " + vector(light.position) + ", direction: " + vector(light.direction) +
+                spot_cone_yaml(light) + common;
         break;
     }
   }
@@ -107,11 +121,6 @@ std::string gltf_scene_yaml(const GltfAsset& asset) {
 
 SceneDescription parse_gltf_scene_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   auto asset = std::make_shared<GltfAsset>(load_gltf_file(file));
-  for (const GltfLight& light : asset->lights)
-    if (light.kind == GltfLight::Kind::kSpot) {
-      asset->stats.warnings.push_back(file.string() + ": spot lights are rendered as point lights (their cone is ignored)");
-      break;
-    }
   SceneDescription description = parse_scene_text(gltf_scene_yaml(*asset), file, overrides);
   for (GltfDesc& gltf : description.world.gltfs)
     if (gltf.file == file.lexically_normal() && gltf.normals == NormalsMode::kAuto && gltf.material == kNoMaterial) gltf.loaded = asset;

@@ -1,11 +1,21 @@
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/light.h"
 
+#include <cmath>
+#include <numbers>
+
 namespace rtpro {
 
 namespace {
 
 Light make(const PointLightDesc& d) { return PointLight{d.position, d.color * d.intensity}; }
+Light make(const SpotLightDesc& d) {
+  constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
+  // Cosines in double, then rounded: inner <= outer keeps cos_outer <= cos_inner.
+  return SpotLight{d.position, normalize(d.direction), d.color * d.intensity,
+                   static_cast<float>(std::cos(double(d.inner_angle) * kRadiansPerDegree)),
+                   static_cast<float>(std::cos(double(d.outer_angle) * kRadiansPerDegree))};
+}
 Light make(const DirectionalLightDesc& d) { return DirectionalLight{-normalize(d.direction), d.color * d.intensity}; }
 Light make(const SphereLightDesc& d) { return SphereLight{d.center, d.radius, d.color * d.intensity, d.samples}; }
 Light make(const QuadLightDesc& d) {

@@ -4,6 +4,7 @@
 #include "gltf_scene.h"
 #include "yaml_document.h"
 #include "yaml_environment.h"
+#include "yaml_lights.h"
 #include "yaml_reader.h"
 #include "yaml_scene_objects.h"
 
@@ -29,12 +30,6 @@ constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{256} << 20;
 constexpr float kMinUpViewSine = 1e-3f;
 
 bool absent(const YamlNode* node) { return !node || node->is_null(); }
-
-float read_non_negative(const YamlNode& node, const std::string& name) {
-  const double value = read_number(node, name);
-  if (value < 0.0) fail_at(node, name + " must be >= 0, got " + std::string(node.scalar()));
-  return static_cast<float>(value);
-}
 
 void read_version(const YamlNode& root) {
   const YamlEntry* version = root.find("rtpro");
@@ -121,7 +116,7 @@ int read_spp(const YamlNode& node) {
 RenderSettings read_render(const YamlNode* node) {
   RenderSettings settings;
   if (absent(node)) return settings;
-  const MappingReader render(*node, "render", {"spp", "max_depth", "seed", "ambient", "background", "integrator", "sampling", "sampler"});
+  const MappingReader render(*node, "render", {"spp", "max_depth", "seed", "ambient", "background", "integrator", "sampling", "sampler", "light_sampler"});
   if (const YamlNode* spp = render.optional("spp")) settings.spp = read_spp(*spp);
   if (const YamlNode* integrator = render.optional("integrator")) {
     const std::string text = read_string(*integrator, "render.integrator");
@@ -142,6 +137,12 @@ RenderSettings read_render(const YamlNode* node) {
     if (text == "sobol") settings.sampler = SamplerKind::kSobol;
     else if (text == "stratified") settings.sampler = SamplerKind::kStratified;
     else fail_at(*sampler, "render.sampler must be sobol or stratified, got '" + text + "'");
+  }
+  if (const YamlNode* light_sampler = render.optional("light_sampler")) {
+    const std::string text = read_string(*light_sampler, "render.light_sampler");
+    if (text == "tree") settings.light_sampler = LightSamplerKind::kTree;
+    else if (text == "power") settings.light_sampler = LightSamplerKind::kPower;
+    else fail_at(*light_sampler, "render.light_sampler must be tree or power, got '" + text + "'");
   }
   if (const YamlNode* depth = render.optional("max_depth")) {
     const std::int64_t value = read_integer(*depth, "render.max_depth");
@@ -394,80 +395,6 @@ std::vector<MaterialDesc> read_materials(const YamlNode* node, const std::filesy
     }
   }
   return materials;
-}
-
-// Shadow rays per axis of an area light: samples² per light per shading point.
-int read_light_samples(const MappingReader& light, int fallback) {
-  const YamlNode* node = light.optional("samples");
-  if (!node) return fallback;
-  const double n = read_number(*node, light.field("samples"));
-  if (!(n >= 1.0 && n <= 64.0) || n != std::floor(n))
-    fail_at(*node, light.field("samples") + " is shadow rays per axis (samples² per point): a whole number from 1 to 64, got " +
-                       std::string(node->scalar()));
-  return static_cast<int>(n);
-}
-
-LightDesc read_area_light(const YamlNode& node, const std::string& type) {
-  if (type == "sphere") {
-    const MappingReader light(node, "sphere light", {"type", "center", "radius", "color", "intensity", "samples"});
-    SphereLightDesc desc;
-    desc.center = read_vec3(light.required("center"), light.field("center"));
-    const YamlNode& radius = light.required("radius");
-    desc.radius = static_cast<float>(read_number(radius, light.field("radius")));
-    if (!(desc.radius > 0.0f)) fail_at(radius, light.field("radius") + " must be positive, got " + std::string(radius.scalar()));
-    if (const YamlNode* color = light.optional("color")) desc.color = read_color(*color, light.field("color"));
-    if (const YamlNode* intensity = light.optional("intensity"))
-      desc.intensity = read_non_negative(*intensity, light.field("intensity"));
-    desc.samples = read_light_samples(light, desc.samples);
-    return desc;
-  }
-  const MappingReader light(node, "quad light", {"type", "position", "edge1", "edge2", "color", "intensity", "samples"});
-  QuadLightDesc desc;
-  desc.position = read_vec3(light.required("position"), light.field("position"));
-  const YamlNode& edge1 = light.required("edge1");
-  const YamlNode& edge2 = light.required("edge2");
-  desc.edge1 = read_vec3(edge1, light.field("edge1"));
-  desc.edge2 = read_vec3(edge2, light.field("edge2"));
-  const Vec3 n = cross(desc.edge1, desc.edge2);
-  if (!(length(n) > 1e-12f * length(desc.edge1) * length(desc.edge2)) || !(length(n) > 0.0f))
-    fail_at(edge2, light.field("edge2") + " must not be zero or parallel to edge1: the quad has no area");
-  if (const YamlNode* color = light.optional("color")) desc.color = read_color(*color, light.field("color"));
-  if (const YamlNode* intensity = light.optional("intensity"))
-    desc.intensity = read_non_negative(*intensity, light.field("intensity"));
-  desc.samples = read_light_samples(light, desc.samples);
-  return desc;
-}
-
-LightDesc read_light(const YamlNode& node) {
-  const std::string type = read_entry_type(node, "light", {"point", "directional", "sphere", "quad"});
-  if (type == "sphere" || type == "quad") return read_area_light(node, type);
-  if (type == "point") {
-    const MappingReader light(node, "point light", {"type", "position", "color", "intensity"});
-    PointLightDesc desc;
-    desc.position = read_vec3(light.required("position"), light.field("position"));
-    if (const YamlNode* color = light.optional("color")) desc.color = read_color(*color, light.field("color"));
-    if (const YamlNode* intensity = light.optional("intensity"))
-      desc.intensity = read_non_negative(*intensity, light.field("intensity"));
-    return desc;
-  }
-  const MappingReader light(node, "directional light", {"type", "direction", "color", "intensity"});
-  DirectionalLightDesc desc;
-  const YamlNode& direction = light.required("direction");
-  desc.direction = read_vec3(direction, light.field("direction"));
-  if (!(length(desc.direction) > 0.0f)) fail_at(direction, light.field("direction") + " must not be zero-length");
-  desc.direction = normalize(desc.direction);
-  if (const YamlNode* color = light.optional("color")) desc.color = read_color(*color, light.field("color"));
-  if (const YamlNode* intensity = light.optional("intensity"))
-    desc.intensity = read_non_negative(*intensity, light.field("intensity"));
-  return desc;
-}
-
-std::vector<LightDesc> read_lights(const YamlNode* node) {
-  std::vector<LightDesc> lights;
-  if (absent(node)) return lights;
-  if (!node->is_sequence()) fail_at(*node, "lights: expected a list of lights, got " + node->describe());
-  for (const YamlNodePtr& light : node->items()) lights.push_back(read_light(*light));
-  return lights;
 }
 
 void check_scene_root(const YamlNode& root) {

@@ -40,6 +40,7 @@ SceneSummary summarize(const RenderScene& scene) {
   s.materials = scene.materials.size();
   for (const Light& light : scene.lights) {
     std::visit(Overloaded{[&](const PointLight&) { ++s.point_lights; },
+                          [&](const SpotLight&) { ++s.spot_lights; },
                           [&](const DirectionalLight&) { ++s.directional_lights; },
                           [&](const SphereLight&) { ++s.area_lights; },
                           [&](const QuadLight&) { ++s.area_lights; }},

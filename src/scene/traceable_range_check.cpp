@@ -67,10 +67,11 @@ void check_traceable_range(const RenderScene& scene, std::span<const SourceLocat
   const std::vector<BBox> prototype_bounds = scene.prototype_bounds();
   const std::string limit = number(kMaxTraceableMagnitude);
 
-  // Where rays can start (the camera, any surface) and what they can aim at (a point light).
+  // Where rays can start (the camera, any surface) and what they can aim at (a point or spot light).
   double extent = largest_magnitude(camera.position);
   for (const LightDesc& light : lights) {
     if (const auto* point = std::get_if<PointLightDesc>(&light)) extent = std::max(extent, largest_magnitude(point->position));
+    if (const auto* spot = std::get_if<SpotLightDesc>(&light)) extent = std::max(extent, largest_magnitude(spot->position));
     if (const auto* sphere = std::get_if<SphereLightDesc>(&light))
       extent = std::max(extent, largest_magnitude(sphere->center) + double(sphere->radius));
     if (const auto* quad = std::get_if<QuadLightDesc>(&light))

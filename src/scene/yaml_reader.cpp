@@ -97,6 +97,12 @@ double read_number(const YamlNode& node, const std::string& name) {
   return value;
 }
 
+float read_non_negative(const YamlNode& node, const std::string& name) {
+  const double value = read_number(node, name);
+  if (value < 0.0) fail_at(node, name + " must be >= 0, got " + std::string(node.scalar()));
+  return static_cast<float>(value);
+}
+
 std::int64_t read_integer(const YamlNode& node, const std::string& name) {
   return parse_integer<std::int64_t>(node, name, "an integer");
 }

@@ -47,6 +47,8 @@ std::string read_entry_type(const YamlNode& entry, const std::string& what, cons
 
 // `name` is the field's name in messages.
 double read_number(const YamlNode& node, const std::string& name);
+// A number >= 0 (weights, intensities).
+float read_non_negative(const YamlNode& node, const std::string& name);
 std::int64_t read_integer(const YamlNode& node, const std::string& name);
 std::uint64_t read_unsigned(const YamlNode& node, const std::string& name);
 std::string read_string(const YamlNode& node, const std::string& name);

@@ -434,15 +434,16 @@ void expect_light_sampler_matches_pdf(const std::string& label, const TestScene&
     }));
 
   const double level = test::sidak_level(test::kChi2Significance, static_cast<int>(viewpoints.size()));
-  const double total = total_power(lights);
   for (std::size_t v = 0; v < viewpoints.size(); ++v) {
     const Run run = runs[v].get();
     const test::Chi2Outcome& outcome = run.outcome;
     const Vec3& from = viewpoints[v].point;
+    // The light tree picks by what each light may send to the point, not by power.
     double reaching_share = 0.0, delta_share = 0.0;
     for (const TestLight& light : lights) {
-      if (sends_light_to(light, from)) reaching_share += light.power / total;
-      if (light.delta()) delta_share += light.power / total;
+      const double share = set.pick_probability(index_of(set, light), from);
+      if (sends_light_to(light, from)) reaching_share += share;
+      if (light.delta()) delta_share += share;
     }
     std::ostringstream line;
     line << "[chi2] light set " << label << ", " << viewpoints[v].name << ": p=" << outcome.p_value
@@ -587,11 +588,13 @@ TEST(LightSetChi2, MixedLightsSamplerMatchesPdf) {
                                     {"inside the sphere light", Vec3(-1.4f, -2.1f, -1.0f)}});
 }
 
-// Over a fine grid of u_pick, each light is picked with its share of the power, and a delta
-// sample reports exactly that share as its pdf.
+// Under render.light_sampler: power, over a fine grid of u_pick, each light is picked with its
+// share of the power, and a delta sample reports exactly that share as its pdf.
 TEST(LightSetChi2, PicksLightsInProportionToPower) {
   const TestScene scene = mixed_scene();
-  const LightSet set(scene.scene());
+  RenderScene by_power = scene.scene();
+  by_power.render.light_sampler = LightSamplerKind::kPower;
+  const LightSet set(by_power);
   const std::vector<TestLight>& lights = scene.lights();
   ASSERT_EQ(set.lights().size(), lights.size());
   const Vec3 from(0.0f);

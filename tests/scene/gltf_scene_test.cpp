@@ -72,13 +72,77 @@ TEST(GltfScene, TheFirstCameraAndThePunctualLightsAreUsed) {
   EXPECT_EQ(scene.render.background, Color(0.0f));
   const auto& p = std::get<PointLightDesc>(scene.lights[0]);
   const auto& d = std::get<DirectionalLightDesc>(scene.lights[1]);
-  const auto& s = std::get<PointLightDesc>(scene.lights[2]);
+  const auto& s = std::get<SpotLightDesc>(scene.lights[2]);
   EXPECT_NEAR(p.intensity, 400.0f / 683.0f, 1e-6f);
   EXPECT_EQ(p.color, Color(1.0f, 0.5f, 0.5f));
   EXPECT_NEAR(d.intensity, 2.0f / 683.0f, 1e-6f);
   EXPECT_NEAR(d.direction.y, -1.0f, 1e-5f);  // the node's -z turned to point down
   EXPECT_NEAR(s.intensity, 100.0f / 683.0f, 1e-6f);
   EXPECT_EQ(s.position, Vec3(10.5f, 0.5f, 10.5f));
+  EXPECT_EQ(s.direction, Vec3(0.0f, 0.0f, -1.0f));  // an unrotated node's -z
+  EXPECT_EQ(s.inner_angle, 0.0f);                   // glTF's defaults: 0 and π/4
+  EXPECT_NEAR(s.outer_angle, 45.0f, 1e-5f);
+}
+
+// A spot light on a child of a rotated, translated node: placed and aimed by both transforms (it
+// shines down the node's -z), its cone's half-angles from radians to degrees, candela / 683 W/sr.
+TEST(GltfScene, ASpotLightKeepsItsConeAndShinesDownItsNodesMinusZ) {
+  GltfFile gltf = offset_model();
+  gltf.json["extensionsUsed"] = {"KHR_lights_punctual"};
+  gltf.json["extensions"]["KHR_lights_punctual"]["lights"] = {
+      {{"type", "spot"}, {"intensity", 1366}, {"color", {0.5, 1, 1}},
+       {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.6}}}},
+      {{"type", "spot"}, {"spot", {{"outerConeAngle", double(1.5707963705062866)}}}}};  // π/2 as a float, as Blender writes it
+  const double s = std::sqrt(0.5);
+  const int lamp = gltf.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}, {"translation", {0, 0, -2}}});
+  // 90° about +y: -z turns to -x.
+  const int arm = gltf.node({{"children", {lamp}}, {"translation", {1, 2, 3}}, {"rotation", {0, s, 0, s}}});
+  const int wide = gltf.node({{"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+  gltf.json["scenes"][0]["nodes"] = {0, arm, wide};
+  const SceneDescription scene = parse_scene_file(gltf.write("spot"));
+  ASSERT_EQ(scene.lights.size(), 2u);
+  const auto& spot = std::get<SpotLightDesc>(scene.lights[0]);
+  EXPECT_NEAR(spot.position.x, -1.0f, 1e-5f);
+  EXPECT_NEAR(spot.position.y, 2.0f, 1e-5f);
+  EXPECT_NEAR(spot.position.z, 3.0f, 1e-5f);
+  EXPECT_NEAR(spot.direction.x, -1.0f, 1e-6f);
+  EXPECT_NEAR(spot.direction.y, 0.0f, 1e-6f);
+  EXPECT_NEAR(spot.direction.z, 0.0f, 1e-6f);
+  EXPECT_NEAR(spot.inner_angle, 0.2 * 180.0 / 3.14159265358979, 1e-4);
+  EXPECT_NEAR(spot.outer_angle, 0.6 * 180.0 / 3.14159265358979, 1e-4);
+  EXPECT_NEAR(spot.intensity, 2.0f, 1e-6f);
+  EXPECT_EQ(spot.color, Color(0.5f, 1.0f, 1.0f));
+  const auto& hemisphere = std::get<SpotLightDesc>(scene.lights[1]);
+  EXPECT_EQ(hemisphere.outer_angle, 90.0f);  // held to the limit, not refused
+  EXPECT_EQ(hemisphere.inner_angle, 0.0f);
+  EXPECT_NEAR(hemisphere.intensity, 1.0f / 683.0f, 1e-9f);  // glTF's default intensity, 1 cd
+  const RenderScene render = build_render_scene(scene);
+  const auto& light = std::get<SpotLight>(render.lights[0]);
+  EXPECT_NEAR(light.cos_inner, std::cos(0.2), 1e-6);
+  EXPECT_NEAR(light.cos_outer, std::cos(0.6), 1e-6);
+  EXPECT_NEAR(light.radiance.y, 2.0f, 1e-6f);
+}
+
+// Outside glTF's 0 <= innerConeAngle <= outerConeAngle <= π/2 (beyond rounding) the file is
+// refused at the light's JSON path.
+TEST(GltfScene, ASpotLightsConeOutsideGltfsLimitsIsRefused) {
+  const auto refusal = [](const nlohmann::json& spot) {
+    GltfFile gltf = offset_model();
+    gltf.json["extensionsUsed"] = {"KHR_lights_punctual"};
+    gltf.json["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "spot"}, {"spot", spot}}};
+    gltf.json["scenes"][0]["nodes"] = {0, gltf.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}})};
+    try {
+      parse_scene_file(gltf.write("bad_spot"));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    ADD_FAILURE() << "accepted " << spot.dump();
+    return std::string();
+  };
+  EXPECT_NE(refusal({{"outerConeAngle", 1.6}}).find("lights[0].spot.outerConeAngle"), std::string::npos);
+  EXPECT_NE(refusal({{"outerConeAngle", 0.0}}).find("lights[0].spot.outerConeAngle"), std::string::npos);
+  EXPECT_NE(refusal({{"innerConeAngle", 0.9}}).find("lights[0].spot.innerConeAngle"), std::string::npos);  // past π/4
+  EXPECT_NE(refusal({{"innerConeAngle", -0.1}}).find("at most outerConeAngle"), std::string::npos);
 }
 
 TEST(GltfScene, AnEmissiveMaterialLightsTheSceneInsteadOfTheDefaultSunAndSky) {

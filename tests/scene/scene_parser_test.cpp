@@ -403,8 +403,8 @@ TEST(SceneParser, UnknownObjectInAnInstance) {
 TEST(SceneParser, UnknownEntryAndLightTypesSuggestTheClosest) {
   const std::string entry = with_world("  - {type: sphre}\n");
   EXPECT_SCENE_ERROR(entry, at(entry, 4, "sphre"), {"unknown entry type 'sphre'", "did you mean 'sphere'?"});
-  const std::string light = kHeader + "lights:\n  - {type: spot, position: [0, 1, 0]}\n";
-  EXPECT_SCENE_ERROR(light, at(light, 4, "spot"), {"unknown light type 'spot'", "point, directional"});
+  const std::string light = kHeader + "lights:\n  - {type: lamp, position: [0, 1, 0]}\n";
+  EXPECT_SCENE_ERROR(light, at(light, 4, "lamp"), {"unknown light type 'lamp'", "point, spot, directional"});
   const std::string untyped = with_world("  - {radius: 1}\n");
   EXPECT_SCENE_ERROR(untyped, at(untyped, 4, "{"), {"missing the required key 'type'", "sphere, mesh, instance"});
 }

@@ -1,6 +1,6 @@
 #pragma once
 // What shading needs from a light at a point: where it is and what arrives, one shadow ray's
-// worth at a time. Point and directional lights need one sample; an area light needs
+// worth at a time. Point, spot and directional lights need one sample; an area light needs
 // samples_per_axis² stratified ones, whose radiances average to what the whole light delivers.
 // Each light kind in the Light variant adds one sample_light_of_kind overload (below) and one
 // overload of each function in light_sample.cpp; shading never names a kind.
@@ -24,16 +24,24 @@ struct LightSample {
   Color radiance;
 };
 
-// The side of the stratified grid of shadow samples: 1 for point and directional lights.
+// The side of the stratified grid of shadow samples: 1 for point, spot and directional lights.
 int light_samples_per_axis(const Light& light);
 
 // One overload per light kind; `u` picks the sample (area lights: a point of [0,1)²; ignored by
-// point and directional lights, whose overloads are inline: every shading point of a Whitted scene
-// calls them, and out of line the call and the variant's dispatch cost more than the arithmetic).
+// point, spot and directional lights, whose overloads are inline: every shading point of a Whitted
+// scene calls them, and out of line the call and the variant's dispatch cost more than the arithmetic).
 inline LightSample sample_light_of_kind(const PointLight& light, const Vec3& point, Sample2D) {
   const Vec3 to_light = light.position - point;
   const float distance = length(to_light);
   return {to_light / distance, distance, light.radiance};
+}
+// A point light times its cone's falloff: no distance falloff here either (the Whitted model), and
+// nothing arrives outside the outer cone.
+inline LightSample sample_light_of_kind(const SpotLight& light, const Vec3& point, Sample2D) {
+  const Vec3 to_light = light.position - point;
+  const float distance = length(to_light);
+  const Vec3 direction = to_light / distance;
+  return {direction, distance, light.radiance * light.falloff(-direction)};
 }
 inline LightSample sample_light_of_kind(const DirectionalLight& light, const Vec3&, Sample2D) {
   return {light.to_light, std::numeric_limits<float>::infinity(), light.radiance};
@@ -46,8 +54,8 @@ inline LightSample sample_light(const Light& light, const Vec3& point, Sample2D 
 }
 
 // An area light's emitting surface as seen by a camera or mirror ray: the ray parameter of the
-// nearest visible hit in (ray.tnear, t_max), or nothing (always for point and directional lights,
-// which are never seen). What it shows is light_emission().
+// nearest visible hit in (ray.tnear, t_max), or nothing (always for point, spot and directional
+// lights, which are never seen). What it shows is light_emission().
 std::optional<float> hit_light(const Light& light, const Ray& ray, float t_max);
 Color light_emission(const Light& light);
 

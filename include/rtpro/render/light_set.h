@@ -13,6 +13,7 @@
 #include "rtpro/image/texture_lookup.h"
 #include "rtpro/render/alias_table.h"
 #include "rtpro/render/environment_light.h"
+#include "rtpro/render/light_tree.h"
 #include "rtpro/render/sampler.h"
 #include "rtpro/scene/render_scene.h"
 
@@ -47,17 +48,17 @@ struct EnvironmentRef {
   const EnvironmentLight* light;
 };
 
-// Point lights fall off with the square of distance here: `radiance` is read as intensity (W/sr),
-// as every physically based renderer reads it.
-using PathLight =
-    std::variant<PointLight, DirectionalLight, SphereLight, QuadLight, EmissiveTriangle, EmissiveSphere, EnvironmentRef>;
+// Point and spot lights fall off with the square of distance here: `radiance` is read as intensity
+// (W/sr), as every physically based renderer reads it.
+using PathLight = std::variant<PointLight, SpotLight, DirectionalLight, SphereLight, QuadLight, EmissiveTriangle,
+                               EmissiveSphere, EnvironmentRef>;
 
 struct PathLightSample {
   Vec3 direction;   // unit, from the point towards the light
   float distance;   // to the sampled point; infinity for directional lights and the environment
   Color radiance;   // arriving along `direction` (no pdf folded in)
   float pdf;        // solid angle, times the probability of picking the light; 1 for delta lights
-  bool delta;       // point and directional lights: no BSDF sample can reach them
+  bool delta;       // point, spot and directional lights: no BSDF sample can reach them
   std::uint32_t light;  // which light of the set
 };
 
@@ -81,6 +82,9 @@ class LightSet {
   // probability included), 0 for lights that cannot be hit.
   float pdf(std::uint32_t index, const Vec3& from, const Vec3& on_light) const;
 
+  // The probability that sample() at `point` picks light `index` (render.light_sampler).
+  float pick_probability(std::uint32_t index, const Vec3& point) const;
+
   // The environment, or null; and the pdf sample() has of reaching it along `direction` (solid
   // angle, pick probability included).
   const EnvironmentLight* environment() const { return environment_; }
@@ -98,7 +102,15 @@ class LightSet {
 
  private:
   std::vector<PathLight> lights_;
-  AliasTable pick_;
+  LightSamplerKind sampler_kind_;
+  AliasTable pick_;  // power: every light by its power
+  // tree: the lights with a position in the tree, those without (directional, the environment)
+  // by their power; which of the two by the power of each side.
+  LightTree tree_;
+  std::vector<std::uint32_t> infinite_;            // their light indices
+  std::vector<std::uint32_t> infinite_slot_;       // per light: its place in infinite_, or kInvalidId
+  AliasTable infinite_pick_;
+  float infinite_probability_ = 0.0f;
   std::vector<std::uint32_t> analytic_;  // indices of sphere and rectangle lights
   const EnvironmentLight* environment_ = nullptr;
   std::uint32_t environment_index_ = kInvalidId;

@@ -127,6 +127,17 @@ struct PointLightDesc {
   float intensity = 1.0f;
 };
 
+// A point light that shines into a cone around its axis (pbrt-v4's spot light): full intensity
+// within inner_angle of the axis, none beyond outer_angle, a smooth step in cos θ between.
+struct SpotLightDesc {
+  Vec3 position;
+  Vec3 direction{0.0f, -1.0f, 0.0f};  // unit: the axis light travels along (`look_at` resolved)
+  Color color{1.0f, 1.0f, 1.0f};
+  float intensity = 1.0f;    // on the axis, as a point light's
+  float inner_angle = 0.0f;  // degrees off the axis, 0 <= inner_angle <= outer_angle
+  float outer_angle = 45.0f;  // degrees, 0 < outer_angle <= 90
+};
+
 struct DirectionalLightDesc {
   Vec3 direction{0.0f, -1.0f, 0.0f};  // the direction light travels in
   Color color{1.0f, 1.0f, 1.0f};
@@ -154,7 +165,7 @@ struct QuadLightDesc {
   int samples = 4;
 };
 
-using LightDesc = std::variant<PointLightDesc, DirectionalLightDesc, SphereLightDesc, QuadLightDesc>;
+using LightDesc = std::variant<PointLightDesc, SpotLightDesc, DirectionalLightDesc, SphereLightDesc, QuadLightDesc>;
 
 inline constexpr std::uint32_t kNoMaterial = ~0u;
 

@@ -14,6 +14,26 @@ struct PointLight {
   Color radiance;  // colour × intensity; no falloff (the seed's model)
 };
 
+// A point light whose intensity falls off away from its axis, as pbrt-v4's SpotLight: full within
+// the inner cone, none outside the outer one, smoothstep(cos_outer, cos_inner, cos θ) between.
+struct SpotLight {
+  Vec3 position;
+  Vec3 axis;        // unit: the direction light travels along
+  Color radiance;   // colour × intensity, on the axis (as a point light's)
+  float cos_inner;  // cosine of the inner cone's half-angle
+  float cos_outer;  // cosine of the outer cone's half-angle, <= cos_inner
+
+  // The share of `radiance` sent along unit `outward` (from the light): exactly 0 outside the
+  // outer cone. Equal cones are a hard edge.
+  float falloff(const Vec3& outward) const {
+    const float cos_theta = dot(axis, outward);
+    if (cos_inner == cos_outer) return cos_theta < cos_outer ? 0.0f : 1.0f;
+    float t = (cos_theta - cos_outer) / (cos_inner - cos_outer);
+    t = t < 0.0f ? 0.0f : (t > 1.0f ? 1.0f : t);
+    return t * t * (3.0f - 2.0f * t);
+  }
+};
+
 struct DirectionalLight {
   Vec3 to_light;   // unit, against the direction light travels in
   Color radiance;  // colour × intensity
@@ -38,6 +58,6 @@ struct QuadLight {
   int samples_per_axis;
 };
 
-using Light = std::variant<PointLight, DirectionalLight, SphereLight, QuadLight>;
+using Light = std::variant<PointLight, SpotLight, DirectionalLight, SphereLight, QuadLight>;
 
 }  // namespace rtpro

@@ -40,6 +40,18 @@ constexpr const char* sampler_name(SamplerKind sampler) {
   return "?";
 }
 
+// How the path integrator picks the light it samples at a vertex: `tree` (render/light_tree.h:
+// by an estimate of what each light sends to the point) or `power` (by power alone, anywhere).
+enum class LightSamplerKind : std::uint8_t { kTree, kPower };
+
+constexpr const char* light_sampler_name(LightSamplerKind kind) {
+  switch (kind) {
+    case LightSamplerKind::kTree: return "tree";
+    case LightSamplerKind::kPower: return "power";
+  }
+  return "?";
+}
+
 constexpr const char* integrator_name(Integrator integrator) {
   switch (integrator) {
     case Integrator::kWhitted: return "whitted";
@@ -54,6 +66,7 @@ struct RenderSettings {
   Integrator integrator = Integrator::kWhitted;
   PathSampling path_sampling = PathSampling::kMis;
   SamplerKind sampler = SamplerKind::kStratified;  // the scene parser makes `path` default to sobol
+  LightSamplerKind light_sampler = LightSamplerKind::kTree;
   std::uint64_t seed = 0;
   float ambient = 0.2f;
   Color background{0.0f, 0.0f, 0.0f};

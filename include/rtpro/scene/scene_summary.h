@@ -11,6 +11,7 @@ namespace rtpro {
 struct SceneSummary {
   std::size_t materials = 0;
   std::size_t point_lights = 0;
+  std::size_t spot_lights = 0;
   std::size_t directional_lights = 0;
   std::size_t area_lights = 0;  // sphere and quad lights
   std::size_t prototypes = 0;
