@@ -14,6 +14,7 @@ void add_render_command(CLI::App& app, Action& action);
 void add_compare_command(CLI::App& app, Action& action);
 void add_crosscheck_command(CLI::App& app, Action& action);
 void add_info_command(CLI::App& app, Action& action);
+void add_denoise_command(CLI::App& app, Action& action);
 // `completion` and `manpage`, generated from the commands registered before them.
 void add_shell_integration_commands(CLI::App& app, Action& action);
 

@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
   rtpro::cli::add_compare_command(app, action);
   rtpro::cli::add_crosscheck_command(app, action);
   rtpro::cli::add_info_command(app, action);
+  rtpro::cli::add_denoise_command(app, action);
   rtpro::cli::add_shell_integration_commands(app, action);
 
   const std::vector<std::string> args(argv, argv + argc);

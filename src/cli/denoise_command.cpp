@@ -1,0 +1,125 @@
+// `rtpro denoise IN -o OUT`: denoises a rendered image file with rtpro's own denoiser
+// (denoise/denoise.h). IN holds R,G,B and, for a good result, the features render writes with
+// --aov albedo,normal,depth. OUT gets the denoised colour as R,G,B; an EXR OUT keeps every layer
+// of IN and the noisy colour as noisy.R/G/B. Exit codes: 0 written; 2 for an unreadable IN, one without
+// the channels the denoiser needs, or bad options; 1 when OUT cannot be written (an existing OUT
+// is then left as it was).
+#include "command.h"
+#include "rtpro/core/error.h"
+#include "rtpro/denoise/denoise.h"
+#include "rtpro/image/image_io.h"
+#include "rtpro/image/output_check.h"
+
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+
+namespace rtpro::cli {
+
+namespace {
+
+struct DenoiseCommandOptions {
+  std::string input;
+  std::string output;
+  std::optional<int> threads;
+  DenoiseSettings settings;
+  bool quiet = false;
+};
+
+// Only EXR keeps the layers; other formats get the denoised colour alone.
+bool keeps_layers(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".exr" || extension == ".sxr" || extension == ".mxr";
+}
+
+std::string what_was_used(const DenoiseReport& report) {
+  std::string text = "guided by ";
+  for (std::size_t i = 0; i < report.features.size(); ++i) text += (i ? ", " : "") + report.features[i];
+  if (report.features.empty()) text += "the colour alone";
+  text += report.used_measured_noise ? "; noise measured by the renderer" : "; noise estimated from the neighbourhood";
+  return text + "; " + std::to_string(report.firefly_pixels) + (report.firefly_pixels == 1 ? " firefly" : " fireflies") +
+         " left out";
+}
+
+std::string seconds_text(double seconds) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1fs", seconds);
+  return text;
+}
+
+int run_denoise(const DenoiseCommandOptions& o) {
+  if (o.threads && *o.threads < 0) throw InputError("--threads must be >= 0 (0: all cores)");
+  const std::filesystem::path input = o.input, output = o.output;
+  check_image_output(output);  // a typo in -o fails now, not after the denoise
+  const int threads = o.threads.value_or(0) > 0
+                          ? *o.threads
+                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+
+  const auto start = std::chrono::steady_clock::now();
+  Image noisy = read_image(input);
+  DenoiseReport report;
+  Image denoised;
+  try {
+    denoised = denoise(noisy, o.settings, &report);
+  } catch (const InputError& e) {
+    throw InputError(SourceLocation{input.string()}, e.message());
+  }
+  if (!o.quiet && report.features.size() < 3)
+    std::cerr << "rtpro: warning: " << input.string()
+              << " lacks some of the albedo, N and depth layers (render --aov albedo,normal,depth): the denoiser "
+                 "tells less detail from noise without them\n";
+  if (keeps_layers(output)) {
+    denoised = with_denoised_colour(noisy, denoised);
+  }
+  noisy = Image();
+
+  ImageWriteOptions write_options;
+  write_options.metadata = {{"Software", std::string("rtpro ") + RTPRO_VERSION}, {"rtpro:denoised_from", o.input}};
+  write_image(output, denoised, write_options);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!o.quiet)
+    std::cerr << "rtpro: wrote " << output.string() << " (" << denoised.width << "x" << denoised.height
+              << ", denoised, " << what_was_used(report) << ") in " << seconds_text(seconds) << "\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_denoise_command(CLI::App& app, Action& action) {
+  auto o = std::make_shared<DenoiseCommandOptions>();
+  CLI::App* cmd = app.add_subcommand("denoise", "Denoise a rendered image with rtpro's own denoiser");
+  cmd->add_option("input", o->input,
+                  "Rendered image file (EXR): R,G,B, and for the best result the layers of render --aov "
+                  "albedo,normal,depth (and half_a/half_b or variance, when the film writes them)")
+      ->required();
+  cmd->add_option("-o,--output", o->output,
+                  "Output image: the denoised colour as R,G,B; an EXR keeps the input's layers and the noisy colour "
+                  "as noisy.R/G/B")
+      ->required();
+  cmd->add_option("--threads", o->threads, "Worker threads (0: all cores)");
+  cmd->add_option("--radius", o->settings.window_radius, "Half-width of the regression window in pixels (1 to 32)")
+      ->check(CLI::Range(1, 32))
+      ->capture_default_str();
+  cmd->add_option("--strength", o->settings.colour_tolerance,
+                  "How different (in noise deviations) neighbours' colours may be and still be averaged")
+      ->check(CLI::Range(0.01, 100.0))
+      ->capture_default_str();
+  cmd->add_option("--firefly-threshold", o->settings.firefly_threshold,
+                  "Leave out pixels this many times further from their neighbours than noise explains (0: keep all)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  cmd->add_flag("-q,--quiet", o->quiet, "Print only errors");
+  cmd->callback([o, &action] { action = [o] { return run_denoise(*o); }; });
+}
+
+}  // namespace rtpro::cli
