@@ -14,6 +14,7 @@
 #include "tev_client.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
+#include "rtpro/denoise/denoise.h"
 #include "rtpro/distributed/communicator.h"
 #include "rtpro/distributed/distributed_render.h"
 #include "rtpro/image/atomic_file_replacement.h"
@@ -68,6 +69,7 @@ struct RenderCommandOptions {
   std::string region;
   bool crop = false;
   std::vector<std::string> aovs;
+  bool denoise = false;
   int tile_size = 32;
   std::string progress = "auto";
   bool quiet = false;
@@ -165,6 +167,12 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
       o.display_server.empty() ? std::nullopt : std::optional(parse_display_server(o.display_server));
   if (!render_options.aovs.empty() && !holds_layers(output.file()))
     throw InputError("--aov needs an EXR output: '" + o.output + "' holds only the colour image");
+  // --denoise renders the layers the denoiser reads as well; an EXR keeps them (and the noisy
+  // colour), so `rtpro denoise` can run on it again.
+  if (o.denoise)
+    for (Aov aov : {Aov::kAlbedo, Aov::kNormal, Aov::kDepth, Aov::kHalves})
+      if (std::find(render_options.aovs.begin(), render_options.aovs.end(), aov) == render_options.aovs.end())
+        render_options.aovs.push_back(aov);
   if (!o.deprecated_display.empty() && !o.display.empty())
     throw InputError("--display is the old spelling of --ocio-display: give only --ocio-display");
   if (!o.deprecated_display.empty())
@@ -348,6 +356,14 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
                                                            std::to_string(result.tiles_total) + " tiles"});
   if (o.exposure != 0.0) write_options.metadata.push_back({"rtpro:exposure", std::to_string(o.exposure)});
   Image image = o.crop ? crop_image(result.image, *render_options.region) : std::move(result.image);
+  if (o.denoise && result.complete()) {
+    const auto denoise_start = Clock::now();
+    // An EXR keeps the noisy colour and the layers; a display image holds the colour alone.
+    Image denoised = denoise(image);
+    image = holds_layers(output.file()) ? with_denoised_colour(image, denoised) : std::move(denoised);
+    stats.denoise_seconds = seconds_since(denoise_start);
+    log.verbose("denoised in " + std::to_string(stats.denoise_seconds) + " s");
+  }
   apply_exposure(image, o.exposure);
   write_image(target, image, write_options);
   output.deliver();
@@ -478,10 +494,13 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_flag("--skip-existing", o->skip_existing, "Skip frames (or the single output) whose file already exists");
   cmd->add_option("--region", o->region, "Render only pixels x0,y0,x1,y1 (x1, y1 exclusive)");
   cmd->add_flag("--crop", o->crop, "With --region: write only the region instead of a full-size image");
-  cmd->add_option("--aov", o->aovs, "Extra EXR layers: albedo,normal,depth,object-id (EXR outputs only)")
+  cmd->add_option("--aov", o->aovs, "Extra EXR layers: albedo,normal,depth,object-id,halves,variance (EXR outputs only)")
       ->delimiter(',')
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cmd->add_flag("--denoise", o->denoise,
+                "Denoise the finished image with rtpro's own denoiser (the albedo, normal, depth and half-buffer "
+                "layers are rendered for it); an EXR keeps the noisy colour as noisy.R/G/B and those layers");
   cmd->add_option("--tile-size", o->tile_size, "Tile edge in pixels")->capture_default_str();
   cmd->add_option("--ocio-config", o->ocio_config, "OpenColorIO config (default: $OCIO, else bundled)");
   cmd->add_option("--ocio-display", o->display, "OCIO display for display-referred outputs (default: the config's)");

@@ -65,6 +65,7 @@ nlohmann::json RenderStatistics::json() const {
             {"build", build_seconds},
             {"render", render_seconds},
             {"write", write_seconds},
+            {"denoise", denoise_seconds},
             {"total", total_seconds}}},
           {"rays",
            {{"camera", rays.camera}, {"shadow", rays.shadow}, {"reflection", rays.reflection}, {"refraction", rays.refraction},

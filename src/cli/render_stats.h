@@ -20,6 +20,7 @@ struct RenderStatistics {
   int spp = 0;
   int width = 0, height = 0;
   double load_seconds = 0, build_seconds = 0, render_seconds = 0, write_seconds = 0, total_seconds = 0;
+  double denoise_seconds = 0;  // within write: --denoise
   RayCounts rays;
   std::uint64_t rejected_rays = 0;
   std::uint64_t nan_samples = 0;

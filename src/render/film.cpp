@@ -2,6 +2,7 @@
 
 #include "rtpro/core/error.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rtpro {
@@ -11,7 +12,10 @@ Aov parse_aov(std::string_view name) {
   if (name == "normal") return Aov::kNormal;
   if (name == "depth") return Aov::kDepth;
   if (name == "object-id") return Aov::kObjectId;
-  throw InputError("unknown AOV '" + std::string(name) + "': expected albedo, normal, depth or object-id");
+  if (name == "halves") return Aov::kHalves;
+  if (name == "variance") return Aov::kVariance;
+  throw InputError("unknown AOV '" + std::string(name) +
+                   "': expected albedo, normal, depth, object-id, halves or variance");
 }
 
 std::vector<std::string> aov_channel_names(Aov aov) {
@@ -20,6 +24,8 @@ std::vector<std::string> aov_channel_names(Aov aov) {
     case Aov::kNormal: return {"N.X", "N.Y", "N.Z"};
     case Aov::kDepth: return {"depth.Z"};
     case Aov::kObjectId: return {"object_id.id"};
+    case Aov::kHalves: return {"half_a.R", "half_a.G", "half_a.B", "half_b.R", "half_b.G", "half_b.B"};
+    case Aov::kVariance: return {"variance.R", "variance.G", "variance.B"};
   }
   throw InputError("unknown AOV");
 }
@@ -59,6 +65,23 @@ void FilmLayout::resolve(const PixelAccumulator& acc, int samples, std::span<flo
       }
       case Aov::kDepth: *out++ = acc.hits > 0 ? acc.depth_sum / static_cast<float>(acc.hits) : 0.0f; break;
       case Aov::kObjectId: *out++ = static_cast<float>(acc.first_object_id); break;
+      case Aov::kHalves: {
+        // One sample: both halves are that sample (no independent second estimate exists).
+        const int even = (samples + 1) / 2, odd = samples / 2;
+        const Color a = acc.even_radiance / static_cast<float>(even);
+        const Color b = odd > 0 ? acc.odd_radiance / static_cast<float>(odd) : a;
+        for (float v : {a.x, a.y, a.z, b.x, b.y, b.z}) *out++ = v;
+        break;
+      }
+      case Aov::kVariance: {
+        const float n = static_cast<float>(samples);
+        for (int c = 0; c < 3; ++c) {
+          const float sum = acc.radiance[c], squares = acc.radiance_squared[c];
+          const float sample_variance = samples > 1 ? std::max(0.0f, (squares - sum * sum / n) / (n - 1.0f)) : 0.0f;
+          *out++ = sample_variance / n;
+        }
+        break;
+      }
     }
   }
 }

@@ -110,7 +110,7 @@ void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixe
         ++out.nan_samples;
         sample.radiance = Color(0.0f);
       }
-      acc.add(sample.radiance, sample.primary);
+      acc.add(sample.radiance, sample.primary, s);
     }
     layout_.resolve(acc, spp, std::span<float>(out.pixels).subspan((first_pixel + p) * channels, channels));
   }

@@ -12,15 +12,22 @@
 
 namespace rtpro {
 
-enum class Aov { kAlbedo, kNormal, kDepth, kObjectId };
+// kHalves: the mean of the pixel's even-indexed samples and of its odd-indexed ones (two
+// independent estimates, half the samples each: from their difference the denoiser bounds its
+// noise estimate); kVariance: the sample variance of the pixel's mean colour.
+enum class Aov { kAlbedo, kNormal, kDepth, kObjectId, kHalves, kVariance };
 
-// "albedo", "normal", "depth", "object-id"; throws InputError listing the valid names.
+// "albedo", "normal", "depth", "object-id", "halves", "variance"; throws InputError listing the
+// valid names.
 Aov parse_aov(std::string_view name);
 std::vector<std::string> aov_channel_names(Aov aov);  // e.g. albedo.R albedo.G albedo.B
 
 // Per-pixel sums of the samples, in sample order.
 struct PixelAccumulator {
   Color radiance;
+  Color even_radiance;      // of samples 0, 2, 4, ...
+  Color odd_radiance;       // of samples 1, 3, 5, ...
+  Color radiance_squared;   // per channel
   Color albedo;
   Vec3 normal;
   float depth_sum = 0.0f;
@@ -28,8 +35,10 @@ struct PixelAccumulator {
   std::uint32_t first_object_id = 0;  // of sample 0; 0 when it missed (ids are stored + 1)
   bool has_first = false;
   // Inline: it runs once per camera sample.
-  void add(const Color& sample_radiance, const PrimaryHit& primary) {
+  void add(const Color& sample_radiance, const PrimaryHit& primary, int sample_index) {
     radiance += sample_radiance;
+    (sample_index % 2 == 0 ? even_radiance : odd_radiance) += sample_radiance;
+    radiance_squared += sample_radiance * sample_radiance;
     if (!has_first) {
       has_first = true;
       first_object_id = primary.hit ? primary.object_id + 1 : 0;
