@@ -163,7 +163,7 @@ TEST(OutputFaults, SigkillDuringARenderNeverLeavesABrokenImage) {
   const auto dir = scratch_dir();
   const auto target = dir / "out.exr";
   const std::vector<std::string> render = {rtpro_executable().string(), "render", (scenes_dir() / "demo.yaml").string(),
-                                           "-o", target.string(), "--size", "1024x768", "--spp", "1", "-q"};
+                                           "-o", target.string(), "--size", "512x384", "--spp", "1", "-q"};
   const CappedRun reference = run_capped(render, 120);
   ASSERT_EQ(reference.exit_code, 0) << reference.output;
   const std::string good = read_all(target);
@@ -188,8 +188,8 @@ TEST(OutputFaults, SigkillDuringARenderNeverLeavesABrokenImage) {
     ::waitpid(child, &status, 0);
     // Old or new: both are complete images of the same size.
     const Image image = read_image(target);
-    EXPECT_EQ(image.width, 1024) << "trial " << trial;
-    EXPECT_EQ(image.height, 768) << "trial " << trial;
+    EXPECT_EQ(image.width, 512) << "trial " << trial;
+    EXPECT_EQ(image.height, 384) << "trial " << trial;
   }
   EXPECT_GT(killed, 20);
   ASSERT_EQ(run_capped(render, 120).exit_code, 0);
