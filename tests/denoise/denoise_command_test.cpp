@@ -22,6 +22,8 @@
 namespace rtpro {
 namespace denoise_command_test {
 
+using noisy_fixture::without_channel;
+
 namespace fs = std::filesystem;
 using noisy_fixture::PixelTruth;
 
@@ -136,21 +138,6 @@ void write_subsampled_exr(const fs::path& file) {
   output.writePixels(kSize);
 }
 
-Image without_layer(const Image& image, const std::string& prefix) {
-  Image result(image.width, image.height, {});
-  std::vector<int> kept;
-  for (int c = 0; c < image.channel_count(); ++c)
-    if (image.channels[c].rfind(prefix, 0) != 0) {
-      kept.push_back(c);
-      result.channels.push_back(image.channels[c]);
-    }
-  result.data.clear();
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x)
-      for (int c : kept) result.data.push_back(image.at(x, y, c));
-  return result;
-}
-
 // Each bad input exits 2 with a one-line message naming the file, and the good output written
 // before stays exactly as it was.
 TEST(DenoiseCommand, RefusesBadInputsAndKeepsAnExistingOutput) {
@@ -162,8 +149,8 @@ TEST(DenoiseCommand, RefusesBadInputsAndKeepsAnExistingOutput) {
   ASSERT_FALSE(output_before.empty());
 
   const Image noisy = noisy_image();
-  write_image(dir / "no_colour.exr", without_layer(without_layer(without_layer(noisy, "R"), "G"), "B"), {});
-  write_image(dir / "torn_albedo.exr", without_layer(noisy, "albedo.B"), {});
+  write_image(dir / "no_colour.exr", without_channel(without_channel(without_channel(noisy, "R"), "G"), "B"), {});
+  write_image(dir / "torn_albedo.exr", without_channel(noisy, "albedo.B"), {});
   write_subsampled_exr(dir / "subsampled.exr");
   std::ofstream(dir / "not_an_image.exr") << "hello";
 

@@ -15,6 +15,8 @@
 namespace rtpro {
 namespace denoise_test {
 
+using noisy_fixture::without_channel;
+
 using noisy_fixture::NoisyOptions;
 using noisy_fixture::PixelTruth;
 using noisy_fixture::region_mean;
@@ -292,21 +294,6 @@ std::string denoise_error(const Image& image, const DenoiseSettings& settings = 
   }
   ADD_FAILURE() << "no InputError";
   return "";
-}
-
-Image without_channel(const Image& image, std::string_view name) {
-  Image result(image.width, image.height, {});
-  std::vector<int> kept;
-  for (int c = 0; c < image.channel_count(); ++c)
-    if (image.channels[c] != name) {
-      kept.push_back(c);
-      result.channels.push_back(image.channels[c]);
-    }
-  result.data.clear();
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x)
-      for (int c : kept) result.data.push_back(image.at(x, y, c));
-  return result;
 }
 
 TEST(Denoise, RefusesIncompleteInputs) {

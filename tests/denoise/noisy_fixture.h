@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rtpro::noisy_fixture {
@@ -93,6 +94,22 @@ inline double region_mse(const Image& image, int c, float value, int x0, int y0,
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x) sum += (image.at(x, y, c) - value) * (image.at(x, y, c) - value);
   return sum / (static_cast<double>(x1 - x0) * (y1 - y0));
+}
+
+// `image` without its channel `name` (every other channel as it was), for inputs with a layer torn.
+inline Image without_channel(const Image& image, std::string_view name) {
+  Image result(image.width, image.height, {});
+  std::vector<int> kept;
+  for (int c = 0; c < image.channel_count(); ++c)
+    if (image.channels[c] != name) {
+      kept.push_back(c);
+      result.channels.push_back(image.channels[c]);
+    }
+  result.data.clear();
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      for (int c : kept) result.data.push_back(image.at(x, y, c));
+  return result;
 }
 
 }  // namespace rtpro::noisy_fixture
