@@ -18,7 +18,7 @@ if [[ $stages == *,1,* ]]; then
   stage "1: gcc Release build and tests"
   cmake -S . -B build -G Ninja
   cmake --build build
-  ctest --test-dir build --output-on-failure
+  ctest --test-dir build -j2 --output-on-failure
 fi
 
 if [[ $stages == *,2,* || $stages == *,3,* ]]; then
