@@ -78,6 +78,9 @@ struct RenderCommandOptions {
   std::string stats_json;
   bool resume = false;
   bool no_journal = false;
+  double time_limit = 0.0;       // seconds; 0: none
+  double noise_threshold = 0.0;  // 0: no adaptive sampling
+  int min_samples = 0;           // 0: automatic (adaptive_sampling.h)
   BackendOptions backend_options;  // Embree settings from the command line; threads and memory set later
   std::string max_memory_mb;  // MiB; empty: the default budget (see parse_memory_budget)
 };
@@ -187,6 +190,16 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   if (o.crop && !render_options.region) throw InputError("--crop needs --region");
   if (o.resume && o.no_journal) throw InputError("--resume reads the journal that --no-journal turns off: give one of them");
   if (o.resume && output.to_stdout()) throw InputError("--resume needs an output file: -o - keeps no journal");
+  if (!(o.time_limit >= 0.0 && o.time_limit < 1e9))
+    throw InputError("--time-limit must be a number of seconds >= 0 (0: no limit)");
+  if (!(o.noise_threshold >= 0.0 && o.noise_threshold < 1e6))
+    throw InputError("--noise-threshold must be >= 0 (0: every pixel takes every sample; Cycles' default is 0.01)");
+  if (o.min_samples < 0) throw InputError("--min-samples must be >= 0 (0: automatic)");
+  if (o.min_samples > 0 && o.noise_threshold == 0.0) throw InputError("--min-samples needs --noise-threshold");
+  if (o.noise_threshold > 0.0 && job)
+    throw InputError("--noise-threshold decides between passes from the whole image, which only rank 0 has: "
+                     "render adaptively in one process");
+  render_options.time_limit_seconds = o.time_limit;
   const MemoryBudget memory = parse_memory_budget(o.max_memory_mb);
 
   // Fail before the render, not after it: output folder, format, colour config and view.
@@ -218,6 +231,12 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   log.verbose("estimated memory: " + format_bytes(cost.total_bytes) + " of a budget of " + format_bytes(memory.bytes));
   SceneBuildReport report;
   const RenderScene scene = build_render_scene(description, &report);
+  if (render_passes(scene).passes() == 1 && (o.noise_threshold > 0.0 || o.time_limit > 0.0))
+    throw InputError(std::string(o.noise_threshold > 0.0 ? "--noise-threshold" : "--time-limit") +
+                     " works between passes, and this render is one pass: the stratified sampler fills its strata "
+                     "grid only with all spp samples (set render.sampler: sobol, the path integrator's default)");
+  render_options.adaptive = {static_cast<float>(o.noise_threshold),
+                             resolved_min_samples(o.min_samples, static_cast<float>(o.noise_threshold), scene.render.spp)};
   for (const auto& mesh : report.meshes) {
     log.verbose("loaded " + mesh.file + ": " + std::to_string(mesh.stats.triangles) + " triangles in " +
                 std::to_string(mesh.load_seconds) + " s");
@@ -285,7 +304,7 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   if (display_server && leader) {
     preview = std::make_unique<TevClient>(*display_server, std::filesystem::path(output.name()).filename().string(),
                                           scene.camera.width, scene.camera.height, log);
-    render_options.on_tile_pixels = [&preview](const Image& image, const PixelRegion& region) {
+    render_options.on_pass_image = [&preview](const Image& image, const PixelRegion& region) {
       preview->send_tile(image, region);
     };
   }
@@ -293,7 +312,7 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   // The ranks of a job check they render the same thing before any of them renders.
   const bool journaled = leader && !o.no_journal && !output.to_stdout();
   const FilmLayout layout(render_options.aovs);
-  const TileGrid grid(checked_region(scene, render_options), render_options.tile_size);
+  const TileGrid grid = render_grid(scene, checked_region(scene, render_options), render_options.tile_size);
   OpenedJournal opened;
   if (journaled || job) {
     RenderJobSettings settings;
@@ -303,16 +322,23 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
     settings.region = grid.region();
     settings.tile_size = grid.tile_size();
     settings.channels = layout.channels();
+    settings.adaptive = render_options.adaptive;
     const JobIdentity identity = render_job_identity(description, report, scene, settings);
     if (job) agree_on_job(*job, identity);
-    if (journaled) opened = open_render_journal(output.file(), identity, grid, layout.channel_count(), o.resume, log);
+    if (journaled) opened = open_render_journal(output.file(), identity, grid, kAccumulatorFloats, o.resume, log);
   }
   if (opened.journal) {
-    render_options.finished_tiles = opened.finished;
+    render_options.journal_items = opened.finished;
     render_options.on_tile_result = [journal = opened.journal.get()](const TileResult& tile) { journal->append(tile); };
+    // Every pass's records would make the journal spp/step times the film: once it holds twice the
+    // film, the sums so far replace the records they sum.
+    render_options.on_pass_merged = [journal = opened.journal.get()](int, const ProgressiveFilm& film) {
+      const std::size_t film_bytes = film.grid().region().pixel_count() * kAccumulatorFloats * sizeof(float);
+      if (journal->bytes() > 2 * film_bytes) journal->rewrite(film.journal_items());
+    };
   }
   if (!leader) {
-    const TileRenderer renderer(scene, *backend, layout, textures.get(), render_options.environment);
+    const TileRenderer renderer(scene, *backend, grid, textures.get(), render_options.environment);
     // mpirun passes Ctrl-C on as SIGTERM to every rank: each finishes its tiles in flight and
     // rank 0 writes the partial image, as a single process does (if mpirun allows the time:
     // its odls_base_sigkill_timeout, 1 s by default).
@@ -331,6 +357,18 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   render_options.on_tile_done = [&progress](std::size_t done, std::size_t total) { progress.tile_done(done, total); };
   RenderResult result = render_image(scene, *backend, render_options);
   progress.finish(result.tiles_done, result.tiles_total);
+  switch (result.stop) {
+    case RenderStop::kAllPasses: break;
+    case RenderStop::kConverged:
+      log.info("every pixel converged after " + std::to_string(result.passes_done) + " of " +
+               std::to_string(result.passes_total) + " passes (--noise-threshold)");
+      break;
+    case RenderStop::kTimeLimit:
+      log.info("stopped at the time limit after " + std::to_string(result.passes_done) + " of " +
+               std::to_string(result.passes_total) + " passes");
+      break;
+    case RenderStop::kInterrupted: break;
+  }
   stats.render_seconds = result.seconds;
   stats.rays = result.rays;
   stats.nan_samples = result.nan_samples;
@@ -351,6 +389,9 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   };
   if (render_options.region) write_options.metadata.push_back({"rtpro:region", o.region});
   if (o.frame >= 0) write_options.metadata.push_back({"rtpro:frame", std::to_string(o.frame)});
+  if (result.passes_done < result.passes_total)
+    write_options.metadata.push_back({"rtpro:passes", std::to_string(result.passes_done) + " of " +
+                                                          std::to_string(result.passes_total)});
   if (!result.complete())
     write_options.metadata.push_back({"rtpro:partial", std::to_string(result.tiles_done) + " of " +
                                                            std::to_string(result.tiles_total) + " tiles"});
@@ -385,8 +426,12 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   if (!o.stats_json.empty()) write_file_atomically(o.stats_json, stats.json().dump(2) + "\n");
 
   if (!result.complete()) {
-    std::fprintf(stderr, "rtpro: interrupted: wrote the %zu of %zu finished tiles to %s\n", result.tiles_done,
-                 result.tiles_total, target.c_str());
+    if (result.passes_done > 0)
+      std::fprintf(stderr, "rtpro: interrupted: wrote the %d of %d finished passes to %s\n", result.passes_done,
+                   result.passes_total, target.c_str());
+    else
+      std::fprintf(stderr, "rtpro: interrupted: wrote the %zu finished tiles of the first pass to %s\n",
+                   result.tiles_done, target.c_str());
     if (opened.journal)
       std::fprintf(stderr, "rtpro: the same command with --resume renders only the rest (journal %s)\n",
                    opened.journal->file().c_str());
@@ -494,7 +539,7 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_flag("--skip-existing", o->skip_existing, "Skip frames (or the single output) whose file already exists");
   cmd->add_option("--region", o->region, "Render only pixels x0,y0,x1,y1 (x1, y1 exclusive)");
   cmd->add_flag("--crop", o->crop, "With --region: write only the region instead of a full-size image");
-  cmd->add_option("--aov", o->aovs, "Extra EXR layers: albedo,normal,depth,object-id,halves,variance (EXR outputs only)")
+  cmd->add_option("--aov", o->aovs, "Extra EXR layers: albedo,normal,depth,object-id,halves,variance,spp (EXR outputs only)")
       ->delimiter(',')
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -517,6 +562,13 @@ void add_render_command(CLI::App& app, Action& action) {
                 "Continue an interrupted or killed render of the same scene and settings from its journal "
                 "(OUTPUT.rtpro-journal): only the missing tiles are rendered, and the image is bit-identical to "
                 "an uninterrupted one");
+  cmd->add_option("--time-limit", o->time_limit,
+                  "Stop after this many seconds with the passes finished by then (the first always finishes)");
+  cmd->add_option("--noise-threshold", o->noise_threshold,
+                  "Adaptive sampling: a pixel stops when its error (Cycles' measure) is below this, e.g. 0.01; "
+                  "--spp is then the most a pixel gets");
+  cmd->add_option("--min-samples", o->min_samples,
+                  "With --noise-threshold: samples every pixel takes first (0: 16, or more for small thresholds)");
   cmd->add_flag("--no-journal", o->no_journal,
                 "Keep no resume journal beside the output (one is kept while rendering and removed once the image "
                 "is written)");

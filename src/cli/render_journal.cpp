@@ -44,6 +44,9 @@ JobIdentity render_job_identity(const SceneDescription& description, const Scene
   std::string channels;
   for (const std::string& channel : settings.channels) channels += (channels.empty() ? "" : " ") + channel;
   identity.set("channels", channels);
+  if (settings.adaptive.threshold > 0.0f)
+    identity.set("adaptive sampling", "noise threshold " + std::to_string(settings.adaptive.threshold) + ", min samples " +
+                                          std::to_string(settings.adaptive.min_samples));
   return identity;
 }
 
@@ -64,8 +67,8 @@ OpenedJournal open_render_journal(const std::filesystem::path& output, const Job
       message += "\nrender without --resume to start over";
       throw InputError(message);
     }
-    log.info("resuming: " + std::to_string(contents.tiles.size()) + " of " + std::to_string(grid.count()) +
-             " tiles from " + file.string() +
+    log.info("resuming: " + std::to_string(contents.tiles.size()) + " records of " + std::to_string(grid.count()) +
+             " tiles in passes from " + file.string() +
              (contents.dropped_records > 0
                   ? " (" + std::to_string(contents.dropped_records) + " damaged records dropped; their tiles render again)"
                   : ""));

@@ -5,6 +5,7 @@
 #include "rtpro/backend/backend.h"
 #include "rtpro/job/job_identity.h"
 #include "rtpro/job/tile_journal.h"
+#include "rtpro/render/adaptive_sampling.h"
 #include "rtpro/render/film.h"
 #include "rtpro/render/tiles.h"
 #include "rtpro/scene/render_scene.h"
@@ -24,6 +25,7 @@ struct RenderJobSettings {
   PixelRegion region;
   int tile_size = 0;
   std::vector<std::string> channels;
+  AdaptiveSampling adaptive;
 };
 
 JobIdentity render_job_identity(const SceneDescription& description, const SceneBuildReport& report,
@@ -31,7 +33,7 @@ JobIdentity render_job_identity(const SceneDescription& description, const Scene
 
 struct OpenedJournal {
   std::unique_ptr<TileJournal> journal;
-  std::vector<TileResult> finished;  // tiles read back with --resume
+  std::vector<TileResult> finished;  // work items read back with --resume
 };
 
 // With `resume`, reads the journal beside `output` (none: every tile is rendered, with a warning)

@@ -9,7 +9,8 @@ namespace rtpro {
 
 namespace {
 
-constexpr std::uint32_t kTileMagic = 0x54505452;  // "RTPT"
+constexpr std::uint32_t kTileMagic = 0x32505452;  // "RTP2": records of work items
+constexpr std::uint32_t kCumulative = 1;
 
 struct RecordHeader {
   std::uint32_t magic;
@@ -18,11 +19,14 @@ struct RecordHeader {
   std::int32_t x0, y0, x1, y1;
   std::uint64_t camera, shadow, reflection, refraction;
   std::uint64_t nan_samples;
+  std::uint32_t flags;  // kCumulative
+  std::uint32_t reserved;
 };
 static_assert(sizeof(RecordHeader) == kTileRecordHeaderBytes);
 
 bool matches_grid(const RecordHeader& h, const TileGrid& grid, int channel_count) {
-  if (h.magic != kTileMagic || h.channel_count != static_cast<std::uint32_t>(channel_count) || h.index >= grid.count())
+  if (h.magic != kTileMagic || h.channel_count != static_cast<std::uint32_t>(channel_count) || h.index >= grid.count() ||
+      (h.flags & ~kCumulative) != 0 || h.reserved != 0)
     return false;
   const PixelRegion expected = grid.tile(static_cast<std::size_t>(h.index));
   return h.x0 == expected.x0 && h.y0 == expected.y0 && h.x1 == expected.x1 && h.y1 == expected.y1;
@@ -47,7 +51,9 @@ std::vector<std::byte> encode_tile(const TileResult& tile, int channel_count) {
                             tile.rays.shadow,
                             tile.rays.reflection,
                             tile.rays.refraction,
-                            tile.nan_samples};
+                            tile.nan_samples,
+                            tile.cumulative ? kCumulative : 0u,
+                            0u};
   std::vector<std::byte> bytes(tile_record_size(tile.region, channel_count));
   const std::size_t pixel_bytes = tile.pixels.size() * sizeof(float);
   if (kTileRecordHeaderBytes + pixel_bytes + sizeof(std::uint64_t) != bytes.size())
@@ -81,6 +87,7 @@ std::optional<TileResult> decode_tile(std::span<const std::byte> record, const T
   tile.region = {h.x0, h.y0, h.x1, h.y1};
   tile.rays = {h.camera, h.shadow, h.reflection, h.refraction};
   tile.nan_samples = h.nan_samples;
+  tile.cumulative = (h.flags & kCumulative) != 0;
   tile.pixels.resize(tile.region.pixel_count() * static_cast<std::size_t>(channel_count));
   std::memcpy(tile.pixels.data(), record.data() + kTileRecordHeaderBytes, tile.pixels.size() * sizeof(float));
   return tile;

@@ -19,7 +19,8 @@ namespace rtpro {
 
 namespace {
 
-constexpr std::string_view kJournalMagic = "RTPRO-JOURNAL 1\n";
+constexpr std::string_view kJournalMagic = "RTPRO-JOURNAL 2\n";  // records of work items (tile_codec.h)
+constexpr std::string_view kOldJournalMagic = "RTPRO-JOURNAL 1\n";
 // A job description is a few hundred bytes per file it names; a header claiming more is damage.
 constexpr std::uint64_t kMaxIdentityBytes = 16u << 20;
 
@@ -94,6 +95,9 @@ JournalContents read_journal(const std::filesystem::path& file, const TileGrid& 
                       "); delete it to render from the start");
   };
   std::span<const std::byte> rest(bytes);
+  if (rest.size() >= kOldJournalMagic.size() &&
+      std::memcmp(rest.data(), kOldJournalMagic.data(), kOldJournalMagic.size()) == 0)
+    throw not_a_journal("written by an older rtpro, which rendered tiles without passes");
   if (rest.size() < kJournalMagic.size() || std::memcmp(rest.data(), kJournalMagic.data(), kJournalMagic.size()) != 0)
     throw not_a_journal("no journal header");
   rest = rest.subspan(kJournalMagic.size());
@@ -114,7 +118,7 @@ JournalContents read_journal(const std::filesystem::path& file, const TileGrid& 
   // A record whose header is damaged gives no trustworthy length: the records after it are lost
   // too (their tiles are rendered again). A record with an intact header but a bad checksum is
   // skipped by its length.
-  std::vector<bool> seen(grid.count(), false);
+  std::vector<bool> seen(2 * grid.count(), false);  // by index, partial and cumulative
   while (!rest.empty()) {
     const std::optional<std::size_t> size = tile_record_size_from_header(rest, grid, channel_count);
     if (!size || *size > rest.size()) {
@@ -123,11 +127,12 @@ JournalContents read_journal(const std::filesystem::path& file, const TileGrid& 
     }
     std::optional<TileResult> tile = decode_tile(rest.first(*size), grid, channel_count);
     rest = rest.subspan(*size);
-    if (!tile || seen[tile->index]) {
+    const std::size_t key = tile ? 2 * tile->index + (tile->cumulative ? 1 : 0) : 0;
+    if (!tile || seen[key]) {
       ++contents.dropped_records;
       continue;
     }
-    seen[tile->index] = true;
+    seen[key] = true;
     contents.tiles.push_back(std::move(*tile));
   }
   return contents;
@@ -135,26 +140,51 @@ JournalContents read_journal(const std::filesystem::path& file, const TileGrid& 
 
 TileJournal::TileJournal(std::filesystem::path file, const JobIdentity& identity, int channel_count,
                          std::span<const TileResult> kept)
-    : file_(std::move(file)), channel_count_(channel_count) {
+    : file_(std::move(file)), channel_count_(channel_count), header_(header_bytes(identity)) {
+  const std::lock_guard lock(mutex_);
+  write_new(kept);
+}
+
+void TileJournal::write_new(std::span<const TileResult> kept) {
   const std::filesystem::path temporary = folder_of(file_) / owned_temporary_name(temporary_prefix(file_));
+  int descriptor = -1;
   const auto fail = [&](const std::string& what) {
     const std::string reason = std::strerror(errno);
-    if (descriptor_ >= 0) ::close(descriptor_);
-    descriptor_ = -1;
+    if (descriptor >= 0) ::close(descriptor);
     ::unlink(temporary.c_str());
     return RuntimeError(file_.string() + ": cannot " + what + " the resume journal: " + reason);
   };
-  descriptor_ = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (descriptor_ < 0) throw fail("create");
-  const std::vector<std::byte> header = header_bytes(identity);
-  if (!write_all(descriptor_, header.data(), header.size())) throw fail("write");
+  // O_EXCL | O_NOFOLLOW: a file or link planted at the temporary name is never written through.
+  descriptor = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (descriptor < 0) throw fail("create");
+  std::size_t bytes = header_.size();
+  if (!write_all(descriptor, header_.data(), header_.size())) throw fail("write");
   for (const TileResult& tile : kept) {
     const std::vector<std::byte> record = encode_tile(tile, channel_count_);
-    if (!write_all(descriptor_, record.data(), record.size())) throw fail("write");
+    if (!write_all(descriptor, record.data(), record.size())) throw fail("write");
+    bytes += record.size();
   }
   if (::rename(temporary.c_str(), file_.c_str()) != 0) throw fail("rename");
+  if (descriptor_ >= 0) ::close(descriptor_);
+  descriptor_ = descriptor;
+  bytes_ = bytes;
   // What a render killed while it wrote its new journal left behind.
   remove_stale_temporaries(folder_of(file_), temporary_prefix(file_));
+}
+
+void TileJournal::rewrite(std::span<const TileResult> kept) {
+  const std::lock_guard lock(mutex_);
+  if (descriptor_ < 0 || !error_.empty()) return;
+  try {
+    write_new(kept);
+  } catch (const RuntimeError& error) {
+    error_ = std::string(error.what()) + ": the journal keeps its records so far";
+  }
+}
+
+std::size_t TileJournal::bytes() const {
+  const std::lock_guard lock(mutex_);
+  return bytes_;
 }
 
 TileJournal::~TileJournal() {
@@ -168,6 +198,8 @@ void TileJournal::append(const TileResult& tile) {
   if (!write_all(descriptor_, record.data(), record.size()))
     error_ = file_.string() + ": cannot write the resume journal (" + std::strerror(errno) +
              "): tiles finished from now on are not recorded";
+  else
+    bytes_ += record.size();
 }
 
 std::string TileJournal::error() const {

@@ -3,6 +3,7 @@
 #include "rtpro/core/error.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace rtpro {
@@ -14,8 +15,9 @@ Aov parse_aov(std::string_view name) {
   if (name == "object-id") return Aov::kObjectId;
   if (name == "halves") return Aov::kHalves;
   if (name == "variance") return Aov::kVariance;
+  if (name == "spp") return Aov::kSpp;
   throw InputError("unknown AOV '" + std::string(name) +
-                   "': expected albedo, normal, depth, object-id, halves or variance");
+                   "': expected albedo, normal, depth, object-id, halves, variance or spp");
 }
 
 std::vector<std::string> aov_channel_names(Aov aov) {
@@ -26,6 +28,7 @@ std::vector<std::string> aov_channel_names(Aov aov) {
     case Aov::kObjectId: return {"object_id.id"};
     case Aov::kHalves: return {"half_a.R", "half_a.G", "half_a.B", "half_b.R", "half_b.G", "half_b.B"};
     case Aov::kVariance: return {"variance.R", "variance.G", "variance.B"};
+    case Aov::kSpp: return {"spp.count"};
   }
   throw InputError("unknown AOV");
 }
@@ -41,9 +44,84 @@ std::vector<std::string> channels_for(const std::vector<Aov>& aovs) {
 
 FilmLayout::FilmLayout(std::vector<Aov> aovs) : aovs_(std::move(aovs)), channels_(channels_for(aovs_)) {}
 
-void FilmLayout::resolve(const PixelAccumulator& acc, int samples, std::span<float> pixel) const {
-  const float inv = 1.0f / static_cast<float>(samples);
+void PixelAccumulator::merge(const PixelAccumulator& later) {
+  if (later.samples == 0) return;
+  radiance += later.radiance;
+  even_radiance += later.even_radiance;
+  odd_radiance += later.odd_radiance;
+  radiance_squared += later.radiance_squared;
+  albedo += later.albedo;
+  normal += later.normal;
+  depth_sum += later.depth_sum;
+  hits += later.hits;
+  if (!has_first) {
+    has_first = later.has_first;
+    first_object_id = later.first_object_id;
+  }
+  samples += later.samples;
+}
+
+namespace {
+
+void pack_color(const Color& c, float*& out) {
+  *out++ = c.x;
+  *out++ = c.y;
+  *out++ = c.z;
+}
+
+Color unpack_color(const float*& in) {
+  const Color c(in[0], in[1], in[2]);
+  in += 3;
+  return c;
+}
+
+template <typename T>
+float bits_as_float(T value) {
+  static_assert(sizeof(T) == sizeof(float));
+  return std::bit_cast<float>(value);
+}
+
+}  // namespace
+
+void pack(const PixelAccumulator& acc, float* out) {
+  pack_color(acc.radiance, out);
+  pack_color(acc.even_radiance, out);
+  pack_color(acc.odd_radiance, out);
+  pack_color(acc.radiance_squared, out);
+  pack_color(acc.albedo, out);
+  pack_color(Color(acc.normal.x, acc.normal.y, acc.normal.z), out);
+  *out++ = acc.depth_sum;
+  *out++ = bits_as_float(acc.hits);
+  *out++ = bits_as_float(acc.first_object_id);
+  *out++ = bits_as_float(static_cast<std::uint32_t>(acc.has_first));
+  *out++ = bits_as_float(acc.samples);
+}
+
+PixelAccumulator unpack(const float* in) {
+  PixelAccumulator acc;
+  acc.radiance = unpack_color(in);
+  acc.even_radiance = unpack_color(in);
+  acc.odd_radiance = unpack_color(in);
+  acc.radiance_squared = unpack_color(in);
+  acc.albedo = unpack_color(in);
+  const Color n = unpack_color(in);
+  acc.normal = Vec3(n.x, n.y, n.z);
+  acc.depth_sum = *in++;
+  acc.hits = std::bit_cast<int>(*in++);
+  acc.first_object_id = std::bit_cast<std::uint32_t>(*in++);
+  acc.has_first = std::bit_cast<std::uint32_t>(*in++) != 0;
+  acc.samples = std::bit_cast<int>(*in++);
+  return acc;
+}
+
+void FilmLayout::resolve(const PixelAccumulator& acc, std::span<float> pixel) const {
+  const int samples = acc.samples;
   float* out = pixel.data();
+  if (samples == 0) {
+    std::fill(pixel.begin(), pixel.end(), 0.0f);
+    return;
+  }
+  const float inv = 1.0f / static_cast<float>(samples);
   *out++ = acc.radiance.x * inv;
   *out++ = acc.radiance.y * inv;
   *out++ = acc.radiance.z * inv;
@@ -82,6 +160,7 @@ void FilmLayout::resolve(const PixelAccumulator& acc, int samples, std::span<flo
         }
         break;
       }
+      case Aov::kSpp: *out++ = static_cast<float>(samples); break;
     }
   }
 }

@@ -88,9 +88,8 @@ const AlbedoTable& albedo_table() {
   return table;
 }
 
-TableCoordinate table_coordinate(float x) { return sqrt_spaced_coordinate(x, kTableSize); }
+TableCoordinate albedo_table_coordinate(float x) { return sqrt_spaced_coordinate(x, kTableSize); }
 
-float lerp(float t, float a, float b) { return (1.0f - t) * a + t * b; }
 
 }  // namespace
 
@@ -132,7 +131,7 @@ Vec3 GgxDistribution::sample_visible_normal(const Vec3& w, Sample2D u) const {
   float py = r * std::sin(phi);
   // Squeeze the disk onto the visible part: the half disk plus the projected ellipse of the rest.
   const float h = std::sqrt(std::max(0.0f, 1.0f - px * px));
-  py = lerp((1.0f + wh.z) / 2.0f, h, py);
+  py = table_lerp((1.0f + wh.z) / 2.0f, h, py);
   const float pz = std::sqrt(std::max(0.0f, 1.0f - px * px - py * py));
   const Vec3 nh = t1 * px + t2 * py + wh * pz;
   return normalize(Vec3{alpha * nh.x, alpha * nh.y, std::max(1e-6f, nh.z)});
@@ -140,17 +139,17 @@ Vec3 GgxDistribution::sample_visible_normal(const Vec3& w, Sample2D u) const {
 
 float ggx_directional_albedo(float mu, float alpha) {
   const AlbedoTable& table = albedo_table();
-  const TableCoordinate m = table_coordinate(mu);
-  const TableCoordinate a = table_coordinate(alpha);
-  const float lower = lerp(m.fraction, table.e[a.index][m.index], table.e[a.index][m.index + 1]);
-  const float upper = lerp(m.fraction, table.e[a.index + 1][m.index], table.e[a.index + 1][m.index + 1]);
-  return lerp(a.fraction, lower, upper);
+  const TableCoordinate m = albedo_table_coordinate(mu);
+  const TableCoordinate a = albedo_table_coordinate(alpha);
+  const float lower = table_lerp(m.fraction, table.e[a.index][m.index], table.e[a.index][m.index + 1]);
+  const float upper = table_lerp(m.fraction, table.e[a.index + 1][m.index], table.e[a.index + 1][m.index + 1]);
+  return table_lerp(a.fraction, lower, upper);
 }
 
 float ggx_average_albedo(float alpha) {
   const AlbedoTable& table = albedo_table();
-  const TableCoordinate a = table_coordinate(alpha);
-  return lerp(a.fraction, table.e_average[a.index], table.e_average[a.index + 1]);
+  const TableCoordinate a = albedo_table_coordinate(alpha);
+  return table_lerp(a.fraction, table.e_average[a.index], table.e_average[a.index + 1]);
 }
 
 }  // namespace rtpro

@@ -26,37 +26,80 @@ void render_tiles(const TileRenderer& renderer, const TileGrid& grid, TileSource
   });
 }
 
-ImageTileSink::ImageTileSink(Image& image, std::size_t tile_count) : image_(image), stats_(tile_count) {}
+namespace {
 
-void ImageTileSink::put(TileResult&& tile) {
-  if (on_tile_result) on_tile_result(tile);
-  const auto channels = static_cast<std::size_t>(image_.channel_count());
-  const auto row_floats = static_cast<std::size_t>(tile.region.width()) * channels;
-  for (int y = tile.region.y0; y < tile.region.y1; ++y) {
-    const float* from = tile.pixels.data() + static_cast<std::size_t>(y - tile.region.y0) * row_floats;
-    std::copy(from, from + row_floats, &image_.at(tile.region.x0, y, 0));
+using Clock = std::chrono::steady_clock;
+
+// The listed work items once each, in order; stops when `cancel` becomes true, or at the deadline
+// for items from `deadline_from` on (the first pass always finishes).
+class PassItemSource final : public TileSource {
+ public:
+  PassItemSource(std::vector<std::size_t> items, const std::atomic<bool>* cancel,
+                 std::optional<Clock::time_point> deadline, std::size_t deadline_from)
+      : items_(std::move(items)), cancel_(cancel), deadline_(deadline), deadline_from_(deadline_from) {}
+  std::optional<std::size_t> next() override {
+    if (cancel_ && cancel_->load(std::memory_order_relaxed)) return std::nullopt;
+    const std::size_t position = next_.fetch_add(1, std::memory_order_relaxed);
+    if (position >= items_.size()) return std::nullopt;
+    if (deadline_ && items_[position] >= deadline_from_ && Clock::now() >= *deadline_) {
+      next_.store(items_.size());
+      return std::nullopt;
+    }
+    return items_[position];
   }
-  stats_[tile.index] = {true, tile.rays, tile.nan_samples};
-  if (on_tile_pixels) on_tile_pixels(tile.region);
-  const std::size_t done = done_.fetch_add(1) + 1;
-  if (on_tile_done) on_tile_done(done);
+  std::optional<std::size_t> remaining() const override { return items_.size() - std::min(next_.load(), items_.size()); }
+
+ private:
+  std::vector<std::size_t> items_;
+  const std::atomic<bool>* cancel_;
+  std::optional<Clock::time_point> deadline_;
+  std::size_t deadline_from_;
+  std::atomic<std::size_t> next_{0};
+};
+
+// Finished work items go to the journal (on_tile_result), then into the film.
+class FilmSink final : public TileSink {
+ public:
+  FilmSink(ProgressiveFilm& film, const RenderOptions& options) : film_(film), options_(options) {}
+  void put(TileResult&& item) override {
+    if (options_.on_tile_result) options_.on_tile_result(item);
+    film_.add(std::move(item));
+    const std::size_t done = done_.fetch_add(1) + 1;
+    if (options_.on_tile_done) options_.on_tile_done(done, film_.grid().count());
+  }
+  void count_journal_items(std::size_t items) { done_ += items; }
+  std::size_t done() const { return done_.load(); }
+
+ private:
+  ProgressiveFilm& film_;
+  const RenderOptions& options_;
+  std::atomic<std::size_t> done_{0};
+};
+
+// The journal's items, cumulative ones first, or none when they do not fit together.
+std::vector<const TileResult*> usable_journal_items(std::span<const TileResult> items, const TileGrid& grid) {
+  std::vector<const TileResult*> cumulative, partial;
+  std::vector<bool> seen(grid.count(), false);
+  for (const TileResult& item : items) {
+    if (item.index >= grid.count() || item.region.x0 != grid.tile(item.index).x0 ||
+        item.region.y0 != grid.tile(item.index).y0)
+      throw std::logic_error("render_image: a journal item is not a work item of this grid");
+    (item.cumulative ? cumulative : partial).push_back(&item);
+  }
+  if (!cumulative.empty()) {
+    const int pass = grid.pass(cumulative.front()->index);
+    std::vector<bool> tile_seen(grid.tiles_per_pass(), false);
+    for (const TileResult* item : cumulative) {
+      if (grid.pass(item->index) != pass || tile_seen[item->index % grid.tiles_per_pass()]) return {};
+      tile_seen[item->index % grid.tiles_per_pass()] = true;
+    }
+    if (cumulative.size() != grid.tiles_per_pass()) return {};
+  }
+  cumulative.insert(cumulative.end(), partial.begin(), partial.end());
+  return cumulative;
 }
 
-std::size_t ImageTileSink::tiles_done() const { return done_.load(); }
-
-RayCounts ImageTileSink::rays() const {
-  RayCounts total;
-  for (const TileStats& s : stats_)
-    if (s.done) total += s.rays;
-  return total;
-}
-
-std::uint64_t ImageTileSink::nan_samples() const {
-  std::uint64_t total = 0;
-  for (const TileStats& s : stats_)
-    if (s.done) total += s.nan_samples;
-  return total;
-}
+}  // namespace
 
 PixelRegion checked_region(const RenderScene& scene, const RenderOptions& options) {
   const int width = scene.camera.width, height = scene.camera.height;
@@ -71,41 +114,92 @@ PixelRegion checked_region(const RenderScene& scene, const RenderOptions& option
 }
 
 RenderResult render_image(const RenderScene& scene, const Backend& backend, const RenderOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  const TileGrid grid(checked_region(scene, options), options.tile_size);
+  const auto start = Clock::now();
+  const TileGrid grid = render_grid(scene, checked_region(scene, options), options.tile_size);
   const FilmLayout layout(options.aovs);
-  const TileRenderer renderer(scene, backend, layout, options.textures, options.environment);
+  TileRenderer renderer(scene, backend, grid, options.textures, options.environment);
+  if (options.adaptive.threshold > 0.0f && options.tile_executor)
+    throw std::logic_error("render_image: adaptive sampling decides in this process; a tile executor cannot follow it");
+
+  ProgressiveFilm film(grid);
+  Image preview;
+  film.on_pass_merged = [&](int pass) {
+    if (options.on_pass_merged) options.on_pass_merged(pass, film);
+    if (options.on_pass_image) {
+      if (preview.data.empty()) preview = Image(scene.camera.width, scene.camera.height, layout.channels());
+      film.resolve(layout, preview);
+      options.on_pass_image(preview, grid.region());
+    }
+  };
+  FilmSink sink(film, options);
+  const std::vector<const TileResult*> journal = usable_journal_items(options.journal_items, grid);
+  for (const TileResult* item : journal) film.add(TileResult(*item));
+  sink.count_journal_items(journal.size());
+
+  std::optional<Clock::time_point> deadline;
+  if (options.time_limit_seconds > 0.0)
+    deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_limit_seconds));
+  const auto unrendered = [&](std::size_t first, std::size_t last) {
+    std::vector<std::size_t> items;
+    for (std::size_t index = first; index < last; ++index)
+      if (!film.has(index)) items.push_back(index);
+    return items;
+  };
+  const auto execute = [&](TileSource& source) {
+    if (options.tile_executor)
+      options.tile_executor(renderer, grid, source, sink);
+    else
+      render_tiles(renderer, grid, source, sink);
+  };
 
   RenderResult result;
-  result.image = Image(scene.camera.width, scene.camera.height, layout.channels());
+  result.passes_total = grid.passes();
   result.tiles_total = grid.count();
-  ImageTileSink sink(result.image, grid.count());
-  if (options.on_tile_done)
-    sink.on_tile_done = [&](std::size_t done) { options.on_tile_done(done, grid.count()); };
-  if (options.on_tile_pixels)
-    sink.on_tile_pixels = [&](const PixelRegion& region) { options.on_tile_pixels(result.image, region); };
-  std::vector<bool> finished(grid.count(), false);
-  for (const TileResult& tile : options.finished_tiles) {
-    if (tile.index >= grid.count() || finished[tile.index] || tile.region.x0 != grid.tile(tile.index).x0 ||
-        tile.region.y0 != grid.tile(tile.index).y0)
-      throw std::logic_error("render_image: a finished tile is not a tile of this grid, or is given twice");
-    finished[tile.index] = true;
-    sink.put(TileResult(tile));
+  bool deadline_passed = false;
+  if (options.tile_executor) {
+    // Every pass in one go: other processes render ahead while the film waits for a pass's last tile.
+    PassItemSource source(unrendered(0, grid.count()), options.cancel, deadline, grid.tiles_per_pass());
+    execute(source);
+    deadline_passed = deadline && Clock::now() >= *deadline;
+  } else {
+    std::vector<std::uint8_t> active;
+    const std::size_t tiles = grid.tiles_per_pass();
+    for (int pass = film.passes_merged(); pass < grid.passes(); pass = film.passes_merged()) {
+      if (options.adaptive.threshold > 0.0f && pass > 0) {
+        if (active_pixels(film, options.adaptive, active) == 0) {
+          result.stop = RenderStop::kConverged;
+          break;
+        }
+        renderer.set_active_pixels(&active);
+      }
+      // The first pass always finishes: a time limit shows whole passes.
+      const std::optional<Clock::time_point> pass_deadline = pass > 0 ? deadline : std::nullopt;
+      if (pass_deadline && Clock::now() >= *pass_deadline) {
+        deadline_passed = true;
+        break;
+      }
+      PassItemSource source(unrendered(static_cast<std::size_t>(pass) * tiles, static_cast<std::size_t>(pass + 1) * tiles),
+                            options.cancel, pass_deadline, tiles);
+      execute(source);
+      if (film.passes_merged() <= pass) {
+        deadline_passed = pass_deadline && Clock::now() >= *pass_deadline;
+        break;
+      }
+    }
   }
-  std::vector<std::size_t> remaining;
-  for (std::size_t index = 0; index < grid.count(); ++index)
-    if (!finished[index]) remaining.push_back(index);
-  TileListSource source(std::move(remaining), options.cancel);
-  sink.on_tile_result = options.on_tile_result;
-  if (options.tile_executor)
-    options.tile_executor(renderer, grid, source, sink);
-  else
-    render_tiles(renderer, grid, source, sink);
+  result.passes_done = film.passes_merged();
+  if (result.stop != RenderStop::kConverged && result.passes_done < grid.passes())
+    result.stop = deadline_passed && result.passes_done > 0 ? RenderStop::kTimeLimit : RenderStop::kInterrupted;
 
-  result.tiles_done = sink.tiles_done();
-  result.rays = sink.rays();
-  result.nan_samples = sink.nan_samples();
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.image = Image(scene.camera.width, scene.camera.height, layout.channels());
+  if (result.passes_done > 0)
+    film.resolve(layout, result.image);
+  else
+    film.resolve_with_partial_pass(layout, result.image);
+  result.tiles_done = sink.done();
+  result.rays = film.rays();
+  result.nan_samples = film.nan_samples();
+  result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
 }
 

@@ -67,7 +67,6 @@ std::array<double, kSheenQuadrature> row_integrals(const CharlieSheen& sheen, fl
   return rows;
 }
 
-float lerp(float t, float a, float b) { return (1.0f - t) * a + t * b; }
 
 TableCoordinate mu_coordinate(float mu) { return sqrt_spaced_coordinate(mu, kMuNodes); }
 
@@ -85,7 +84,7 @@ TableCoordinate roughness_coordinate(float roughness) {
 
 float along_mu(const std::array<float, kMuNodes>& row, float mu) {
   const TableCoordinate m = mu_coordinate(mu);
-  return lerp(m.fraction, row[m.index], row[m.index + 1]);
+  return table_lerp(m.fraction, row[m.index], row[m.index + 1]);
 }
 
 // What the bounded lobe divides by. The margin covers the tables' interpolation, which can
@@ -123,7 +122,7 @@ const SheenTables& sheen_tables() {
 
 float lookup(const std::array<std::array<float, kMuNodes>, kRoughnessNodes>& table, float mu, float roughness) {
   const TableCoordinate r = roughness_coordinate(roughness);
-  return lerp(r.fraction, along_mu(table[r.index], mu), along_mu(table[r.index + 1], mu));
+  return table_lerp(r.fraction, along_mu(table[r.index], mu), along_mu(table[r.index + 1], mu));
 }
 
 }  // namespace

@@ -93,9 +93,9 @@ const SpecularTables& specular_tables() {
   return built;
 }
 
-TableCoordinate table_coordinate(float x) { return sqrt_spaced_coordinate(x, kSpecularTableSize); }
+TableCoordinate specular_table_coordinate(float x) { return sqrt_spaced_coordinate(x, kSpecularTableSize); }
 
-Node lerp(float t, const Node& a, const Node& b) {
+Node table_lerp(float t, const Node& a, const Node& b) {
   return {(1.0f - t) * a.e1 + t * b.e1, (1.0f - t) * a.e5 + t * b.e5};
 }
 
@@ -109,19 +109,19 @@ SchlickAlbedo ggx_schlick_albedo(float mu, float alpha) {
     return {1.0f - edge, edge};
   }
   const SpecularTables& t = specular_tables();
-  const TableCoordinate m = table_coordinate(mu);
-  const TableCoordinate a = table_coordinate(alpha);
-  const Node lower = lerp(m.fraction, t.e[a.index][m.index], t.e[a.index][m.index + 1]);
-  const Node upper = lerp(m.fraction, t.e[a.index + 1][m.index], t.e[a.index + 1][m.index + 1]);
-  return to_albedo(lerp(a.fraction, lower, upper));
+  const TableCoordinate m = specular_table_coordinate(mu);
+  const TableCoordinate a = specular_table_coordinate(alpha);
+  const Node lower = table_lerp(m.fraction, t.e[a.index][m.index], t.e[a.index][m.index + 1]);
+  const Node upper = table_lerp(m.fraction, t.e[a.index + 1][m.index], t.e[a.index + 1][m.index + 1]);
+  return to_albedo(table_lerp(a.fraction, lower, upper));
 }
 
 SchlickAlbedo ggx_schlick_average_albedo(float alpha) {
   // A mirror's average of (1 − μ)⁵ in closed form: 2∫(1 − μ)⁵ μ dμ = 1/21.
   if (GgxDistribution{alpha}.effectively_smooth()) return {20.0f / 21.0f, 1.0f / 21.0f};
   const SpecularTables& t = specular_tables();
-  const TableCoordinate a = table_coordinate(alpha);
-  return to_albedo(lerp(a.fraction, t.average[a.index], t.average[a.index + 1]));
+  const TableCoordinate a = specular_table_coordinate(alpha);
+  return to_albedo(table_lerp(a.fraction, t.average[a.index], t.average[a.index + 1]));
 }
 
 }  // namespace rtpro

@@ -18,4 +18,7 @@ inline TableCoordinate sqrt_spaced_coordinate(float x, int nodes) {
   return {index, scaled - static_cast<float>(index)};
 }
 
+// Linear interpolation between two table nodes, a at t = 0 and b at t = 1.
+inline float table_lerp(float t, float a, float b) { return (1.0f - t) * a + t * b; }
+
 }  // namespace rtpro

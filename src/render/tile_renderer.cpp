@@ -19,16 +19,24 @@ constexpr std::size_t kSamplesPerBatch = 1024;
 
 }  // namespace
 
-TileRenderer::TileRenderer(const RenderScene& scene, const Backend& backend, const FilmLayout& layout,
+PassSchedule render_passes(const RenderScene& scene) { return PassSchedule(scene.render.spp, scene.render.sampler); }
+
+TileGrid render_grid(const RenderScene& scene, const PixelRegion& region, int tile_size) {
+  return TileGrid(region, tile_size, render_passes(scene).passes());
+}
+
+TileRenderer::TileRenderer(const RenderScene& scene, const Backend& backend, const TileGrid& grid,
                            const TextureLookup* textures, const EnvironmentLight* environment)
     : scene_(scene),
       backend_(backend),
-      layout_(layout),
+      grid_(grid),
+      schedule_(render_passes(scene)),
       textures_(textures),
       environment_(environment),
       sampler_(scene.render.spp, scene.render.seed),
-      sobol_(scene.render.seed),
-      pixels_per_batch_(std::max<std::size_t>(1, kSamplesPerBatch / static_cast<std::size_t>(scene.render.spp))) {
+      sobol_(scene.render.seed) {
+  if (grid.passes() != schedule_.passes())
+    throw std::logic_error("TileRenderer: the grid's passes are not the scene's pass schedule");
   if (scene.environment && !environment)
     throw std::logic_error("TileRenderer: the scene has an environment but none was built for it");
   if (scene.render.integrator == Integrator::kPath) path_lights_.emplace(scene, environment);
@@ -36,42 +44,44 @@ TileRenderer::TileRenderer(const RenderScene& scene, const Backend& backend, con
     throw std::logic_error("TileRenderer: the scene has image textures but none were opened for it");
 }
 
-// Pixels [first_pixel, first_pixel + pixel_count) of the tile, in row-major order.
+// The listed pixels of the tile (indices into it, row-major), samples `range` of each.
 RTPRO_AVX2_CLONES
-void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixel, std::size_t pixel_count,
-                                 TileResult& out, Workspace& ws) const {
+void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, const std::uint32_t* pixels,
+                                 std::size_t pixel_count, TileResult& out, Workspace& ws) const {
   const int spp = sampler_.samples_per_pixel();
+  const int per_pixel = range.count();
   const auto image_width = static_cast<std::uint64_t>(scene_.camera.width);
   const auto tile_width = static_cast<std::size_t>(tile.width());
   const bool pinhole = scene_.camera.lens_radius == 0.0f;
   // Sized once per batch and written in place (a resize to the same size does nothing).
-  ws.camera_rays.resize(pixel_count * static_cast<std::size_t>(spp));
+  ws.camera_rays.resize(pixel_count * static_cast<std::size_t>(per_pixel));
   ws.sample_keys.resize(ws.camera_rays.size());
   ws.pixel_offsets.resize(static_cast<std::size_t>(spp));
-  const PixelOffset* offsets = ws.pixel_offsets.data();
+  PixelOffset* offsets = ws.pixel_offsets.data();
   std::size_t next = 0;
-  for (std::size_t p = first_pixel; p < first_pixel + pixel_count; ++p) {
+  for (std::size_t i = 0; i < pixel_count; ++i) {
+    const std::size_t p = pixels[i];
     const int x = tile.x0 + static_cast<int>(p % tile_width);
     const int y = tile.y0 + static_cast<int>(p / tile_width);
     const std::uint64_t pixel_key = static_cast<std::uint64_t>(y) * image_width + static_cast<std::uint64_t>(x);
     switch (scene_.render.sampler) {
-      case SamplerKind::kStratified: sampler_.pixel_offsets(pixel_key, ws.pixel_offsets.data()); break;
+      case SamplerKind::kStratified: sampler_.pixel_offsets(pixel_key, offsets); break;
       case SamplerKind::kSobol:
-        for (int i = 0; i < spp; ++i) ws.pixel_offsets[static_cast<std::size_t>(i)] = sobol_.pixel_offset(pixel_key, i);
+        for (int s = range.begin; s < range.end; ++s) offsets[s] = sobol_.pixel_offset(pixel_key, s);
         break;
     }
-    int s = 0;
+    int s = range.begin;
     // Pinhole rays four at a time (camera_ray's rays, bit for bit), the rest one by one.
-    for (; pinhole && s + 4 <= spp; s += 4, next += 4) {
+    for (; pinhole && s + 4 <= range.end; s += 4, next += 4) {
       alignas(16) float px[4], py[4];
-      for (int i = 0; i < 4; ++i) {
-        px[i] = static_cast<float>(x) + offsets[s + i].x;
-        py[i] = static_cast<float>(y) + offsets[s + i].y;
-        ws.sample_keys[next + static_cast<std::size_t>(i)] = {pixel_key, s + i};
+      for (int k = 0; k < 4; ++k) {
+        px[k] = static_cast<float>(x) + offsets[s + k].x;
+        py[k] = static_cast<float>(y) + offsets[s + k].y;
+        ws.sample_keys[next + static_cast<std::size_t>(k)] = {pixel_key, s + k};
       }
       pinhole_rays4(scene_.camera, px, py, &ws.camera_rays[next]);
     }
-    for (; s < spp; ++s, ++next) {
+    for (; s < range.end; ++s, ++next) {
       const PixelOffset& offset = offsets[s];
       const Sample2D lens = pinhole                                             ? Sample2D{0.5f, 0.5f}
                             : scene_.render.sampler == SamplerKind::kStratified ? sampler_.sample_2d(pixel_key, s, sample_dimension::kLens)
@@ -101,18 +111,17 @@ void TileRenderer::render_pixels(const PixelRegion& tile, std::size_t first_pixe
       break;
   }
 
-  const auto channels = static_cast<std::size_t>(layout_.channel_count());
-  for (std::size_t p = 0; p < pixel_count; ++p) {
+  for (std::size_t i = 0; i < pixel_count; ++i) {
     PixelAccumulator acc;
-    for (int s = 0; s < spp; ++s) {
-      SampleResult& sample = ws.samples[p * static_cast<std::size_t>(spp) + static_cast<std::size_t>(s)];
+    for (int k = 0; k < per_pixel; ++k) {
+      SampleResult& sample = ws.samples[i * static_cast<std::size_t>(per_pixel) + static_cast<std::size_t>(k)];
       if (!is_finite(sample.radiance)) {
         ++out.nan_samples;
         sample.radiance = Color(0.0f);
       }
-      acc.add(sample.radiance, sample.primary, s);
+      acc.add(sample.radiance, sample.primary, range.begin + k);
     }
-    layout_.resolve(acc, spp, std::span<float>(out.pixels).subspan((first_pixel + p) * channels, channels));
+    pack(acc, out.pixels.data() + static_cast<std::size_t>(pixels[i]) * kAccumulatorFloats);
   }
 }
 
@@ -121,9 +130,19 @@ TileResult TileRenderer::render(std::size_t index, const PixelRegion& tile, Work
   TileResult out;
   out.index = index;
   out.region = tile;
-  out.pixels.resize(tile.pixel_count() * static_cast<std::size_t>(layout_.channel_count()));
-  for (std::size_t first = 0; first < tile.pixel_count(); first += pixels_per_batch_)
-    render_pixels(tile, first, std::min(pixels_per_batch_, tile.pixel_count() - first), out, ws);
+  out.pixels.assign(tile.pixel_count() * kAccumulatorFloats, 0.0f);  // no samples: all zero
+  const SampleRange range = schedule_.pass(grid_.pass(index));
+  ws.pixels.clear();
+  const PixelRegion& region = grid_.region();
+  for (int y = tile.y0; y < tile.y1; ++y)
+    for (int x = tile.x0; x < tile.x1; ++x)
+      if (!active_ || (*active_)[static_cast<std::size_t>(y - region.y0) * static_cast<std::size_t>(region.width()) +
+                                 static_cast<std::size_t>(x - region.x0)])
+        ws.pixels.push_back(static_cast<std::uint32_t>((y - tile.y0) * tile.width() + (x - tile.x0)));
+  // Whole pixels per batch, about kSamplesPerBatch samples.
+  const std::size_t pixels_per_batch = std::max<std::size_t>(1, kSamplesPerBatch / static_cast<std::size_t>(range.count()));
+  for (std::size_t first = 0; first < ws.pixels.size(); first += pixels_per_batch)
+    render_pixels(tile, range, ws.pixels.data() + first, std::min(pixels_per_batch, ws.pixels.size() - first), out, ws);
   return out;
 }
 

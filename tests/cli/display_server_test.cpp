@@ -170,12 +170,15 @@ class TevTestServer {
   std::string error_;
 };
 
-TEST(DisplayServer, ViewerReceivesEveryTileOnceAndTheWrittenImage) {
+// The viewer gets the whole image after each pass: one pass for Whitted's stratified samples,
+// four (1, 1, 2 and 4 samples) for the path integrator's Sobol samples at 8 spp; the last is the
+// image written.
+void expect_every_pass_and_the_written_image(const std::string& options, int passes) {
   const auto scene = test::write_file("scene.yaml", scene_text(30, 20));
   const auto output = scene.parent_path() / "preview.exr";
   TevTestServer server;
   std::string out;
-  ASSERT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + output.string() +
+  ASSERT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + output.string() + " " + options +
                                       " --tile-size 8 --progress never --display-server 127.0.0.1:" +
                                       std::to_string(server.port())),
                         &out),
@@ -186,13 +189,21 @@ TEST(DisplayServer, ViewerReceivesEveryTileOnceAndTheWrittenImage) {
   EXPECT_EQ(received.creates, 1);
   EXPECT_EQ(received.name, "preview.exr");
   EXPECT_EQ(received.channels, (std::vector<std::string>{"R", "G", "B"}));
-  EXPECT_EQ(received.updates, 4 * 3);  // 30x20 in 8x8 tiles
-  for (int writes : received.writes) ASSERT_EQ(writes, 1);
+  EXPECT_EQ(received.updates, passes);
+  for (int writes : received.writes) ASSERT_EQ(writes, passes);
   const Image written = read_image(output);
   ASSERT_EQ(written.width, received.width);
   ASSERT_EQ(written.height, received.height);
   ASSERT_EQ(written.channel_count(), 3);
   EXPECT_EQ(written.data, received.rgb);
+}
+
+TEST(DisplayServer, ViewerReceivesTheOnePassOfAStratifiedRenderAndTheWrittenImage) {
+  expect_every_pass_and_the_written_image("", 1);
+}
+
+TEST(DisplayServer, ViewerReceivesEveryPassOfAProgressiveRenderAndTheWrittenImage) {
+  expect_every_pass_and_the_written_image("--integrator path --spp 8", 4);
 }
 
 TEST(DisplayServer, AbsentViewerWarnsAndTheRenderGoesOn) {

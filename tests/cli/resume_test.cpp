@@ -35,10 +35,13 @@ world:
   - {type: sphere, center: [1, 0.6, 0], radius: 0.6, material: glass}
 )";
 
-// 6 × 4 tiles of 16 × 16 pixels; beauty plus the albedo AOV, so AOVs are journaled too.
+// 6 × 4 tiles of 16 × 16 pixels; beauty plus the albedo AOV, so AOVs are journaled too. A record
+// (tile_codec.h) is an 80-byte header, a pass's sums of each pixel (23 floats, film.h) and a
+// checksum. Whitted's stratified samples render in one pass; the path integrator's Sobol samples
+// in 20 (1, 1, 2, 4, 8, then 16 at a time), and the journal is compacted every few passes.
 const std::string kArgs = " --tile-size 16 --aov albedo --spp 256";
 constexpr std::size_t kTiles = 24;
-constexpr std::size_t kRecordBytes = 72 + 16 * 16 * 6 * 4 + 8;
+constexpr std::size_t kRecordBytes = 80 + 16 * 16 * 23 * 4 + 8;
 
 std::string render_cmd(const std::filesystem::path& scene, const std::filesystem::path& out, const std::string& extra) {
   return rtpro_executable().string() + " render " + scene.string() + " -o " + out.string() + kArgs + " " + extra;
@@ -66,20 +69,31 @@ std::size_t recorded_tiles(const std::filesystem::path& journal) {
   return size > header ? static_cast<std::size_t>((size - header) / kRecordBytes) : 0;
 }
 
-// Starts a single-threaded render, SIGKILLs it once its journal holds `tiles` records.
-void kill_after(const std::filesystem::path& scene, const std::filesystem::path& out, std::size_t tiles) {
+// Starts a single-threaded render (`path`: with --integrator path), SIGKILLs it once its journal
+// was compacted (shrank) `compactions` times and then holds `tiles` records.
+void kill_after(const std::filesystem::path& scene, const std::filesystem::path& out, std::size_t tiles,
+                bool path = false, int compactions = 0) {
   const std::filesystem::path journal = out.string() + ".rtpro-journal";
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {
     const std::string exe = rtpro_executable().string();
-    execl(exe.c_str(), exe.c_str(), "render", scene.c_str(), "-o", out.c_str(), "--threads", "1", "--tile-size", "16",
-          "--aov", "albedo", "-q", "--spp", "256", static_cast<char*>(nullptr));
+    if (path)
+      execl(exe.c_str(), exe.c_str(), "render", scene.c_str(), "-o", out.c_str(), "--threads", "1", "--tile-size", "16",
+            "--aov", "albedo", "-q", "--spp", "256", "--integrator", "path", static_cast<char*>(nullptr));
+    else
+      execl(exe.c_str(), exe.c_str(), "render", scene.c_str(), "-o", out.c_str(), "--threads", "1", "--tile-size", "16",
+            "--aov", "albedo", "-q", "--spp", "256", static_cast<char*>(nullptr));
     _exit(127);
   }
   int status = 0;
+  std::size_t last = 0;
+  int shrank = 0;
   while (waitpid(pid, &status, WNOHANG) == 0) {
-    if (std::filesystem::exists(journal) && recorded_tiles(journal) >= tiles) {
+    const std::size_t recorded = std::filesystem::exists(journal) ? recorded_tiles(journal) : 0;
+    if (recorded < last) ++shrank;
+    last = recorded;
+    if (std::filesystem::exists(journal) && shrank >= compactions && recorded >= tiles) {
       kill(pid, SIGKILL);
       waitpid(pid, &status, 0);
       break;
@@ -110,6 +124,26 @@ TEST(Resume, KilledRenderResumesBitIdenticallyAtEveryMoment) {
     ASSERT_EQ(run_command(quiet_render_cmd(scene, out, "--resume --threads 2"), &output), 0) << output;
     expect_same_pixels(whole, out);
     EXPECT_FALSE(std::filesystem::exists(out.string() + ".rtpro-journal"));
+  }
+}
+
+// Killed in the first passes, after a compaction, and in a later pass: every resume finishes the
+// image of the uninterrupted render, bit for bit.
+TEST(Resume, KilledProgressiveRenderResumesBitIdenticallyBetweenAndWithinPasses) {
+  const auto dir = test::scratch_dir();
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto whole = dir / "whole.exr";
+  ASSERT_EQ(run_command(quiet_render_cmd(scene, whole, "--integrator path")), 0);
+  // A compaction leaves one cumulative record per tile (24) and comes once a journal holds about 48.
+  for (const auto& [records, compactions] : {std::pair{10, 0}, std::pair{30, 0}, std::pair{30, 1}, std::pair{40, 3}}) {
+    SCOPED_TRACE("killed when the journal held " + std::to_string(records) + " records after " +
+                 std::to_string(compactions) + " compactions");
+    const auto out = dir / ("resumed" + std::to_string(records) + "_" + std::to_string(compactions) + ".exr");
+    kill_after(scene, out, static_cast<std::size_t>(records), true, compactions);
+    ASSERT_TRUE(std::filesystem::exists(out.string() + ".rtpro-journal"));
+    std::string output;
+    ASSERT_EQ(run_command(quiet_render_cmd(scene, out, "--integrator path --resume --threads 2"), &output), 0) << output;
+    expect_same_pixels(whole, out);
   }
 }
 

@@ -68,14 +68,13 @@ JobResult render_as_job(const RenderScene& scene, const Backend& backend, int ra
   RenderOptions options;
   options.tile_size = tile_size;
   options.aovs = {Aov::kAlbedo, Aov::kDepth};
-  const FilmLayout layout(options.aovs);
-  const TileGrid grid(checked_region(scene, options), tile_size);
+  const TileGrid grid = render_grid(scene, checked_region(scene, options), tile_size);
   JobResult result;
   std::vector<std::thread> followers;
   for (int rank = 1; rank < ranks; ++rank)
     followers.emplace_back([&, rank] {
       ThreadCommunicator communicator(mail, rank);
-      const TileRenderer renderer(scene, backend, layout);
+      const TileRenderer renderer(scene, backend, grid);
       follow_distributed_render(communicator, renderer, grid, 1);
     });
   ThreadCommunicator leader(mail, 0);
@@ -87,8 +86,18 @@ JobResult render_as_job(const RenderScene& scene, const Backend& backend, int ra
   return result;
 }
 
-TEST(DistributedRender, ImageIsBitIdenticalForAnyRankCountAndTileSize) {
-  const RenderScene scene = test_scene();
+// Whitted with stratified samples renders in one pass; the path integrator with Sobol samples in
+// passes of 1, 1, 2 and 4 samples, which ranks render ahead of the film's merging.
+class DistributedRenderScenes : public ::testing::TestWithParam<Integrator> {};
+
+TEST_P(DistributedRenderScenes, ImageIsBitIdenticalForAnyRankCountAndTileSize) {
+  RenderScene scene = test_scene();
+  if (GetParam() == Integrator::kPath) {
+    scene.render.integrator = Integrator::kPath;
+    scene.render.sampler = SamplerKind::kSobol;
+    scene.render.spp = 8;
+  }
+  ASSERT_EQ(render_passes(scene).passes(), GetParam() == Integrator::kPath ? 4 : 1);
   const auto backend = make_backend(BackendKind::kNative, scene, {});
   RenderOptions options;
   options.aovs = {Aov::kAlbedo, Aov::kDepth};
@@ -117,6 +126,8 @@ TEST(DistributedRender, ImageIsBitIdenticalForAnyRankCountAndTileSize) {
         }
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(Integrators, DistributedRenderScenes, ::testing::Values(Integrator::kWhitted, Integrator::kPath));
 
 TEST(DistributedRender, HandshakeNamesTheRankAndWhatDiffers) {
   Mailboxes mail(3);

@@ -14,7 +14,7 @@ std::vector<float> resolve(const std::vector<Aov>& aovs, const std::vector<Color
   PixelAccumulator acc;
   for (std::size_t s = 0; s < samples.size(); ++s) acc.add(samples[s], PrimaryHit{}, static_cast<int>(s));
   std::vector<float> pixel(static_cast<std::size_t>(layout.channel_count()));
-  layout.resolve(acc, static_cast<int>(samples.size()), pixel);
+  layout.resolve(acc, pixel);
   return pixel;
 }
 

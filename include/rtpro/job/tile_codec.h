@@ -1,7 +1,7 @@
 #pragma once
-// A finished tile as bytes, for the two places a tile travels before it lands in the image: a
-// resume journal on disk and a message from one rank to another. The bytes carry the tile's index,
-// region, statistics and pixels (floats, bit for bit) and end in a 64-bit XXH3 checksum of all
+// A finished work item (a tile in a pass) as bytes, for the two places one travels before it lands
+// in the film: a resume journal on disk and a message from one rank to another. The bytes carry
+// the item's index, region, statistics, whether it is cumulative, and its floats (bit for bit) and end in a 64-bit XXH3 checksum of all
 // that precedes it, so a torn or corrupted record is recognised and dropped, never trusted.
 // Native byte order: every rank of a job and every resume runs on the same architecture.
 #include "rtpro/render/tiles.h"
@@ -14,7 +14,7 @@
 namespace rtpro {
 
 // Bytes before the pixels: enough to tell, with the grid, how long the whole record is.
-inline constexpr std::size_t kTileRecordHeaderBytes = 72;
+inline constexpr std::size_t kTileRecordHeaderBytes = 80;
 
 std::size_t tile_record_size(const PixelRegion& region, int channel_count);
 

@@ -1,8 +1,10 @@
 #pragma once
 // The resume journal kept beside an image while it renders (OUT.rtpro-journal): a header naming
-// the job (its JobIdentity) and then one tile record (tile_codec.h) per finished tile, each
-// appended with a single write(2) as the tile finishes, so a killed process loses at most the
-// tiles in flight. Records are not fsync'ed: they survive the death of the process, not of the
+// the job (its JobIdentity) and then one record (tile_codec.h) per finished work item (a tile in
+// a pass), each appended with a single write(2) as the item finishes, so a killed process loses
+// at most the items in flight. Between passes the journal may be rewritten whole with the sums of
+// the passes so far as one cumulative record per tile (rewrite), so it stays a few times the
+// film's size however many passes the render takes. Records are not fsync'ed: they survive the death of the process, not of the
 // machine. `rtpro render --resume` reads the journal back, keeps the intact records of the same
 // job and renders only the other tiles; the image is then bit-identical to an uninterrupted one.
 #include "rtpro/job/job_identity.h"
@@ -22,7 +24,7 @@ std::filesystem::path journal_path(const std::filesystem::path& output);
 
 struct JournalContents {
   JobIdentity identity;
-  std::vector<TileResult> tiles;  // intact records of tiles of `grid`, each tile once
+  std::vector<TileResult> tiles;  // intact records of work items of `grid`, each once
   std::size_t dropped_records = 0;  // torn, corrupt or repeated records, and a torn tail
 };
 
@@ -47,14 +49,24 @@ class TileJournal {
   void append(const TileResult& tile);
   std::string error() const;
 
+  // Replaces the journal (through a temporary file, as the constructor does) with one holding
+  // `kept`. A failure leaves the journal as it was and sets error().
+  void rewrite(std::span<const TileResult> kept);
+  // Bytes in the journal: its header and records.
+  std::size_t bytes() const;
+
   // Closes and deletes the file: the image it was for is written.
   void remove();
   const std::filesystem::path& file() const { return file_; }
 
  private:
   std::filesystem::path file_;
+  void write_new(std::span<const TileResult> kept);
+
   int channel_count_;
+  std::vector<std::byte> header_;
   int descriptor_ = -1;
+  std::size_t bytes_ = 0;
   mutable std::mutex mutex_;
   std::string error_;
 };

@@ -1,11 +1,14 @@
 #pragma once
-// Tiled parallel rendering with oneTBB: workers take tiles from a TileSource, render them and hand
-// them to a TileSink. render_image is the single-process composition (every tile of the region,
-// into one image); a pixel's value depends only on the scene, the settings and the seed, never on
-// threads, tiles, the region or the order tiles are rendered in.
+// Tiled, progressive parallel rendering with oneTBB: workers take work items (a tile in a pass)
+// from a TileSource, render them and hand them to a TileSink. render_image renders the region in
+// passes (pass_schedule.h) into a ProgressiveFilm and resolves it into one image; a pixel's value
+// depends only on the scene, the settings, the seed and the passes it took, never on threads,
+// tiles, the region, ranks, resumes or the order items are rendered in.
 #include "rtpro/backend/backend.h"
 #include "rtpro/image/image.h"
+#include "rtpro/render/adaptive_sampling.h"
 #include "rtpro/render/film.h"
+#include "rtpro/render/progressive_film.h"
 #include "rtpro/render/shading.h"
 #include "rtpro/render/tile_renderer.h"
 #include "rtpro/render/tiles.h"
@@ -24,52 +27,34 @@ namespace rtpro {
 // Workers pull tiles from `source` until it has none, render each and give it to `sink`.
 void render_tiles(const TileRenderer& renderer, const TileGrid& grid, TileSource& source, TileSink& sink);
 
-// Copies finished tiles into a full-size image and keeps each tile's statistics, so totals can be
-// summed in tile order whatever order tiles finished in.
-class ImageTileSink final : public TileSink {
- public:
-  ImageTileSink(Image& image, std::size_t tile_count);
-  void put(TileResult&& tile) override;
-
-  // Called after each tile lands (from worker threads) with tiles done so far.
-  std::function<void(std::size_t)> on_tile_done;
-  // Called after each tile's pixels are in the image, before on_tile_done, with its region.
-  std::function<void(const PixelRegion&)> on_tile_pixels;
-  // Called with each tile before it lands, e.g. to record it in a resume journal.
-  std::function<void(const TileResult&)> on_tile_result;
-
-  std::size_t tiles_done() const;
-  RayCounts rays() const;
-  std::uint64_t nan_samples() const;
-
- private:
-  struct TileStats {
-    bool done = false;
-    RayCounts rays;
-    std::uint64_t nan_samples = 0;
-  };
-  Image& image_;
-  std::vector<TileStats> stats_;
-  std::atomic<std::size_t> done_{0};
-};
-
 struct RenderOptions {
   int tile_size = 32;
   std::optional<PixelRegion> region;  // default: the whole image
   std::vector<Aov> aovs;
   const std::atomic<bool>* cancel = nullptr;  // checked before each tile starts
-  // Called after each finished tile (from worker threads) with tiles done and total.
+  // After the first pass, the render stops at this many seconds from its start (0: no limit),
+  // with the image of the passes finished by then.
+  double time_limit_seconds = 0.0;
+  // Threshold 0: every pixel takes every pass. Else passes stop for pixels that converged, and the
+  // render when all have. Not with a tile_executor (another process has no film to decide from).
+  AdaptiveSampling adaptive;
+  // Called after each finished work item (from worker threads) with items done and the grid's total.
   std::function<void(std::size_t, std::size_t)> on_tile_done;
-  // Called after each finished tile (from worker threads) with the image being rendered and the
-  // tile's region, whose pixels are final there: live previews read them.
-  std::function<void(const Image&, const PixelRegion&)> on_tile_pixels;
-  // Tiles of this grid rendered before (read back from a resume journal): they land in the image
-  // as they are and only the other tiles are rendered.
-  std::span<const TileResult> finished_tiles;
-  // Called (from worker threads) with each newly rendered tile before it lands in the image.
+  // Called after each merged pass with the image of the passes so far (full camera size) and the
+  // region it covers: live previews read it. Resolving the image costs a pass over the film.
+  std::function<void(const Image&, const PixelRegion&)> on_pass_image;
+  // Called after each merged pass with its number and the film (a journal compacts itself).
+  std::function<void(int, const ProgressiveFilm&)> on_pass_merged;
+  // Work items of this grid rendered before (read back from a resume journal, cumulative ones
+  // first): they go into the film as they are and only the other items are rendered. Items that
+  // do not fit together (cumulative items of different passes, or not of every tile) are all
+  // ignored.
+  std::span<const TileResult> journal_items;
+  // Called (from worker threads) with each newly rendered work item before it goes into the film.
   std::function<void(const TileResult&)> on_tile_result;
-  // Renders the tiles `source` hands out into `sink`; unset, this process's workers do
-  // (render_tiles). A distributed render shares them with other processes.
+  // Renders the work items `source` hands out into `sink`; unset, this process's workers do
+  // (render_tiles), one pass at a time. A distributed render shares them with other processes, all
+  // passes in one go.
   std::function<void(const TileRenderer&, const TileGrid&, TileSource&, TileSink&)> tile_executor;
   // The scene's image textures, opened (open_textures); required when it has any.
   const TextureLookup* textures = nullptr;
@@ -77,14 +62,22 @@ struct RenderOptions {
   const EnvironmentLight* environment = nullptr;
 };
 
+// Why a render stopped: every pass done, every pixel converged, the time limit, or an interrupt.
+enum class RenderStop { kAllPasses, kConverged, kTimeLimit, kInterrupted };
+
 struct RenderResult {
-  Image image;  // full camera resolution; pixels outside the region (or unfinished) are 0
+  // Full camera resolution; pixels outside the region are 0. The passes merged, or when none
+  // was, the tiles of the first pass that finished (the others 0).
+  Image image;
   RayCounts rays;
   std::uint64_t nan_samples = 0;  // samples that came out NaN/inf and were counted as black
-  std::size_t tiles_done = 0;
+  std::size_t tiles_done = 0;     // work items (tiles in passes), journal's included
   std::size_t tiles_total = 0;
+  int passes_done = 0;
+  int passes_total = 0;
+  RenderStop stop = RenderStop::kAllPasses;
   double seconds = 0.0;
-  bool complete() const { return tiles_done == tiles_total; }
+  bool complete() const { return stop != RenderStop::kInterrupted; }
 };
 
 // Throws InputError for a region outside the image or a tile size below 1.

@@ -27,11 +27,19 @@ struct PixelRegion {
 // Row-major tiles of `tile_size` pixels covering `region`; the last row and column may be smaller.
 // A tile size beyond the region's larger side is clamped to it (one tile either way), and
 // tile_size() is the clamped size.
+//
+// A render proceeds in passes (pass_schedule.h), each adding samples to every tile, so the unit of
+// work is a tile in a pass: work item i is tile i mod tiles_per_pass() of pass i div
+// tiles_per_pass(), and count() numbers every item of every pass.
 class TileGrid {
  public:
-  TileGrid(const PixelRegion& region, int tile_size);
-  std::size_t count() const { return columns_ * rows_; }
+  TileGrid(const PixelRegion& region, int tile_size, int passes = 1);
+  std::size_t count() const { return tiles_per_pass() * static_cast<std::size_t>(passes_); }
+  std::size_t tiles_per_pass() const { return columns_ * rows_; }
+  int passes() const { return passes_; }
+  // The region of work item `index`'s tile, and its pass.
   PixelRegion tile(std::size_t index) const;
+  int pass(std::size_t index) const { return static_cast<int>(index / tiles_per_pass()); }
   const PixelRegion& region() const { return region_; }
   int tile_size() const { return tile_size_; }
 
@@ -39,15 +47,20 @@ class TileGrid {
   PixelRegion region_;
   int tile_size_;
   std::size_t columns_, rows_;
+  int passes_;
 };
 
-// A rendered tile: its pixels in film layout (row-major, channel_count floats each) and what it cost.
+// A rendered work item: its tile's per-pixel sample sums of one pass (row-major, one
+// PixelAccumulator each, packed as kAccumulatorFloats floats: film.h) and what it cost. A
+// `cumulative` item holds instead the sums of every pass up to and including its own (a resume
+// journal keeps those in place of the passes they sum).
 struct TileResult {
   std::size_t index = 0;
   PixelRegion region;
   std::vector<float> pixels;
   RayCounts rays;
   std::uint64_t nan_samples = 0;  // samples that came out NaN/inf and were counted as black
+  bool cumulative = false;
 };
 
 // Called concurrently by the render workers.

@@ -1,0 +1,77 @@
+#pragma once
+// The sums of every pixel of a render's region over the passes merged so far. Work items (a tile in
+// a pass, tiles.h) arrive in any order from any thread or rank; a pass is merged into the sums
+// only when all its tiles are in and every earlier pass is merged, tile by tile in parallel, so a
+// pixel's sums are added in pass order whatever the arrival order, and the sums always hold whole
+// passes: what an interrupt or a time limit shows.
+#include "rtpro/image/image.h"
+#include "rtpro/render/film.h"
+#include "rtpro/render/tiles.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <vector>
+
+namespace rtpro {
+
+class ProgressiveFilm {
+ public:
+  explicit ProgressiveFilm(const TileGrid& grid);
+
+  // Takes a work item of the grid (any thread). A cumulative item sets its tile's sums (a resume
+  // journal's); all tiles' cumulative items must be of one pass and come before any other item.
+  // Merges every pass this completes, calling on_pass_merged(pass) after each.
+  void add(TileResult&& item);
+  std::function<void(int)> on_pass_merged;
+
+  int passes_merged() const;
+  // Whether work item `index` is in: merged or waiting for the items of its pass or of earlier ones.
+  bool has(std::size_t index) const;
+
+  const TileGrid& grid() const { return grid_; }
+  const PixelAccumulator& pixel(int x, int y) const {
+    return pixels_[static_cast<std::size_t>(y - grid_.region().y0) * static_cast<std::size_t>(grid_.region().width()) +
+                   static_cast<std::size_t>(x - grid_.region().x0)];
+  }
+  // Writes the region's pixels into `image` (full camera size, layout's channels).
+  void resolve(const FilmLayout& layout, Image& image) const;
+  // The same, with each tile of the first unmerged pass that is in shown with it (what an
+  // interrupted single-pass render has to show).
+  void resolve_with_partial_pass(const FilmLayout& layout, Image& image) const;
+
+  // Every tile's sums through the last merged pass, as cumulative items, and the items waiting:
+  // all a resume journal has to keep.
+  std::vector<TileResult> journal_items() const;
+  // Bytes of the sums (a journal holding more than a few times this is worth compacting).
+  std::size_t bytes() const { return pixels_.size() * sizeof(PixelAccumulator); }
+
+  RayCounts rays() const;
+  std::uint64_t nan_samples() const;
+  std::size_t items_in() const;
+
+ private:
+  struct WaitingPass {
+    std::vector<TileResult> items;  // by tile; an absent item has no pixels
+    std::size_t count = 0;
+  };
+  void merge_item(const TileResult& item, bool cumulative);
+  void merge_ready_passes(std::unique_lock<std::mutex>& lock);
+
+  TileGrid grid_;
+  std::vector<PixelAccumulator> pixels_;
+  mutable std::mutex mutex_;
+  std::map<int, WaitingPass> waiting_;
+  int merged_ = 0;
+  bool merging_ = false;
+  std::size_t cumulative_tiles_ = 0;
+  int cumulative_pass_ = 0;
+  // Of the merged passes, by tile: what the sums cost.
+  std::vector<RayCounts> tile_rays_;
+  std::vector<std::uint64_t> tile_nan_samples_;
+  std::size_t items_in_ = 0;
+};
+
+}  // namespace rtpro

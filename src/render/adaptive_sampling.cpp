@@ -1,0 +1,62 @@
+#include "rtpro/render/adaptive_sampling.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rtpro {
+
+int resolved_min_samples(int min_samples, float threshold, int spp) {
+  int samples = min_samples;
+  if (samples <= 0) {
+    // Enough for the even half to be a usable estimate; more for stricter thresholds.
+    samples = 16;
+    if (threshold > 0.0f) samples = std::max(samples, static_cast<int>(std::ceil(std::sqrt(1.0f / threshold))));
+  }
+  return std::clamp(samples, 1, std::max(spp, 1));
+}
+
+float pixel_error(const PixelAccumulator& acc) {
+  const int even = (acc.samples + 1) / 2;
+  if (acc.samples < 2 || even == 0) return INFINITY;
+  const Color mean = acc.radiance / static_cast<float>(acc.samples);
+  const Color even_mean = acc.even_radiance / static_cast<float>(even);
+  const float difference =
+      std::abs(mean.x - even_mean.x) + std::abs(mean.y - even_mean.y) + std::abs(mean.z - even_mean.z);
+  const float brightness = std::max(0.0f, mean.x + mean.y + mean.z);
+  return difference / (0.0001f + std::sqrt(brightness));
+}
+
+std::size_t active_pixels(const ProgressiveFilm& film, const AdaptiveSampling& settings, std::vector<std::uint8_t>& mask) {
+  const PixelRegion& region = film.grid().region();
+  const int width = region.width(), height = region.height();
+  std::vector<std::uint8_t> unconverged(region.pixel_count());
+  tbb::parallel_for(0, height, [&](int row) {
+    for (int column = 0; column < width; ++column) {
+      const PixelAccumulator& acc = film.pixel(region.x0 + column, region.y0 + row);
+      const bool goes_on = acc.samples < settings.min_samples || !(pixel_error(acc) < settings.threshold);
+      unconverged[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(column)] =
+          goes_on ? 1 : 0;
+    }
+  });
+  mask.assign(region.pixel_count(), 0);
+  std::vector<std::size_t> row_counts(static_cast<std::size_t>(height), 0);
+  tbb::parallel_for(0, height, [&](int row) {
+    std::size_t count = 0;
+    for (int column = 0; column < width; ++column) {
+      bool goes_on = false;
+      for (int y = std::max(row - 1, 0); y <= std::min(row + 1, height - 1) && !goes_on; ++y)
+        for (int x = std::max(column - 1, 0); x <= std::min(column + 1, width - 1) && !goes_on; ++x)
+          goes_on = unconverged[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] != 0;
+      mask[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(column)] = goes_on;
+      count += goes_on ? 1 : 0;
+    }
+    row_counts[static_cast<std::size_t>(row)] = count;
+  });
+  std::size_t total = 0;
+  for (std::size_t count : row_counts) total += count;
+  return total;
+}
+
+}  // namespace rtpro
