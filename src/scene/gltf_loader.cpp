@@ -3,6 +3,7 @@
 #include "rtpro/core/error.h"
 #include "ascii_scan.h"
 #include "gltf_accessor.h"
+#include "gltf_json_types.h"
 #include "gltf_material.h"
 #include "gltf_mesh.h"
 #include "gltf_nodes.h"
@@ -26,12 +27,14 @@ namespace {
 
 // Extensions without which the geometry cannot be read at all.
 constexpr const char* kGeometryExtensions[] = {"KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_mesh_quantization"};
-// Extensions rtpro reads, or can ignore without misreading anything.
-constexpr const char* kKnownExtensions[] = {"KHR_lights_punctual",         "KHR_materials_emissive_strength",
-                                            "KHR_texture_transform",       "KHR_materials_pbrSpecularGlossiness",
-                                            "KHR_materials_unlit",         "KHR_materials_ior",
-                                            "KHR_materials_specular",      "KHR_materials_transmission",
-                                            "KHR_materials_clearcoat",     "KHR_materials_sheen"};
+// Extensions rtpro reads. A file that requires any other is refused (the glTF specification: a
+// loader that does not support a required extension must not load the file); one that merely
+// uses another is read with a warning naming it. Of the material extensions, the factors are read
+// and their own textures are not (gltf_material.cpp warns about those).
+constexpr const char* kSupportedExtensions[] = {"KHR_lights_punctual",        "KHR_materials_emissive_strength",
+                                                "KHR_texture_transform",      "KHR_materials_ior",
+                                                "KHR_materials_specular",     "KHR_materials_transmission",
+                                                "KHR_materials_clearcoat",    "KHR_materials_sheen"};
 
 // Characters of a tinygltf message line shown.
 constexpr std::size_t kMaxTinygltfLine = 300;
@@ -134,6 +137,29 @@ bool is_geometry_extension(const std::string& name) {
   return std::find(std::begin(kGeometryExtensions), std::end(kGeometryExtensions), name) != std::end(kGeometryExtensions);
 }
 
+bool is_supported_extension(const std::string& name) {
+  return std::find(std::begin(kSupportedExtensions), std::end(kSupportedExtensions), name) != std::end(kSupportedExtensions);
+}
+
+// extensionsRequired: each one rtpro lacks refuses the file; extensionsUsed: each one it lacks is
+// a warning, by name.
+void check_extensions(const tinygltf::Model& model, const std::string& name, std::vector<std::string>& warnings) {
+  const SourceLocation where{name};
+  for (std::size_t i = 0; i < model.extensionsRequired.size(); ++i) {
+    const std::string& required = model.extensionsRequired[i];
+    if (!is_supported_extension(required))
+      throw InputError(where, "extensionsRequired[" + std::to_string(i) + "]: the file needs " + ascii::quoted(required) +
+                                  ", which rtpro does not support" +
+                                  (is_geometry_extension(required) ? " (its meshes cannot be read without it)" : ""));
+  }
+  for (std::size_t i = 0; i < model.extensionsUsed.size(); ++i) {
+    const std::string& used = model.extensionsUsed[i];
+    if (!is_supported_extension(used))
+      warnings.push_back(name + ": extensionsUsed[" + std::to_string(i) + "]: " + ascii::quoted(used) +
+                         " is not supported; what it adds is ignored and the file may look different in other tools");
+  }
+}
+
 // tinygltf's errors name no JSON path ("File not found : a.bin"). When it fails, the JSON is
 // read again (only then) to name the element at fault where that can be found.
 std::string diagnose(std::string_view json_text, const Confinement& confinement, const fs::path& folder) {
@@ -151,8 +177,8 @@ std::string diagnose(std::string_view json_text, const Confinement& confinement,
   if (const auto required = json.find("extensionsRequired"); required != json.end() && required->is_array())
     for (std::size_t i = 0; i < required->size(); ++i)
       if ((*required)[i].is_string() && is_geometry_extension((*required)[i].get<std::string>()))
-        return "extensionsRequired[" + std::to_string(i) + "]: the file needs " + (*required)[i].get<std::string>() +
-               ", which rtpro does not support";
+        return "extensionsRequired[" + std::to_string(i) + "]: the file needs " + ascii::quoted((*required)[i].get<std::string>()) +
+               ", which rtpro does not support (its meshes cannot be read without it)";
   if (const auto buffers = json.find("buffers"); buffers != json.end() && buffers->is_array()) {
     for (std::size_t i = 0; i < buffers->size(); ++i) {
       const nlohmann::json& buffer = (*buffers)[i];
@@ -182,6 +208,7 @@ tinygltf::Model parse(const fs::path& file, std::vector<std::string>& warnings, 
   }
   if (json_depth(json_text(bytes.text(), binary), kMaxGltfJsonDepth) > kMaxGltfJsonDepth)
     throw InputError(where, "the JSON nests deeper than " + std::to_string(kMaxGltfJsonDepth) + " levels");
+  gltf::check_json_types(json_text(bytes.text(), binary), name);
 
   std::error_code error;
   Confinement confinement{fs::weakly_canonical(file.parent_path().empty() ? fs::path(".") : file.parent_path(), error), {}};
@@ -217,16 +244,28 @@ tinygltf::Model parse(const fs::path& file, std::vector<std::string>& warnings, 
   files_read = std::move(confinement.files_read);
   if (model.asset.version.rfind("2.", 0) != 0)
     throw InputError(where, "asset.version: " + ascii::quoted(model.asset.version) + ": rtpro reads glTF 2.0 files only");
-  for (const std::string& required : model.extensionsRequired) {
-    if (is_geometry_extension(required))
-      throw InputError(where, "extensionsRequired: the file needs " + required + ", which rtpro does not support");
-    if (std::find(std::begin(kKnownExtensions), std::end(kKnownExtensions), required) == std::end(kKnownExtensions))
-      warnings.push_back(name + ": extensionsRequired: " + required + " is not supported; the file may look wrong");
-  }
+  check_extensions(model, name, warnings);
   return model;
 }
 
 }  // namespace
+
+std::uint64_t count_gltf_mesh_nodes(const fs::path& file) {
+  try {
+    const MappedFile bytes(file);
+    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    const std::string_view text = json_text(bytes.text(), binary);
+    if (json_depth(text, kMaxGltfJsonDepth) > kMaxGltfJsonDepth) return 1;
+    const nlohmann::json json = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
+    const auto nodes = json.is_object() ? json.find("nodes") : json.end();
+    if (json.is_discarded() || !json.is_object() || nodes == json.end() || !nodes->is_array()) return 1;
+    std::uint64_t count = 0;
+    for (const nlohmann::json& node : *nodes) count += node.is_object() && node.contains("mesh");
+    return std::max<std::uint64_t>(count, 1);
+  } catch (const InputError&) {
+    return 1;
+  }
+}
 
 bool is_gltf_file(const fs::path& file) {
   const std::string extension = lowercase(file.extension().string());
@@ -241,7 +280,11 @@ GltfAsset load_gltf_file(const fs::path& file, const MeshLoadOptions& options) {
   const gltf::AccessorReader reader(model, file.string());
   for (std::size_t m = 0; m < model.materials.size(); ++m)
     asset.materials.push_back(gltf::read_material(model, int(m), file, stats.warnings));
-  for (std::size_t m = 0; m < model.meshes.size(); ++m) asset.meshes.push_back(gltf::read_mesh(model, int(m), reader, options, stats));
+  std::vector<gltf::UvMapping> uv_mappings;
+  for (std::size_t m = 0; m < model.materials.size(); ++m)
+    uv_mappings.push_back(gltf::uv_mapping(model, int(m), file.string(), stats.warnings));
+  for (std::size_t m = 0; m < model.meshes.size(); ++m)
+    asset.meshes.push_back(gltf::read_mesh(model, int(m), reader, options, uv_mappings, stats));
   gltf::place_nodes(model, reader, asset);
   for (const TriangleMesh& mesh : asset.meshes) {
     stats.vertices += mesh.vertices.size();

@@ -14,6 +14,7 @@
 //   error is an InputError naming the file and the JSON path of the offending element.
 #include "gltf_asset.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 
@@ -22,6 +23,11 @@ namespace rtpro {
 inline constexpr int kMaxGltfJsonDepth = 128;
 
 GltfAsset load_gltf_file(const std::filesystem::path& file, const MeshLoadOptions& options = {});
+
+// The nodes of the file that draw a mesh, from its JSON alone (no buffer read): at most the
+// placements load_gltf_file makes, since nodes form trees. For the memory estimate before the
+// file is loaded; 1 when the file cannot be read (the loader reports why later).
+std::uint64_t count_gltf_mesh_nodes(const std::filesystem::path& file);
 
 // Whether the file name ends in .gltf or .glb (case-insensitive).
 bool is_gltf_file(const std::filesystem::path& file);

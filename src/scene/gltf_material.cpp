@@ -1,5 +1,8 @@
 #include "gltf_material.h"
 
+#include "rtpro/core/error.h"
+#include "ascii_scan.h"
+#include "path_containment.h"
 #include "mtl_parser.h"
 
 #include <algorithm>
@@ -44,7 +47,11 @@ std::filesystem::path texture_path(const tinygltf::Model& model, int texture, co
     warnings.push_back(file.string() + ": images[" + std::to_string(source) + "].uri leaves the glTF's folder; ignored");
     return {};
   }
-  return file.parent_path() / normal;
+  const std::filesystem::path path = file.parent_path() / normal;
+  if (!resolves_inside(file.parent_path(), path))
+    throw InputError(SourceLocation{file.string()}, "images[" + std::to_string(source) + "].uri: " + ascii::quoted(image.uri) +
+                                                        " leads outside the glTF's folder (through a symbolic link)");
+  return path;
 }
 
 // A texture slot other than the base colour; nothing when the reference leads nowhere (a warning).
@@ -141,6 +148,13 @@ MaterialDesc read_material(const tinygltf::Model& model, int index, const std::f
   }
   const float metallic = clamped_unit(pbr.metallicFactor);
   const float roughness = clamped_unit(pbr.roughnessFactor);
+  // The material extensions' own textures (clearcoatTexture, sheenColorTexture, ...) are not read.
+  for (const auto& [name, ext] : m.extensions)
+    if (ext.IsObject())
+      for (const std::string& key : ext.Keys())
+        if (key.size() > 7 && key.compare(key.size() - 7, 7, "Texture") == 0)
+          warnings.push_back(file.string() + ": " + path + ".extensions." + ascii::quoted(name) + "." + ascii::quoted(key) +
+                             " is not read; the factor alone is used");
   if (m.extensions.count("KHR_materials_pbrSpecularGlossiness"))
     warnings.push_back(file.string() + ": " + path + ": KHR_materials_pbrSpecularGlossiness is not read; using the metallic-roughness values");
 

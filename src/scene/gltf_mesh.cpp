@@ -55,8 +55,8 @@ struct Primitive {
 class MeshBuilder {
  public:
   MeshBuilder(const tinygltf::Model& model, int mesh, const AccessorReader& reader, const MeshLoadOptions& options,
-              MeshLoadStats& stats)
-      : model_(model), mesh_index_(mesh), reader_(reader), options_(options), stats_(stats) {}
+              const std::vector<UvMapping>& uv_mappings, MeshLoadStats& stats)
+      : model_(model), mesh_index_(mesh), reader_(reader), options_(options), uv_mappings_(uv_mappings), stats_(stats) {}
 
   TriangleMesh build() {
     const tinygltf::Mesh& mesh = model_.meshes[std::size_t(mesh_index_)];
@@ -93,6 +93,7 @@ class MeshBuilder {
       corners.resize(vertex_count);
       for (std::uint32_t i = 0; i < vertex_count; ++i) corners[i] = i;
     }
+    check_corner_count(mode, corners.size(), prim.indices >= 0 ? path + ".indices" : path + ".attributes.POSITION");
     p.triangles = triangles_of(mode, corners);
     corners = {};
     const auto degenerate = [](const TriangleIndices& t) { return t.v0 == t.v1 || t.v1 == t.v2 || t.v0 == t.v2; };
@@ -107,11 +108,26 @@ class MeshBuilder {
         p.normals.clear();
       }
     }
-    if (const auto uv = prim.attributes.find("TEXCOORD_0"); uv != prim.attributes.end())
-      p.uvs = read_sized(reader_.texcoords(uv->second, path + ".attributes.TEXCOORD_0"), vertex_count, path + ".attributes.TEXCOORD_0");
+    const UvMapping mapping = prim.material >= 0 ? uv_mappings_[std::size_t(prim.material)] : UvMapping{};
+    const std::string uv_name = "TEXCOORD_" + std::to_string(mapping.set);
+    if (const auto uv = prim.attributes.find(uv_name); uv != prim.attributes.end()) {
+      p.uvs = read_sized(reader_.texcoords(uv->second, path + ".attributes." + uv_name), vertex_count, path + ".attributes." + uv_name);
+      apply_uv_mapping(mapping, p.uvs);
+    } else if (mapping.set != 0 && prim.attributes.count("TEXCOORD_0")) {
+      stats_.warnings.push_back(file() + ": " + path + ": its material's textures read " + uv_name +
+                                ", which the primitive lacks; its textures show their corner (0, 0)");
+    }
     if (const auto c = prim.attributes.find("COLOR_0"); c != prim.attributes.end())
       p.colors = read_sized(reader_.colors(c->second, path + ".attributes.COLOR_0"), vertex_count, path + ".attributes.COLOR_0");
     primitives_.push_back(std::move(p));
+  }
+
+  // The glTF specification's counts: a multiple of 3 for TRIANGLES, at least 3 for strips and fans.
+  void check_corner_count(int mode, std::size_t count, const std::string& path) const {
+    if (mode == TINYGLTF_MODE_TRIANGLES && count % 3 != 0)
+      reader_.fail(path, std::to_string(count) + " corners for TRIANGLES, not a multiple of 3 (a truncated or wrong array)");
+    if (mode != TINYGLTF_MODE_TRIANGLES && count > 0 && count < 3)
+      reader_.fail(path, std::to_string(count) + " corners for a strip or fan, which needs at least 3");
   }
 
   template <typename T>
@@ -191,6 +207,7 @@ class MeshBuilder {
   int mesh_index_;
   const AccessorReader& reader_;
   const MeshLoadOptions& options_;
+  const std::vector<UvMapping>& uv_mappings_;
   MeshLoadStats& stats_;
   std::vector<Primitive> primitives_;
   std::vector<std::uint32_t> triangle_materials_;
@@ -200,8 +217,8 @@ class MeshBuilder {
 }  // namespace
 
 TriangleMesh read_mesh(const tinygltf::Model& model, int mesh, const AccessorReader& reader, const MeshLoadOptions& options,
-                       MeshLoadStats& stats) {
-  return MeshBuilder(model, mesh, reader, options, stats).build();
+                       const std::vector<UvMapping>& uv_mappings, MeshLoadStats& stats) {
+  return MeshBuilder(model, mesh, reader, options, uv_mappings, stats).build();
 }
 
 }  // namespace rtpro::gltf

@@ -8,18 +8,24 @@
 //   vertices of their own carrying the face normal when other primitives of the mesh have
 //   normals, and the mesh has no normals at all when none has. options.normals overrides this
 //   like for OBJ files (kSmooth: area-weighted over the shared vertices).
-// - TEXCOORD_0 (v flipped to OBJ's convention) and COLOR_0 (linear, alpha dropped), filled with
-//   (0, 0) and white for primitives without them.
+// - The texture coordinates the primitive's material maps by (TEXCOORD_0 unless its textures say
+//   `texCoord`; gltf_uv_mapping.h), with its KHR_texture_transform applied and v flipped to OBJ's
+//   convention, and COLOR_0 (linear, alpha dropped), filled with (0, 0) and white for primitives
+//   without them.
+// - A TRIANGLES primitive whose index (or vertex) count is not a multiple of 3, or a strip or fan
+//   of 1 or 2, is refused: the file is truncated or wrong.
 // - Each triangle's material: the primitive's (an index into the file's materials), or
 //   kNoMaterial.
 #include "rtpro/scene/mesh_loader.h"
 #include "gltf_accessor.h"
+#include "gltf_uv_mapping.h"
 
 #include <tiny_gltf.h>
 
 namespace rtpro::gltf {
 
+// `uv_mappings`: one per material of the model (gltf_uv_mapping.h).
 TriangleMesh read_mesh(const tinygltf::Model& model, int mesh, const AccessorReader& reader, const MeshLoadOptions& options,
-                       MeshLoadStats& stats);
+                       const std::vector<UvMapping>& uv_mappings, MeshLoadStats& stats);
 
 }  // namespace rtpro::gltf

@@ -13,6 +13,8 @@ namespace {
 
 constexpr float kRadiansToDegrees = 57.29577951308232f;
 constexpr double kHalfPi = std::numbers::pi / 2.0;
+constexpr double kMinCameraAspect = 1.0 / 16.0;  // a glTF camera's aspectRatio, clamped into this range
+constexpr double kMaxCameraAspect = 16.0;
 // How far past its limits a spot light's angle may lie and be read as the limit: rounding in
 // exporters (Blender's π/2 as a float is 4e-8 above it).
 constexpr double kConeAngleSlack = 1e-6;
@@ -208,9 +210,17 @@ class NodeWalker {
       asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) + "]: unusable field of view or placement; skipped");
       return;
     }
-    const double aspect = camera.perspective.aspectRatio;
-    asset_.cameras.push_back({world.apply_point(Vec3(0, 0, 0)), normalize(forward), normalize(up), float(yfov),
-                              std::isfinite(aspect) && aspect > 1e-3 && aspect < 1e3 ? float(aspect) : 0.0f});
+    // The image is 640 pixels wide and as high as the aspect ratio makes it: 0.0011 made it 65,536
+    // high. Ratios beyond 1:16 are clamped (with a warning), an image at most 10,240 high.
+    double aspect = camera.perspective.aspectRatio;
+    if (!std::isfinite(aspect) || aspect < 0.0) aspect = 0.0;  // none: the default size
+    if (aspect > 0.0 && (aspect < kMinCameraAspect || aspect > kMaxCameraAspect)) {
+      const double clamped = std::clamp(aspect, kMinCameraAspect, kMaxCameraAspect);
+      asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) + "].perspective.aspectRatio " +
+                                      std::to_string(aspect) + " is outside 1/16..16; " + std::to_string(clamped) + " is used");
+      aspect = clamped;
+    }
+    asset_.cameras.push_back({world.apply_point(Vec3(0, 0, 0)), normalize(forward), normalize(up), float(yfov), float(aspect)});
   }
 
   void add_light(int index, const std::string& path, const Affine& world) {

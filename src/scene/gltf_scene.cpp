@@ -1,5 +1,7 @@
 #include "gltf_scene.h"
 
+#include "ascii_scan.h"
+
 #include "rtpro/scene/scene_parser.h"
 #include "gltf_asset.h"
 #include "gltf_loader.h"
@@ -26,10 +28,19 @@ std::string number(double v) {
 
 std::string vector(const Vec3& v) { return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]"; }
 
+// The file name as a YAML string read back exactly: quotes and backslashes escaped, control
+// characters as \xNN, and `$` doubled (the generated text goes through variable substitution:
+// `a$b.glb` was read as the variable $b).
 std::string quoted_yaml(const std::string& text) {
   std::string out = "\"";
   for (const char c : text) {
     if (c == '"' || c == '\\') out += '\\';
+    if (c == '$') out += '$';
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      static const char* hex = "0123456789abcdef";
+      out += std::string("\\x") + hex[static_cast<unsigned char>(c) >> 4] + hex[c & 15];
+      continue;
+    }
     out += c;
   }
   return out + "\"";
@@ -114,7 +125,7 @@ std::string render_yaml(const GltfAsset& asset) {
 
 std::string gltf_scene_yaml(const GltfAsset& asset) {
   const BBox bounds = asset.bounds();
-  return "# " + asset.file.filename().string() + " as a scene\nrtpro: 1\n" + camera_yaml(asset, bounds) +
+  return "# " + ascii::printable(asset.file.filename().string(), 200) + " as a scene\nrtpro: 1\n" + camera_yaml(asset, bounds) +
          render_yaml(asset) + lights_yaml(asset) + "world:\n  - {type: mesh, file: " +
          quoted_yaml(asset.file.filename().string()) + "}\n";
 }

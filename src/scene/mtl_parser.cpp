@@ -4,6 +4,7 @@
 #include "ascii_scan.h"
 #include "mapped_file.h"
 #include "mesh_text_encoding.h"
+#include "path_containment.h"
 
 #include <algorithm>
 #include <array>
@@ -113,21 +114,36 @@ class MtlParser {
     return value;
   }
 
-  // `map_Kd [-options ...] file`: the file is the last word.
+  // `map_Kd [-options ...] file`: the file is the last word. `\` separates folders as `/` does
+  // (files written on Windows say `.\tex.jpg`; Blender and assimp read them so). A texture that
+  // is not there is a warning and the material keeps its Kd; one reached through a symbolic link
+  // outside the library's folder is refused, as mtllib is.
   void texture(const char* p, const char* end) {
     while (end != p && ascii::is_blank(end[-1])) --end;
     const char* name = end;
     while (name != p && !ascii::is_blank(name[-1])) --name;
     const std::string_view written(name, std::size_t(end - name));
     if (written.empty()) fail(p, "map_Kd needs a file name");
-    const std::filesystem::path relative(written);
+    std::string slashed(written);
+    std::replace(slashed.begin(), slashed.end(), '\\', '/');
+    const std::filesystem::path relative(slashed);
     const std::filesystem::path normal = relative.lexically_normal();
-    if (relative.is_absolute() || relative.has_root_name() || normal.empty() || *normal.begin() == "..") {
+    if (relative.is_absolute() || relative.has_root_name() || normal.empty() || *normal.begin() == ".." ||
+        (slashed.size() >= 2 && slashed[1] == ':')) {  // C:/... written on Windows
       library_.warnings.push_back(file_ + ":" + std::to_string(line_) + ": texture " + ascii::quoted(written) +
                                   " is not inside the material library's folder; ignored");
       return;
     }
-    current_->color_texture = path_.parent_path() / normal;
+    const std::filesystem::path path = path_.parent_path() / normal;
+    if (!resolves_inside(path_.parent_path(), path))
+      fail(name, "texture " + ascii::quoted(written) + " leads outside the material library's folder (through a symbolic link)");
+    std::error_code not_readable;
+    if (!std::filesystem::is_regular_file(path, not_readable)) {
+      library_.warnings.push_back(file_ + ":" + std::to_string(line_) + ": texture " + ascii::quoted(written) +
+                                  " not found; material " + ascii::quoted(current_->name) + " uses its Kd colour");
+      return;
+    }
+    current_->color_texture = path;
     current_->texture_where = SourceLocation{file_, static_cast<int>(line_), 0};
   }
 

@@ -3,6 +3,7 @@
 #include "rtpro/core/error.h"
 #include "ascii_scan.h"
 #include "mtl_parser.h"
+#include "path_containment.h"
 
 #include <map>
 #include <set>
@@ -28,14 +29,7 @@ fs::path material_library_path(const fs::path& obj_file, const LocatedName& libr
   if (normal.empty() || *normal.begin() == "..")
     throw InputError(where, "mtllib path " + ascii::quoted(library.name) + " leaves the OBJ's folder");
   const fs::path path = obj_file.parent_path() / normal;
-  // A path the file system cannot resolve (a name over 255 bytes, say) is left to the existence
-  // check: a missing library, a warning.
-  std::error_code folder_error, target_error;
-  const fs::path folder = fs::weakly_canonical(obj_file.parent_path().empty() ? fs::path(".") : obj_file.parent_path(), folder_error);
-  const fs::path target = fs::weakly_canonical(path, target_error);
-  if (folder_error || target_error) return path;
-  const fs::path inside = target.lexically_relative(folder);
-  if (inside.empty() || *inside.begin() == "..")
+  if (!resolves_inside(obj_file.parent_path(), path))
     throw InputError(where, "mtllib path " + ascii::quoted(library.name) + " leads outside the OBJ's folder (through a symbolic link)");
   return path;
 }

@@ -3,6 +3,7 @@
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/render_cost.h"
 #include "rtpro/scene/scene_parser.h"
+#include "gltf_asset.h"
 #include "gltf_test_files.h"
 #include "test_paths.h"
 
@@ -86,6 +87,33 @@ TEST(GltfScene, TheFirstCameraAndThePunctualLightsAreUsed) {
 
 // A spot light on a child of a rotated, translated node: placed and aimed by both transforms (it
 // shines down the node's -z), its cone's half-angles from radians to degrees, candela / 683 W/sr.
+// aspectRatio 0.0011 made a 640x65536 image: ratios past 1:16 are clamped, with a warning.
+TEST(GltfScene, AnAbsurdCameraAspectRatioIsClampedWithAWarning) {
+  GltfFile gltf = offset_model();
+  gltf.json["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"aspectRatio", 0.0011}, {"znear", 0.1}}}}};
+  const int camera = gltf.node({{"camera", 0}, {"translation", {10.5, 0.5, 5}}});
+  gltf.json["scenes"][0]["nodes"] = {0, camera};
+  const auto file = gltf.write("tall");
+  const SceneDescription scene = parse_scene_file(file);
+  EXPECT_EQ(scene.camera.width, 640);
+  EXPECT_EQ(scene.camera.height, 640 * 16);
+  ASSERT_EQ(scene.world.gltfs.size(), 1u);
+  ASSERT_TRUE(scene.world.gltfs[0].loaded);
+  bool warned = false;
+  for (const std::string& w : scene.world.gltfs[0].loaded->stats.warnings)
+    warned |= w.find("cameras[0].perspective.aspectRatio 0.001100 is outside 1/16..16; 0.062500 is used") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
+// The scene a glTF file makes is YAML text naming the file: `$b` in `a$b.gltf` was read as a
+// variable ("undefined variable '$b'").
+TEST(GltfScene, AFileNameWithADollarOrAQuoteIsReadAsItIs) {
+  const auto file = offset_model().write("a$b \"q\"", /*embed=*/true);
+  const SceneDescription scene = parse_scene_file(file);
+  ASSERT_EQ(scene.world.gltfs.size(), 1u);
+  EXPECT_EQ(scene.world.gltfs[0].file.filename(), file.filename());
+}
+
 TEST(GltfScene, ASpotLightKeepsItsConeAndShinesDownItsNodesMinusZ) {
   GltfFile gltf = offset_model();
   gltf.json["extensionsUsed"] = {"KHR_lights_punctual"};

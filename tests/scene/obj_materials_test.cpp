@@ -53,6 +53,7 @@ TEST(MtlMapping, NsZeroWithStrongKsGivesNoHighlightInsteadOfAWhiteDisc) {
 }
 
 TEST(MtlMapping, DissolveTransparencyAndDiffuseTextureAreKept) {
+  write_file("tex/maps/wood.png", "present");
   const std::filesystem::path file = write_file("tex/lib.mtl", "newmtl a\nd 0.25\nmap_Kd -s 1 1 1 maps/wood.png\n"
                                                                 "newmtl b\nTr 0.75\nmap_Kd /etc/secret.png\n");
   const MaterialLibrary library = parse_mtl_file(file);
@@ -69,6 +70,32 @@ TEST(MtlMapping, DissolveTransparencyAndDiffuseTextureAreKept) {
   EXPECT_TRUE(warned_transparent);
   EXPECT_TRUE(warned_outside);
   EXPECT_THROW(parse_mtl_file(write_file("bad.mtl", "newmtl a\nd 2\n")), InputError);
+}
+
+// assimp-testmodels' spider.mtl says `map_Kd .\SpiderTex.jpg` (written on Windows): rtpro
+// refused the scene when it opened the texture; `\` is a folder separator as in Blender and assimp.
+TEST(MtlMapping, BackslashesInATexturePathSeparateFolders) {
+  const std::filesystem::path texture = write_file("win/maps/SpiderTex.jpg", "present");
+  const std::filesystem::path file = write_file("win/lib.mtl", "newmtl a\nmap_Kd .\\maps\\SpiderTex.jpg\n");
+  const MaterialLibrary library = parse_mtl_file(file);
+  ASSERT_EQ(library.materials.size(), 1u);
+  EXPECT_EQ(library.materials[0].color_texture, file.parent_path() / "maps" / "SpiderTex.jpg");
+  EXPECT_TRUE(std::filesystem::equivalent(library.materials[0].color_texture, texture));
+}
+
+TEST(MtlMapping, ATextureThroughASymbolicLinkOutsideTheFolderIsRefusedAtItsLine) {
+  const std::filesystem::path secret = write_file("secret.png", "not for the MTL");
+  const std::filesystem::path file = write_file("lib/escape.mtl", "newmtl a\nKd 1 1 1\nmap_Kd link.png\n");
+  std::filesystem::remove(file.parent_path() / "link.png");
+  std::filesystem::create_symlink(secret, file.parent_path() / "link.png");
+  try {
+    parse_mtl_file(file);
+    FAIL() << "a texture outside the folder was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().file, file.string());
+    EXPECT_EQ(e.where().line, 3);
+    EXPECT_NE(e.message().find("texture 'link.png' leads outside the material library's folder"), std::string::npos) << e.message();
+  }
 }
 
 TEST(ObjLenience, BareUsemtlAndNewmtlMeanTheDefaultMaterial) {
