@@ -373,6 +373,14 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   stats.rays = result.rays;
   stats.nan_samples = result.nan_samples;
   stats.complete = result.complete();
+  stats.passes_done = result.passes_done;
+  stats.passes_total = result.passes_total;
+  switch (result.stop) {
+    case RenderStop::kAllPasses: stats.stop = "all passes"; break;
+    case RenderStop::kConverged: stats.stop = "converged"; break;
+    case RenderStop::kTimeLimit: stats.stop = "time limit"; break;
+    case RenderStop::kInterrupted: stats.stop = "interrupted"; break;
+  }
 
   const auto write_start = Clock::now();
   const std::filesystem::path target =
