@@ -3,6 +3,7 @@
 // (a real regression, not a usage mistake); 2 for an unreadable file or bad options.
 // Warnings never change the exit code; they are reported.
 #include "command.h"
+#include "output_target.h"
 #include "rtpro/core/error.h"
 #include "rtpro/image/diff_image.h"
 #include "rtpro/image/image_compare.h"
@@ -130,6 +131,7 @@ void print_json(const CompareCommandOptions& o, const Image& reference, const Im
 }
 
 int run_compare(CompareCommandOptions o) {
+  check_output_is_distinct({"--diff", o.diff}, {{"the reference", o.reference}, {"the test image", o.test}});
   const Image reference = read_image(o.reference);
   const Image test = read_image(o.test);
   const ImageComparison comparison = compare_images(reference, test, o.thresholds);

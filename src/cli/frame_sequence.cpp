@@ -3,7 +3,7 @@
 #include "rtpro/core/error.h"
 
 #include <charconv>
-#include <cstdio>
+#include <string>
 
 namespace rtpro::cli {
 
@@ -61,9 +61,12 @@ std::string numbered_output(const std::string& output, long frame) {
   if (end == std::string::npos) return output;
   std::size_t begin = end;
   while (begin > 0 && output[begin - 1] == '#') --begin;
-  char digits[32];
-  std::snprintf(digits, sizeof digits, "%0*ld", static_cast<int>(end - begin + 1), frame);
-  return output.substr(0, begin) + digits + output.substr(end + 1);
+  // Padded to the run's length however long it is: a fixed buffer once cut long runs short, and
+  // every frame of a 40-'#' pattern wrote the same file.
+  const std::string digits = std::to_string(frame);
+  const std::size_t width = end - begin + 1;
+  const std::string padded = digits.size() < width ? std::string(width - digits.size(), '0') + digits : digits;
+  return output.substr(0, begin) + padded + output.substr(end + 1);
 }
 
 }  // namespace rtpro::cli

@@ -17,7 +17,7 @@ namespace rtpro::cli {
 const char* const kOutputFormatsHelp =
     "Output image, or '-' for standard output with --format. The extension picks the format and its "
     "encoding: .exr (.sxr .mxr) 32-bit float, scene-linear, the only format with --aov layers; .hdr .rgbe "
-    ".pfm float, scene-linear, RGB only; .tif .tiff 16-bit, display-referred (the OCIO view, no clamp "
+    "float, scene-linear, RGB only; .tif .tiff 16-bit, display-referred (the OCIO view, no clamp "
     "below 1); .png .jpg and every other OpenImageIO format 8-bit, display-referred (OCIO view, clamped)";
 
 namespace {
@@ -75,6 +75,33 @@ void OutputTarget::deliver() const {
   }
   if (std::fflush(stdout) != 0)
     throw RuntimeError(std::string("cannot write the image to standard output: ") + std::strerror(errno));
+}
+
+namespace {
+
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
+  std::error_code error;
+  if (std::filesystem::exists(a, error) && std::filesystem::exists(b, error)) {
+    const bool equivalent = std::filesystem::equivalent(a, b, error);
+    if (!error) return equivalent;
+  }
+  std::error_code error_a, error_b;
+  const std::filesystem::path canonical_a = std::filesystem::weakly_canonical(a, error_a);
+  const std::filesystem::path canonical_b = std::filesystem::weakly_canonical(b, error_b);
+  if (error_a || error_b) return a.lexically_normal() == b.lexically_normal();
+  return canonical_a == canonical_b;
+}
+
+}  // namespace
+
+void check_output_is_distinct(const NamedPath& output, const std::vector<NamedPath>& others) {
+  if (output.path.empty() || output.path == "-") return;
+  for (const NamedPath& other : others) {
+    if (other.path.empty() || other.path == "-") continue;
+    if (same_file(output.path, other.path))
+      throw InputError(output.what + " " + output.path + " is the same file as " + other.what + " " + other.path +
+                       ": writing it would replace that; choose another name");
+  }
 }
 
 void check_exposure(double stops) {

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace rtpro::cli {
 
@@ -31,6 +32,19 @@ class OutputTarget {
   std::filesystem::path file_;
   bool to_stdout_ = false;
 };
+
+// A file a command reads or writes, and how the command line names it ("-o", "--stats-json",
+// "the reference").
+struct NamedPath {
+  std::string what;
+  std::string path;
+};
+
+// Throws InputError naming both when `output` is the same file as one of `others` (the same path
+// once '..' and symbolic links are resolved, or one existing file under two names): writing it
+// would replace an input, or one output would replace another. `-` (standard output) and empty
+// paths are never the same as anything. A check before anything is rendered.
+void check_output_is_distinct(const NamedPath& output, const std::vector<NamedPath>& others);
 
 // Throws InputError unless stops is within ±64 (a check before the render).
 void check_exposure(double stops);

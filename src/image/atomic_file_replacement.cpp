@@ -54,17 +54,6 @@ void write_all(int descriptor, std::string_view bytes, const std::filesystem::pa
   }
 }
 
-void fsync_path(const std::filesystem::path& path, int flags, const std::filesystem::path& target, const char* step) {
-  const int descriptor = ::open(path.c_str(), flags | O_CLOEXEC);
-  if (descriptor < 0) fail_errno(target, step, errno);
-  const int synced = ::fsync(descriptor);
-  const int sync_errno = errno;
-  const int closed = ::close(descriptor);
-  const int close_errno = errno;
-  if (synced != 0) fail_errno(target, step, sync_errno);
-  if (closed != 0) fail_errno(target, step, close_errno);
-}
-
 }  // namespace
 
 std::string temporary_prefix(const std::filesystem::path& target) {
@@ -93,17 +82,51 @@ void check_replaceable(const std::filesystem::path& target) {
 AtomicFileReplacement::AtomicFileReplacement(std::filesystem::path target) : target_(std::move(target)) {
   check_replaceable(target_);
   remove_stale_temporaries(folder_of(target_), temporary_prefix(target_));
-  temporary_ = temporary_name_for(target_);
+  create_temporary();
+}
+
+// The temporary's name is predictable (PID and a counter), so another user of a shared folder
+// could plant a symbolic link there: created with O_EXCL | O_NOFOLLOW, the temporary is a new
+// regular file of this process or nothing (a name already taken is skipped for the next one).
+void AtomicFileReplacement::create_temporary() {
+  constexpr int kNames = 64;
+  for (int attempt = 0; attempt < kNames; ++attempt) {
+    temporary_ = temporary_name_for(target_);
+    descriptor_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (descriptor_ >= 0) {
+      struct stat created {};
+      if (::fstat(descriptor_, &created) != 0) fail_errno(target_, "create", errno);
+      device_ = created.st_dev;
+      inode_ = created.st_ino;
+      return;
+    }
+    if (errno != EEXIST) {
+      const int error = errno;
+      temporary_.clear();
+      fail_errno(target_, "create", error);
+    }
+  }
+  temporary_.clear();
+  fail(target_, "create: " + std::to_string(kNames) + " temporary names beside it are all taken by other files");
 }
 
 AtomicFileReplacement::~AtomicFileReplacement() {
-  if (committed_) return;
+  if (descriptor_ >= 0) ::close(descriptor_);
+  if (committed_ || temporary_.empty()) return;
   std::error_code ignored;  // nothing useful to do if cleanup fails while another error unwinds
   std::filesystem::remove(temporary_, ignored);
 }
 
 void AtomicFileReplacement::commit() {
-  fsync_path(temporary_, O_RDONLY, target_, "flush");
+  // fsync is per file: the descriptor opened at creation flushes what a library wrote by name.
+  if (::fsync(descriptor_) != 0) fail_errno(target_, "flush", errno);
+  const int closed = ::close(descriptor_);
+  descriptor_ = -1;
+  if (closed != 0) fail_errno(target_, "close", errno);
+  // The file renamed is the one created: not a link or file put in its place meanwhile.
+  struct stat now {};
+  if (::lstat(temporary_.c_str(), &now) != 0 || !S_ISREG(now.st_mode) || now.st_dev != device_ || now.st_ino != inode_)
+    fail(target_, "its temporary file '" + temporary_.string() + "' was replaced by another file while it was written");
   // Checked again just before the rename: a symlink or device put there during the render is
   // refused, not replaced.
   check_replaceable(target_);
@@ -120,17 +143,7 @@ void AtomicFileReplacement::commit() {
 
 void write_file_atomically(const std::filesystem::path& target, std::string_view bytes) {
   AtomicFileReplacement replacement(target);
-  const int descriptor =
-      ::open(replacement.temporary_path().c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
-  if (descriptor < 0) fail_errno(target, "create", errno);
-  try {
-    write_all(descriptor, bytes, target);
-    if (::fsync(descriptor) != 0) fail_errno(target, "flush", errno);
-  } catch (...) {
-    ::close(descriptor);
-    throw;
-  }
-  if (::close(descriptor) != 0) fail_errno(target, "close", errno);
+  write_all(replacement.descriptor(), bytes, target);
   replacement.commit();
 }
 

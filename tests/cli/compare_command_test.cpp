@@ -123,6 +123,23 @@ TEST(CompareCommand, DiffImageIsWritten) {
   EXPECT_EQ(diff.at(5, 5, 0), 0.0f);
 }
 
+// `--diff REF` once replaced the reference with the heat map (exit 1, the reference lost).
+TEST(CompareCommand, ADiffImageThatIsAnInputIsRefusedBeforeAnythingIsWritten) {
+  const auto folder = test::scratch_dir();
+  const auto pair = write_pair(folder, 1, 0.25f, ".png");
+  const auto reference_before = read_image(pair.reference).data;
+  std::string output;
+  EXPECT_EQ(compare(quoted(pair.reference) + " " + quoted(pair.test) + " --diff " + quoted(pair.reference), &output), 2) << output;
+  EXPECT_NE(output.find("--diff " + pair.reference.string() + " is the same file as the reference " + pair.reference.string()),
+            std::string::npos)
+      << output;
+  // Another spelling of the test image's path is the same file too.
+  EXPECT_EQ(compare(quoted(pair.reference) + " " + quoted(pair.test) + " --diff " + quoted(folder / "." / pair.test.filename()), &output), 2)
+      << output;
+  EXPECT_NE(output.find("is the same file as the test image"), std::string::npos) << output;
+  EXPECT_EQ(read_image(pair.reference).data, reference_before);
+}
+
 TEST(CompareCommand, UnreadableFileIsExitCodeTwo) {
   const auto folder = test::scratch_dir();
   const auto pair = write_pair(folder, 0, 0.0f);

@@ -134,5 +134,15 @@ TEST(FrameSequence, PatternAndRangeMistakesAreRefused) {
   EXPECT_FALSE(std::filesystem::exists(dir / "x_01.exr"));
 }
 
+// A run of more than 31 '#' once went through a 32-byte buffer: every frame wrote one file.
+TEST(FrameSequence, ALongPatternGivesEachFrameItsOwnFile) {
+  const auto scene = test::write_file("anim.yaml", kAnimated);
+  const auto dir = scene.parent_path();
+  const std::string hashes(40, '#');
+  run_rtpro("render " + scene.string() + " -o " + (dir / ("long_" + hashes + ".exr")).string() + " --frames 1-2 -q", 0);
+  for (const char* frame : {"1", "2"})
+    EXPECT_TRUE(std::filesystem::exists(dir / ("long_" + std::string(39, '0') + frame + ".exr"))) << "frame " << frame;
+}
+
 }  // namespace frame_sequence_test
 }  // namespace rtpro

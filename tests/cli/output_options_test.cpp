@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -119,6 +120,28 @@ TEST(OutputOptions, HelpListsFormatsAndTheirEncodings) {
   const std::string out = run_rtpro("render --help", 0);
   for (const char* fragment : {".exr", "scene-linear", ".tif", "16-bit", ".png", "8-bit", "--ocio-display", "-D,--define"})
     EXPECT_NE(out.find(fragment), std::string::npos) << fragment << "\n" << out;
+}
+
+// The help listed .pfm, which rtpro then refused ("unknown image format"): every extension the
+// -o help names is written.
+TEST(OutputOptions, EveryFormatTheHelpNamesIsWritten) {
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const std::string help = run_rtpro("render --help", 0);
+  const std::size_t begin = help.find("Output image"), end = help.find("-D,--define");
+  ASSERT_NE(begin, std::string::npos) << help;
+  const std::string formats = help.substr(begin, end - begin);
+  int written = 0;
+  for (std::size_t dot = formats.find(" ."); dot != std::string::npos; dot = formats.find(" .", dot + 1)) {
+    std::size_t stop = dot + 2;
+    while (stop < formats.size() && std::isalnum(static_cast<unsigned char>(formats[stop]))) ++stop;
+    const std::string extension = formats.substr(dot + 1, stop - dot - 1);
+    if (extension.size() < 2) continue;
+    const auto out = scene.parent_path() / ("out" + extension);
+    run_rtpro("render " + scene.string() + " -q -o " + out.string(), 0);
+    EXPECT_TRUE(std::filesystem::is_regular_file(out)) << extension;
+    ++written;
+  }
+  EXPECT_GE(written, 8);
 }
 
 }  // namespace output_options_test

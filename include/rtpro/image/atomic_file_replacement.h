@@ -4,7 +4,9 @@
 //
 // - The new contents go to a temporary file beside the target (rename is atomic only within one
 //   file system), named ".NAME.rtpro-tmp-PID-N" so that it is hidden, recognisably rtpro's, and
-//   says which process owns it.
+//   says which process owns it. It is created with O_EXCL | O_NOFOLLOW (a symbolic link planted
+//   at that predictable name is never followed: the next name is taken), and only the file
+//   created is renamed over the target.
 // - Every write, fsync and close is checked; a full disk or any I/O error is a RuntimeError
 //   (exit 1), the temporary file is removed and the target keeps its old contents.
 // - Only regular files are replaced. A symlink, device node, FIFO, socket or folder at the
@@ -13,7 +15,9 @@
 //   anything writes the same target: a temporary whose PID is no longer running is stale.
 // - Two processes writing the same target at once each rename a complete file of their own; the
 //   target ends as one of them, never a mix.
+#include <cstdint>
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace rtpro {
@@ -36,16 +40,23 @@ class AtomicFileReplacement {
   AtomicFileReplacement(const AtomicFileReplacement&) = delete;
   AtomicFileReplacement& operator=(const AtomicFileReplacement&) = delete;
 
+  // The temporary file, created empty by the constructor, and a descriptor open for writing it.
   const std::filesystem::path& temporary_path() const { return temporary_; }
+  int descriptor() const { return descriptor_; }
   const std::filesystem::path& target() const { return target_; }
 
-  // Flushes the temporary file to disk, checks the target is still replaceable, renames the
-  // temporary over it and flushes the folder. Throws RuntimeError.
+  // Flushes the temporary file to disk, checks it is still the file created and the target is
+  // still replaceable, renames the temporary over the target and flushes the folder. Throws
+  // RuntimeError.
   void commit();
 
  private:
+  void create_temporary();
+
   std::filesystem::path target_;
   std::filesystem::path temporary_;
+  int descriptor_ = -1;
+  std::uint64_t device_ = 0, inode_ = 0;
   bool committed_ = false;
 };
 
