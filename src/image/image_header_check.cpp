@@ -179,17 +179,34 @@ std::optional<DeclaredImageSize> check_exr(Reader& in, const SourceLocation& whe
   }
 }
 
-void check_png(Reader& in, const SourceLocation& where) {
+// Returns the size IHDR declares: OpenImageIO's PNG reader decodes the whole image when it opens
+// the file, so a texture's budget must be checked from it before that.
+std::optional<DeclaredImageSize> check_png(Reader& in, const SourceLocation& where) {
+  std::optional<DeclaredImageSize> declared;
   while (in.left() > 0) {
     const std::uint32_t length = in.u32(true);
     const std::string type = in.chars(4);
-    if (!in.ok()) return;  // a cut-short chunk list is libpng's to report; it allocates nothing
+    if (!in.ok()) return declared;  // a cut-short chunk list is libpng's to report; it allocates nothing
     if (std::uintmax_t(length) + 4 > in.left())
       throw InputError(where, "not a valid PNG file: chunk '" + type + "' claims " + std::to_string(length) +
                                   " bytes, more than the " + std::to_string(in.left()) + " left in the file");
-    if (type == "IEND") return;
+    if (type == "IEND") return declared;
+    if (type == "IHDR" && length >= 13 && !declared) {
+      DeclaredImageSize size;
+      size.width = in.u32(true);
+      size.height = in.u32(true);
+      const std::string depth_and_colour = in.chars(2);
+      if (!in.ok()) return declared;
+      // Grey, RGB, palette (read as RGB or RGBA), grey-alpha, RGBA.
+      const int colour_type = static_cast<unsigned char>(depth_and_colour[1]);
+      size.channels = colour_type == 0 ? 1 : colour_type == 4 ? 2 : colour_type == 2 ? 3 : 4;
+      declared = size;
+      in.skip(std::uintmax_t(length) - 10 + 4);  // the rest and the CRC
+      continue;
+    }
     in.skip(std::uintmax_t(length) + 4);  // data and CRC
   }
+  return declared;
 }
 
 // OpenImageIO 2.4's JPEG reader decodes a Photoshop IPTC block in an APP13 segment ("Photoshop 3.0",
@@ -340,7 +357,7 @@ std::optional<DeclaredImageSize> check_image_header(const std::filesystem::path&
   if (in.starts_with(kGif87, sizeof kGif87) || in.starts_with(kGif89, sizeof kGif89)) return check_gif(in);
   if (size >= 26 && in.starts_with(reinterpret_cast<const unsigned char*>("BM"), 2)) return check_bmp(in);
   if (in.starts_with(kJpegSignature, sizeof kJpegSignature)) check_jpeg(in, where);
-  else if (in.starts_with(kPngSignature, sizeof kPngSignature)) check_png(in, where);
+  else if (in.starts_with(kPngSignature, sizeof kPngSignature)) return check_png(in, where);
   else if (in.starts_with(reinterpret_cast<const unsigned char*>("P"), 1)) {
     in.skip(0);
     const std::string head = "P" + in.chars(static_cast<std::size_t>(std::min<std::uintmax_t>(size - 1, 255)));

@@ -31,7 +31,8 @@ struct DeclaredImageSize {
 // Throws InputError naming the attribute or chunk when an EXR header or a PNG chunk list is cut
 // short, malformed, or claims more bytes than the file holds. Returns the data window and channel
 // count of an EXR file's first part (the one read_image opens), the largest of a GIF's screen and
-// frames (as RGBA), a BMP's declared size (as RGBA), nothing for other formats.
+// frames (as RGBA), a BMP's declared size (as RGBA), a PNG's IHDR size (palette images as RGBA),
+// nothing for other formats.
 std::optional<DeclaredImageSize> check_image_header(const std::filesystem::path& file);
 
 }  // namespace rtpro

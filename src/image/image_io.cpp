@@ -8,6 +8,7 @@
 #include "pixel_encoding.h"
 #include "image_format_sniff.h"
 #include "image_header_check.h"
+#include "image_read_budget.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
 
@@ -273,7 +274,10 @@ void write_image(const std::filesystem::path& file, const Image& image, const Im
   write_pixels(file, spec, pixels);
 }
 
-Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
+Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) { return read_image_counting(file, max_bytes, 0, ""); }
+
+Image read_image_counting(const std::filesystem::path& file, std::uint64_t max_bytes, std::uint64_t extra_bytes_per_pixel,
+                          const std::string& extra_purpose) {
   const SourceLocation where{file.string()};
   std::error_code error;
   const auto status = std::filesystem::status(file, error);
@@ -295,13 +299,15 @@ Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
     // A tiled file costs its tile buffers too (a tile and its compressor's, counted as two).
     const std::uint64_t read_pixels =
         std::max({pixels, saturating_multiply(width, kLibraryRows), saturating_multiply(tile_pixels, 2)});
-    const std::uint64_t bytes = saturating_multiply(saturating_multiply(read_pixels, channels), sizeof(float));
+    const std::uint64_t bytes = saturating_add(saturating_multiply(saturating_multiply(read_pixels, channels), sizeof(float)),
+                                               saturating_multiply(pixels, extra_bytes_per_pixel));
     if (pixels > kMaxReadValues || saturating_multiply(pixels, channels) > kMaxReadValues || bytes > max_bytes)
       throw InputError(where, "the image is too large to read: " + std::to_string(width) + "x" +
                                   std::to_string(height) + ", " + std::to_string(channels) + " channels" +
                                   (tile_pixels > pixels ? " in tiles of " + std::to_string(tile_pixels) + " pixels" : "") +
                                   " is " +
-                                  format_bytes(bytes) + " as floats; the limit is " + format_bytes(max_bytes) +
+                                  format_bytes(bytes) + " as floats" + (extra_bytes_per_pixel ? " " + extra_purpose : std::string()) +
+                                  "; the limit is " + format_bytes(max_bytes) +
                                   " (the smaller of " + format_bytes(kDefaultMemoryBudgetCap) +
                                   " and the available memory)");
   };

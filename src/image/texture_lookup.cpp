@@ -3,6 +3,7 @@
 #include "rtpro/core/error.h"
 #include "rtpro/image/color_config.h"
 #include "rtpro/image/image_io.h"
+#include "image_read_budget.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -75,13 +76,20 @@ OIIO::TextureSystem& texture_system() {
   return *system;
 }
 
+// What preparing a texture keeps per pixel beside its decoded floats: the linear RGB copy (12
+// bytes), the float mip chain make_texture builds (4/3 of that: 16) and its working copy of the
+// source (12). A 0.8 MB PNG declaring 16384x16384 pixels took 7.2 GB and a minute before this
+// was counted against the budget from the header.
+constexpr std::uint64_t kTexturePreparationBytesPerPixel = 12 + 16 + 12;
+
 class OiioTextureLookup final : public TextureLookup {
  public:
   explicit OiioTextureLookup(std::span<const TextureSource> sources) : system_(&texture_system()) {
     const ColorConfig config = ColorConfig::bundled();
     for (std::size_t i = 0; i < sources.size(); ++i) {
       const TextureSource& source = sources[i];
-      const Image image = read_image(source.bytes ? write_embedded(source, i) : source.file);
+      const Image image = read_image_counting(source.bytes ? write_embedded(source, i) : source.file, 0,
+                                              kTexturePreparationBytesPerPixel, "with its linear and mip-mapped texture copies");
       const std::vector<float> rgb = linear_rgb(image, config.to_scene_linear(source.colorspace));
       const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
       const OIIO::ImageBuf linear(spec, const_cast<float*>(rgb.data()));

@@ -31,14 +31,28 @@ class FileDescriptor {
   throw InputError(SourceLocation{file.string()}, what);
 }
 
+// What a path names when it is not a regular file, for the refusal message.
+const char* kind_of_special_file(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "a special file";
+}
+
 }  // namespace
 
+// O_NONBLOCK: opening a FIFO with no writer would otherwise wait forever before the type check
+// below could refuse it (it changes nothing for a regular file).
 MappedFile::MappedFile(const std::filesystem::path& file) {
-  const FileDescriptor fd(::open(file.c_str(), O_RDONLY | O_CLOEXEC));
+  const FileDescriptor fd(::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
   if (fd.get() < 0) fail(file, std::string("cannot open: ") + std::strerror(errno));
   struct stat info {};
   if (::fstat(fd.get(), &info) != 0) fail(file, std::string("cannot stat: ") + std::strerror(errno));
-  if (!S_ISREG(info.st_mode)) fail(file, "not a regular file");
+  if (!S_ISREG(info.st_mode))
+    fail(file, std::string("not a regular file: it is ") + kind_of_special_file(info.st_mode) +
+                   " (an endless or blocking source is never read)");
   size_ = static_cast<std::size_t>(info.st_size);
   if (size_ == 0) return;  // mmap rejects empty mappings; an empty view is all we need
   // No MAP_POPULATE: mapping every page up front is one serial kernel call, while faults taken by

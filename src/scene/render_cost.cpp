@@ -1,10 +1,13 @@
 #include "rtpro/scene/render_cost.h"
 
 #include "gltf_asset.h"
+#include "gltf_loader.h"
 
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
 
+#include <algorithm>
+#include <map>
 #include <optional>
 #include <set>
 #include <vector>
@@ -21,7 +24,9 @@ std::uint64_t placements_in(const std::vector<GltfDesc>& gltfs, const GltfPlacem
   return count;
 }
 
-// Instances one placement of `object` becomes, memoised per object.
+// Instances one placement of `object` becomes, memoised per object. An object that draws nothing
+// still counts as one: flattening visits it, and ten levels of ten instances of an empty object
+// are 10^10 visits that would otherwise pass the limit as 0 and hang the flattening.
 std::uint64_t instances_of(const SceneDescription& scene, std::uint32_t object, const GltfPlacementCount& gltf_placements,
                            std::vector<std::optional<std::uint64_t>>& memo) {
   if (memo[object]) return *memo[object];
@@ -29,6 +34,7 @@ std::uint64_t instances_of(const SceneDescription& scene, std::uint32_t object, 
   std::uint64_t count = saturating_add(has_own_shapes(desc) ? 1 : 0, placements_in(desc.gltfs, gltf_placements));
   for (const InstanceDesc& nested : desc.instances)
     count = saturating_add(count, instances_of(scene, nested.object, gltf_placements, memo));
+  count = std::max<std::uint64_t>(count, 1);
   memo[object] = count;
   return count;
 }
@@ -57,7 +63,9 @@ void add_shape_bytes(const ObjectDesc& object, std::set<std::filesystem::path>& 
 
 }  // namespace
 
-std::uint64_t described_gltf_placements(const GltfDesc& gltf) { return gltf.loaded ? gltf.loaded->placements.size() : 1; }
+std::uint64_t described_gltf_placements(const GltfDesc& gltf) {
+  return gltf.loaded ? gltf.loaded->placements.size() : count_gltf_mesh_nodes(gltf.file);
+}
 
 std::vector<std::uint64_t> flattened_instances_per_object(const SceneDescription& scene,
                                                           const GltfPlacementCount& gltf_placements) {
@@ -77,7 +85,14 @@ std::uint64_t count_flattened_instances(const SceneDescription& scene, const Glt
 
 RenderCost estimate_render_cost(const SceneDescription& scene, int extra_channels) {
   RenderCost cost;
-  cost.flattened_instances = count_flattened_instances(scene);
+  // Each glTF file's JSON read once, however many entries place it.
+  std::map<std::filesystem::path, std::uint64_t> gltf_nodes;
+  cost.flattened_instances = count_flattened_instances(scene, [&](const GltfDesc& gltf) {
+    if (gltf.loaded) return std::uint64_t(gltf.loaded->placements.size());
+    const auto [it, added] = gltf_nodes.try_emplace(gltf.file, 0);
+    if (added) it->second = count_gltf_mesh_nodes(gltf.file);
+    return it->second;
+  });
   cost.pixels = saturating_multiply(static_cast<std::uint64_t>(scene.camera.width),
                                     static_cast<std::uint64_t>(scene.camera.height));
   cost.channels = 3 + extra_channels;

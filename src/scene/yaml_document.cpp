@@ -374,13 +374,13 @@ std::filesystem::path include_identity(const std::filesystem::path& file) {
 
 YamlDocument YamlDocument::parse(std::string_view text, const std::string& source_name,
                                  const YamlFileReader& read_include) {
-  std::vector<std::filesystem::path> chain;
-  return parse_included(text, source_name, read_include, chain);
+  IncludeWalk walk;
+  return parse_included(text, source_name, read_include, walk);
 }
 
 YamlDocument YamlDocument::parse_included(std::string_view text, const std::string& source_name,
                                           const YamlFileReader& read_include,
-                                          std::vector<std::filesystem::path>& chain) {
+                                          IncludeWalk& walk) {
   YamlDocument document;
   document.arena_ = std::make_shared<YamlNodeArena>();
   const std::string* source = &document.sources_.emplace_back(source_name);
@@ -390,9 +390,9 @@ YamlDocument YamlDocument::parse_included(std::string_view text, const std::stri
   document.has_includes_ = tree.saw_include;
   document.has_variables_ = tree.saw_dollar;
   if (document.has_includes_ && read_include) {
-    chain.push_back(include_identity(source_name));
-    document.root_ = document.expand_includes(document.root_, read_include, chain);
-    chain.pop_back();
+    walk.chain.push_back(include_identity(source_name));
+    document.root_ = document.expand_includes(document.root_, read_include, walk);
+    walk.chain.pop_back();
   }
   return document;
 }

@@ -108,6 +108,19 @@ class YamlNodeArena;
 using YamlFileReader = std::function<std::string(const std::filesystem::path&)>;
 // Deeper chains of includes are refused (a chain that long is a mistake, or a cycle in disguise).
 inline constexpr int kMaxIncludeDepth = 16;
+// Includes read while one scene is parsed, counting a file each time it is included, and the
+// bytes they hold together: a file that includes another twice, 16 levels deep, reads 65,536
+// files (gigabytes from a few small ones) without ever nesting too deep.
+inline constexpr std::size_t kMaxIncludesRead = 1024;
+inline constexpr std::uint64_t kMaxIncludedBytes = std::uint64_t{256} << 20;
+
+// The includes being expanded: the chain from the scene file to the current file, and the
+// totals over the whole scene.
+struct IncludeWalk {
+  std::vector<std::filesystem::path> chain;
+  std::size_t files_read = 0;
+  std::uint64_t bytes_read = 0;
+};
 
 // The path that identifies a file in an include chain (symbolic links and `..` resolved).
 std::filesystem::path include_identity(const std::filesystem::path& file);
@@ -122,7 +135,8 @@ class YamlDocument {
   // file that names it (yaml_include.cpp): in a mapping, the included mapping's keys are merged
   // in, the including mapping's own keys winning; a list item that is only `{include: FILE}` is
   // replaced by the file's items (a list) or by the file's mapping. Cycles and chains deeper than
-  // kMaxIncludeDepth are refused at the include; errors inside an included file name that file.
+  // kMaxIncludeDepth are refused at the include, so is the include past kMaxIncludesRead files
+  // or kMaxIncludedBytes in all; errors inside an included file name that file.
   static YamlDocument parse(std::string_view text, const std::string& source_name,
                             const YamlFileReader& read_include = {});
 
@@ -148,11 +162,9 @@ class YamlDocument {
  private:
   YamlDocument() = default;
   static YamlDocument parse_included(std::string_view text, const std::string& source_name,
-                                     const YamlFileReader& read_include, std::vector<std::filesystem::path>& chain);
-  YamlNodePtr expand_includes(YamlNodePtr node, const YamlFileReader& read_include,
-                              std::vector<std::filesystem::path>& chain);
-  YamlNodePtr load_include(const YamlNode& file_name, const YamlFileReader& read_include,
-                           std::vector<std::filesystem::path>& chain);
+                                     const YamlFileReader& read_include, IncludeWalk& walk);
+  YamlNodePtr expand_includes(YamlNodePtr node, const YamlFileReader& read_include, IncludeWalk& walk);
+  YamlNodePtr load_include(const YamlNode& file_name, const YamlFileReader& read_include, IncludeWalk& walk);
 
   std::deque<std::string> sources_;  // stable addresses for YamlPosition::source
   std::vector<std::unique_ptr<YamlDocument>> includes_;  // keep the included files' sources and nodes

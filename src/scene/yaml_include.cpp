@@ -47,8 +47,8 @@ void merge_entries(std::vector<YamlEntry>& entries, YamlEntryList added) {
 
 }  // namespace
 
-YamlNodePtr YamlDocument::load_include(const YamlNode& file_name, const YamlFileReader& read_include,
-                                       std::vector<std::filesystem::path>& chain) {
+YamlNodePtr YamlDocument::load_include(const YamlNode& file_name, const YamlFileReader& read_include, IncludeWalk& walk) {
+  const std::vector<std::filesystem::path>& chain = walk.chain;
   const SourceLocation where = file_name.at.location();
   if (file_name.scalar().empty()) throw InputError(where, "include: the file name is empty");
   const std::filesystem::path base = file_name.at.source ? std::filesystem::path(*file_name.at.source).parent_path()
@@ -60,30 +60,36 @@ YamlNodePtr YamlDocument::load_include(const YamlNode& file_name, const YamlFile
   if (chain.size() >= static_cast<std::size_t>(kMaxIncludeDepth))
     throw InputError(where, "includes nested deeper than " + std::to_string(kMaxIncludeDepth) + " files: " +
                                 chain_text(chain, identity));
+  if (++walk.files_read > kMaxIncludesRead)
+    throw InputError(where, "more than " + std::to_string(kMaxIncludesRead) +
+                                " includes in one scene (each counted every time it is included; the limit on included files)");
   std::string text;
   try {
     text = read_include(file);
   } catch (const InputError& e) {
     throw InputError(where, "cannot include '" + std::string(file_name.scalar()) + "' (" + file.string() + "): " + e.message());
   }
-  auto included = std::make_unique<YamlDocument>(parse_included(text, file.string(), read_include, chain));
+  walk.bytes_read += text.size();
+  if (walk.bytes_read > kMaxIncludedBytes)
+    throw InputError(where, "the included files hold more than " + std::to_string(kMaxIncludedBytes >> 20) +
+                                " MiB together (each counted every time it is included; the limit on included text)");
+  auto included = std::make_unique<YamlDocument>(parse_included(text, file.string(), read_include, walk));
   YamlNodePtr root = included->root_;
   has_variables_ = has_variables_ || included->has_variables_;
   includes_.push_back(std::move(included));
   return root;
 }
 
-YamlNodePtr YamlDocument::expand_includes(YamlNodePtr node, const YamlFileReader& read_include,
-                                          std::vector<std::filesystem::path>& chain) {
+YamlNodePtr YamlDocument::expand_includes(YamlNodePtr node, const YamlFileReader& read_include, IncludeWalk& walk) {
   if (node->is_sequence()) {
     std::vector<YamlNodePtr> items;
     for (const YamlNodePtr& item : node->items()) {
       if (!is_include_only(*item)) {
-        items.push_back(expand_includes(item, read_include, chain));
+        items.push_back(expand_includes(item, read_include, walk));
         continue;
       }
       for (const YamlNode* name : include_names(*item->entries()[0].value)) {
-        const YamlNodePtr included = load_include(*name, read_include, chain);
+        const YamlNodePtr included = load_include(*name, read_include, walk);
         if (included->is_sequence()) {
           items.insert(items.end(), included->items().begin(), included->items().end());
         } else if (included->is_mapping()) {
@@ -100,7 +106,7 @@ YamlNodePtr YamlDocument::expand_includes(YamlNodePtr node, const YamlFileReader
   const YamlEntry* include = node->find("include");
   if (include) {
     for (const YamlNode* name : include_names(*include->value)) {
-      const YamlNodePtr included = load_include(*name, read_include, chain);
+      const YamlNodePtr included = load_include(*name, read_include, walk);
       if (included->is_null()) continue;
       if (!included->is_mapping())
         throw InputError(name->at.location(), "include '" + std::string(name->scalar()) + "': a mapping includes a mapping, got " + included->describe());
@@ -109,7 +115,7 @@ YamlNodePtr YamlDocument::expand_includes(YamlNodePtr node, const YamlFileReader
   }
   std::vector<YamlEntry> own;
   for (const YamlEntry& entry : node->entries())
-    if (&entry != include) own.push_back({entry.key, entry.key_at, expand_includes(entry.value, read_include, chain)});
+    if (&entry != include) own.push_back({entry.key, entry.key_at, expand_includes(entry.value, read_include, walk)});
   merge_entries(entries, own);
   return arena_->with_entries(*node, entries);
 }

@@ -8,6 +8,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -15,6 +16,12 @@
 namespace rtpro {
 
 namespace {
+
+// What substitution may produce: one value at most the longest line a scene file may hold, and all
+// substituted text together at most a scene file's size. `-D v=<100 KB>` used 10,000 times in a
+// line of `$v$v$v...` made gigabytes before this was counted; real scenes substitute kilobytes.
+constexpr std::size_t kMaxSubstitutedValueBytes = kMaxYamlLineBytes;
+constexpr std::uint64_t kMaxSubstitutedTotalBytes = std::uint64_t{64} << 20;
 
 bool is_name_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 bool is_name_char(char c) { return is_name_start(c) || (c >= '0' && c <= '9'); }
@@ -103,6 +110,12 @@ class Substitution {
       used_.insert(name);
       return found->second;
     }
+    // `frame` is 1 when nothing sets it (FORMAT.md, Variables), as keyframes read it.
+    if (name == "frame") {
+      YamlNode* one = arena_.node(node);
+      one->set_scalar(arena_.text("1"));
+      return one;
+    }
     std::vector<std::string> names;
     for (const auto& [defined, value] : values_) names.push_back(defined);
     std::string message = "undefined variable '$" + name + "'";
@@ -129,10 +142,18 @@ class Substitution {
         if (!value->is_scalar())
           throw InputError(node.at.location(), "'$" + part.name + "' is " + value->describe() +
                                                    ", which cannot be part of a longer text; use it alone");
+        if (result.size() + value->scalar().size() > kMaxSubstitutedValueBytes)
+          throw InputError(node.at.location(), "substituting '$" + part.name + "' makes a value longer than " +
+                                                   std::to_string(kMaxSubstitutedValueBytes >> 20) +
+                                                   " MiB (the limit on a value after variable substitution)");
         result += value->scalar();
         i += part.length;
       }
     }
+    substituted_bytes_ += result.size();
+    if (substituted_bytes_ > kMaxSubstitutedTotalBytes)
+      throw InputError(node.at.location(), "variable substitution makes more than " + std::to_string(kMaxSubstitutedTotalBytes >> 20) +
+                                               " MiB of text in all (the limit on substituted text)");
     YamlNode* copy = arena_.node(node);
     copy->set_scalar(arena_.text(result));
     return copy;
@@ -166,6 +187,7 @@ class Substitution {
   std::vector<const YamlEntry*> command_line_;
   mutable std::set<std::string, std::less<>> used_;
   mutable std::unordered_map<const YamlNode*, YamlNodePtr> applied_;
+  mutable std::uint64_t substituted_bytes_ = 0;
 };
 
 }  // namespace

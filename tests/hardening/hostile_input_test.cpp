@@ -60,6 +60,23 @@ TEST(HostileInput, NestedInstancesThatMultiplyAreRefusedBeforeFlattening) {
   EXPECT_FALSE(std::filesystem::exists(scene.parent_path() / "x.png"));
 }
 
+// The same bomb over an object that draws nothing: it counted as 0 instances, passed every limit,
+// and `info` and `render` hung visiting 10^10 empty instances.
+TEST(HostileInput, NestedInstancesOfAnEmptyObjectAreRefusedBeforeFlattening) {
+  scratch_dir();
+  std::string text = "rtpro: 1\n" + kCamera + "objects:\n  l0: []\n";
+  for (int level = 1; level <= 10; ++level) {
+    text += "  l" + std::to_string(level) + ": [";
+    for (int i = 0; i < 10; ++i) text += std::string(i ? ", " : "") + "{type: instance, object: l" + std::to_string(level - 1) + "}";
+    text += "]\n";
+  }
+  const auto scene = write_file("empty_bomb.yaml", text + "world: [{type: sphere}, {type: instance, object: l10}]\n");
+  expect_answer(run_capped({rtpro(), "info", scene.string()}), 2, {"empty_bomb.yaml:", "10000000000 after flattening"});
+  expect_answer(run_capped({rtpro(), "render", scene.string(), "-o", (scene.parent_path() / "x.png").string(), "--max-memory", "0"}), 2,
+                {"instancing expands to 10000000000 instances"});
+  EXPECT_FALSE(std::filesystem::exists(scene.parent_path() / "x.png"));
+}
+
 TEST(HostileInput, InstancesWithinTheCountButOverTheMemoryBudgetNameTheBudget) {
   scratch_dir();
   // 4 x 10^6 instances: under the 10^7 structural limit, 3.8 GiB estimated, over --max-memory 512.
@@ -76,6 +93,64 @@ TEST(HostileInput, InstancesWithinTheCountButOverTheMemoryBudgetNameTheBudget) {
                 {"memory budget", "--max-memory 512", "4000000 after flattening"});
 }
 
+// A glTF of 1,000 nodes each drawing one triangle, placed 5,000 times by a YAML scene: 5 million
+// instances, under the structural limit, but the estimate counted each glTF entry as 1 (4.9 MB
+// instead of 4.8 GiB) and the render took minutes and gigabytes.
+TEST(HostileInput, GltfNodesPlacedByInstancesCountInTheMemoryEstimate) {
+  scratch_dir();
+  // One triangle (36 bytes of floats) in a data: URI.
+  std::string nodes, roots;
+  for (int i = 0; i < 1000; ++i) {
+    nodes += std::string(i ? "," : "") + "{\"mesh\":0,\"translation\":[" + std::to_string(i) + ",0,0]}";
+    roots += std::string(i ? "," : "") + std::to_string(i);
+  }
+  write_file("many.gltf",
+             "{\"asset\":{\"version\":\"2.0\"},\"scenes\":[{\"nodes\":[" + roots + "]}],\"nodes\":[" + nodes +
+                 "],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],"
+                 "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"}],"
+                 "\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],"
+                 "\"buffers\":[{\"byteLength\":36,\"uri\":\"data:application/octet-stream;base64,"
+                 "AACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAAAAAAIA/\"}]}");
+  std::string text = "rtpro: 1\n" + kCamera + "objects:\n  g: [{type: mesh, file: many.gltf}]\n  h: [";
+  for (int i = 0; i < 50; ++i) text += std::string(i ? ", " : "") + "{type: instance, object: g}";
+  text += "]\nworld: [";
+  for (int i = 0; i < 100; ++i) text += std::string(i ? ", " : "") + "{type: instance, object: h}";
+  const auto scene = write_file("placed.yaml", text + "]\n");
+  expect_answer(run_capped({rtpro(), "info", scene.string(), "--max-memory", "1024"}), 2,
+                {"memory budget", "5000000 after flattening", "--max-memory 1024"});
+}
+
+// `-D v=<100 KB>` used ten times in each of 2,000 values: 2 GB of text, "out of memory" after
+// 3-4 GB. Substituted text is bounded per value and in all, and the refusal names the limit.
+TEST(HostileInput, VariableSubstitutionThatMultipliesTextIsRefusedNamingTheLimit) {
+  scratch_dir();
+  std::string repeated;
+  for (int i = 0; i < 10; ++i) repeated += "$v";
+  std::string text = "rtpro: 1\n" + kCamera + "variables: {v: x}\nextra:\n";
+  for (int i = 0; i < 2000; ++i) text += "  - \"" + repeated + "\"\n";
+  const auto scene = write_file("expand.yaml", text);
+  const std::string value = "v=" + std::string(100000, 'a');
+  expect_answer(run_capped({rtpro(), "info", scene.string(), "-D", value}), 2,
+                {"expand.yaml:", "variable substitution makes more than 64 MiB of text in all"});
+  const auto one = write_file("one.yaml", "rtpro: 1\n" + kCamera + "variables: {v: x}\nextra: \"" + repeated + repeated + "\"\n");
+  expect_answer(run_capped({rtpro(), "info", one.string(), "-D", value}), 2,
+                {"one.yaml:", "makes a value longer than 1 MiB"});
+}
+
+// Each file includes the one below it twice: 14 levels read 16,384 files (320 MB of text from
+// 14 small files) without ever nesting too deep.
+TEST(HostileInput, ADagOfIncludesIsRefusedAtTheIncludeOverTheLimit) {
+  scratch_dir();
+  std::string base = "materials:\n";
+  for (int i = 0; i < 400; ++i) base += "  m" + std::to_string(i) + ": {color: [0.5, 0.5, 0.5], specular: 0.25}\n";
+  write_file("l0.yaml", base);
+  for (int level = 1; level <= 14; ++level)
+    write_file("l" + std::to_string(level) + ".yaml",
+               "include: [l" + std::to_string(level - 1) + ".yaml, l" + std::to_string(level - 1) + ".yaml]\n");
+  const auto scene = write_file("dag.yaml", "rtpro: 1\n" + kCamera + "include: l14.yaml\n");
+  expect_answer(run_capped({rtpro(), "info", scene.string()}), 2, {"more than 1024 includes in one scene"});
+}
+
 TEST(HostileInput, EndlessAndBlockingSourcesAreRefusedByType) {
   const auto dir = scratch_dir();
   expect_answer(run_capped({rtpro(), "info", "/dev/zero"}), 2, {"/dev/zero", "character device"});
@@ -83,6 +158,14 @@ TEST(HostileInput, EndlessAndBlockingSourcesAreRefusedByType) {
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   expect_answer(run_capped({rtpro(), "render", fifo.string(), "-o", (dir / "x.png").string()}), 2, {"FIFO"});
   expect_answer(run_capped({rtpro(), "info", dir.string()}), 2, {"directory"});
+  // glTF scenes are read by their own loader: a FIFO named .gltf or .glb blocked it forever.
+  for (const char* name : {"scene.gltf", "scene.glb"}) {
+    const auto gltf_fifo = dir / name;
+    ASSERT_EQ(::mkfifo(gltf_fifo.c_str(), 0600), 0);
+    expect_answer(run_capped({rtpro(), "info", gltf_fifo.string()}, 10.0), 2, {name, "FIFO"});
+    expect_answer(run_capped({rtpro(), "render", gltf_fifo.string(), "-o", (dir / "x.png").string()}, 10.0), 2, {"FIFO"});
+    expect_answer(run_capped({rtpro(), "crosscheck", gltf_fifo.string()}, 10.0), 2, {"FIFO"});
+  }
 }
 
 TEST(HostileInput, AHundredMegabyteLineIsRefusedBeforeParsing) {

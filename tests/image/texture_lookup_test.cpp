@@ -9,7 +9,11 @@
 
 #include <gtest/gtest.h>
 
+#include <zlib.h>
+
 #include <cmath>
+#include <fstream>
+#include <string>
 
 namespace rtpro {
 namespace texture_lookup_test {
@@ -90,6 +94,41 @@ TEST(TextureLookup, UnreadableTexturesAreInputErrorsNamingTheFile) {
   }
   const std::vector<TextureSource> unknown_space{{write_ramp("r.exr", 2, 2), "no such colour space"}};
   EXPECT_THROW(open_textures(unknown_space), InputError);
+}
+
+// A PNG whose header declares width x height RGB pixels, with one compressed row of data.
+std::filesystem::path write_declared_png(const std::string& name, std::uint32_t width, std::uint32_t height) {
+  const auto be32 = [](std::uint32_t v) {
+    return std::string{char(v >> 24), char(v >> 16 & 0xff), char(v >> 8 & 0xff), char(v & 0xff)};
+  };
+  const auto chunk = [&](const std::string& type, const std::string& data) {
+    const std::string body = type + data;
+    return be32(std::uint32_t(data.size())) + body +
+           be32(std::uint32_t(crc32(0, reinterpret_cast<const Bytef*>(body.data()), uInt(body.size()))));
+  };
+  const std::string header = be32(width) + be32(height) + std::string{8, 2, 0, 0, 0};  // 8-bit RGB
+  const std::string row(1 + 3 * std::size_t(width), '\0');
+  std::string compressed(compressBound(uLong(row.size())), '\0');
+  uLongf size = uLongf(compressed.size());
+  compress(reinterpret_cast<Bytef*>(compressed.data()), &size, reinterpret_cast<const Bytef*>(row.data()), uLong(row.size()));
+  compressed.resize(size);
+  return test::write_file(name, std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", header) + chunk("IDAT", compressed) +
+                                     chunk("IEND", ""));
+}
+
+// A 0.8 MB PNG declaring 16384x16384 pixels took 7.2 GB and a minute: the decoded image fitted
+// the budget, its texture copies did not. Counted from the header now, before decoding.
+TEST(TextureLookup, ATextureWhoseCopiesExceedTheBudgetIsRefusedFromItsHeader) {
+  const auto file = write_declared_png("huge.png", 16384, 12000);
+  const std::vector<TextureSource> sources{{file, "sRGB - Texture"}};
+  try {
+    open_textures(sources);
+    FAIL() << "a texture of 16384x12000 was prepared";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().file, file.string());
+    EXPECT_NE(e.message().find("16384x12000, 3 channels"), std::string::npos) << e.message();
+    EXPECT_NE(e.message().find("with its linear and mip-mapped texture copies; the limit is"), std::string::npos) << e.message();
+  }
 }
 
 }  // namespace texture_lookup_test

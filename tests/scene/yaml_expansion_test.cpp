@@ -46,6 +46,14 @@ TEST(YamlVariables, OverridesReplaceDefaultsAndMistakesNameTheirPlace) {
   EXPECT_NE(error_of(kScene + "variables: [1]\n").find("variables: expected a mapping"), std::string::npos);
 }
 
+// FORMAT.md: the variable `frame` is 1 when unset; `$frame` was "undefined variable" instead.
+TEST(YamlVariables, FrameIsOneWhenNothingSetsIt) {
+  const SceneDescription scene = parse(kScene + "render:\n  spp: $frame\n  seed: ${frame}0\n");
+  EXPECT_EQ(scene.render.spp, 1);
+  EXPECT_EQ(scene.render.seed, 10u);
+  EXPECT_EQ(parse(kScene + "render: {spp: $frame}\n", {"variables.frame=7"}).render.spp, 7);
+}
+
 TEST(YamlKeyframes, StepHoldsTheLastKeyAtOrBeforeTheFrame) {
   const std::string text = kScene + "render: {spp: {keyframes: {1: 4, 10: 16}, interpolation: step}}\n";
   EXPECT_EQ(parse(text, {"variables.frame=9"}).render.spp, 4);

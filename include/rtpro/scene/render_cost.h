@@ -34,8 +34,8 @@ inline constexpr std::uint64_t kMeshBytesPerFileByte = 4;
 using GltfPlacementCount = std::function<std::uint64_t(const GltfDesc&)>;
 
 // The count known from the description alone: exact for a file the scene reader loaded (a glTF
-// file as the whole scene), 1 for an entry that build_render_scene loads later (which then
-// counts again with the exact figure before flattening).
+// file as the whole scene); for an entry that build_render_scene loads later (which then counts
+// again with the exact figure before flattening), the nodes of its JSON that draw a mesh.
 std::uint64_t described_gltf_placements(const GltfDesc& gltf);
 
 // Instances after flattening: the world's glTF placements and, for every world instance, its
