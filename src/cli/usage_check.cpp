@@ -61,6 +61,7 @@ std::string other_renderers_name(const std::string& spelling) {
       {"--frame-start", "--frames FIRST-LAST"},
       {"--frame-end", "--frames FIRST-LAST"},
       {"--threads-count", "--threads"},
+      {"-x", "--skip-existing (Mitsuba's -x)"},
   };
   const auto found = kHabits.find(spelling);
   return found == kHabits.end() ? std::string() : found->second;

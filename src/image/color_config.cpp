@@ -96,17 +96,39 @@ std::string ColorConfig::default_view(const std::string& display) const {
   return config_->ocio->getDefaultView(display.c_str());
 }
 
+namespace {
+
+// Names in these messages come from scene files and the command line (a texture's colorspace, a
+// --display): control characters are shown as \xNN, never sent to the terminal raw.
+std::string without_control_characters(const std::string& text) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f) {
+      out += "\\x";
+      out += kHex[byte >> 4];
+      out += kHex[byte & 15];
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 DisplayTransform ColorConfig::display_transform(const std::string& display, const std::string& view) const {
   const std::string chosen_display = display.empty() ? default_display() : display;
   const auto known_displays = displays();
   if (std::find(known_displays.begin(), known_displays.end(), chosen_display) == known_displays.end())
-    throw InputError("unknown display \"" + chosen_display + "\" in the " + source_ +
-                     " OpenColorIO config; available: " + join(known_displays));
+    throw InputError(without_control_characters("unknown display \"" + chosen_display + "\" in the " + source_ +
+                                                " OpenColorIO config; available: " + join(known_displays)));
   const std::string chosen_view = view.empty() ? default_view(chosen_display) : view;
   const auto known_views = views(chosen_display);
   if (std::find(known_views.begin(), known_views.end(), chosen_view) == known_views.end())
-    throw InputError("unknown view \"" + chosen_view + "\" for display \"" + chosen_display + "\" in the " +
-                     source_ + " OpenColorIO config; available: " + join(known_views));
+    throw InputError(without_control_characters("unknown view \"" + chosen_view + "\" for display \"" + chosen_display +
+                                                "\" in the " + source_ + " OpenColorIO config; available: " + join(known_views)));
   try {
     const auto processor = config_->ocio->getProcessor(OCIO::ROLE_SCENE_LINEAR, chosen_display.c_str(),
                                                        chosen_view.c_str(), OCIO::TRANSFORM_DIR_FORWARD);
@@ -114,8 +136,8 @@ DisplayTransform ColorConfig::display_transform(const std::string& display, cons
                             std::make_shared<const DisplayTransform::Processor>(
                                 DisplayTransform::Processor{processor->getDefaultCPUProcessor()}));
   } catch (const OCIO::Exception& e) {
-    throw InputError("the " + source_ + " OpenColorIO config cannot encode scene_linear for display \"" +
-                     chosen_display + "\", view \"" + chosen_view + "\": " + e.what());
+    throw InputError(without_control_characters("the " + source_ + " OpenColorIO config cannot encode scene_linear for display \"" +
+                                                chosen_display + "\", view \"" + chosen_view + "\": " + e.what()));
   }
 }
 
@@ -126,8 +148,8 @@ DisplayTransform ColorConfig::to_scene_linear(const std::string& colorspace) con
                             std::make_shared<const DisplayTransform::Processor>(
                                 DisplayTransform::Processor{processor->getDefaultCPUProcessor()}));
   } catch (const OCIO::Exception& e) {
-    throw InputError("the " + source_ + " OpenColorIO config cannot convert \"" + colorspace +
-                     "\" to scene_linear: " + e.what());
+    throw InputError(without_control_characters("the " + source_ + " OpenColorIO config cannot convert \"" + colorspace +
+                                                "\" to scene_linear: " + e.what()));
   }
 }
 

@@ -54,6 +54,8 @@ TEST(Usage, UnknownOptionSuggestsTheNearest) {
   expect_one_line_error("render " + scene.string() + " --outfile " + out, "rtpro's is -o/--output (pbrt's --outfile)");
   expect_one_line_error("render " + scene.string() + " -o " + out + " --render-anim", "rtpro's is --frames FIRST-LAST");
   expect_one_line_error("render " + scene.string() + " -o " + out + " -qx", "unknown option '-x'");
+  // Mitsuba's -x once suggested -h; docs/usage.md names rtpro's spelling.
+  expect_one_line_error("render " + scene.string() + " -o " + out + " -x", "unknown option '-x' for 'rtpro render'; rtpro's is --skip-existing (Mitsuba's -x)");
   expect_one_line_error("info " + scene.string() + " second.yaml third.yaml",
                         "unexpected arguments: 'second.yaml' 'third.yaml'");
   EXPECT_FALSE(std::filesystem::exists(out));

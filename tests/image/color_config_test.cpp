@@ -9,6 +9,8 @@
 #include <cstdlib>
 #include <functional>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace rtpro {
 namespace color_config_test {
@@ -119,6 +121,25 @@ TEST(ColorConfig, UnknownDisplayListsTheAvailableOnes) {
   const std::string message = error_message_of([] { ColorConfig::bundled().display_transform("P3", ""); });
   EXPECT_NE(message.find("\"P3\""), std::string::npos) << message;
   EXPECT_NE(message.find("\"sRGB\""), std::string::npos) << message;
+}
+
+// A colour-space or view name from a scene file reached the terminal raw, escape sequences and all.
+TEST(ColorConfig, NamesFromInputFilesAreShownWithoutControlCharacters) {
+  const ColorConfig config = ColorConfig::bundled();
+  for (const std::function<void()>& attempt : std::vector<std::function<void()>>{
+           [&] { config.to_scene_linear("evil\x1b[2J\nname"); },
+           [&] { config.display_transform("sRGB", "evil\x1b[2J\nname"); },
+           [&] { config.display_transform("evil\x1b[2J\nname", ""); }}) {
+    try {
+      attempt();
+      ADD_FAILURE() << "an unknown name was accepted";
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_EQ(message.find('\x1b'), std::string::npos) << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+      EXPECT_NE(message.find("evil\\x1b[2J\\x0aname"), std::string::npos) << message;
+    }
+  }
 }
 
 TEST(ColorConfig, OcioVariableBeatsTheBundledConfig) {
