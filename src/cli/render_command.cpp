@@ -8,7 +8,10 @@
 #include "memory_option.h"
 #include "output_target.h"
 #include "progress.h"
+#include "render_command_options.h"
 #include "render_journal.h"
+#include "render_output.h"
+#include "scene_images.h"
 #include "render_stats.h"
 #include "scene_overrides.h"
 #include "tev_client.h"
@@ -49,51 +52,9 @@ namespace rtpro::cli {
 
 namespace {
 
-struct RenderCommandOptions {
-  std::string scene;
-  std::string output;
-  std::string backend = "embree";
-  // Kept as the user's text: they become scene overrides checked by the scene file's rules, so
-  // "--seed -1" or "--size 4294967297x1" is an error instead of wrapping to another number.
-  std::string spp, max_depth, seed, size, integrator;
-  std::optional<int> threads;
-  std::string ocio_config, display, deprecated_display, view;
-  std::string format;      // for -o -
-  double exposure = 0.0;   // stops
-  std::vector<std::string> overrides, defines;
-  std::vector<SceneOverride> scene_overrides;  // all of the above, in command-line order
-  std::string display_server;  // HOST:PORT of a tev for a live preview
-  std::string frames;  // FIRST-LAST[:STEP]
-  long frame = -1;     // the frame of --frames being rendered
-  bool skip_existing = false;
-  std::string region;
-  bool crop = false;
-  std::vector<std::string> aovs;
-  bool denoise = false;
-  int tile_size = 32;
-  std::string progress = "auto";
-  bool quiet = false;
-  int verbose = 0;
-  bool stats = false;
-  std::string stats_json;
-  bool resume = false;
-  bool no_journal = false;
-  double time_limit = 0.0;       // seconds; 0: none
-  double noise_threshold = 0.0;  // 0: no adaptive sampling
-  int min_samples = 0;           // 0: automatic (adaptive_sampling.h)
-  BackendOptions backend_options;  // Embree settings from the command line; threads and memory set later
-  std::string max_memory_mb;  // MiB; empty: the default budget (see parse_memory_budget)
-};
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-// Only EXR has named layers for the AOVs; every other format would drop them without a word.
-bool holds_layers(const std::filesystem::path& output) {
-  std::string extension = output.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == ".exr" || extension == ".sxr" || extension == ".mxr";
-}
 
 std::optional<PixelRegion> parse_region(const std::string& text) {
   if (text.empty()) return std::nullopt;
@@ -111,21 +72,6 @@ void check_region_fits(const std::optional<PixelRegion>& region, const std::stri
       region->height() <= 0)
     throw InputError("--region " + text + ": not a non-empty window inside the " + std::to_string(width) + "x" +
                      std::to_string(height) + " image (x0,y0,x1,y1 with x1, y1 exclusive)");
-}
-
-Image crop_image(const Image& full, const PixelRegion& r) {
-  Image out(r.width(), r.height(), full.channels);
-  for (int y = 0; y < r.height(); ++y)
-    for (int x = 0; x < r.width(); ++x)
-      for (int c = 0; c < full.channel_count(); ++c) out.at(x, y, c) = full.at(r.x0 + x, r.y0 + y, c);
-  return out;
-}
-
-// "out.png" → "out.partial.png": an interrupted render never replaces a finished image.
-std::filesystem::path partial_path(const std::filesystem::path& output) {
-  std::filesystem::path p = output;
-  p.replace_filename(output.stem().string() + ".partial" + output.extension().string());
-  return p;
 }
 
 // Has TBB load what it loads on first use (tbbmalloc, irml) and start its worker threads before
@@ -270,35 +216,10 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   stats.build_seconds = backend->stats().build_seconds;
   log.verbose("built " + stats.backend + " acceleration structure in " + std::to_string(stats.build_seconds) + " s");
 
-  // Image textures are decoded to linear .tx copies before the render (through the image layer,
-  // waiting for its load to finish).
-  std::unique_ptr<TextureLookup> textures;
-  if (!scene.textures.empty()) {
-    std::vector<TextureSource> sources;
-    for (const TextureImage& texture : scene.textures)
-      sources.push_back({texture.file, texture.colorspace, texture.bytes.get()});
-    textures = open_textures(sources);
-    render_options.textures = textures.get();
-    log.verbose("opened " + std::to_string(sources.size()) + " image textures");
-  }
-
-  // The environment's image is read whole (through the image layer) and its sampling
-  // distribution built before the render.
-  std::optional<EnvironmentLight> environment;
-  if (scene.environment) {
-    Image image;
-    if (!scene.environment->file.empty()) {
-      const auto read_start = Clock::now();
-      image = read_image(scene.environment->file, memory.bytes);
-      log.verbose("read " + scene.environment->file.string() + " (" + std::to_string(image.width) + "x" +
-                  std::to_string(image.height) + ") in " + std::to_string(seconds_since(read_start)) + " s");
-    }
-    const auto build_start = Clock::now();
-    environment.emplace(*scene.environment, std::move(image));
-    render_options.environment = &*environment;
-    log.verbose("built the environment light in " + std::to_string(seconds_since(build_start)) + " s (" +
-                format_bytes(environment->bytes()) + ")");
-  }
+  // Before the render, with the image layer (waiting for its load to finish).
+  const SceneImages images = open_scene_images(scene, memory.bytes, log);
+  render_options.textures = images.textures.get();
+  if (images.environment) render_options.environment = &*images.environment;
 
   std::unique_ptr<TevClient> preview;
   if (display_server && leader) {
@@ -338,7 +259,7 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
     };
   }
   if (!leader) {
-    const TileRenderer renderer(scene, *backend, grid, textures.get(), render_options.environment);
+    const TileRenderer renderer(scene, *backend, grid, render_options.textures, render_options.environment);
     // mpirun passes Ctrl-C on as SIGTERM to every rank: each finishes its tiles in flight and
     // rank 0 writes the partial image, as a single process does (if mpirun allows the time:
     // its odls_base_sigkill_timeout, 1 s by default).
@@ -515,76 +436,7 @@ int run_renders_in_mpi_job(const RenderCommandOptions& o) {
 void add_render_command(CLI::App& app, Action& action) {
   auto o = std::make_shared<RenderCommandOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene file to an image");
-  cmd->add_option("scene", o->scene, "Scene file (YAML or glTF), or '-' for a YAML scene on standard input")->required();
-  cmd->footer("Scene values: the file, then --set, -D, --spp, --size, --seed, --max-depth and --integrator in the order typed (the "
-              "last to set a key wins); every value is checked by the scene file's own rules.");
-  cmd->add_option("-o,--output", o->output, kOutputFormatsHelp)->required();
-  cmd->add_option("--format", o->format, "Image format for -o - (standard output): exr, png, tif, hdr, ...");
-  cmd->add_option("--exposure", o->exposure,
-                  "Scale the rendered colour by 2^STOPS, in every format (before the view transform for display "
-                  "formats; not the AOVs)");
-  cmd->add_option("--backend", o->backend, "Ray tracing backend: embree or native")
-      ->check(CLI::IsMember({"native", "embree"}))
-      ->capture_default_str();
-  cmd->add_option("--spp", o->spp,
-                  "Samples per pixel, 1 to 65536, stratified over the most nearly square grid (48: 8x6)");
-  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
-  cmd->add_option("--threads", o->threads, "Worker threads (0: all cores)");
-  cmd->add_option("--seed", o->seed, "Seed of the pixel sampler");
-  cmd->add_option("--max-depth", o->max_depth,
-                  "Most bounces after the camera ray: mirror bounces (whitted), path vertices (path)");
-  cmd->add_option("--integrator", o->integrator,
-                  "Light transport: path (physically based path tracing with MIS) or whitted (Phong, mirrors, "
-                  "glass); default: the scene's render.integrator, else whitted")
-      ->check(CLI::IsMember({"path", "whitted"}));
-  add_scene_override_options(*cmd, o->overrides, o->defines);
-  cmd->add_option("--display-server", o->display_server,
-                  "Stream tiles as they finish to the tev image viewer listening at HOST:PORT (tev's default: "
-                  "127.0.0.1:14158); the render goes on if it is absent or goes away");
-  cmd->add_option("--frames", o->frames,
-                  "Render frames FIRST-LAST[:STEP] (e.g. 1-240:2), each to -o with its '####' replaced by the "
-                  "zero-padded frame number; the scene variable 'frame' follows (keyframed values, $frame)");
-  cmd->add_flag("--skip-existing", o->skip_existing, "Skip frames (or the single output) whose file already exists");
-  cmd->add_option("--region", o->region, "Render only pixels x0,y0,x1,y1 (x1, y1 exclusive)");
-  cmd->add_flag("--crop", o->crop, "With --region: write only the region instead of a full-size image");
-  cmd->add_option("--aov", o->aovs, "Extra EXR layers: albedo,normal,depth,object-id,halves,variance,spp (EXR outputs only)")
-      ->delimiter(',')
-      ->allow_extra_args(false)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  cmd->add_flag("--denoise", o->denoise,
-                "Denoise the finished image with rtpro's own denoiser (the albedo, normal, depth and half-buffer "
-                "layers are rendered for it); an EXR keeps the noisy colour as noisy.R/G/B and those layers");
-  cmd->add_option("--tile-size", o->tile_size, "Tile edge in pixels")->capture_default_str();
-  cmd->add_option("--ocio-config", o->ocio_config, "OpenColorIO config (default: $OCIO, else bundled)");
-  cmd->add_option("--ocio-display", o->display, "OCIO display for display-referred outputs (default: the config's)");
-  cmd->add_option("--display", o->deprecated_display, "Deprecated spelling of --ocio-display")->group("");
-  cmd->add_option("--view", o->view, "OCIO view for display-referred outputs (default: the display's)");
-  cmd->add_option("--progress", o->progress, "Progress on stderr: never, auto (bar on a terminal), always, or json (one object a line, kept with -q)")
-      ->type_name("TEXT:{never,auto,always,json}")
-      ->capture_default_str();
-  cmd->add_flag("-q,--quiet", o->quiet, "Print only errors");
-  cmd->add_flag("-v,--verbose", o->verbose, "Print more detail");
-  cmd->add_flag("--stats", o->stats, "Print statistics at the end");
-  cmd->add_option("--stats-json", o->stats_json, "Write statistics as JSON to this file");
-  cmd->add_flag("--resume", o->resume,
-                "Continue an interrupted or killed render of the same scene and settings from its journal "
-                "(OUTPUT.rtpro-journal): only the missing tiles are rendered, and the image is bit-identical to "
-                "an uninterrupted one");
-  cmd->add_option("--time-limit", o->time_limit,
-                  "Stop after this many seconds with the passes finished by then (the first always finishes)");
-  cmd->add_option("--noise-threshold", o->noise_threshold,
-                  "Adaptive sampling: a pixel stops when its error (Cycles' measure) is below this, e.g. 0.01; "
-                  "--spp is then the most a pixel gets");
-  cmd->add_option("--min-samples", o->min_samples,
-                  "With --noise-threshold: samples every pixel takes first (0: 16, or more for small thresholds)");
-  cmd->add_flag("--no-journal", o->no_journal,
-                "Keep no resume journal beside the output (one is kept while rendering and removed once the image "
-                "is written)");
-  add_embree_options(*cmd, o->backend_options);
-  cmd->add_flag("--embree-compact", o->backend_options.embree_compact, "Smaller Embree BVH (about half), about 20% slower to trace");
-  cmd->add_option("--max-memory", o->max_memory_mb,
-                  "Memory budget in MiB for the whole render, checked against an up-front estimate and given to "
-                  "Embree as its limit (0: no limit; default: the smaller of 4096 and the available memory)");
+  add_render_options(*cmd, *o);
   cmd->callback([o, cmd, &action] {
     o->scene_overrides = command_line_overrides(*cmd);
     action = [o] { return launched_by_mpirun() ? run_renders_in_mpi_job(*o) : run_renders(*o, nullptr); };

@@ -243,15 +243,10 @@ struct Pdf {
 
 }  // namespace
 
-LightSet::LightSet(const RenderScene& scene, const EnvironmentLight* environment)
-    : sampler_kind_(scene.render.light_sampler), environment_(environment) {
+LightSet::LightSet(const RenderScene& scene, const EnvironmentLight* environment) : environment_(environment) {
   if (scene.environment && !environment)
     throw std::logic_error("LightSet: the scene has an environment but none was built for it");
-  for (const Light& light : scene.lights) {
-    std::visit([&](const auto& l) { lights_.push_back(l); }, light);
-    if (std::holds_alternative<SphereLight>(light) || std::holds_alternative<QuadLight>(light))
-      analytic_.push_back(static_cast<std::uint32_t>(lights_.size() - 1));
-  }
+  for (const Light& light : scene.lights) std::visit([&](const auto& l) { lights_.push_back(l); }, light);
   add_emitters(scene, scene.top, kInvalidId, nullptr);
   for (std::uint32_t g = 0; g < scene.top.geometries.size(); ++g)
     if (const auto* instance = std::get_if<Instance>(&scene.top.geometries[g]))
@@ -268,66 +263,51 @@ LightSet::LightSet(const RenderScene& scene, const EnvironmentLight* environment
     const float p = std::visit(Power{scene_radius}, light);
     power.push_back(std::isfinite(p) && p > 0.0f ? p : 0.0f);
   }
-  pick_ = AliasTable(power);
-
   std::vector<std::optional<LightBounds>> light_bounds;
   light_bounds.reserve(lights_.size());
   for (std::uint32_t i = 0; i < lights_.size(); ++i) light_bounds.push_back(std::visit(Bounds{power[i]}, lights_[i]));
-  tree_ = LightTree(light_bounds);
-  infinite_slot_.assign(lights_.size(), kInvalidId);
-  std::vector<float> infinite_power;
-  double infinite_total = 0.0;
-  for (std::uint32_t i = 0; i < lights_.size(); ++i)
-    if (!light_bounds[i] && power[i] > 0.0f) {
-      infinite_slot_[i] = static_cast<std::uint32_t>(infinite_.size());
-      infinite_.push_back(i);
-      infinite_power.push_back(power[i]);
-      infinite_total += power[i];
-    }
-  infinite_pick_ = AliasTable(infinite_power);
-  const double total = infinite_total + static_cast<double>(tree_.power());
-  infinite_probability_ = total > 0.0 ? static_cast<float>(infinite_total / total) : 0.0f;
+  link(scene, power, light_bounds);
 }
 
-float LightSet::pick_probability(std::uint32_t index, const Vec3& point) const {
-  switch (sampler_kind_) {
-    case LightSamplerKind::kPower: return pick_.pmf(index);
-    case LightSamplerKind::kTree:
-      if (infinite_slot_[index] != kInvalidId) return infinite_probability_ * infinite_pick_.pmf(infinite_slot_[index]);
-      return (1.0f - infinite_probability_) * tree_.pmf(point, index);
+// One picker per distinct set of lights that illuminate a link group: every light but the scene
+// lights the group is not linked to, in the set's order.
+void LightSet::link(const RenderScene& scene, std::span<const float> power,
+                    std::span<const std::optional<LightBounds>> bounds) {
+  const std::vector<LinkGroup>& groups = scene.links.groups;
+  linked_of_group_.assign(std::max<std::size_t>(groups.size(), 1), 0);
+  for (std::uint32_t g = 0; g < linked_of_group_.size(); ++g) {
+    std::uint32_t same = 0;
+    while (same < g && groups[same].illuminated_by != groups[g].illuminated_by) ++same;
+    if (same < g) {
+      linked_of_group_[g] = linked_of_group_[same];
+      continue;
+    }
+    std::vector<std::uint32_t> members;
+    Linked linked;
+    for (std::uint32_t i = 0; i < lights_.size(); ++i) {
+      if (i < scene.lights.size() && !scene.links.illuminates(g, i)) continue;
+      members.push_back(i);
+      if (std::holds_alternative<SphereLight>(lights_[i]) || std::holds_alternative<QuadLight>(lights_[i]))
+        linked.analytic.push_back(i);
+    }
+    linked.picker = LightPicker(scene.render.light_sampler, members, power, bounds);
+    linked_of_group_[g] = static_cast<std::uint32_t>(linked_.size());
+    linked_.push_back(std::move(linked));
   }
-  return 0.0f;
+}
+
+float LightSet::pick_probability(std::uint32_t index, const Vec3& point, std::uint32_t group) const {
+  return picker(group).probability(index, point);
 }
 
 std::optional<PathLightSample> LightSet::sample(const Vec3& point, float u_pick, Sample2D u,
-                                                const TextureLookup* textures) const {
-  std::uint32_t index = kInvalidId;
-  float pmf = 0.0f;
-  switch (sampler_kind_) {
-    case LightSamplerKind::kPower: {
-      const AliasTable::Pick pick = pick_.sample(u_pick);
-      index = pick.index;
-      pmf = pick.pmf;
-      break;
-    }
-    case LightSamplerKind::kTree:
-      if (u_pick < infinite_probability_) {
-        const AliasTable::Pick pick = infinite_pick_.sample(std::min(u_pick / infinite_probability_, 0x1.fffffep-1f));
-        index = infinite_[pick.index];
-        pmf = infinite_probability_ * pick.pmf;
-      } else {
-        const float u_tree = std::min((u_pick - infinite_probability_) / (1.0f - infinite_probability_), 0x1.fffffep-1f);
-        const std::optional<LightTree::Pick> pick = tree_.sample(point, u_tree);
-        if (!pick) return std::nullopt;
-        index = pick->light;
-        pmf = (1.0f - infinite_probability_) * pick->pmf;
-      }
-      break;
-  }
-  std::optional<PathLightSample> s = std::visit(Sampler{point, u, textures}, lights_[index]);
+                                                const TextureLookup* textures, std::uint32_t group) const {
+  const std::optional<LightPicker::Pick> pick = picker(group).pick(point, u_pick);
+  if (!pick) return std::nullopt;
+  std::optional<PathLightSample> s = std::visit(Sampler{point, u, textures}, lights_[pick->light]);
   if (s) {
-    s->pdf *= pmf;
-    s->light = index;
+    s->pdf *= pick->pmf;
+    s->light = pick->light;
   }
   return s;
 }
@@ -418,19 +398,19 @@ std::uint32_t LightSet::light_of_hit(const Hit& hit) const {
                                                                                    : found->second[hit.prim_id];
 }
 
-float LightSet::pdf(std::uint32_t index, const Vec3& from, const Vec3& on_light) const {
-  if (index >= lights_.size() || pick_.empty()) return 0.0f;
-  return pick_probability(index, from) * std::visit(Pdf{from, on_light}, lights_[index]);
+float LightSet::pdf(std::uint32_t index, const Vec3& from, const Vec3& on_light, std::uint32_t group) const {
+  if (index >= lights_.size() || empty(group)) return 0.0f;
+  return pick_probability(index, from, group) * std::visit(Pdf{from, on_light}, lights_[index]);
 }
 
-float LightSet::environment_pdf(const Vec3& direction) const {
-  if (environment_index_ == kInvalidId || pick_.empty()) return 0.0f;
-  return pick_probability(environment_index_, Vec3(0.0f)) * environment_->pdf(direction);
+float LightSet::environment_pdf(const Vec3& direction, std::uint32_t group) const {
+  if (environment_index_ == kInvalidId || empty(group)) return 0.0f;
+  return pick_probability(environment_index_, Vec3(0.0f), group) * environment_->pdf(direction);
 }
 
-std::optional<LightSet::SeenLight> LightSet::seen_light(const Ray& ray, float t_max) const {
+std::optional<LightSet::SeenLight> LightSet::seen_light(const Ray& ray, float t_max, std::uint32_t group) const {
   std::optional<SeenLight> nearest;
-  for (const std::uint32_t index : analytic_) {
+  for (const std::uint32_t index : linked(group).analytic) {
     const PathLight& light = lights_[index];
     std::optional<float> t;
     Color radiance;

@@ -1,6 +1,7 @@
 #include "rtpro/render/path_integrator.h"
 
 #include "rtpro/render/beer_lambert.h"
+#include "rtpro/render/light_linking.h"
 #include "rtpro/render/material_bsdf.h"
 #include "rtpro/render/texture.h"
 #include "rtpro/render/ray_offset.h"
@@ -44,7 +45,7 @@ class PathTracer {
   void extend(const Path& path, const Ray& ray, const Hit& hit) {
     SampleResult& result = results_[path.sample];
     const float t_hit = hit.valid() ? hit.t : ray.tfar;
-    if (const std::optional<LightSet::SeenLight> seen = lights_.seen_light(ray, t_hit)) {
+    if (const std::optional<LightSet::SeenLight> seen = lights_.seen_light(ray, t_hit, path.group)) {
       const Vec3 on_light = ray.at(seen->t);
       add_emission(path, result, seen->radiance, seen->index, on_light, path.beta);
       return;  // lights without geometry absorb what reaches them
@@ -66,6 +67,7 @@ class PathTracer {
       add_emission(path, result, emitted_radiance(material.emission, sp.tex_u, sp.tex_v, textures_),
                    lights_.light_of_hit(hit), sp.position, beta);
 
+    const std::uint32_t group = link_group_of(scene_.links, hit);
     const SurfaceBsdf surface = material_bsdf(material, sp, textures_);
     const bool delta = bsdf_is_delta(surface.bsdf);
     if (path.bounce == 0)
@@ -83,9 +85,9 @@ class PathTracer {
     const Vec3 wo = surface.frame.to_local(-normalize(ray.dir));
     // The light's pick and the BSDF's lobe choice as one 2D sample: one draw instead of two.
     const Sample2D choices = sampler_.sample_2d(key.pixel_key, key.sample_index, dimension(path_dimension::kChoices));
-    if (!delta && !lights_.empty()) {
+    if (!delta && !lights_.empty(group)) {
       const Sample2D u = sampler_.sample_2d(key.pixel_key, key.sample_index, dimension(path_dimension::kLightPoint));
-      if (const std::optional<PathLightSample> ls = lights_.sample(sp.position, choices.x, u, textures_))
+      if (const std::optional<PathLightSample> ls = lights_.sample(sp.position, choices.x, u, textures_, group))
         queue_shadow_ray(path.sample, sp, surface, wo, *ls, beta);
     }
 
@@ -103,7 +105,7 @@ class PathTracer {
     std::uint32_t medium = path.medium;
     if (bs->transmitted && material.dielectric) medium = sp.front_face ? sp.material : PathWorkspace::kOutside;
     ws_.next_paths.push_back(
-        {path.sample, path.bounce + 1, next_beta, sp.position, bs->pdf, bs->delta, aov_pending, bs->transmitted, medium});
+        {path.sample, path.bounce + 1, next_beta, sp.position, bs->pdf, bs->delta, aov_pending, bs->transmitted, medium, group});
     ws_.next_rays.push_back(spawn_ray(sp, direction));
   }
 
@@ -115,7 +117,9 @@ class PathTracer {
     float weight = 1.0f;
     if (!path.specular && light != kInvalidId) {
       switch (scene_.render.path_sampling) {
-        case PathSampling::kMis: weight = power_heuristic(path.bsdf_pdf, lights_.pdf(light, path.origin, on_light)); break;
+        case PathSampling::kMis:
+          weight = power_heuristic(path.bsdf_pdf, lights_.pdf(light, path.origin, on_light, path.group));
+          break;
         case PathSampling::kLight: weight = 0.0f; break;  // light sampling found it already
         case PathSampling::kBsdf: break;
       }
@@ -135,7 +139,7 @@ class PathTracer {
     float weight = 1.0f;
     if (!path.specular) {
       switch (scene_.render.path_sampling) {
-        case PathSampling::kMis: weight = power_heuristic(path.bsdf_pdf, lights_.environment_pdf(ray.dir)); break;
+        case PathSampling::kMis: weight = power_heuristic(path.bsdf_pdf, lights_.environment_pdf(ray.dir, path.group)); break;
         case PathSampling::kLight: weight = 0.0f; break;
         case PathSampling::kBsdf: break;
       }
@@ -167,6 +171,7 @@ class PathTracer {
     }
     ws_.shadow_queries.push_back({sample, contribution});
     ws_.shadow_rays.push_back(ray);
+    ws_.shadow_lights.push_back(ls.light < scene_.lights.size() ? ls.light : kInvalidId);
   }
 
   const RenderScene& scene_;
@@ -186,7 +191,7 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
   ws.rays.assign(camera_rays.begin(), camera_rays.end());
   for (std::uint32_t i = 0; i < camera_rays.size(); ++i) {
     results[i] = SampleResult{};
-    ws.paths.push_back({i, 0, Color(1.0f), camera_rays[i].org, 0.0f, true, true, false, PathWorkspace::kOutside});
+    ws.paths.push_back({i, 0, Color(1.0f), camera_rays[i].org, 0.0f, true, true, false, PathWorkspace::kOutside, 0});
   }
   counts.camera += camera_rays.size();
   PathTracer<Sampler> tracer(scene, lights, sampler, keys, results, ws, textures);
@@ -197,10 +202,12 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
     ws.next_rays.clear();
     ws.shadow_queries.clear();
     ws.shadow_rays.clear();
+    ws.shadow_lights.clear();
     for (std::size_t i = 0; i < ws.paths.size(); ++i) tracer.extend(ws.paths[i], ws.rays[i], ws.hits[i]);
 
     ws.occluded.resize(ws.shadow_rays.size());
-    backend.occluded(ws.shadow_rays, ws.occluded, RayCoherence::kIncoherent);
+    occluded_with_shadow_linking(backend, scene.links, ws.shadow_rays, ws.shadow_lights, ws.occluded,
+                                 RayCoherence::kIncoherent);
     counts.shadow += ws.shadow_rays.size();
     for (std::size_t i = 0; i < ws.shadow_queries.size(); ++i)
       if (!ws.occluded[i]) results[ws.shadow_queries[i].sample].radiance += ws.shadow_queries[i].contribution;

@@ -5,6 +5,7 @@
 #include "rtpro/core/avx2_clones.h"
 #include "rtpro/render/beer_lambert.h"
 #include "rtpro/render/dielectric.h"
+#include "rtpro/render/light_linking.h"
 #include "rtpro/render/light_sample.h"
 #include "rtpro/render/ray_offset.h"
 #include "rtpro/render/texture.h"
@@ -64,6 +65,7 @@ void queue_light_shadow_rays(const RenderScene& scene, const StratifiedSampler& 
     append_ray(ws.shadow_rays, std::isinf(ls.distance) ? spawn_ray(s.point, ls.direction)
                                                        : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
     ws.shadow_queries.push_back({ls.radiance, n_dot_l, dot(s.mirror, ls.direction)});
+    if (scene.links.linked()) ws.shadow_lights.push_back(l);
     return;
   }
   const int count = per_axis * per_axis;
@@ -77,6 +79,7 @@ void queue_light_shadow_rays(const RenderScene& scene, const StratifiedSampler& 
     append_ray(ws.shadow_rays, std::isinf(ls.distance) ? spawn_ray(s.point, ls.direction)
                                                        : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
     ws.shadow_queries.push_back({ls.radiance * share, n_dot_l, dot(s.mirror, ls.direction)});
+    if (scene.links.linked()) ws.shadow_lights.push_back(l);
   }
 }
 
@@ -87,12 +90,13 @@ constexpr std::size_t kMaxLanedLights = 8;
 // The shadow rays of every surface of the generation: surface by surface, lights in scene order.
 // Where every light is a point, spot or directional light, four surfaces at a time take each point
 // light through point_light_lanes (the same rays, bit for bit; the others one surface at a time)
-// and are queued in the same order.
+// and are queued in the same order. Under light linking a surface takes only the lights that
+// illuminate its object, one surface at a time.
 RTPRO_AVX2_CLONES
 void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sampler, std::span<const SampleKey> keys,
                        const Workspace::Generation& generation, int depth, Workspace& ws) {
   const std::size_t light_count = scene.lights.size();
-  bool laned = light_count <= kMaxLanedLights;
+  bool laned = light_count <= kMaxLanedLights && !scene.links.linked();
   for (std::size_t l = 0; l < light_count && laned; ++l)
     laned = ws.light_samples_per_axis[l] == 1 && !ws.is_emitter[l];
   std::size_t i = 0;
@@ -125,8 +129,10 @@ void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sample
   for (; i < ws.surfaces.size(); ++i) {
     Workspace::ShadedSurface& s = ws.surfaces[i];
     s.first_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
+    const std::uint32_t group = link_group_of(scene.links, ws.hits[s.task]);
     for (std::uint32_t l = 0; l < light_count; ++l)
-      queue_light_shadow_rays(scene, sampler, keys[generation.tasks[s.task].sample], depth, s, l, ws);
+      if (scene.links.illuminates(group, l))
+        queue_light_shadow_rays(scene, sampler, keys[generation.tasks[s.task].sample], depth, s, l, ws);
     s.end_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
   }
 }
@@ -141,6 +147,7 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
   ws.surfaces.clear();
   ws.shadow_queries.clear();
   ws.shadow_rays.clear();
+  ws.shadow_lights.clear();
   // What follows the surface point and its mirror direction: the albedo and the camera hit's AOVs.
   auto complete = [&](Workspace::ShadedSurface& s) {
     const Ray& ray = generation.rays[s.task];
@@ -310,7 +317,8 @@ void shade_batch(const RenderScene& scene, const Backend& backend, const Stratif
     gather_surfaces(scene, sampler, keys, ws.current, depth, results, ws);
 
     ws.occluded.resize(ws.shadow_rays.size());
-    backend.occluded(ws.shadow_rays, ws.occluded, depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
+    occluded_with_shadow_linking(backend, scene.links, ws.shadow_rays, ws.shadow_lights, ws.occluded,
+                                 depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
     counts.shadow += ws.shadow_rays.size();
 
     light_surfaces(scene, ws.current, depth, results, ws);

@@ -147,9 +147,18 @@ class RenderSceneBuilder {
     check_instance_count();
     prototype_of_object_.assign(description_.objects.size(), std::nullopt);
     add_own_shapes(description_.world, scene_.top, &top_where_);
-    place_gltfs(description_.world, Affine::identity());
-    for (const InstanceDesc& instance : description_.world.instances)
+    const bool world_spheres = !description_.world.spheres.empty();
+    linking_of_object_.assign(world_spheres ? 1 : 0, kNoLinking);
+    for (const MeshDesc& mesh : description_.world.meshes) linking_of_object_.push_back(mesh.linking);
+    for (const GltfDesc& gltf : description_.world.gltfs) {
+      place_gltf(gltf, Affine::identity());
+      linking_of_object_.resize(scene_.top.geometries.size(), gltf.linking);
+    }
+    for (const InstanceDesc& instance : description_.world.instances) {
       flatten_instance(instance.object, instance.transform, instance.where);
+      linking_of_object_.resize(scene_.top.geometries.size(), instance.linking);
+    }
+    link_objects(world_spheres);
     check_traceable_range(scene_, top_where_, description_.camera, description_.lights);
     if (report_) report_->flattened_instances = flattened_;
     return std::move(scene_);
@@ -314,19 +323,32 @@ class RenderSceneBuilder {
     return gltfs_.emplace(key, std::move(placed)).first->second;
   }
 
-  void place_gltfs(const ObjectDesc& object, const Affine& to_world) {
-    for (const GltfDesc& desc : object.gltfs) {
-      const PlacedGltf& placed = gltf_prototypes(desc);
-      for (const GltfPlacement& p : placed.asset->placements)
-        if (const auto prototype = placed.prototype_of_mesh[p.mesh]) add_instance(*prototype, compose(to_world, p.transform), desc.where);
-    }
+  void place_gltf(const GltfDesc& desc, const Affine& to_world) {
+    const PlacedGltf& placed = gltf_prototypes(desc);
+    for (const GltfPlacement& p : placed.asset->placements)
+      if (const auto prototype = placed.prototype_of_mesh[p.mesh]) add_instance(*prototype, compose(to_world, p.transform), desc.where);
   }
 
   void flatten_instance(std::uint32_t object, const Affine& to_world, const SourceLocation& where) {
     if (const auto prototype = prototype_of(object)) add_instance(*prototype, to_world, where);
-    place_gltfs(description_.objects[object], to_world);
+    for (const GltfDesc& gltf : description_.objects[object].gltfs) place_gltf(gltf, to_world);
     for (const InstanceDesc& nested : description_.objects[object].instances)
       flatten_instance(nested.object, compose(to_world, nested.transform), nested.where);
+  }
+
+  // Light linking: the group of each top-level object (none when no world entry is linked). The
+  // world's spheres share one geometry, so theirs are per sphere.
+  void link_objects(bool world_spheres) {
+    if (description_.linkings.empty()) return;
+    LightLinks& links = scene_.links;
+    std::vector<std::uint32_t> group_of_linking;
+    for (const LightLinkingDesc& linking : description_.linkings)
+      group_of_linking.push_back(links.group_with(make_link_group(linking, description_.lights.size())));
+    const auto group = [&](std::uint32_t linking) { return linking == kNoLinking ? 0u : group_of_linking[linking]; };
+    for (const std::uint32_t linking : linking_of_object_) links.group_of_object.push_back(group(linking));
+    if (!world_spheres) return;
+    links.group_of_object[0] = LightLinks::kPerSphere;
+    for (const SphereDesc& sphere : description_.world.spheres) links.group_of_sphere.push_back(group(sphere.linking));
   }
 
   static constexpr std::uint32_t kInvalidPrototype = ~0u;
@@ -337,6 +359,7 @@ class RenderSceneBuilder {
   std::map<std::tuple<std::filesystem::path, int, std::uint32_t>, PlacedGltf> gltfs_;
   std::size_t flattened_ = 0;
   std::vector<SourceLocation> top_where_;  // scene-file location of each top-level geometry
+  std::vector<std::uint32_t> linking_of_object_;  // per top-level geometry: its world entry's linking
 };
 
 }  // namespace

@@ -417,7 +417,7 @@ SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& f
   desc.camera = read_camera(scene.required("camera"));
   desc.render = read_render(scene.optional("render"));
   desc.materials = read_materials(scene.optional("materials"), file.parent_path());
-  desc.lights = read_lights(scene.optional("lights"));
+  read_lights(scene.optional("lights"), desc.lights, desc.light_names);
   desc.environment = read_environment(scene.optional("environment"), file.parent_path());
   read_scene_objects(scene.optional("objects"), scene.optional("world"), file.parent_path(), desc);
   return desc;

@@ -29,7 +29,7 @@ int read_light_samples(const MappingReader& light, int fallback) {
 }
 
 PointLightDesc read_point_light(const YamlNode& node) {
-  const MappingReader light(node, "point light", {"type", "position", "color", "intensity"});
+  const MappingReader light(node, "point light", {"type", "name", "position", "color", "intensity"});
   PointLightDesc desc;
   desc.position = read_vec3(light.required("position"), light.field("position"));
   read_color_and_intensity(light, desc);
@@ -66,7 +66,7 @@ Vec3 read_spot_axis(const MappingReader& light, const Vec3& position) {
 
 SpotLightDesc read_spot_light(const YamlNode& node) {
   const MappingReader light(node, "spot light",
-                            {"type", "position", "direction", "look_at", "color", "intensity", "inner_angle", "outer_angle"});
+                            {"type", "name", "position", "direction", "look_at", "color", "intensity", "inner_angle", "outer_angle"});
   SpotLightDesc desc;
   desc.position = read_vec3(light.required("position"), light.field("position"));
   desc.direction = read_spot_axis(light, desc.position);
@@ -88,7 +88,7 @@ SpotLightDesc read_spot_light(const YamlNode& node) {
 }
 
 DirectionalLightDesc read_directional_light(const YamlNode& node) {
-  const MappingReader light(node, "directional light", {"type", "direction", "color", "intensity"});
+  const MappingReader light(node, "directional light", {"type", "name", "direction", "color", "intensity"});
   DirectionalLightDesc desc;
   const YamlNode& direction = light.required("direction");
   desc.direction = read_vec3(direction, light.field("direction"));
@@ -99,7 +99,7 @@ DirectionalLightDesc read_directional_light(const YamlNode& node) {
 }
 
 SphereLightDesc read_sphere_light(const YamlNode& node) {
-  const MappingReader light(node, "sphere light", {"type", "center", "radius", "color", "intensity", "samples"});
+  const MappingReader light(node, "sphere light", {"type", "name", "center", "radius", "color", "intensity", "samples"});
   SphereLightDesc desc;
   desc.center = read_vec3(light.required("center"), light.field("center"));
   const YamlNode& radius = light.required("radius");
@@ -111,7 +111,7 @@ SphereLightDesc read_sphere_light(const YamlNode& node) {
 }
 
 QuadLightDesc read_quad_light(const YamlNode& node) {
-  const MappingReader light(node, "quad light", {"type", "position", "edge1", "edge2", "color", "intensity", "samples"});
+  const MappingReader light(node, "quad light", {"type", "name", "position", "edge1", "edge2", "color", "intensity", "samples"});
   QuadLightDesc desc;
   desc.position = read_vec3(light.required("position"), light.field("position"));
   const YamlNode& edge1 = light.required("edge1");
@@ -135,14 +135,28 @@ LightDesc read_light(const YamlNode& node) {
   return read_quad_light(node);
 }
 
+// `name:`, which light linking refers to (FORMAT.md, "Light linking"): unique among the lights.
+std::string read_light_name(const YamlNode& node, const std::vector<std::string>& earlier) {
+  const YamlEntry* entry = node.is_mapping() ? node.find("name") : nullptr;
+  if (!entry) return {};
+  const std::string name = read_string(*entry->value, "light.name");
+  if (name.empty()) fail_at(*entry->value, "light.name must not be empty");
+  for (const std::string& other : earlier)
+    if (other == name) fail_at(*entry->value, "light.name: another light is already named '" + name + "'");
+  return name;
+}
+
 }  // namespace
 
-std::vector<LightDesc> read_lights(const YamlNode* node) {
-  std::vector<LightDesc> lights;
-  if (!node || node->is_null()) return lights;
+void read_lights(const YamlNode* node, std::vector<LightDesc>& lights, std::vector<std::string>& names) {
+  lights.clear();
+  names.clear();
+  if (!node || node->is_null()) return;
   if (!node->is_sequence()) fail_at(*node, "lights: expected a list of lights, got " + node->describe());
-  for (const YamlNodePtr& light : node->items()) lights.push_back(read_light(*light));
-  return lights;
+  for (const YamlNodePtr& light : node->items()) {
+    lights.push_back(read_light(*light));
+    names.push_back(read_light_name(*light, names));
+  }
 }
 
 }  // namespace rtpro

@@ -4,11 +4,12 @@
 #include "rtpro/scene/description.h"
 #include "yaml_document.h"
 
+#include <string>
 #include <vector>
 
 namespace rtpro {
 
-// None when `node` is absent or null.
-std::vector<LightDesc> read_lights(const YamlNode* node);
+// None when `node` is absent or null. `names`: one per light, its `name:` (empty without one).
+void read_lights(const YamlNode* node, std::vector<LightDesc>& lights, std::vector<std::string>& names);
 
 }  // namespace rtpro

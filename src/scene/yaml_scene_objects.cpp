@@ -1,12 +1,14 @@
 #include "yaml_scene_objects.h"
 
 #include "gltf_loader.h"
+#include "yaml_light_linking.h"
 #include "yaml_reader.h"
 #include "yaml_transform.h"
 
 #include <algorithm>
 #include <cctype>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -109,7 +111,8 @@ void check_instance_graph(const std::vector<std::string>& names, const std::vect
 
 class ObjectsReader {
  public:
-  ObjectsReader(const std::vector<MaterialDesc>& materials, std::filesystem::path folder) : folder_(std::move(folder)) {
+  ObjectsReader(const std::vector<MaterialDesc>& materials, std::filesystem::path folder, SceneDescription& scene)
+      : folder_(std::move(folder)), scene_(scene) {
     for (std::uint32_t i = 0; i < materials.size(); ++i) materials_.add(materials[i].name, i);
   }
 
@@ -127,11 +130,11 @@ class ObjectsReader {
     if (has_objects) {
       for (std::size_t i = 0; i < objects->entries().size(); ++i) {
         const YamlEntry& entry = objects->entries()[i];
-        read_entries(entry.value, "object '" + std::string(entry.key) + "'", scene.objects[i], links_[i]);
+        read_entries(entry.value, "object '" + std::string(entry.key) + "'", scene.objects[i], links_[i], false);
       }
     }
     scene.world.name = "world";
-    read_entries(world, "world", scene.world, links_.back());
+    read_entries(world, "world", scene.world, links_.back(), true);
 
     std::vector<std::string> names = objects_.names();
     names.push_back("world");
@@ -139,8 +142,9 @@ class ObjectsReader {
   }
 
  private:
+  // `in_world`: the entries are the world's, which may be light-linked.
   void read_entries(const YamlNode* list, const std::string& what, ObjectDesc& object,
-                    std::vector<InstanceLink>& links) {
+                    std::vector<InstanceLink>& links, bool in_world) {
     if (!list || list->is_null()) return;
     if (!list->is_sequence())
       fail_at(*list, what + ": expected a list of entries (sphere, mesh, instance), got " + list->describe());
@@ -151,17 +155,33 @@ class ObjectsReader {
       }
       const std::string type = read_entry_type(*entry, "entry", kEntryTypes);
       if (type == "sphere") {
-        object.spheres.push_back(read_sphere(*entry));
+        object.spheres.push_back(read_sphere(*entry, in_world));
       } else if (type == "mesh") {
-        read_mesh(*entry, object);
+        read_mesh(*entry, object, in_world);
       } else {
-        object.instances.push_back(read_instance(*entry, links));
+        object.instances.push_back(read_instance(*entry, links, in_world));
       }
     }
   }
 
-  SphereDesc read_sphere(const YamlNode& node) const {
-    const MappingReader sphere(node, "sphere", {"type", "center", "radius", "material"});
+  // The index of the entry's light linking in the scene's list, or kNoLinking. Only world entries
+  // are linked: an object's entries are lit as the instances placing it are.
+  std::uint32_t read_linking(const MappingReader& entry, bool in_world) {
+    std::optional<LightLinkingDesc> linking = read_light_linking(entry, scene_.light_names);
+    if (!linking) return kNoLinking;
+    if (!in_world) {
+      const YamlNode* key = entry.optional(kLightLinkingKey);
+      fail_at(key ? *key : *entry.optional(kShadowLinkingKey),
+              entry.field(key ? kLightLinkingKey : kShadowLinkingKey) +
+                  ": only the world's entries are light-linked; link the instance that places this object");
+    }
+    scene_.linkings.push_back(std::move(*linking));
+    return static_cast<std::uint32_t>(scene_.linkings.size() - 1);
+  }
+
+  SphereDesc read_sphere(const YamlNode& node, bool in_world) {
+    const MappingReader sphere(node, "sphere",
+                               {"type", "center", "radius", "material", kLightLinkingKey, kShadowLinkingKey});
     SphereDesc desc;
     if (const YamlNode* center = sphere.optional("center")) desc.center = read_vec3(*center, sphere.field("center"));
     if (const YamlNode* radius = sphere.optional("radius")) {
@@ -171,19 +191,22 @@ class ObjectsReader {
     }
     if (const YamlNode* material = sphere.optional("material"))
       desc.material = material_index(*material, sphere.field("material"));
+    desc.linking = read_linking(sphere, in_world);
     return desc;
   }
 
   // An OBJ or PLY file is one mesh; a glTF file is a scene of its own, placed as a whole.
-  void read_mesh(const YamlNode& node, ObjectDesc& object) const {
-    const MappingReader mesh(node, "mesh", {"type", "file", "material", "normals"});
+  void read_mesh(const YamlNode& node, ObjectDesc& object, bool in_world) {
+    const MappingReader mesh(node, "mesh", {"type", "file", "material", "normals", kLightLinkingKey, kShadowLinkingKey});
     MeshDesc desc;
     desc.file = resolve_mesh_file(mesh.required("file"), mesh.field("file"));
     if (const YamlNode* material = mesh.optional("material"))
       desc.material = material_index(*material, mesh.field("material"));
     if (const YamlNode* normals = mesh.optional("normals")) desc.normals = read_normals_mode(*normals, mesh.field("normals"));
     desc.where = node.at.location();
-    if (is_gltf_file(desc.file)) object.gltfs.push_back({desc.file, desc.material, desc.where, desc.normals, nullptr});
+    desc.linking = read_linking(mesh, in_world);
+    if (is_gltf_file(desc.file))
+      object.gltfs.push_back({desc.file, desc.material, desc.where, desc.normals, nullptr, desc.linking});
     else object.meshes.push_back(std::move(desc));
   }
 
@@ -195,8 +218,8 @@ class ObjectsReader {
     fail_at(node, field + ": expected flat, smooth or file, got '" + mode + "'" + suggestion(mode, kNormalsModes));
   }
 
-  InstanceDesc read_instance(const YamlNode& node, std::vector<InstanceLink>& links) const {
-    const MappingReader instance(node, "instance", {"type", "object", "transform"});
+  InstanceDesc read_instance(const YamlNode& node, std::vector<InstanceLink>& links, bool in_world) {
+    const MappingReader instance(node, "instance", {"type", "object", "transform", kLightLinkingKey, kShadowLinkingKey});
     InstanceDesc desc;
     const YamlNode& object = instance.required("object");
     const std::string name = read_string(object, instance.field("object"));
@@ -210,6 +233,7 @@ class ObjectsReader {
     if (const YamlNode* transform = instance.optional("transform"))
       desc.transform = read_transform(*transform, instance.field("transform"));
     desc.where = node.at.location();
+    desc.linking = read_linking(instance, in_world);
     links.push_back({*index, object.at});
     return desc;
   }
@@ -243,6 +267,7 @@ class ObjectsReader {
   }
 
   std::filesystem::path folder_;
+  SceneDescription& scene_;
   NameTable materials_;
   NameTable objects_;
   std::vector<std::vector<InstanceLink>> links_;  // per object, the world last
@@ -253,7 +278,7 @@ class ObjectsReader {
 
 void read_scene_objects(const YamlNode* objects, const YamlNode* world, const std::filesystem::path& folder,
                         SceneDescription& scene) {
-  ObjectsReader(scene.materials, folder).read(objects, world, scene);
+  ObjectsReader(scene.materials, folder, scene).read(objects, world, scene);
 }
 
 }  // namespace rtpro

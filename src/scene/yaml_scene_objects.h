@@ -1,7 +1,7 @@
 #pragma once
 // Reads a scene's `objects:` and `world:` (spheres, meshes, instances) into a SceneDescription
-// whose materials are already read, resolving names to indices and checking the instance graph
-// for cycles and nesting depth.
+// whose materials and lights are already read, resolving names to indices (light names of the
+// world entries' light linking too) and checking the instance graph for cycles and nesting depth.
 #include "rtpro/scene/description.h"
 #include "yaml_document.h"
 

@@ -8,18 +8,23 @@
 // sampled: a path that hits one adds its emission with weight 1, which is unbiased (BSDF sampling
 // alone), only noisier. Nor is an instanced sphere with an emission texture, whose texture
 // coordinates are those of its prototype's frame.
+//
+// Light linking (scene/light_links.h): each link group of objects picks among the lights that
+// illuminate it (a LightPicker of its own, shared by groups lit by the same lights). The calls
+// below take the group of the shading point (of the vertex a ray left, for emission it reaches);
+// group 0, every light, is also what a scene without linking and a camera ray have.
 #include "rtpro/backend/hit.h"
 #include "rtpro/core/ray.h"
 #include "rtpro/image/texture_lookup.h"
-#include "rtpro/render/alias_table.h"
 #include "rtpro/render/environment_light.h"
-#include "rtpro/render/light_tree.h"
+#include "rtpro/render/light_picker.h"
 #include "rtpro/render/sampler.h"
 #include "rtpro/scene/render_scene.h"
 
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <unordered_map>
 #include <variant>
 #include <vector>
@@ -67,51 +72,55 @@ class LightSet {
   // `environment`: the scene's, built from its image (required when the scene has one).
   explicit LightSet(const RenderScene& scene, const EnvironmentLight* environment = nullptr);
 
-  bool empty() const { return pick_.empty(); }
+  // No light illuminates the group's objects.
+  bool empty(std::uint32_t group = 0) const { return picker(group).empty(); }
+  // The scene's lights first (in its order: a scene light's index here is its index there), then
+  // its emissive surfaces, then the environment.
   const std::vector<PathLight>& lights() const { return lights_; }
 
   // A light picked by u_pick, then a point on it by u, as seen from `point`; nothing when the
   // light sends nothing there (behind a one-sided emitter).
   // `textures`: the scene's images, for emitters with an emission texture.
   std::optional<PathLightSample> sample(const Vec3& point, float u_pick, Sample2D u,
-                                        const TextureLookup* textures = nullptr) const;
+                                        const TextureLookup* textures = nullptr, std::uint32_t group = 0) const;
 
   // The light that an emissive surface hit is (kInvalidId when it is not sampled).
   std::uint32_t light_of_hit(const Hit& hit) const;
   // The pdf sample() has of reaching `on_light` on light `index` from `from` (solid angle, pick
-  // probability included), 0 for lights that cannot be hit.
-  float pdf(std::uint32_t index, const Vec3& from, const Vec3& on_light) const;
+  // probability included), 0 for lights that cannot be hit or do not illuminate the group.
+  float pdf(std::uint32_t index, const Vec3& from, const Vec3& on_light, std::uint32_t group = 0) const;
 
   // The probability that sample() at `point` picks light `index` (render.light_sampler).
-  float pick_probability(std::uint32_t index, const Vec3& point) const;
+  float pick_probability(std::uint32_t index, const Vec3& point, std::uint32_t group = 0) const;
 
   // The environment, or null; and the pdf sample() has of reaching it along `direction` (solid
   // angle, pick probability included).
   const EnvironmentLight* environment() const { return environment_; }
-  float environment_pdf(const Vec3& direction) const;
+  float environment_pdf(const Vec3& direction, std::uint32_t group = 0) const;
   std::uint32_t environment_index() const { return environment_index_; }
 
-  // The nearest light without geometry (sphere and rectangle lights) that `ray` sees before
-  // t_max, with its index and the radiance it shows.
+  // The nearest light without geometry (sphere and rectangle lights) illuminating the group that
+  // `ray` sees before t_max, with its index and the radiance it shows. The others are not there
+  // for the group's rays.
   struct SeenLight {
     std::uint32_t index;
     float t;
     Color radiance;
   };
-  std::optional<SeenLight> seen_light(const Ray& ray, float t_max) const;
+  std::optional<SeenLight> seen_light(const Ray& ray, float t_max, std::uint32_t group = 0) const;
 
  private:
+  // What a distinct set of illuminating lights picks from, and its sphere and rectangle lights.
+  struct Linked {
+    LightPicker picker;
+    std::vector<std::uint32_t> analytic;
+  };
+  const Linked& linked(std::uint32_t group) const { return linked_[linked_of_group_[group]]; }
+  const LightPicker& picker(std::uint32_t group) const { return linked(group).picker; }
+
   std::vector<PathLight> lights_;
-  LightSamplerKind sampler_kind_;
-  AliasTable pick_;  // power: every light by its power
-  // tree: the lights with a position in the tree, those without (directional, the environment)
-  // by their power; which of the two by the power of each side.
-  LightTree tree_;
-  std::vector<std::uint32_t> infinite_;            // their light indices
-  std::vector<std::uint32_t> infinite_slot_;       // per light: its place in infinite_, or kInvalidId
-  AliasTable infinite_pick_;
-  float infinite_probability_ = 0.0f;
-  std::vector<std::uint32_t> analytic_;  // indices of sphere and rectangle lights
+  std::vector<Linked> linked_;                  // [0]: every light
+  std::vector<std::uint32_t> linked_of_group_;  // per link group (one without linking)
   const EnvironmentLight* environment_ = nullptr;
   std::uint32_t environment_index_ = kInvalidId;
   // Per emitting geometry, keyed by (instance, geometry) as a hit names them: the light index of
@@ -119,6 +128,7 @@ class LightSet {
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> light_of_primitive_;
 
   void add_emitters(const RenderScene& scene, const Group& group, std::uint32_t instance, const Affine* to_world);
+  void link(const RenderScene& scene, std::span<const float> power, std::span<const std::optional<LightBounds>> bounds);
 };
 
 }  // namespace rtpro

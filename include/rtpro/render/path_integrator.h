@@ -5,6 +5,10 @@
 // pdf; emission reached by a BSDF sample after a specular vertex (or by the camera ray) counts in
 // full. Russian roulette after kRouletteStart bounces, its number from the sampler.
 //
+// Light linking (scene/light_links.h): a vertex samples among the lights that illuminate its
+// object, and emission a ray from it reaches is weighted by that vertex's pdfs; its shadow rays
+// pass the objects that do not cast their light's shadows.
+//
 // Paths are traced in generations, as shade_batch traces Whitted rays: every path's next ray of a
 // batch together, then every shadow ray of that generation together. Each sample's radiance sums
 // its contributions in the order its own path made them, so it never depends on what else shares
@@ -46,6 +50,7 @@ class PathWorkspace {
     bool aov_pending;       // albedo and normal AOVs wait for the first non-specular vertex
     bool transmitted;       // the ray was refracted into or out of a surface (counted as refraction)
     std::uint32_t medium;   // the dielectric material whose inside the ray crosses, or kOutside
+    std::uint32_t group;    // the light-link group of the vertex the ray leaves (0 for the camera)
   };
   static constexpr std::uint32_t kOutside = ~0u;
   struct ShadowQuery {
@@ -58,6 +63,7 @@ class PathWorkspace {
   std::vector<Hit> hits;
   std::vector<ShadowQuery> shadow_queries;
   std::vector<Ray> shadow_rays;
+  std::vector<std::uint32_t> shadow_lights;  // per shadow ray: the scene light it goes to, or kInvalidId
   std::vector<std::uint8_t> occluded;
 };
 

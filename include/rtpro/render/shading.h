@@ -8,6 +8,10 @@
 // A sample's rays form a tree (a surface may spawn several rays; a light several shadow rays);
 // each sample's radiance sums its contributions in a fixed order — by generation, then in the order
 // its own rays were spawned — so a pixel never depends on what else shares its batch.
+//
+// Light linking (scene/light_links.h): a surface takes the direct light of the lights that
+// illuminate its object only, and their shadow rays pass the objects that do not cast their
+// shadows; mirror and glass rays still see every area light.
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/ray.h"
 #include "rtpro/image/texture_lookup.h"
@@ -104,6 +108,7 @@ class ShadingWorkspace {
   std::vector<ShadedSurface> surfaces;
   std::vector<ShadowQuery> shadow_queries;
   std::vector<Ray> shadow_rays;
+  std::vector<std::uint32_t> shadow_lights;  // under light linking only: per shadow ray, its light
   std::vector<std::uint8_t> occluded;
   // Per light of the scene, set once per batch: its shadow samples per axis, and whether it is an
   // area light that camera and mirror rays can see (also listed in `emitters`).

@@ -31,5 +31,7 @@ RenderScene build_render_scene(const SceneDescription& description, SceneBuildRe
 // tests that assemble a RenderScene by hand do too).
 RenderCamera make_render_camera(const CameraDesc& desc);
 Light make_light(const LightDesc& desc);
+// A world entry's light linking as flags over the scene's `light_count` lights.
+LinkGroup make_link_group(const LightLinkingDesc& desc, std::size_t light_count);
 
 }  // namespace rtpro

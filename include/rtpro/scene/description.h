@@ -169,10 +169,28 @@ using LightDesc = std::variant<PointLightDesc, SpotLightDesc, DirectionalLightDe
 
 inline constexpr std::uint32_t kNoMaterial = ~0u;
 
+// Lights named by a world entry's `light_linking:` or `shadow_linking:` (scenes/FORMAT.md, "Light
+// linking"): indices into SceneDescription::lights, either the only ones that count (include:
+// illuminated_by, shadows_from) or the ones left out (not_illuminated_by, no_shadows_from).
+struct LightListDesc {
+  bool include = false;
+  std::vector<std::uint32_t> lights;
+};
+
+// Which lights illuminate a world entry and which lights' shadow rays it blocks; unset: all of them.
+struct LightLinkingDesc {
+  std::optional<LightListDesc> illumination;
+  std::optional<LightListDesc> shadows;
+};
+
+// An entry without light linking (the index of a LightLinkingDesc otherwise).
+inline constexpr std::uint32_t kNoLinking = ~0u;
+
 struct SphereDesc {
   Vec3 center;
   float radius = 1.0f;
   std::uint32_t material = 0;  // index into SceneDescription::materials
+  std::uint32_t linking = kNoLinking;  // index into SceneDescription::linkings (world entries only)
 };
 
 struct MeshDesc {
@@ -180,6 +198,7 @@ struct MeshDesc {
   std::uint32_t material = kNoMaterial;     // overrides the OBJ's own materials when set
   SourceLocation where;                     // of the entry in the scene file, for load errors
   NormalsMode normals = NormalsMode::kAuto;
+  std::uint32_t linking = kNoLinking;
 };
 
 struct GltfAsset;  // a loaded glTF file (src/scene/gltf_asset.h)
@@ -193,12 +212,14 @@ struct GltfDesc {
   // Set when the file was already loaded while the scene was read (a glTF file as the whole
   // scene needs its cameras, lights and bounds then); otherwise loaded by build_render_scene.
   std::shared_ptr<const GltfAsset> loaded;
+  std::uint32_t linking = kNoLinking;  // every instance the file places
 };
 
 struct InstanceDesc {
   std::uint32_t object = 0;  // index into SceneDescription::objects
   Affine transform;          // object to parent
   SourceLocation where;
+  std::uint32_t linking = kNoLinking;  // every instance this one expands to
 };
 
 // A set of shapes: either a named object (instanced by name) or the world itself.
@@ -230,9 +251,11 @@ struct SceneDescription {
   RenderSettings render;
   std::vector<MaterialDesc> materials;  // index 0 is always "default"
   std::vector<LightDesc> lights;
+  std::vector<std::string> light_names;  // one per light: its `name:`, empty when it has none
   std::optional<EnvironmentDesc> environment;
   std::vector<ObjectDesc> objects;      // named, reachable only through instances
   ObjectDesc world;                     // what is rendered
+  std::vector<LightLinkingDesc> linkings;  // of the world's entries that have one
 };
 
 }  // namespace rtpro

@@ -6,6 +6,7 @@
 #include "rtpro/core/transform.h"
 #include "rtpro/scene/checker_axes.h"
 #include "rtpro/scene/light.h"
+#include "rtpro/scene/light_links.h"
 #include "rtpro/scene/mesh.h"
 #include "rtpro/scene/render_camera.h"
 #include "rtpro/scene/render_settings.h"
@@ -174,6 +175,7 @@ struct RenderScene {
   std::vector<Material> materials;
   std::vector<std::string> material_names;
   std::vector<Light> lights;
+  LightLinks links;              // which lights reach which top-level objects, and whose shadows they cast
   std::optional<Environment> environment;
   std::vector<TextureImage> textures;  // each file and colour space once
   Group top;                     // may contain instances
