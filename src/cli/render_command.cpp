@@ -296,6 +296,7 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   stats.complete = result.complete();
   stats.passes_done = result.passes_done;
   stats.passes_total = result.passes_total;
+  stats.pass_seconds = result.pass_seconds;
   switch (result.stop) {
     case RenderStop::kAllPasses: stats.stop = "all passes"; break;
     case RenderStop::kConverged: stats.stop = "converged"; break;

@@ -60,7 +60,7 @@ nlohmann::json RenderStatistics::json() const {
           {"spp", spp},
           {"resolution", {width, height}},
           {"complete", complete},
-          {"passes", {{"done", passes_done}, {"total", passes_total}, {"stop", stop}}},
+          {"passes", {{"done", passes_done}, {"total", passes_total}, {"stop", stop}, {"seconds", pass_seconds}}},
           {"seconds",
            {{"load", load_seconds},
             {"build", build_seconds},

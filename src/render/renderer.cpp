@@ -123,7 +123,12 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
 
   ProgressiveFilm film(grid);
   Image preview;
+  RenderResult result;
+  Clock::time_point last_merge = start;
   film.on_pass_merged = [&](int pass) {
+    const Clock::time_point now = Clock::now();
+    result.pass_seconds.push_back(std::chrono::duration<double>(now - last_merge).count());
+    last_merge = now;
     if (options.on_pass_merged) options.on_pass_merged(pass, film);
     if (options.on_pass_image) {
       if (preview.data.empty()) preview = Image(scene.camera.width, scene.camera.height, layout.channels());
@@ -135,6 +140,8 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
   const std::vector<const TileResult*> journal = usable_journal_items(options.journal_items, grid);
   for (const TileResult* item : journal) film.add(TileResult(*item));
   sink.count_journal_items(journal.size());
+  result.pass_seconds.clear();  // the journal's passes cost nothing here
+  last_merge = Clock::now();
 
   std::optional<Clock::time_point> deadline;
   if (options.time_limit_seconds > 0.0)
@@ -152,7 +159,6 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
       render_tiles(renderer, grid, source, sink);
   };
 
-  RenderResult result;
   result.passes_total = grid.passes();
   result.tiles_total = grid.count();
   bool deadline_passed = false;

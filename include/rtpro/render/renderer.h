@@ -76,6 +76,8 @@ struct RenderResult {
   int passes_done = 0;
   int passes_total = 0;
   RenderStop stop = RenderStop::kAllPasses;
+  // Of each pass merged here: seconds from the previous pass's merge (the first: from the start).
+  std::vector<double> pass_seconds;
   double seconds = 0.0;
   bool complete() const { return stop != RenderStop::kInterrupted; }
 };
