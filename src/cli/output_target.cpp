@@ -1,6 +1,7 @@
 #include "output_target.h"
 
 #include "rtpro/core/error.h"
+#include "rtpro/core/stale_temporaries.h"
 
 #include <unistd.h>
 
@@ -29,10 +30,15 @@ std::string lowercase(std::string text) {
 
 std::string without_dot(const std::string& format) { return !format.empty() && format[0] == '.' ? format.substr(1) : format; }
 
+constexpr const char* kStdoutTemporaryPrefix = "rtpro-stdout-";
+
+// "$TMPDIR/rtpro-stdout-PID-N.FORMAT"; what killed renders left there before is removed first (a
+// killed `-o -` render left its whole image behind).
 std::filesystem::path temporary_output(const std::string& format) {
   const char* folder = std::getenv("TMPDIR");
-  std::filesystem::path base = folder && *folder ? folder : "/tmp";
-  return base / ("rtpro-stdout-" + std::to_string(::getpid()) + "." + format);
+  const std::filesystem::path base = folder && *folder ? folder : "/tmp";
+  remove_stale_temporaries(base, kStdoutTemporaryPrefix);
+  return base / (owned_temporary_name(kStdoutTemporaryPrefix) + "." + format);
 }
 
 }  // namespace

@@ -30,7 +30,11 @@ void remove_stale_temporaries(const std::filesystem::path& folder, std::string_v
     const auto [after, parsed] = std::from_chars(digits, name.c_str() + name.size(), pid);
     if (parsed != std::errc() || *after != '-') continue;
     std::error_code ignored;
-    if (process_is_gone(pid) && !it->is_symlink(ignored)) std::filesystem::remove(it->path(), ignored);
+    if (!process_is_gone(pid) || it->is_symlink(ignored)) continue;
+    // A folder (the decoded textures of a killed render) goes with its contents; remove_all does
+    // not follow symbolic links inside it.
+    if (it->is_directory(ignored)) std::filesystem::remove_all(it->path(), ignored);
+    else std::filesystem::remove(it->path(), ignored);
   }
 }
 

@@ -1,6 +1,7 @@
 #include "rtpro/image/texture_lookup.h"
 
 #include "rtpro/core/error.h"
+#include "rtpro/core/stale_temporaries.h"
 #include "rtpro/image/color_config.h"
 #include "rtpro/image/image_io.h"
 #include "image_read_budget.h"
@@ -9,7 +10,11 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/texture.h>
 
+#include <sys/stat.h>
+
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -18,15 +23,26 @@ namespace rtpro {
 
 namespace {
 
-// A private folder for the decoded .tx files, removed with the lookup.
+constexpr const char* kTextureFolderPrefix = "rtpro-textures-";
+
+// A private folder for the decoded .tx files, removed with the lookup: "$TMPDIR/rtpro-textures-
+// PID-N", created 0700 (a name already taken is skipped). The folders of killed renders (1.1 GB
+// for an 8k texture) are removed first.
 class TemporaryFolder {
  public:
   TemporaryFolder() {
-    const char* base = std::getenv("TMPDIR");
-    std::string pattern = std::string(base && *base ? base : "/tmp") + "/rtpro-textures-XXXXXX";
-    if (!mkdtemp(pattern.data()))
-      throw RuntimeError("cannot create a folder for decoded textures under " + pattern.substr(0, pattern.rfind('/')));
-    path_ = pattern;
+    const char* folder = std::getenv("TMPDIR");
+    const std::filesystem::path base = folder && *folder ? folder : "/tmp";
+    remove_stale_temporaries(base, kTextureFolderPrefix);
+    for (int attempt = 0; attempt < 64; ++attempt) {
+      const std::filesystem::path candidate = base / owned_temporary_name(kTextureFolderPrefix);
+      if (::mkdir(candidate.c_str(), 0700) == 0) {
+        path_ = candidate;
+        return;
+      }
+      if (errno != EEXIST) break;
+    }
+    throw RuntimeError("cannot create a folder for decoded textures under " + base.string() + ": " + std::strerror(errno));
   }
   ~TemporaryFolder() {
     std::error_code ignored;

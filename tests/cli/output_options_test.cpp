@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cctype>
 #include <fstream>
 #include <iterator>
@@ -142,6 +145,41 @@ TEST(OutputOptions, EveryFormatTheHelpNamesIsWritten) {
     ++written;
   }
   EXPECT_GE(written, 8);
+}
+
+// A killed `-o -` render left its image in $TMPDIR, and a killed textured render its decoded .tx
+// copies (1.1 GB for an 8k texture): the next render removes what dead processes left there, and
+// keeps what a live one is still using.
+TEST(OutputOptions, WhatKilledRendersLeftInTmpdirIsRemovedByTheNextOne) {
+  const auto dir = test::scratch_dir();
+  const auto tmp = dir / "tmp";
+  std::filesystem::create_directories(tmp);
+  Image texture(2, 2);
+  std::fill(texture.data.begin(), texture.data.end(), 0.5f);
+  write_image(dir / "tex.png", texture, {});
+  const auto scene = test::write_file("textured.yaml",
+                                      "rtpro: 1\ncamera: {position: [0, 1, 6], look_at: [0, 0.5, 0], resolution: [24, 16]}\n"
+                                      "render: {spp: 2}\nlights: [{type: point, position: [4, 6, 5]}]\n"
+                                      "materials: {t: {color: {texture: tex.png}}}\n"
+                                      "world: [{type: sphere, center: [0, 0.7, 0], radius: 0.7, material: t}]\n");
+  const std::string dead = std::to_string(test::dead_pid()), alive = std::to_string(::getpid());
+  std::ofstream(tmp / ("rtpro-stdout-" + dead + "-0.png")) << "a killed render's image";
+  std::ofstream(tmp / ("rtpro-stdout-" + alive + "-0.png")) << "a live render's image";
+  std::filesystem::create_directories(tmp / ("rtpro-textures-" + dead + "-0"));
+  std::ofstream(tmp / ("rtpro-textures-" + dead + "-0") / "0.tx") << "a killed render's texture";
+  std::string out;
+  ASSERT_EQ(run_command("{ TMPDIR=" + tmp.string() + " " + rtpro_command("render " + scene.string() + " -q -o - --format png") + " > " +
+                            (dir / "out.png").string() + "; }",
+                        &out),
+            0)
+      << out;
+  EXPECT_GT(read_image(dir / "out.png").width, 0);
+  EXPECT_FALSE(std::filesystem::exists(tmp / ("rtpro-stdout-" + dead + "-0.png")));
+  EXPECT_FALSE(std::filesystem::exists(tmp / ("rtpro-textures-" + dead + "-0")));
+  EXPECT_TRUE(std::filesystem::exists(tmp / ("rtpro-stdout-" + alive + "-0.png")));
+  std::vector<std::string> left;
+  for (const auto& entry : std::filesystem::directory_iterator(tmp)) left.push_back(entry.path().filename().string());
+  EXPECT_EQ(left, std::vector<std::string>{"rtpro-stdout-" + alive + "-0.png"}) << "the render left its own files behind";
 }
 
 }  // namespace output_options_test
