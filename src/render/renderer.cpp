@@ -8,6 +8,7 @@
 #include <tbb/task_arena.h>
 
 #include <chrono>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -57,12 +58,15 @@ class PassItemSource final : public TileSource {
   std::atomic<std::size_t> next_{0};
 };
 
-// Finished work items go to the journal (on_tile_result), then into the film.
+// Finished work items go to the journal (on_tile_result), then into the film. Tiles of the first
+// pass go to the preview as they come, too (a one-pass render shows its progress).
 class FilmSink final : public TileSink {
  public:
-  FilmSink(ProgressiveFilm& film, const RenderOptions& options) : film_(film), options_(options) {}
+  FilmSink(ProgressiveFilm& film, const RenderOptions& options, const std::function<void(const TileResult&)>& preview)
+      : film_(film), options_(options), preview_(preview) {}
   void put(TileResult&& item) override {
     if (options_.on_tile_result) options_.on_tile_result(item);
+    if (preview_ && item.index < film_.grid().tiles_per_pass() && !item.cumulative) preview_(item);
     film_.add(std::move(item));
     const std::size_t done = done_.fetch_add(1) + 1;
     if (options_.on_tile_done) options_.on_tile_done(done, film_.grid().count());
@@ -73,6 +77,7 @@ class FilmSink final : public TileSink {
  private:
   ProgressiveFilm& film_;
   const RenderOptions& options_;
+  const std::function<void(const TileResult&)>& preview_;
   std::atomic<std::size_t> done_{0};
 };
 
@@ -123,6 +128,8 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
 
   ProgressiveFilm film(grid);
   Image preview;
+  std::mutex preview_mutex;
+  if (options.on_pass_image) preview = Image(scene.camera.width, scene.camera.height, layout.channels());
   RenderResult result;
   Clock::time_point last_merge = start;
   film.on_pass_merged = [&](int pass) {
@@ -131,12 +138,24 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
     last_merge = now;
     if (options.on_pass_merged) options.on_pass_merged(pass, film);
     if (options.on_pass_image) {
-      if (preview.data.empty()) preview = Image(scene.camera.width, scene.camera.height, layout.channels());
+      const std::lock_guard lock(preview_mutex);
       film.resolve(layout, preview);
       options.on_pass_image(preview, grid.region());
     }
   };
-  FilmSink sink(film, options);
+  // A first-pass tile alone: the film holds nothing before it.
+  std::function<void(const TileResult&)> preview_tile;
+  if (options.on_pass_image)
+    preview_tile = [&](const TileResult& item) {
+      const std::lock_guard lock(preview_mutex);
+      const auto channels = static_cast<std::size_t>(layout.channel_count());
+      const float* packed = item.pixels.data();
+      for (int y = item.region.y0; y < item.region.y1; ++y)
+        for (int x = item.region.x0; x < item.region.x1; ++x, packed += kAccumulatorFloats)
+          layout.resolve(unpack(packed), std::span<float>(&preview.at(x, y, 0), channels));
+      options.on_pass_image(preview, item.region);
+    };
+  FilmSink sink(film, options, preview_tile);
   const std::vector<const TileResult*> journal = usable_journal_items(options.journal_items, grid);
   for (const TileResult* item : journal) film.add(TileResult(*item));
   sink.count_journal_items(journal.size());

@@ -40,8 +40,9 @@ struct RenderOptions {
   AdaptiveSampling adaptive;
   // Called after each finished work item (from worker threads) with items done and the grid's total.
   std::function<void(std::size_t, std::size_t)> on_tile_done;
-  // Called after each merged pass with the image of the passes so far (full camera size) and the
-  // region it covers: live previews read it. Resolving the image costs a pass over the film.
+  // Live previews: called with the image (full camera size) and the region that changed in it,
+  // after each tile of the first pass (its pixels so far) and after each merged pass (the whole
+  // region: the passes so far). Resolving the image costs a pass over the film.
   std::function<void(const Image&, const PixelRegion&)> on_pass_image;
   // Called after each merged pass with its number and the film (a journal compacts itself).
   std::function<void(int, const ProgressiveFilm&)> on_pass_merged;
