@@ -1,0 +1,175 @@
+"""Renders the environment benchmark's spheres with Cycles, for
+benchmarks/cycles_environment_benchmark.sh. Run by Debian's Blender 3.4:
+
+  blender -b --factory-startup --python render_environment.py -- HDRI.exr OUT.exr WIDTH HEIGHT SPP MAX_DEPTH THREADS
+
+The scene is the one the script writes for rtpro (positions in rtpro's +Y-up axes, turned to
+Blender's +Z-up ones: (x, y, z) -> (x, -z, y)): a ground sphere of radius 1000 under a Lambertian
+clay sphere and a white rough metal sphere, lit only by the HDRI as the world (an Environment
+Texture, rotated as rtpro's `rotation: [0, 160, 0]`, which FORMAT.md states is a Mapping node
+rotation of -160 degrees about Blender's Z). Spheres are meshes with the exact sphere normal at each
+vertex: the small ones UV spheres of 256 x 128 quads, the ground the part of its sphere within 190
+units of the top (a 600 x 600 grid, 0.63 units a cell, its faces 0.05 mm from the sphere; every
+point a camera ray or a path from the objects can reach lies inside it, the rest hiding below the
+horizon). Blender's own UV sphere operators take minutes at these sizes, so the meshes are built
+from numpy arrays. The materials are the same models:
+Cycles' Diffuse BSDF at roughness 0 (Lambert) and its Glossy BSDF with multiple-scattering GGX at
+roughness 0.3 (alpha = roughness^2, as rtpro's conductor) of colour 1 (rtpro's conductor of colour 1:
+Schlick's Fresnel from F0 = 1 is 1 at every angle). The world uses multiple importance sampling
+(sampling_method AUTOMATIC); settings otherwise as render_gltf.py's (no adaptive sampling, no
+denoising, a one-pixel box filter, no clamping, Standard view, 32-bit EXR; Cycles' max_bounces is
+rtpro's max_depth - 1).
+Prints one line: "cycles_render_seconds S".
+"""
+import math
+import sys
+import time
+
+import bpy
+import numpy
+from mathutils import Vector
+
+args = sys.argv[sys.argv.index("--") + 1:]
+hdri, out_file = args[0], args[1]
+width, height, spp, max_depth, threads = (int(a) for a in args[2:7])
+
+bpy.ops.wm.read_factory_settings(use_empty=True)
+scene = bpy.context.scene
+
+
+def blender_axes(p):
+    """rtpro's +Y-up (x, y, z) in Blender's +Z-up axes."""
+    return Vector((p[0], -p[2], p[1]))
+
+
+def material(name, kind, color):
+    m = bpy.data.materials.new(name)
+    m.use_nodes = True
+    nodes, links = m.node_tree.nodes, m.node_tree.links
+    nodes.clear()
+    output = nodes.new("ShaderNodeOutputMaterial")
+    if kind == "lambert":
+        bsdf = nodes.new("ShaderNodeBsdfDiffuse")
+        bsdf.inputs["Roughness"].default_value = 0.0
+    else:
+        bsdf = nodes.new("ShaderNodeBsdfGlossy")
+        bsdf.distribution = "MULTI_GGX"
+        bsdf.inputs["Roughness"].default_value = 0.3
+    bsdf.inputs["Color"].default_value = (color[0], color[1], color[2], 1.0)
+    links.new(bsdf.outputs["BSDF"], output.inputs["Surface"])
+    return m
+
+
+def mesh_object(name, points, quads, center, mat):
+    """A mesh of quads (degenerate ones at poles are fine) with the sphere's normals about `center`."""
+    mesh = bpy.data.meshes.new(name)
+    mesh.vertices.add(len(points))
+    mesh.vertices.foreach_set("co", points.astype(numpy.float32).ravel())
+    mesh.loops.add(quads.size)
+    mesh.loops.foreach_set("vertex_index", quads.astype(numpy.int32).ravel())
+    mesh.polygons.add(len(quads))
+    mesh.polygons.foreach_set("loop_start", numpy.arange(0, quads.size, 4, dtype=numpy.int32))
+    mesh.polygons.foreach_set("loop_total", numpy.full(len(quads), 4, dtype=numpy.int32))
+    mesh.polygons.foreach_set("use_smooth", numpy.ones(len(quads), dtype=bool))
+    mesh.update(calc_edges=True)
+    mesh.validate()
+    normals = points - numpy.asarray(center)
+    normals /= numpy.linalg.norm(normals, axis=1)[:, None]
+    mesh.use_auto_smooth = True
+    mesh.normals_split_custom_set_from_vertices([tuple(n) for n in normals])
+    mesh.materials.append(mat)
+    obj = bpy.data.objects.new(name, mesh)
+    scene.collection.objects.link(obj)
+    return obj
+
+
+def grid_quads(rows, columns):
+    """Quads of a (rows + 1) x (columns + 1) grid of vertices, row by row, wound so that their
+    normal is (next row - this row) x (next column - this column): outwards for the spheres below."""
+    r, c = numpy.meshgrid(numpy.arange(rows), numpy.arange(columns), indexing="ij")
+    first = (r * (columns + 1) + c).ravel()
+    return numpy.stack([first, first + columns + 1, first + columns + 2, first + 1], axis=1)
+
+
+def uv_sphere(name, center, radius, mat, segments=256, rings=128):
+    c = blender_axes(center)
+    theta = numpy.linspace(0.0, numpy.pi, rings + 1)[:, None]
+    phi = numpy.linspace(0.0, 2.0 * numpy.pi, segments + 1)[None, :]
+    points = numpy.stack([numpy.sin(theta) * numpy.cos(phi), numpy.sin(theta) * numpy.sin(phi),
+                          numpy.cos(theta) * numpy.ones_like(phi)], axis=-1).reshape(-1, 3) * radius + numpy.asarray(c)
+    return mesh_object(name, points, grid_quads(rings, segments), c, mat)
+
+
+def ground_cap(name, radius, mat, half_width=190.0, cells=600):
+    """The top of the sphere of `radius` whose top is at the origin, over a square of the xy plane."""
+    u = numpy.linspace(-half_width, half_width, cells + 1)
+    x, y = numpy.meshgrid(u, u, indexing="ij")
+    z = numpy.sqrt(radius * radius - x * x - y * y) - radius
+    points = numpy.stack([x, y, z], axis=-1).reshape(-1, 3)
+    return mesh_object(name, points, grid_quads(cells, cells), (0.0, 0.0, -radius), mat)
+
+
+ground_cap("ground", 1000.0, material("ground", "lambert", (0.4, 0.4, 0.4)))
+uv_sphere("clay", (-0.6, 0.5, 0), 0.5, material("clay", "lambert", (0.8, 0.6, 0.5)))
+uv_sphere("metal", (0.6, 0.5, 0), 0.5, material("metal", "glossy", (1.0, 1.0, 1.0)))
+
+camera_data = bpy.data.cameras.new("camera")
+camera_data.sensor_fit = "VERTICAL"
+camera_data.angle_y = math.radians(35.0)
+camera = bpy.data.objects.new("camera", camera_data)
+scene.collection.objects.link(camera)
+camera.location = blender_axes((0, 0.7, -4))
+camera.rotation_euler = (blender_axes((0, 0.35, 0)) - camera.location).to_track_quat("-Z", "Y").to_euler()
+scene.camera = camera
+
+world = bpy.data.worlds.new("hdri")
+scene.world = world
+world.use_nodes = True
+nodes, links = world.node_tree.nodes, world.node_tree.links
+texture = nodes.new("ShaderNodeTexEnvironment")
+texture.image = bpy.data.images.load(hdri)
+texture.interpolation = "Linear"
+mapping = nodes.new("ShaderNodeMapping")
+mapping.vector_type = "POINT"
+mapping.inputs["Rotation"].default_value = (0.0, 0.0, math.radians(-160.0))
+coordinates = nodes.new("ShaderNodeTexCoord")
+links.new(coordinates.outputs["Generated"], mapping.inputs["Vector"])
+links.new(mapping.outputs["Vector"], texture.inputs["Vector"])
+links.new(texture.outputs["Color"], nodes["Background"].inputs["Color"])
+nodes["Background"].inputs["Strength"].default_value = 1.0
+world.cycles.sampling_method = "AUTOMATIC"
+
+scene.render.engine = "CYCLES"
+cycles = scene.cycles
+cycles.device = "CPU"
+cycles.samples = spp
+cycles.use_adaptive_sampling = False
+cycles.use_denoising = False
+cycles.pixel_filter_type = "BOX"
+cycles.filter_width = 1.0
+cycles.sample_clamp_direct = 0.0
+cycles.sample_clamp_indirect = 0.0
+cycles.max_bounces = max_depth - 1
+cycles.diffuse_bounces = cycles.glossy_bounces = cycles.transmission_bounces = max_depth - 1
+cycles.transparent_max_bounces = max_depth - 1
+cycles.caustics_reflective = cycles.caustics_refractive = True
+cycles.blur_glossy = 0.0
+cycles.seed = 0
+scene.render.threads_mode = "FIXED"
+scene.render.threads = threads
+scene.render.resolution_x = width
+scene.render.resolution_y = height
+scene.render.resolution_percentage = 100
+scene.render.use_persistent_data = False
+scene.view_settings.view_transform = "Standard"
+scene.view_settings.look = "None"
+scene.view_settings.exposure = 0.0
+scene.view_settings.gamma = 1.0
+scene.render.image_settings.file_format = "OPEN_EXR"
+scene.render.image_settings.color_depth = "32"
+scene.render.image_settings.exr_codec = "ZIP"
+scene.render.filepath = out_file
+
+start = time.perf_counter()
+bpy.ops.render.render(write_still=True)
+print("cycles_render_seconds %.3f" % (time.perf_counter() - start))
