@@ -114,6 +114,17 @@ TEST(GltfJsonTypes, PropertiesTinygltfSkipsWhenMistypedAreRefusedAtTheirPath) {
   }
 }
 
+// "light -2 does not exist": a negative index is a type error at its JSON path.
+TEST(GltfJsonTypes, ANegativeLightIndexIsRefusedAtItsPath) {
+  GltfFile gltf = plain_triangle();
+  gltf.json["extensionsUsed"] = {"KHR_lights_punctual"};
+  gltf.json["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}}};
+  gltf.json["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", -2}}}}}});
+  gltf.json["scenes"][0]["nodes"] = {0, 1};
+  EXPECT_NE(error_of(gltf.write("negative_light")).find("nodes[1].extensions.KHR_lights_punctual.light: a non-negative integer expected, found -2"),
+            std::string::npos);
+}
+
 TEST(GltfMesh, TruncatedTriangleArraysAreRefused) {
   GltfFile indexed;
   indexed.scene({indexed.node({{"mesh", indexed.mesh(indexed.floats(kTriangle, "VEC3"), indexed.indices({0, 1, 2, 0}))}})});
