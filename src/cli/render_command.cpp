@@ -152,6 +152,11 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   // Only the leader writes: the output's folder may not even exist on another rank's node.
   if (leader) check_image_output(output.file());
   if (leader && !o.stats_json.empty()) check_replaceable(o.stats_json);
+  // One file named twice would be replaced by the other output, or replace the scene.
+  if (leader) {
+    check_output_is_distinct({"--stats-json", o.stats_json}, {{"-o", o.output}, {"the scene", o.scene}});
+    check_output_is_distinct({"-o", o.output}, {{"the scene", o.scene}});
+  }
   ImageWriteOptions write_options;
   if (!o.ocio_config.empty()) write_options.ocio_config = o.ocio_config;
   write_options.display = display;

@@ -156,6 +156,25 @@ TEST(OutputFaults, StatsJsonNeverReplacesADeviceOrASymlink) {
   EXPECT_EQ(read_all(victim), "precious");
 }
 
+// --stats-json naming the image (under another spelling) or the scene: refused before rendering,
+// both names in the message, every file as it was.
+TEST(OutputFaults, AnOutputThatIsTheImageOrTheSceneIsRefusedBeforeRendering) {
+  const auto dir = scratch_dir();
+  const auto scene = write_file("scene.yaml", read_all(scenes_dir() / "demo.yaml"));
+  const auto image = dir / "x.png";
+  std::ofstream(image) << "a previous good image";
+  const std::string same_image = (dir / "." / "x.png").string();
+  for (const auto& [target, other] : {std::pair{same_image, std::string("-o")}, std::pair{scene.string(), std::string("the scene")}}) {
+    const CappedRun run = run_capped({rtpro_executable().string(), "render", scene.string(), "--size", "8x8", "--spp",
+                                      "1", "-o", image.string(), "--stats-json", target});
+    EXPECT_EQ(run.exit_code, 2) << target << ": " << run.output;
+    EXPECT_NE(run.output.find("--stats-json"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(other), std::string::npos) << run.output;
+  }
+  EXPECT_EQ(read_all(image), "a previous good image");
+  EXPECT_EQ(read_all(scene), read_all(scenes_dir() / "demo.yaml"));
+}
+
 // SIGKILL at random moments of a render that replaces a good image: the target is always the
 // old image or a complete new one, and the temporaries the killed runs left are gone after the
 // next run that writes the same target.
