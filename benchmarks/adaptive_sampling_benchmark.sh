@@ -12,30 +12,12 @@
 set -eu
 rtpro=$(realpath "$1")
 scenes=$(realpath "$(dirname "$0")/../scenes")
+cornell_glass=$(realpath "$(dirname "$0")/scenes/cornell_glass.yaml")  # the box with a glass sphere
 max_spp=${3:-1024}
 rounds=${4:-3}
 threshold=${5:-0.02}
 mkdir -p "$2"
 cd "$2"
-# The Cornell box with its short block replaced by a glass sphere (as in denoiser_benchmark.sh).
-cat > cornell_glass.yaml <<EOF2
-rtpro: 1
-camera: {position: [278, 273, -800], look_at: [278, 273, 0], fov: 39.3077, resolution: [128, 128]}
-render: {integrator: path, spp: 16, max_depth: 8, seed: 0}
-materials:
-  white: {type: diffuse, color: [0.725, 0.71, 0.68]}
-  red: {type: diffuse, color: [0.63, 0.065, 0.05]}
-  green: {type: diffuse, color: [0.14, 0.45, 0.091]}
-  light: {type: diffuse, color: [0.78, 0.78, 0.78], emission: [17, 12, 4]}
-  glass: {type: dielectric, ior: 1.5}
-world:
-  - {type: mesh, file: $scenes/meshes/cornell_white.obj, material: white}
-  - {type: mesh, file: $scenes/meshes/cornell_red.obj, material: red}
-  - {type: mesh, file: $scenes/meshes/cornell_green.obj, material: green}
-  - {type: mesh, file: $scenes/meshes/cornell_tall_block.obj, material: white}
-  - {type: mesh, file: $scenes/meshes/cornell_light.obj, material: light}
-  - {type: sphere, center: [186, 100, 169], radius: 100, material: glass}
-EOF2
 rel_mse() {  # TEST REFERENCE
   oiiotool "$1" --ch R,G,B -o rgb_test.exr
   oiiotool "$2" --ch R,G,B -o rgb_reference.exr
@@ -68,6 +50,6 @@ measure() {  # NAME SCENE ARGS...
        "ratio $(echo "$u $a" | awk '{printf "%.2f", $1 / $2}')"
 }
 
-measure cornell_glass cornell_glass.yaml --threads 2
+measure cornell_glass "$cornell_glass" --size 128x128 --threads 2
 measure dragon_sunset "$scenes/dragon.yaml" --integrator path --size 160x120 --threads 2 \
   --set "environment={file: $scenes/environments/sunset.exr}"

@@ -16,28 +16,10 @@ set -eu
 
 rtpro=$(realpath "$1")
 scenes=$(realpath "$(dirname "$0")/../scenes")
+cornell_glass=$(realpath "$(dirname "$0")/scenes/cornell_glass.yaml")  # the box with a glass sphere
 mkdir -p "$2"
 cd "$2"
 
-# The Cornell box with its short block replaced by a glass sphere.
-cat > cornell_glass.yaml <<EOF
-rtpro: 1
-camera: {position: [278, 273, -800], look_at: [278, 273, 0], fov: 39.3077, resolution: [256, 256]}
-render: {integrator: path, spp: 16, max_depth: 8, seed: 0}
-materials:
-  white: {type: diffuse, color: [0.725, 0.71, 0.68]}
-  red: {type: diffuse, color: [0.63, 0.065, 0.05]}
-  green: {type: diffuse, color: [0.14, 0.45, 0.091]}
-  light: {type: diffuse, color: [0.78, 0.78, 0.78], emission: [17, 12, 4]}
-  glass: {type: dielectric, ior: 1.5}
-world:
-  - {type: mesh, file: $scenes/meshes/cornell_white.obj, material: white}
-  - {type: mesh, file: $scenes/meshes/cornell_red.obj, material: red}
-  - {type: mesh, file: $scenes/meshes/cornell_green.obj, material: green}
-  - {type: mesh, file: $scenes/meshes/cornell_tall_block.obj, material: white}
-  - {type: mesh, file: $scenes/meshes/cornell_light.obj, material: light}
-  - {type: sphere, center: [186, 100, 169], radius: 100, material: glass}
-EOF
 
 render() {  # OUTPUT SPP SEED SCENE ARGS... (sh has no local variables: positional ones only)
   set -- "$@" --spp "$2" --seed "$3" --aov albedo,normal,depth -o "$1.exr" --skip-existing -q
@@ -68,6 +50,6 @@ measure() {  # NAME REFERENCE_SPP SCENE ARGS...
        "noisy 128 spp $(rel_mse "${name}_128.exr" "${name}_reference.exr")"
 }
 
-measure cornell_glass 4096 cornell_glass.yaml
+measure cornell_glass 4096 "$cornell_glass"
 measure dragon 4096 "$scenes/dragon.yaml" --integrator path --size 320x240
 measure textures 2048 "$scenes/textures.yaml" --integrator path --size 256x192
