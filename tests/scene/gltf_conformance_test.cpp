@@ -4,6 +4,7 @@
 #include "rtpro/core/error.h"
 #include "gltf_asset.h"
 #include "gltf_loader.h"
+#include "gltf_load_error.h"
 #include "gltf_test_files.h"
 #include "test_paths.h"
 
@@ -18,18 +19,8 @@ namespace gltf_conformance_test {
 
 using test::GltfFile;
 
-const std::vector<float> kTriangle = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-
-std::string error_of(const std::filesystem::path& file) {
-  try {
-    load_gltf_file(file);
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.where().file, file.string());
-    return e.message();
-  }
-  ADD_FAILURE() << file << " loaded";
-  return {};
-}
+using test::kTriangle;
+const auto error_of = test::gltf_error_of;
 
 bool warned(const GltfAsset& asset, const std::string& text) {
   for (const std::string& w : asset.stats.warnings)

@@ -1,6 +1,7 @@
 #include "rtpro/core/error.h"
 #include "gltf_asset.h"
 #include "gltf_loader.h"
+#include "gltf_load_error.h"
 #include "gltf_test_files.h"
 #include "mtl_parser.h"
 #include "rtpro/scene/build_render_scene.h"
@@ -19,18 +20,8 @@ namespace gltf_loader_test {
 
 using test::GltfFile;
 
-const std::vector<float> kTriangle = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-
-std::string error_of(const std::filesystem::path& file) {
-  try {
-    load_gltf_file(file);
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.where().file, file.string());
-    return e.message();
-  }
-  ADD_FAILURE() << file << " loaded";
-  return {};
-}
+using test::kTriangle;
+const auto error_of = test::gltf_error_of;
 
 void expect_near(const Vec3& a, const Vec3& b) {
   EXPECT_NEAR(a.x, b.x, 1e-5f);
