@@ -23,10 +23,14 @@ Prints one line: "cycles_render_seconds S".
 """
 import math
 import sys
+import os
 import time
 
 import bpy
 import numpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cycles_settings import configure_cycles  # noqa: E402
 from mathutils import Vector
 
 args = sys.argv[sys.argv.index("--") + 1:]
@@ -139,24 +143,7 @@ links.new(texture.outputs["Color"], nodes["Background"].inputs["Color"])
 nodes["Background"].inputs["Strength"].default_value = 1.0
 world.cycles.sampling_method = "AUTOMATIC"
 
-scene.render.engine = "CYCLES"
-cycles = scene.cycles
-cycles.device = "CPU"
-cycles.samples = spp
-cycles.use_adaptive_sampling = False
-cycles.use_denoising = False
-cycles.pixel_filter_type = "BOX"
-cycles.filter_width = 1.0
-cycles.sample_clamp_direct = 0.0
-cycles.sample_clamp_indirect = 0.0
-cycles.max_bounces = max_depth - 1
-cycles.diffuse_bounces = cycles.glossy_bounces = cycles.transmission_bounces = max_depth - 1
-cycles.transparent_max_bounces = max_depth - 1
-cycles.caustics_reflective = cycles.caustics_refractive = True
-cycles.blur_glossy = 0.0
-cycles.seed = 0
-scene.render.threads_mode = "FIXED"
-scene.render.threads = threads
+configure_cycles(scene, spp, max_depth, threads)
 scene.render.resolution_x = width
 scene.render.resolution_y = height
 scene.render.resolution_percentage = 100
