@@ -1,7 +1,7 @@
 #include "bvh.h"
 
 #include "box4.h"
-#include "huge_page_buffer.h"
+#include "rtpro/core/huge_page_buffer.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

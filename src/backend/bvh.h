@@ -1,7 +1,7 @@
 #pragma once
 // The native backend's bounding volume hierarchy: binned SAH over the primitives of one group
 // (spheres, triangles and instances alike), stored in 32-byte nodes with sibling pairs.
-#include "huge_page_buffer.h"
+#include "rtpro/core/huge_page_buffer.h"
 #include "rtpro/core/bbox.h"
 #include "rtpro/scene/render_scene.h"
 

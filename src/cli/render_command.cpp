@@ -251,7 +251,7 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
     settings.adaptive = render_options.adaptive;
     const JobIdentity identity = render_job_identity(description, report, scene, settings);
     if (job) agree_on_job(*job, identity);
-    if (journaled) opened = open_render_journal(output.file(), identity, grid, kAccumulatorFloats, o.resume, log);
+    if (journaled) opened = open_render_journal(output.file(), identity, grid, render_sums(render_options).floats(), o.resume, log);
   }
   if (opened.journal) {
     render_options.journal_items = opened.finished;
@@ -259,12 +259,12 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
     // Every pass's records would make the journal spp/step times the film: once it holds twice the
     // film, the sums so far replace the records they sum.
     render_options.on_pass_merged = [journal = opened.journal.get()](int, const ProgressiveFilm& film) {
-      const std::size_t film_bytes = film.grid().region().pixel_count() * kAccumulatorFloats * sizeof(float);
-      if (journal->bytes() > 2 * film_bytes) journal->rewrite(film.journal_items());
+      if (journal->bytes() > 2 * film.bytes()) journal->rewrite(film.journal_items());
     };
   }
   if (!leader) {
-    const TileRenderer renderer(scene, *backend, grid, render_options.textures, render_options.environment);
+    const TileRenderer renderer(scene, *backend, grid, render_sums(render_options), render_options.textures,
+                                render_options.environment);
     // mpirun passes Ctrl-C on as SIGTERM to every rank: each finishes its tiles in flight and
     // rank 0 writes the partial image, as a single process does (if mpirun allows the time:
     // its odls_base_sigkill_timeout, 1 s by default).

@@ -277,7 +277,7 @@ void agree_on_job(Communicator& communicator, const JobIdentity& identity) {
 std::vector<RankStats> lead_distributed_render(Communicator& communicator, const TileRenderer& renderer,
                                                const TileGrid& grid, TileSource& source, TileSink& sink,
                                                PrestartedThread* render_thread) {
-  const int channels = kAccumulatorFloats;
+  const int channels = renderer.sums().floats();
   std::vector<RankStats> ranks(static_cast<std::size_t>(communicator.size()));
   for (int r = 0; r < communicator.size(); ++r) ranks[std::size_t(r)].rank = r;
   RankClock clock;
@@ -350,7 +350,7 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
 
 void follow_distributed_render(Communicator& communicator, const TileRenderer& renderer, const TileGrid& grid,
                                int threads, const std::atomic<bool>* cancel) {
-  const int channels = kAccumulatorFloats;
+  const int channels = renderer.sums().floats();
   RankClock clock;
   OutgoingTiles outgoing(clock);
   GrantedTiles granted(clock, cancel, [&outgoing] { outgoing.wake(); });

@@ -3,7 +3,6 @@
 #include "rtpro/core/error.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 
 namespace rtpro {
@@ -44,74 +43,19 @@ std::vector<std::string> channels_for(const std::vector<Aov>& aovs) {
 
 FilmLayout::FilmLayout(std::vector<Aov> aovs) : aovs_(std::move(aovs)), channels_(channels_for(aovs_)) {}
 
-void PixelAccumulator::merge(const PixelAccumulator& later) {
-  if (later.samples == 0) return;
-  radiance += later.radiance;
-  even_radiance += later.even_radiance;
-  odd_radiance += later.odd_radiance;
-  radiance_squared += later.radiance_squared;
-  albedo += later.albedo;
-  normal += later.normal;
-  depth_sum += later.depth_sum;
-  hits += later.hits;
-  if (!has_first) {
-    has_first = later.has_first;
-    first_object_id = later.first_object_id;
+void FilmLayout::resolve_row(const SumLayout& sums, const float* pixel_sums, int pixels, float* out) const {
+  const auto channels = static_cast<std::size_t>(channel_count());
+  const auto floats = static_cast<std::size_t>(sums.floats());
+  for (int p = 0; p < pixels; ++p, pixel_sums += floats, out += channels) {
+    if (!aovs_.empty()) {
+      resolve(sums.load(pixel_sums), std::span<float>(out, channels));
+      continue;
+    }
+    // The colour alone, as resolve() computes it, without assembling the pixel's accumulator.
+    const int samples = SumLayout::samples(pixel_sums);
+    const float inv = samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f;
+    for (int c = 0; c < 3; ++c) out[c] = samples > 0 ? pixel_sums[c] * inv : 0.0f;
   }
-  samples += later.samples;
-}
-
-namespace {
-
-void pack_color(const Color& c, float*& out) {
-  *out++ = c.x;
-  *out++ = c.y;
-  *out++ = c.z;
-}
-
-Color unpack_color(const float*& in) {
-  const Color c(in[0], in[1], in[2]);
-  in += 3;
-  return c;
-}
-
-template <typename T>
-float bits_as_float(T value) {
-  static_assert(sizeof(T) == sizeof(float));
-  return std::bit_cast<float>(value);
-}
-
-}  // namespace
-
-void pack(const PixelAccumulator& acc, float* out) {
-  pack_color(acc.radiance, out);
-  pack_color(acc.even_radiance, out);
-  pack_color(acc.odd_radiance, out);
-  pack_color(acc.radiance_squared, out);
-  pack_color(acc.albedo, out);
-  pack_color(Color(acc.normal.x, acc.normal.y, acc.normal.z), out);
-  *out++ = acc.depth_sum;
-  *out++ = bits_as_float(acc.hits);
-  *out++ = bits_as_float(acc.first_object_id);
-  *out++ = bits_as_float(static_cast<std::uint32_t>(acc.has_first));
-  *out++ = bits_as_float(acc.samples);
-}
-
-PixelAccumulator unpack(const float* in) {
-  PixelAccumulator acc;
-  acc.radiance = unpack_color(in);
-  acc.even_radiance = unpack_color(in);
-  acc.odd_radiance = unpack_color(in);
-  acc.radiance_squared = unpack_color(in);
-  acc.albedo = unpack_color(in);
-  const Color n = unpack_color(in);
-  acc.normal = Vec3(n.x, n.y, n.z);
-  acc.depth_sum = *in++;
-  acc.hits = std::bit_cast<int>(*in++);
-  acc.first_object_id = std::bit_cast<std::uint32_t>(*in++);
-  acc.has_first = std::bit_cast<std::uint32_t>(*in++) != 0;
-  acc.samples = std::bit_cast<int>(*in++);
-  return acc;
 }
 
 void FilmLayout::resolve(const PixelAccumulator& acc, std::span<float> pixel) const {

@@ -2,29 +2,31 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <span>
 #include <stdexcept>
 
 namespace rtpro {
 
-ProgressiveFilm::ProgressiveFilm(const TileGrid& grid)
-    : grid_(grid), pixels_(grid.region().pixel_count()), tile_rays_(grid.tiles_per_pass()),
+ProgressiveFilm::ProgressiveFilm(const TileGrid& grid, const SumLayout& sums)
+    : grid_(grid), sums_(sums), pixels_(grid.region().pixel_count() * static_cast<std::size_t>(sums.floats())),
+      first_pass_tiles_(grid.tiles_per_pass(), kTileAbsent), tile_rays_(grid.tiles_per_pass()),
       tile_nan_samples_(grid.tiles_per_pass(), 0) {}
 
-void ProgressiveFilm::merge_item(const TileResult& item, bool cumulative) {
-  const PixelRegion& region = grid_.region();
-  const auto width = static_cast<std::size_t>(region.width());
-  const float* packed = item.pixels.data();
-  for (int y = item.region.y0; y < item.region.y1; ++y) {
-    PixelAccumulator* row = &pixels_[static_cast<std::size_t>(y - region.y0) * width +
-                                     static_cast<std::size_t>(item.region.x0 - region.x0)];
-    for (int x = 0; x < item.region.width(); ++x, packed += kAccumulatorFloats) {
-      if (cumulative)
-        row[x] = unpack(packed);
-      else
-        row[x].merge(unpack(packed));
+void ProgressiveFilm::merge_pixels(const TileResult& item, bool cumulative) {
+  const std::size_t row_floats = static_cast<std::size_t>(item.region.width() * sums_.floats());
+  const float* later = item.pixels.data();
+  for (int y = item.region.y0; y < item.region.y1; ++y, later += row_floats) {
+    float* row = pixels_.data() + sums_offset(item.region.x0, y);
+    if (cumulative) {
+      std::copy(later, later + row_floats, row);
+      continue;
     }
+    sums_.merge(row, later, static_cast<std::size_t>(item.region.width()));
   }
+}
+
+void ProgressiveFilm::count_cost(const TileResult& item) {
   const std::size_t tile = item.index % grid_.tiles_per_pass();
   tile_rays_[tile] += item.rays;
   tile_nan_samples_[tile] += item.nan_samples;
@@ -32,20 +34,36 @@ void ProgressiveFilm::merge_item(const TileResult& item, bool cumulative) {
 
 void ProgressiveFilm::add(TileResult&& item) {
   const std::size_t tiles = grid_.tiles_per_pass();
-  if (item.index >= grid_.count() || item.pixels.size() != item.region.pixel_count() * kAccumulatorFloats)
+  if (item.index >= grid_.count() || item.pixels.size() != item.region.pixel_count() * static_cast<std::size_t>(sums_.floats()))
     throw std::logic_error("ProgressiveFilm: an item that is not a work item of this grid");
   const int pass = grid_.pass(item.index);
   std::unique_lock lock(mutex_);
   ++items_in_;
   if (item.cumulative) {
-    if (merging_ || !waiting_.empty() || (cumulative_tiles_ > 0 && pass != cumulative_pass_))
+    if (merging_ || !waiting_.empty() || first_pass_in_ > 0 || (cumulative_tiles_ > 0 && pass != cumulative_pass_))
       throw std::logic_error("ProgressiveFilm: cumulative items of different passes, or after other items");
-    merge_item(item, true);
+    merge_pixels(item, true);
+    count_cost(item);
     cumulative_pass_ = pass;
     if (++cumulative_tiles_ == tiles) merged_ = pass + 1;
     return;
   }
   if (pass < merged_) return;  // summed in a cumulative item already
+  if (pass == 0) {
+    // The first pass adds to sums of nothing, so its tiles go in as they come (tiles own disjoint
+    // pixels) and their items are freed at once: a one-pass render holds no second copy of the film.
+    std::uint8_t& state = first_pass_tiles_[item.index];
+    if (state != kTileAbsent) return;
+    state = kTileMerging;
+    ++first_pass_in_;
+    lock.unlock();
+    merge_pixels(item, false);
+    lock.lock();
+    state = kTileMerged;
+    count_cost(item);
+    if (++first_pass_merged_ == tiles) merge_ready_passes(lock);
+    return;
+  }
   WaitingPass& waiting = waiting_[pass];
   if (waiting.items.empty()) waiting.items.resize(tiles);
   TileResult& slot = waiting.items[item.index % tiles];
@@ -59,14 +77,19 @@ void ProgressiveFilm::merge_ready_passes(std::unique_lock<std::mutex>& lock) {
   if (merging_) return;  // the merging thread takes this pass too when it is ready
   merging_ = true;
   const std::size_t tiles = grid_.tiles_per_pass();
-  for (auto ready = waiting_.find(merged_); ready != waiting_.end() && ready->second.count == tiles;
-       ready = waiting_.find(merged_)) {
-    std::vector<TileResult> items = std::move(ready->second.items);
-    waiting_.erase(ready);
-    lock.unlock();
-    tbb::parallel_for(std::size_t{0}, items.size(), [&](std::size_t i) { merge_item(items[i], false); });
-    items.clear();
-    lock.lock();
+  for (;;) {
+    if (merged_ == 0) {
+      if (first_pass_merged_ < tiles) break;  // merged tile by tile as they came
+    } else {
+      const auto ready = waiting_.find(merged_);
+      if (ready == waiting_.end() || ready->second.count < tiles) break;
+      std::vector<TileResult> items = std::move(ready->second.items);
+      waiting_.erase(ready);
+      lock.unlock();
+      tbb::parallel_for(std::size_t{0}, items.size(), [&](std::size_t i) { merge_pixels(items[i], false); });
+      lock.lock();
+      for (const TileResult& item : items) count_cost(item);
+    }
     const int pass = merged_++;
     if (on_pass_merged) {
       lock.unlock();
@@ -86,6 +109,7 @@ bool ProgressiveFilm::has(std::size_t index) const {
   std::lock_guard lock(mutex_);
   const int pass = grid_.pass(index);
   if (pass < merged_) return true;
+  if (pass == 0) return first_pass_tiles_[index] != kTileAbsent;
   const auto waiting = waiting_.find(pass);
   return waiting != waiting_.end() && !waiting->second.items.empty() &&
          !waiting->second.items[index % grid_.tiles_per_pass()].pixels.empty();
@@ -93,26 +117,28 @@ bool ProgressiveFilm::has(std::size_t index) const {
 
 void ProgressiveFilm::resolve(const FilmLayout& layout, Image& image) const {
   const PixelRegion& region = grid_.region();
-  const auto channels = static_cast<std::size_t>(layout.channel_count());
   tbb::parallel_for(region.y0, region.y1, [&](int y) {
-    for (int x = region.x0; x < region.x1; ++x)
-      layout.resolve(pixel(x, y), std::span<float>(&image.at(x, y, 0), channels));
+    layout.resolve_row(sums_, pixel_sums(region.x0, y), region.width(), &image.at(region.x0, y, 0));
   });
 }
 
 void ProgressiveFilm::resolve_with_partial_pass(const FilmLayout& layout, Image& image) const {
-  resolve(layout, image);
+  resolve(layout, image);  // holds the first pass's tiles that are in
   std::lock_guard lock(mutex_);
+  if (merged_ == 0) return;
   const auto waiting = waiting_.find(merged_);
   if (waiting == waiting_.end()) return;
   const auto channels = static_cast<std::size_t>(layout.channel_count());
+  const auto floats = static_cast<std::size_t>(sums_.floats());
+  std::vector<float> sums(floats);
   for (const TileResult& item : waiting->second.items) {
-    const float* packed = item.pixels.data();
-    for (int y = item.region.y0; y < item.region.y1 && packed; ++y)
-      for (int x = item.region.x0; x < item.region.x1; ++x, packed += kAccumulatorFloats) {
-        PixelAccumulator acc = pixel(x, y);
-        acc.merge(unpack(packed));
-        layout.resolve(acc, std::span<float>(&image.at(x, y, 0), channels));
+    const float* later = item.pixels.data();
+    for (int y = item.region.y0; y < item.region.y1 && later; ++y)
+      for (int x = item.region.x0; x < item.region.x1; ++x, later += floats) {
+        const float* merged = pixel_sums(x, y);
+        sums.assign(merged, merged + floats);
+        sums_.merge(sums.data(), later);
+        layout.resolve(sums_.load(sums.data()), std::span<float>(&image.at(x, y, 0), channels));
       }
   }
 }
@@ -121,18 +147,22 @@ std::vector<TileResult> ProgressiveFilm::journal_items() const {
   std::lock_guard lock(mutex_);
   std::vector<TileResult> items;
   const std::size_t tiles = grid_.tiles_per_pass();
-  if (merged_ > 0)
-    for (std::size_t tile = 0; tile < tiles; ++tile) {
+  // Through the last merged pass, or the first pass's tiles merged so far (as items of their own).
+  for (std::size_t tile = 0; tile < tiles; ++tile)
+    if (merged_ > 0 || first_pass_tiles_[tile] == kTileMerged) {
       TileResult item;
-      item.index = static_cast<std::size_t>(merged_ - 1) * tiles + tile;
+      item.index = merged_ > 0 ? static_cast<std::size_t>(merged_ - 1) * tiles + tile : tile;
       item.region = grid_.tile(tile);
-      item.cumulative = true;
+      item.cumulative = merged_ > 0;
       item.rays = tile_rays_[tile];
       item.nan_samples = tile_nan_samples_[tile];
-      item.pixels.resize(item.region.pixel_count() * kAccumulatorFloats);
-      float* packed = item.pixels.data();
-      for (int y = item.region.y0; y < item.region.y1; ++y)
-        for (int x = item.region.x0; x < item.region.x1; ++x, packed += kAccumulatorFloats) pack(pixel(x, y), packed);
+      const std::size_t row_floats = static_cast<std::size_t>(item.region.width() * sums_.floats());
+      item.pixels.resize(item.region.pixel_count() * static_cast<std::size_t>(sums_.floats()));
+      for (int y = item.region.y0; y < item.region.y1; ++y) {
+        const float* row = pixel_sums(item.region.x0, y);
+        std::copy(row, row + row_floats,
+                  item.pixels.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y - item.region.y0) * row_floats));
+      }
       items.push_back(std::move(item));
     }
   for (const auto& [pass, waiting] : waiting_)

@@ -118,15 +118,18 @@ PixelRegion checked_region(const RenderScene& scene, const RenderOptions& option
   return region;
 }
 
+SumLayout render_sums(const RenderOptions& options) { return SumLayout(options.aovs, options.adaptive.threshold > 0.0f); }
+
 RenderResult render_image(const RenderScene& scene, const Backend& backend, const RenderOptions& options) {
   const auto start = Clock::now();
   const TileGrid grid = render_grid(scene, checked_region(scene, options), options.tile_size);
   const FilmLayout layout(options.aovs);
-  TileRenderer renderer(scene, backend, grid, options.textures, options.environment);
+  const SumLayout sums = render_sums(options);
+  TileRenderer renderer(scene, backend, grid, sums, options.textures, options.environment);
   if (options.adaptive.threshold > 0.0f && options.tile_executor)
     throw std::logic_error("render_image: adaptive sampling decides in this process; a tile executor cannot follow it");
 
-  ProgressiveFilm film(grid);
+  ProgressiveFilm film(grid, sums);
   Image preview;
   std::mutex preview_mutex;
   if (options.on_pass_image) preview = Image(scene.camera.width, scene.camera.height, layout.channels());
@@ -149,10 +152,10 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
     preview_tile = [&](const TileResult& item) {
       const std::lock_guard lock(preview_mutex);
       const auto channels = static_cast<std::size_t>(layout.channel_count());
-      const float* packed = item.pixels.data();
+      const float* pixel_sums = item.pixels.data();
       for (int y = item.region.y0; y < item.region.y1; ++y)
-        for (int x = item.region.x0; x < item.region.x1; ++x, packed += kAccumulatorFloats)
-          layout.resolve(unpack(packed), std::span<float>(&preview.at(x, y, 0), channels));
+        for (int x = item.region.x0; x < item.region.x1; ++x, pixel_sums += sums.floats())
+          layout.resolve(sums.load(pixel_sums), std::span<float>(&preview.at(x, y, 0), channels));
       options.on_pass_image(preview, item.region);
     };
   FilmSink sink(film, options, preview_tile);

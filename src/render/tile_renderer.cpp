@@ -26,10 +26,11 @@ TileGrid render_grid(const RenderScene& scene, const PixelRegion& region, int ti
 }
 
 TileRenderer::TileRenderer(const RenderScene& scene, const Backend& backend, const TileGrid& grid,
-                           const TextureLookup* textures, const EnvironmentLight* environment)
+                           const SumLayout& sums, const TextureLookup* textures, const EnvironmentLight* environment)
     : scene_(scene),
       backend_(backend),
       grid_(grid),
+      sums_(sums),
       schedule_(render_passes(scene)),
       textures_(textures),
       environment_(environment),
@@ -121,7 +122,7 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
       }
       acc.add(sample.radiance, sample.primary, range.begin + k);
     }
-    pack(acc, out.pixels.data() + static_cast<std::size_t>(pixels[i]) * kAccumulatorFloats);
+    sums_.store(acc, out.pixels.data() + static_cast<std::size_t>(pixels[i]) * static_cast<std::size_t>(sums_.floats()));
   }
 }
 
@@ -130,7 +131,7 @@ TileResult TileRenderer::render(std::size_t index, const PixelRegion& tile, Work
   TileResult out;
   out.index = index;
   out.region = tile;
-  out.pixels.assign(tile.pixel_count() * kAccumulatorFloats, 0.0f);  // no samples: all zero
+  out.pixels.assign(tile.pixel_count() * static_cast<std::size_t>(sums_.floats()), 0.0f);  // no samples: all zero
   const SampleRange range = schedule_.pass(grid_.pass(index));
   ws.pixels.clear();
   const PixelRegion& region = grid_.region();

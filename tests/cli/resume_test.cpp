@@ -36,12 +36,12 @@ world:
 )";
 
 // 6 × 4 tiles of 16 × 16 pixels; beauty plus the albedo AOV, so AOVs are journaled too. A record
-// (tile_codec.h) is an 80-byte header, a pass's sums of each pixel (23 floats, film.h) and a
-// checksum. Whitted's stratified samples render in one pass; the path integrator's Sobol samples
+// (tile_codec.h) is an 80-byte header, a pass's sums of each pixel (7 floats: colour, sample count
+// and albedo, pixel_sums.h) and a checksum. Whitted's stratified samples render in one pass; the path integrator's Sobol samples
 // in 20 (1, 1, 2, 4, 8, then 16 at a time), and the journal is compacted every few passes.
 const std::string kArgs = " --tile-size 16 --aov albedo --spp 256";
 constexpr std::size_t kTiles = 24;
-constexpr std::size_t kRecordBytes = 80 + 16 * 16 * 23 * 4 + 8;
+constexpr std::size_t kRecordBytes = 80 + 16 * 16 * 7 * 4 + 8;
 
 std::string render_cmd(const std::filesystem::path& scene, const std::filesystem::path& out, const std::string& extra) {
   return rtpro_executable().string() + " render " + scene.string() + " -o " + out.string() + kArgs + " " + extra;

@@ -74,7 +74,7 @@ JobResult render_as_job(const RenderScene& scene, const Backend& backend, int ra
   for (int rank = 1; rank < ranks; ++rank)
     followers.emplace_back([&, rank] {
       ThreadCommunicator communicator(mail, rank);
-      const TileRenderer renderer(scene, backend, grid);
+      const TileRenderer renderer(scene, backend, grid, render_sums(options));
       follow_distributed_render(communicator, renderer, grid, 1);
     });
   ThreadCommunicator leader(mail, 0);

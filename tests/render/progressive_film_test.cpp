@@ -26,9 +26,13 @@ RenderScene path_scene() {
   return scene;
 }
 
+// The layers these tests resolve, and the sums the items carry for them.
+const std::vector<Aov> kLayers{Aov::kAlbedo, Aov::kHalves, Aov::kSpp};
+SumLayout layer_sums() { return SumLayout(kLayers, false); }
+
 // Every work item of the grid, rendered.
 std::vector<TileResult> render_items(const RenderScene& scene, const Backend& backend, const TileGrid& grid) {
-  const TileRenderer renderer(scene, backend, grid);
+  const TileRenderer renderer(scene, backend, grid, layer_sums());
   TileRenderer::Workspace workspace;
   std::vector<TileResult> items;
   for (std::size_t i = 0; i < grid.count(); ++i) items.push_back(renderer.render(i, grid.tile(i), workspace));
@@ -36,7 +40,7 @@ std::vector<TileResult> render_items(const RenderScene& scene, const Backend& ba
 }
 
 std::vector<float> resolved(const ProgressiveFilm& film, const RenderScene& scene) {
-  const FilmLayout layout({Aov::kAlbedo, Aov::kHalves, Aov::kSpp});
+  const FilmLayout layout(kLayers);
   Image image(scene.camera.width, scene.camera.height, layout.channels());
   film.resolve(layout, image);
   return image.data;
@@ -49,7 +53,7 @@ TEST(ProgressiveFilm, MergesPassesInOrderWhateverOrderItemsArriveIn) {
   ASSERT_EQ(grid.passes(), 6);
   std::vector<TileResult> items = render_items(scene, *backend, grid);
 
-  ProgressiveFilm in_order(grid);
+  ProgressiveFilm in_order(grid, layer_sums());
   std::vector<int> merged;
   in_order.on_pass_merged = [&](int pass) { merged.push_back(pass); };
   for (const TileResult& item : items) in_order.add(TileResult(item));
@@ -57,7 +61,7 @@ TEST(ProgressiveFilm, MergesPassesInOrderWhateverOrderItemsArriveIn) {
 
   std::mt19937 rng(5);
   std::shuffle(items.begin(), items.end(), rng);
-  ProgressiveFilm shuffled(grid);
+  ProgressiveFilm shuffled(grid, layer_sums());
   int passes_seen = 0;
   shuffled.on_pass_merged = [&](int pass) {
     EXPECT_EQ(pass, passes_seen++);
@@ -75,7 +79,7 @@ TEST(ProgressiveFilm, MergesPassesInOrderWhateverOrderItemsArriveIn) {
   // The same as render_image, with other tiles and all threads.
   RenderOptions options;
   options.tile_size = 7;
-  options.aovs = {Aov::kAlbedo, Aov::kHalves, Aov::kSpp};
+  options.aovs = kLayers;
   const RenderResult result = render_image(scene, *backend, options);
   EXPECT_EQ(result.passes_done, 6);
   ASSERT_EQ(result.image.data.size(), a.size());
@@ -89,11 +93,11 @@ TEST(ProgressiveFilm, JournalItemsRebuildTheFilmExactly) {
   const std::vector<TileResult> items = render_items(scene, *backend, grid);
   const std::size_t tiles = grid.tiles_per_pass();
 
-  ProgressiveFilm whole(grid);
+  ProgressiveFilm whole(grid, layer_sums());
   for (const TileResult& item : items) whole.add(TileResult(item));
 
   // Three passes merged and one tile of the fourth in: what a journal compacts to.
-  ProgressiveFilm partial(grid);
+  ProgressiveFilm partial(grid, layer_sums());
   for (std::size_t i = 0; i < 3 * tiles + 1; ++i) partial.add(TileResult(items[i]));
   ASSERT_EQ(partial.passes_merged(), 3);
   const std::vector<TileResult> journal = partial.journal_items();
@@ -101,7 +105,7 @@ TEST(ProgressiveFilm, JournalItemsRebuildTheFilmExactly) {
   for (std::size_t t = 0; t < tiles; ++t) EXPECT_TRUE(journal[t].cumulative);
   EXPECT_FALSE(journal.back().cumulative);
 
-  ProgressiveFilm resumed(grid);
+  ProgressiveFilm resumed(grid, layer_sums());
   for (const TileResult& item : journal) resumed.add(TileResult(item));
   EXPECT_EQ(resumed.passes_merged(), 3);
   for (std::size_t i = 0; i < grid.count(); ++i)
@@ -117,7 +121,8 @@ TEST(ProgressiveFilm, PixelsOutOfTheMaskTakeNoSamples) {
   const RenderScene scene = path_scene();
   const auto backend = make_backend(BackendKind::kNative, scene, {});
   const TileGrid grid = render_grid(scene, {0, 0, 40, 28}, 16);
-  TileRenderer renderer(scene, *backend, grid);
+  const SumLayout sums;
+  TileRenderer renderer(scene, *backend, grid, sums);
   std::vector<std::uint8_t> mask(40 * 28, 1);
   for (int x = 0; x < 40; ++x) mask[static_cast<std::size_t>(5 * 40 + x)] = 0;  // row 5
   renderer.set_active_pixels(&mask);
@@ -128,7 +133,8 @@ TEST(ProgressiveFilm, PixelsOutOfTheMaskTakeNoSamples) {
   for (int y = tile.y0; y < tile.y1; ++y)
     for (int x = tile.x0; x < tile.x1; ++x) {
       const PixelAccumulator acc =
-          unpack(result.pixels.data() + static_cast<std::size_t>((y - tile.y0) * tile.width() + (x - tile.x0)) * kAccumulatorFloats);
+          sums.load(result.pixels.data() + static_cast<std::size_t>((y - tile.y0) * tile.width() + (x - tile.x0)) *
+                                               static_cast<std::size_t>(sums.floats()));
       EXPECT_EQ(acc.samples, y == 5 ? 0 : 4) << x << "," << y;
     }
 }
@@ -146,9 +152,10 @@ TEST(AdaptiveSampling, ConvergedPixelsStopAndTheirNeighboursOfNoisyOnesGoOn) {
   const TileGrid grid({0, 0, 8, 1}, 8);
   TileResult item;
   item.region = grid.tile(0);
-  item.pixels.resize(8 * kAccumulatorFloats);
-  for (int x = 0; x < 8; ++x) pack(x == 6 ? noisy : flat, item.pixels.data() + x * kAccumulatorFloats);
-  ProgressiveFilm film(grid);
+  const SumLayout sums({}, true);
+  item.pixels.resize(static_cast<std::size_t>(8 * sums.floats()));
+  for (int x = 0; x < 8; ++x) sums.store(x == 6 ? noisy : flat, item.pixels.data() + x * sums.floats());
+  ProgressiveFilm film(grid, sums);
   film.add(std::move(item));
   std::vector<std::uint8_t> mask;
   EXPECT_EQ(active_pixels(film, {0.01f, 16}, mask), 3u);

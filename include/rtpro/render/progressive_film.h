@@ -3,7 +3,9 @@
 // a pass, tiles.h) arrive in any order from any thread or rank; a pass is merged into the sums
 // only when all its tiles are in and every earlier pass is merged, tile by tile in parallel, so a
 // pixel's sums are added in pass order whatever the arrival order, and the sums always hold whole
-// passes: what an interrupt or a time limit shows.
+// passes: what an interrupt or a time limit shows. The first pass is the exception that costs
+// nothing: it adds to sums of nothing, so its tiles go in as they come.
+#include "rtpro/core/huge_page_buffer.h"
 #include "rtpro/image/image.h"
 #include "rtpro/render/film.h"
 #include "rtpro/render/tiles.h"
@@ -19,7 +21,7 @@ namespace rtpro {
 
 class ProgressiveFilm {
  public:
-  explicit ProgressiveFilm(const TileGrid& grid);
+  ProgressiveFilm(const TileGrid& grid, const SumLayout& sums);
 
   // Takes a work item of the grid (any thread). A cumulative item sets its tile's sums (a resume
   // journal's); all tiles' cumulative items must be of one pass and come before any other item.
@@ -32,21 +34,21 @@ class ProgressiveFilm {
   bool has(std::size_t index) const;
 
   const TileGrid& grid() const { return grid_; }
-  const PixelAccumulator& pixel(int x, int y) const {
-    return pixels_[static_cast<std::size_t>(y - grid_.region().y0) * static_cast<std::size_t>(grid_.region().width()) +
-                   static_cast<std::size_t>(x - grid_.region().x0)];
-  }
+  const SumLayout& sums() const { return sums_; }
+  // A pixel's sums through the last merged pass (the sums its layout does not keep are 0).
+  PixelAccumulator pixel(int x, int y) const { return sums_.load(pixel_sums(x, y)); }
   // Writes the region's pixels into `image` (full camera size, layout's channels).
   void resolve(const FilmLayout& layout, Image& image) const;
   // The same, with each tile of the first unmerged pass that is in shown with it (what an
   // interrupted single-pass render has to show).
   void resolve_with_partial_pass(const FilmLayout& layout, Image& image) const;
 
-  // Every tile's sums through the last merged pass, as cumulative items, and the items waiting:
-  // all a resume journal has to keep.
+  // Every tile's sums through the last merged pass, as cumulative items (before the first pass is
+  // whole: the first pass's tiles that are in, as items of that pass), and the items waiting: all a
+  // resume journal has to keep.
   std::vector<TileResult> journal_items() const;
   // Bytes of the sums (a journal holding more than a few times this is worth compacting).
-  std::size_t bytes() const { return pixels_.size() * sizeof(PixelAccumulator); }
+  std::size_t bytes() const { return pixels_.size() * sizeof(float); }
 
   RayCounts rays() const;
   std::uint64_t nan_samples() const;
@@ -57,15 +59,29 @@ class ProgressiveFilm {
     std::vector<TileResult> items;  // by tile; an absent item has no pixels
     std::size_t count = 0;
   };
-  void merge_item(const TileResult& item, bool cumulative);
+  // Adds (or, cumulative, sets) the item's sums: the caller owns the item's pixels.
+  void merge_pixels(const TileResult& item, bool cumulative);
+  void count_cost(const TileResult& item);  // under the lock
+  std::size_t sums_offset(int x, int y) const {
+    const PixelRegion& region = grid_.region();
+    return (static_cast<std::size_t>(y - region.y0) * static_cast<std::size_t>(region.width()) +
+            static_cast<std::size_t>(x - region.x0)) *
+           static_cast<std::size_t>(sums_.floats());
+  }
+  const float* pixel_sums(int x, int y) const { return pixels_.data() + sums_offset(x, y); }
   void merge_ready_passes(std::unique_lock<std::mutex>& lock);
 
   TileGrid grid_;
-  std::vector<PixelAccumulator> pixels_;
+  SumLayout sums_;
+  std::vector<float, HugePageAllocator<float>> pixels_;  // sums_.floats() a pixel, row-major
   mutable std::mutex mutex_;
   std::map<int, WaitingPass> waiting_;
   int merged_ = 0;
   bool merging_ = false;
+  // The first pass's tiles, merged as they come.
+  enum : std::uint8_t { kTileAbsent, kTileMerging, kTileMerged };
+  std::vector<std::uint8_t> first_pass_tiles_;
+  std::size_t first_pass_in_ = 0, first_pass_merged_ = 0;
   std::size_t cumulative_tiles_ = 0;
   int cumulative_pass_ = 0;
   // Of the merged passes, by tile: what the sums cost.

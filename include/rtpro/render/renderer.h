@@ -86,6 +86,9 @@ struct RenderResult {
 // Throws InputError for a region outside the image or a tile size below 1.
 PixelRegion checked_region(const RenderScene& scene, const RenderOptions& options);
 
+// The per-pixel sums the render's work items carry: what its layers and adaptive sampling read.
+SumLayout render_sums(const RenderOptions& options);
+
 RenderResult render_image(const RenderScene& scene, const Backend& backend, const RenderOptions& options);
 
 }  // namespace rtpro

@@ -2,7 +2,7 @@
 // Renders one work item (a tile in a pass, tiles.h): generates the pass's camera samples of each
 // pixel that takes part, shades them in batches of whole pixels with the scene's integrator
 // (whitted: shading.h; path: path_integrator.h) and sums each pixel's samples, in sample order,
-// into the item's PixelAccumulators (film.h).
+// into the item's sums (pixel_sums.h).
 #include "rtpro/backend/backend.h"
 #include "rtpro/render/environment_light.h"
 #include "rtpro/render/film.h"
@@ -33,9 +33,10 @@ class TileRenderer {
   };
 
   // `grid`: the render's work items, with the passes of render_passes(scene).
+  // `sums`: the per-pixel sums the items carry.
   // `textures`: the scene's image textures, opened (open_textures); required when it has any.
   // `environment`: the scene's environment, built from its image; required when it has one.
-  TileRenderer(const RenderScene& scene, const Backend& backend, const TileGrid& grid,
+  TileRenderer(const RenderScene& scene, const Backend& backend, const TileGrid& grid, const SumLayout& sums,
                const TextureLookup* textures = nullptr, const EnvironmentLight* environment = nullptr);
 
   // Work item `index` of the grid, whose tile is `tile`.
@@ -47,6 +48,7 @@ class TileRenderer {
 
   const PassSchedule& schedule() const { return schedule_; }
   const TileGrid& grid() const { return grid_; }
+  const SumLayout& sums() const { return sums_; }
 
  private:
   void render_pixels(const PixelRegion& tile, SampleRange samples, const std::uint32_t* pixels, std::size_t count,
@@ -55,6 +57,7 @@ class TileRenderer {
   const RenderScene& scene_;
   const Backend& backend_;
   TileGrid grid_;
+  SumLayout sums_;
   PassSchedule schedule_;
   const std::vector<std::uint8_t>* active_ = nullptr;
   const TextureLookup* textures_;

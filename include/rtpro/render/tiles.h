@@ -50,8 +50,8 @@ class TileGrid {
   int passes_;
 };
 
-// A rendered work item: its tile's per-pixel sample sums of one pass (row-major, one
-// PixelAccumulator each, packed as kAccumulatorFloats floats: film.h) and what it cost. A
+// A rendered work item: its tile's per-pixel sample sums of one pass (row-major, SumLayout::floats()
+// a pixel: pixel_sums.h) and what it cost. A
 // `cumulative` item holds instead the sums of every pass up to and including its own (a resume
 // journal keeps those in place of the passes they sum).
 struct TileResult {

@@ -1,8 +1,9 @@
 #pragma once
 // An uninitialised array of trivially copyable T in memory that asks the kernel for transparent
-// huge pages, for the BVH builder's scratch arrays (tens of MB for a million triangles). On these
-// virtual machines a 4 KiB page fault costs ~13 us; with 2 MiB pages a 38 MB array takes a few
-// dozen faults instead of nearly ten thousand. Pages never written are never touched.
+// huge pages, for large arrays written at once (a BVH builder's scratch arrays, tens of MB for a
+// million triangles; a film's per-pixel sums). On these virtual machines a 4 KiB page fault costs
+// ~13 us; with 2 MiB pages a 38 MB array takes a few dozen faults instead of nearly ten thousand.
+// Pages never written are never touched.
 #include <sys/mman.h>
 
 #include <cstddef>

@@ -1,0 +1,36 @@
+#include "rtpro/render/pixel_sums.h"
+
+#include "rtpro/render/film.h"
+
+
+namespace rtpro {
+
+SumLayout::SumLayout(std::span<const Aov> aovs, bool adaptive) {
+  const auto take = [&](int& offset, bool kept, int count) {
+    if (!kept) return;
+    offset = floats_;
+    floats_ += count;
+  };
+  // Every layer is named here, so a new one does not compile until it says which sums it reads.
+  bool halves = false, variance = false, albedo = false, normal = false, depth = false, object_id = false;
+  for (Aov aov : aovs) {
+    switch (aov) {
+      case Aov::kAlbedo: albedo = true; break;
+      case Aov::kNormal: normal = true; break;
+      case Aov::kDepth: depth = true; break;
+      case Aov::kObjectId: object_id = true; break;
+      case Aov::kHalves: halves = true; break;
+      case Aov::kVariance: variance = true; break;
+      case Aov::kSpp: break;  // the sample count is always kept
+    }
+  }
+  take(even_, halves || adaptive, 3);
+  take(odd_, halves, 3);
+  take(squared_, variance, 3);
+  take(albedo_, albedo, 3);
+  take(normal_, normal, 3);
+  take(depth_, depth, 2);
+  take(object_id_, object_id, 1);
+}
+
+}  // namespace rtpro
