@@ -1,12 +1,15 @@
 #!/bin/sh
 # Adaptive sampling against uniform sampling at equal time (issue: noise under control): for each
-# scene, an adaptive render (--noise-threshold THRESHOLD, at most MAX_SPP samples a pixel), then a
+# scene, an adaptive render (--noise-threshold THRESHOLD --noise-metric METRIC, at most MAX_SPP
+# samples a pixel), then a
 # uniform one given the adaptive render's own time (--time-limit: whole passes, every pixel alike),
 # both against a long reference (4·MAX_SPP spp), as relMSE (rtpro compare: mean of
 # (x − ref)² / (ref² + 0.01) over pixels and channels). Runs are interleaved, ROUNDS times with
 # different seeds; the medians are printed.
 #
-#   benchmarks/adaptive_sampling_benchmark.sh RTPRO WORKDIR [MAX_SPP] [ROUNDS] [THRESHOLD]
+#   benchmarks/adaptive_sampling_benchmark.sh RTPRO WORKDIR [MAX_SPP] [ROUNDS] [THRESHOLD] [METRIC]
+#
+# METRIC is relmse (default; THRESHOLD default 0.0015) or cycles (THRESHOLD default 0.02).
 #
 # Needs oiiotool (Debian: openimageio-tools). WORKDIR keeps the reference (render --skip-existing).
 set -eu
@@ -15,7 +18,10 @@ scenes=$(realpath "$(dirname "$0")/../scenes")
 cornell_glass=$(realpath "$(dirname "$0")/scenes/cornell_glass.yaml")  # the box with a glass sphere
 max_spp=${3:-1024}
 rounds=${4:-3}
-threshold=${5:-0.02}
+metric=${6:-relmse}
+default_threshold=0.0015
+[ "$metric" = cycles ] && default_threshold=0.02
+threshold=${5:-$default_threshold}
 mkdir -p "$2"
 cd "$2"
 rel_mse() {  # TEST REFERENCE
@@ -33,7 +39,7 @@ measure() {  # NAME SCENE ARGS...
   : > "${name}_adaptive.txt"
   round=1
   while [ "$round" -le "$rounds" ]; do
-    "$rtpro" render "$@" --spp "$max_spp" --seed "$round" --noise-threshold "$threshold" \
+    "$rtpro" render "$@" --spp "$max_spp" --seed "$round" --noise-threshold "$threshold" --noise-metric "$metric" \
       --aov spp -o "${name}_adaptive.exr" --stats-json a.json -q
     limit=$(seconds a.json)
     "$rtpro" render "$@" --spp "$max_spp" --seed "$round" --time-limit "$limit" -o "${name}_uniform.exr" \
@@ -44,7 +50,7 @@ measure() {  # NAME SCENE ARGS...
   done
   u=$(cut -d' ' -f1 "${name}_uniform.txt" | median)
   a=$(cut -d' ' -f1 "${name}_adaptive.txt" | median)
-  echo "$name: adaptive (threshold $threshold, at most $max_spp spp) relMSE $a in" \
+  echo "$name: adaptive ($metric, threshold $threshold, at most $max_spp spp) relMSE $a in" \
        "$(cut -d' ' -f2 "${name}_adaptive.txt" | tr '\n' ' ')s (runs: $(cut -d' ' -f1 "${name}_adaptive.txt" | tr '\n' ' '))," \
        "uniform in the same time relMSE $u (runs: $(cut -d' ' -f1 "${name}_uniform.txt" | tr '\n' ' '))," \
        "ratio $(echo "$u $a" | awk '{printf "%.2f", $1 / $2}')"

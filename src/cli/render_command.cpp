@@ -187,7 +187,8 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
                      " works between passes, and this render is one pass: the stratified sampler fills its strata "
                      "grid only with all spp samples (set render.sampler: sobol, the path integrator's default)");
   render_options.adaptive = {static_cast<float>(o.noise_threshold),
-                             resolved_min_samples(o.min_samples, static_cast<float>(o.noise_threshold), scene.render.spp)};
+                             resolved_min_samples(o.min_samples, static_cast<float>(o.noise_threshold), scene.render.spp),
+                             parse_noise_metric(o.noise_metric)};
   for (const auto& mesh : report.meshes) {
     log.verbose("loaded " + mesh.file + ": " + std::to_string(mesh.stats.triangles) + " triangles in " +
                 std::to_string(mesh.load_seconds) + " s");

@@ -64,8 +64,13 @@ void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
   cmd.add_option("--time-limit", o.time_limit,
                   "Stop after this many seconds with the passes finished by then (the first always finishes)");
   cmd.add_option("--noise-threshold", o.noise_threshold,
-                  "Adaptive sampling: a pixel stops when its error (Cycles' measure) is below this, e.g. 0.01; "
-                  "--spp is then the most a pixel gets");
+                  "Adaptive sampling: a pixel stops when its error (--noise-metric) is below this, e.g. 0.01 "
+                  "(cycles) or 0.002 (relmse); --spp is then the most a pixel gets");
+  cmd.add_option("--noise-metric", o.noise_metric,
+                  "The error --noise-threshold stops at: cycles (Cycles' measure: every pixel stops at about one "
+                  "error) or relmse (one more sample's gain in relative MSE: the lowest relMSE for the time)")
+      ->check(CLI::IsMember({"cycles", "relmse"}))
+      ->default_str("cycles");
   cmd.add_option("--min-samples", o.min_samples,
                   "With --noise-threshold: samples every pixel takes first (0: 16, or more for small thresholds)");
   cmd.add_flag("--no-journal", o.no_journal,

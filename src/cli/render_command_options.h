@@ -43,6 +43,7 @@ struct RenderCommandOptions {
   double time_limit = 0.0;       // seconds; 0: none
   double noise_threshold = 0.0;  // 0: no adaptive sampling
   int min_samples = 0;           // 0: automatic (adaptive_sampling.h)
+  std::string noise_metric = "cycles";
   BackendOptions backend_options;  // Embree settings from the command line; threads and memory set later
   std::string max_memory_mb;  // MiB; empty: the default budget (see parse_memory_budget)
 };

@@ -45,7 +45,8 @@ JobIdentity render_job_identity(const SceneDescription& description, const Scene
   for (const std::string& channel : settings.channels) channels += (channels.empty() ? "" : " ") + channel;
   identity.set("channels", channels);
   if (settings.adaptive.threshold > 0.0f)
-    identity.set("adaptive sampling", "noise threshold " + std::to_string(settings.adaptive.threshold) + ", min samples " +
+    identity.set("adaptive sampling", "noise threshold " + std::to_string(settings.adaptive.threshold) + " (" +
+                                          noise_metric_name(settings.adaptive.metric) + "), min samples " +
                                           std::to_string(settings.adaptive.min_samples));
   return identity;
 }

@@ -1,9 +1,12 @@
 #include "rtpro/render/adaptive_sampling.h"
 
+#include "rtpro/core/error.h"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace rtpro {
 
@@ -17,15 +20,52 @@ int resolved_min_samples(int min_samples, float threshold, int spp) {
   return std::clamp(samples, 1, std::max(spp, 1));
 }
 
-float pixel_error(const PixelAccumulator& acc) {
+NoiseMetric parse_noise_metric(std::string_view name) {
+  if (name == "cycles") return NoiseMetric::kCycles;
+  if (name == "relmse") return NoiseMetric::kRelMse;
+  throw InputError("unknown noise metric '" + std::string(name) + "': expected cycles or relmse");
+}
+
+const char* noise_metric_name(NoiseMetric metric) {
+  switch (metric) {
+    case NoiseMetric::kCycles: return "cycles";
+    case NoiseMetric::kRelMse: return "relmse";
+  }
+  return "?";
+}
+
+namespace {
+
+float cycles_error(const PixelAccumulator& acc) {
   const int even = (acc.samples + 1) / 2;
-  if (acc.samples < 2 || even == 0) return INFINITY;
   const Color mean = acc.radiance / static_cast<float>(acc.samples);
   const Color even_mean = acc.even_radiance / static_cast<float>(even);
   const float difference =
       std::abs(mean.x - even_mean.x) + std::abs(mean.y - even_mean.y) + std::abs(mean.z - even_mean.z);
   const float brightness = std::max(0.0f, mean.x + mean.y + mean.z);
   return difference / (0.0001f + std::sqrt(brightness));
+}
+
+float relmse_error(const PixelAccumulator& acc) {
+  const float n = static_cast<float>(acc.samples);
+  float relmse = 0.0f;
+  for (int c = 0; c < 3; ++c) {
+    const float mean = acc.radiance[c] / n;
+    const float sample_variance = std::max(0.0f, (acc.radiance_squared[c] - acc.radiance[c] * mean) / (n - 1.0f));
+    relmse += sample_variance / n / (mean * mean + 0.01f);
+  }
+  return std::sqrt(relmse / 3.0f / n);
+}
+
+}  // namespace
+
+float pixel_error(const PixelAccumulator& acc, NoiseMetric metric) {
+  if (acc.samples < 2) return INFINITY;
+  switch (metric) {
+    case NoiseMetric::kCycles: return cycles_error(acc);
+    case NoiseMetric::kRelMse: return relmse_error(acc);
+  }
+  return INFINITY;
 }
 
 std::size_t active_pixels(const ProgressiveFilm& film, const AdaptiveSampling& settings, std::vector<std::uint8_t>& mask) {
@@ -35,7 +75,7 @@ std::size_t active_pixels(const ProgressiveFilm& film, const AdaptiveSampling& s
   tbb::parallel_for(0, height, [&](int row) {
     for (int column = 0; column < width; ++column) {
       const PixelAccumulator& acc = film.pixel(region.x0 + column, region.y0 + row);
-      const bool goes_on = acc.samples < settings.min_samples || !(pixel_error(acc) < settings.threshold);
+      const bool goes_on = acc.samples < settings.min_samples || !(pixel_error(acc, settings.metric) < settings.threshold);
       unconverged[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(column)] =
           goes_on ? 1 : 0;
     }

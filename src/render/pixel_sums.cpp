@@ -5,7 +5,7 @@
 
 namespace rtpro {
 
-SumLayout::SumLayout(std::span<const Aov> aovs, bool adaptive) {
+SumLayout::SumLayout(std::span<const Aov> aovs, ExtraSums extra) {
   const auto take = [&](int& offset, bool kept, int count) {
     if (!kept) return;
     offset = floats_;
@@ -24,9 +24,9 @@ SumLayout::SumLayout(std::span<const Aov> aovs, bool adaptive) {
       case Aov::kSpp: break;  // the sample count is always kept
     }
   }
-  take(even_, halves || adaptive, 3);
+  take(even_, halves || extra.even_half, 3);
   take(odd_, halves, 3);
-  take(squared_, variance, 3);
+  take(squared_, variance || extra.squares, 3);
   take(albedo_, albedo, 3);
   take(normal_, normal, 3);
   take(depth_, depth, 2);

@@ -118,7 +118,15 @@ PixelRegion checked_region(const RenderScene& scene, const RenderOptions& option
   return region;
 }
 
-SumLayout render_sums(const RenderOptions& options) { return SumLayout(options.aovs, options.adaptive.threshold > 0.0f); }
+SumLayout render_sums(const RenderOptions& options) {
+  const bool adaptive = options.adaptive.threshold > 0.0f;
+  ExtraSums extra;
+  switch (options.adaptive.metric) {
+    case NoiseMetric::kCycles: extra.even_half = adaptive; break;
+    case NoiseMetric::kRelMse: extra.squares = adaptive; break;
+  }
+  return SumLayout(options.aovs, extra);
+}
 
 RenderResult render_image(const RenderScene& scene, const Backend& backend, const RenderOptions& options) {
   const auto start = Clock::now();

@@ -108,6 +108,38 @@ TEST(AdaptiveRender, KeepsTheMeanOfAFlatRegionWithinNoise) {
   }
 }
 
+// The relMSE metric: the sky stops at the first check, the floor goes on, every sample is counted,
+// and the floor's mean stays the uniform render's within noise.
+TEST(AdaptiveRender, RelMseMetricStopsConvergedPixelsAndKeepsTheMean) {
+  const Rendered adaptive = render("relmse", "--noise-threshold 0.002 --noise-metric relmse --min-samples 16");
+  const Rendered uniform = render("relmse_uniform", "");
+  ASSERT_FALSE(adaptive.image.data.empty());
+  ASSERT_FALSE(uniform.image.data.empty());
+  const int spp = channel(adaptive.image, "spp.count"), variance = channel(uniform.image, "variance.R");
+  double total = 0.0, most = 0.0;
+  for (int y = 0; y < adaptive.image.height; ++y)
+    for (int x = 0; x < adaptive.image.width; ++x) {
+      total += adaptive.image.at(x, y, spp);
+      most = std::max(most, static_cast<double>(adaptive.image.at(x, y, spp)));
+    }
+  EXPECT_EQ(total, adaptive.stats["rays"]["camera"].get<double>());
+  for (int x = 0; x < adaptive.image.width; ++x) EXPECT_EQ(adaptive.image.at(x, 0, spp), 16.0f) << "x " << x;
+  EXPECT_GT(most, 64.0);
+  EXPECT_LT(total, 256.0 * adaptive.image.width * adaptive.image.height / 2);
+  for (int c = 0; c < 3; ++c) {
+    double sum_a = 0, sum_u = 0, var = 0;
+    int n = 0;
+    for (int y = 24; y < 32; ++y)
+      for (int x = 0; x < 48; ++x, ++n) {
+        sum_a += adaptive.image.at(x, y, c);
+        sum_u += uniform.image.at(x, y, c);
+        var += adaptive.image.at(x, y, variance + c) + uniform.image.at(x, y, variance + c);
+      }
+    SCOPED_TRACE("channel " + std::to_string(c));
+    EXPECT_NEAR(sum_a / n, sum_u / n, 4.0 * std::sqrt(var) / n + 1e-6);
+  }
+}
+
 // Stopped by the time limit, the image holds whole passes (the first always finishes) and is the
 // output, not a partial one.
 TEST(AdaptiveRender, TimeLimitEndsWithTheFinishedPasses) {

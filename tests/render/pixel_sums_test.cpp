@@ -31,14 +31,15 @@ PixelAccumulator samples(int begin, int end) {
 
 TEST(SumLayout, ColourOnlyKeepsFourFloatsAndEveryLayerAddsItsOwn) {
   EXPECT_EQ(SumLayout().floats(), 4);
-  EXPECT_EQ(SumLayout({}, false).floats(), 4);
-  EXPECT_EQ(SumLayout({}, true).floats(), 7);  // adaptive sampling reads the even half
+  EXPECT_EQ(SumLayout({}, {}).floats(), 4);
+  EXPECT_EQ(SumLayout({}, {.even_half = true}).floats(), 7);  // Cycles' error reads the even half
+  EXPECT_EQ(SumLayout({}, {.squares = true}).floats(), 7);    // the relMSE error the squares
   const std::vector<Aov> spp{Aov::kSpp};
-  EXPECT_EQ(SumLayout(spp, false).floats(), 4);
+  EXPECT_EQ(SumLayout(spp, {}).floats(), 4);
   const std::vector<Aov> halves{Aov::kHalves};
-  EXPECT_EQ(SumLayout(halves, true).floats(), 10);
+  EXPECT_EQ(SumLayout(halves, {.even_half = true}).floats(), 10);
   const std::vector<Aov> all{Aov::kAlbedo, Aov::kNormal, Aov::kDepth, Aov::kObjectId, Aov::kHalves, Aov::kVariance, Aov::kSpp};
-  EXPECT_EQ(SumLayout(all, false).floats(), 4 + 3 + 3 + 3 + 3 + 3 + 2 + 1);
+  EXPECT_EQ(SumLayout(all, {.even_half = true, .squares = true}).floats(), 4 + 3 + 3 + 3 + 3 + 3 + 2 + 1);
 }
 
 // Adds a pass's sums to the passes' before it, field by field: what the film must compute.
@@ -60,7 +61,7 @@ void add_pass(PixelAccumulator& total, const PixelAccumulator& pass) {
 // in pass order; a pass that did not sample the pixel changes nothing.
 TEST(SumLayout, MergedPassesResolveAsOneAccumulatorOfEverySample) {
   const std::vector<Aov> all{Aov::kAlbedo, Aov::kNormal, Aov::kDepth, Aov::kObjectId, Aov::kHalves, Aov::kVariance, Aov::kSpp};
-  const SumLayout sums(all, true);
+  const SumLayout sums(all, {.even_half = true, .squares = true});
   const FilmLayout layout(all);
   std::vector<float> film(static_cast<std::size_t>(sums.floats()), 0.0f), item(film.size());
   const int passes[][2] = {{0, 1}, {1, 2}, {2, 2}, {2, 4}, {4, 8}, {8, 8}, {8, 13}};
@@ -83,7 +84,7 @@ TEST(SumLayout, MergedPassesResolveAsOneAccumulatorOfEverySample) {
 // The first sample's object id is the earliest pass's, even when a later pass's pixel missed.
 TEST(SumLayout, TheFirstSamplesObjectIdStays) {
   const std::vector<Aov> ids{Aov::kObjectId};
-  const SumLayout sums(ids, false);
+  const SumLayout sums(ids, {});
   std::vector<float> film(static_cast<std::size_t>(sums.floats()), 0.0f), item(film.size());
   PixelAccumulator first;
   first.add(Color(1.0f), hit(41, 1.0f), 0);

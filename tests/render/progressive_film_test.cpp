@@ -28,7 +28,7 @@ RenderScene path_scene() {
 
 // The layers these tests resolve, and the sums the items carry for them.
 const std::vector<Aov> kLayers{Aov::kAlbedo, Aov::kHalves, Aov::kSpp};
-SumLayout layer_sums() { return SumLayout(kLayers, false); }
+SumLayout layer_sums() { return SumLayout(kLayers, {}); }
 
 // Every work item of the grid, rendered.
 std::vector<TileResult> render_items(const RenderScene& scene, const Backend& backend, const TileGrid& grid) {
@@ -144,15 +144,17 @@ TEST(ProgressiveFilm, PixelsOutOfTheMaskTakeNoSamples) {
 TEST(AdaptiveSampling, ConvergedPixelsStopAndTheirNeighboursOfNoisyOnesGoOn) {
   PixelAccumulator flat;
   for (int s = 0; s < 32; ++s) flat.add(Color(0.5f), PrimaryHit{}, s);
-  EXPECT_EQ(pixel_error(flat), 0.0f);
+  EXPECT_EQ(pixel_error(flat, NoiseMetric::kCycles), 0.0f);
+  EXPECT_EQ(pixel_error(flat, NoiseMetric::kRelMse), 0.0f);
   PixelAccumulator noisy;
   for (int s = 0; s < 32; ++s) noisy.add(Color(s % 2 == 0 ? 1.0f : 0.0f), PrimaryHit{}, s);
-  EXPECT_GT(pixel_error(noisy), 0.5f);
+  EXPECT_GT(pixel_error(noisy, NoiseMetric::kCycles), 0.5f);
+  EXPECT_GT(pixel_error(noisy, NoiseMetric::kRelMse), 0.02f);
 
   const TileGrid grid({0, 0, 8, 1}, 8);
   TileResult item;
   item.region = grid.tile(0);
-  const SumLayout sums({}, true);
+  const SumLayout sums({}, {.even_half = true});
   item.pixels.resize(static_cast<std::size_t>(8 * sums.floats()));
   for (int x = 0; x < 8; ++x) sums.store(x == 6 ? noisy : flat, item.pixels.data() + x * sums.floats());
   ProgressiveFilm film(grid, sums);

@@ -42,14 +42,20 @@ struct PixelAccumulator {
 
 // The sums a render keeps, stored per pixel as floats in this order: the colour (3) and the sample
 // count (1) always; then, when something reads them, the even-sample colour (3: the halves layer,
-// adaptive sampling), the odd-sample colour (3: halves), the squares (3: variance), albedo (3),
+// Cycles' error), the odd-sample colour (3: halves), the squares (3: variance, relMSE error), albedo (3),
 // normal (3), depth sum and hit count (2: depth) and the first sample's object id (1, its bit
 // pattern). Counts are stored as float values: exact, as no pixel takes 2^24 samples.
+// Sums kept beyond what the layers read: what adaptive sampling's error reads.
+struct ExtraSums {
+  bool even_half = false;
+  bool squares = false;
+};
+
 class SumLayout {
  public:
   // Colour and sample count only.
   SumLayout() = default;
-  SumLayout(std::span<const Aov> aovs, bool adaptive);
+  SumLayout(std::span<const Aov> aovs, ExtraSums extra);
 
   int floats() const { return floats_; }
   bool keeps_even() const { return even_ >= 0; }
