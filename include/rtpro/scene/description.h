@@ -201,7 +201,7 @@ struct MeshDesc {
   std::uint32_t linking = kNoLinking;
 };
 
-struct GltfAsset;  // a loaded glTF file (src/scene/gltf_asset.h)
+struct GltfAsset;  // a loaded glTF file (src/scene/gltf/gltf_asset.h)
 
 // A glTF 2.0 file (.gltf or .glb) placed as a whole: its node hierarchy becomes instances.
 struct GltfDesc {
