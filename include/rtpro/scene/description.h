@@ -231,6 +231,15 @@ struct ObjectDesc {
   std::vector<InstanceDesc> instances;
 };
 
+// Calls visit(shapes) with the object's list of each kind of shape, in this order: a visitor
+// without an overload for a new kind of shape does not compile.
+template <typename Visit>
+void visit_shape_lists(const ObjectDesc& object, Visit&& visit) {
+  visit(object.spheres);
+  visit(object.meshes);
+  visit(object.gltfs);
+}
+
 // `environment:` at the top of a scene file: what arrives where rays escape (see scenes/FORMAT.md).
 struct EnvironmentDesc {
   std::filesystem::path file;  // empty: a constant environment of `color`
