@@ -29,6 +29,12 @@ BackendKind parse_backend_kind(std::string_view name) {
   throw InputError("unknown backend '" + std::string(name) + "': expected 'embree' or 'native'");
 }
 
-std::string_view backend_name(BackendKind kind) { return kind == BackendKind::kNative ? "native" : "embree"; }
+std::string_view backend_name(BackendKind kind) {
+  switch (kind) {
+    case BackendKind::kNative: return "native";
+    case BackendKind::kEmbree: return "embree";
+  }
+  return "unknown";  // unreachable: the switch covers every backend
+}
 
 }  // namespace rtpro

@@ -186,26 +186,45 @@ bool grazes(const Instance& instance, const Sphere& sphere, const Ray& ray) {
   return std::fabs(std::sqrt(line2) - sphere.radius) <= kGrazing * (sphere.radius + std::sqrt(f2));
 }
 
-// A hit the other backend may legitimately have missed by rounding.
+// A hit the other backend may legitimately have missed by rounding. Top-level spheres are
+// bit-identical in both backends, so never borderline; a hit names the geometry inside an
+// instance, never the instance itself.
 bool is_borderline(const RenderScene& scene, const Ray& ray, const Hit& hit) {
   const Geometry& geometry = *geometry_of(scene, hit);
-  if (kind_of(geometry) == GeometryKind::kTriangles)
-    return edge_distance(world_triangle(scene, hit), hit.u, hit.v) <= kEdgeZone * error_scale(ray, hit.t);
-  if (kind_of(geometry) == GeometryKind::kSpheres && hit.inst_id != kInvalidId) {
-    const auto& instance = std::get<Instance>(scene.top.geometries[hit.inst_id]);
-    return grazes(instance, std::get<SphereSet>(geometry).spheres[hit.prim_id], ray);
+  switch (kind_of(geometry)) {
+    case GeometryKind::kTriangles:
+      return edge_distance(world_triangle(scene, hit), hit.u, hit.v) <= kEdgeZone * error_scale(ray, hit.t);
+    case GeometryKind::kSpheres: {
+      if (hit.inst_id == kInvalidId) return false;
+      const auto& instance = std::get<Instance>(scene.top.geometries[hit.inst_id]);
+      return grazes(instance, std::get<SphereSet>(geometry).spheres[hit.prim_id], ray);
+    }
+    case GeometryKind::kInstance: return false;
   }
   return false;
+}
+
+// How far apart the two backends' points on the same primitive lie, relative to the error scale:
+// a triangle's barycentric points; a sphere hit carries no surface coordinates to compare.
+double surface_error(const RenderScene& scene, const TracedRay& traced) {
+  const Hit& a = traced.reference;
+  const Hit& b = traced.candidate;
+  switch (kind_of(*geometry_of(scene, a))) {
+    case GeometryKind::kTriangles: {
+      const WorldTriangle tri = world_triangle(scene, a);
+      return magnitude(tri.at(a.u, a.v) - tri.at(b.u, b.v)) / error_scale(traced.ray, a.t);
+    }
+    case GeometryKind::kSpheres:
+    case GeometryKind::kInstance: return 0.0;
+  }
+  return 0.0;
 }
 
 void classify_same_primitive(const RenderScene& scene, const TracedRay& traced, CrosscheckCase& c) {
   const Hit& a = traced.reference;
   const Hit& b = traced.candidate;
   c.t_error = relative_t_error(traced.ray, a.t, b.t);
-  if (kind_of(*geometry_of(scene, a)) == GeometryKind::kTriangles) {
-    const WorldTriangle tri = world_triangle(scene, a);
-    c.surface_error = magnitude(tri.at(a.u, a.v) - tri.at(b.u, b.v)) / error_scale(traced.ray, a.t);
-  }
+  c.surface_error = surface_error(scene, traced);
   if (bit_identical(a, b)) {
     c.agreement = Agreement::kIdentical;
   } else if (is_top_level_sphere(scene, a)) {

@@ -201,7 +201,7 @@ struct MeshDesc {
   std::uint32_t linking = kNoLinking;
 };
 
-struct GltfAsset;  // a loaded glTF file (src/scene/gltf_asset.h)
+struct GltfAsset;  // a loaded glTF file (src/scene/gltf/gltf_asset.h)
 
 // A glTF 2.0 file (.gltf or .glb) placed as a whole: its node hierarchy becomes instances.
 struct GltfDesc {
@@ -230,6 +230,15 @@ struct ObjectDesc {
   std::vector<GltfDesc> gltfs;
   std::vector<InstanceDesc> instances;
 };
+
+// Calls visit(shapes) with the object's list of each kind of shape, in this order: a visitor
+// without an overload for a new kind of shape does not compile.
+template <typename Visit>
+void visit_shape_lists(const ObjectDesc& object, Visit&& visit) {
+  visit(object.spheres);
+  visit(object.meshes);
+  visit(object.gltfs);
+}
 
 // `environment:` at the top of a scene file: what arrives where rays escape (see scenes/FORMAT.md).
 struct EnvironmentDesc {

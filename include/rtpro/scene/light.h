@@ -1,7 +1,7 @@
 #pragma once
 // Lights as the renderer uses them: what arrives from each, worked out once from the scene file's
 // description (make_light in build_render_scene.h). Adding a kind means a struct here, an overload
-// in src/scene/light.cpp and its overloads in render/light_sample.h and light_sample.cpp; every
+// in src/scene/build/light.cpp and its overloads in render/light_sample.h and light_sample.cpp; every
 // std::visit over Light fails to compile until then.
 #include "rtpro/core/vec3.h"
 

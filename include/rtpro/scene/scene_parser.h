@@ -10,7 +10,7 @@
 
 namespace rtpro {
 
-// A .gltf or .glb file is read as a whole scene (see src/scene/gltf_scene.h): the file in the
+// A .gltf or .glb file is read as a whole scene (see src/scene/yaml/gltf_scene.h): the file in the
 // world, its camera and lights or defaults.
 // `overrides` are "dotted.key=value" strings (e.g. "render.spp=64", "camera.fov=30") applied to
 // the document before validation, so they are checked exactly like the file's own values.

@@ -1,5 +1,5 @@
 #pragma once
-// Internals of the OBJ loader (src/scene/obj_parser.cpp). The file is cut into chunks at line
+// Internals of the OBJ loader (src/scene/mesh/obj_parser.cpp). The file is cut into chunks at line
 // boundaries; every chunk is first counted, then parsed, in parallel. A chunk's parse needs only
 // the counts of the chunks before it (to resolve relative indices and name lines), and the loader
 // stitches chunks together in file order, so the result does not depend on the chunk size.

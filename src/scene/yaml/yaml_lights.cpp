@@ -1,9 +1,13 @@
 #include "yaml_lights.h"
 
 #include "yaml_reader.h"
+#include "rtpro/core/overloaded.h"
 
 #include <cmath>
 #include <string>
+#include <utility>
+#include <variant>
+#include <vector>
 
 namespace rtpro {
 
@@ -126,13 +130,40 @@ QuadLightDesc read_quad_light(const YamlNode& node) {
   return desc;
 }
 
+// What a scene file calls each kind of light (its `type:`) and how it reads one: both visit every
+// alternative of LightDesc, so a new kind of light does not compile until it has a name and a reader.
+const char* light_type(const LightDesc& kind) {
+  return std::visit(Overloaded{[](const PointLightDesc&) { return "point"; },
+                               [](const SpotLightDesc&) { return "spot"; },
+                               [](const DirectionalLightDesc&) { return "directional"; },
+                               [](const SphereLightDesc&) { return "sphere"; },
+                               [](const QuadLightDesc&) { return "quad"; }},
+                    kind);
+}
+
+LightDesc read_light_of_kind(const YamlNode& node, const LightDesc& kind) {
+  return std::visit(Overloaded{[&](const PointLightDesc&) -> LightDesc { return read_point_light(node); },
+                               [&](const SpotLightDesc&) -> LightDesc { return read_spot_light(node); },
+                               [&](const DirectionalLightDesc&) -> LightDesc { return read_directional_light(node); },
+                               [&](const SphereLightDesc&) -> LightDesc { return read_sphere_light(node); },
+                               [&](const QuadLightDesc&) -> LightDesc { return read_quad_light(node); }},
+                    kind);
+}
+
+// One light of every kind, in LightDesc's order.
+template <std::size_t... I>
+std::vector<LightDesc> every_light_kind(std::index_sequence<I...>) {
+  return {LightDesc(std::in_place_index<I>)...};
+}
+
 LightDesc read_light(const YamlNode& node) {
-  const std::string type = read_entry_type(node, "light", {"point", "spot", "directional", "sphere", "quad"});
-  if (type == "point") return read_point_light(node);
-  if (type == "spot") return read_spot_light(node);
-  if (type == "directional") return read_directional_light(node);
-  if (type == "sphere") return read_sphere_light(node);
-  return read_quad_light(node);
+  static const std::vector<LightDesc> kinds = every_light_kind(std::make_index_sequence<std::variant_size_v<LightDesc>>());
+  std::vector<std::string> types;
+  for (const LightDesc& kind : kinds) types.push_back(light_type(kind));
+  const std::string type = read_entry_type(node, "light", types);
+  for (const LightDesc& kind : kinds)
+    if (type == light_type(kind)) return read_light_of_kind(node, kind);
+  fail_at(node, "unknown light type '" + type + "'");  // read_entry_type accepts only the types above
 }
 
 // `name:`, which light linking refers to (FORMAT.md, "Light linking"): unique among the lights.

@@ -5,6 +5,7 @@
 
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
+#include "rtpro/core/overloaded.h"
 
 #include <algorithm>
 #include <map>
@@ -16,7 +17,14 @@ namespace rtpro {
 
 namespace {
 
-bool has_own_shapes(const ObjectDesc& object) { return !object.spheres.empty() || !object.meshes.empty(); }
+// glTF files count by their placements (placements_in), not as the object's own shapes.
+bool has_own_shapes(const ObjectDesc& object) {
+  bool any = false;
+  visit_shape_lists(object, Overloaded{[&](const std::vector<SphereDesc>& spheres) { any = any || !spheres.empty(); },
+                                       [&](const std::vector<MeshDesc>& meshes) { any = any || !meshes.empty(); },
+                                       [](const std::vector<GltfDesc>&) {}});
+  return any;
+}
 
 std::uint64_t placements_in(const std::vector<GltfDesc>& gltfs, const GltfPlacementCount& gltf_placements) {
   std::uint64_t count = 0;
@@ -46,11 +54,10 @@ void add_file_bytes(const std::filesystem::path& file, std::set<std::filesystem:
   if (!error) bytes = saturating_add(bytes, saturating_multiply(size, kMeshBytesPerFileByte));
 }
 
-// Mesh memory of every mesh and glTF file an object draws, each file counted once. A glTF file's
-// buffers may live in .bin files beside it: a loaded asset counts its meshes' own bytes instead.
-void add_shape_bytes(const ObjectDesc& object, std::set<std::filesystem::path>& seen, std::uint64_t& bytes) {
-  for (const MeshDesc& mesh : object.meshes) add_file_bytes(mesh.file, seen, bytes);
-  for (const GltfDesc& gltf : object.gltfs) {
+// A glTF file's buffers may live in .bin files beside it: a loaded asset counts its meshes' own
+// bytes instead of the file's size.
+void add_gltf_bytes(const std::vector<GltfDesc>& gltfs, std::set<std::filesystem::path>& seen, std::uint64_t& bytes) {
+  for (const GltfDesc& gltf : gltfs) {
     if (!gltf.loaded) {
       add_file_bytes(gltf.file, seen, bytes);
       continue;
@@ -59,6 +66,16 @@ void add_shape_bytes(const ObjectDesc& object, std::set<std::filesystem::path>& 
     for (const TriangleMesh& mesh : gltf.loaded->meshes)
       bytes = saturating_add(bytes, saturating_multiply(mesh.memory_bytes(), 2));  // and its BVH
   }
+}
+
+// Mesh memory of every mesh and glTF file an object draws, each file counted once.
+// Spheres, a few dozen bytes each, are left out of the estimate.
+void add_shape_bytes(const ObjectDesc& object, std::set<std::filesystem::path>& seen, std::uint64_t& bytes) {
+  visit_shape_lists(object, Overloaded{[](const std::vector<SphereDesc>&) {},
+                                       [&](const std::vector<MeshDesc>& meshes) {
+                                         for (const MeshDesc& mesh : meshes) add_file_bytes(mesh.file, seen, bytes);
+                                       },
+                                       [&](const std::vector<GltfDesc>& gltfs) { add_gltf_bytes(gltfs, seen, bytes); }});
 }
 
 }  // namespace

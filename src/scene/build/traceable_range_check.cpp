@@ -1,5 +1,6 @@
 #include "traceable_range_check.h"
 
+#include "rtpro/core/overloaded.h"
 #include "rtpro/core/ray.h"
 
 #include <algorithm>
@@ -60,6 +61,19 @@ BBox geometry_bounds(const Group& group, std::uint32_t g, std::span<const BBox> 
   return {};
 }
 
+// How far from the origin a light places what rays aim at; a directional light places nothing.
+double light_reach(const LightDesc& light) {
+  return std::visit(
+      Overloaded{[](const PointLightDesc& point) { return largest_magnitude(point.position); },
+                 [](const SpotLightDesc& spot) { return largest_magnitude(spot.position); },
+                 [](const DirectionalLightDesc&) { return 0.0; },
+                 [](const SphereLightDesc& sphere) { return largest_magnitude(sphere.center) + double(sphere.radius); },
+                 [](const QuadLightDesc& quad) {
+                   return largest_magnitude(quad.position) + double(length(quad.edge1) + length(quad.edge2));
+                 }},
+      light);
+}
+
 }  // namespace
 
 void check_traceable_range(const RenderScene& scene, std::span<const SourceLocation> where, const CameraDesc& camera,
@@ -69,14 +83,7 @@ void check_traceable_range(const RenderScene& scene, std::span<const SourceLocat
 
   // Where rays can start (the camera, any surface) and what they can aim at (a point or spot light).
   double extent = largest_magnitude(camera.position);
-  for (const LightDesc& light : lights) {
-    if (const auto* point = std::get_if<PointLightDesc>(&light)) extent = std::max(extent, largest_magnitude(point->position));
-    if (const auto* spot = std::get_if<SpotLightDesc>(&light)) extent = std::max(extent, largest_magnitude(spot->position));
-    if (const auto* sphere = std::get_if<SphereLightDesc>(&light))
-      extent = std::max(extent, largest_magnitude(sphere->center) + double(sphere->radius));
-    if (const auto* quad = std::get_if<QuadLightDesc>(&light))
-      extent = std::max(extent, largest_magnitude(quad->position) + double(length(quad->edge1) + length(quad->edge2)));
-  }
+  for (const LightDesc& light : lights) extent = std::max(extent, light_reach(light));
 
   for (std::uint32_t g = 0; g < scene.top.geometries.size(); ++g) {
     const Geometry& geometry = scene.top.geometries[g];

@@ -1,0 +1,46 @@
+#pragma once
+// The Embree backend's batches: a coherent stream goes to Embree as packets of eight in its own
+// layout (rtcIntersectNM), and in scenes without triangles every batch goes as packets of eight
+// (rtcIntersect8) whose sphere callbacks decide each hit. Each ray's answer is the single-ray one.
+#include "ray_gate.h"
+#include "rtpro/backend/hit.h"
+#include "rtpro/core/ray.h"
+
+#include <embree3/rtcore.h>
+
+#include <bit>
+#include <cstdint>
+#include <span>
+
+namespace rtpro {
+
+// What a batch is traced against: the top-level scene, the backend's gate, and whether eight
+// rays load at once (load_traceable_lanes needs AVX2).
+struct EmbreeRayTarget {
+  RTCScene scene;
+  const RayGate& gate;
+  bool wide_loads;
+};
+
+// std::nextafter(t, 0.0f) without the libm call (0.7% of a render): one step towards zero is one
+// less in the bit pattern for every non-zero float, infinity (to the largest float) included.
+// Never called with NaN (the gate refuses it).
+inline float one_step_towards_zero(float t) {
+  return t == 0.0f ? t : std::bit_cast<float>(std::bit_cast<std::uint32_t>(t) - 1u);
+}
+
+// The closest sphere so far of a ray that has met none: its tfar.
+inline Hit no_sphere_yet(const Ray& ray) {
+  Hit closest;
+  closest.t = ray.tfar;
+  return closest;
+}
+
+// Each compiled for AVX2 and for baseline x86-64 (RTPRO_AVX2_CLONES on the definitions).
+void intersect_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<Hit> hits);
+// A segment too short for the open interval (tnear, tfar) is no query: the ray is unoccluded.
+void occluded_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<std::uint8_t> result);
+void intersect_packets(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<Hit> hits);
+void occluded_packets(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<std::uint8_t> result);
+
+}  // namespace rtpro

@@ -1,0 +1,313 @@
+#include "native_traversal.h"
+
+#include "sphere_lanes.h"
+#include "rtpro/geometry/sphere_intersect.h"
+#include "rtpro/geometry/triangle_intersect.h"
+
+#include <immintrin.h>
+
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace rtpro {
+
+namespace {
+
+// Precomputed per-ray data for the slab test, in SSE registers (SSE2 is part of x86-64, so no
+// dispatch is needed). Lane 3 is unused: it is masked out of every result.
+struct RayBoxData {
+  __m128 org;
+  __m128 inv_dir;
+};
+
+RayBoxData prepare(const Ray& ray) {
+  return {_mm_set_ps(0.0f, ray.org.z, ray.org.y, ray.org.x),
+          _mm_set_ps(0.0f, 1.0f / ray.dir.z, 1.0f / ray.dir.y, 1.0f / ray.dir.x)};
+}
+
+// Slab test of one box, all three axes at once; sets `entry` to the distance where the ray enters
+// it. NaNs from 0·∞ (an origin on a slab plane of an axis the ray runs parallel to) leave that
+// axis out, as the operand order of minps/maxps below arranges: each returns its second operand
+// when either is NaN. The far distance is enlarged by 2·gamma(3) (pbrt) so float rounding never
+// culls a box that the ray actually touches.
+inline bool hits_box(const BBox& box, const RayBoxData& d, float tnear, float tmax, float& entry) {
+  constexpr float kRoundingSlack = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
+  // The loads read one float past each corner (the next corner's x, or the node's index bits):
+  // lane 3 is replaced before any comparison.
+  const __m128 tn = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(&box.lower.x), d.org), d.inv_dir);
+  const __m128 tf = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(&box.upper.x), d.org), d.inv_dir);
+  const __m128 xyz = _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
+  // min(tf, tn) is NaN when tn is (axis ignored) and tn when tf is; max(tn, tf) the other way round.
+  const __m128 near_axes = _mm_min_ps(tf, tn);
+  const __m128 far_axes = _mm_mul_ps(_mm_max_ps(tn, tf), _mm_set1_ps(kRoundingSlack));
+  const __m128 near = _mm_max_ps(_mm_or_ps(_mm_and_ps(xyz, near_axes), _mm_andnot_ps(xyz, _mm_set1_ps(tnear))),
+                                 _mm_set1_ps(tnear));
+  const __m128 far = _mm_min_ps(_mm_or_ps(_mm_and_ps(xyz, far_axes), _mm_andnot_ps(xyz, _mm_set1_ps(tmax))),
+                                _mm_set1_ps(tmax));
+  // Largest near and smallest far over the lanes.
+  __m128 t0 = _mm_max_ps(near, _mm_shuffle_ps(near, near, _MM_SHUFFLE(2, 3, 0, 1)));
+  t0 = _mm_max_ps(t0, _mm_shuffle_ps(t0, t0, _MM_SHUFFLE(1, 0, 3, 2)));
+  __m128 t1 = _mm_min_ps(far, _mm_shuffle_ps(far, far, _MM_SHUFFLE(2, 3, 0, 1)));
+  t1 = _mm_min_ps(t1, _mm_shuffle_ps(t1, t1, _MM_SHUFFLE(1, 0, 3, 2)));
+  entry = _mm_cvtss_f32(t0);
+  return entry <= _mm_cvtss_f32(t1);
+}
+
+Ray to_object_space(const Instance& instance, const Ray& ray, float tfar) {
+  // The direction is not renormalised, so distances t mean the same in both spaces.
+  return {instance.world_to_object.apply_point(ray.org), ray.tnear,
+          instance.world_to_object.apply_vector(ray.dir), tfar};
+}
+
+// Visits every leaf reference whose node box the ray enters, nearest child first;
+// `visit(ref)` returns false to stop early. `tmax` is re-read after each leaf.
+template <typename Visit>
+void traverse(const Bvh& bvh, const Ray& ray, const float& tmax, Visit&& visit) {
+  if (bvh.nodes.empty()) return;
+  const RayBoxData box_data = prepare(ray);
+  const int dir_negative[3] = {ray.dir.x < 0.0f, ray.dir.y < 0.0f, ray.dir.z < 0.0f};
+  std::uint32_t stack[kBvhMaxDepth + 1];
+  int top = 0;
+  std::uint32_t node_index = 0;
+  for (;;) {
+    const BvhNode& node = bvh.nodes[node_index];
+    float entry;
+    if (hits_box(node.bounds, box_data, ray.tnear, tmax, entry)) {
+      if (node.is_leaf()) {
+        for (std::uint32_t i = 0; i < node.count; ++i)
+          if (!visit(bvh.refs[node.index + i])) return;
+      } else {
+        // Descend into the child on the ray's near side first.
+        const std::uint32_t near_child = node.index + dir_negative[node.axis];
+        stack[top++] = node.index + 1 - dir_negative[node.axis];
+        node_index = near_child;
+        continue;
+      }
+    }
+    if (top == 0) return;
+    node_index = stack[--top];
+  }
+}
+
+// Keeps the candidate when the shared tie rule says it is closer than the best so far.
+void offer_hit(float t, float u, float v, std::uint32_t inst, const PrimitiveRef& ref, Hit& best, float& best_t) {
+  if (!is_closer(t, inst, ref.geom, ref.prim, best, best_t)) return;
+  best_t = t;
+  best.u = u;
+  best.v = v;
+  best.inst_id = inst;
+  best.geom_id = ref.geom;
+  best.prim_id = ref.prim;
+}
+
+// Visits every top-level leaf reference whose node box some active lane enters, with the mask
+// of those lanes; near child first by the first active lane's direction. `visit(ref, lanes)`
+// returns the lanes still active (occlusion retires the blocked ones).
+template <typename Visit>
+[[gnu::target("avx2")]] void traverse_packet(const Bvh& bvh, const RayPacket& packet, std::uint32_t active, Visit&& visit) {
+  if (bvh.nodes.empty() || active == 0) return;
+  const unsigned lead = static_cast<unsigned>(std::countr_zero(active));
+  const int dir_negative[3] = {packet.dir_x[lead] < 0.0f, packet.dir_y[lead] < 0.0f, packet.dir_z[lead] < 0.0f};
+  std::uint32_t stack[kBvhMaxDepth + 1];
+  int top = 0;
+  std::uint32_t node_index = 0;
+  for (;;) {
+    const BvhNode& node = bvh.nodes[node_index];
+    const std::uint32_t entering = packet_hits_box(node.bounds, packet) & active;
+    if (entering != 0) {
+      if (node.is_leaf()) {
+        for (std::uint32_t i = 0; i < node.count; ++i) {
+          active = visit(bvh.refs[node.index + i], entering & active);
+          if (active == 0) return;
+        }
+      } else {
+        const std::uint32_t near_child = node.index + dir_negative[node.axis];
+        stack[top++] = node.index + 1 - dir_negative[node.axis];
+        node_index = near_child;
+        continue;
+      }
+    }
+    if (top == 0) return;
+    node_index = stack[--top];
+  }
+}
+
+}  // namespace
+
+NativeTraversal::NativeTraversal(const RenderScene& scene) : scene_(scene) {
+  const auto start = std::chrono::steady_clock::now();
+  top_bvh_ = build_bvh(scene.top, scene.prototype_bounds());
+  prototype_bvhs_.reserve(scene.prototypes.size());
+  for (const Group& prototype : scene.prototypes) prototype_bvhs_.push_back(build_bvh(prototype, {}));
+  build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::size_t NativeTraversal::memory_bytes() const {
+  std::size_t bytes = top_bvh_.memory_bytes();
+  for (const Bvh& bvh : prototype_bvhs_) bytes += bvh.memory_bytes();
+  return bytes;
+}
+
+void NativeTraversal::closest_in_group(const Group& group, const Bvh& bvh, const Ray& ray, std::uint32_t inst, Hit& best,
+                                       float& best_t) const {
+  traverse(bvh, ray, best_t, [&](const PrimitiveRef& ref) {
+    const Geometry& geometry = group.geometries[ref.geom];
+    switch (kind_of(geometry)) {
+      case GeometryKind::kSpheres: {
+        const Sphere& s = std::get<SphereSet>(geometry).spheres[ref.prim];
+        float t;
+        if (intersect_sphere(s.center, s.radius, ray.org, ray.dir, ray.tnear, best_t, t))
+          offer_hit(t, 0.0f, 0.0f, inst, ref, best, best_t);
+        break;
+      }
+      case GeometryKind::kTriangles: {
+        const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
+        const TriangleIndices& tri = mesh.triangles[ref.prim];
+        TriangleHit th;
+        if (intersect_triangle(mesh.vertex(tri.v0), mesh.vertex(tri.v1), mesh.vertex(tri.v2), ray.org, ray.dir,
+                               ray.tnear, best_t, th))
+          offer_hit(th.t, th.u, th.v, inst, ref, best, best_t);
+        break;
+      }
+      case GeometryKind::kInstance: {
+        const Instance& instance = std::get<Instance>(geometry);
+        const Ray local = to_object_space(instance, ray, best_t);
+        if (is_traceable(local))
+          closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local,
+                           ref.geom, best, best_t);
+        break;
+      }
+    }
+    return true;
+  });
+}
+
+bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const Ray& ray) const {
+  bool found = false;
+  const float tfar = ray.tfar;
+  traverse(bvh, ray, tfar, [&](const PrimitiveRef& ref) {
+    const Geometry& geometry = group.geometries[ref.geom];
+    switch (kind_of(geometry)) {
+      case GeometryKind::kSpheres: {
+        const Sphere& s = std::get<SphereSet>(geometry).spheres[ref.prim];
+        float t;
+        found = intersect_sphere(s.center, s.radius, ray.org, ray.dir, ray.tnear, tfar, t) && t < tfar;
+        break;
+      }
+      case GeometryKind::kTriangles: {
+        const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
+        const TriangleIndices& tri = mesh.triangles[ref.prim];
+        TriangleHit th;
+        found = intersect_triangle(mesh.vertex(tri.v0), mesh.vertex(tri.v1), mesh.vertex(tri.v2), ray.org, ray.dir,
+                                   ray.tnear, tfar, th) &&
+                th.t < tfar;
+        break;
+      }
+      case GeometryKind::kInstance: {
+        const Instance& instance = std::get<Instance>(geometry);
+        const Ray local = to_object_space(instance, ray, tfar);
+        found = is_traceable(local) && any_in_group(scene_.prototypes[instance.prototype],
+                                                    prototype_bvhs_[instance.prototype], local);
+        break;
+      }
+    }
+    return !found;
+  });
+  return found;
+}
+
+void NativeTraversal::closest_in_packet(RayPacket& packet, std::uint32_t active, Hit* best) const {
+  const Group& group = scene_.top;
+  traverse_packet(top_bvh_, packet, active, [&](const PrimitiveRef& ref, std::uint32_t lanes) {
+    const Geometry& geometry = group.geometries[ref.geom];
+    switch (kind_of(geometry)) {
+      case GeometryKind::kSpheres: {
+        const Sphere& s = std::get<SphereSet>(geometry).spheres[ref.prim];
+        float t[kPacketSize];
+        for (std::uint32_t hit = intersect_sphere_lanes(s.center, s.radius, packet.lanes(), lanes, t); hit != 0;
+             hit &= hit - 1) {
+          const auto k = static_cast<unsigned>(std::countr_zero(hit));
+          offer_hit(t[k], 0.0f, 0.0f, kInvalidId, ref, best[k], packet.tmax[k]);
+        }
+        break;
+      }
+      case GeometryKind::kTriangles: {
+        const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
+        const TriangleIndices& tri = mesh.triangles[ref.prim];
+        for (; lanes != 0; lanes &= lanes - 1) {
+          const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+          const Ray& ray = *packet.rays[k];
+          TriangleHit th;
+          if (intersect_triangle(mesh.vertex(tri.v0), mesh.vertex(tri.v1), mesh.vertex(tri.v2), ray.org, ray.dir,
+                                 ray.tnear, packet.tmax[k], th))
+            offer_hit(th.t, th.u, th.v, kInvalidId, ref, best[k], packet.tmax[k]);
+        }
+        break;
+      }
+      case GeometryKind::kInstance: {
+        const Instance& instance = std::get<Instance>(geometry);
+        for (; lanes != 0; lanes &= lanes - 1) {
+          const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+          const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
+          if (is_traceable(local))
+            closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local,
+                             ref.geom, best[k], packet.tmax[k]);
+        }
+        break;
+      }
+    }
+    return active;
+  });
+}
+
+// The lanes that something blocks in (tnear, tfar).
+std::uint32_t NativeTraversal::any_in_packet(const RayPacket& packet, std::uint32_t active) const {
+  const Group& group = scene_.top;
+  std::uint32_t blocked = 0;
+  traverse_packet(top_bvh_, packet, active, [&](const PrimitiveRef& ref, std::uint32_t lanes) {
+    const Geometry& geometry = group.geometries[ref.geom];
+    switch (kind_of(geometry)) {
+      case GeometryKind::kSpheres: {
+        const Sphere& s = std::get<SphereSet>(geometry).spheres[ref.prim];
+        float t[kPacketSize];
+        for (std::uint32_t hit = intersect_sphere_lanes(s.center, s.radius, packet.lanes(), lanes, t); hit != 0;
+             hit &= hit - 1) {
+          const auto k = static_cast<unsigned>(std::countr_zero(hit));
+          if (t[k] < packet.tmax[k]) blocked |= 1u << k;
+        }
+        break;
+      }
+      case GeometryKind::kTriangles: {
+        const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
+        const TriangleIndices& tri = mesh.triangles[ref.prim];
+        for (; lanes != 0; lanes &= lanes - 1) {
+          const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+          const Ray& ray = *packet.rays[k];
+          TriangleHit th;
+          if (intersect_triangle(mesh.vertex(tri.v0), mesh.vertex(tri.v1), mesh.vertex(tri.v2), ray.org, ray.dir,
+                                 ray.tnear, packet.tmax[k], th) &&
+              th.t < packet.tmax[k])
+            blocked |= 1u << k;
+        }
+        break;
+      }
+      case GeometryKind::kInstance: {
+        const Instance& instance = std::get<Instance>(geometry);
+        for (; lanes != 0; lanes &= lanes - 1) {
+          const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+          const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
+          if (is_traceable(local) && any_in_group(scene_.prototypes[instance.prototype],
+                                                  prototype_bvhs_[instance.prototype], local))
+            blocked |= 1u << k;
+        }
+        break;
+      }
+    }
+    return active & ~blocked;
+  });
+  return blocked;
+}
+
+}  // namespace rtpro

@@ -1,0 +1,46 @@
+#pragma once
+// The native backend's BVHs and their traversal: one BVH per group; instances transform the ray
+// into object space and descend into their prototype's BVH. Single rays, and packets of eight
+// through the top level (the same answers lane by lane).
+#include "bvh.h"
+#include "ray_packet.h"
+#include "rtpro/backend/hit.h"
+#include "rtpro/core/ray.h"
+#include "rtpro/scene/render_scene.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace rtpro {
+
+class NativeTraversal {
+ public:
+  // Builds the BVHs of the scene's top level and of each prototype.
+  explicit NativeTraversal(const RenderScene& scene);
+
+  // The closest hit along `ray` closer than best_t, under the shared tie rule.
+  void closest(const Ray& ray, Hit& best, float& best_t) const {
+    closest_in_group(scene_.top, top_bvh_, ray, kInvalidId, best, best_t);
+  }
+  bool any(const Ray& ray) const { return any_in_group(scene_.top, top_bvh_, ray); }
+  // The packet's `active` lanes: closest hits into best[lane] (distances in packet.tmax), or the
+  // lanes that something blocks in (tnear, tfar).
+  void closest_in_packet(RayPacket& packet, std::uint32_t active, Hit* best) const;
+  std::uint32_t any_in_packet(const RayPacket& packet, std::uint32_t active) const;
+
+  double build_seconds() const { return build_seconds_; }
+  std::size_t memory_bytes() const;
+
+ private:
+  void closest_in_group(const Group& group, const Bvh& bvh, const Ray& ray, std::uint32_t inst, Hit& best,
+                        float& best_t) const;
+  bool any_in_group(const Group& group, const Bvh& bvh, const Ray& ray) const;
+
+  const RenderScene& scene_;
+  Bvh top_bvh_;
+  std::vector<Bvh> prototype_bvhs_;
+  double build_seconds_ = 0.0;
+};
+
+}  // namespace rtpro
