@@ -176,12 +176,12 @@ struct Sampler {
   }
   std::optional<PathLightSample> operator()(const SphereLight& l) const {
     if (!clearly_outside(l.center, l.radius, from)) return std::nullopt;  // emits outwards only
-    return on_surface(sample_sphere(l.center, l.radius, from, u), Emission{l.radiance, false});
+    return on_surface(sample_sphere(l.center, l.radius, from, u), Emission{l.radiance, false, std::nullopt});
   }
   std::optional<PathLightSample> operator()(const QuadLight& l) const {
     const Vec3 point = l.corner + l.edge1 * u.x + l.edge2 * u.y;
     return on_surface({point, l.normal, area_to_solid_angle(1.0f / l.area, from, point, l.normal)},
-                      Emission{l.radiance, false});
+                      Emission{l.radiance, false, std::nullopt});
   }
   std::optional<PathLightSample> operator()(const EmissiveTriangle& l) const {
     // Uniform over the triangle (the square folded onto it).

@@ -50,7 +50,9 @@ TEST(LightTree, PmfIsADistributionAtRandomPoints) {
     double sum = 0.0;
     for (std::uint32_t i = 0; i < lights.size(); ++i) {
       const float pmf = tree.pmf(p, i);
-      if (!lights[i]) EXPECT_EQ(pmf, 0.0f);
+      if (!lights[i]) {
+        EXPECT_EQ(pmf, 0.0f);
+      }
       sum += pmf;
     }
     constexpr int kPicks = 20000;

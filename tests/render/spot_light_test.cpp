@@ -86,7 +86,9 @@ TEST(SpotLight, WhittedSampleIsThePointLightsTimesTheFalloff) {
     const double falloff = expected_falloff(theta, 10.0, 35.0);
     EXPECT_NEAR(s.radiance.x, 2.0 * falloff, 1e-5) << theta;
     EXPECT_NEAR(s.radiance.z, 0.5 * falloff, 1e-5) << theta;
-    if (theta > 35.0) EXPECT_EQ(s.radiance, Color(0.0f)) << theta;
+    if (theta > 35.0) {
+      EXPECT_EQ(s.radiance, Color(0.0f)) << theta;
+    }
   }
 }
 
@@ -146,7 +148,9 @@ TEST(SpotLight, IsPickedInProportionToItsPower) {
     ASSERT_TRUE(s) << i;
     ASSERT_LT(s->light, 3u);
     ++picked[s->light];
-    if (s->delta) EXPECT_NEAR(s->pdf, power[s->light] / total, 1e-5 * power[s->light] / total);
+    if (s->delta) {
+      EXPECT_NEAR(s->pdf, power[s->light] / total, 1e-5 * power[s->light] / total);
+    }
   }
   for (int l = 0; l < 3; ++l) EXPECT_NEAR(double(picked[l]) / kPicks, power[l] / total, 4.0 / kPicks) << "light " << l;
 }
