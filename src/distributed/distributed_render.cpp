@@ -1,5 +1,6 @@
 #include "rtpro/distributed/distributed_render.h"
 
+#include "follower_tiles.h"
 #include "rank_clock.h"
 #include "rtpro/core/error.h"
 #include "rtpro/job/tile_codec.h"
@@ -23,7 +24,10 @@ namespace rtpro {
 
 namespace {
 
-enum Tag : int { kHello = 1, kVerdict = 2, kRequest = 3, kGrant = 4, kTile = 5, kDone = 6 };
+// kFinished: rank 0 has every rank's kDone of this image. A follower waits for it before it
+// returns, so that nothing it sends for the next frame (its hello) can reach rank 0 while rank 0
+// still waits for another follower's kDone of this one.
+enum Tag : int { kHello = 1, kVerdict = 2, kRequest = 3, kGrant = 4, kTile = 5, kDone = 6, kFinished = 7 };
 
 // The talking threads wake rarely: on a machine whose cores all render, every wake-up takes a core
 // from a worker. Measured on 2 cores, 2 ranks x 1 thread: with pauses from 20 us up, each rank's
@@ -117,92 +121,6 @@ class BackgroundRender {
   std::atomic<bool> finished_{false};
   std::exception_ptr error_;
   std::thread thread_;
-};
-
-// A follower's tiles: indices granted by rank 0, taken by its workers.
-class GrantedTiles final : public TileSource {
- public:
-  // `running_low` is called (by a worker) when a tile taken leaves fewer than the low-water mark.
-  GrantedTiles(RankClock& clock, const std::atomic<bool>* cancel, std::function<void()> running_low)
-      : clock_(clock), cancel_(cancel), running_low_(std::move(running_low)) {}
-  std::optional<std::size_t> next() override {
-    const RankClock::Wait wait(clock_);
-    std::unique_lock lock(mutex_);
-    ready_.wait(lock, [&] { return !queue_.empty() || no_more_; });
-    if (queue_.empty() || (cancel_ && cancel_->load())) return std::nullopt;
-    const std::size_t index = queue_.front();
-    queue_.pop_front();
-    const bool low = queue_.size() < low_water_ && !no_more_;
-    lock.unlock();
-    if (low) running_low_();
-    return index;
-  }
-  void set_low_water(std::size_t tiles) {
-    const std::lock_guard lock(mutex_);
-    low_water_ = tiles;
-  }
-  void add(const std::vector<std::uint64_t>& indices) {
-    {
-      const std::lock_guard lock(mutex_);
-      queue_.insert(queue_.end(), indices.begin(), indices.end());
-    }
-    ready_.notify_all();
-  }
-  void finish() {
-    {
-      const std::lock_guard lock(mutex_);
-      no_more_ = true;
-    }
-    ready_.notify_all();
-  }
-  std::size_t queued() {
-    const std::lock_guard lock(mutex_);
-    return queue_.size();
-  }
-
- private:
-  RankClock& clock_;
-  const std::atomic<bool>* cancel_;
-  std::function<void()> running_low_;
-  std::mutex mutex_;
-  std::condition_variable ready_;
-  std::deque<std::size_t> queue_;
-  std::size_t low_water_ = 0;
-  bool no_more_ = false;
-};
-
-// A follower's finished tiles, waiting for the main thread to send them.
-class OutgoingTiles final : public TileSink {
- public:
-  explicit OutgoingTiles(RankClock& clock) : clock_(clock) {}
-  // Finished tiles wait for the talking thread's next wake-up: one per tile would cost a worker its
-  // core each time.
-  void put(TileResult&& tile) override {
-    clock_.tile_done(tile);
-    const std::lock_guard lock(mutex_);
-    tiles_.push_back(std::move(tile));
-  }
-  // Waits until wake() or `wait` has passed, then takes the finished tiles.
-  std::deque<TileResult> take(std::chrono::microseconds wait) {
-    std::unique_lock lock(mutex_);
-    changed_.wait_for(lock, wait, [&] { return woken_; });
-    woken_ = false;
-    return std::exchange(tiles_, {});
-  }
-  void wake() {
-    {
-      const std::lock_guard lock(mutex_);
-      woken_ = true;
-    }
-    changed_.notify_one();
-  }
-
- private:
-  RankClock& clock_;
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  std::deque<TileResult> tiles_;
-  bool woken_ = false;
 };
 
 // Rank 0's own workers: timed like a follower's, tiles straight into the real sink.
@@ -338,6 +256,7 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
     }
     handling_seconds += thread_cpu_seconds() - handling_start;
   }
+  for (int rank = 1; rank < communicator.size(); ++rank) communicator.send(rank, kFinished, {});
   render.join();
   ranks[0].scheduler_seconds = handling_seconds;
   ranks[0].remote_tiles = remote_tiles;
@@ -405,6 +324,8 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
   const DoneRecord done{clock.tiles(),        rays.camera,          rays.shadow, rays.reflection, rays.refraction,
                         clock.busy_seconds(), clock.idle_seconds(), bytes_sent + sizeof(DoneRecord)};
   communicator.send(0, kDone, bytes_of(done));
+  const Message finished = wait_for_message(communicator);
+  if (finished.tag != kFinished) throw RuntimeError("distributed render: rank 0 sent an unexpected message");
 }
 
 double load_imbalance(const std::vector<RankStats>& ranks) {

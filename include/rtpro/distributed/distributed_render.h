@@ -48,7 +48,8 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
 
 // Other ranks: renders what rank 0 hands out until it has no more, or until `cancel` becomes true
 // (the tiles in flight are still finished and sent). It keeps about 20 ms of rendering queued at
-// its measured speed per tile, for each of its `threads`.
+// its measured speed per tile, for each of its `threads`. Returns once rank 0 has every rank's
+// tiles (so the next frame's messages never meet this one's).
 void follow_distributed_render(Communicator& communicator, const TileRenderer& renderer, const TileGrid& grid,
                                int threads, const std::atomic<bool>* cancel = nullptr);
 
