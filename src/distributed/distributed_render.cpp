@@ -2,6 +2,7 @@
 
 #include "follower_tiles.h"
 #include "rank_clock.h"
+#include "rank_liveness.h"
 #include "rtpro/core/error.h"
 #include "rtpro/job/tile_codec.h"
 #include "rtpro/render/renderer.h"
@@ -26,8 +27,8 @@ namespace {
 
 // kFinished: rank 0 has every rank's kDone of this image. A follower waits for it before it
 // returns, so that nothing it sends for the next frame (its hello) can reach rank 0 while rank 0
-// still waits for another follower's kDone of this one.
-enum Tag : int { kHello = 1, kVerdict = 2, kRequest = 3, kGrant = 4, kTile = 5, kDone = 6, kFinished = 7 };
+// still waits for another follower's kDone of this one. kAlive: a heartbeat (rank_liveness.h).
+enum Tag : int { kHello = 1, kVerdict = 2, kRequest = 3, kGrant = 4, kTile = 5, kDone = 6, kFinished = 7, kAlive = 8 };
 
 // The talking threads wake rarely: on a machine whose cores all render, every wake-up takes a core
 // from a worker. Measured on 2 cores, 2 ranks x 1 thread: with pauses from 20 us up, each rank's
@@ -129,12 +130,16 @@ class TimedSource final : public TileSource {
   TimedSource(TileSource& inner, RankClock& clock) : inner_(inner), clock_(clock) {}
   std::optional<std::size_t> next() override {
     const RankClock::Wait wait(clock_);
+    if (stopped_) return std::nullopt;
     return inner_.next();
   }
+  // The job is ending: the workers finish the tiles they hold and take no more.
+  void stop() { stopped_ = true; }
 
  private:
   TileSource& inner_;
   RankClock& clock_;
+  std::atomic<bool> stopped_{false};
 };
 
 class TimedSink final : public TileSink {
@@ -194,7 +199,7 @@ void agree_on_job(Communicator& communicator, const JobIdentity& identity) {
 
 std::vector<RankStats> lead_distributed_render(Communicator& communicator, const TileRenderer& renderer,
                                                const TileGrid& grid, TileSource& source, TileSink& sink,
-                                               PrestartedThread* render_thread) {
+                                               PrestartedThread* render_thread, std::chrono::milliseconds rank_timeout) {
   const int channels = kAccumulatorFloats;
   std::vector<RankStats> ranks(static_cast<std::size_t>(communicator.size()));
   for (int r = 0; r < communicator.size(); ++r) ranks[std::size_t(r)].rank = r;
@@ -204,18 +209,30 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
   BackgroundRender render(renderer, grid, local_source, local_sink, [] {}, render_thread);
 
   int following = communicator.size() - 1;
+  std::vector<bool> done(ranks.size(), false);
+  RankLiveness liveness(communicator.size(), rank_timeout);
   double handling_seconds = 0.0;
   std::uint64_t remote_tiles = 0;
   while (following > 0) {
     const double handling_start = thread_cpu_seconds();
+    if (liveness.heartbeat_due())
+      for (int rank = 1; rank < communicator.size(); ++rank) communicator.send(rank, kAlive, {});
     std::optional<Message> message = communicator.poll();
     if (!message) {
+      for (int rank = 1; rank < communicator.size(); ++rank)
+        if (!done[std::size_t(rank)] && liveness.silent_too_long(rank)) {
+          local_source.stop();  // rank 0's workers end with their tiles in flight, into the journal
+          render.join();
+          throw RuntimeError(liveness.silence(rank));
+        }
       handling_seconds += thread_cpu_seconds() - handling_start;
       std::this_thread::sleep_for(kLeaderPause);
       continue;
     }
+    liveness.heard(message->source);
     RankStats& from = ranks[std::size_t(message->source)];
     switch (message->tag) {
+      case kAlive: break;
       case kRequest: {
         // Guided hand-out: a follower gets what it asks for, but never more than half of its
         // share of what is left, so the pool's tail is spread over the ranks instead of sitting in
@@ -242,12 +259,13 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
         break;
       }
       case kDone: {
-        const auto done = value_of<DoneRecord>(*message);
-        from.tiles = done.tiles;
-        from.rays = {done.camera, done.shadow, done.reflection, done.refraction};
-        from.busy_seconds = done.busy_seconds;
-        from.idle_seconds = done.idle_seconds;
-        from.bytes_sent = done.bytes_sent;
+        const auto record = value_of<DoneRecord>(*message);
+        from.tiles = record.tiles;
+        from.rays = {record.camera, record.shadow, record.reflection, record.refraction};
+        from.busy_seconds = record.busy_seconds;
+        from.idle_seconds = record.idle_seconds;
+        from.bytes_sent = record.bytes_sent;
+        done[std::size_t(message->source)] = true;
         --following;
         break;
       }
@@ -268,7 +286,7 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
 }
 
 void follow_distributed_render(Communicator& communicator, const TileRenderer& renderer, const TileGrid& grid,
-                               int threads, const std::atomic<bool>* cancel) {
+                               int threads, const std::atomic<bool>* cancel, std::chrono::milliseconds rank_timeout) {
   const int channels = kAccumulatorFloats;
   RankClock clock;
   OutgoingTiles outgoing(clock);
@@ -282,6 +300,26 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
       bytes_sent += bytes.size();
     }
   };
+  // Rank 0 may still be opening its journal when this rank starts: its silence counts from the
+  // first word it sends.
+  RankLiveness liveness(communicator.size(), rank_timeout);
+  bool heard_leader = false;
+  const auto check_leader = [&] {
+    if (heard_leader && liveness.silent_too_long(0)) {
+      granted.stop();  // the workers finish their tiles in flight; the job ends without them
+      render.join();
+      throw RuntimeError(liveness.silence(0));
+    }
+  };
+  // Returns a message other than a heartbeat, if one came.
+  const auto poll_leader = [&]() -> std::optional<Message> {
+    while (std::optional<Message> message = communicator.poll()) {
+      heard_leader = true;
+      liveness.heard(0);
+      if (message->tag != kAlive) return message;
+    }
+    return std::nullopt;
+  };
   bool asked = false, no_more = false;
   outgoing.wake();  // the first pass asks for tiles at once
   while (true) {
@@ -292,6 +330,7 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
       send_tiles(outgoing.take(std::chrono::microseconds(0)));
       break;
     }
+    if (liveness.heartbeat_due()) communicator.send(0, kAlive, {});
     if (!no_more && cancel && cancel->load()) {
       no_more = true;  // the tiles in flight are finished and sent; the queued ones are left to rank 0's journal
       granted.finish();
@@ -304,7 +343,7 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
       bytes_sent += sizeof wanted;
       asked = true;
     }
-    while (std::optional<Message> message = communicator.poll()) {
+    while (std::optional<Message> message = poll_leader()) {
       if (message->tag != kGrant) throw RuntimeError("distributed render: rank 0 sent an unexpected message");
       std::vector<std::uint64_t> indices(message->bytes.size() / sizeof(std::uint64_t));
       if (!indices.empty()) std::memcpy(indices.data(), message->bytes.data(), indices.size() * sizeof(std::uint64_t));
@@ -318,14 +357,22 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
         granted.add(indices);
       }
     }
+    check_leader();
   }
   render.join();
   const RayCounts rays = clock.rays();
   const DoneRecord done{clock.tiles(),        rays.camera,          rays.shadow, rays.reflection, rays.refraction,
                         clock.busy_seconds(), clock.idle_seconds(), bytes_sent + sizeof(DoneRecord)};
   communicator.send(0, kDone, bytes_of(done));
-  const Message finished = wait_for_message(communicator);
-  if (finished.tag != kFinished) throw RuntimeError("distributed render: rank 0 sent an unexpected message");
+  // No heartbeats from here: rank 0 reads nothing more of this image once every kDone is in.
+  while (true) {
+    if (std::optional<Message> message = poll_leader()) {
+      if (message->tag != kFinished) throw RuntimeError("distributed render: rank 0 sent an unexpected message");
+      return;
+    }
+    check_leader();
+    std::this_thread::sleep_for(kGrantPollPause);
+  }
 }
 
 double load_imbalance(const std::vector<RankStats>& ranks) {

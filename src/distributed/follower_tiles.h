@@ -53,6 +53,15 @@ class GrantedTiles final : public TileSource {
     }
     ready_.notify_all();
   }
+  // The job is ending: the queued tiles are left (rank 0's journal does not have them).
+  void stop() {
+    {
+      const std::lock_guard lock(mutex_);
+      queue_.clear();
+      no_more_ = true;
+    }
+    ready_.notify_all();
+  }
   std::size_t queued() {
     const std::lock_guard lock(mutex_);
     return queue_.size();

@@ -221,6 +221,67 @@ TEST(DistributedRender, FramesFollowEachOtherWhenOneRankIsLate) {
   for (auto& follower : followers) follower.join();
 }
 
+// Issue 28: a stopped or unreachable rank held the whole job for ever. Rank 2 here never says a
+// word: rank 0 ends the render naming it once the rank timeout has passed, after its own workers
+// finish (rank 1's tiles and rank 0's reach the sink, as they reach the journal).
+TEST(DistributedRender, SilentRankEndsTheRenderAfterTheRankTimeout) {
+  RenderScene scene = test::random_mixed_scene(3, 32, 24, 6);
+  test::set_camera(scene, 45, 31);
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
+  RenderOptions options;
+  options.tile_size = 8;
+  const TileGrid grid = render_grid(scene, checked_region(scene, options), options.tile_size);
+  Mailboxes mail(3);
+  std::thread follower([&] {
+    ThreadCommunicator communicator(mail, 1);
+    const TileRenderer renderer(scene, *backend, grid);
+    try {
+      follow_distributed_render(communicator, renderer, grid, 1, nullptr, std::chrono::milliseconds(1000));
+    } catch (const RuntimeError&) {
+      // rank 0 went quiet once it gave up: in a real job its MPI_Abort ends this rank first
+    }
+  });
+  ThreadCommunicator leader(mail, 0);
+  options.tile_executor = [&](const TileRenderer& renderer, const TileGrid& tiles, TileSource& source, TileSink& sink) {
+    lead_distributed_render(leader, renderer, tiles, source, sink, nullptr, std::chrono::milliseconds(1000));
+  };
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    render_image(scene, *backend, options);
+    ADD_FAILURE() << "the render waited for a silent rank and finished";
+  } catch (const RuntimeError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("rank 2 sent nothing for"), std::string::npos) << message;
+    EXPECT_NE(message.find("--rank-timeout 1"), std::string::npos) << message;
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_GT(seconds, 0.9);
+  EXPECT_LT(seconds, 5.0);
+  follower.join();
+}
+
+// The other way round: rank 0 answers once and then goes silent (stopped); the follower ends.
+TEST(DistributedRender, FollowerEndsWhenRankZeroFallsSilent) {
+  RenderScene scene = test::random_mixed_scene(3, 32, 24, 6);
+  test::set_camera(scene, 45, 31);
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
+  const TileGrid grid = render_grid(scene, checked_region(scene, RenderOptions{}), 8);
+  Mailboxes mail(2);
+  ThreadCommunicator leader(mail, 0);
+  const std::vector<std::uint64_t> one_tile{0};
+  leader.send(1, 4, std::as_bytes(std::span(one_tile)));  // a grant, then nothing more
+  ThreadCommunicator communicator(mail, 1);
+  const TileRenderer renderer(scene, *backend, grid);
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    follow_distributed_render(communicator, renderer, grid, 1, nullptr, std::chrono::milliseconds(1000));
+    ADD_FAILURE() << "the follower waited for a silent rank 0 and returned";
+  } catch (const RuntimeError& e) {
+    EXPECT_NE(std::string(e.what()).find("rank 0 sent nothing for"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+}
+
 TEST(DistributedRender, LoadImbalanceIsBusiestOverMean) {
   std::vector<RankStats> ranks(2);
   ranks[0].busy_seconds = 3.0;
