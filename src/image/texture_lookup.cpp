@@ -100,11 +100,11 @@ constexpr std::uint64_t kTexturePreparationBytesPerPixel = 12 + 16 + 12;
 
 class OiioTextureLookup final : public TextureLookup {
  public:
-  explicit OiioTextureLookup(std::span<const TextureSource> sources) : system_(&texture_system()) {
+  OiioTextureLookup(std::span<const TextureSource> sources, std::uint64_t max_bytes) : system_(&texture_system()) {
     const ColorConfig config = ColorConfig::bundled();
     for (std::size_t i = 0; i < sources.size(); ++i) {
       const TextureSource& source = sources[i];
-      const Image image = read_image_counting(source.bytes ? write_embedded(source, i) : source.file, 0,
+      const Image image = read_image_counting(source.bytes ? write_embedded(source, i) : source.file, max_bytes,
                                               kTexturePreparationBytesPerPixel, "with its linear and mip-mapped texture copies");
       const std::vector<float> rgb = linear_rgb(image, config.to_scene_linear(source.colorspace));
       const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
@@ -163,8 +163,8 @@ class OiioTextureLookup final : public TextureLookup {
 
 }  // namespace
 
-std::unique_ptr<TextureLookup> open_textures(std::span<const TextureSource> sources) {
-  return std::make_unique<OiioTextureLookup>(sources);
+std::unique_ptr<TextureLookup> open_textures(std::span<const TextureSource> sources, std::uint64_t max_bytes) {
+  return std::make_unique<OiioTextureLookup>(sources, max_bytes);
 }
 
 }  // namespace rtpro

@@ -34,7 +34,9 @@ class TextureLookup {
   virtual Color lookup(std::uint32_t index, float s, float t, TextureWrap wrap) const = 0;
 };
 
-// Opens every source. Throws InputError naming the file when one cannot be read or decoded.
-std::unique_ptr<TextureLookup> open_textures(std::span<const TextureSource> sources);
+// Opens every source. Throws InputError naming the file when one cannot be read or decoded, or
+// when its decoded floats and texture copies would exceed `max_bytes` (0: the default budget;
+// render --max-memory), checked from its header before it is decoded.
+std::unique_ptr<TextureLookup> open_textures(std::span<const TextureSource> sources, std::uint64_t max_bytes = 0);
 
 }  // namespace rtpro
