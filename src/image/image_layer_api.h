@@ -14,7 +14,7 @@
 namespace rtpro {
 
 // Raise whenever a call is added, removed or changes its signature.
-inline constexpr int kImageLayerAbiVersion = 4;
+inline constexpr int kImageLayerAbiVersion = 5;
 inline constexpr const char* kImageLayerEntryPoint = "rtpro_image_layer";
 inline constexpr const char* kImageLayerFileName = "librtpro_image_oiio.so";
 

@@ -1,5 +1,6 @@
 // Image textures against the render's memory budget (issue 28): a texture's decoded floats and
-// the copies preparing it makes count against --max-memory, from its header, before decoding.
+// the copies preparing it makes count against --max-memory, from its header, before decoding;
+// the refusal names the image and where the scene named it.
 #include "rtpro/image/image_io.h"
 #include "test_fixtures.h"
 #include "test_paths.h"
@@ -31,6 +32,8 @@ world: [{type: sphere, material: textured}]
       << out;
   EXPECT_NE(out.find("big.png"), std::string::npos) << out;
   EXPECT_NE(out.find("with its linear and mip-mapped texture copies"), std::string::npos) << out;
+  // And where the scene named it: line 4, the material's texture key.
+  EXPECT_NE(out.find("(the texture named at " + scene.string() + ":4:"), std::string::npos) << out;
   EXPECT_FALSE(std::filesystem::exists(dir / "a.png"));
   ASSERT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + (dir / "b.png").string() +
                                       " --progress never --max-memory 512"),
