@@ -138,6 +138,9 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   if (o.resume && output.to_stdout()) throw InputError("--resume needs an output file: -o - keeps no journal");
   if (!(o.time_limit >= 0.0 && o.time_limit < 1e9))
     throw InputError("--time-limit must be a number of seconds >= 0 (0: no limit)");
+  if (!(o.rank_timeout == 0.0 || (o.rank_timeout >= 1.0 && o.rank_timeout <= 1e6)))
+    throw InputError("--rank-timeout must be 0 (wait for ever) or between 1 and 1000000 seconds");
+  const auto rank_timeout = std::chrono::milliseconds(static_cast<std::int64_t>(o.rank_timeout * 1000.0));
   if (!(o.noise_threshold >= 0.0 && o.noise_threshold < 1e6))
     throw InputError("--noise-threshold must be >= 0 (0: every pixel takes every sample; Cycles' default is 0.01)");
   if (o.min_samples < 0) throw InputError("--min-samples must be >= 0 (0: automatic)");
@@ -270,13 +273,14 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
     // rank 0 writes the partial image, as a single process does (if mpirun allows the time:
     // its odls_base_sigkill_timeout, 1 s by default).
     const InterruptGuard interrupt;
-    follow_distributed_render(*job, renderer, grid, threads, &InterruptGuard::requested());
+    follow_distributed_render(*job, renderer, grid, threads, &InterruptGuard::requested(), rank_timeout);
     return kExitOk;
   }
   if (job)
-    render_options.tile_executor = [&job, &stats, &render_thread](const TileRenderer& renderer, const TileGrid& tiles,
-                                                  TileSource& source, TileSink& sink) {
-      stats.ranks = lead_distributed_render(*job, renderer, tiles, source, sink, &*render_thread);
+    render_options.tile_executor = [&job, &stats, &render_thread, rank_timeout](const TileRenderer& renderer,
+                                                                               const TileGrid& tiles, TileSource& source,
+                                                                               TileSink& sink) {
+      stats.ranks = lead_distributed_render(*job, renderer, tiles, source, sink, &*render_thread, rank_timeout);
     };
   const InterruptGuard interrupt;
   ProgressReporter progress(progress_mode, isatty(STDERR_FILENO) == 1, o.frame);

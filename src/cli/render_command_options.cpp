@@ -63,6 +63,11 @@ void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
                 "an uninterrupted one");
   cmd.add_option("--time-limit", o.time_limit,
                   "Stop after this many seconds with the passes finished by then (the first always finishes)");
+  cmd.add_option("--rank-timeout", o.rank_timeout,
+                  "Under mpirun: end the job when a rank sends nothing for this many seconds while the ranks render "
+                  "(stopped, hung or unreachable), as if it had died; the journal keeps the finished tiles "
+                  "(0: wait for ever)")
+      ->capture_default_str();
   cmd.add_option("--noise-threshold", o.noise_threshold,
                   "Adaptive sampling: a pixel stops when its error (--noise-metric) is below this, e.g. 0.01 "
                   "(cycles) or 0.002 (relmse); --spp is then the most a pixel gets");

@@ -54,9 +54,10 @@ JobIdentity render_job_identity(const SceneDescription& description, const Scene
 OpenedJournal open_render_journal(const std::filesystem::path& output, const JobIdentity& identity,
                                   const TileGrid& grid, int channel_count, bool resume, Log& log) {
   const std::filesystem::path file = journal_path(output);
-  std::error_code error;
-  const bool exists = std::filesystem::exists(file, error);
   OpenedJournal opened;
+  opened.owner = std::make_unique<JournalOwner>(file);  // refuses a FIFO, device, directory or link there too
+  std::error_code error;
+  const bool exists = std::filesystem::symlink_status(file, error).type() != std::filesystem::file_type::not_found;
   if (resume && !exists) {
     log.warning("--resume: no journal at " + file.string() + "; rendering every tile");
   } else if (resume) {

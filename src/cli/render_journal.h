@@ -4,6 +4,7 @@
 #include "log.h"
 #include "rtpro/backend/backend.h"
 #include "rtpro/job/job_identity.h"
+#include "rtpro/job/journal_owner.h"
 #include "rtpro/job/tile_journal.h"
 #include "rtpro/render/adaptive_sampling.h"
 #include "rtpro/render/film.h"
@@ -32,13 +33,16 @@ JobIdentity render_job_identity(const SceneDescription& description, const Scene
                                 const RenderScene& scene, const RenderJobSettings& settings);
 
 struct OpenedJournal {
+  std::unique_ptr<JournalOwner> owner;  // held until the render ends (declared first: released last)
   std::unique_ptr<TileJournal> journal;
   std::vector<TileResult> finished;  // work items read back with --resume
 };
 
-// With `resume`, reads the journal beside `output` (none: every tile is rendered, with a warning)
-// and refuses one of another job with an InputError listing what differs. Then starts the journal
-// afresh with the tiles kept, so torn or corrupt records are gone from it.
+// Takes the journal beside `output` for this render (an InputError when another render owns it,
+// or when something other than a regular file is at its name). With `resume`, reads the journal
+// (none: every tile is rendered, with a warning) and refuses one of another job with an
+// InputError listing what differs. Then starts the journal afresh with the tiles kept, so torn or
+// corrupt records are gone from it.
 OpenedJournal open_render_journal(const std::filesystem::path& output, const JobIdentity& identity,
                                   const TileGrid& grid, int channel_count, bool resume, Log& log);
 

@@ -22,8 +22,10 @@ SceneImages open_scene_images(const RenderScene& scene, std::uint64_t memory_byt
   if (!scene.textures.empty()) {
     std::vector<TextureSource> sources;
     for (const TextureImage& texture : scene.textures)
-      sources.push_back({texture.file, texture.colorspace, texture.bytes.get()});
-    images.textures = open_textures(sources);
+      sources.push_back({texture.file, texture.colorspace, texture.bytes.get(), texture.where.str()});
+    // Each texture's decoded floats and copies count against the render's budget (--max-memory)
+    // from its header, before it is decoded.
+    images.textures = open_textures(sources, memory_bytes);
     log.verbose("opened " + std::to_string(sources.size()) + " image textures");
   }
   if (scene.environment) {

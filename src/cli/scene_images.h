@@ -18,7 +18,7 @@ struct SceneImages {
 };
 
 // Reads through the image layer (waiting for its load); `memory_bytes` bounds the environment's
-// image. Logs the counts and times at verbose level.
+// image and each image texture with its copies. Logs the counts and times at verbose level.
 SceneImages open_scene_images(const RenderScene& scene, std::uint64_t memory_bytes, Log& log);
 
 }  // namespace rtpro::cli

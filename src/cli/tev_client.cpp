@@ -7,10 +7,10 @@
 #include <netdb.h>
 #include <poll.h>
 #include <sys/socket.h>
-#include <sys/time.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 
 namespace rtpro::cli {
@@ -77,13 +77,7 @@ int connect_with_timeout(const DisplayServerAddress& address, int timeout_second
     }
   }
   freeaddrinfo(found);
-  if (connected >= 0) {
-    // Blocking from now on, but never for longer than the send timeout.
-    fcntl(connected, F_SETFL, fcntl(connected, F_GETFL, 0) & ~O_NONBLOCK);
-    timeval timeout{TevClient::kSendTimeoutSeconds, 0};
-    setsockopt(connected, SOL_SOCKET, SO_SNDTIMEO, &timeout, sizeof timeout);
-  }
-  return connected;
+  return connected;  // non-blocking: send_packet waits with poll, against its deadline
 }
 
 }  // namespace
@@ -113,43 +107,102 @@ TevClient::TevClient(const DisplayServerAddress& address, const std::string& nam
                  "); rendering without it");
     return;
   }
-  std::lock_guard lock(mutex_);
-  send_packet(create_image_packet(name_, width, height));
+  connected_ = true;
+  queue_.push_back(create_image_packet(name_, width, height));
+  queued_bytes_ = queue_.back().size();
+  sender_ = std::thread([this] { send_queued(); });
 }
 
 TevClient::~TevClient() {
+  if (sender_.joinable()) {
+    {
+      const std::lock_guard lock(mutex_);
+      finishing_ = true;
+    }
+    changed_.notify_one();
+    sender_.join();
+  }
   if (socket_ >= 0) close(socket_);
+  if (dropped_tiles_ > 0)
+    log_.verbose("live preview: " + std::to_string(dropped_tiles_) +
+                 " tile updates were dropped while the display server was slower than the render");
 }
 
 bool TevClient::connected() const {
-  std::lock_guard lock(mutex_);
-  return socket_ >= 0;
+  const std::lock_guard lock(mutex_);
+  return connected_;
 }
 
 void TevClient::send_tile(const Image& image, const PixelRegion& region) {
-  std::lock_guard lock(mutex_);
-  if (socket_ < 0) return;
-  send_packet(update_image_packet(name_, image, region));
-}
-
-void TevClient::send_packet(const std::string& packet) {
-  std::size_t sent = 0;
-  while (sent < packet.size() && socket_ >= 0) {
-    const ssize_t got = send(socket_, packet.data() + sent, packet.size() - sent, MSG_NOSIGNAL);
-    if (got < 0 && errno == EINTR) continue;
-    if (got <= 0) {
-      drop(errno == EAGAIN || errno == EWOULDBLOCK ? "it stopped reading" : std::strerror(errno));
+  {
+    const std::lock_guard lock(mutex_);
+    if (!connected_) return;
+  }
+  std::string packet = update_image_packet(name_, image, region);
+  {
+    const std::lock_guard lock(mutex_);
+    if (!connected_) return;
+    if (!queue_.empty() && queued_bytes_ + packet.size() > kMaxQueuedBytes) {
+      ++dropped_tiles_;
       return;
     }
-    sent += static_cast<std::size_t>(got);
+    queued_bytes_ += packet.size();
+    queue_.push_back(std::move(packet));
   }
+  changed_.notify_one();
+}
+
+void TevClient::send_queued() {
+  while (true) {
+    std::string packet;
+    {
+      std::unique_lock lock(mutex_);
+      changed_.wait(lock, [&] { return !queue_.empty() || finishing_; });
+      if (queue_.empty()) return;
+      packet = std::move(queue_.front());
+      queue_.pop_front();
+      queued_bytes_ -= packet.size();
+    }
+    if (const std::string why = send_packet(packet); !why.empty()) {
+      drop(why);
+      return;
+    }
+  }
+}
+
+std::string TevClient::send_packet(const std::string& packet) {
+  using Clock = std::chrono::steady_clock;
+  // One deadline for the whole packet: a viewer that takes a byte now and then must not hold
+  // the sender (and the end of the render) for kSendTimeoutSeconds per byte.
+  const Clock::time_point deadline = Clock::now() + std::chrono::seconds(kSendTimeoutSeconds);
+  Clock::time_point progress = Clock::now();
+  std::size_t sent = 0;
+  while (sent < packet.size()) {
+    const ssize_t got = send(socket_, packet.data() + sent, packet.size() - sent, MSG_NOSIGNAL | MSG_DONTWAIT);
+    if (got > 0) {
+      sent += static_cast<std::size_t>(got);
+      progress = Clock::now();
+      continue;
+    }
+    if (got < 0 && errno == EINTR) continue;
+    if (got == 0 || (errno != EAGAIN && errno != EWOULDBLOCK)) return std::strerror(errno);
+    const Clock::time_point now = Clock::now();
+    if (now >= deadline || (finishing_ && now - progress >= std::chrono::milliseconds(kFinishStallMilliseconds)))
+      return "it stopped reading";
+    // In slices, so that the end of the render is noticed while the viewer holds a packet.
+    pollfd writable{socket_, POLLOUT, 0};
+    poll(&writable, 1, 50);
+  }
+  return {};
 }
 
 void TevClient::drop(const std::string& why) {
   log_.warning("live preview stopped: the display server at " + where_ + " went away (" + why +
                "); the render goes on");
-  close(socket_);
-  socket_ = -1;
+  const std::lock_guard lock(mutex_);
+  connected_ = false;
+  queue_.clear();
+  queued_bytes_ = 0;
 }
 
 }  // namespace rtpro::cli

@@ -2,14 +2,22 @@
 // A live preview in the tev image viewer (`--display-server HOST:PORT`, as in pbrt-v4 and
 // Mitsuba): the image is created when the render starts and each finished tile is sent as it
 // lands, in tev's own IPC protocol (packets in tev_packets.h). The preview never stops a render:
-// a viewer that is absent, stops reading for kSendTimeoutSeconds or goes away gives one warning
-// and the render goes on without it.
+// the workers only queue a packet (a bounded queue: when it is full, a tile is dropped from the
+// preview, never waited for) and a sender thread of its own writes them. A viewer that is absent,
+// takes longer than kSendTimeoutSeconds over one packet or goes away gives one warning and the
+// render goes on without it; at the end, what is still queued gets kFinishStallSeconds without
+// progress before it is dropped.
 #include "log.h"
 #include "rtpro/image/image.h"
 #include "rtpro/render/tiles.h"
 
+#include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <deque>
 #include <mutex>
 #include <string>
+#include <thread>
 
 namespace rtpro::cli {
 
@@ -24,6 +32,9 @@ class TevClient {
  public:
   static constexpr int kConnectTimeoutSeconds = 2;
   static constexpr int kSendTimeoutSeconds = 5;
+  static constexpr int kFinishStallMilliseconds = 500;
+  // Packets waiting for the sender; one packet is always taken, however large (a whole image).
+  static constexpr std::size_t kMaxQueuedBytes = std::size_t(64) << 20;
 
   // Connects and creates the image `name` (R, G, B; width × height); warns through `log` and
   // stays disconnected when that fails.
@@ -32,19 +43,30 @@ class TevClient {
   TevClient(const TevClient&) = delete;
   TevClient& operator=(const TevClient&) = delete;
 
-  // Sends the R, G, B pixels of `region` of `image`; safe to call from several threads.
+  // Queues the R, G, B pixels of `region` of `image` for the viewer, or drops them when the queue
+  // is full; never waits for the viewer. Safe to call from several threads.
   void send_tile(const Image& image, const PixelRegion& region);
   bool connected() const;
 
  private:
-  void send_packet(const std::string& packet);  // with mutex_ held
-  void drop(const std::string& why);            // with mutex_ held
+  void send_queued();  // the sender thread
+  // Writes the whole packet within kSendTimeoutSeconds (and, once the render is finishing, while
+  // the viewer takes some of it every kFinishStallMilliseconds); returns why not, or nothing.
+  std::string send_packet(const std::string& packet);
+  void drop(const std::string& why);
 
   std::string where_;
   std::string name_;
   Log& log_;
+  int socket_ = -1;  // used by the sender thread alone once it runs
   mutable std::mutex mutex_;
-  int socket_ = -1;
+  std::condition_variable changed_;
+  std::deque<std::string> queue_;
+  std::size_t queued_bytes_ = 0;
+  bool connected_ = false;
+  std::atomic<bool> finishing_{false};
+  std::size_t dropped_tiles_ = 0;
+  std::thread sender_;
 };
 
 }  // namespace rtpro::cli

@@ -1,6 +1,8 @@
 #include "rtpro/distributed/distributed_render.h"
 
+#include "follower_tiles.h"
 #include "rank_clock.h"
+#include "rank_liveness.h"
 #include "rtpro/core/error.h"
 #include "rtpro/job/tile_codec.h"
 #include "rtpro/render/renderer.h"
@@ -23,7 +25,10 @@ namespace rtpro {
 
 namespace {
 
-enum Tag : int { kHello = 1, kVerdict = 2, kRequest = 3, kGrant = 4, kTile = 5, kDone = 6 };
+// kFinished: rank 0 has every rank's kDone of this image. A follower waits for it before it
+// returns, so that nothing it sends for the next frame (its hello) can reach rank 0 while rank 0
+// still waits for another follower's kDone of this one. kAlive: a heartbeat (rank_liveness.h).
+enum Tag : int { kHello = 1, kVerdict = 2, kRequest = 3, kGrant = 4, kTile = 5, kDone = 6, kFinished = 7, kAlive = 8 };
 
 // The talking threads wake rarely: on a machine whose cores all render, every wake-up takes a core
 // from a worker. Measured on 2 cores, 2 ranks x 1 thread: with pauses from 20 us up, each rank's
@@ -119,104 +124,22 @@ class BackgroundRender {
   std::thread thread_;
 };
 
-// A follower's tiles: indices granted by rank 0, taken by its workers.
-class GrantedTiles final : public TileSource {
- public:
-  // `running_low` is called (by a worker) when a tile taken leaves fewer than the low-water mark.
-  GrantedTiles(RankClock& clock, const std::atomic<bool>* cancel, std::function<void()> running_low)
-      : clock_(clock), cancel_(cancel), running_low_(std::move(running_low)) {}
-  std::optional<std::size_t> next() override {
-    const RankClock::Wait wait(clock_);
-    std::unique_lock lock(mutex_);
-    ready_.wait(lock, [&] { return !queue_.empty() || no_more_; });
-    if (queue_.empty() || (cancel_ && cancel_->load())) return std::nullopt;
-    const std::size_t index = queue_.front();
-    queue_.pop_front();
-    const bool low = queue_.size() < low_water_ && !no_more_;
-    lock.unlock();
-    if (low) running_low_();
-    return index;
-  }
-  void set_low_water(std::size_t tiles) {
-    const std::lock_guard lock(mutex_);
-    low_water_ = tiles;
-  }
-  void add(const std::vector<std::uint64_t>& indices) {
-    {
-      const std::lock_guard lock(mutex_);
-      queue_.insert(queue_.end(), indices.begin(), indices.end());
-    }
-    ready_.notify_all();
-  }
-  void finish() {
-    {
-      const std::lock_guard lock(mutex_);
-      no_more_ = true;
-    }
-    ready_.notify_all();
-  }
-  std::size_t queued() {
-    const std::lock_guard lock(mutex_);
-    return queue_.size();
-  }
-
- private:
-  RankClock& clock_;
-  const std::atomic<bool>* cancel_;
-  std::function<void()> running_low_;
-  std::mutex mutex_;
-  std::condition_variable ready_;
-  std::deque<std::size_t> queue_;
-  std::size_t low_water_ = 0;
-  bool no_more_ = false;
-};
-
-// A follower's finished tiles, waiting for the main thread to send them.
-class OutgoingTiles final : public TileSink {
- public:
-  explicit OutgoingTiles(RankClock& clock) : clock_(clock) {}
-  // Finished tiles wait for the talking thread's next wake-up: one per tile would cost a worker its
-  // core each time.
-  void put(TileResult&& tile) override {
-    clock_.tile_done(tile);
-    const std::lock_guard lock(mutex_);
-    tiles_.push_back(std::move(tile));
-  }
-  // Waits until wake() or `wait` has passed, then takes the finished tiles.
-  std::deque<TileResult> take(std::chrono::microseconds wait) {
-    std::unique_lock lock(mutex_);
-    changed_.wait_for(lock, wait, [&] { return woken_; });
-    woken_ = false;
-    return std::exchange(tiles_, {});
-  }
-  void wake() {
-    {
-      const std::lock_guard lock(mutex_);
-      woken_ = true;
-    }
-    changed_.notify_one();
-  }
-
- private:
-  RankClock& clock_;
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  std::deque<TileResult> tiles_;
-  bool woken_ = false;
-};
-
 // Rank 0's own workers: timed like a follower's, tiles straight into the real sink.
 class TimedSource final : public TileSource {
  public:
   TimedSource(TileSource& inner, RankClock& clock) : inner_(inner), clock_(clock) {}
   std::optional<std::size_t> next() override {
     const RankClock::Wait wait(clock_);
+    if (stopped_) return std::nullopt;
     return inner_.next();
   }
+  // The job is ending: the workers finish the tiles they hold and take no more.
+  void stop() { stopped_ = true; }
 
  private:
   TileSource& inner_;
   RankClock& clock_;
+  std::atomic<bool> stopped_{false};
 };
 
 class TimedSink final : public TileSink {
@@ -276,7 +199,7 @@ void agree_on_job(Communicator& communicator, const JobIdentity& identity) {
 
 std::vector<RankStats> lead_distributed_render(Communicator& communicator, const TileRenderer& renderer,
                                                const TileGrid& grid, TileSource& source, TileSink& sink,
-                                               PrestartedThread* render_thread) {
+                                               PrestartedThread* render_thread, std::chrono::milliseconds rank_timeout) {
   const int channels = renderer.sums().floats();
   std::vector<RankStats> ranks(static_cast<std::size_t>(communicator.size()));
   for (int r = 0; r < communicator.size(); ++r) ranks[std::size_t(r)].rank = r;
@@ -286,18 +209,30 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
   BackgroundRender render(renderer, grid, local_source, local_sink, [] {}, render_thread);
 
   int following = communicator.size() - 1;
+  std::vector<bool> done(ranks.size(), false);
+  RankLiveness liveness(communicator.size(), rank_timeout);
   double handling_seconds = 0.0;
   std::uint64_t remote_tiles = 0;
   while (following > 0) {
     const double handling_start = thread_cpu_seconds();
+    if (liveness.heartbeat_due())
+      for (int rank = 1; rank < communicator.size(); ++rank) communicator.send(rank, kAlive, {});
     std::optional<Message> message = communicator.poll();
     if (!message) {
+      for (int rank = 1; rank < communicator.size(); ++rank)
+        if (!done[std::size_t(rank)] && liveness.silent_too_long(rank)) {
+          local_source.stop();  // rank 0's workers end with their tiles in flight, into the journal
+          render.join();
+          throw RuntimeError(liveness.silence(rank));
+        }
       handling_seconds += thread_cpu_seconds() - handling_start;
       std::this_thread::sleep_for(kLeaderPause);
       continue;
     }
+    liveness.heard(message->source);
     RankStats& from = ranks[std::size_t(message->source)];
     switch (message->tag) {
+      case kAlive: break;
       case kRequest: {
         // Guided hand-out: a follower gets what it asks for, but never more than half of its
         // share of what is left, so the pool's tail is spread over the ranks instead of sitting in
@@ -324,12 +259,13 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
         break;
       }
       case kDone: {
-        const auto done = value_of<DoneRecord>(*message);
-        from.tiles = done.tiles;
-        from.rays = {done.camera, done.shadow, done.reflection, done.refraction};
-        from.busy_seconds = done.busy_seconds;
-        from.idle_seconds = done.idle_seconds;
-        from.bytes_sent = done.bytes_sent;
+        const auto record = value_of<DoneRecord>(*message);
+        from.tiles = record.tiles;
+        from.rays = {record.camera, record.shadow, record.reflection, record.refraction};
+        from.busy_seconds = record.busy_seconds;
+        from.idle_seconds = record.idle_seconds;
+        from.bytes_sent = record.bytes_sent;
+        done[std::size_t(message->source)] = true;
         --following;
         break;
       }
@@ -338,6 +274,7 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
     }
     handling_seconds += thread_cpu_seconds() - handling_start;
   }
+  for (int rank = 1; rank < communicator.size(); ++rank) communicator.send(rank, kFinished, {});
   render.join();
   ranks[0].scheduler_seconds = handling_seconds;
   ranks[0].remote_tiles = remote_tiles;
@@ -349,7 +286,7 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
 }
 
 void follow_distributed_render(Communicator& communicator, const TileRenderer& renderer, const TileGrid& grid,
-                               int threads, const std::atomic<bool>* cancel) {
+                               int threads, const std::atomic<bool>* cancel, std::chrono::milliseconds rank_timeout) {
   const int channels = renderer.sums().floats();
   RankClock clock;
   OutgoingTiles outgoing(clock);
@@ -363,6 +300,26 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
       bytes_sent += bytes.size();
     }
   };
+  // Rank 0 may still be opening its journal when this rank starts: its silence counts from the
+  // first word it sends.
+  RankLiveness liveness(communicator.size(), rank_timeout);
+  bool heard_leader = false;
+  const auto check_leader = [&] {
+    if (heard_leader && liveness.silent_too_long(0)) {
+      granted.stop();  // the workers finish their tiles in flight; the job ends without them
+      render.join();
+      throw RuntimeError(liveness.silence(0));
+    }
+  };
+  // Returns a message other than a heartbeat, if one came.
+  const auto poll_leader = [&]() -> std::optional<Message> {
+    while (std::optional<Message> message = communicator.poll()) {
+      heard_leader = true;
+      liveness.heard(0);
+      if (message->tag != kAlive) return message;
+    }
+    return std::nullopt;
+  };
   bool asked = false, no_more = false;
   outgoing.wake();  // the first pass asks for tiles at once
   while (true) {
@@ -373,6 +330,7 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
       send_tiles(outgoing.take(std::chrono::microseconds(0)));
       break;
     }
+    if (liveness.heartbeat_due()) communicator.send(0, kAlive, {});
     if (!no_more && cancel && cancel->load()) {
       no_more = true;  // the tiles in flight are finished and sent; the queued ones are left to rank 0's journal
       granted.finish();
@@ -385,7 +343,7 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
       bytes_sent += sizeof wanted;
       asked = true;
     }
-    while (std::optional<Message> message = communicator.poll()) {
+    while (std::optional<Message> message = poll_leader()) {
       if (message->tag != kGrant) throw RuntimeError("distributed render: rank 0 sent an unexpected message");
       std::vector<std::uint64_t> indices(message->bytes.size() / sizeof(std::uint64_t));
       if (!indices.empty()) std::memcpy(indices.data(), message->bytes.data(), indices.size() * sizeof(std::uint64_t));
@@ -399,12 +357,22 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
         granted.add(indices);
       }
     }
+    check_leader();
   }
   render.join();
   const RayCounts rays = clock.rays();
   const DoneRecord done{clock.tiles(),        rays.camera,          rays.shadow, rays.reflection, rays.refraction,
                         clock.busy_seconds(), clock.idle_seconds(), bytes_sent + sizeof(DoneRecord)};
   communicator.send(0, kDone, bytes_of(done));
+  // No heartbeats from here: rank 0 reads nothing more of this image once every kDone is in.
+  while (true) {
+    if (std::optional<Message> message = poll_leader()) {
+      if (message->tag != kFinished) throw RuntimeError("distributed render: rank 0 sent an unexpected message");
+      return;
+    }
+    check_leader();
+    std::this_thread::sleep_for(kGrantPollPause);
+  }
 }
 
 double load_imbalance(const std::vector<RankStats>& ranks) {

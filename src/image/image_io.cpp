@@ -284,6 +284,10 @@ Image read_image_counting(const std::filesystem::path& file, std::uint64_t max_b
   if (!std::filesystem::exists(status)) throw InputError(where, "no such image file");
   if (!std::filesystem::is_regular_file(status))
     throw InputError(where, "not a regular file (a FIFO, device or folder is never read as an image)");
+  // The caller's budget (render's --max-memory or its default) or, without one, the default here.
+  const std::string budget = max_bytes == 0 ? " (the smaller of " + format_bytes(kDefaultMemoryBudgetCap) +
+                                                  " and the available memory)"
+                                            : " (the memory budget)";
   if (max_bytes == 0) max_bytes = default_memory_budget();
   // A small hostile header can declare an enormous image: its size is checked before the library
   // allocates for it (at open for OpenEXR, whose declared size the header check returns) and
@@ -307,9 +311,7 @@ Image read_image_counting(const std::filesystem::path& file, std::uint64_t max_b
                                   (tile_pixels > pixels ? " in tiles of " + std::to_string(tile_pixels) + " pixels" : "") +
                                   " is " +
                                   format_bytes(bytes) + " as floats" + (extra_bytes_per_pixel ? " " + extra_purpose : std::string()) +
-                                  "; the limit is " + format_bytes(max_bytes) +
-                                  " (the smaller of " + format_bytes(kDefaultMemoryBudgetCap) +
-                                  " and the available memory)");
+                                  "; the limit is " + format_bytes(max_bytes) + budget);
   };
   if (const auto declared = check_image_header(file))
     refuse_if_too_large(declared->width, declared->height, declared->channels,

@@ -138,8 +138,8 @@ void write_diff_image(const std::filesystem::path& file, const Image& reference,
   image_layer().write_diff_image(file, reference, test, full_scale);
 }
 
-std::unique_ptr<TextureLookup> open_textures(std::span<const TextureSource> sources) {
-  return std::unique_ptr<TextureLookup>(image_layer().open_textures(sources.data(), sources.size()));
+std::unique_ptr<TextureLookup> open_textures(std::span<const TextureSource> sources, std::uint64_t max_bytes) {
+  return std::unique_ptr<TextureLookup>(image_layer().open_textures(sources.data(), sources.size(), max_bytes));
 }
 
 }  // namespace rtpro

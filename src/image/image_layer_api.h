@@ -14,7 +14,7 @@
 namespace rtpro {
 
 // Raise whenever a call is added, removed or changes its signature.
-inline constexpr int kImageLayerAbiVersion = 3;
+inline constexpr int kImageLayerAbiVersion = 5;
 inline constexpr const char* kImageLayerEntryPoint = "rtpro_image_layer";
 inline constexpr const char* kImageLayerFileName = "librtpro_image_oiio.so";
 
@@ -26,7 +26,7 @@ struct ImageLayerApi {
   ImageComparison (*compare_images)(const Image&, const Image&, const CompareThresholds&);
   void (*write_diff_image)(const std::filesystem::path&, const Image&, const Image&, float);
   // Owned by the caller.
-  TextureLookup* (*open_textures)(const TextureSource*, std::size_t);
+  TextureLookup* (*open_textures)(const TextureSource*, std::size_t, std::uint64_t max_bytes);
 };
 
 // The plugin's one exported symbol, named by kImageLayerEntryPoint.

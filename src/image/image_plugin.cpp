@@ -7,8 +7,8 @@
 
 namespace {
 
-rtpro::TextureLookup* open_textures(const rtpro::TextureSource* sources, std::size_t count) {
-  return rtpro::open_textures(std::span(sources, count)).release();
+rtpro::TextureLookup* open_textures(const rtpro::TextureSource* sources, std::size_t count, std::uint64_t max_bytes) {
+  return rtpro::open_textures(std::span(sources, count), max_bytes).release();
 }
 
 }  // namespace

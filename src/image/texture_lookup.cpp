@@ -100,28 +100,39 @@ constexpr std::uint64_t kTexturePreparationBytesPerPixel = 12 + 16 + 12;
 
 class OiioTextureLookup final : public TextureLookup {
  public:
-  explicit OiioTextureLookup(std::span<const TextureSource> sources) : system_(&texture_system()) {
+  OiioTextureLookup(std::span<const TextureSource> sources, std::uint64_t max_bytes) : system_(&texture_system()) {
     const ColorConfig config = ColorConfig::bundled();
     for (std::size_t i = 0; i < sources.size(); ++i) {
-      const TextureSource& source = sources[i];
-      const Image image = read_image_counting(source.bytes ? write_embedded(source, i) : source.file, 0,
-                                              kTexturePreparationBytesPerPixel, "with its linear and mip-mapped texture copies");
-      const std::vector<float> rgb = linear_rgb(image, config.to_scene_linear(source.colorspace));
-      const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
-      const OIIO::ImageBuf linear(spec, const_cast<float*>(rgb.data()));
-      const std::filesystem::path tx = folder_.path() / (std::to_string(i) + ".tx");
-      OIIO::ImageSpec config_spec;
-      config_spec.attribute("maketx:filtername", "box");
-      // A private copy, read once: zip-compressing its mip levels cost 20 ms of a textured
-      // render's serial start.
-      config_spec.attribute("compression", "none");
-      if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, linear, tx.string(), config_spec))
-        throw InputError(source.file.string() + ": cannot prepare the texture: " + OIIO::geterror());
-      files_.emplace_back(tx.string());
-      OIIO::TextureSystem::TextureHandle* handle = system_->get_texture_handle(files_.back());
-      if (!handle) throw InputError(source.file.string() + ": the texture system cannot open its decoded copy");
-      handles_.push_back(handle);
+      try {
+        prepare(sources[i], i, config, max_bytes);
+      } catch (const InputError& error) {
+        // The image's own file says what is wrong with it; where the scene named it says which
+        // material to change (one image may be behind many).
+        if (sources[i].named_at.empty()) throw;
+        throw InputError(error.where(), error.message() + " (the texture named at " + sources[i].named_at + ")");
+      }
     }
+  }
+
+  // Decodes the texture to linear floats and writes it as the private .tx file the system reads.
+  void prepare(const TextureSource& source, std::size_t i, const ColorConfig& config, std::uint64_t max_bytes) {
+    const Image image = read_image_counting(source.bytes ? write_embedded(source, i) : source.file, max_bytes,
+                                            kTexturePreparationBytesPerPixel, "with its linear and mip-mapped texture copies");
+    const std::vector<float> rgb = linear_rgb(image, config.to_scene_linear(source.colorspace));
+    const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
+    const OIIO::ImageBuf linear(spec, const_cast<float*>(rgb.data()));
+    const std::filesystem::path tx = folder_.path() / (std::to_string(i) + ".tx");
+    OIIO::ImageSpec config_spec;
+    config_spec.attribute("maketx:filtername", "box");
+    // A private copy, read once: zip-compressing its mip levels cost 20 ms of a textured
+    // render's serial start.
+    config_spec.attribute("compression", "none");
+    if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, linear, tx.string(), config_spec))
+      throw InputError(source.file.string() + ": cannot prepare the texture: " + OIIO::geterror());
+    files_.emplace_back(tx.string());
+    OIIO::TextureSystem::TextureHandle* handle = system_->get_texture_handle(files_.back());
+    if (!handle) throw InputError(source.file.string() + ": the texture system cannot open its decoded copy");
+    handles_.push_back(handle);
   }
 
   // An image stored inside a glTF, as a file in the private folder (for rtpro's checked reader).
@@ -163,8 +174,8 @@ class OiioTextureLookup final : public TextureLookup {
 
 }  // namespace
 
-std::unique_ptr<TextureLookup> open_textures(std::span<const TextureSource> sources) {
-  return std::make_unique<OiioTextureLookup>(sources);
+std::unique_ptr<TextureLookup> open_textures(std::span<const TextureSource> sources, std::uint64_t max_bytes) {
+  return std::make_unique<OiioTextureLookup>(sources, max_bytes);
 }
 
 }  // namespace rtpro

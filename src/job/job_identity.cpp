@@ -1,6 +1,7 @@
 #include "rtpro/job/job_identity.h"
 
 #include "rtpro/core/error.h"
+#include "rtpro/core/printable_text.h"
 
 #include <xxhash.h>
 
@@ -69,16 +70,18 @@ std::vector<std::string> JobIdentity::differences(const JobIdentity& other, std:
       if (entry.first == key) return &entry.second;
     return nullptr;
   };
+  // Keys and values come from a journal or another rank: printed escaped.
+  const auto shown = [](const std::string& text) { return printable_text(text); };
   std::vector<std::string> out;
   for (const auto& [key, value] : entries_) {
     const std::string* theirs = find(other, key);
     if (!theirs)
-      out.push_back(key + ": " + value + " here, absent in " + std::string(other_name));
+      out.push_back(shown(key) + ": " + shown(value) + " here, absent in " + std::string(other_name));
     else if (*theirs != value)
-      out.push_back(key + ": " + value + " here, " + *theirs + " in " + std::string(other_name));
+      out.push_back(shown(key) + ": " + shown(value) + " here, " + shown(*theirs) + " in " + std::string(other_name));
   }
   for (const auto& [key, value] : other.entries_)
-    if (!find(*this, key)) out.push_back(key + ": absent here, " + value + " in " + std::string(other_name));
+    if (!find(*this, key)) out.push_back(shown(key) + ": absent here, " + shown(value) + " in " + std::string(other_name));
   return out;
 }
 

@@ -60,24 +60,40 @@ std::vector<std::byte> header_bytes(const JobIdentity& identity) {
   return bytes;
 }
 
-std::vector<std::byte> read_whole(const std::filesystem::path& file) {
-  const int descriptor = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
-  if (descriptor < 0) throw InputError(file.string() + ": cannot read the resume journal: " + std::strerror(errno));
-  std::vector<std::byte> bytes;
-  std::byte chunk[1 << 16];
-  while (true) {
-    const ssize_t got = ::read(descriptor, chunk, sizeof chunk);
-    if (got < 0 && errno == EINTR) continue;
-    if (got < 0) {
-      const int error = errno;
-      ::close(descriptor);
-      throw InputError(file.string() + ": cannot read the resume journal: " + std::strerror(error));
-    }
-    if (got == 0) break;
-    bytes.insert(bytes.end(), chunk, chunk + got);
+// Reads up to `size` bytes (fewer only at the end of the file).
+std::size_t read_up_to(int descriptor, std::byte* out, std::size_t size, const std::filesystem::path& file) {
+  std::size_t got = 0;
+  while (got < size) {
+    const ssize_t n = ::read(descriptor, out + got, size - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw InputError(file.string() + ": cannot read the resume journal: " + std::strerror(errno));
+    if (n == 0) break;
+    got += static_cast<std::size_t>(n);
   }
-  ::close(descriptor);
-  return bytes;
+  return got;
+}
+
+// The journal opened for reading without following a link or waiting on a FIFO, and only if it is
+// a regular file: a /dev/zero or FIFO planted there must be refused, not read for ever.
+int open_journal_for_reading(const std::filesystem::path& file) {
+  check_journal_file(file);
+  const int descriptor = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_NOFOLLOW | O_CLOEXEC);
+  if (descriptor < 0) throw InputError(file.string() + ": cannot read the resume journal: " + std::strerror(errno));
+  struct stat status {};
+  if (::fstat(descriptor, &status) != 0 || !S_ISREG(status.st_mode)) {
+    ::close(descriptor);
+    throw InputError(file.string() + ": the resume journal is not a regular file; rtpro does not read it");
+  }
+  return descriptor;
+}
+
+std::string kind_of_file(mode_t mode) {
+  if (S_ISLNK(mode)) return "a symbolic link";
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
 }
 
 }  // namespace
@@ -88,45 +104,71 @@ std::filesystem::path journal_path(const std::filesystem::path& output) {
   return journal;
 }
 
+void check_journal_file(const std::filesystem::path& file) {
+  struct stat status {};
+  if (::lstat(file.c_str(), &status) != 0) {
+    if (errno == ENOENT) return;
+    throw InputError(file.string() + ": cannot look at the resume journal: " + std::strerror(errno));
+  }
+  if (!S_ISREG(status.st_mode))
+    throw InputError(file.string() + " is " + kind_of_file(status.st_mode) +
+                     ", not a resume journal: rtpro neither reads, replaces nor deletes it; move it away or "
+                     "choose another output");
+}
+
 JournalContents read_journal(const std::filesystem::path& file, const TileGrid& grid, int channel_count) {
-  const std::vector<std::byte> bytes = read_whole(file);
+  const int descriptor = open_journal_for_reading(file);
+  // Read as a stream, a record at a time: what a journal holds is bounded by its grid, not by
+  // the size the file claims (a sparse 20 GB file costs one record's memory and stops at its
+  // first hole).
+  struct Closer {
+    int descriptor;
+    ~Closer() { ::close(descriptor); }
+  } const closer{descriptor};
   const auto not_a_journal = [&](const std::string& why) {
     return InputError(file.string() + ": not an intact rtpro resume journal (" + why +
                       "); delete it to render from the start");
   };
-  std::span<const std::byte> rest(bytes);
-  if (rest.size() >= kOldJournalMagic.size() &&
-      std::memcmp(rest.data(), kOldJournalMagic.data(), kOldJournalMagic.size()) == 0)
+  const auto read = [&](std::byte* out, std::size_t size) { return read_up_to(descriptor, out, size, file); };
+  std::vector<std::byte> buffer(kJournalMagic.size() + sizeof(std::uint64_t));
+  const std::size_t opening = read(buffer.data(), buffer.size());
+  if (opening >= kOldJournalMagic.size() &&
+      std::memcmp(buffer.data(), kOldJournalMagic.data(), kOldJournalMagic.size()) == 0)
     throw not_a_journal("written by an older rtpro, which rendered tiles without passes");
-  if (rest.size() < kJournalMagic.size() || std::memcmp(rest.data(), kJournalMagic.data(), kJournalMagic.size()) != 0)
+  if (opening < kJournalMagic.size() || std::memcmp(buffer.data(), kJournalMagic.data(), kJournalMagic.size()) != 0)
     throw not_a_journal("no journal header");
-  rest = rest.subspan(kJournalMagic.size());
   std::uint64_t length = 0;
-  if (rest.size() < sizeof length) throw not_a_journal("the header is cut short");
-  std::memcpy(&length, rest.data(), sizeof length);
-  rest = rest.subspan(sizeof length);
-  if (length > kMaxIdentityBytes || rest.size() < length + sizeof(std::uint64_t))
-    throw not_a_journal("the header is cut short or damaged");
-  const std::string_view text(reinterpret_cast<const char*>(rest.data()), length);
+  if (opening < buffer.size()) throw not_a_journal("the header is cut short");
+  std::memcpy(&length, buffer.data() + kJournalMagic.size(), sizeof length);
+  if (length > kMaxIdentityBytes) throw not_a_journal("the header is cut short or damaged");
+  buffer.resize(length + sizeof(std::uint64_t));
+  if (read(buffer.data(), buffer.size()) < buffer.size()) throw not_a_journal("the header is cut short or damaged");
+  const std::string_view text(reinterpret_cast<const char*>(buffer.data()), length);
   std::uint64_t checksum = 0;
-  std::memcpy(&checksum, rest.data() + length, sizeof checksum);
+  std::memcpy(&checksum, buffer.data() + length, sizeof checksum);
   if (XXH3_64bits(text.data(), text.size()) != checksum) throw not_a_journal("the header's checksum does not match");
   JournalContents contents;
   contents.identity = JobIdentity::parse(text, file.string());
-  rest = rest.subspan(length + sizeof checksum);
 
   // A record whose header is damaged gives no trustworthy length: the records after it are lost
   // too (their tiles are rendered again). A record with an intact header but a bad checksum is
   // skipped by its length.
   std::vector<bool> seen(2 * grid.count(), false);  // by index, partial and cumulative
-  while (!rest.empty()) {
-    const std::optional<std::size_t> size = tile_record_size_from_header(rest, grid, channel_count);
-    if (!size || *size > rest.size()) {
+  while (true) {
+    buffer.resize(kTileRecordHeaderBytes);
+    const std::size_t got = read(buffer.data(), buffer.size());
+    if (got == 0) break;
+    const std::optional<std::size_t> size = tile_record_size_from_header(std::span(buffer).first(got), grid, channel_count);
+    if (!size) {
       ++contents.dropped_records;
       break;
     }
-    std::optional<TileResult> tile = decode_tile(rest.first(*size), grid, channel_count);
-    rest = rest.subspan(*size);
+    buffer.resize(*size);
+    if (read(buffer.data() + kTileRecordHeaderBytes, *size - kTileRecordHeaderBytes) < *size - kTileRecordHeaderBytes) {
+      ++contents.dropped_records;  // a torn tail
+      break;
+    }
+    std::optional<TileResult> tile = decode_tile(buffer, grid, channel_count);
     const std::size_t key = tile ? 2 * tile->index + (tile->cumulative ? 1 : 0) : 0;
     if (!tile || seen[key]) {
       ++contents.dropped_records;
@@ -163,6 +205,14 @@ void TileJournal::write_new(std::span<const TileResult> kept) {
     const std::vector<std::byte> record = encode_tile(tile, channel_count_);
     if (!write_all(descriptor, record.data(), record.size())) throw fail("write");
     bytes += record.size();
+  }
+  // Only a journal is ever replaced: a FIFO, device or link put there meanwhile stays.
+  try {
+    check_journal_file(file_);
+  } catch (const InputError& error) {
+    ::close(descriptor);
+    ::unlink(temporary.c_str());
+    throw RuntimeError(error.what());
   }
   if (::rename(temporary.c_str(), file_.c_str()) != 0) throw fail("rename");
   if (descriptor_ >= 0) ::close(descriptor_);
@@ -209,9 +259,14 @@ std::string TileJournal::error() const {
 
 void TileJournal::remove() {
   const std::lock_guard lock(mutex_);
-  if (descriptor_ >= 0) ::close(descriptor_);
+  if (descriptor_ < 0) return;
+  // Deletes the journal this object wrote, and nothing put in its place since.
+  struct stat ours {}, there {};
+  const bool same = ::fstat(descriptor_, &ours) == 0 && ::lstat(file_.c_str(), &there) == 0 &&
+                    S_ISREG(there.st_mode) && ours.st_dev == there.st_dev && ours.st_ino == there.st_ino;
+  ::close(descriptor_);
   descriptor_ = -1;
-  ::unlink(file_.c_str());
+  if (same) ::unlink(file_.c_str());
 }
 
 }  // namespace rtpro

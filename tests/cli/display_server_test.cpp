@@ -10,6 +10,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
@@ -240,6 +241,65 @@ TEST(DisplayServer, ViewerThatGoesAwayWarnsOnceAndTheRenderGoesOn) {
   EXPECT_EQ(out.find(warning), out.rfind(warning)) << out;
   const Image written = read_image(output);
   EXPECT_EQ(written.width, 160);
+}
+
+// A viewer that accepts the connection and then never reads a byte (hung, or stopped in a
+// debugger): rtpro's packets fill the socket's buffers and every further send would wait.
+class SilentTevServer {
+ public:
+  SilentTevServer() {
+    listener_ = socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (bind(listener_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || listen(listener_, 1) != 0)
+      throw std::runtime_error("cannot listen");
+    socklen_t length = sizeof address;
+    getsockname(listener_, reinterpret_cast<sockaddr*>(&address), &length);
+    port_ = ntohs(address.sin_port);
+    thread_ = std::thread([this] { client_ = accept(listener_, nullptr, nullptr); });
+  }
+  ~SilentTevServer() {
+    shutdown(listener_, SHUT_RDWR);
+    thread_.join();
+    if (client_ >= 0) close(client_);
+    close(listener_);
+  }
+  int port() const { return port_; }
+
+ private:
+  int listener_ = -1, port_ = 0;
+  int client_ = -1;
+  std::thread thread_;
+};
+
+// Issue 28: a viewer that accepts and stops reading held a 0.4 s render for 16-21 s (each
+// partial send restarted the 5 s timeout, and the workers waited on the preview's lock). The
+// preview must cost tiles of the preview, not render time: 1.5 MB of tiles and 1.5 MB for each of
+// the 4 passes' images fill the socket's buffers, and the render still ends near its time alone.
+TEST(DisplayServer, ViewerThatNeverReadsDoesNotHoldTheRender) {
+  const auto scene = test::write_file("scene.yaml", scene_text(360, 360));
+  const auto dir = scene.parent_path();
+  const std::string args = " --integrator path --spp 8 --tile-size 16 --progress never";
+  using Clock = std::chrono::steady_clock;
+  auto start = Clock::now();
+  ASSERT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + (dir / "alone.exr").string() + args)), 0);
+  const double alone = std::chrono::duration<double>(Clock::now() - start).count();
+
+  SilentTevServer server;
+  std::string out;
+  start = Clock::now();
+  ASSERT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + (dir / "previewed.exr").string() + args +
+                                      " --display-server 127.0.0.1:" + std::to_string(server.port())),
+                        &out),
+            0)
+      << out;
+  const double previewed = std::chrono::duration<double>(Clock::now() - start).count();
+  EXPECT_LT(previewed, alone + 2.0) << "alone " << alone << " s, with a viewer that never reads " << previewed << " s";
+  const std::string warning = "live preview stopped: the display server at 127.0.0.1:";
+  EXPECT_NE(out.find(warning), std::string::npos) << out;
+  EXPECT_EQ(out.find(warning), out.rfind(warning)) << out;
+  EXPECT_EQ(read_image(dir / "alone.exr").data, read_image(dir / "previewed.exr").data);
 }
 
 }  // namespace display_server_test

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -205,6 +206,69 @@ TEST(Resume, WithoutAJournalRendersEverythingAndNoJournalKeepsNone) {
   EXPECT_NE(output.find("no journal"), std::string::npos) << output;
   EXPECT_EQ(run_command(render_cmd(scene, dir / "b.exr", "--no-journal --resume"), &output), 2);
   EXPECT_NE(output.find("--no-journal"), std::string::npos) << output;
+}
+
+// Issue 28: a FIFO, device, directory or link at OUT.rtpro-journal is refused with exit 2 and a
+// message naming it, before rendering and without blocking on it; it stays where it is.
+TEST(Resume, FifoOrLinkAtTheJournalIsRefusedWithoutBlockingAndLeftInPlace) {
+  const auto dir = test::scratch_dir();
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto out = dir / "out.exr";
+  const std::filesystem::path journal = out.string() + ".rtpro-journal";
+  ASSERT_EQ(::mkfifo(journal.c_str(), 0600), 0);
+  for (const std::string extra : {"", "--resume"}) {
+    SCOPED_TRACE(extra);
+    std::string output;
+    // `timeout`: a render blocked on the FIFO fails the test instead of hanging it.
+    EXPECT_EQ(run_command("timeout 60 " + render_cmd(scene, out, extra), &output), 2) << output;
+    EXPECT_NE(output.find(journal.string() + " is a FIFO"), std::string::npos) << output;
+    EXPECT_EQ(std::filesystem::symlink_status(journal).type(), std::filesystem::file_type::fifo);
+  }
+  std::filesystem::remove(journal);
+  const auto target = test::write_file("precious.txt", "precious");
+  std::filesystem::create_symlink(target, journal);
+  std::string output;
+  EXPECT_EQ(run_command(render_cmd(scene, out, ""), &output), 2) << output;
+  EXPECT_NE(output.find(journal.string() + " is a symbolic link"), std::string::npos) << output;
+  EXPECT_TRUE(std::filesystem::is_symlink(journal));
+  std::ifstream kept(target);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "precious");
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// Issue 28: while one render of an output runs, a second is refused (it would replace the
+// first's journal, and the first to finish would delete it); the first's journal survives and
+// resumes exactly.
+TEST(Resume, SecondRenderOfTheSameOutputIsRefusedWhileTheFirstRuns) {
+  const auto dir = test::scratch_dir();
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto whole = dir / "whole.exr", out = dir / "out.exr";
+  ASSERT_EQ(run_command(quiet_render_cmd(scene, whole, "")), 0);
+  const std::filesystem::path journal = out.string() + ".rtpro-journal";
+  const pid_t first = fork();
+  ASSERT_GE(first, 0);
+  if (first == 0) {
+    const std::string exe = rtpro_executable().string();
+    execl(exe.c_str(), exe.c_str(), "render", scene.c_str(), "-o", out.c_str(), "--threads", "1", "--tile-size", "16",
+          "--aov", "albedo", "-q", "--spp", "256", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  while (waitpid(first, &status, WNOHANG) == 0 && recorded_tiles(journal) < 2)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  ASSERT_EQ(waitpid(first, &status, WNOHANG), 0) << "the first render ended before the second started";
+  std::string output;
+  EXPECT_EQ(run_command(render_cmd(scene, out, ""), &output), 2) << output;
+  EXPECT_NE(output.find("another render of the same output owns this resume journal"), std::string::npos) << output;
+  EXPECT_EQ(run_command(render_cmd(scene, out, "--resume"), &output), 2) << output;
+  kill(first, SIGKILL);
+  waitpid(first, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the first render finished before it could be killed";
+  ASSERT_GE(recorded_tiles(journal), 2u) << "the first render's journal was lost";
+  ASSERT_EQ(run_command(quiet_render_cmd(scene, out, "--resume --threads 2"), &output), 0) << output;
+  expect_same_pixels(whole, out);
+  EXPECT_FALSE(std::filesystem::exists(journal));
+  EXPECT_FALSE(std::filesystem::exists(journal.string() + ".lock"));
 }
 
 }  // namespace resume_test

@@ -9,9 +9,11 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <condition_variable>
 #include <cstring>
 #include <deque>
+#include <exception>
 #include <mutex>
 #include <thread>
 
@@ -158,6 +160,130 @@ TEST(DistributedRender, HandshakeNamesTheRankAndWhatDiffers) {
   // Rank 1 waits for a verdict that never comes (in a real job MPI_Abort ends it): release it.
   leader.send(1, 2, {});
   same.join();
+}
+
+// A rank whose every message reaches the others `delay` late: a slow link, or a node under load.
+class SlowCommunicator final : public Communicator {
+ public:
+  SlowCommunicator(Communicator& inner, std::chrono::milliseconds delay) : inner_(inner), delay_(delay) {}
+  int rank() const override { return inner_.rank(); }
+  int size() const override { return inner_.size(); }
+  void send(int destination, int tag, std::span<const std::byte> bytes) override {
+    std::this_thread::sleep_for(delay_);
+    inner_.send(destination, tag, bytes);
+  }
+  std::optional<Message> poll() override { return inner_.poll(); }
+  [[noreturn]] void abort(int code) override {
+    inner_.abort(code);
+    std::terminate();  // the inner communicator's abort does not return either
+  }
+
+ private:
+  Communicator& inner_;
+  std::chrono::milliseconds delay_;
+};
+
+// Issue 28: `mpirun -n 3 ... --frames 1-3` failed in frame 1 with "rank N sent an unexpected
+// message": a follower that finished its frame sent the next frame's hello while rank 0 still
+// waited for the other follower's last message of this one. Here rank 2's messages are late, so
+// rank 1 always finishes first; every frame must still come out whole.
+TEST(DistributedRender, FramesFollowEachOtherWhenOneRankIsLate) {
+  RenderScene scene = test::random_mixed_scene(3, 32, 24, 6);
+  test::set_camera(scene, 45, 31);
+  scene.render.spp = 1;
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
+  RenderOptions options;
+  options.tile_size = 8;
+  const RenderResult alone = render_image(scene, *backend, options);
+  const TileGrid grid = render_grid(scene, checked_region(scene, options), options.tile_size);
+  JobIdentity identity;
+  identity.set("rtpro", "test");
+  constexpr int kFrames = 3;
+  Mailboxes mail(3);
+  std::vector<std::thread> followers;
+  for (int rank = 1; rank < 3; ++rank)
+    followers.emplace_back([&, rank] {
+      ThreadCommunicator direct(mail, rank);
+      SlowCommunicator slow(direct, std::chrono::milliseconds(rank == 2 ? 20 : 0));
+      const TileRenderer renderer(scene, *backend, grid, render_sums(options));
+      for (int frame = 0; frame < kFrames; ++frame) {
+        agree_on_job(slow, identity);
+        follow_distributed_render(slow, renderer, grid, 1);
+      }
+    });
+  ThreadCommunicator leader(mail, 0);
+  options.tile_executor = [&](const TileRenderer& renderer, const TileGrid& tiles, TileSource& source, TileSink& sink) {
+    lead_distributed_render(leader, renderer, tiles, source, sink);
+  };
+  for (int frame = 0; frame < kFrames; ++frame) {
+    SCOPED_TRACE("frame " + std::to_string(frame));
+    agree_on_job(leader, identity);
+    const RenderResult result = render_image(scene, *backend, options);
+    ASSERT_TRUE(result.complete());
+    EXPECT_EQ(std::memcmp(result.image.data.data(), alone.image.data.data(), alone.image.data.size() * sizeof(float)), 0);
+  }
+  for (auto& follower : followers) follower.join();
+}
+
+// Issue 28: a stopped or unreachable rank held the whole job for ever. Rank 2 here never says a
+// word: rank 0 ends the render naming it once the rank timeout has passed, after its own workers
+// finish (rank 1's tiles and rank 0's reach the sink, as they reach the journal).
+TEST(DistributedRender, SilentRankEndsTheRenderAfterTheRankTimeout) {
+  RenderScene scene = test::random_mixed_scene(3, 32, 24, 6);
+  test::set_camera(scene, 45, 31);
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
+  RenderOptions options;
+  options.tile_size = 8;
+  const TileGrid grid = render_grid(scene, checked_region(scene, options), options.tile_size);
+  Mailboxes mail(3);
+  std::thread follower([&] {
+    ThreadCommunicator communicator(mail, 1);
+    const TileRenderer renderer(scene, *backend, grid, render_sums(options));
+    try {
+      follow_distributed_render(communicator, renderer, grid, 1, nullptr, std::chrono::milliseconds(1000));
+    } catch (const RuntimeError&) {
+      // rank 0 went quiet once it gave up: in a real job its MPI_Abort ends this rank first
+    }
+  });
+  ThreadCommunicator leader(mail, 0);
+  options.tile_executor = [&](const TileRenderer& renderer, const TileGrid& tiles, TileSource& source, TileSink& sink) {
+    lead_distributed_render(leader, renderer, tiles, source, sink, nullptr, std::chrono::milliseconds(1000));
+  };
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    render_image(scene, *backend, options);
+    ADD_FAILURE() << "the render waited for a silent rank and finished";
+  } catch (const RuntimeError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("rank 2 sent nothing for"), std::string::npos) << message;
+    EXPECT_NE(message.find("--rank-timeout 1"), std::string::npos) << message;
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_GT(seconds, 0.9);
+  EXPECT_LT(seconds, 5.0);
+  follower.join();
+}
+
+// The other way round: rank 0 answers once and then goes silent (stopped); the follower ends.
+TEST(DistributedRender, FollowerEndsWhenRankZeroFallsSilent) {
+  RenderScene scene = test::random_mixed_scene(3, 32, 24, 6);
+  test::set_camera(scene, 45, 31);
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
+  const TileGrid grid = render_grid(scene, checked_region(scene, RenderOptions{}), 8);
+  Mailboxes mail(2);
+  ThreadCommunicator leader(mail, 0);
+  const std::vector<std::uint64_t> one_tile{0};
+  leader.send(1, 4, std::as_bytes(std::span(one_tile)));  // a grant, then nothing more
+  ThreadCommunicator communicator(mail, 1);
+  const TileRenderer renderer(scene, *backend, grid, render_sums(RenderOptions{}));
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    follow_distributed_render(communicator, renderer, grid, 1, nullptr, std::chrono::milliseconds(1000));
+    ADD_FAILURE() << "the follower waited for a silent rank 0 and returned";
+  } catch (const RuntimeError& e) {
+    EXPECT_NE(std::string(e.what()).find("rank 0 sent nothing for"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 
 TEST(DistributedRender, LoadImbalanceIsBusiestOverMean) {

@@ -51,6 +51,19 @@ def scene_seeds():
     put("scene", "hostile-tags.yaml", "--- !!map\nrtpro: !!int 1\n...\n---\nsecond: document\n")
     put("scene", "hostile-binary.yaml", bytes(range(256)) * 2)
     put("scene", "hostile-cycle.yaml", base + "objects:\n  a: [{type: instance, object: b}]\n  b: [{type: instance, object: a}]\nworld: [{type: instance, object: a}]\n")
+    # glTF placed by the scene file, and image textures named by it (tiny.gltf and tiny.png sit in
+    # the workspace too: scene_fuzz.cpp).
+    put("scene", "gltf-in-yaml.yaml", base + "objects:\n  t: [{type: mesh, file: tiny.gltf}]\nworld:\n  - {type: mesh, file: tiny.gltf}\n"
+        "  - {type: instance, object: t, transform: {translate: [1, 0, 0], rotate: [0, 90, 0]}}\n")
+    put("scene", "textures.yaml", base + "materials:\n  a: {color: {texture: tiny.png, tint: [1, 0.5, 0.5], wrap: mirror}}\n"
+        "  b: {color: {texture: tiny.png, colorspace: linear}}\nworld:\n  - {type: sphere, material: a}\n"
+        "  - {type: mesh, file: tiny.obj, material: b}\n")
+    put("scene", "hostile-texture-paths.yaml", base + "materials:\n  up: {color: {texture: ../tiny.png}}\n"
+        "  abs: {color: {texture: /dev/zero}}\n  dir: {color: {texture: .}}\n  none: {color: {texture: ''}}\n"
+        "world: [{type: sphere, material: up}, {type: sphere, material: abs}, {type: sphere, material: dir}]\n")
+    put("scene", "hostile-gltf-instance-bomb.yaml", base + "objects:\n  g0: [{type: mesh, file: tiny.gltf}]\n" +
+        "".join(f"  g{i}: [{', '.join(['{type: instance, object: g%d}' % (i - 1)] * 10)}]\n" for i in range(1, 9)) +
+        "world: [{type: instance, object: g8}]\n")
     put("scene", "hostile-far-vertex.yaml", base + "objects:\n  m: [{type: mesh, file: tiny.obj}]\nworld: [{type: instance, object: m, transform: {scale: 1e9, translate: [1e9, 1e9, 1e9]}}]\n")
 
 

@@ -1,9 +1,12 @@
 // Fuzz target: a scene file with command-line overrides, through parsing and render-scene
-// building (instancing, mesh references, the memory estimate) — everything `rtpro info` does.
+// building (instancing, mesh references, glTF files placed by the scene, image texture paths,
+// the memory estimate) — everything `rtpro info` does.
 //
 // Input: optional leading lines "#--set KEY=VALUE" (YAML comments, so the file stays a valid
 // scene for the real binary: pass each as --set), then the scene text. The scene sits in the
-// fuzz workspace beside tiny.obj, tiny.mtl and tiny.ply, so `file: tiny.obj` loads a real mesh.
+// fuzz workspace beside tiny.obj, tiny.mtl, tiny.ply, tiny.gltf (one textured triangle, its
+// buffer inline) and tiny.png (2x2, the glTF's base colour), so `file: tiny.gltf` places a real
+// glTF and `texture: tiny.png` names a real image.
 #include "fuzz_workspace.h"
 #include "rtpro/core/error.h"
 #include "rtpro/scene/build_render_scene.h"
@@ -29,6 +32,23 @@ void write_meshes_once() {
                                       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                                       "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
                                       "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    static constexpr char kPng[] =
+        "\x89\x50\x4e\x47\x0d\x0a\x1a\x0a\x00\x00\x00\x0d\x49\x48\x44\x52\x00\x00\x00\x02\x00\x00\x00\x02\x08"
+        "\x02\x00\x00\x00\xfd\xd4\x9a\x73\x00\x00\x00\x10\x49\x44\x41\x54\x78\x9c\x63\xf8\xcf\xc0\x00\x44\x0c"
+        "\x10\x0a\x00\x1f\xee\x03\xfd\x8b\x5f\x14\xd4\x00\x00\x00\x00\x49\x45\x4e\x44\xae\x42\x60\x82";
+    rtpro::fuzz::write_workspace_file("tiny.png", std::string_view(kPng, sizeof kPng - 1));
+    rtpro::fuzz::write_workspace_file(
+        "tiny.gltf",
+        R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":1},"indices":2,"material":0}]}],)"
+        R"("materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}],)"
+        R"("textures":[{"source":0}],"images":[{"uri":"tiny.png"}],)"
+        R"("buffers":[{"byteLength":68,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAAAAAAIA/AAAAAAAAAAAAAIA/AAABAAIAAAA="}],)"
+        R"("bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":24},)"
+        R"({"buffer":0,"byteOffset":60,"byteLength":6}],)"
+        R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},)"
+        R"({"bufferView":1,"componentType":5126,"count":3,"type":"VEC2"},)"
+        R"({"bufferView":2,"componentType":5123,"count":3,"type":"SCALAR"}]})");
     return true;
   }();
   (void)written;

@@ -69,5 +69,20 @@ TEST(JobIdentity, SceneIdentityCoversSourcesMeshesAndWhatTheyRead) {
   for (const char* file : {"m.mtl", "wood.png", "sky.exr"}) EXPECT_NE(all.find(file), std::string::npos) << all;
 }
 
+// Issue 28: a journal's or another rank's identity is read from outside; an escape sequence or a
+// newline in it reaches the terminal escaped.
+TEST(JobIdentity, DifferencesShowControlCharactersEscaped) {
+  JobIdentity ours;
+  ours.set("scene a.yaml", "1111");
+  const JobIdentity theirs =
+      JobIdentity::parse("scene a.yaml: \x1b[2J\x1b]0;owned\x07\r\n\xc2\x9bhidden\x1b[0m: x\n", "journal");
+  const std::vector<std::string> d = ours.differences(theirs, "the journal");
+  ASSERT_EQ(d.size(), 2u);
+  for (const std::string& line : d)
+    for (const char c : line) EXPECT_FALSE(static_cast<unsigned char>(c) < 0x20 || c == 0x7f) << line;
+  EXPECT_EQ(d[0], "scene a.yaml: 1111 here, \\x1b[2J\\x1b]0;owned\\x07\\x0d in the journal");
+  EXPECT_EQ(d[1], "\\xc2\\x9bhidden\\x1b[0m: absent here, x in the journal");
+}
+
 }  // namespace job_identity_test
 }  // namespace rtpro

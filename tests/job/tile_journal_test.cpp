@@ -6,7 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <chrono>
 
 #include <atomic>
 #include <cstring>
@@ -197,6 +200,61 @@ TEST(TileJournal, UnwritableFolderIsARuntimeErrorNamingTheFile) {
   } catch (const RuntimeError& e) {
     EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
   }
+}
+
+// Issue 28: a FIFO, device, directory or link at the journal's name is never read (a FIFO would
+// block for ever, /dev/zero never ends), replaced or deleted.
+TEST(TileJournal, FifoDeviceDirectoryOrLinkAtTheJournalIsRefusedAndLeftInPlace) {
+  const TileGrid grid({0, 0, 16, 16}, 8);
+  const auto folder = test::scratch_dir();
+  const auto fifo = folder / "fifo", link = folder / "link", directory = folder / "dir", target = folder / "target";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::filesystem::create_symlink("/dev/zero", link);
+  std::filesystem::create_directory(directory);
+  for (const auto& [file, kind] : {std::pair{fifo, "a FIFO"}, std::pair{link, "a symbolic link"},
+                                   std::pair{directory, "a directory"}}) {
+    SCOPED_TRACE(file.string());
+    try {
+      read_journal(file, grid, kChannels);
+      FAIL() << "read";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(file.string() + " is " + kind), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(TileJournal(file, identity_of("4"), kChannels, {}), RuntimeError);
+  }
+  EXPECT_EQ(std::filesystem::symlink_status(fifo).type(), std::filesystem::file_type::fifo);
+  EXPECT_TRUE(std::filesystem::is_symlink(link));
+  EXPECT_TRUE(std::filesystem::is_directory(directory));
+  EXPECT_EQ(entries_in(folder), 3) << "no temporary left behind";
+
+  // A link put in the journal's place during the render is not deleted with it.
+  const auto file = folder / "j";
+  TileJournal journal(file, identity_of("4"), kChannels, {});
+  std::ofstream(target) << "kept";
+  std::filesystem::remove(file);
+  std::filesystem::create_symlink(target, file);
+  journal.remove();
+  EXPECT_TRUE(std::filesystem::is_symlink(file));
+}
+
+// A journal's records are read one at a time: a sparse 20 GB file (intact records, then a hole)
+// costs a record's memory and stops at the hole, instead of being read whole into memory.
+TEST(TileJournal, SparseHugeJournalIsReadAsAStream) {
+  const TileGrid grid({0, 0, 16, 16}, 8);
+  const auto file = test::scratch_dir() / "j";
+  {
+    TileJournal journal(file, identity_of("4"), kChannels, {});
+    journal.append(tile_of(grid, 0));
+    journal.append(tile_of(grid, 2));
+  }
+  std::filesystem::resize_file(file, std::uintmax_t(20) << 30);
+  const auto start = std::chrono::steady_clock::now();
+  const JournalContents contents = read_journal(file, grid, kChannels);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+  ASSERT_EQ(contents.tiles.size(), 2u);
+  EXPECT_EQ(contents.tiles[1].index, 2u);
+  EXPECT_EQ(contents.dropped_records, 1u);
+  std::filesystem::remove(file);
 }
 
 }  // namespace tile_journal_test

@@ -13,6 +13,7 @@
 #include "rtpro/render/tiles.h"
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -33,6 +34,10 @@ struct RankStats {
   double scheduler_seconds = 0.0;
 };
 
+// How long a rank may send nothing while the ranks render (--rank-timeout) before the job ends
+// as if it had died; zero: never. Every rank says it is alive several times a second.
+inline constexpr std::chrono::milliseconds kDefaultRankTimeout{60000};
+
 // Before any work: rank 0 gathers every rank's identity and throws InputError naming the first
 // rank whose identity differs from its own, and how; the other ranks wait for rank 0's word.
 void agree_on_job(Communicator& communicator, const JobIdentity& identity);
@@ -41,16 +46,21 @@ void agree_on_job(Communicator& communicator, const JobIdentity& identity);
 // returns every rank's figures (indexed by rank) once all have finished. Stops handing out tiles
 // when the source does (it checks the cancel flag).
 // Rank 0's own workers run on `render_thread` when given (see prestarted_thread.h), else on a
-// thread created here.
+// thread created here. Throws RuntimeError naming a rank silent for longer than `rank_timeout`
+// (after rank 0's workers finish their tiles in flight, so the sink has them).
 std::vector<RankStats> lead_distributed_render(Communicator& communicator, const TileRenderer& renderer,
                                                const TileGrid& grid, TileSource& source, TileSink& sink,
-                                               PrestartedThread* render_thread = nullptr);
+                                               PrestartedThread* render_thread = nullptr,
+                                               std::chrono::milliseconds rank_timeout = kDefaultRankTimeout);
 
 // Other ranks: renders what rank 0 hands out until it has no more, or until `cancel` becomes true
 // (the tiles in flight are still finished and sent). It keeps about 20 ms of rendering queued at
-// its measured speed per tile, for each of its `threads`.
+// its measured speed per tile, for each of its `threads`. Returns once rank 0 has every rank's
+// tiles (so the next frame's messages never meet this one's); throws RuntimeError when rank 0,
+// once heard from, is silent for longer than `rank_timeout`.
 void follow_distributed_render(Communicator& communicator, const TileRenderer& renderer, const TileGrid& grid,
-                               int threads, const std::atomic<bool>* cancel = nullptr);
+                               int threads, const std::atomic<bool>* cancel = nullptr,
+                               std::chrono::milliseconds rank_timeout = kDefaultRankTimeout);
 
 // Load imbalance: the busiest rank's busy time over the mean (1 is perfect balance).
 double load_imbalance(const std::vector<RankStats>& ranks);

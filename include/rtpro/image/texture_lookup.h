@@ -23,6 +23,8 @@ struct TextureSource {
   // When set, the encoded image itself (an image stored inside a glTF); `file` only names it, its
   // extension telling the format.
   const std::vector<unsigned char>* bytes = nullptr;
+  // Where the scene named it ("scene.yaml:12:22"), added to messages about it; may be empty.
+  std::string named_at{};
 };
 
 class TextureLookup {
@@ -34,7 +36,10 @@ class TextureLookup {
   virtual Color lookup(std::uint32_t index, float s, float t, TextureWrap wrap) const = 0;
 };
 
-// Opens every source. Throws InputError naming the file when one cannot be read or decoded.
-std::unique_ptr<TextureLookup> open_textures(std::span<const TextureSource> sources);
+// Opens every source. Throws InputError naming the file (and where it was named) when one cannot
+// be read or decoded, or
+// when its decoded floats and texture copies would exceed `max_bytes` (0: the default budget;
+// render --max-memory), checked from its header before it is decoded.
+std::unique_ptr<TextureLookup> open_textures(std::span<const TextureSource> sources, std::uint64_t max_bytes = 0);
 
 }  // namespace rtpro

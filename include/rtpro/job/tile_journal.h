@@ -22,14 +22,19 @@ namespace rtpro {
 // "out.exr" → "out.exr.rtpro-journal".
 std::filesystem::path journal_path(const std::filesystem::path& output);
 
+// Throws InputError naming `file` when something other than a regular file is there (a FIFO, a
+// device, a directory or a symbolic link): rtpro never reads, replaces or deletes such a thing.
+void check_journal_file(const std::filesystem::path& file);
+
 struct JournalContents {
   JobIdentity identity;
   std::vector<TileResult> tiles;  // intact records of work items of `grid`, each once
   std::size_t dropped_records = 0;  // torn, corrupt or repeated records, and a torn tail
 };
 
-// Throws InputError naming the file when it cannot be read or does not start with an intact
-// journal header. Records are checked against `grid` and `channel_count`; compare the identity
+// Throws InputError naming the file when it cannot be read, is not a regular file (checked without
+// following a link or opening a FIFO for good) or does not start with an intact journal header.
+// Reads records one at a time. Records are checked against `grid` and `channel_count`; compare the identity
 // before trusting them.
 JournalContents read_journal(const std::filesystem::path& file, const TileGrid& grid, int channel_count);
 
@@ -55,7 +60,8 @@ class TileJournal {
   // Bytes in the journal: its header and records.
   std::size_t bytes() const;
 
-  // Closes and deletes the file: the image it was for is written.
+  // Closes and deletes the file (only if it is still the one this journal wrote): the image it
+  // was for is written.
   void remove();
   const std::filesystem::path& file() const { return file_; }
 

@@ -2,6 +2,7 @@
 // The immutable render scene: everything a backend and the shading need, fully loaded, with
 // instances flattened to one level (top-level group → prototype groups).
 #include "rtpro/core/bbox.h"
+#include "rtpro/core/error.h"
 #include "rtpro/core/texture_wrap.h"
 #include "rtpro/core/transform.h"
 #include "rtpro/scene/checker_axes.h"
@@ -86,6 +87,7 @@ struct TextureImage {
   std::string colorspace;
   // An image stored inside a glTF: its encoded bytes (`file` then only names it).
   std::shared_ptr<const std::vector<unsigned char>> bytes;
+  SourceLocation where{};  // the key that named it first, for messages about the image
 };
 
 // A tangent-space normal map (glTF normalTexture): the image's RGB in [0, 1] read as a normal in

@@ -30,7 +30,7 @@ std::uint32_t texture_index(const std::filesystem::path& file, const std::string
   std::uint32_t index = 0;
   while (index < textures.size() && !(textures[index].file == file && textures[index].colorspace == colorspace))
     ++index;
-  if (index == textures.size()) textures.push_back({file, colorspace, bytes});
+  if (index == textures.size()) textures.push_back({file, colorspace, bytes, where});
   return index;
 }
 
