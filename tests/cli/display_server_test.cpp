@@ -66,20 +66,26 @@ struct ReceivedImage {
   int creates = 0, updates = 0;
 };
 
+// A socket listening on a free port of 127.0.0.1; `port` is set to it.
+int listen_on_loopback(int& port) {
+  const int listener = socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (bind(listener, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || listen(listener, 1) != 0)
+    throw std::runtime_error("cannot listen");
+  socklen_t length = sizeof address;
+  getsockname(listener, reinterpret_cast<sockaddr*>(&address), &length);
+  port = ntohs(address.sin_port);
+  return listener;
+}
+
 // A tev stand-in on 127.0.0.1 at an ephemeral port; serves one connection. With
 // close_after_accept it hangs up at once, a viewer that goes away mid-render.
 class TevTestServer {
  public:
   explicit TevTestServer(bool close_after_accept = false) {
-    listener_ = socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    if (bind(listener_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || listen(listener_, 1) != 0)
-      throw std::runtime_error("cannot listen");
-    socklen_t length = sizeof address;
-    getsockname(listener_, reinterpret_cast<sockaddr*>(&address), &length);
-    port_ = ntohs(address.sin_port);
+    listener_ = listen_on_loopback(port_);
     thread_ = std::thread([this, close_after_accept] { serve(close_after_accept); });
   }
   ~TevTestServer() {
@@ -248,15 +254,7 @@ TEST(DisplayServer, ViewerThatGoesAwayWarnsOnceAndTheRenderGoesOn) {
 class SilentTevServer {
  public:
   SilentTevServer() {
-    listener_ = socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    if (bind(listener_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || listen(listener_, 1) != 0)
-      throw std::runtime_error("cannot listen");
-    socklen_t length = sizeof address;
-    getsockname(listener_, reinterpret_cast<sockaddr*>(&address), &length);
-    port_ = ntohs(address.sin_port);
+    listener_ = listen_on_loopback(port_);
     thread_ = std::thread([this] { client_ = accept(listener_, nullptr, nullptr); });
   }
   ~SilentTevServer() {
