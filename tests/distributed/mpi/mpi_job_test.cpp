@@ -128,6 +128,15 @@ pid_t rank_process(pid_t mpirun_pid, int rank) {
   return 0;
 }
 
+// In a forked child about to exec mpiexec: Open MPI allowed to run as root (CI) and to place more
+// ranks than cores; leak checks off (a rank killed or ended by MPI_Abort leaks by design).
+void set_mpiexec_environment() {
+  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  setenv("OMPI_MCA_rmaps_base_oversubscribe", "1", 1);
+  setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
+}
+
 TEST(MpiJob, KilledRankEndsTheJobAndResumeFinishesItExactly) {
   const auto dir = test::scratch_dir();
   const auto scene = test::write_file("scene.yaml", kScene);
@@ -139,10 +148,7 @@ TEST(MpiJob, KilledRankEndsTheJobAndResumeFinishesItExactly) {
   const pid_t job = fork();
   ASSERT_GE(job, 0);
   if (job == 0) {
-    setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-    setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-    setenv("OMPI_MCA_rmaps_base_oversubscribe", "1", 1);
-    setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
+    set_mpiexec_environment();
     const std::string exe = rtpro_executable().string();
     execl(RTPRO_MPIEXEC, RTPRO_MPIEXEC, "--bind-to", "none", "-n", "3", exe.c_str(), "render", scene.c_str(), "-o",
           out.c_str(), "--aov", "albedo,normal,depth,object-id", "-q", "--spp", "1024", "--threads", "1",
@@ -219,10 +225,7 @@ TEST(MpiJob, StoppedRankEndsTheJobAfterTheRankTimeoutAndResumeFinishesIt) {
   const pid_t job = fork();
   ASSERT_GE(job, 0);
   if (job == 0) {
-    setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-    setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-    setenv("OMPI_MCA_rmaps_base_oversubscribe", "1", 1);
-    setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
+    set_mpiexec_environment();
     std::freopen(log.c_str(), "w", stderr);
     const std::string exe = rtpro_executable().string();
     execl(RTPRO_MPIEXEC, RTPRO_MPIEXEC, "--bind-to", "none", "-n", "2", exe.c_str(), "render", scene.c_str(), "-o",
