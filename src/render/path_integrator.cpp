@@ -42,7 +42,8 @@ class PathTracer {
 
   // Everything a path does at the surface (or miss) its ray reached: emission, then the light
   // sample (queued as a shadow ray), then the BSDF sample (queued as the path's next ray).
-  void extend(const Path& path, const Ray& ray, const Hit& hit) {
+  // `sp` is the surface of a valid hit (make_surfaces), unread otherwise.
+  void extend(const Path& path, const Ray& ray, const Hit& hit, const SurfacePoint& sp) {
     SampleResult& result = results_[path.sample];
     const float t_hit = hit.valid() ? hit.t : ray.tfar;
     if (const std::optional<LightSet::SeenLight> seen = lights_.seen_light(ray, t_hit, path.group)) {
@@ -54,8 +55,6 @@ class PathTracer {
       escape(path, ray, result);
       return;
     }
-    SurfacePoint sp;
-    make_surface(scene_, ray, hit, sp);
     const Material& material = scene_.materials[sp.material];
     Color beta = path.beta;
     if (path.medium != PathWorkspace::kOutside) {
@@ -203,7 +202,9 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
     ws.shadow_queries.clear();
     ws.shadow_rays.clear();
     ws.shadow_lights.clear();
-    for (std::size_t i = 0; i < ws.paths.size(); ++i) tracer.extend(ws.paths[i], ws.rays[i], ws.hits[i]);
+    ws.surfaces.resize(ws.rays.size());
+    make_surfaces(scene, ws.rays, ws.hits, ws.surfaces);
+    for (std::size_t i = 0; i < ws.paths.size(); ++i) tracer.extend(ws.paths[i], ws.rays[i], ws.hits[i], ws.surfaces[i]);
 
     ws.occluded.resize(ws.shadow_rays.size());
     occluded_with_shadow_linking(backend, scene.links, ws.shadow_rays, ws.shadow_lights, ws.occluded,

@@ -360,4 +360,46 @@ void make_triangle_surfaces4(const RenderScene& scene, const Ray* const rays[4],
   finish_surfaces4<false>(hits, dir, position, position_error, ng, ns, materials, out, mirrors);
 }
 
+void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::span<const Hit> hits,
+                   std::span<SurfacePoint> out) {
+  struct Waiting {
+    std::size_t hits[4];
+    unsigned count = 0;
+  };
+  Waiting spheres, triangles;
+  Vec3 mirrors[4];  // the four-at-a-time functions' mirror directions, not needed here
+  const auto make_waiting = [&](Waiting& waiting, auto make_four) {
+    const Ray* four_rays[4];
+    const Hit* four_hits[4];
+    SurfacePoint* points[4];
+    Vec3* four_mirrors[4];
+    for (unsigned k = 0; k < 4; ++k) {
+      four_rays[k] = &rays[waiting.hits[k]];
+      four_hits[k] = &hits[waiting.hits[k]];
+      points[k] = &out[waiting.hits[k]];
+      four_mirrors[k] = &mirrors[k];
+    }
+    make_four(scene, four_rays, four_hits, points, four_mirrors);
+    waiting.count = 0;
+  };
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    const Hit& hit = hits[i];
+    if (!hit.valid()) continue;
+    if (is_plain_sphere_hit(scene, hit)) {
+      spheres.hits[spheres.count++] = i;
+      if (spheres.count == 4) make_waiting(spheres, [](auto&&... four) { make_sphere_surfaces4(four...); });
+      continue;
+    }
+    if (is_plain_triangle_hit(scene, hit)) {
+      triangles.hits[triangles.count++] = i;
+      if (triangles.count == 4) make_waiting(triangles, [](auto&&... four) { make_triangle_surfaces4(four...); });
+      continue;
+    }
+    make_surface(scene, rays[i], hit, out[i]);
+  }
+  for (const Waiting* waiting : {&spheres, &triangles})
+    for (unsigned k = 0; k < waiting->count; ++k)
+      make_surface(scene, rays[waiting->hits[k]], hits[waiting->hits[k]], out[waiting->hits[k]]);
+}
+
 }  // namespace rtpro

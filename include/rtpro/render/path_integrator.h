@@ -19,6 +19,7 @@
 #include "rtpro/render/sampler.h"
 #include "rtpro/render/sobol_sampler.h"
 #include "rtpro/render/shading.h"
+#include "rtpro/render/surface.h"
 #include "rtpro/scene/render_scene.h"
 
 #include <cstdint>
@@ -61,6 +62,7 @@ class PathWorkspace {
   std::vector<Path> paths, next_paths;
   std::vector<Ray> rays, next_rays;
   std::vector<Hit> hits;
+  std::vector<SurfacePoint> surfaces;  // of the hits, for the hits that are valid
   std::vector<ShadowQuery> shadow_queries;
   std::vector<Ray> shadow_rays;
   std::vector<std::uint32_t> shadow_lights;  // per shadow ray: the scene light it goes to, or kInvalidId

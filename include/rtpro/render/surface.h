@@ -6,6 +6,7 @@
 #include "rtpro/scene/render_scene.h"
 
 #include <cstdint>
+#include <span>
 
 namespace rtpro {
 
@@ -72,6 +73,13 @@ inline bool is_plain_triangle_hit(const RenderScene& scene, const Hit& hit) {
 // the mirror direction there. The hits may lie on different meshes, flat or smooth.
 void make_triangle_surfaces4(const RenderScene& scene, const Ray* const rays[4], const Hit* const hits[4],
                              SurfacePoint* const out[4], Vec3* const mirrors[4]);
+
+// make_surface for each valid hit: out[i] is make_surface(scene, rays[i], hits[i]) bit for bit, and
+// the entries of misses are left as they were. Plain sphere and plain triangle hits go four at a
+// time through make_sphere_surfaces4 and make_triangle_surfaces4: one latency chain of square roots
+// and divisions for four surfaces.
+void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::span<const Hit> hits,
+                   std::span<SurfacePoint> out);
 
 inline SurfacePoint make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit) {
   SurfacePoint sp;
