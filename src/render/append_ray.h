@@ -10,7 +10,7 @@ namespace rtpro {
 // returned or built made the compiler copy it with 16-byte loads over the 4- and 8-byte stores
 // that wrote it: a store-forwarding stall per ray (about a sixth of the shading loop, and of
 // camera-ray set-up).
-inline void copy_ray(const Ray& ray, Ray& out) {
+[[gnu::always_inline]] inline void copy_ray(const Ray& ray, Ray& out) {
   out.org.x = ray.org.x;
   out.org.y = ray.org.y;
   out.org.z = ray.org.z;
@@ -21,7 +21,8 @@ inline void copy_ray(const Ray& ray, Ray& out) {
   out.tfar = ray.tfar;
 }
 
-// Appends `ray` field by field (copy_ray).
-inline void append_ray(std::vector<Ray>& rays, const Ray& ray) { copy_ray(ray, rays.emplace_back()); }
+// Appends `ray` field by field (copy_ray); always inline, or the copy is made of the record in
+// memory after all, merged into wide loads.
+[[gnu::always_inline]] inline void append_ray(std::vector<Ray>& rays, const Ray& ray) { copy_ray(ray, rays.emplace_back()); }
 
 }  // namespace rtpro

@@ -89,41 +89,54 @@ Color emitted_towards(const Emission& e, const Vec3& n, const Vec3& direction) {
   return (facing > 0.0f || (e.two_sided && facing < 0.0f)) ? e.radiance : Color(0.0f);
 }
 
+// Each kind writes its sample into `out` field by field and says whether there is one: a sample
+// returned as a record was copied with wide loads over the narrow stores that built it (a
+// store-forwarding stall per light sample).
 struct Sampler {
   const Vec3& from;
   Sample2D u;
   const TextureLookup* textures;
+  PathLightSample& out;
 
-  std::optional<PathLightSample> operator()(const PointLight& l) const {
-    const Vec3 to_light = l.position - from;
-    const float d2 = dot(to_light, to_light);
-    if (!(d2 > 0.0f)) return std::nullopt;
-    const float d = std::sqrt(d2);
-    return PathLightSample{to_light / d, d, l.radiance / d2, 1.0f, true, 0};
+  bool found(const Vec3& direction, float distance, const Color& radiance, float pdf, bool delta) const {
+    out.direction = direction;
+    out.distance = distance;
+    out.radiance = radiance;
+    out.pdf = pdf;
+    out.delta = delta;
+    return true;
   }
-  std::optional<PathLightSample> operator()(const SpotLight& l) const {
+
+  bool operator()(const PointLight& l) const {
     const Vec3 to_light = l.position - from;
     const float d2 = dot(to_light, to_light);
-    if (!(d2 > 0.0f)) return std::nullopt;
+    if (!(d2 > 0.0f)) return false;
+    const float d = std::sqrt(d2);
+    return found(to_light / d, d, l.radiance / d2, 1.0f, true);
+  }
+  bool operator()(const SpotLight& l) const {
+    const Vec3 to_light = l.position - from;
+    const float d2 = dot(to_light, to_light);
+    if (!(d2 > 0.0f)) return false;
     const float d = std::sqrt(d2);
     const Vec3 direction = to_light / d;
     const float falloff = l.falloff(-direction);
-    if (!(falloff > 0.0f)) return std::nullopt;  // outside the outer cone
-    return PathLightSample{direction, d, l.radiance * (falloff / d2), 1.0f, true, 0};
+    if (!(falloff > 0.0f)) return false;  // outside the outer cone
+    return found(direction, d, l.radiance * (falloff / d2), 1.0f, true);
   }
-  std::optional<PathLightSample> operator()(const DirectionalLight& l) const {
-    return PathLightSample{l.to_light, kInfinity, l.radiance, 1.0f, true, 0};
+  bool operator()(const DirectionalLight& l) const {
+    return found(l.to_light, kInfinity, l.radiance, 1.0f, true);
   }
-  std::optional<PathLightSample> operator()(const SphereLight& l) const {
-    if (!clearly_outside(l.center, l.radius, from)) return std::nullopt;  // emits outwards only
+  bool operator()(const SphereLight& l) const {
+    if (!clearly_outside(l.center, l.radius, from)) return false;  // emits outwards only
     return on_surface(sample_sphere(l.center, l.radius, from, u), Emission{l.radiance, false, std::nullopt});
   }
-  std::optional<PathLightSample> operator()(const QuadLight& l) const {
+  bool operator()(const QuadLight& l) const {
     const Vec3 point = l.corner + l.edge1 * u.x + l.edge2 * u.y;
     return on_surface({point, l.normal, area_to_solid_angle(1.0f / l.area, from, point, l.normal)},
                       Emission{l.radiance, false, std::nullopt});
   }
-  std::optional<PathLightSample> operator()(const EmissiveTriangle& l) const {
+  bool operator()(const EmissiveTriangle& l) const {
     // Uniform over the triangle (the square folded onto it).
     float b1 = u.x, b2 = u.y;
     if (b1 + b2 > 1.0f) {
@@ -138,28 +151,27 @@ struct Sampler {
     return on_surface({point, l.normal, area_to_solid_angle(1.0f / l.area, from, point, l.normal)}, l.emission,
                       tex_u, tex_v);
   }
-  std::optional<PathLightSample> operator()(const EmissiveSphere& l) const {
+  bool operator()(const EmissiveSphere& l) const {
     const SphereSample s = sample_sphere(l.center, l.radius, from, u);
     const TexCoord uv = sphere_texture_coordinates(s.normal);
     return on_surface(s, l.emission, uv.u, uv.v);
   }
-  std::optional<PathLightSample> operator()(const EnvironmentRef& l) const {
+  bool operator()(const EnvironmentRef& l) const {
     const std::optional<EnvironmentLight::Sample> s = l.light->sample(u);
-    if (!s || s->radiance == Color(0.0f)) return std::nullopt;
-    return PathLightSample{s->direction, kInfinity, s->radiance, s->pdf, false, 0};
+    if (!s || s->radiance == Color(0.0f)) return false;
+    return found(s->direction, kInfinity, s->radiance, s->pdf, false);
   }
 
-  std::optional<PathLightSample> on_surface(const SphereSample& s, const Emission& emission, float tex_u = 0.0f,
-                                            float tex_v = 0.0f) const {
+  bool on_surface(const SphereSample& s, const Emission& emission, float tex_u = 0.0f, float tex_v = 0.0f) const {
     const Vec3 to_light = s.point - from;
     const float d = length(to_light);
-    if (!(d > 0.0f) || !(s.pdf > 0.0f) || !std::isfinite(s.pdf)) return std::nullopt;
+    if (!(d > 0.0f) || !(s.pdf > 0.0f) || !std::isfinite(s.pdf)) return false;
     const Vec3 direction = to_light / d;
     Color radiance = emitted_towards(emission, s.normal, direction);
     if (emission.texture && radiance != Color(0.0f))
       radiance = radiance * evaluate(*emission.texture, tex_u, tex_v, textures);
-    if (radiance == Color(0.0f)) return std::nullopt;
-    return PathLightSample{direction, d, radiance, s.pdf, false, 0};
+    if (radiance == Color(0.0f)) return false;
+    return found(direction, d, radiance, s.pdf, false);
   }
 };
 
@@ -240,16 +252,14 @@ float LightSet::pick_probability(std::uint32_t index, const Vec3& point, std::ui
   return picker(group).probability(index, point);
 }
 
-std::optional<PathLightSample> LightSet::sample(const Vec3& point, float u_pick, Sample2D u,
-                                                const TextureLookup* textures, std::uint32_t group) const {
+bool LightSet::sample(const Vec3& point, float u_pick, Sample2D u, const TextureLookup* textures, std::uint32_t group,
+                      PathLightSample& out) const {
   const std::optional<LightPicker::Pick> pick = picker(group).pick(point, u_pick);
-  if (!pick) return std::nullopt;
-  std::optional<PathLightSample> s = std::visit(Sampler{point, u, textures}, lights_[pick->light]);
-  if (s) {
-    s->pdf *= pick->pmf;
-    s->light = pick->light;
-  }
-  return s;
+  if (!pick) return false;
+  if (!std::visit(Sampler{point, u, textures, out}, lights_[pick->light])) return false;
+  out.pdf *= pick->pmf;
+  out.light = pick->light;
+  return true;
 }
 
 namespace {

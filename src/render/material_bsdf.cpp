@@ -34,41 +34,46 @@ Vec3 mapped_normal(const NormalMap& map, const SurfacePoint& point, const Textur
   return dot(unit, point.geometric_normal) > 0.0f ? unit : n;
 }
 
-// Each kind's BSDF and the albedo its AOV shows, evaluating only the colour textures it reads.
+// Each kind's BSDF and the albedo its AOV shows, written into `out` (the frame is left to the
+// caller), evaluating only the colour textures it reads; returns the shading normal, on the side
+// the ray came from. Written in place: a record returned and then moved into the caller's was
+// copied with wide loads over the narrow stores that built it, a store-forwarding stall per vertex.
 struct ToBsdf {
   const Material& material;
   const SurfacePoint& point;
   const TextureLookup* textures;
+  SurfaceBsdf& out;
 
-  struct Result {
-    Bsdf bsdf;
-    Color albedo;
-    Vec3 normal;  // the shading normal, on the side the ray came from
-  };
   Color color() const { return evaluate(material.color, point, textures); }
+  Vec3 diffuse(const Color& reflectance, const Vec3& normal) const {
+    out.bsdf = DiffuseBsdf{reflectance};
+    out.albedo = reflectance;
+    return normal;
+  }
 
-  Result operator()(const PhongSurface&) const {
+  Vec3 operator()(const PhongSurface&) const {
     const Color c = color();
-    if (material.dielectric) return {DielectricBsdf{material.dielectric->ior, 0.0f}, c, point.shading_normal};
-    return {DiffuseBsdf{c}, c, point.shading_normal};
+    if (!material.dielectric) return diffuse(c, point.shading_normal);
+    out.bsdf = DielectricBsdf{material.dielectric->ior, 0.0f};
+    out.albedo = c;
+    return point.shading_normal;
   }
-  Result operator()(const DiffuseSurface&) const {
-    const Color c = color();
-    return {DiffuseBsdf{c}, c, point.shading_normal};
-  }
-  Result operator()(const ConductorSurface& conductor) const {
+  Vec3 operator()(const DiffuseSurface&) const { return diffuse(color(), point.shading_normal); }
+  Vec3 operator()(const ConductorSurface& conductor) const {
     const float alpha = roughness_to_alpha(conductor.roughness);
     const Color c = color();
-    if (conductor.has_complex_ior)
-      return {ConductorBsdf::from_complex_ior(conductor.eta, conductor.k, alpha), c, point.shading_normal};
-    return {ConductorBsdf::from_f0(c, alpha), c, point.shading_normal};
+    out.bsdf = conductor.has_complex_ior ? ConductorBsdf::from_complex_ior(conductor.eta, conductor.k, alpha)
+                                         : ConductorBsdf::from_f0(c, alpha);
+    out.albedo = c;
+    return point.shading_normal;
   }
-  Result operator()(const DielectricSurface& d) const {
-    return {DielectricBsdf{material.dielectric ? material.dielectric->ior : 1.5f, roughness_to_alpha(d.roughness)},
-            color(), point.shading_normal};
+  Vec3 operator()(const DielectricSurface& d) const {
+    out.bsdf = DielectricBsdf{material.dielectric ? material.dielectric->ior : 1.5f, roughness_to_alpha(d.roughness)};
+    out.albedo = color();
+    return point.shading_normal;
   }
   // Material::color is the Whitted view's; the model's base colour is its own texture.
-  Result operator()(const PrincipledSurface& p) const {
+  Vec3 operator()(const PrincipledSurface& p) const {
     PrincipledParameters parameters;
     parameters.base_color = evaluate(p.base_color, point, textures);
     parameters.metalness = p.metalness;
@@ -91,8 +96,10 @@ struct ToBsdf {
     // Lambert base, by the extension's definition: the same f and pdf from the cheaper kind.
     if (p.specular_weight == 0.0f && parameters.metalness == 0.0f && p.transmission_weight == 0.0f &&
         p.coat_weight == 0.0f && max_component(p.fuzz_color) == 0.0f)
-      return {DiffuseBsdf{parameters.base_color}, parameters.base_color, normal};
-    return {PrincipledBsdf(parameters), parameters.base_color, normal};
+      return diffuse(parameters.base_color, normal);
+    out.bsdf = PrincipledBsdf(parameters);
+    out.albedo = parameters.base_color;
+    return normal;
   }
 };
 
@@ -107,11 +114,11 @@ struct NeedsOutwardFrame {
 
 }  // namespace
 
-SurfaceBsdf material_bsdf(const Material& material, const SurfacePoint& point, const TextureLookup* textures) {
-  ToBsdf::Result made = std::visit(ToBsdf{material, point, textures}, material.model);
-  const bool outward = std::visit(NeedsOutwardFrame{}, made.bsdf);
-  const Vec3 normal = !outward || point.front_face ? made.normal : -made.normal;
-  return {std::move(made.bsdf), ShadingFrame::from_normal(normal), made.albedo};
+void material_bsdf(const Material& material, const SurfacePoint& point, const TextureLookup* textures,
+                   SurfaceBsdf& out) {
+  const Vec3 normal = std::visit(ToBsdf{material, point, textures, out}, material.model);
+  const bool outward = std::visit(NeedsOutwardFrame{}, out.bsdf);
+  out.frame = ShadingFrame::from_normal(!outward || point.front_face ? normal : -normal);
 }
 
 }  // namespace rtpro

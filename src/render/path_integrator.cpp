@@ -1,5 +1,6 @@
 #include "rtpro/render/path_integrator.h"
 
+#include "append_ray.h"
 #include "rtpro/render/beer_lambert.h"
 #include "rtpro/render/light_linking.h"
 #include "rtpro/render/material_bsdf.h"
@@ -16,6 +17,7 @@ namespace rtpro {
 namespace {
 
 using Path = PathWorkspace::Path;
+using VertexSamples = PathWorkspace::VertexSamples;
 
 // The power heuristic (β = 2) for a sample of pdf `a` against the other strategy's pdf `b`.
 float power_heuristic(float a, float b) {
@@ -43,7 +45,8 @@ class PathTracer {
   // Everything a path does at the surface (or miss) its ray reached: emission, then the light
   // sample (queued as a shadow ray), then the BSDF sample (queued as the path's next ray).
   // `sp` is the surface of a valid hit (make_surfaces), unread otherwise.
-  void extend(const Path& path, const Ray& ray, const Hit& hit, const SurfacePoint& sp) {
+  // `u` are the vertex's random numbers (draw_vertex_samples), read only below max_depth.
+  void extend(const Path& path, const Ray& ray, const Hit& hit, const SurfacePoint& sp, const VertexSamples& u) {
     SampleResult& result = results_[path.sample];
     const float t_hit = hit.valid() ? hit.t : ray.tfar;
     if (const std::optional<LightSet::SeenLight> seen = lights_.seen_light(ray, t_hit, path.group)) {
@@ -67,7 +70,8 @@ class PathTracer {
                    lights_.light_of_hit(hit), sp.position, beta);
 
     const std::uint32_t group = link_group_of(scene_.links, hit);
-    const SurfaceBsdf surface = material_bsdf(material, sp, textures_);
+    SurfaceBsdf& surface = surface_;
+    material_bsdf(material, sp, textures_, surface);
     const bool delta = bsdf_is_delta(surface.bsdf);
     if (path.bounce == 0)
       result.primary = {true, surface.albedo, sp.shading_normal, hit.t * length(ray.dir), sp.object_id};
@@ -82,16 +86,11 @@ class PathTracer {
     const SampleKey& key = keys_[path.sample];
     const auto dimension = [&](int offset) { return sample_dimension::at_bounce(path.bounce, offset); };
     const Vec3 wo = surface.frame.to_local(-normalize(ray.dir));
-    // The light's pick and the BSDF's lobe choice as one 2D sample: one draw instead of two.
-    const Sample2D choices = sampler_.sample_2d(key.pixel_key, key.sample_index, dimension(path_dimension::kChoices));
-    if (!delta && !lights_.empty(group)) {
-      const Sample2D u = sampler_.sample_2d(key.pixel_key, key.sample_index, dimension(path_dimension::kLightPoint));
-      if (const std::optional<PathLightSample> ls = lights_.sample(sp.position, choices.x, u, textures_, group))
-        queue_shadow_ray(path.sample, sp, surface, wo, *ls, beta);
-    }
+    if (!delta && !lights_.empty(group) &&
+        lights_.sample(sp.position, u.choices.x, u.light_point, textures_, group, light_sample_))
+      queue_shadow_ray(path.sample, sp, surface, wo, light_sample_, beta);
 
-    const Sample2D u = sampler_.sample_2d(key.pixel_key, key.sample_index, dimension(path_dimension::kBsdfDirection));
-    const std::optional<BsdfSample> bs = bsdf_sample(surface.bsdf, wo, choices.y, u);
+    const std::optional<BsdfSample> bs = bsdf_sample(surface.bsdf, wo, u.choices.y, u.bsdf_direction);
     if (!bs || !(bs->pdf > 0.0f) || carries_no_light(bs->f)) return;
     Color next_beta = beta * bs->f * (std::fabs(bs->wi.z) / bs->pdf);
     if (path.bounce >= kRouletteStart) {
@@ -103,9 +102,18 @@ class PathTracer {
     const Vec3 direction = surface.frame.to_world(bs->wi);
     std::uint32_t medium = path.medium;
     if (bs->transmitted && material.dielectric) medium = sp.front_face ? sp.material : PathWorkspace::kOutside;
-    ws_.next_paths.push_back(
-        {path.sample, path.bounce + 1, next_beta, sp.position, bs->pdf, bs->delta, aov_pending, bs->transmitted, medium, group});
-    ws_.next_rays.push_back(spawn_ray(sp, direction));
+    Path& next = ws_.next_paths.emplace_back();
+    next.sample = path.sample;
+    next.bounce = path.bounce + 1;
+    next.beta = next_beta;
+    next.origin = sp.position;
+    next.bsdf_pdf = bs->pdf;
+    next.specular = bs->delta;
+    next.aov_pending = aov_pending;
+    next.transmitted = bs->transmitted;
+    next.medium = medium;
+    next.group = group;
+    append_ray(ws_.next_rays, spawn_ray(sp, direction));
   }
 
  private:
@@ -168,8 +176,10 @@ class PathTracer {
       ray = spawn_ray_to(sp, sp.position + ls.direction * ls.distance);
       ray.tfar = 1.0f - kShadowEpsilon;
     }
-    ws_.shadow_queries.push_back({sample, contribution});
-    ws_.shadow_rays.push_back(ray);
+    PathWorkspace::ShadowQuery& query = ws_.shadow_queries.emplace_back();
+    query.sample = sample;
+    query.contribution = contribution;
+    append_ray(ws_.shadow_rays, ray);
     ws_.shadow_lights.push_back(ls.light < scene_.lights.size() ? ls.light : kInvalidId);
   }
 
@@ -180,7 +190,30 @@ class PathTracer {
   std::span<SampleResult> results_;
   PathWorkspace& ws_;
   const TextureLookup* textures_;
+  // The current vertex's BSDF and light sample, filled in place (material_bsdf, LightSet::sample).
+  SurfaceBsdf surface_;
+  PathLightSample light_sample_;
 };
+
+// The random numbers of the vertices the generation's rays reach (all at bounce `bounce`), drawn
+// for every path together: the same values a draw per vertex gives, bit for bit, but a batch lets
+// the sampler hash many keys side by side. A path that reaches no surface leaves its draw unused.
+template <class Sampler>
+void draw_vertex_samples(const Sampler& sampler, std::span<const SampleKey> keys, int bounce, PathWorkspace& ws) {
+  const std::size_t n = ws.paths.size();
+  ws.path_keys.resize(n);
+  for (std::size_t i = 0; i < n; ++i) ws.path_keys[i] = keys[ws.paths[i].sample];
+  ws.draws.resize(n);
+  ws.vertex_samples.resize(n);
+  const auto draw = [&](int offset, Sample2D VertexSamples::*field) {
+    sampler.sample_2d(ws.path_keys, sample_dimension::at_bounce(bounce, offset), ws.draws);
+    for (std::size_t i = 0; i < n; ++i) ws.vertex_samples[i].*field = ws.draws[i];
+  };
+  // The light's pick and the BSDF's lobe choice as one 2D sample: one draw instead of two.
+  draw(path_dimension::kChoices, &VertexSamples::choices);
+  draw(path_dimension::kLightPoint, &VertexSamples::light_point);
+  draw(path_dimension::kBsdfDirection, &VertexSamples::bsdf_direction);
+}
 
 template <class Sampler>
 void trace(const RenderScene& scene, const Backend& backend, const LightSet& lights, const Sampler& sampler,
@@ -190,7 +223,17 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
   ws.rays.assign(camera_rays.begin(), camera_rays.end());
   for (std::uint32_t i = 0; i < camera_rays.size(); ++i) {
     results[i] = SampleResult{};
-    ws.paths.push_back({i, 0, Color(1.0f), camera_rays[i].org, 0.0f, true, true, false, PathWorkspace::kOutside, 0});
+    Path& path = ws.paths.emplace_back();
+    path.sample = i;
+    path.bounce = 0;
+    path.beta = Color(1.0f);
+    path.origin = camera_rays[i].org;
+    path.bsdf_pdf = 0.0f;
+    path.specular = true;
+    path.aov_pending = true;
+    path.transmitted = false;
+    path.medium = PathWorkspace::kOutside;
+    path.group = 0;
   }
   counts.camera += camera_rays.size();
   PathTracer<Sampler> tracer(scene, lights, sampler, keys, results, ws, textures);
@@ -204,7 +247,9 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
     ws.shadow_lights.clear();
     ws.surfaces.resize(ws.rays.size());
     make_surfaces(scene, ws.rays, ws.hits, ws.surfaces);
-    for (std::size_t i = 0; i < ws.paths.size(); ++i) tracer.extend(ws.paths[i], ws.rays[i], ws.hits[i], ws.surfaces[i]);
+    if (generation < scene.render.max_depth) draw_vertex_samples(sampler, keys, generation, ws);
+    for (std::size_t i = 0; i < ws.paths.size(); ++i)
+      tracer.extend(ws.paths[i], ws.rays[i], ws.hits[i], ws.surfaces[i], ws.vertex_samples[i]);
 
     ws.occluded.resize(ws.shadow_rays.size());
     occluded_with_shadow_linking(backend, scene.links, ws.shadow_rays, ws.shadow_lights, ws.occluded,

@@ -82,7 +82,13 @@ class LightSet {
   // light sends nothing there (behind a one-sided emitter).
   // `textures`: the scene's images, for emitters with an emission texture.
   std::optional<PathLightSample> sample(const Vec3& point, float u_pick, Sample2D u,
-                                        const TextureLookup* textures = nullptr, std::uint32_t group = 0) const;
+                                        const TextureLookup* textures = nullptr, std::uint32_t group = 0) const {
+    PathLightSample s;
+    return sample(point, u_pick, u, textures, group, s) ? std::optional<PathLightSample>(s) : std::nullopt;
+  }
+  // The same into `out` (its fields undefined when there is none), for the path integrator's loop.
+  bool sample(const Vec3& point, float u_pick, Sample2D u, const TextureLookup* textures, std::uint32_t group,
+              PathLightSample& out) const;
 
   // The light that an emissive surface hit is (kInvalidId when it is not sampled).
   std::uint32_t light_of_hit(const Hit& hit) const;

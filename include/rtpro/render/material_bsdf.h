@@ -19,6 +19,13 @@ struct SurfaceBsdf {
 };
 
 // `textures`: the scene's image textures, opened, for the colour textures the material reads.
-SurfaceBsdf material_bsdf(const Material& material, const SurfacePoint& point, const TextureLookup* textures);
+// Written into `out`, whose previous contents do not matter.
+void material_bsdf(const Material& material, const SurfacePoint& point, const TextureLookup* textures,
+                   SurfaceBsdf& out);
+inline SurfaceBsdf material_bsdf(const Material& material, const SurfacePoint& point, const TextureLookup* textures) {
+  SurfaceBsdf surface;
+  material_bsdf(material, point, textures, surface);
+  return surface;
+}
 
 }  // namespace rtpro

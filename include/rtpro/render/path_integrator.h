@@ -63,6 +63,15 @@ class PathWorkspace {
   std::vector<Ray> rays, next_rays;
   std::vector<Hit> hits;
   std::vector<SurfacePoint> surfaces;  // of the hits, for the hits that are valid
+  // The random numbers of a vertex, drawn for the whole generation at once.
+  struct VertexSamples {
+    Sample2D choices;         // which light (x) and which BSDF lobe (y)
+    Sample2D light_point;     // where on the light
+    Sample2D bsdf_direction;  // the BSDF's direction within its lobe
+  };
+  std::vector<SampleKey> path_keys;  // per path, its camera sample
+  std::vector<Sample2D> draws;
+  std::vector<VertexSamples> vertex_samples;
   std::vector<ShadowQuery> shadow_queries;
   std::vector<Ray> shadow_rays;
   std::vector<std::uint32_t> shadow_lights;  // per shadow ray: the scene light it goes to, or kInvalidId

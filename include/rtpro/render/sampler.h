@@ -9,12 +9,20 @@
 // s div columns)). Every later dimension pair is stratified over the same grid, but visits its strata in an order of its own — a pseudo-random permutation
 // per pixel and dimension — so that, e.g., the lens position is not correlated with the position
 // in the pixel (pbrt's padded stratified sampling).
+#include <cstddef>
 #include <cstdint>
+#include <span>
 
 namespace rtpro {
 
 struct Sample2D {
   float x, y;  // each in [0, 1)
+};
+
+// One camera sample: the pixel and the sample's index in it.
+struct SampleKey {
+  std::uint64_t pixel_key;  // y · width + x in the full image
+  int sample_index;
 };
 using PixelOffset = Sample2D;
 
@@ -44,6 +52,10 @@ class StratifiedSampler {
   // The 2D value of dimension pair (dimension, dimension + 1) for this sample; dimension is even
   // and at least 2.
   Sample2D sample_2d(std::uint64_t pixel_key, int sample_index, int dimension) const;
+  // sample_2d of each key into out[i] (out.size() == keys.size()).
+  void sample_2d(std::span<const SampleKey> keys, int dimension, std::span<Sample2D> out) const {
+    for (std::size_t i = 0; i < keys.size(); ++i) out[i] = sample_2d(keys[i].pixel_key, keys[i].sample_index, dimension);
+  }
 
   // A 1D value of `dimension`, stratified over spp strata in a permuted order.
   float sample_1d(std::uint64_t pixel_key, int sample_index, int dimension) const;

@@ -51,11 +51,6 @@ struct PrimaryHit {
 };
 
 // Which camera sample a ray of a batch serves: the sampler's key for the randomness it draws.
-struct SampleKey {
-  std::uint64_t pixel_key;  // y · width + x in the full image
-  int sample_index;
-};
-
 struct SampleResult {
   Color radiance;
   PrimaryHit primary;

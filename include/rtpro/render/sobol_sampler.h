@@ -12,6 +12,7 @@
 #include "rtpro/render/sampler.h"
 
 #include <cstdint>
+#include <span>
 
 namespace rtpro {
 
@@ -25,6 +26,9 @@ class SobolSampler {
   }
   // The 2D value of dimension pair (dimension, dimension + 1); dimension is even.
   Sample2D sample_2d(std::uint64_t pixel_key, int sample_index, int dimension) const;
+  // sample_2d of each key into out[i], bit for bit (out.size() == keys.size()). The hashes of
+  // many keys run side by side in vector registers where the CPU has AVX2.
+  void sample_2d(std::span<const SampleKey> keys, int dimension, std::span<Sample2D> out) const;
   // A 1D value of `dimension`: an Owen-scrambled van der Corput sequence.
   float sample_1d(std::uint64_t pixel_key, int sample_index, int dimension) const;
 
