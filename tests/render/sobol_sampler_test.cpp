@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cstdint>
+#include <random>
 #include <set>
 #include <vector>
 
@@ -82,6 +85,30 @@ TEST(SobolSampler, ValuesDependOnlyOnSeedPixelSampleAndDimension) {
     same += a.sample_2d(5, s, 8).x == other_seed.sample_2d(5, s, 8).x;
   }
   EXPECT_LT(same, 3);
+}
+
+// The batch the path integrator draws a generation's vertex samples with: every value the single
+// draw's, bit for bit, for keys of any pixel and sample index (high bits set too) and for runs
+// longer than, equal to and shorter than the batch's internal run.
+TEST(SobolSampler, DrawingManyKeysAtOnceIsDrawingEachKey) {
+  const SobolSampler sampler(0x5eed);
+  std::mt19937_64 rng(9);
+  for (const std::size_t count : {std::size_t{1}, std::size_t{63}, std::size_t{64}, std::size_t{65}, std::size_t{1000}}) {
+    std::vector<SampleKey> keys(count);
+    for (SampleKey& key : keys) {
+      key.pixel_key = rng() >> (rng() % 64);
+      key.sample_index = static_cast<int>(rng() % 4 == 0 ? rng() >> 33 : rng() % 256);
+    }
+    for (const int dimension : {0, 2, 8, 36, 1000}) {
+      std::vector<Sample2D> many(count);
+      sampler.sample_2d(keys, dimension, many);
+      for (std::size_t i = 0; i < count; ++i) {
+        const Sample2D one = sampler.sample_2d(keys[i].pixel_key, keys[i].sample_index, dimension);
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(many[i].x), std::bit_cast<std::uint32_t>(one.x)) << i << " of " << count;
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(many[i].y), std::bit_cast<std::uint32_t>(one.y)) << i << " of " << count;
+      }
+    }
+  }
 }
 
 }  // namespace sobol_sampler_test

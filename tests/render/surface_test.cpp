@@ -167,6 +167,52 @@ void expect_plain_hits_are(int triangles, IsPlain is_plain) {
   for (const Hit& hit : hits) EXPECT_FALSE(is_plain(scene, hit));
 }
 
+// make_surfaces over a traced batch mixing plain sphere and triangle hits, instanced and textured
+// ones (one at a time) and misses (left alone): each surface make_surface's, bit for bit.
+TEST(Surface, ABatchOfHitsIsMakeSurfaceOfEachHit) {
+  RenderScene scene = test::random_mixed_scene(11, 200, 60, 12);
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
+  std::mt19937 rng(13);
+  std::vector<Ray> rays;
+  std::vector<Hit> hits;
+  for (int i = 0; i < 6000; ++i) {
+    rays.push_back(test::random_ray(rng, 4.0f));
+    Hit hit;
+    if (!backend->intersect(rays.back(), hit)) hit = Hit{};
+    hits.push_back(hit);
+  }
+  SurfacePoint untouched;
+  untouched.material = 12345;
+  std::vector<SurfacePoint> batch(hits.size(), untouched);
+  make_surfaces(scene, rays, hits, batch);
+  int plain_spheres = 0, plain_triangles = 0, misses = 0, others = 0;
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    const int hit = static_cast<int>(i);
+    if (!hits[i].valid()) {
+      ASSERT_EQ(batch[i].material, 12345u) << hit;
+      ++misses;
+      continue;
+    }
+    plain_spheres += is_plain_sphere_hit(scene, hits[i]);
+    plain_triangles += is_plain_triangle_hit(scene, hits[i]);
+    others += !is_plain_sphere_hit(scene, hits[i]) && !is_plain_triangle_hit(scene, hits[i]);
+    const SurfacePoint one = make_surface(scene, rays[i], hits[i]);
+    expect_same_vector(batch[i].position, one.position, "position", hit);
+    expect_same_vector(batch[i].geometric_normal, one.geometric_normal, "geometric normal", hit);
+    expect_same_vector(batch[i].shading_normal, one.shading_normal, "shading normal", hit);
+    ASSERT_EQ(batch[i].front_face, one.front_face) << hit;
+    ASSERT_EQ(bits(batch[i].position_error), bits(one.position_error)) << hit;
+    ASSERT_EQ(batch[i].material, one.material) << hit;
+    ASSERT_EQ(batch[i].object_id, one.object_id) << hit;
+    ASSERT_EQ(bits(batch[i].tex_u), bits(one.tex_u)) << hit;
+    ASSERT_EQ(bits(batch[i].tex_v), bits(one.tex_v)) << hit;
+  }
+  EXPECT_GT(plain_spheres, 100);
+  EXPECT_GT(plain_triangles, 100);
+  EXPECT_GT(misses, 100);
+  EXPECT_GT(others, 100) << "instanced hits, made one at a time";
+}
+
 TEST(Surface, OnlyTopLevelSpheresWithoutImageTexturesArePlain) {
   expect_plain_hits_are<SphereSet>(50, [](const RenderScene& scene, const Hit& hit) { return is_plain_sphere_hit(scene, hit); });
 }
