@@ -4,8 +4,8 @@
 // in blocks of 1,024 rays as a worker's batch is, three ways:
 //   single:   one Backend::intersect / occluded call per ray;
 //   scattered: the batch call with RayCoherence::kIncoherent, what the integrator asks for past the
-//             camera (embree: packets of eight, rtcIntersect8; native: packets of eight where the
-//             CPU has AVX2);
+//             camera (embree: rtcIntersect1 per ray in scenes with triangles, packets of eight in
+//             scenes of spheres alone; native: packets of eight where the CPU has AVX2);
 //   coherent: the batch call with RayCoherence::kCoherent, what camera rays get (embree: its stream
 //             API, packets of eight in its own layout; native: packets of eight).
 // One thread, so the rates are a core's. Scenes: $RTPRO_BENCH_SCENES (colon separated), by default

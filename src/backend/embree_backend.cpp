@@ -109,25 +109,36 @@ class EmbreeBackend final : public Backend {
     return from_embree(query, hit);
   }
 
-  // Scattered rays go in packets of eight (rtcIntersect8 / rtcOccluded8): against one
-  // rtcIntersect1 per ray, 1.1–1.4× on the Cornell box's bounce and shadow rays and 1.0–1.8× on
-  // the dragon's (benchmarks/path_bounce_benchmark.sh), where streams of the same rays were
-  // 1.3–2.6× slower. Where only spheres can be hit (packets_), camera rays go in packets too: 7%
-  // faster on the demo than the coherent stream, whose regrouping costs more than it gains for a
-  // handful of user-geometry primitives. Elsewhere camera rays go to Embree as a stream with the
-  // coherent flag: Embree regroups them into packets, which traced camera tiles 1.3–2.4× faster
-  // than one rtcIntersect1 per ray (third_party_notes/embree.md).
+  // Where only spheres can be hit (packets_), every batch goes in packets of eight, camera rays
+  // too: 7% faster on the demo than the coherent stream, whose regrouping costs more than it
+  // gains for a handful of user-geometry primitives. Elsewhere camera rays go to Embree as a
+  // stream with the coherent flag: Embree regroups them into packets, which traced camera tiles
+  // 1.3–2.4× faster than one rtcIntersect1 per ray (third_party_notes/embree.md), and scattered
+  // rays one by one: streams of them were 1.3–2.6× slower than single rays. Packets of eight
+  // would be faster (1.1–1.6× on the path integrator's Cornell box shadow rays,
+  // benchmarks/path_bounce_benchmark.sh) but Embree's hybrid packet traversal switches triangle
+  // kernels by the number of active lanes, so a triangle hit would depend on its packet's other
+  // rays, and images on tiles and threads.
   void intersect(std::span<const Ray> rays, std::span<Hit> hits, RayCoherence coherence) const override {
-    if (packets_ || coherence == RayCoherence::kIncoherent) {
+    if (packets_) {
       intersect_packets(target(), rays, hits);
+      return;
+    }
+    if (coherence == RayCoherence::kIncoherent) {
+      for (std::size_t i = 0; i < rays.size(); ++i)
+        if (!intersect(rays[i], hits[i])) hits[i] = Hit{};
       return;
     }
     intersect_stream(target(), rays, hits);
   }
 
   void occluded(std::span<const Ray> rays, std::span<std::uint8_t> result, RayCoherence coherence) const override {
-    if (packets_ || coherence == RayCoherence::kIncoherent) {
+    if (packets_) {
       occluded_packets(target(), rays, result);
+      return;
+    }
+    if (coherence == RayCoherence::kIncoherent) {
+      for (std::size_t i = 0; i < rays.size(); ++i) result[i] = occluded(rays[i]) ? 1 : 0;
       return;
     }
     occluded_stream(target(), rays, result);
