@@ -33,14 +33,11 @@ constexpr float kShadowEpsilon = 1e-4f;
 // No channel positive (NaN counts as nothing).
 bool carries_no_light(const Color& c) { return !(c.x > 0.0f || c.y > 0.0f || c.z > 0.0f); }
 
-template <class Sampler>
 class PathTracer {
  public:
-  PathTracer(const RenderScene& scene, const LightSet& lights, const Sampler& sampler,
-             std::span<const SampleKey> keys, std::span<SampleResult> results, PathWorkspace& ws,
+  PathTracer(const RenderScene& scene, const LightSet& lights, std::span<SampleResult> results, PathWorkspace& ws,
              const TextureLookup* textures)
-      : scene_(scene), lights_(lights), sampler_(sampler), keys_(keys), results_(results), ws_(ws),
-        textures_(textures) {}
+      : scene_(scene), lights_(lights), results_(results), ws_(ws), textures_(textures) {}
 
   // Everything a path does at the surface (or miss) its ray reached: emission, then the light
   // sample (queued as a shadow ray), then the BSDF sample (queued as the path's next ray).
@@ -83,8 +80,6 @@ class PathTracer {
     }
     if (path.bounce >= scene_.render.max_depth) return;
 
-    const SampleKey& key = keys_[path.sample];
-    const auto dimension = [&](int offset) { return sample_dimension::at_bounce(path.bounce, offset); };
     const Vec3 wo = surface.frame.to_local(-normalize(ray.dir));
     if (!delta && !lights_.empty(group) &&
         lights_.sample(sp.position, u.choices.x, u.light_point, textures_, group, light_sample_))
@@ -95,7 +90,7 @@ class PathTracer {
     Color next_beta = beta * bs->f * (std::fabs(bs->wi.z) / bs->pdf);
     if (path.bounce >= kRouletteStart) {
       const float q = std::max(0.05f, 1.0f - max_component(next_beta));
-      if (sampler_.sample_1d(key.pixel_key, key.sample_index, dimension(path_dimension::kRoulette)) < q) return;
+      if (u.roulette < q) return;
       next_beta = next_beta / (1.0f - q);
     }
     if (!is_finite(next_beta) || carries_no_light(next_beta)) return;
@@ -185,8 +180,6 @@ class PathTracer {
 
   const RenderScene& scene_;
   const LightSet& lights_;
-  const Sampler& sampler_;
-  std::span<const SampleKey> keys_;
   std::span<SampleResult> results_;
   PathWorkspace& ws_;
   const TextureLookup* textures_;
@@ -213,6 +206,10 @@ void draw_vertex_samples(const Sampler& sampler, std::span<const SampleKey> keys
   draw(path_dimension::kChoices, &VertexSamples::choices);
   draw(path_dimension::kLightPoint, &VertexSamples::light_point);
   draw(path_dimension::kBsdfDirection, &VertexSamples::bsdf_direction);
+  if (bounce < kRouletteStart) return;
+  ws.roulette_draws.resize(n);
+  sampler.sample_1d(ws.path_keys, sample_dimension::at_bounce(bounce, path_dimension::kRoulette), ws.roulette_draws);
+  for (std::size_t i = 0; i < n; ++i) ws.vertex_samples[i].roulette = ws.roulette_draws[i];
 }
 
 template <class Sampler>
@@ -236,7 +233,7 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
     path.group = 0;
   }
   counts.camera += camera_rays.size();
-  PathTracer<Sampler> tracer(scene, lights, sampler, keys, results, ws, textures);
+  PathTracer tracer(scene, lights, results, ws, textures);
   for (int generation = 0; !ws.paths.empty(); ++generation) {
     ws.hits.resize(ws.rays.size());
     backend.intersect(ws.rays, ws.hits, generation == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);

@@ -144,7 +144,28 @@ void sample_2d_run(std::uint64_t seed, const SampleKey* keys, std::size_t count,
   }
 }
 
+RTPRO_AVX2_CLONES
+void sample_1d_run(std::uint64_t seed, const SampleKey* keys, std::size_t count, int dimension, float* out) {
+  using namespace sobol_detail;
+  std::uint32_t order[kRun], sx[kRun];
+  for (std::size_t i = 0; i < count; ++i) {
+    const Scrambles s = scrambles(seed, keys[i].pixel_key, dimension);
+    order[i] = s.order;
+    sx[i] = s.x;
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint32_t r =
+        laine_karras_permutation(reverse_bits(static_cast<std::uint32_t>(keys[i].sample_index)), order[i]);
+    out[i] = to_unit(reverse_bits(laine_karras_permutation(reverse_bits(r), sx[i])));
+  }
+}
+
 }  // namespace
+
+void SobolSampler::sample_1d(std::span<const SampleKey> keys, int dimension, std::span<float> out) const {
+  for (std::size_t start = 0; start < keys.size(); start += kRun)
+    sample_1d_run(seed_, keys.data() + start, std::min(kRun, keys.size() - start), dimension, out.data() + start);
+}
 
 void SobolSampler::sample_2d(std::span<const SampleKey> keys, int dimension, std::span<Sample2D> out) const {
   for (std::size_t start = 0; start < keys.size(); start += kRun)

@@ -87,9 +87,9 @@ TEST(SobolSampler, ValuesDependOnlyOnSeedPixelSampleAndDimension) {
   EXPECT_LT(same, 3);
 }
 
-// The batch the path integrator draws a generation's vertex samples with: every value the single
-// draw's, bit for bit, for keys of any pixel and sample index (high bits set too) and for runs
-// longer than, equal to and shorter than the batch's internal run.
+// The batches the path integrator draws a generation's vertex samples with (2D and 1D): every
+// value the single draw's, bit for bit, for keys of any pixel and sample index (high bits set
+// too) and for runs longer than, equal to and shorter than the batch's internal run.
 TEST(SobolSampler, DrawingManyKeysAtOnceIsDrawingEachKey) {
   const SobolSampler sampler(0x5eed);
   std::mt19937_64 rng(9);
@@ -102,10 +102,14 @@ TEST(SobolSampler, DrawingManyKeysAtOnceIsDrawingEachKey) {
     for (const int dimension : {0, 2, 8, 36, 1000}) {
       std::vector<Sample2D> many(count);
       sampler.sample_2d(keys, dimension, many);
+      std::vector<float> many_1d(count);
+      sampler.sample_1d(keys, dimension + 1, many_1d);
       for (std::size_t i = 0; i < count; ++i) {
         const Sample2D one = sampler.sample_2d(keys[i].pixel_key, keys[i].sample_index, dimension);
         ASSERT_EQ(std::bit_cast<std::uint32_t>(many[i].x), std::bit_cast<std::uint32_t>(one.x)) << i << " of " << count;
         ASSERT_EQ(std::bit_cast<std::uint32_t>(many[i].y), std::bit_cast<std::uint32_t>(one.y)) << i << " of " << count;
+        const float one_1d = sampler.sample_1d(keys[i].pixel_key, keys[i].sample_index, dimension + 1);
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(many_1d[i]), std::bit_cast<std::uint32_t>(one_1d)) << i << " of " << count;
       }
     }
   }

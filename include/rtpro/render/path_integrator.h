@@ -68,9 +68,11 @@ class PathWorkspace {
     Sample2D choices;         // which light (x) and which BSDF lobe (y)
     Sample2D light_point;     // where on the light
     Sample2D bsdf_direction;  // the BSDF's direction within its lobe
+    float roulette;           // from kRouletteStart on: whether the path goes on
   };
   std::vector<SampleKey> path_keys;  // per path, its camera sample
   std::vector<Sample2D> draws;
+  std::vector<float> roulette_draws;
   std::vector<VertexSamples> vertex_samples;
   std::vector<ShadowQuery> shadow_queries;
   std::vector<Ray> shadow_rays;

@@ -31,6 +31,8 @@ class SobolSampler {
   void sample_2d(std::span<const SampleKey> keys, int dimension, std::span<Sample2D> out) const;
   // A 1D value of `dimension`: an Owen-scrambled van der Corput sequence.
   float sample_1d(std::uint64_t pixel_key, int sample_index, int dimension) const;
+  // sample_1d of each key into out[i], bit for bit, as the batch sample_2d.
+  void sample_1d(std::span<const SampleKey> keys, int dimension, std::span<float> out) const;
 
  private:
   std::uint64_t seed_;
