@@ -32,6 +32,10 @@ LightPicker::LightPicker(LightSamplerKind kind, std::span<const std::uint32_t> m
   infinite_pick_ = AliasTable(infinite_power);
   const double total = infinite_total + static_cast<double>(tree_.power());
   infinite_probability_ = total > 0.0 ? static_cast<float>(infinite_total / total) : 0.0f;
+  if (members_.size() == 1 && !empty()) {
+    single_pick_ = pick_among(Vec3(0.0f), 0.0f);
+    single_ = true;
+  }
 }
 
 float LightPicker::probability(std::uint32_t light, const Vec3& point) const {
@@ -46,7 +50,7 @@ float LightPicker::probability(std::uint32_t light, const Vec3& point) const {
   return 0.0f;
 }
 
-std::optional<LightPicker::Pick> LightPicker::pick(const Vec3& point, float u) const {
+std::optional<LightPicker::Pick> LightPicker::pick_among(const Vec3& point, float u) const {
   switch (kind_) {
     case LightSamplerKind::kPower: {
       const AliasTable::Pick pick = pick_.sample(u);

@@ -33,7 +33,10 @@ class LightPicker {
     float pmf;
   };
   // u in [0, 1). Nothing when no light can reach `point`.
-  std::optional<Pick> pick(const Vec3& point, float u) const;
+  std::optional<Pick> pick(const Vec3& point, float u) const {
+    if (single_) return single_pick_;
+    return pick_among(point, u);
+  }
   // The probability pick() chooses light `light` (the set's index) at `point`; 0 for lights it
   // does not hold.
   float probability(std::uint32_t light, const Vec3& point) const;
@@ -41,6 +44,7 @@ class LightPicker {
 
  private:
   static constexpr std::uint32_t kNone = ~0u;
+  std::optional<Pick> pick_among(const Vec3& point, float u) const;
   LightSamplerKind kind_ = LightSamplerKind::kTree;
   std::vector<std::uint32_t> members_;    // the set's index of each member
   std::vector<std::uint32_t> member_of_;  // per light of the set: its member index, or kNone
@@ -52,6 +56,11 @@ class LightPicker {
   std::vector<std::uint32_t> infinite_slot_;  // per member: its place in infinite_, or kNone
   AliasTable infinite_pick_;
   float infinite_probability_ = 0.0f;
+  // One member: the pick depends on neither the point nor u (the tree is one leaf, the tables
+  // one entry, the split 0 or 1), so it is made once, and a scene lit by one light pays nothing
+  // per vertex to pick it.
+  bool single_ = false;
+  std::optional<Pick> single_pick_;
 };
 
 }  // namespace rtpro
