@@ -358,7 +358,8 @@ float LightSet::environment_pdf(const Vec3& direction, std::uint32_t group) cons
   return pick_probability(environment_index_, Vec3(0.0f), group) * environment_->pdf(direction);
 }
 
-std::optional<LightSet::SeenLight> LightSet::seen_light(const Ray& ray, float t_max, std::uint32_t group) const {
+std::optional<LightSet::SeenLight> LightSet::nearest_analytic_light(const Ray& ray, float t_max,
+                                                                    std::uint32_t group) const {
   std::optional<SeenLight> nearest;
   for (const std::uint32_t index : linked(group).analytic) {
     const PathLight& light = lights_[index];

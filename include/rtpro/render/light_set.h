@@ -113,7 +113,11 @@ class LightSet {
     float t;
     Color radiance;
   };
-  std::optional<SeenLight> seen_light(const Ray& ray, float t_max, std::uint32_t group = 0) const;
+  // Inline up to the common case, a scene without sphere or rectangle lights: every path vertex asks.
+  std::optional<SeenLight> seen_light(const Ray& ray, float t_max, std::uint32_t group = 0) const {
+    if (linked(group).analytic.empty()) return std::nullopt;
+    return nearest_analytic_light(ray, t_max, group);
+  }
 
  private:
   // What a distinct set of illuminating lights picks from, and its sphere and rectangle lights.
@@ -123,6 +127,7 @@ class LightSet {
   };
   const Linked& linked(std::uint32_t group) const { return linked_[linked_of_group_[group]]; }
   const LightPicker& picker(std::uint32_t group) const { return linked(group).picker; }
+  std::optional<SeenLight> nearest_analytic_light(const Ray& ray, float t_max, std::uint32_t group) const;
 
   std::vector<PathLight> lights_;
   std::vector<Linked> linked_;                  // [0]: every light
