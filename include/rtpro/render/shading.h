@@ -1,5 +1,5 @@
 #pragma once
-// The shading model (the seed's, completed): ambient·C, then per unshadowed light
+// The Whitted shading model: ambient·C, then per unshadowed light
 // C⊙L·max(0,N·L) diffuse plus specular·L·max(0,R·L)^shininess Phong, then the mirror reflection
 // traced up to the maximum depth, weighted by the material's reflectivity.
 //

@@ -211,8 +211,8 @@ class NodeWalker {
       asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) + "]: unusable field of view or placement; skipped");
       return;
     }
-    // The image is 640 pixels wide and as high as the aspect ratio makes it: 0.0011 made it 65,536
-    // high. Ratios beyond 1:16 are clamped (with a warning), an image at most 10,240 high.
+    // The image is 640 pixels wide and as high as the aspect ratio makes it (0.0011 would make it
+    // 65,536 high): ratios beyond 1:16 are clamped (with a warning), an image at most 10,240 high.
     double aspect = camera.perspective.aspectRatio;
     if (!std::isfinite(aspect) || aspect < 0.0) aspect = 0.0;  // none: the default size
     if (aspect > 0.0 && (aspect < kMinCameraAspect || aspect > kMaxCameraAspect)) {

@@ -29,8 +29,8 @@ std::string number(double v) {
 std::string vector(const Vec3& v) { return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]"; }
 
 // The file name as a YAML string read back exactly: quotes and backslashes escaped, control
-// characters as \xNN, and `$` doubled (the generated text goes through variable substitution:
-// `a$b.glb` was read as the variable $b).
+// characters as \xNN, and `$` doubled (the text goes through variable substitution, which would
+// read the `$b` of `a$b.glb` as a variable).
 std::string quoted_yaml(const std::string& text) {
   std::string out = "\"";
   for (const char c : text) {
