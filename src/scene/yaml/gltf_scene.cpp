@@ -19,6 +19,8 @@ namespace {
 constexpr float kDefaultFov = 40.0f;
 constexpr int kDefaultWidth = 640;
 constexpr int kDefaultHeight = 480;
+// What an error about the text's first lines, or about the scene as a whole, is about.
+constexpr const char* kWholeScene = "the scene rtpro makes of the file";
 
 std::string number(double v) {
   char text[32];
@@ -153,21 +155,22 @@ void GltfSceneText::add(const std::string& line, const std::string& origin) {
 }
 
 const std::string& GltfSceneText::origin(int line) const {
-  static const std::string kWhole = "the scene rtpro makes of the file";
-  return line >= 1 && std::size_t(line) <= origin_of_line.size() ? origin_of_line[std::size_t(line) - 1] : kWhole;
+  static const std::string whole_scene = kWholeScene;
+  return line >= 1 && std::size_t(line) <= origin_of_line.size() ? origin_of_line[std::size_t(line) - 1] : whole_scene;
 }
 
 GltfSceneText gltf_scene_text(const GltfAsset& asset) {
   GltfSceneText text;
   const std::string name = asset.file.filename().string();
-  text.add("# " + ascii::printable(name, 200) + " as a scene", "the scene rtpro makes of the file");
-  text.add("rtpro: 1", "the scene rtpro makes of the file");
+  text.add("# " + ascii::printable(name, 200) + " as a scene", kWholeScene);
+  text.add("rtpro: 1", kWholeScene);
   add_camera(asset, asset.bounds(), text);
   add_render_settings(asset, text);
   add_lights(asset, text);
   if (writable_in_yaml(name)) {
-    text.add("world:", "the file itself, the world's mesh");
-    text.add("  - {type: mesh, file: " + quoted_yaml(name) + "}", "the file itself, the world's mesh");
+    const std::string origin = "the file itself, the world's mesh";
+    text.add("world:", origin);
+    text.add("  - {type: mesh, file: " + quoted_yaml(name) + "}", origin);
   }
   return text;
 }
