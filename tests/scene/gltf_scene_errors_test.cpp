@@ -40,7 +40,7 @@ int add_camera(GltfFile& gltf, double yfov, nlohmann::json node) {
 // translation of 1e9 places it at 2e9; returns N.
 int add_doubled_light(GltfFile& gltf, nlohmann::json light, nlohmann::json node) {
   gltf.json["extensionsUsed"] = {"KHR_lights_punctual"};
-  gltf.json["extensions"]["KHR_lights_punctual"]["lights"] = {std::move(light)};
+  gltf.json["extensions"]["KHR_lights_punctual"]["lights"] = nlohmann::json::array({std::move(light)});
   node["extensions"] = {{"KHR_lights_punctual", {{"light", 0}}}};
   const int lamp = gltf.node(std::move(node));
   gltf.json["scenes"][0]["nodes"].push_back(gltf.node({{"children", {lamp}}, {"scale", {2, 2, 2}}}));
