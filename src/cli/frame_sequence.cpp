@@ -61,8 +61,8 @@ std::string numbered_output(const std::string& output, long frame) {
   if (end == std::string::npos) return output;
   std::size_t begin = end;
   while (begin > 0 && output[begin - 1] == '#') --begin;
-  // Padded to the run's length however long it is: a fixed buffer once cut long runs short, and
-  // every frame of a 40-'#' pattern wrote the same file.
+  // Padded to the run's length however long it is, so a long run is never cut short and every
+  // frame of a 40-'#' pattern writes a file of its own.
   const std::string digits = std::to_string(frame);
   const std::size_t width = end - begin + 1;
   const std::string padded = digits.size() < width ? std::string(width - digits.size(), '0') + digits : digits;

@@ -12,6 +12,25 @@ std::size_t peak_rss_bytes() {
   return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports KiB
 }
 
+namespace {
+
+// "N camera  N shadow  N reflection  N refraction  (N total)".
+std::string rays_text(const RayCounts& rays) {
+  std::string text;
+  for (const RayKind kind : kRayKinds) text += std::to_string(rays[kind]) + " " + ray_kind_name(kind) + "  ";
+  return text + "(" + std::to_string(rays.total()) + " total)";
+}
+
+// {"camera": N, "shadow": N, "reflection": N, "refraction": N, "total": N}: the keys benchmarks read.
+nlohmann::json rays_json(const RayCounts& rays) {
+  nlohmann::json out;
+  for (const RayKind kind : kRayKinds) out[ray_kind_name(kind)] = rays[kind];
+  out["total"] = rays.total();
+  return out;
+}
+
+}  // namespace
+
 std::string RenderStatistics::text() const {
   const auto mib = [](std::size_t b) { return static_cast<double>(b) / (1024.0 * 1024.0); };
   char buffer[2048];
@@ -20,15 +39,13 @@ std::string RenderStatistics::text() const {
                 "  image         %dx%d, %d spp%s\n"
                 "  backend       %s, %d threads\n"
                 "  time          load %.3fs  build %.3fs  render %.3fs  write %.3fs  total %.3fs\n"
-                "  rays          %llu camera  %llu shadow  %llu reflection  %llu refraction  (%llu total)\n"
+                "  rays          %s\n"
                 "  speed         %.2f Mrays/s\n"
                 "  rejected      %llu rays,  %llu NaN samples\n"
                 "  memory        peak RSS %.1f MiB, acceleration structure %.1f MiB\n",
                 width, height, spp, complete ? "" : " (interrupted: partial)", backend.c_str(), threads,
                 load_seconds, build_seconds, render_seconds, write_seconds, total_seconds,
-                static_cast<unsigned long long>(rays.camera), static_cast<unsigned long long>(rays.shadow),
-                static_cast<unsigned long long>(rays.reflection), static_cast<unsigned long long>(rays.refraction),
-                static_cast<unsigned long long>(rays.total()),
+                rays_text(rays).c_str(),
                 mrays_per_second(), static_cast<unsigned long long>(rejected_rays),
                 static_cast<unsigned long long>(nan_samples), mib(peak_rss_bytes), mib(acceleration_bytes));
   std::string out = buffer;
@@ -68,9 +85,7 @@ nlohmann::json RenderStatistics::json() const {
             {"write", write_seconds},
             {"denoise", denoise_seconds},
             {"total", total_seconds}}},
-          {"rays",
-           {{"camera", rays.camera}, {"shadow", rays.shadow}, {"reflection", rays.reflection}, {"refraction", rays.refraction},
-            {"total", rays.total()}}},
+          {"rays", rays_json(rays)},
           {"mrays_per_second", mrays_per_second()},
           {"rejected_rays", rejected_rays},
           {"nan_samples", nan_samples},

@@ -1,5 +1,8 @@
 #include "regression_filter.h"
 
+#include "regression_lanes.h"
+#include "regression_moments.h"
+
 #include "rtpro/core/avx2_clones.h"
 
 #include <tbb/blocked_range.h>
@@ -20,24 +23,11 @@ namespace rtpro {
 
 namespace {
 
-// Output tiles: the unit of parallel work, and of the per-offset weight images (a tile's weights
-// for every offset are computed before its regressions, so patch distances are summed once).
-constexpr int kTileSize = 32;
-// Pixels of a row handled together by the regression's sums: one AVX register of floats. Clang
-// refuses 256-bit vectors across its inlined helpers in the baseline clone (an ABI error, not a
-// note), so a Clang build (the sanitizer tree) takes SSE widths; each lane is its own pixel, so
-// the results are the same bits at either width.
-#if defined(__clang__)
-constexpr int kLanes = 4;
-#else
-constexpr int kLanes = 8;
-#endif
-constexpr int kGroups = kTileSize / kLanes;
+using namespace regression;
+
 // Regressors at most: normal (3), inverse depth, screen x and y, the intercept. (The albedo is
 // divided out of the colour instead: the regression need not explain it.)
 constexpr int kMaxRegressors = 7;
-// Distances above this give weights of e^-80 and below: none.
-constexpr float kDistanceClamp = 80.0f;
 // Keeps the colour distance finite where neither pixel has any variance (an exact background).
 constexpr float kVarianceEpsilon = 1e-8f;
 // Inverse depth may differ by this fraction of itself even on a surface facing the camera.
@@ -45,107 +35,6 @@ constexpr float kDepthRelativeSlack = 0.01f;
 // Ridge regularisation of each feature's coefficient: a feature that varies, over the weighted
 // window, by less than about sqrt(kRidge) adds nothing but the noise it would fit.
 constexpr double kRidge = 1e-3;
-
-// kLanes floats as one value (GCC's vector extension: AVX registers in the AVX2 clone, pairs of
-// SSE registers in the baseline one; the same IEEE operations either way). Every helper on them
-// is inlined into its caller, so no vector crosses a call (GCC's -Wpsabi note is about calls; it
-// is given for the file's end, where the templates are instantiated, so it stays off to there).
-#pragma GCC diagnostic ignored "-Wpsabi"
-using Lanes = float __attribute__((vector_size(kLanes * sizeof(float))));
-using IntLanes = std::int32_t __attribute__((vector_size(kLanes * sizeof(std::int32_t))));
-
-[[gnu::always_inline]] inline Lanes load_lanes(const float* p) {
-  Lanes v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-[[gnu::always_inline]] inline void store_lanes(float* p, Lanes v) { std::memcpy(p, &v, sizeof v); }
-
-// How many kLanes-wide chunks cover `count` values.
-int lane_chunks(int count) { return (count + kLanes - 1) / kLanes; }
-
-// NaN (from absurd inputs) becomes the clamp too: the comparison is false for it.
-[[gnu::always_inline]] inline Lanes clamped_distance(Lanes d) { return d < kDistanceClamp ? d : Lanes{} + kDistanceClamp; }
-
-// e^-x for x >= 0 (to about 3e-6, relative), in plain arithmetic on all lanes at once (std::exp
-// is a library call per value): 2^-n by the exponent bits, the rest by its Taylor series.
-[[gnu::always_inline]] inline Lanes exp_negative(Lanes x) {
-  const Lanes t = (x < kDistanceClamp ? x : Lanes{} + kDistanceClamp) * 1.44269504f;  // x / ln 2, <= 115.4
-  const IntLanes n = __builtin_convertvector(t + 0.5f, IntLanes);
-  const Lanes y = (__builtin_convertvector(n, Lanes) - t) * 0.693147181f;  // within ±ln(2)/2
-  const Lanes series = 1.0f + y * (1.0f + y * (0.5f + y * (1.0f / 6.0f + y * (1.0f / 24.0f + y * (1.0f / 120.0f)))));
-  return series * std::bit_cast<Lanes>((127 - n) << 23);
-}
-
-// The regression's sums, for D regressors x (the intercept last, x = 1) and the colour y:
-// Σ w·x_a·e_b with e = (x_0 .. x_D-1, y_R, y_G, y_B). First XᵀWX's lower triangle row by row,
-// then XᵀWY.
-struct MomentPair {
-  int a, b;
-};
-template <int D>
-constexpr int kMoments = D * (D + 1) / 2 + 3 * D;
-template <int D>
-constexpr std::array<MomentPair, kMoments<D>> moment_pairs() {
-  std::array<MomentPair, kMoments<D>> pairs{};
-  int m = 0;
-  for (int a = 0; a < D; ++a)
-    for (int b = 0; b <= a; ++b) pairs[m++] = {a, b};
-  for (int a = 0; a < D; ++a)
-    for (int c = 0; c < 3; ++c) pairs[m++] = {a, D + c};
-  return pairs;
-}
-int moment_count(int d) { return d * (d + 1) / 2 + 3 * d; }
-
-// Sums held in registers while a window row's offsets are added: at most this many at once
-// (AVX2 has 16 registers; the products need the rest).
-constexpr int kBlock = 12;
-
-// For the moments First .. First+Count-1: adds, over `offsets` staged offsets, wx[a]·e[b] to
-// `sums` (moment m at sums + m·kTileSize). The pair indices are constants once unrolled, so every
-// load has a fixed offset and the partial sums never leave the registers.
-template <int D, int First, int Count>
-[[gnu::always_inline]] inline void accumulate_block(const float* wx, const float* e, int offsets, float* sums) {
-  constexpr std::array<MomentPair, kMoments<D>> pairs = moment_pairs<D>();
-  Lanes acc[Count];
-#pragma GCC unroll 16
-  for (int k = 0; k < Count; ++k) acc[k] = Lanes{};
-  for (int o = 0; o < offsets; ++o) {
-    const float* wo = wx + static_cast<std::size_t>(o) * D * kLanes;
-    const float* eo = e + static_cast<std::size_t>(o) * (D + 3) * kLanes;
-#pragma GCC unroll 16
-    for (int k = 0; k < Count; ++k)
-      acc[k] += load_lanes(wo + pairs[First + k].a * kLanes) * load_lanes(eo + pairs[First + k].b * kLanes);
-  }
-#pragma GCC unroll 16
-  for (int k = 0; k < Count; ++k) {
-    float* m = sums + static_cast<std::size_t>(First + k) * kTileSize;
-    store_lanes(m, load_lanes(m) + acc[k]);
-  }
-}
-
-template <int D, int... Blocks>
-[[gnu::always_inline]] inline void accumulate_blocks(const float* wx, const float* e, int offsets, float* sums,
-                                                     std::integer_sequence<int, Blocks...>) {
-  (accumulate_block<D, Blocks * kBlock, std::min(kBlock, kMoments<D> - Blocks * kBlock)>(wx, e, offsets, sums), ...);
-}
-
-template <int D>
-[[gnu::always_inline]] inline void accumulate_moments(const float* wx, const float* e, int offsets, float* sums) {
-  accumulate_blocks<D>(wx, e, offsets, sums, std::make_integer_sequence<int, (kMoments<D> + kBlock - 1) / kBlock>{});
-}
-
-// The same for a regressor count known only at run time: screen x and y and the intercept, after
-// the normal (3) and the inverse depth (1) when present.
-[[gnu::always_inline]] inline void accumulate_moments(int d, const float* wx, const float* e, int offsets,
-                                                      float* sums) {
-  switch (d) {
-    case 3: return accumulate_moments<3>(wx, e, offsets, sums);
-    case 4: return accumulate_moments<4>(wx, e, offsets, sums);
-    case 6: return accumulate_moments<6>(wx, e, offsets, sums);
-    case 7: return accumulate_moments<7>(wx, e, offsets, sums);
-  }
-}
 
 struct Tile {
   int x0, y0, width, height;

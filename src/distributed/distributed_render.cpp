@@ -77,7 +77,8 @@ Message wait_for_message(Communicator& communicator) {
 }
 
 struct DoneRecord {
-  std::uint64_t tiles, camera, shadow, reflection, refraction;
+  std::uint64_t tiles;
+  RayCounts rays;  // by kind, in RayKind order (ray_counts.h)
   double busy_seconds, idle_seconds;
   std::uint64_t bytes_sent;
 };
@@ -261,7 +262,7 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
       case kDone: {
         const auto record = value_of<DoneRecord>(*message);
         from.tiles = record.tiles;
-        from.rays = {record.camera, record.shadow, record.reflection, record.refraction};
+        from.rays = record.rays;
         from.busy_seconds = record.busy_seconds;
         from.idle_seconds = record.idle_seconds;
         from.bytes_sent = record.bytes_sent;
@@ -361,8 +362,7 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
   }
   render.join();
   const RayCounts rays = clock.rays();
-  const DoneRecord done{clock.tiles(),        rays.camera,          rays.shadow, rays.reflection, rays.refraction,
-                        clock.busy_seconds(), clock.idle_seconds(), bytes_sent + sizeof(DoneRecord)};
+  const DoneRecord done{clock.tiles(), rays, clock.busy_seconds(), clock.idle_seconds(), bytes_sent + sizeof(DoneRecord)};
   communicator.send(0, kDone, bytes_of(done));
   // No heartbeats from here: rank 0 reads nothing more of this image once every kDone is in.
   while (true) {

@@ -1,7 +1,7 @@
 #pragma once
 // PNG files written without OpenImageIO, through libpng, as EXR files are through OpenEXR
 // (exr_output.h): a render that writes a PNG then never loads OpenImageIO's 260 libraries, whose
-// 0.13 s of CPU a two-thread render used to lose while it ran (third_party_notes/libpng.md). The
+// 0.13 s of CPU a two-thread render would lose while it runs (third_party_notes/libpng.md). The
 // file is what OpenImageIO 2.4's PNG writer made of the same image: 8-bit RGB through the display
 // transform, the sRGB chunk (with gAMA and cHRM) for an sRGB display, a zero oFFs, DateTime as
 // tIME and every other entry of the metadata as a tEXt chunk (ImageDescription as Description),

@@ -17,7 +17,7 @@ struct RecordHeader {
   std::uint32_t channel_count;
   std::uint64_t index;
   std::int32_t x0, y0, x1, y1;
-  std::uint64_t camera, shadow, reflection, refraction;
+  RayCounts rays;  // by kind, in RayKind order (ray_counts.h)
   std::uint64_t nan_samples;
   std::uint32_t flags;  // kCumulative
   std::uint32_t reserved;
@@ -47,10 +47,7 @@ std::vector<std::byte> encode_tile(const TileResult& tile, int channel_count) {
                             tile.region.y0,
                             tile.region.x1,
                             tile.region.y1,
-                            tile.rays.camera,
-                            tile.rays.shadow,
-                            tile.rays.reflection,
-                            tile.rays.refraction,
+                            tile.rays,
                             tile.nan_samples,
                             tile.cumulative ? kCumulative : 0u,
                             0u};
@@ -85,7 +82,7 @@ std::optional<TileResult> decode_tile(std::span<const std::byte> record, const T
   TileResult tile;
   tile.index = static_cast<std::size_t>(h.index);
   tile.region = {h.x0, h.y0, h.x1, h.y1};
-  tile.rays = {h.camera, h.shadow, h.reflection, h.refraction};
+  tile.rays = h.rays;
   tile.nan_samples = h.nan_samples;
   tile.cumulative = (h.flags & kCumulative) != 0;
   tile.pixels.resize(tile.region.pixel_count() * static_cast<std::size_t>(channel_count));

@@ -232,7 +232,7 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
     path.medium = PathWorkspace::kOutside;
     path.group = 0;
   }
-  counts.camera += camera_rays.size();
+  counts[RayKind::kCamera] += camera_rays.size();
   PathTracer tracer(scene, lights, results, ws, textures);
   for (int generation = 0; !ws.paths.empty(); ++generation) {
     ws.hits.resize(ws.rays.size());
@@ -251,10 +251,10 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
     ws.occluded.resize(ws.shadow_rays.size());
     occluded_with_shadow_linking(backend, scene.links, ws.shadow_rays, ws.shadow_lights, ws.occluded,
                                  RayCoherence::kIncoherent);
-    counts.shadow += ws.shadow_rays.size();
+    counts[RayKind::kShadow] += ws.shadow_rays.size();
     for (std::size_t i = 0; i < ws.shadow_queries.size(); ++i)
       if (!ws.occluded[i]) results[ws.shadow_queries[i].sample].radiance += ws.shadow_queries[i].contribution;
-    for (const Path& next : ws.next_paths) (next.transmitted ? counts.refraction : counts.reflection) += 1;
+    for (const Path& next : ws.next_paths) counts[next.transmitted ? RayKind::kRefraction : RayKind::kReflection] += 1;
     std::swap(ws.paths, ws.next_paths);
     std::swap(ws.rays, ws.next_rays);
   }

@@ -309,7 +309,7 @@ void shade_batch(const RenderScene& scene, const Backend& backend, const Stratif
     ws.current.tasks.push_back({i, Color(1.0f)});
   }
   ws.current.rays.assign(camera_rays.begin(), camera_rays.end());
-  counts.camera += camera_rays.size();
+  counts[RayKind::kCamera] += camera_rays.size();
 
   for (int depth = 0; !ws.current.rays.empty(); ++depth) {
     ws.hits.resize(ws.current.rays.size());
@@ -319,10 +319,10 @@ void shade_batch(const RenderScene& scene, const Backend& backend, const Stratif
     ws.occluded.resize(ws.shadow_rays.size());
     occluded_with_shadow_linking(backend, scene.links, ws.shadow_rays, ws.shadow_lights, ws.occluded,
                                  depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
-    counts.shadow += ws.shadow_rays.size();
+    counts[RayKind::kShadow] += ws.shadow_rays.size();
 
     light_surfaces(scene, ws.current, depth, results, ws);
-    for (const Workspace::RayTask& task : ws.next.tasks) (task.refracted ? counts.refraction : counts.reflection) += 1;
+    for (const Workspace::RayTask& task : ws.next.tasks) counts[task.refracted ? RayKind::kRefraction : RayKind::kReflection] += 1;
     std::swap(ws.current, ws.next);
   }
 }

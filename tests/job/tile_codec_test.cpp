@@ -35,10 +35,22 @@ TEST(TileCodec, RoundTripsEveryBit) {
     EXPECT_EQ(back->index, index);
     EXPECT_EQ(back->region.x1, tile.region.x1);
     EXPECT_EQ(back->region.y1, tile.region.y1);
-    EXPECT_EQ(back->rays.refraction, 44u);
+    EXPECT_EQ(back->rays[RayKind::kRefraction], 44u);
     EXPECT_EQ(back->nan_samples, 5u);
     ASSERT_EQ(back->pixels.size(), tile.pixels.size());
     EXPECT_EQ(std::memcmp(back->pixels.data(), tile.pixels.data(), tile.pixels.size() * sizeof(float)), 0);
+  }
+}
+
+// Journals and a job's messages hold records in this layout: the ray counts at bytes 32 to 63 of
+// the header, after the region, camera, shadow, reflection and refraction, 64 bits each.
+TEST(TileCodec, TheRayCountsLieAfterTheRegionInKindOrder) {
+  const TileGrid grid({0, 0, 70, 45}, 16);
+  const std::vector<std::byte> bytes = encode_tile(sample_tile(grid, 0, 5), 5);
+  for (std::size_t k = 0; k < kRayKindCount; ++k) {
+    std::uint64_t count = 0;
+    std::memcpy(&count, bytes.data() + 32 + 8 * k, sizeof count);
+    EXPECT_EQ(count, 11u * (k + 1)) << ray_kind_name(kRayKinds[k]);
   }
 }
 

@@ -25,7 +25,7 @@ TileResult tile_of(const TileGrid& grid, std::size_t index) {
   TileResult tile;
   tile.index = index;
   tile.region = grid.tile(index);
-  tile.rays.camera = index + 1;
+  tile.rays[RayKind::kCamera] = index + 1;
   tile.pixels.assign(tile.region.pixel_count() * kChannels, 0.25f * float(index));
   return tile;
 }
@@ -74,7 +74,7 @@ TEST(TileJournal, AppendedTilesFromSeveralThreadsAreReadBack) {
   for (const TileResult& tile : contents.tiles) {
     seen[tile.index] = true;
     EXPECT_EQ(tile.pixels, tile_of(grid, tile.index).pixels);
-    EXPECT_EQ(tile.rays.camera, tile.index + 1);
+    EXPECT_EQ(tile.rays[RayKind::kCamera], tile.index + 1);
   }
   for (bool s : seen) EXPECT_TRUE(s);
 }

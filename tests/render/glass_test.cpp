@@ -46,7 +46,7 @@ TEST(Glass, AClearSphereUnderAUniformSkyNeitherGainsNorLosesEnergy) {
         const Color c = pixel(result, x, y);
         ASSERT_NEAR(c.x, 0.5f, 0.5f * 0.01f) << x << "," << y;
       }
-    EXPECT_GT(result.rays.refraction, 0u);
+    EXPECT_GT(result.rays[RayKind::kRefraction], 0u);
   }
 }
 
@@ -69,7 +69,7 @@ TEST(Glass, AbsorptionFollowsBeerLambertAlongThePathInside) {
 
 TEST(Glass, OpaqueScenesTraceNoRefractionRays) {
   const RenderResult result = render_with(BackendKind::kNative, sphere_under_sky("{color: [0.5, 0.5, 0.5]}"));
-  EXPECT_EQ(result.rays.refraction, 0u);
+  EXPECT_EQ(result.rays[RayKind::kRefraction], 0u);
 }
 
 TEST(Glass, BadIndicesAndAbsorptionWithoutGlassAreInputErrors) {

@@ -65,9 +65,9 @@ TEST(Renderer, ImageIsIndependentOfThreadsAndTiles) {
   EXPECT_TRUE(bit_identical(one.image, one_tile.image));
   EXPECT_EQ(one_tile.tiles_total, 1u);
   EXPECT_EQ(one.rays.total(), two.rays.total());
-  EXPECT_EQ(one.rays.camera, 48u * 32u * 4u);
-  EXPECT_GT(one.rays.shadow, 0u);
-  EXPECT_GT(one.rays.reflection, 0u);
+  EXPECT_EQ(one.rays[RayKind::kCamera], 48u * 32u * 4u);
+  EXPECT_GT(one.rays[RayKind::kShadow], 0u);
+  EXPECT_GT(one.rays[RayKind::kReflection], 0u);
   EXPECT_TRUE(one.complete());
 }
 

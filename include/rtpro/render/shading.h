@@ -1,5 +1,5 @@
 #pragma once
-// The shading model (the seed's, completed): ambient·C, then per unshadowed light
+// The Whitted shading model: ambient·C, then per unshadowed light
 // C⊙L·max(0,N·L) diffuse plus specular·L·max(0,R·L)^shininess Phong, then the mirror reflection
 // traced up to the maximum depth, weighted by the material's reflectivity.
 //
@@ -16,6 +16,7 @@
 #include "rtpro/core/ray.h"
 #include "rtpro/image/texture_lookup.h"
 #include "rtpro/render/environment_light.h"
+#include "rtpro/render/ray_counts.h"
 #include "rtpro/render/sampler.h"
 #include "rtpro/render/surface.h"
 #include "rtpro/scene/render_scene.h"
@@ -25,21 +26,6 @@
 #include <vector>
 
 namespace rtpro {
-
-struct RayCounts {
-  std::uint64_t camera = 0;
-  std::uint64_t shadow = 0;
-  std::uint64_t reflection = 0;
-  std::uint64_t refraction = 0;
-  std::uint64_t total() const { return camera + shadow + reflection + refraction; }
-  RayCounts& operator+=(const RayCounts& o) {
-    camera += o.camera;
-    shadow += o.shadow;
-    reflection += o.reflection;
-    refraction += o.refraction;
-    return *this;
-  }
-};
 
 // What the camera ray itself hit: the sources of the AOV passes.
 struct PrimaryHit {

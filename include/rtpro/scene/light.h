@@ -11,7 +11,7 @@ namespace rtpro {
 
 struct PointLight {
   Vec3 position;
-  Color radiance;  // colour × intensity; no falloff (the seed's model)
+  Color radiance;  // colour × intensity; `whitted` shades it without distance falloff, `path` over d²
 };
 
 // A point light whose intensity falls off away from its axis, as pbrt-v4's SpotLight: full within

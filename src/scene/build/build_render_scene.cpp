@@ -146,7 +146,7 @@ class RenderSceneBuilder {
 
     check_instance_count();
     prototype_of_object_.assign(description_.objects.size(), std::nullopt);
-    add_own_shapes(description_.world, scene_.top, &top_where_);
+    add_own_shapes(description_.world, scene_.top, &top_origins_);
     const bool world_spheres = !description_.world.spheres.empty();
     linking_of_object_.assign(world_spheres ? 1 : 0, kNoLinking);
     for (const MeshDesc& mesh : description_.world.meshes) linking_of_object_.push_back(mesh.linking);
@@ -159,7 +159,7 @@ class RenderSceneBuilder {
       linking_of_object_.resize(scene_.top.geometries.size(), instance.linking);
     }
     link_objects(world_spheres);
-    check_traceable_range(scene_, top_where_, description_.camera, description_.lights);
+    check_traceable_range(scene_, top_origins_, description_.camera, description_.lights);
     if (report_) report_->flattened_instances = flattened_;
     return std::move(scene_);
   }
@@ -202,19 +202,19 @@ class RenderSceneBuilder {
   }
 
   // Spheres and meshes that belong to `object` itself (not through its instances). Only the
-  // world's own shapes are top-level geometries that need a location (`where_` is null for
+  // world's own shapes are top-level geometries that need an origin (`origins` is null for
   // prototypes).
-  void add_own_shapes(const ObjectDesc& object, Group& group, std::vector<SourceLocation>* where = nullptr) {
+  void add_own_shapes(const ObjectDesc& object, Group& group, std::vector<GeometryOrigin>* origins = nullptr) {
     if (!object.spheres.empty()) {
       SphereSet set;
       set.spheres.reserve(object.spheres.size());
       for (const SphereDesc& s : object.spheres) set.spheres.push_back({s.center, s.radius, s.material});
       group.geometries.emplace_back(std::move(set));
-      if (where) where->push_back(SourceLocation{description_.file.string()});
+      if (origins) origins->push_back({&scene_file_});
     }
     for (const MeshDesc& mesh : object.meshes) {
       group.geometries.emplace_back(load_mesh(mesh));
-      if (where) where->push_back(mesh.where);
+      if (origins) origins->push_back({&mesh.where});
     }
   }
 
@@ -267,14 +267,14 @@ class RenderSceneBuilder {
     return id;
   }
 
-  void add_instance(std::uint32_t prototype, const Affine& to_world, const SourceLocation& where) {
+  void add_instance(std::uint32_t prototype, const Affine& to_world, const GeometryOrigin& origin) {
     if (++flattened_ > kMaxFlattenedInstances)
-      throw InputError(where, "instancing expands to more than " + std::to_string(kMaxFlattenedInstances) +
-                                  " instances after flattening nested instances");
+      throw geometry_error(origin, "instancing expands to more than " + std::to_string(kMaxFlattenedInstances) +
+                                       " instances after flattening nested instances");
     const auto inverse_transform = inverse(to_world);
-    if (!inverse_transform) throw InputError(where, "instance transform (combined with its parents) is singular or not finite");
+    if (!inverse_transform) throw geometry_error(origin, "instance transform (combined with its parents) is singular or not finite");
     scene_.top.geometries.emplace_back(Instance{prototype, to_world, *inverse_transform});
-    top_where_.push_back(where);
+    top_origins_.push_back(origin);
   }
 
   // A glTF file loaded once per (file, normals, material) however often it is placed: each of its
@@ -326,11 +326,12 @@ class RenderSceneBuilder {
   void place_gltf(const GltfDesc& desc, const Affine& to_world) {
     const PlacedGltf& placed = gltf_prototypes(desc);
     for (const GltfPlacement& p : placed.asset->placements)
-      if (const auto prototype = placed.prototype_of_mesh[p.mesh]) add_instance(*prototype, compose(to_world, p.transform), desc.where);
+      if (const auto prototype = placed.prototype_of_mesh[p.mesh])
+        add_instance(*prototype, compose(to_world, p.transform), {&desc.where, &desc.file, p.node});
   }
 
   void flatten_instance(std::uint32_t object, const Affine& to_world, const SourceLocation& where) {
-    if (const auto prototype = prototype_of(object)) add_instance(*prototype, to_world, where);
+    if (const auto prototype = prototype_of(object)) add_instance(*prototype, to_world, {&where});
     for (const GltfDesc& gltf : description_.objects[object].gltfs) place_gltf(gltf, to_world);
     for (const InstanceDesc& nested : description_.objects[object].instances)
       flatten_instance(nested.object, compose(to_world, nested.transform), nested.where);
@@ -358,7 +359,8 @@ class RenderSceneBuilder {
   std::vector<std::optional<std::uint32_t>> prototype_of_object_;
   std::map<std::tuple<std::filesystem::path, int, std::uint32_t>, PlacedGltf> gltfs_;
   std::size_t flattened_ = 0;
-  std::vector<SourceLocation> top_where_;  // scene-file location of each top-level geometry
+  const SourceLocation scene_file_{description_.file.string()};  // where the world's spheres are
+  std::vector<GeometryOrigin> top_origins_;  // where each top-level geometry came from
   std::vector<std::uint32_t> linking_of_object_;  // per top-level geometry: its world entry's linking
 };
 

@@ -76,7 +76,7 @@ double light_reach(const LightDesc& light) {
 
 }  // namespace
 
-void check_traceable_range(const RenderScene& scene, std::span<const SourceLocation> where, const CameraDesc& camera,
+void check_traceable_range(const RenderScene& scene, std::span<const GeometryOrigin> origins, const CameraDesc& camera,
                            const std::vector<LightDesc>& lights) {
   const std::vector<BBox> prototype_bounds = scene.prototype_bounds();
   const std::string limit = number(kMaxTraceableMagnitude);
@@ -90,7 +90,7 @@ void check_traceable_range(const RenderScene& scene, std::span<const SourceLocat
     const double reach = largest_magnitude(geometry_bounds(scene.top, g, prototype_bounds));
     if (!in_range(reach)) {
       const bool instance = kind_of(geometry) == GeometryKind::kInstance;
-      throw InputError(where[g], std::string(instance ? "this instance places geometry" : "this geometry reaches") +
+      throw geometry_error(origins[g], std::string(instance ? "this instance places geometry" : "this geometry reaches") +
                                      " as far as " + number(reach) + " from the origin; coordinates must stay within ±" +
                                      limit + " (after all transforms) for the ray tracing backends");
     }
@@ -106,7 +106,7 @@ void check_traceable_range(const RenderScene& scene, std::span<const SourceLocat
     const double origin_reach = s.linear * extent + s.translation;
     const double direction_reach = s.linear * direction;
     if (!in_range(origin_reach) || !in_range(direction_reach) || !std::isfinite(s.linear)) {
-      throw InputError(where[g], "this instance's transform (combined with its parents) shrinks its object so far "
+      throw geometry_error(origins[g], "this instance's transform (combined with its parents) shrinks its object so far "
                                  "that rays entering it reach " +
                                      number(std::max(origin_reach, direction_reach)) +
                                      " in object space, beyond the ±" + limit +

@@ -5,7 +5,7 @@
 // its object space. Debian's Embree aborts the process (an assertion) on a ray beyond ~1.8e18 and
 // silently drops primitives beyond it; the native backend would render them. Refusing here, with
 // the scene file's line and column, makes both backends answer the same input error.
-#include "rtpro/core/error.h"
+#include "geometry_origin.h"
 #include "rtpro/scene/description.h"
 #include "rtpro/scene/render_scene.h"
 
@@ -13,8 +13,8 @@
 
 namespace rtpro {
 
-// `where[g]` is the scene-file location of scene.top.geometries[g]. Throws InputError there.
-void check_traceable_range(const RenderScene& scene, std::span<const SourceLocation> where, const CameraDesc& camera,
+// `origins[g]` is where scene.top.geometries[g] came from. Throws InputError there.
+void check_traceable_range(const RenderScene& scene, std::span<const GeometryOrigin> origins, const CameraDesc& camera,
                            const std::vector<LightDesc>& lights);
 
 }  // namespace rtpro

@@ -2,6 +2,8 @@
 
 namespace rtpro {
 
+std::string gltf_node_path(std::uint32_t node) { return "nodes[" + std::to_string(node) + "]"; }
+
 BBox GltfAsset::bounds() const {
   std::vector<BBox> mesh_bounds;
   mesh_bounds.reserve(meshes.size());

@@ -15,13 +15,19 @@
 
 namespace rtpro {
 
+// The JSON path of nodes[node], which errors about what the node places name.
+std::string gltf_node_path(std::uint32_t node);
+
 // A node that draws a mesh: meshes[mesh] placed by `transform` (object to the glTF's world).
 struct GltfPlacement {
   std::uint32_t mesh;
+  std::uint32_t node;  // the index of the node in nodes[]
   Affine transform;
 };
 
 struct GltfCamera {
+  std::uint32_t node;    // nodes[node] places cameras[camera]
+  std::uint32_t camera;
   Vec3 position;
   Vec3 forward;  // the node's -z
   Vec3 up;       // the node's +y
@@ -32,6 +38,8 @@ struct GltfCamera {
 struct GltfLight {
   enum class Kind : std::uint8_t { kPoint, kDirectional, kSpot };
   Kind kind;
+  std::uint32_t node;   // nodes[node] places extensions.KHR_lights_punctual.lights[light]
+  std::uint32_t light;
   Vec3 position;   // point and spot
   Vec3 direction;  // directional and spot: the direction light travels in (the node's -z)
   Color color;

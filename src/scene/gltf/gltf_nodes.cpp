@@ -19,7 +19,7 @@ constexpr double kMaxCameraAspect = 16.0;
 // exporters (Blender's π/2 as a float is 4e-8 above it).
 constexpr double kConeAngleSlack = 1e-6;
 
-std::string node_path(int node) { return "nodes[" + std::to_string(node) + "]"; }
+std::string node_path(int node) { return gltf_node_path(std::uint32_t(node)); }
 
 bool all_finite(const std::vector<double>& values) {
   return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v) && std::fabs(v) <= 1e9; });
@@ -188,15 +188,16 @@ class NodeWalker {
     const bool invertible = inverse(world).has_value();
     if (node.mesh >= 0) {
       if (std::size_t(node.mesh) >= model_.meshes.size()) reader_.fail(path + ".mesh", "mesh " + std::to_string(node.mesh) + " does not exist");
-      if (invertible) asset_.placements.push_back({std::uint32_t(node.mesh), world});
+      if (invertible) asset_.placements.push_back({std::uint32_t(node.mesh), std::uint32_t(index), world});
       else ++singular_;
     }
-    if (node.camera >= 0) add_camera(node, path, world);
+    if (node.camera >= 0) add_camera(node, index, world);
     const int light = light_of(node);
-    if (light != -1) add_light(light, path, world);
+    if (light != -1) add_light(light, index, world);
   }
 
-  void add_camera(const tinygltf::Node& node, const std::string& path, const Affine& world) {
+  void add_camera(const tinygltf::Node& node, int index, const Affine& world) {
+    const std::string path = node_path(index);
     if (std::size_t(node.camera) >= model_.cameras.size()) reader_.fail(path + ".camera", "camera " + std::to_string(node.camera) + " does not exist");
     const tinygltf::Camera& camera = model_.cameras[std::size_t(node.camera)];
     if (camera.type != "perspective") {
@@ -210,8 +211,8 @@ class NodeWalker {
       asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) + "]: unusable field of view or placement; skipped");
       return;
     }
-    // The image is 640 pixels wide and as high as the aspect ratio makes it: 0.0011 made it 65,536
-    // high. Ratios beyond 1:16 are clamped (with a warning), an image at most 10,240 high.
+    // The image is 640 pixels wide and as high as the aspect ratio makes it (0.0011 would make it
+    // 65,536 high): ratios beyond 1:16 are clamped (with a warning), an image at most 10,240 high.
     double aspect = camera.perspective.aspectRatio;
     if (!std::isfinite(aspect) || aspect < 0.0) aspect = 0.0;  // none: the default size
     if (aspect > 0.0 && (aspect < kMinCameraAspect || aspect > kMaxCameraAspect)) {
@@ -220,14 +221,17 @@ class NodeWalker {
                                       std::to_string(aspect) + " is outside 1/16..16; " + std::to_string(clamped) + " is used");
       aspect = clamped;
     }
-    asset_.cameras.push_back({world.apply_point(Vec3(0, 0, 0)), normalize(forward), normalize(up), float(yfov), float(aspect)});
+    asset_.cameras.push_back({std::uint32_t(index), std::uint32_t(node.camera), world.apply_point(Vec3(0, 0, 0)), normalize(forward),
+                              normalize(up), float(yfov), float(aspect)});
   }
 
-  void add_light(int index, const std::string& path, const Affine& world) {
-    const std::string where = path + ".extensions.KHR_lights_punctual.light";
+  void add_light(int index, int node, const Affine& world) {
+    const std::string where = node_path(node) + ".extensions.KHR_lights_punctual.light";
     if (index < 0 || std::size_t(index) >= model_.lights.size()) reader_.fail(where, "light " + std::to_string(index) + " does not exist");
     const tinygltf::Light& light = model_.lights[std::size_t(index)];
     GltfLight out{};
+    out.node = std::uint32_t(node);
+    out.light = std::uint32_t(index);
     if (light.type == "point") out.kind = GltfLight::Kind::kPoint;
     else if (light.type == "directional") out.kind = GltfLight::Kind::kDirectional;
     else if (light.type == "spot") out.kind = GltfLight::Kind::kSpot;

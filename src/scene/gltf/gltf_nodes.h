@@ -9,7 +9,7 @@
 //   as a root, no cycle (`nodes[2].children[0]: node 0 is its own ancestor`), at most
 //   kMaxGltfNodeDepth levels. Checked with an explicit stack, so a hostile file cannot overflow
 //   the C++ stack either.
-// - A node whose world transform is singular (scale 0, used to hide parts) places nothing; one
+// - A node whose world transform is singular (scale 0, which hides parts) places nothing; one
 //   warning counts them.
 #include "gltf_asset.h"
 #include "gltf_accessor.h"

@@ -19,7 +19,7 @@ namespace {
 
 // What substitution may produce: one value at most the longest line a scene file may hold, and all
 // substituted text together at most a scene file's size. `-D v=<100 KB>` used 10,000 times in a
-// line of `$v$v$v...` made gigabytes before this was counted; real scenes substitute kilobytes.
+// line of `$v$v$v...` would make gigabytes; real scenes substitute kilobytes.
 constexpr std::size_t kMaxSubstitutedValueBytes = kMaxYamlLineBytes;
 constexpr std::uint64_t kMaxSubstitutedTotalBytes = std::uint64_t{64} << 20;
 
