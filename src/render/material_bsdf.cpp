@@ -96,20 +96,13 @@ struct ToBsdf {
   }
 };
 
-// Whether the BSDF tells the inside from the outside (it transmits): then its frame's +z is the
-// outside rather than the side the ray came from.
-struct NeedsOutwardFrame {
-  bool operator()(const DiffuseBsdf&) const { return false; }
-  bool operator()(const ConductorBsdf&) const { return false; }
-  bool operator()(const DielectricBsdf&) const { return true; }
-  bool operator()(const PrincipledBsdf& p) const { return p.needs_outward_frame(); }
-};
-
 }  // namespace
 
 SurfaceBsdf material_bsdf(const Material& material, const SurfacePoint& point, const TextureLookup* textures) {
   ToBsdf::Result made = std::visit(ToBsdf{material, point, textures}, material.model);
-  const bool outward = std::visit(NeedsOutwardFrame{}, made.bsdf);
+  // Whether the BSDF tells the inside from the outside (it transmits): then its frame's +z is the
+  // outside rather than the side the ray came from.
+  const bool outward = std::visit([](const auto& b) { return b.needs_outward_frame(); }, made.bsdf);
   const Vec3 normal = !outward || point.front_face ? made.normal : -made.normal;
   return {std::move(made.bsdf), ShadingFrame::from_normal(normal), made.albedo};
 }

@@ -13,6 +13,10 @@
 
 namespace rtpro {
 
+// The largest coordinate's magnitude; infinity when one is not finite (what each light kind's
+// reach_from_origin measures with).
+double largest_magnitude(const Vec3& v);
+
 // `where[g]` is the scene-file location of scene.top.geometries[g]. Throws InputError there.
 void check_traceable_range(const RenderScene& scene, std::span<const SourceLocation> where, const CameraDesc& camera,
                            const std::vector<LightDesc>& lights);
