@@ -9,7 +9,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <variant>
 
 namespace rtpro {
 
@@ -153,18 +152,17 @@ std::size_t NativeTraversal::memory_bytes() const {
 void NativeTraversal::closest_in_group(const Group& group, const Bvh& bvh, const Ray& ray, std::uint32_t inst, Hit& best,
                                        float& best_t) const {
   traverse(bvh, ray, best_t, [&](const PrimitiveRef& ref) {
-    std::visit(Overloaded{[&](const Instance& instance) {
-                            const Ray local = to_object_space(instance, ray, best_t);
-                            if (is_traceable(local))
-                              closest_in_group(scene_.prototypes[instance.prototype],
-                                               prototype_bvhs_[instance.prototype], local, ref.geom, best, best_t);
-                          },
-                          [&](const auto& shapes) {
-                            ShapeHit hit;
-                            if (native_hit(shapes, ref.prim, ray, best_t, hit))
-                              offer_hit(hit.t, hit.u, hit.v, inst, ref, best, best_t);
-                          }},
-               group.geometries[ref.geom]);
+    const auto in_instance = [&](const Instance& instance) {
+      const Ray local = to_object_space(instance, ray, best_t);
+      if (is_traceable(local))
+        closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local, ref.geom,
+                         best, best_t);
+    };
+    const auto in_shapes = [&](const auto& shapes) {
+      ShapeHit hit;
+      if (native_hit(shapes, ref.prim, ray, best_t, hit)) offer_hit(hit.t, hit.u, hit.v, inst, ref, best, best_t);
+    };
+    visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     return true;
   });
 }
@@ -173,16 +171,16 @@ bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const Ray
   bool found = false;
   const float tfar = ray.tfar;
   traverse(bvh, ray, tfar, [&](const PrimitiveRef& ref) {
-    found = std::visit(Overloaded{[&](const Instance& instance) {
-                                    const Ray local = to_object_space(instance, ray, tfar);
-                                    return is_traceable(local) && any_in_group(scene_.prototypes[instance.prototype],
-                                                                               prototype_bvhs_[instance.prototype], local);
-                                  },
-                                  [&](const auto& shapes) {
-                                    ShapeHit hit;
-                                    return native_hit(shapes, ref.prim, ray, tfar, hit) && hit.t < tfar;
-                                  }},
-                       group.geometries[ref.geom]);
+    const auto in_instance = [&](const Instance& instance) {
+      const Ray local = to_object_space(instance, ray, tfar);
+      return is_traceable(local) &&
+             any_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local);
+    };
+    const auto in_shapes = [&](const auto& shapes) {
+      ShapeHit hit;
+      return native_hit(shapes, ref.prim, ray, tfar, hit) && hit.t < tfar;
+    };
+    found = visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     return !found;
   });
   return found;
@@ -191,22 +189,21 @@ bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const Ray
 void NativeTraversal::closest_in_packet(RayPacket& packet, std::uint32_t active, Hit* best) const {
   const Group& group = scene_.top;
   traverse_packet(top_bvh_, packet, active, [&](const PrimitiveRef& ref, std::uint32_t lanes) {
-    std::visit(Overloaded{[&](const Instance& instance) {
-                            for (; lanes != 0; lanes &= lanes - 1) {
-                              const auto k = static_cast<unsigned>(std::countr_zero(lanes));
-                              const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
-                              if (is_traceable(local))
-                                closest_in_group(scene_.prototypes[instance.prototype],
-                                                 prototype_bvhs_[instance.prototype], local, ref.geom, best[k],
-                                                 packet.tmax[k]);
-                            }
-                          },
-                          [&](const auto& shapes) {
-                            native_hit_lanes(shapes, ref.prim, packet, lanes, [&](unsigned k, float t, float u, float v) {
-                              offer_hit(t, u, v, kInvalidId, ref, best[k], packet.tmax[k]);
-                            });
-                          }},
-               group.geometries[ref.geom]);
+    const auto in_instance = [&](const Instance& instance) {
+      for (; lanes != 0; lanes &= lanes - 1) {
+        const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+        const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
+        if (is_traceable(local))
+          closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local, ref.geom,
+                           best[k], packet.tmax[k]);
+      }
+    };
+    const auto in_shapes = [&](const auto& shapes) {
+      native_hit_lanes(shapes, ref.prim, packet, lanes, [&](unsigned k, float t, float u, float v) {
+        offer_hit(t, u, v, kInvalidId, ref, best[k], packet.tmax[k]);
+      });
+    };
+    visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     return active;
   });
 }
@@ -216,21 +213,21 @@ std::uint32_t NativeTraversal::any_in_packet(const RayPacket& packet, std::uint3
   const Group& group = scene_.top;
   std::uint32_t blocked = 0;
   traverse_packet(top_bvh_, packet, active, [&](const PrimitiveRef& ref, std::uint32_t lanes) {
-    std::visit(Overloaded{[&](const Instance& instance) {
-                            for (; lanes != 0; lanes &= lanes - 1) {
-                              const auto k = static_cast<unsigned>(std::countr_zero(lanes));
-                              const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
-                              if (is_traceable(local) && any_in_group(scene_.prototypes[instance.prototype],
-                                                                      prototype_bvhs_[instance.prototype], local))
-                                blocked |= 1u << k;
-                            }
-                          },
-                          [&](const auto& shapes) {
-                            native_hit_lanes(shapes, ref.prim, packet, lanes, [&](unsigned k, float t, float, float) {
-                              if (t < packet.tmax[k]) blocked |= 1u << k;
-                            });
-                          }},
-               group.geometries[ref.geom]);
+    const auto in_instance = [&](const Instance& instance) {
+      for (; lanes != 0; lanes &= lanes - 1) {
+        const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+        const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
+        if (is_traceable(local) &&
+            any_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local))
+          blocked |= 1u << k;
+      }
+    };
+    const auto in_shapes = [&](const auto& shapes) {
+      native_hit_lanes(shapes, ref.prim, packet, lanes, [&](unsigned k, float t, float, float) {
+        if (t < packet.tmax[k]) blocked |= 1u << k;
+      });
+    };
+    visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     return active & ~blocked;
   });
   return blocked;
