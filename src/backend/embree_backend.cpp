@@ -1,6 +1,7 @@
 // The Embree backend: the same answers as the native backend (bit-identical for top-level
 // spheres, within float tolerance for triangles and instances), from Embree 3's BVHs.
 #include "embree_backend.h"
+#include "backend_shapes.h"
 
 #include "embree_device.h"
 #include "embree_ray_batches.h"
@@ -8,11 +9,13 @@
 #include "embree_spheres.h"
 #include "ray_gate.h"
 #include "sphere_lanes.h"
+#include "rtpro/core/overloaded.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <chrono>
+#include <variant>
 
 namespace rtpro {
 
@@ -54,13 +57,13 @@ bool from_embree(const RTCRayHit& in, Hit& hit) {
   return true;
 }
 
+// Shapes whose hits Embree's own kernels decide (triangles); an instance's prototype is asked itself.
 bool has_triangles(const Group& group) {
   for (const Geometry& geometry : group.geometries) {
-    switch (kind_of(geometry)) {
-      case GeometryKind::kTriangles: return true;
-      case GeometryKind::kSpheres:
-      case GeometryKind::kInstance: break;
-    }
+    const bool by_embree = std::visit(Overloaded{[](const Instance&) { return false; },
+                                                 [](const auto& shapes) { return !hits_decided_by_rtpro(shapes); }},
+                                      geometry);
+    if (by_embree) return true;
   }
   return false;
 }

@@ -1,11 +1,14 @@
 #include "embree_scene_builder.h"
 
-#include "embree_spheres.h"
+#include "backend_shapes.h"
 #include "rtpro/core/error.h"
+#include "rtpro/core/overloaded.h"
 #include "rtpro/core/ray.h"
 
 #include <cmath>
+#include <optional>
 #include <string>
+#include <variant>
 
 namespace rtpro {
 
@@ -28,25 +31,6 @@ std::string group_name(int group) {
                      group_name(group) + " " + problem);
 }
 
-void validate_spheres(const SphereSet& set, int group, std::uint32_t geometry) {
-  for (std::uint32_t i = 0; i < set.spheres.size(); ++i) {
-    const Sphere& s = set.spheres[i];
-    if (!(std::isfinite(s.radius) && s.radius >= 0.0f) || !in_embree_range(set.sphere_bounds(i)))
-      refuse(group, geometry, "has sphere " + std::to_string(i) + " outside Embree's coordinate range");
-  }
-}
-
-void validate_mesh(const TriangleMesh& mesh, int group, std::uint32_t geometry) {
-  for (const PaddedVertex& v : mesh.vertices) {
-    if (!in_embree_range(v.position())) refuse(group, geometry, "has a vertex outside Embree's coordinate range");
-  }
-  const std::size_t vertex_count = mesh.vertices.size();
-  for (const TriangleIndices& t : mesh.triangles) {
-    if (t.v0 >= vertex_count || t.v1 >= vertex_count || t.v2 >= vertex_count)
-      refuse(group, geometry, "has a triangle index past its " + std::to_string(vertex_count) + " vertices");
-  }
-}
-
 void validate_instance(const Instance& instance, std::span<const BBox> prototype_bounds, std::uint32_t geometry) {
   if (instance.prototype >= prototype_bounds.size()) refuse(-1, geometry, "instances a missing prototype");
   const BBox world = instance.object_to_world.apply(prototype_bounds[instance.prototype]);
@@ -57,30 +41,16 @@ void validate_instance(const Instance& instance, std::span<const BBox> prototype
 void validate_group(const Group& group, int group_index, std::span<const BBox> prototype_bounds) {
   for (std::uint32_t g = 0; g < group.geometries.size(); ++g) {
     const Geometry& geometry = group.geometries[g];
-    switch (kind_of(geometry)) {
-      case GeometryKind::kSpheres: validate_spheres(std::get<SphereSet>(geometry), group_index, g); break;
-      case GeometryKind::kTriangles: validate_mesh(std::get<TriangleMesh>(geometry), group_index, g); break;
-      case GeometryKind::kInstance:
-        if (group_index >= 0) refuse(group_index, g, "is an instance inside a prototype (one level only)");
-        validate_instance(std::get<Instance>(geometry), prototype_bounds, g);
-        break;
-    }
+    std::visit(Overloaded{[&](const Instance& instance) {
+                            if (group_index >= 0) refuse(group_index, g, "is an instance inside a prototype (one level only)");
+                            validate_instance(instance, prototype_bounds, g);
+                          },
+                          [&](const auto& shapes) {
+                            if (const std::optional<std::string> problem = embree_refusal(shapes))
+                              refuse(group_index, g, *problem);
+                          }},
+               geometry);
   }
-}
-
-// Shares the mesh arrays with Embree: 16-byte vertex stride (x, y, z, pad) keeps Embree's rule that
-// vertex buffers are readable 16 bytes past the last vertex.
-EmbreeGeometry new_triangle_geometry(RTCDevice device, const TriangleMesh& mesh, RTCBuildQuality quality) {
-  EmbreeGeometry geometry(rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE));
-  if (!geometry) return geometry;
-  RTCGeometry g = geometry.get();
-  rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh.vertices.data(), 0,
-                             sizeof(PaddedVertex), mesh.vertices.size());
-  rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.triangles.data(), 0,
-                             sizeof(TriangleIndices), mesh.triangles.size());
-  rtcSetGeometryBuildQuality(g, quality);
-  rtcCommitGeometry(g);
-  return geometry;
 }
 
 EmbreeGeometry new_instance_geometry(RTCDevice device, const Instance& instance, RTCScene prototype) {
@@ -95,13 +65,11 @@ EmbreeGeometry new_instance_geometry(RTCDevice device, const Instance& instance,
   return geometry;
 }
 
+// A set of shapes without primitives gives Embree nothing to hit; an instance is always attached.
 bool is_empty(const Geometry& geometry) {
-  switch (kind_of(geometry)) {
-    case GeometryKind::kSpheres: return std::get<SphereSet>(geometry).spheres.empty();
-    case GeometryKind::kTriangles: return std::get<TriangleMesh>(geometry).triangles.empty();
-    case GeometryKind::kInstance: return false;
-  }
-  return false;
+  return std::visit(Overloaded{[](const Instance&) { return false; },
+                               [](const auto& shapes) { return primitive_count_of(shapes) == 0; }},
+                    geometry);
 }
 
 EmbreeScene build_group(EmbreeDevice::Session& session, const Group& group, int group_index,
@@ -117,19 +85,14 @@ EmbreeScene build_group(EmbreeDevice::Session& session, const Group& group, int 
     const Geometry& geometry = group.geometries[g];
     if (is_empty(geometry)) continue;  // nothing to hit; ids need not be contiguous
     EmbreeGeometry embree_geometry;
-    switch (kind_of(geometry)) {
-      case GeometryKind::kSpheres:
-        embree_geometry = new_embree_sphere_geometry(device, std::get<SphereSet>(geometry), settings.quality);
-        break;
-      case GeometryKind::kTriangles:
-        embree_geometry = new_triangle_geometry(device, std::get<TriangleMesh>(geometry), settings.quality);
-        break;
-      case GeometryKind::kInstance: {
-        const Instance& instance = std::get<Instance>(geometry);
-        embree_geometry = new_instance_geometry(device, instance, prototypes[instance.prototype].get());
-        break;
-      }
-    }
+    std::visit(Overloaded{[&](const Instance& instance) {
+                            embree_geometry =
+                                new_instance_geometry(device, instance, prototypes[instance.prototype].get());
+                          },
+                          [&](const auto& shapes) {
+                            embree_geometry = new_embree_geometry(device, shapes, settings.quality);
+                          }},
+               geometry);
     session.check("creation of geometry " + std::to_string(g) + " of " + where);
     rtcAttachGeometryByID(scene.get(), embree_geometry.get(), g);
     session.check("attaching geometry " + std::to_string(g) + " of " + where);

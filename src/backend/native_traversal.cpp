@@ -1,8 +1,7 @@
 #include "native_traversal.h"
 
-#include "sphere_lanes.h"
-#include "rtpro/geometry/sphere_intersect.h"
-#include "rtpro/geometry/triangle_intersect.h"
+#include "backend_shapes.h"
+#include "rtpro/core/overloaded.h"
 
 #include <immintrin.h>
 
@@ -153,33 +152,17 @@ std::size_t NativeTraversal::memory_bytes() const {
 void NativeTraversal::closest_in_group(const Group& group, const Bvh& bvh, const Ray& ray, std::uint32_t inst, Hit& best,
                                        float& best_t) const {
   traverse(bvh, ray, best_t, [&](const PrimitiveRef& ref) {
-    const Geometry& geometry = group.geometries[ref.geom];
-    switch (kind_of(geometry)) {
-      case GeometryKind::kSpheres: {
-        const Sphere& s = std::get<SphereSet>(geometry).spheres[ref.prim];
-        float t;
-        if (intersect_sphere(s.center, s.radius, ray.org, ray.dir, ray.tnear, best_t, t))
-          offer_hit(t, 0.0f, 0.0f, inst, ref, best, best_t);
-        break;
-      }
-      case GeometryKind::kTriangles: {
-        const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
-        const TriangleIndices& tri = mesh.triangles[ref.prim];
-        TriangleHit th;
-        if (intersect_triangle(mesh.vertex(tri.v0), mesh.vertex(tri.v1), mesh.vertex(tri.v2), ray.org, ray.dir,
-                               ray.tnear, best_t, th))
-          offer_hit(th.t, th.u, th.v, inst, ref, best, best_t);
-        break;
-      }
-      case GeometryKind::kInstance: {
-        const Instance& instance = std::get<Instance>(geometry);
-        const Ray local = to_object_space(instance, ray, best_t);
-        if (is_traceable(local))
-          closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local,
-                           ref.geom, best, best_t);
-        break;
-      }
-    }
+    const auto in_instance = [&](const Instance& instance) {
+      const Ray local = to_object_space(instance, ray, best_t);
+      if (is_traceable(local))
+        closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local, ref.geom,
+                         best, best_t);
+    };
+    const auto in_shapes = [&](const auto& shapes) {
+      ShapeHit hit;
+      if (native_hit(shapes, ref.prim, ray, best_t, hit)) offer_hit(hit.t, hit.u, hit.v, inst, ref, best, best_t);
+    };
+    visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     return true;
   });
 }
@@ -188,31 +171,16 @@ bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const Ray
   bool found = false;
   const float tfar = ray.tfar;
   traverse(bvh, ray, tfar, [&](const PrimitiveRef& ref) {
-    const Geometry& geometry = group.geometries[ref.geom];
-    switch (kind_of(geometry)) {
-      case GeometryKind::kSpheres: {
-        const Sphere& s = std::get<SphereSet>(geometry).spheres[ref.prim];
-        float t;
-        found = intersect_sphere(s.center, s.radius, ray.org, ray.dir, ray.tnear, tfar, t) && t < tfar;
-        break;
-      }
-      case GeometryKind::kTriangles: {
-        const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
-        const TriangleIndices& tri = mesh.triangles[ref.prim];
-        TriangleHit th;
-        found = intersect_triangle(mesh.vertex(tri.v0), mesh.vertex(tri.v1), mesh.vertex(tri.v2), ray.org, ray.dir,
-                                   ray.tnear, tfar, th) &&
-                th.t < tfar;
-        break;
-      }
-      case GeometryKind::kInstance: {
-        const Instance& instance = std::get<Instance>(geometry);
-        const Ray local = to_object_space(instance, ray, tfar);
-        found = is_traceable(local) && any_in_group(scene_.prototypes[instance.prototype],
-                                                    prototype_bvhs_[instance.prototype], local);
-        break;
-      }
-    }
+    const auto in_instance = [&](const Instance& instance) {
+      const Ray local = to_object_space(instance, ray, tfar);
+      return is_traceable(local) &&
+             any_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local);
+    };
+    const auto in_shapes = [&](const auto& shapes) {
+      ShapeHit hit;
+      return native_hit(shapes, ref.prim, ray, tfar, hit) && hit.t < tfar;
+    };
+    found = visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     return !found;
   });
   return found;
@@ -221,43 +189,21 @@ bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const Ray
 void NativeTraversal::closest_in_packet(RayPacket& packet, std::uint32_t active, Hit* best) const {
   const Group& group = scene_.top;
   traverse_packet(top_bvh_, packet, active, [&](const PrimitiveRef& ref, std::uint32_t lanes) {
-    const Geometry& geometry = group.geometries[ref.geom];
-    switch (kind_of(geometry)) {
-      case GeometryKind::kSpheres: {
-        const Sphere& s = std::get<SphereSet>(geometry).spheres[ref.prim];
-        float t[kPacketSize];
-        for (std::uint32_t hit = intersect_sphere_lanes(s.center, s.radius, packet.lanes(), lanes, t); hit != 0;
-             hit &= hit - 1) {
-          const auto k = static_cast<unsigned>(std::countr_zero(hit));
-          offer_hit(t[k], 0.0f, 0.0f, kInvalidId, ref, best[k], packet.tmax[k]);
-        }
-        break;
+    const auto in_instance = [&](const Instance& instance) {
+      for (; lanes != 0; lanes &= lanes - 1) {
+        const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+        const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
+        if (is_traceable(local))
+          closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local, ref.geom,
+                           best[k], packet.tmax[k]);
       }
-      case GeometryKind::kTriangles: {
-        const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
-        const TriangleIndices& tri = mesh.triangles[ref.prim];
-        for (; lanes != 0; lanes &= lanes - 1) {
-          const auto k = static_cast<unsigned>(std::countr_zero(lanes));
-          const Ray& ray = *packet.rays[k];
-          TriangleHit th;
-          if (intersect_triangle(mesh.vertex(tri.v0), mesh.vertex(tri.v1), mesh.vertex(tri.v2), ray.org, ray.dir,
-                                 ray.tnear, packet.tmax[k], th))
-            offer_hit(th.t, th.u, th.v, kInvalidId, ref, best[k], packet.tmax[k]);
-        }
-        break;
-      }
-      case GeometryKind::kInstance: {
-        const Instance& instance = std::get<Instance>(geometry);
-        for (; lanes != 0; lanes &= lanes - 1) {
-          const auto k = static_cast<unsigned>(std::countr_zero(lanes));
-          const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
-          if (is_traceable(local))
-            closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local,
-                             ref.geom, best[k], packet.tmax[k]);
-        }
-        break;
-      }
-    }
+    };
+    const auto in_shapes = [&](const auto& shapes) {
+      native_hit_lanes(shapes, ref.prim, packet, lanes, [&](unsigned k, float t, float u, float v) {
+        offer_hit(t, u, v, kInvalidId, ref, best[k], packet.tmax[k]);
+      });
+    };
+    visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     return active;
   });
 }
@@ -267,44 +213,21 @@ std::uint32_t NativeTraversal::any_in_packet(const RayPacket& packet, std::uint3
   const Group& group = scene_.top;
   std::uint32_t blocked = 0;
   traverse_packet(top_bvh_, packet, active, [&](const PrimitiveRef& ref, std::uint32_t lanes) {
-    const Geometry& geometry = group.geometries[ref.geom];
-    switch (kind_of(geometry)) {
-      case GeometryKind::kSpheres: {
-        const Sphere& s = std::get<SphereSet>(geometry).spheres[ref.prim];
-        float t[kPacketSize];
-        for (std::uint32_t hit = intersect_sphere_lanes(s.center, s.radius, packet.lanes(), lanes, t); hit != 0;
-             hit &= hit - 1) {
-          const auto k = static_cast<unsigned>(std::countr_zero(hit));
-          if (t[k] < packet.tmax[k]) blocked |= 1u << k;
-        }
-        break;
+    const auto in_instance = [&](const Instance& instance) {
+      for (; lanes != 0; lanes &= lanes - 1) {
+        const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+        const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
+        if (is_traceable(local) &&
+            any_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local))
+          blocked |= 1u << k;
       }
-      case GeometryKind::kTriangles: {
-        const TriangleMesh& mesh = std::get<TriangleMesh>(geometry);
-        const TriangleIndices& tri = mesh.triangles[ref.prim];
-        for (; lanes != 0; lanes &= lanes - 1) {
-          const auto k = static_cast<unsigned>(std::countr_zero(lanes));
-          const Ray& ray = *packet.rays[k];
-          TriangleHit th;
-          if (intersect_triangle(mesh.vertex(tri.v0), mesh.vertex(tri.v1), mesh.vertex(tri.v2), ray.org, ray.dir,
-                                 ray.tnear, packet.tmax[k], th) &&
-              th.t < packet.tmax[k])
-            blocked |= 1u << k;
-        }
-        break;
-      }
-      case GeometryKind::kInstance: {
-        const Instance& instance = std::get<Instance>(geometry);
-        for (; lanes != 0; lanes &= lanes - 1) {
-          const auto k = static_cast<unsigned>(std::countr_zero(lanes));
-          const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
-          if (is_traceable(local) && any_in_group(scene_.prototypes[instance.prototype],
-                                                  prototype_bvhs_[instance.prototype], local))
-            blocked |= 1u << k;
-        }
-        break;
-      }
-    }
+    };
+    const auto in_shapes = [&](const auto& shapes) {
+      native_hit_lanes(shapes, ref.prim, packet, lanes, [&](unsigned k, float t, float, float) {
+        if (t < packet.tmax[k]) blocked |= 1u << k;
+      });
+    };
+    visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     return active & ~blocked;
   });
   return blocked;

@@ -193,6 +193,41 @@ struct Pdf {
   float operator()(const EnvironmentRef& l) const { return l.light->pdf(on_light - from); }
 };
 
+// The lights without geometry that camera and BSDF rays can meet (sphere and quad lights): the
+// backend finds the emissive surfaces, and no ray meets a point, spot or directional light.
+struct MetByRays {
+  bool operator()(const PointLight&) const { return false; }
+  bool operator()(const SpotLight&) const { return false; }
+  bool operator()(const DirectionalLight&) const { return false; }
+  bool operator()(const SphereLight&) const { return true; }
+  bool operator()(const QuadLight&) const { return true; }
+  bool operator()(const EmissiveTriangle&) const { return false; }
+  bool operator()(const EmissiveSphere&) const { return false; }
+  bool operator()(const EnvironmentRef&) const { return false; }
+};
+
+// Where `ray` meets one of those before t_max (`seen`: the radiance it shows there).
+struct Meeting {
+  const Ray& ray;
+  float t_max;
+  Color& seen;
+  std::optional<float> operator()(const PointLight&) const { return std::nullopt; }
+  std::optional<float> operator()(const SpotLight&) const { return std::nullopt; }
+  std::optional<float> operator()(const DirectionalLight&) const { return std::nullopt; }
+  std::optional<float> operator()(const SphereLight& l) const {
+    if (!clearly_outside(l.center, l.radius, ray.org)) return std::nullopt;  // no light inside
+    seen = l.radiance;
+    return hit_light(Light(l), ray, t_max);
+  }
+  std::optional<float> operator()(const QuadLight& l) const {
+    seen = l.radiance;
+    return hit_light(Light(l), ray, t_max);
+  }
+  std::optional<float> operator()(const EmissiveTriangle&) const { return std::nullopt; }
+  std::optional<float> operator()(const EmissiveSphere&) const { return std::nullopt; }
+  std::optional<float> operator()(const EnvironmentRef&) const { return std::nullopt; }
+};
+
 }  // namespace
 
 LightSet::LightSet(const RenderScene& scene, const EnvironmentLight* environment) : environment_(environment) {
@@ -239,8 +274,7 @@ void LightSet::link(const RenderScene& scene, std::span<const float> power,
     for (std::uint32_t i = 0; i < lights_.size(); ++i) {
       if (i < scene.lights.size() && !scene.links.illuminates(g, i)) continue;
       members.push_back(i);
-      if (std::holds_alternative<SphereLight>(lights_[i]) || std::holds_alternative<QuadLight>(lights_[i]))
-        linked.analytic.push_back(i);
+      if (std::visit(MetByRays{}, lights_[i])) linked.analytic.push_back(i);
     }
     linked.picker = LightPicker(scene.render.light_sampler, members, power, bounds);
     linked_of_group_[g] = static_cast<std::uint32_t>(linked_.size());
@@ -362,17 +396,8 @@ std::optional<LightSet::SeenLight> LightSet::nearest_analytic_light(const Ray& r
                                                                     std::uint32_t group) const {
   std::optional<SeenLight> nearest;
   for (const std::uint32_t index : linked(group).analytic) {
-    const PathLight& light = lights_[index];
-    std::optional<float> t;
     Color radiance;
-    if (const auto* sphere = std::get_if<SphereLight>(&light)) {
-      if (!clearly_outside(sphere->center, sphere->radius, ray.org)) continue;  // no light inside
-      t = hit_light(Light(*sphere), ray, nearest ? nearest->t : t_max);
-      radiance = sphere->radiance;
-    } else if (const auto* quad = std::get_if<QuadLight>(&light)) {
-      t = hit_light(Light(*quad), ray, nearest ? nearest->t : t_max);
-      radiance = quad->radiance;
-    }
+    const std::optional<float> t = std::visit(Meeting{ray, nearest ? nearest->t : t_max, radiance}, lights_[index]);
     if (t) nearest = SeenLight{index, *t, radiance};
   }
   return nearest;

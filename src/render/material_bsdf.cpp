@@ -103,21 +103,14 @@ struct ToBsdf {
   }
 };
 
-// Whether the BSDF tells the inside from the outside (it transmits): then its frame's +z is the
-// outside rather than the side the ray came from.
-struct NeedsOutwardFrame {
-  bool operator()(const DiffuseBsdf&) const { return false; }
-  bool operator()(const ConductorBsdf&) const { return false; }
-  bool operator()(const DielectricBsdf&) const { return true; }
-  bool operator()(const PrincipledBsdf& p) const { return p.needs_outward_frame(); }
-};
-
 }  // namespace
 
 void material_bsdf(const Material& material, const SurfacePoint& point, const TextureLookup* textures,
                    SurfaceBsdf& out) {
   const Vec3 normal = std::visit(ToBsdf{material, point, textures, out}, material.model);
-  const bool outward = std::visit(NeedsOutwardFrame{}, out.bsdf);
+  // Whether the BSDF tells the inside from the outside (it transmits): then its frame's +z is the
+  // outside rather than the side the ray came from.
+  const bool outward = std::visit([](const auto& b) { return b.needs_outward_frame(); }, out.bsdf);
   out.frame = ShadingFrame::from_normal(!outward || point.front_face ? normal : -normal);
 }
 

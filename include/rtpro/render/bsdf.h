@@ -1,6 +1,8 @@
 #pragma once
-// The closed set of BSDF kinds the path tracer shades with. Adding a kind to the variant makes
-// every dispatch below fail to compile until it handles the new kind. All directions are in the
+// The closed set of BSDF kinds the path tracer shades with, each a file pair of its own with the
+// members eval, pdf, sample, is_delta and needs_outward_frame: registering a kind is its include
+// and its alternative below, and the dispatch (bsdf.cpp, material_bsdf.cpp) names a member it
+// lacks. All directions are in the
 // local shading frame (render/shading_frame.h), conventions in render/bsdf_sample.h.
 #include "rtpro/render/bsdf_sample.h"
 #include "rtpro/render/conductor_bsdf.h"

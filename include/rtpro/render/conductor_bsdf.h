@@ -24,6 +24,8 @@ class ConductorBsdf {
   float alpha() const { return ggx_.alpha; }
   bool energy_compensation() const { return energy_compensation_; }
   bool is_delta() const { return ggx_.effectively_smooth(); }
+  // It reflects on whichever side wo is: the frame's +z is the side the ray came from.
+  bool needs_outward_frame() const { return false; }
 
   // Reflectance of a perfectly smooth facet lit at cos θ to its normal.
   Color fresnel(float cos_theta) const;

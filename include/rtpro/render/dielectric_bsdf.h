@@ -19,6 +19,8 @@ struct DielectricBsdf {
 
   // η = 1 separates nothing: light passes straight through, whatever α says.
   bool is_delta() const { return eta == 1.0f || GgxDistribution{alpha}.effectively_smooth(); }
+  // It tells the inside (eta) from the outside: the frame's +z must point outwards.
+  bool needs_outward_frame() const { return true; }
   Color eval(const Vec3& wo, const Vec3& wi) const;
   float pdf(const Vec3& wo, const Vec3& wi) const;
   // Reflection when u_lobe < F (of wo to the sampled facet), transmission otherwise, so every

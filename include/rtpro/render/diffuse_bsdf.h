@@ -10,6 +10,8 @@ struct DiffuseBsdf {
   Color reflectance;  // the albedo, each channel in [0, 1]
 
   bool is_delta() const { return false; }
+  // It reflects on whichever side wo is: the frame's +z is the side the ray came from.
+  bool needs_outward_frame() const { return false; }
   Color eval(const Vec3& wo, const Vec3& wi) const;
   float pdf(const Vec3& wo, const Vec3& wi) const;
   // Cosine-weighted on wo's side, so f·cos/pdf is the reflectance itself. u_lobe is unused.

@@ -55,8 +55,14 @@ struct EnvironmentRef {
 
 // Point and spot lights fall off with the square of distance here: `radiance` is read as intensity
 // (W/sr), as every physically based renderer reads it.
-using PathLight = std::variant<PointLight, SpotLight, DirectionalLight, SphereLight, QuadLight, EmissiveTriangle,
-                               EmissiveSphere, EnvironmentRef>;
+// The scene's kinds of light (scene/light.h) first, in their order, then the emitters.
+template <typename Lights, typename... Emitters>
+struct WithEmitters;
+template <typename... Lights, typename... Emitters>
+struct WithEmitters<std::variant<Lights...>, Emitters...> {
+  using type = std::variant<Lights..., Emitters...>;
+};
+using PathLight = WithEmitters<Light, EmissiveTriangle, EmissiveSphere, EnvironmentRef>::type;
 
 struct PathLightSample {
   Vec3 direction;   // unit, from the point towards the light

@@ -7,6 +7,7 @@
 #include "rtpro/core/transform.h"
 #include "rtpro/core/vec3.h"
 #include "rtpro/scene/checker_axes.h"
+#include "rtpro/scene/light.h"  // LightDesc
 #include "rtpro/scene/render_settings.h"
 
 #include <cstdint>
@@ -120,52 +121,6 @@ enum class NormalsMode : std::uint8_t {
   kSmooth,  // area-weighted normals across every shared vertex, the file's ignored
   kFile,    // the file's normals; an input error when it has none
 };
-
-struct PointLightDesc {
-  Vec3 position;
-  Color color{1.0f, 1.0f, 1.0f};
-  float intensity = 1.0f;
-};
-
-// A point light that shines into a cone around its axis (pbrt-v4's spot light): full intensity
-// within inner_angle of the axis, none beyond outer_angle, a smooth step in cos θ between.
-struct SpotLightDesc {
-  Vec3 position;
-  Vec3 direction{0.0f, -1.0f, 0.0f};  // unit: the axis light travels along (`look_at` resolved)
-  Color color{1.0f, 1.0f, 1.0f};
-  float intensity = 1.0f;    // on the axis, as a point light's
-  float inner_angle = 0.0f;  // degrees off the axis, 0 <= inner_angle <= outer_angle
-  float outer_angle = 45.0f;  // degrees, 0 < outer_angle <= 90
-};
-
-struct DirectionalLightDesc {
-  Vec3 direction{0.0f, -1.0f, 0.0f};  // the direction light travels in
-  Color color{1.0f, 1.0f, 1.0f};
-  float intensity = 1.0f;
-};
-
-// Area lights emit `color` × `intensity` as radiance from their surface, falling off with distance
-// as a real light does; each shading point sends samples × samples stratified shadow rays to one.
-struct SphereLightDesc {
-  Vec3 center;
-  float radius = 1.0f;
-  Color color{1.0f, 1.0f, 1.0f};
-  float intensity = 1.0f;
-  int samples = 4;
-};
-
-// A parallelogram centred on `position` with full edges `edge1` and `edge2`, emitting on the side
-// of edge1 × edge2 only.
-struct QuadLightDesc {
-  Vec3 position;
-  Vec3 edge1{1.0f, 0.0f, 0.0f};
-  Vec3 edge2{0.0f, 0.0f, 1.0f};
-  Color color{1.0f, 1.0f, 1.0f};
-  float intensity = 1.0f;
-  int samples = 4;
-};
-
-using LightDesc = std::variant<PointLightDesc, SpotLightDesc, DirectionalLightDesc, SphereLightDesc, QuadLightDesc>;
 
 inline constexpr std::uint32_t kNoMaterial = ~0u;
 

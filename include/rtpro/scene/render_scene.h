@@ -8,9 +8,10 @@
 #include "rtpro/scene/checker_axes.h"
 #include "rtpro/scene/light.h"
 #include "rtpro/scene/light_links.h"
-#include "rtpro/scene/mesh.h"
 #include "rtpro/scene/render_camera.h"
 #include "rtpro/scene/render_settings.h"
+#include "rtpro/scene/sphere_geometry.h"
+#include "rtpro/scene/triangle_geometry.h"
 
 #include <cstdint>
 #include <memory>
@@ -23,24 +24,15 @@
 
 namespace rtpro {
 
-struct Sphere {
-  Vec3 center;
-  float radius;
-  std::uint32_t material;
-};
-
-struct SphereSet {
-  std::vector<Sphere> spheres;
-  BBox sphere_bounds(std::uint32_t i) const;
-};
-
 struct Instance {
   std::uint32_t prototype;  // index into RenderScene::prototypes
   Affine object_to_world;
   Affine world_to_object;
 };
 
-// One geometry of a group; its index in the group is the geometry id a hit reports.
+// One geometry of a group; its index in the group is the geometry id a hit reports. Each kind of
+// shape has a home of its own on each side of the modules (scene/sphere_geometry.h, the backend's
+// and the renderer's per-kind files); an Instance places a prototype group.
 using Geometry = std::variant<SphereSet, TriangleMesh, Instance>;
 
 enum class GeometryKind : std::uint8_t { kSpheres = 0, kTriangles = 1, kInstance = 2 };

@@ -27,6 +27,13 @@ struct SceneSummary {
   std::size_t estimated_bvh_bytes = 0;    // native BVH, from primitive counts
 };
 
+// What one group's shapes add up to, each kind of shape adding its own (tally_shapes, in the
+// kind's file): spheres and triangles count again for every instance that places the group.
+struct ShapeTally {
+  std::uint64_t spheres = 0, triangles = 0;
+  std::size_t primitives = 0;  // what the native BVH holds references to
+};
+
 SceneSummary summarize(const RenderScene& scene);
 
 }  // namespace rtpro

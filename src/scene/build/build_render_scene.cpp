@@ -2,6 +2,7 @@
 
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
+#include "rtpro/core/overloaded.h"
 #include "rtpro/scene/render_cost.h"
 #include "traceable_range_check.h"
 #include "gltf_asset.h"
@@ -203,19 +204,22 @@ class RenderSceneBuilder {
 
   // Spheres and meshes that belong to `object` itself (not through its instances). Only the
   // world's own shapes are top-level geometries that need an origin (`origins` is null for
-  // prototypes).
+  // prototypes). Every list of shapes written in the scene file becomes one geometry of its kind
+  // (shapes_from, in the kind's file: scene/sphere_geometry.h); glTF files are placed as instances
+  // of their meshes (place_gltf).
   void add_own_shapes(const ObjectDesc& object, Group& group, std::vector<GeometryOrigin>* origins = nullptr) {
-    if (!object.spheres.empty()) {
-      SphereSet set;
-      set.spheres.reserve(object.spheres.size());
-      for (const SphereDesc& s : object.spheres) set.spheres.push_back({s.center, s.radius, s.material});
-      group.geometries.emplace_back(std::move(set));
-      if (origins) origins->push_back({&scene_file_});
-    }
-    for (const MeshDesc& mesh : object.meshes) {
-      group.geometries.emplace_back(load_mesh(mesh));
-      if (origins) origins->push_back({&mesh.where});
-    }
+    visit_shape_lists(object, Overloaded{[&](const std::vector<MeshDesc>& meshes) {
+                                           for (const MeshDesc& mesh : meshes) {
+                                             group.geometries.emplace_back(load_mesh(mesh));
+                                             if (origins) origins->push_back({&mesh.where});
+                                           }
+                                         },
+                                         [](const std::vector<GltfDesc>&) {},
+                                         [&](const auto& shapes) {
+                                           if (shapes.empty()) return;
+                                           group.geometries.emplace_back(shapes_from(shapes));
+                                           if (origins) origins->push_back({&scene_file_});
+                                         }});
   }
 
   TriangleMesh load_mesh(const MeshDesc& desc) {

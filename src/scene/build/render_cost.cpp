@@ -17,12 +17,12 @@ namespace rtpro {
 
 namespace {
 
-// glTF files count by their placements (placements_in), not as the object's own shapes.
+// glTF files count by their placements (placements_in), not as the object's own shapes; every
+// other list of shapes is the object's own.
 bool has_own_shapes(const ObjectDesc& object) {
   bool any = false;
-  visit_shape_lists(object, Overloaded{[&](const std::vector<SphereDesc>& spheres) { any = any || !spheres.empty(); },
-                                       [&](const std::vector<MeshDesc>& meshes) { any = any || !meshes.empty(); },
-                                       [](const std::vector<GltfDesc>&) {}});
+  visit_shape_lists(object, Overloaded{[](const std::vector<GltfDesc>&) {},
+                                       [&](const auto& shapes) { any = any || !shapes.empty(); }});
   return any;
 }
 
@@ -68,14 +68,16 @@ void add_gltf_bytes(const std::vector<GltfDesc>& gltfs, std::set<std::filesystem
   }
 }
 
-// Mesh memory of every mesh and glTF file an object draws, each file counted once.
-// Spheres, a few dozen bytes each, are left out of the estimate.
+// Mesh memory of every mesh and glTF file an object draws, each file counted once; a shape
+// described in the scene file itself adds what its kind estimates (scene/sphere_geometry.h).
 void add_shape_bytes(const ObjectDesc& object, std::set<std::filesystem::path>& seen, std::uint64_t& bytes) {
-  visit_shape_lists(object, Overloaded{[](const std::vector<SphereDesc>&) {},
-                                       [&](const std::vector<MeshDesc>& meshes) {
+  visit_shape_lists(object, Overloaded{[&](const std::vector<MeshDesc>& meshes) {
                                          for (const MeshDesc& mesh : meshes) add_file_bytes(mesh.file, seen, bytes);
                                        },
-                                       [&](const std::vector<GltfDesc>& gltfs) { add_gltf_bytes(gltfs, seen, bytes); }});
+                                       [&](const std::vector<GltfDesc>& gltfs) { add_gltf_bytes(gltfs, seen, bytes); },
+                                       [&](const auto& shapes) {
+                                         for (const auto& shape : shapes) bytes = saturating_add(bytes, estimated_bytes(shape));
+                                       }});
 }
 
 }  // namespace

@@ -8,29 +8,13 @@ namespace rtpro {
 
 namespace {
 
-struct GroupCounts {
-  std::uint64_t spheres = 0, triangles = 0;
-};
-
-GroupCounts count_shapes(const Group& group, SceneSummary& summary, std::size_t& primitives) {
-  GroupCounts counts;
-  for (const Geometry& g : group.geometries) {
-    std::visit(Overloaded{[&](const SphereSet& set) {
-                            counts.spheres += set.spheres.size();
-                            summary.geometry_bytes += set.spheres.capacity() * sizeof(Sphere);
-                            primitives += set.spheres.size();
-                          },
-                          [&](const TriangleMesh& mesh) {
-                            ++summary.meshes;
-                            counts.triangles += mesh.triangles.size();
-                            summary.vertices_stored += mesh.vertices.size();
-                            summary.geometry_bytes += mesh.memory_bytes();
-                            primitives += mesh.triangles.size();
-                          },
-                          [&](const Instance&) { ++primitives; }},
+ShapeTally count_shapes(const Group& group, SceneSummary& summary) {
+  ShapeTally tally;
+  for (const Geometry& g : group.geometries)
+    std::visit(Overloaded{[&](const Instance&) { ++tally.primitives; },
+                          [&](const auto& shapes) { tally_shapes(shapes, tally, summary); }},
                g);
-  }
-  return counts;
+  return tally;
 }
 
 }  // namespace
@@ -38,24 +22,20 @@ GroupCounts count_shapes(const Group& group, SceneSummary& summary, std::size_t&
 SceneSummary summarize(const RenderScene& scene) {
   SceneSummary s;
   s.materials = scene.materials.size();
-  for (const Light& light : scene.lights) {
-    std::visit(Overloaded{[&](const PointLight&) { ++s.point_lights; },
-                          [&](const SpotLight&) { ++s.spot_lights; },
-                          [&](const DirectionalLight&) { ++s.directional_lights; },
-                          [&](const SphereLight&) { ++s.area_lights; },
-                          [&](const QuadLight&) { ++s.area_lights; }},
-               light);
-  }
+  for (const Light& light : scene.lights) std::visit([&](const auto& l) { count_light(l, s); }, light);
   s.prototypes = scene.prototypes.size();
 
-  std::size_t primitives = 0;
-  const GroupCounts top = count_shapes(scene.top, s, primitives);
-  std::vector<GroupCounts> per_prototype;
-  for (const Group& prototype : scene.prototypes) per_prototype.push_back(count_shapes(prototype, s, primitives));
+  const ShapeTally top = count_shapes(scene.top, s);
+  std::size_t primitives = top.primitives;
+  std::vector<ShapeTally> per_prototype;
+  for (const Group& prototype : scene.prototypes) {
+    per_prototype.push_back(count_shapes(prototype, s));
+    primitives += per_prototype.back().primitives;
+  }
 
   s.spheres_stored = s.spheres_rendered = top.spheres;
   s.triangles_stored = s.triangles_rendered = top.triangles;
-  for (const GroupCounts& c : per_prototype) {
+  for (const ShapeTally& c : per_prototype) {
     s.spheres_stored += c.spheres;
     s.triangles_stored += c.triangles;
   }

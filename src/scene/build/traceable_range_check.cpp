@@ -6,15 +6,16 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <variant>
 
 namespace rtpro {
-
-namespace {
 
 double largest_magnitude(const Vec3& v) {
   if (!is_finite(v)) return INFINITY;
   return std::max({std::fabs(double(v.x)), std::fabs(double(v.y)), std::fabs(double(v.z))});
 }
+
+namespace {
 
 double largest_magnitude(const BBox& box) {
   return box.empty() ? 0.0 : std::max(largest_magnitude(box.lower), largest_magnitude(box.upper));
@@ -48,30 +49,9 @@ Stretch stretch_of(const Affine& world_to_object) {
 }
 
 BBox geometry_bounds(const Group& group, std::uint32_t g, std::span<const BBox> prototype_bounds) {
-  const Geometry& geometry = group.geometries[g];
-  switch (kind_of(geometry)) {
-    case GeometryKind::kSpheres: {
-      BBox box;
-      for (std::uint32_t i = 0; i < group.primitive_count(g); ++i) box.extend(std::get<SphereSet>(geometry).sphere_bounds(i));
-      return box;
-    }
-    case GeometryKind::kTriangles: return std::get<TriangleMesh>(geometry).bounds();
-    case GeometryKind::kInstance: return group.primitive_bounds(g, 0, prototype_bounds);
-  }
-  return {};
-}
-
-// How far from the origin a light places what rays aim at; a directional light places nothing.
-double light_reach(const LightDesc& light) {
-  return std::visit(
-      Overloaded{[](const PointLightDesc& point) { return largest_magnitude(point.position); },
-                 [](const SpotLightDesc& spot) { return largest_magnitude(spot.position); },
-                 [](const DirectionalLightDesc&) { return 0.0; },
-                 [](const SphereLightDesc& sphere) { return largest_magnitude(sphere.center) + double(sphere.radius); },
-                 [](const QuadLightDesc& quad) {
-                   return largest_magnitude(quad.position) + double(length(quad.edge1) + length(quad.edge2));
-                 }},
-      light);
+  return std::visit(Overloaded{[&](const Instance&) { return group.primitive_bounds(g, 0, prototype_bounds); },
+                               [](const auto& shapes) { return bounds_of(shapes); }},
+                    group.geometries[g]);
 }
 
 }  // namespace
@@ -83,7 +63,8 @@ void check_traceable_range(const RenderScene& scene, std::span<const GeometryOri
 
   // Where rays can start (the camera, any surface) and what they can aim at (a point or spot light).
   double extent = largest_magnitude(camera.position);
-  for (const LightDesc& light : lights) extent = std::max(extent, light_reach(light));
+  for (const LightDesc& light : lights)
+    extent = std::max(extent, std::visit([](const auto& l) { return reach_from_origin(l); }, light));
 
   for (std::uint32_t g = 0; g < scene.top.geometries.size(); ++g) {
     const Geometry& geometry = scene.top.geometries[g];

@@ -13,6 +13,10 @@
 
 namespace rtpro {
 
+// The largest coordinate's magnitude; infinity when one is not finite (what each light kind's
+// reach_from_origin measures with).
+double largest_magnitude(const Vec3& v);
+
 // `origins[g]` is where scene.top.geometries[g] came from. Throws InputError there.
 void check_traceable_range(const RenderScene& scene, std::span<const GeometryOrigin> origins, const CameraDesc& camera,
                            const std::vector<LightDesc>& lights);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 namespace rtpro {
@@ -67,14 +68,28 @@ void read_image_texture(const YamlNode& node, const std::string& name, const std
   if (const YamlNode* tint = texture.optional("tint")) desc.color = read_color(*tint, texture.field("tint"));
 }
 
+// What a scene file calls each kind (its `type:`); nothing past the last kind, so that
+// read_material_kind can list them all without a list of its own.
+const char* material_type(MaterialKind kind) {
+  switch (kind) {
+    case MaterialKind::kPhong: return "phong";
+    case MaterialKind::kDiffuse: return "diffuse";
+    case MaterialKind::kConductor: return "conductor";
+    case MaterialKind::kDielectric: return "dielectric";
+    case MaterialKind::kPrincipled: return "principled";
+  }
+  return nullptr;
+}
+
 MaterialKind read_material_kind(const YamlNode& node, const std::string& name) {
   const std::string text = read_string(node, name);
-  if (text == "phong") return MaterialKind::kPhong;
-  if (text == "diffuse") return MaterialKind::kDiffuse;
-  if (text == "conductor") return MaterialKind::kConductor;
-  if (text == "dielectric") return MaterialKind::kDielectric;
-  if (text == "principled") return MaterialKind::kPrincipled;
-  fail_at(node, name + " must be phong, diffuse, conductor, dielectric or principled, got '" + text + "'");
+  std::string kinds;
+  for (std::uint8_t k = 0; const char* type = material_type(static_cast<MaterialKind>(k)); ++k) {
+    if (text == type) return static_cast<MaterialKind>(k);
+    const bool last = !material_type(static_cast<MaterialKind>(k + 1));
+    kinds += (k == 0 ? "" : (last ? " or " : ", ")) + std::string(type);
+  }
+  fail_at(node, name + " must be " + kinds + ", got '" + text + "'");
 }
 
 // The keys a material of `kind` may have besides `type`, colour and emission: each kind names its

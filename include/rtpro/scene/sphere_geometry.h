@@ -1,0 +1,39 @@
+#pragma once
+// Spheres, the scene's side of the geometry kind in one place: the shapes a render scene stores
+// and what the scene needs of them (primitives, bounds, the summary, the cost estimate), defined in
+// src/scene/build/sphere_geometry.cpp. Its intersector is geometry/sphere_intersect.h, shared by
+// both backends; the kind is registered in scene/render_scene.h (Geometry).
+#include "rtpro/core/bbox.h"
+#include "rtpro/core/vec3.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace rtpro {
+
+struct SphereDesc;    // scene/description.h
+struct ShapeTally;    // scene/scene_summary.h
+struct SceneSummary;
+
+struct Sphere {
+  Vec3 center;
+  float radius;
+  std::uint32_t material;
+};
+
+struct SphereSet {
+  std::vector<Sphere> spheres;
+  BBox sphere_bounds(std::uint32_t i) const;
+};
+
+// One geometry of every sphere an object lists in the scene file, in their order.
+SphereSet shapes_from(const std::vector<SphereDesc>& spheres);
+std::uint32_t primitive_count_of(const SphereSet& set);
+BBox primitive_bounds_of(const SphereSet& set, std::uint32_t prim);
+BBox bounds_of(const SphereSet& set);  // of every sphere
+void tally_shapes(const SphereSet& set, ShapeTally& tally, SceneSummary& summary);
+// Memory the described shape adds to a render (scene/render_cost.h): a sphere's few dozen bytes
+// are left out.
+std::uint64_t estimated_bytes(const SphereDesc& sphere);
+
+}  // namespace rtpro

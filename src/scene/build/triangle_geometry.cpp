@@ -1,0 +1,21 @@
+#include "rtpro/scene/triangle_geometry.h"
+
+#include "rtpro/scene/scene_summary.h"
+
+namespace rtpro {
+
+std::uint32_t primitive_count_of(const TriangleMesh& mesh) { return static_cast<std::uint32_t>(mesh.triangles.size()); }
+
+BBox primitive_bounds_of(const TriangleMesh& mesh, std::uint32_t prim) { return mesh.triangle_bounds(prim); }
+
+BBox bounds_of(const TriangleMesh& mesh) { return mesh.bounds(); }
+
+void tally_shapes(const TriangleMesh& mesh, ShapeTally& tally, SceneSummary& summary) {
+  ++summary.meshes;
+  tally.triangles += mesh.triangles.size();
+  summary.vertices_stored += mesh.vertices.size();
+  summary.geometry_bytes += mesh.memory_bytes();
+  tally.primitives += mesh.triangles.size();
+}
+
+}  // namespace rtpro
