@@ -7,6 +7,7 @@
 #include "rtpro/render/texture.h"
 #include "rtpro/render/ray_offset.h"
 #include "rtpro/render/sample_dimensions.h"
+#include "rtpro/render/surface_batch.h"
 
 #include <algorithm>
 #include <cmath>

@@ -8,6 +8,7 @@
 #include "rtpro/render/light_linking.h"
 #include "rtpro/render/light_sample.h"
 #include "rtpro/render/ray_offset.h"
+#include "rtpro/render/surface_batch.h"
 #include "rtpro/render/texture.h"
 
 #include <cmath>

@@ -18,10 +18,10 @@
 #include "rtpro/image/texture_lookup.h"
 #include "rtpro/render/environment_light.h"
 #include "rtpro/render/light_picker.h"
+#include "rtpro/render/path_light.h"
 #include "rtpro/render/sampler.h"
 #include "rtpro/scene/render_scene.h"
 
-#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -30,48 +30,6 @@
 #include <vector>
 
 namespace rtpro {
-
-// A triangle of an emissive material: p0 + [0,1]·e1 + [0,1]·e2 with barycentrics summing to <= 1.
-struct EmissiveTriangle {
-  Vec3 p0, e1, e2;
-  Vec3 normal;  // unit e1 × e2: the front side
-  float area;
-  Emission emission;
-  std::array<TexCoord, 3> uv{};  // at p0, p0 + e1, p0 + e2 (the mesh's, or its barycentrics)
-};
-
-// A sphere of an emissive material (outside: the front side). A textured one is in the frame its
-// texture coordinates are defined in (it is not instanced: see the header).
-struct EmissiveSphere {
-  Vec3 center;
-  float radius;
-  Emission emission;
-};
-
-// The scene's environment, owned by whoever built it (it outlives the set).
-struct EnvironmentRef {
-  const EnvironmentLight* light;
-};
-
-// Point and spot lights fall off with the square of distance here: `radiance` is read as intensity
-// (W/sr), as every physically based renderer reads it.
-// The scene's kinds of light (scene/light.h) first, in their order, then the emitters.
-template <typename Lights, typename... Emitters>
-struct WithEmitters;
-template <typename... Lights, typename... Emitters>
-struct WithEmitters<std::variant<Lights...>, Emitters...> {
-  using type = std::variant<Lights..., Emitters...>;
-};
-using PathLight = WithEmitters<Light, EmissiveTriangle, EmissiveSphere, EnvironmentRef>::type;
-
-struct PathLightSample {
-  Vec3 direction;   // unit, from the point towards the light
-  float distance;   // to the sampled point; infinity for directional lights and the environment
-  Color radiance;   // arriving along `direction` (no pdf folded in)
-  float pdf;        // solid angle, times the probability of picking the light; 1 for delta lights
-  bool delta;       // point, spot and directional lights: no BSDF sample can reach them
-  std::uint32_t light;  // which light of the set
-};
 
 class LightSet {
  public:
