@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs every build and test dependency of rtpro from Debian 12 packages (clang 14 and its
-# runtime libraries build the sanitizer and fuzzing tree of scripts/test-all.sh).
+# runtime libraries build the sanitizer and fuzzing tree of scripts/test-all.sh; clang-format 14
+# checks the sources' layout).
 # Safe to run repeatedly; uses sudo when not root.
 set -euo pipefail
 
@@ -14,7 +15,7 @@ packages=(
   nlohmann-json3-dev libtinygltf-dev libxxhash-dev
   openmpi-bin libopenmpi-dev
   assimp-testmodels
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev clang-format
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Everything CI checks (.ci/run), in three stages that stop at the first failure:
-#   1. the Release build with the default compiler (gcc) and every test;
+#   1. the sources as clang-format writes them (scripts/check-format.sh), then the Release build
+#      with the default compiler (gcc) and every test;
 #   2. a second tree built with clang under AddressSanitizer + UndefinedBehaviorSanitizer, with
 #      libFuzzer linked into the fuzz targets, and every test again (zero findings allowed);
 #   3. a short fuzz run of each target in that tree: its corpus and regressions replayed, then
@@ -16,6 +17,7 @@ stage() { printf '\n==== rtpro test stage %s (%s) ====\n' "$1" "$(date +%T)"; }
 
 if [[ $stages == *,1,* ]]; then
   stage "1: gcc Release build and tests"
+  scripts/check-format.sh
   cmake -S . -B build -G Ninja
   cmake --build build
   ctest --test-dir build -j2 --output-on-failure
