@@ -80,7 +80,8 @@ std::vector<Ray> camera_rays(const RenderScene& scene) {
   rays.reserve(static_cast<std::size_t>(scene.camera.width) * scene.camera.height);
   for (int y = 0; y < scene.camera.height; ++y)
     for (int x = 0; x < scene.camera.width; ++x)
-      rays.push_back(camera_ray(scene.camera, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f, {0.5f, 0.5f}));
+      rays.push_back(
+          camera_ray(scene.camera, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f, {0.5f, 0.5f}));
   return rays;
 }
 
@@ -140,7 +141,8 @@ void primary_and_shadow_rays(benchmark::State& state, const LoadedScene* loaded,
       traced += r.size() + shadow_rays.size();
     });
   }
-  state.counters["Mrays/s"] = benchmark::Counter(static_cast<double>(traced.load()) * 1e-6, benchmark::Counter::kIsRate);
+  state.counters["Mrays/s"] =
+      benchmark::Counter(static_cast<double>(traced.load()) * 1e-6, benchmark::Counter::kIsRate);
 }
 
 void whole_render(benchmark::State& state, const LoadedScene* loaded, BackendKind kind) {
@@ -156,8 +158,10 @@ void whole_render(benchmark::State& state, const LoadedScene* loaded, BackendKin
 using BackendBenchmark = void (*)(benchmark::State&, const LoadedScene*, BackendKind);
 
 void register_benchmarks() {
-  const std::pair<const char*, BackendBenchmark> kinds[] = {
-      {"build", build}, {"primary", primary_rays}, {"primary_shadow", primary_and_shadow_rays}, {"render_1spp", whole_render}};
+  const std::pair<const char*, BackendBenchmark> kinds[] = {{"build", build},
+                                                            {"primary", primary_rays},
+                                                            {"primary_shadow", primary_and_shadow_rays},
+                                                            {"render_1spp", whole_render}};
   for (const auto& loaded : loaded_scenes())
     for (BackendKind kind : {BackendKind::kNative, BackendKind::kEmbree})
       for (const auto& [label, function] : kinds) {

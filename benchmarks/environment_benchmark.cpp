@@ -44,7 +44,12 @@ void BM_EnvironmentReady(benchmark::State& state) {
   state.counters["bytes_per_image_byte"] = static_cast<double>(bytes) / image_bytes;
   state.counters["MiB"] = static_cast<double>(bytes) / (1024.0 * 1024.0);
 }
-BENCHMARK(BM_EnvironmentReady)->Args({4096, 1})->Args({4096, 2})->Args({1024, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_EnvironmentReady)
+    ->Args({4096, 1})
+    ->Args({4096, 2})
+    ->Args({1024, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 

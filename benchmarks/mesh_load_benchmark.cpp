@@ -51,7 +51,8 @@ void report(benchmark::State& state, const fs::path& file, std::size_t triangles
       benchmark::Counter(double(triangles) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 
-void load_with_rtpro(benchmark::State& state, const fs::path& file, rtpro::NormalsMode normals = rtpro::NormalsMode::kAuto) {
+void load_with_rtpro(benchmark::State& state, const fs::path& file,
+                     rtpro::NormalsMode normals = rtpro::NormalsMode::kAuto) {
   if (!have(state, file)) return;
   std::size_t triangles = 0;
   for (auto _ : state) {
@@ -112,18 +113,24 @@ fs::path write_dragon_glb() {
   const std::size_t positions_bytes = bin.size();
   bin.append(reinterpret_cast<const char*>(mesh.triangles.data()), mesh.triangles.size() * 12);
   const rtpro::BBox b = mesh.bounds();
-  std::string json =
-      R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
-      R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],)"
-      R"("buffers":[{"byteLength":)" + std::to_string(bin.size()) + R"(}],"bufferViews":[)"
-      R"({"buffer":0,"byteOffset":0,"byteLength":)" + std::to_string(positions_bytes) + R"(},)"
-      R"({"buffer":0,"byteOffset":)" + std::to_string(positions_bytes) + R"(,"byteLength":)" +
-      std::to_string(bin.size() - positions_bytes) + R"(}],"accessors":[)"
-      R"({"bufferView":0,"componentType":5126,"count":)" + std::to_string(mesh.vertices.size()) +
-      R"(,"type":"VEC3","min":[)" + std::to_string(b.lower.x) + "," + std::to_string(b.lower.y) + "," +
-      std::to_string(b.lower.z) + R"(],"max":[)" + std::to_string(b.upper.x) + "," + std::to_string(b.upper.y) + "," +
-      std::to_string(b.upper.z) + R"(]},{"bufferView":1,"componentType":5125,"count":)" +
-      std::to_string(mesh.triangles.size() * 3) + R"(,"type":"SCALAR"}]})";
+  std::string json = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+                     R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],)"
+                     R"("buffers":[{"byteLength":)" +
+                     std::to_string(bin.size()) +
+                     R"(}],"bufferViews":[)"
+                     R"({"buffer":0,"byteOffset":0,"byteLength":)" +
+                     std::to_string(positions_bytes) +
+                     R"(},)"
+                     R"({"buffer":0,"byteOffset":)" +
+                     std::to_string(positions_bytes) + R"(,"byteLength":)" +
+                     std::to_string(bin.size() - positions_bytes) +
+                     R"(}],"accessors":[)"
+                     R"({"bufferView":0,"componentType":5126,"count":)" +
+                     std::to_string(mesh.vertices.size()) + R"(,"type":"VEC3","min":[)" + std::to_string(b.lower.x) +
+                     "," + std::to_string(b.lower.y) + "," + std::to_string(b.lower.z) + R"(],"max":[)" +
+                     std::to_string(b.upper.x) + "," + std::to_string(b.upper.y) + "," + std::to_string(b.upper.z) +
+                     R"(]},{"bufferView":1,"componentType":5125,"count":)" + std::to_string(mesh.triangles.size() * 3) +
+                     R"(,"type":"SCALAR"}]})";
   while (json.size() % 4) json += ' ';
   while (bin.size() % 4) bin += '\0';
   const auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
@@ -146,7 +153,8 @@ void load_scene(benchmark::State& state, const fs::path& scene, const fs::path& 
     const rtpro::RenderScene loaded = rtpro::build_render_scene(rtpro::parse_scene_file(scene));
     triangles = 0;
     for (const rtpro::Group& prototype : loaded.prototypes)
-      for (const rtpro::Geometry& g : prototype.geometries) triangles += std::get<rtpro::TriangleMesh>(g).triangle_count();
+      for (const rtpro::Geometry& g : prototype.geometries)
+        triangles += std::get<rtpro::TriangleMesh>(g).triangle_count();
     for (const rtpro::Geometry& g : loaded.top.geometries)
       if (const auto* mesh = std::get_if<rtpro::TriangleMesh>(&g)) triangles += mesh->triangle_count();
     benchmark::DoNotOptimize(loaded.prototypes.data());
@@ -163,8 +171,9 @@ void BM_RtproGltfScene(benchmark::State& state) {
 void BM_RtproObjScene(benchmark::State& state) {
   if (!have(state, dragon_obj())) return;
   const fs::path yaml = fs::temp_directory_path() / "rtpro_benchmark_dragon_obj.yaml";
-  std::ofstream(yaml) << "rtpro: 1\ncamera: {position: [0, 0, 1], look_at: [0, 0, 0]}\nworld:\n  - {type: mesh, file: \""
-                      << fs::absolute(dragon_obj()).string() << "\"}\n";
+  std::ofstream(yaml)
+      << "rtpro: 1\ncamera: {position: [0, 0, 1], look_at: [0, 0, 0]}\nworld:\n  - {type: mesh, file: \""
+      << fs::absolute(dragon_obj()).string() << "\"}\n";
   load_scene(state, yaml, dragon_obj());
 }
 

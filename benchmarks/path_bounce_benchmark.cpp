@@ -89,8 +89,8 @@ Frame record_frame(const std::string& name, std::shared_ptr<const RenderScene> s
     for (int x = 0; x < camera.width; ++x) {
       const std::uint64_t pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(camera.width) + x;
       const PixelOffset offset = sampler.pixel_offset(pixel, 0);
-      camera_rays.push_back(camera_ray(camera, static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y,
-                                       {0.5f, 0.5f}));
+      camera_rays.push_back(
+          camera_ray(camera, static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y, {0.5f, 0.5f}));
       keys.push_back({pixel, 0});
     }
   std::vector<SampleResult> results(camera_rays.size());

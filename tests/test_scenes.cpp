@@ -46,8 +46,8 @@ RenderScene empty_scene(int width, int height) {
 SphereSet random_spheres(std::mt19937& rng, int count, float extent) {
   SphereSet set;
   for (int i = 0; i < count; ++i)
-    set.spheres.push_back({uniform_point(rng, extent), uniform(rng, 0.01f, 0.1f) * extent,
-                           static_cast<std::uint32_t>(i % 2)});
+    set.spheres.push_back(
+        {uniform_point(rng, extent), uniform(rng, 0.01f, 0.1f) * extent, static_cast<std::uint32_t>(i % 2)});
   return set;
 }
 

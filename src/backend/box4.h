@@ -18,7 +18,8 @@ struct Box4 {
 
   Box4() = default;
   explicit Box4(const BBox& b)
-      : lower(_mm_setr_ps(b.lower.x, b.lower.y, b.lower.z, 0.0f)), upper(_mm_setr_ps(b.upper.x, b.upper.y, b.upper.z, 0.0f)) {}
+      : lower(_mm_setr_ps(b.lower.x, b.lower.y, b.lower.z, 0.0f)),
+        upper(_mm_setr_ps(b.upper.x, b.upper.y, b.upper.z, 0.0f)) {}
   void extend(__m128 lo, __m128 hi) {
     lower = _mm_min_ps(lo, lower);
     upper = _mm_max_ps(hi, upper);

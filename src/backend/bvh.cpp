@@ -151,7 +151,8 @@ class BvhBuilder {
   // Gives `part`'s root the index `slot` and its descendants the positions build_sequential would
   // have given them: the children's pair next, then all of the left subtree, then the right.
   template <typename Nodes>
-  static void place(const Part& part, std::uint32_t slot, std::uint32_t& next, Nodes& nodes, std::vector<Copy>& copies) {
+  static void place(const Part& part, std::uint32_t slot, std::uint32_t& next, Nodes& nodes,
+                    std::vector<Copy>& copies) {
     if (!part.left) {
       copies.push_back({part.first, part.size, slot, next});
       next += part.size - 1;
@@ -193,8 +194,8 @@ class BvhBuilder {
     if (!parallel_ || end - begin < kParallelRange) return fold(Value{}, begin, end);
     return tbb::parallel_deterministic_reduce(
         tbb::blocked_range<std::uint32_t>(begin, end, kChunk), Value{},
-        [&](const tbb::blocked_range<std::uint32_t>& r, Value value) { return fold(value, r.begin(), r.end()); },
-        join, tbb::simple_partitioner());
+        [&](const tbb::blocked_range<std::uint32_t>& r, Value value) { return fold(value, r.begin(), r.end()); }, join,
+        tbb::simple_partitioner());
   }
 
   RangeBounds bounds_of(std::uint32_t begin, std::uint32_t end) const {
@@ -277,19 +278,19 @@ class BvhBuilder {
 // Every primitive's bounds, computed in parallel into its place in geometry order; primitives
 // with empty bounds (an instance of an empty prototype) are then dropped, keeping the order.
 HugePageBuffer<BuildPrimitive> build_primitives(const Group& group, std::span<const BBox> prototype_bounds,
-                                                   std::uint32_t& count) {
+                                                std::uint32_t& count) {
   std::vector<std::size_t> first(group.geometries.size() + 1, 0);
   for (std::uint32_t g = 0; g < group.geometries.size(); ++g) first[g + 1] = first[g] + group.primitive_count(g);
   HugePageBuffer<BuildPrimitive> primitives(first.back());
   tbb::parallel_for(std::uint32_t{0}, static_cast<std::uint32_t>(group.geometries.size()), [&](std::uint32_t g) {
-    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, group.primitive_count(g), kChunk),
-                      [&](const tbb::blocked_range<std::uint32_t>& r) {
-                        for (std::uint32_t p = r.begin(); p < r.end(); ++p) {
-                          const BBox b = group.primitive_bounds(g, p, prototype_bounds);
-                          primitives[first[g] + p] = {{b.lower.x, b.lower.y, b.lower.z}, g,
-                                                      {b.upper.x, b.upper.y, b.upper.z}, p};
-                        }
-                      });
+    tbb::parallel_for(
+        tbb::blocked_range<std::uint32_t>(0, group.primitive_count(g), kChunk),
+        [&](const tbb::blocked_range<std::uint32_t>& r) {
+          for (std::uint32_t p = r.begin(); p < r.end(); ++p) {
+            const BBox b = group.primitive_bounds(g, p, prototype_bounds);
+            primitives[first[g] + p] = {{b.lower.x, b.lower.y, b.lower.z}, g, {b.upper.x, b.upper.y, b.upper.z}, p};
+          }
+        });
   });
   const auto* end = std::remove_if(primitives.get(), primitives.get() + first.back(),
                                    [](const BuildPrimitive& p) { return p.bounds().empty(); });

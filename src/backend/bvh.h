@@ -31,7 +31,9 @@ struct PrimitiveRef {
 struct Bvh {
   std::vector<BvhNode, HugePageAllocator<BvhNode>> nodes;
   std::vector<PrimitiveRef, HugePageAllocator<PrimitiveRef>> refs;
-  std::size_t memory_bytes() const { return nodes.capacity() * sizeof(BvhNode) + refs.capacity() * sizeof(PrimitiveRef); }
+  std::size_t memory_bytes() const {
+    return nodes.capacity() * sizeof(BvhNode) + refs.capacity() * sizeof(PrimitiveRef);
+  }
 };
 
 inline constexpr int kBvhMaxDepth = 128;

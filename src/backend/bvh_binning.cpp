@@ -20,7 +20,8 @@ struct AxisBins {
 
   void join(const AxisBins& other) {
     for (int k = 0; k < kBinCount; ++k) {
-      for (int axis = 0; axis < 3; ++axis) boxes[k][axis].extend(other.boxes[k][axis].lower, other.boxes[k][axis].upper);
+      for (int axis = 0; axis < 3; ++axis)
+        boxes[k][axis].extend(other.boxes[k][axis].lower, other.boxes[k][axis].upper);
       for (int axis = 0; axis < 3; ++axis) counts[k][axis] += other.counts[k][axis];
     }
   }
@@ -74,7 +75,8 @@ __m128i bin_of(__m128 values, __m128 lo, __m128 scale) {
 // The bins of all three axes in one pass over the range: each bin still sees its primitives in
 // array order, so this is exactly three separate passes' result. An axis whose centroids do
 // not spread gets scale 0 (every primitive in bin 0) and is not used.
-AxisBins bin(const BuildPrimitive* primitives, std::uint32_t begin, std::uint32_t end, const BBox& centroids, bool parallel) {
+AxisBins bin(const BuildPrimitive* primitives, std::uint32_t begin, std::uint32_t end, const BBox& centroids,
+             bool parallel) {
   alignas(16) float lo[4] = {centroids.lower.x, centroids.lower.y, centroids.lower.z, 0.0f};
   alignas(16) float scale[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   for (int axis = 0; axis < 3; ++axis) {

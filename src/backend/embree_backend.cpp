@@ -83,7 +83,8 @@ bool rays_decided_by_callbacks(const RenderScene& scene) {
 class EmbreeBackend final : public Backend {
  public:
   EmbreeBackend(const RenderScene& scene, const BackendOptions& options)
-      : device_(EmbreeDevice::get(options.threads)), packets_(rays_decided_by_callbacks(scene)), wide_loads_(sphere_lanes_vectorised()) {
+      : device_(EmbreeDevice::get(options.threads)), packets_(rays_decided_by_callbacks(scene)),
+        wide_loads_(sphere_lanes_vectorised()) {
     const EmbreeBuildSettings settings = embree_build_settings(options);
     EmbreeDevice::Session session(*device_, options.max_memory_bytes);
     const auto start = std::chrono::steady_clock::now();

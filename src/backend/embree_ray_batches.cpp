@@ -88,7 +88,8 @@ unsigned load_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, s
     packet.id[lane] = k;
     ++k;
   }
-  for (unsigned k = count; k < kStreamPackets * kPacket; ++k) leave_lane_inactive(ray_of(packets[k / kPacket]), k % kPacket);
+  for (unsigned k = count; k < kStreamPackets * kPacket; ++k)
+    leave_lane_inactive(ray_of(packets[k / kPacket]), k % kPacket);
   return count;
 }
 
@@ -112,8 +113,8 @@ RTPRO_AVX2_CLONES void intersect_stream(const EmbreeRayTarget& target, std::span
     rtcInitIntersectContext(&context.base);
     context.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     context.closest_spheres = closest_spheres;
-    rtcIntersectNM(target.scene, &context.base, reinterpret_cast<RTCRayHitN*>(packets), kPacket,
-                   kStreamPackets, sizeof(RTCRayHit8));
+    rtcIntersectNM(target.scene, &context.base, reinterpret_cast<RTCRayHitN*>(packets), kPacket, kStreamPackets,
+                   sizeof(RTCRayHit8));
     for (unsigned k = 0; k < count; ++k) {
       hits[first + k] = Hit{};
       hit_of_lane(packets[k / kPacket], k % kPacket, hits[first + k]);
@@ -123,7 +124,8 @@ RTPRO_AVX2_CLONES void intersect_stream(const EmbreeRayTarget& target, std::span
 
 // A segment too short for the open interval (tnear, tfar) is no query: its lane is left
 // inactive, and the ray unoccluded.
-RTPRO_AVX2_CLONES void occluded_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<std::uint8_t> result) {
+RTPRO_AVX2_CLONES void occluded_stream(const EmbreeRayTarget& target, std::span<const Ray> rays,
+                                       std::span<std::uint8_t> result) {
   alignas(32) RTCRay8 packets[kStreamPackets];
   for (std::size_t first = 0; first < rays.size(); first += kStreamPackets * kPacket) {
     const unsigned count = load_stream(target, rays, first, packets, [](float tfar, float tnear) {
@@ -146,7 +148,8 @@ RTPRO_AVX2_CLONES void occluded_stream(const EmbreeRayTarget& target, std::span<
   }
 }
 
-RTPRO_AVX2_CLONES void intersect_packets(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<Hit> hits) {
+RTPRO_AVX2_CLONES void intersect_packets(const EmbreeRayTarget& target, std::span<const Ray> rays,
+                                         std::span<Hit> hits) {
   alignas(32) RTCRayHit8 packet;
   alignas(32) int valid[kPacket];
   Hit closest_spheres[kPacket];
@@ -198,7 +201,8 @@ RTPRO_AVX2_CLONES void intersect_packets(const EmbreeRayTarget& target, std::spa
   }
 }
 
-RTPRO_AVX2_CLONES void occluded_packets(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<std::uint8_t> result) {
+RTPRO_AVX2_CLONES void occluded_packets(const EmbreeRayTarget& target, std::span<const Ray> rays,
+                                        std::span<std::uint8_t> result) {
   alignas(32) RTCRay8 packet;
   alignas(32) int valid[kPacket];
   std::size_t slots[kPacket];

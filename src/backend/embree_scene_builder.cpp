@@ -42,7 +42,8 @@ void validate_group(const Group& group, int group_index, std::span<const BBox> p
   for (std::uint32_t g = 0; g < group.geometries.size(); ++g) {
     const Geometry& geometry = group.geometries[g];
     std::visit(Overloaded{[&](const Instance& instance) {
-                            if (group_index >= 0) refuse(group_index, g, "is an instance inside a prototype (one level only)");
+                            if (group_index >= 0)
+                              refuse(group_index, g, "is an instance inside a prototype (one level only)");
                             validate_instance(instance, prototype_bounds, g);
                           },
                           [&](const auto& shapes) {
@@ -85,14 +86,13 @@ EmbreeScene build_group(EmbreeDevice::Session& session, const Group& group, int 
     const Geometry& geometry = group.geometries[g];
     if (is_empty(geometry)) continue;  // nothing to hit; ids need not be contiguous
     EmbreeGeometry embree_geometry;
-    std::visit(Overloaded{[&](const Instance& instance) {
-                            embree_geometry =
-                                new_instance_geometry(device, instance, prototypes[instance.prototype].get());
-                          },
-                          [&](const auto& shapes) {
-                            embree_geometry = new_embree_geometry(device, shapes, settings.quality);
-                          }},
-               geometry);
+    std::visit(
+        Overloaded{
+            [&](const Instance& instance) {
+              embree_geometry = new_instance_geometry(device, instance, prototypes[instance.prototype].get());
+            },
+            [&](const auto& shapes) { embree_geometry = new_embree_geometry(device, shapes, settings.quality); }},
+        geometry);
     session.check("creation of geometry " + std::to_string(g) + " of " + where);
     rtcAttachGeometryByID(scene.get(), embree_geometry.get(), g);
     session.check("attaching geometry " + std::to_string(g) + " of " + where);

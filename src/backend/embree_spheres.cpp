@@ -55,8 +55,8 @@ void intersect_spheres(const RTCIntersectFunctionNArguments* args) {
   RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, n);
 
   float distances[32];
-  std::uint32_t found = intersect_sphere_lanes(sphere.center, sphere.radius, lanes_of(rays, n),
-                                               valid_lanes(args->valid, n), distances);
+  std::uint32_t found =
+      intersect_sphere_lanes(sphere.center, sphere.radius, lanes_of(rays, n), valid_lanes(args->valid, n), distances);
   for (; found != 0; found &= found - 1) {
     const auto i = static_cast<unsigned>(std::countr_zero(found));
     const float t = distances[i];
@@ -93,8 +93,8 @@ void occlude_spheres(const RTCOccludedFunctionNArguments* args) {
   const unsigned n = args->N;
   RTCRayN* rays = args->ray;
   float distances[32];
-  std::uint32_t found = intersect_sphere_lanes(sphere.center, sphere.radius, lanes_of(rays, n),
-                                               valid_lanes(args->valid, n), distances);
+  std::uint32_t found =
+      intersect_sphere_lanes(sphere.center, sphere.radius, lanes_of(rays, n), valid_lanes(args->valid, n), distances);
   for (; found != 0; found &= found - 1)
     RTCRayN_tfar(rays, n, static_cast<unsigned>(std::countr_zero(found))) = -kInfinity;
 }

@@ -41,10 +41,10 @@ inline bool hits_box(const BBox& box, const RayBoxData& d, float tnear, float tm
   // min(tf, tn) is NaN when tn is (axis ignored) and tn when tf is; max(tn, tf) the other way round.
   const __m128 near_axes = _mm_min_ps(tf, tn);
   const __m128 far_axes = _mm_mul_ps(_mm_max_ps(tn, tf), _mm_set1_ps(kRoundingSlack));
-  const __m128 near = _mm_max_ps(_mm_or_ps(_mm_and_ps(xyz, near_axes), _mm_andnot_ps(xyz, _mm_set1_ps(tnear))),
-                                 _mm_set1_ps(tnear));
-  const __m128 far = _mm_min_ps(_mm_or_ps(_mm_and_ps(xyz, far_axes), _mm_andnot_ps(xyz, _mm_set1_ps(tmax))),
-                                _mm_set1_ps(tmax));
+  const __m128 near =
+      _mm_max_ps(_mm_or_ps(_mm_and_ps(xyz, near_axes), _mm_andnot_ps(xyz, _mm_set1_ps(tnear))), _mm_set1_ps(tnear));
+  const __m128 far =
+      _mm_min_ps(_mm_or_ps(_mm_and_ps(xyz, far_axes), _mm_andnot_ps(xyz, _mm_set1_ps(tmax))), _mm_set1_ps(tmax));
   // Largest near and smallest far over the lanes.
   __m128 t0 = _mm_max_ps(near, _mm_shuffle_ps(near, near, _MM_SHUFFLE(2, 3, 0, 1)));
   t0 = _mm_max_ps(t0, _mm_shuffle_ps(t0, t0, _MM_SHUFFLE(1, 0, 3, 2)));
@@ -56,8 +56,8 @@ inline bool hits_box(const BBox& box, const RayBoxData& d, float tnear, float tm
 
 Ray to_object_space(const Instance& instance, const Ray& ray, float tfar) {
   // The direction is not renormalised, so distances t mean the same in both spaces.
-  return {instance.world_to_object.apply_point(ray.org), ray.tnear,
-          instance.world_to_object.apply_vector(ray.dir), tfar};
+  return {instance.world_to_object.apply_point(ray.org), ray.tnear, instance.world_to_object.apply_vector(ray.dir),
+          tfar};
 }
 
 // Visits every leaf reference whose node box the ray enters, nearest child first;
@@ -105,7 +105,8 @@ void offer_hit(float t, float u, float v, std::uint32_t inst, const PrimitiveRef
 // of those lanes; near child first by the first active lane's direction. `visit(ref, lanes)`
 // returns the lanes still active (occlusion retires the blocked ones).
 template <typename Visit>
-[[gnu::target("avx2")]] void traverse_packet(const Bvh& bvh, const RayPacket& packet, std::uint32_t active, Visit&& visit) {
+[[gnu::target("avx2")]] void traverse_packet(const Bvh& bvh, const RayPacket& packet, std::uint32_t active,
+                                             Visit&& visit) {
   if (bvh.nodes.empty() || active == 0) return;
   const unsigned lead = static_cast<unsigned>(std::countr_zero(active));
   const int dir_negative[3] = {packet.dir_x[lead] < 0.0f, packet.dir_y[lead] < 0.0f, packet.dir_z[lead] < 0.0f};
@@ -149,8 +150,8 @@ std::size_t NativeTraversal::memory_bytes() const {
   return bytes;
 }
 
-void NativeTraversal::closest_in_group(const Group& group, const Bvh& bvh, const Ray& ray, std::uint32_t inst, Hit& best,
-                                       float& best_t) const {
+void NativeTraversal::closest_in_group(const Group& group, const Bvh& bvh, const Ray& ray, std::uint32_t inst,
+                                       Hit& best, float& best_t) const {
   traverse(bvh, ray, best_t, [&](const PrimitiveRef& ref) {
     const auto in_instance = [&](const Instance& instance) {
       const Ray local = to_object_space(instance, ray, best_t);

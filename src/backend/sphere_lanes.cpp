@@ -13,8 +13,7 @@ namespace rtpro {
 
 namespace {
 
-std::uint32_t scalar_lanes(const Vec3& center, float radius, const RayLanes& rays, std::uint32_t active,
-                           float* t_hit) {
+std::uint32_t scalar_lanes(const Vec3& center, float radius, const RayLanes& rays, std::uint32_t active, float* t_hit) {
   std::uint32_t hits = 0;
   for (unsigned i = 0; i < rays.count; ++i) {
     if (!(active >> i & 1u)) continue;
@@ -52,8 +51,9 @@ std::uint32_t scalar_lanes(const Vec3& center, float radius, const RayLanes& ray
   // Lanes the scalar function gives up on early: a <= 0 (or NaN), or the origin outside and moving
   // away (c > 0 && b > 0 && tnear >= 0).
   const int positive_a = _mm256_movemask_pd(_mm256_cmp_pd(a, zero, _CMP_GT_OQ));
-  const int leaving = _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(c, zero, _CMP_GT_OQ), _mm256_cmp_pd(b, zero, _CMP_GT_OQ))) &
-                      _mm_movemask_ps(_mm_cmpge_ps(tnear, _mm_setzero_ps()));
+  const int leaving =
+      _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(c, zero, _CMP_GT_OQ), _mm256_cmp_pd(b, zero, _CMP_GT_OQ))) &
+      _mm_movemask_ps(_mm_cmpge_ps(tnear, _mm_setzero_ps()));
   // The common miss (a shadow ray leaving the surface it starts on) ends here, as in the scalar
   // function, before the divisions.
   int live = positive_a & ~leaving & static_cast<int>(active >> first & 0xFu);
@@ -113,8 +113,9 @@ std::uint32_t scalar_lanes(const Vec3& center, float radius, const RayLanes& ray
   const __m512d c = _mm512_sub_pd(
       _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(fx, fx), _mm512_mul_pd(fy, fy)), _mm512_mul_pd(fz, fz)), r2);
   const unsigned positive_a = _mm512_cmp_pd_mask(a, zero, _CMP_GT_OQ);
-  const unsigned leaving = _mm512_cmp_pd_mask(c, zero, _CMP_GT_OQ) & _mm512_cmp_pd_mask(b, zero, _CMP_GT_OQ) &
-                           static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(tnear, _mm256_setzero_ps(), _CMP_GE_OQ)));
+  const unsigned leaving =
+      _mm512_cmp_pd_mask(c, zero, _CMP_GT_OQ) & _mm512_cmp_pd_mask(b, zero, _CMP_GT_OQ) &
+      static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(tnear, _mm256_setzero_ps(), _CMP_GE_OQ)));
   unsigned live = positive_a & ~leaving & (active >> first & 0xFFu);
   if (live == 0) return 0;
   const __m512d s = _mm512_div_pd(b, a);
@@ -143,7 +144,8 @@ std::uint32_t scalar_lanes(const Vec3& center, float radius, const RayLanes& ray
   const __m256 far_root = _mm512_cvtpd_ps(t1);
   const __m256 near_ok =
       _mm256_and_ps(_mm256_cmp_ps(near_root, tnear, _CMP_GT_OQ), _mm256_cmp_ps(near_root, tfar, _CMP_LE_OQ));
-  const __m256 far_ok = _mm256_and_ps(_mm256_cmp_ps(far_root, tnear, _CMP_GT_OQ), _mm256_cmp_ps(far_root, tfar, _CMP_LE_OQ));
+  const __m256 far_ok =
+      _mm256_and_ps(_mm256_cmp_ps(far_root, tnear, _CMP_GT_OQ), _mm256_cmp_ps(far_root, tfar, _CMP_LE_OQ));
   const __m256 t = _mm256_blendv_ps(far_root, near_root, near_ok);
   const unsigned hit_bits = live & static_cast<unsigned>(_mm256_movemask_ps(_mm256_or_ps(near_ok, far_ok)));
   alignas(32) float lanes[8];

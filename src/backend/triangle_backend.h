@@ -34,8 +34,8 @@ namespace rtpro {
 // Triangle `prim` against the `lanes` of a packet, lane by lane, as native_hit_lanes of a
 // SphereSet (sphere_backend.h).
 template <typename OnHit>
-[[gnu::always_inline]] inline void native_hit_lanes(const TriangleMesh& mesh, std::uint32_t prim, const RayPacket& packet,
-                                                    std::uint32_t lanes, OnHit&& on_hit) {
+[[gnu::always_inline]] inline void native_hit_lanes(const TriangleMesh& mesh, std::uint32_t prim,
+                                                    const RayPacket& packet, std::uint32_t lanes, OnHit&& on_hit) {
   const TriangleIndices& tri = mesh.triangles[prim];
   for (; lanes != 0; lanes &= lanes - 1) {
     const auto k = static_cast<unsigned>(std::countr_zero(lanes));

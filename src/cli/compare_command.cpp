@@ -51,14 +51,14 @@ const CLI::Validator kNonNegative(
       char* end = nullptr;
       const double value = std::strtod(text.c_str(), &end);
       return (end != text.c_str() && *end == '\0' && value >= 0.0) ? std::string()
-                                                                    : "must be a number >= 0, got " + text;
+                                                                   : "must be a number >= 0, got " + text;
     },
     "NONNEGATIVE");
 
 std::string percent_of_pixels(std::size_t pixels, const ImageComparison& comparison) {
   std::ostringstream text;
-  text << pixels << " pixels (" << (comparison.pixel_count ? 100.0 * double(pixels) / double(comparison.pixel_count) : 0.0)
-       << "%)";
+  text << pixels << " pixels ("
+       << (comparison.pixel_count ? 100.0 * double(pixels) / double(comparison.pixel_count) : 0.0) << "%)";
   return text.str();
 }
 
@@ -143,10 +143,8 @@ int run_compare(CompareCommandOptions o) {
       o.diff.clear();
     }
   }
-  if (o.json)
-    print_json(o, reference, comparison);
-  else
-    print_report(o, reference, comparison);
+  if (o.json) print_json(o, reference, comparison);
+  else print_report(o, reference, comparison);
   return comparison.passed ? kExitOk : kExitRuntimeFailure;
 }
 

@@ -64,8 +64,8 @@ void print_report(const CrosscheckReport& r) {
   std::printf("  mismatches         %zu\n", r.mismatches);
   std::printf("  top-level spheres  %zu closest hits\n", r.top_level_sphere_hits);
   std::printf("  occlusion          %zu queries, %zu mismatches\n", r.occlusion_queries, r.occlusion_mismatches);
-  std::printf("  largest errors     distance %.3g, barycentric point %.3g (relative to coordinates)\n",
-              r.max_t_error, r.max_surface_error);
+  std::printf("  largest errors     distance %.3g, barycentric point %.3g (relative to coordinates)\n", r.max_t_error,
+              r.max_surface_error);
   if (!r.worst.empty()) std::printf("worst cases:\n");
   for (const CrosscheckCase& c : r.worst) {
     std::printf("  ray %zu (%s) %s%s%s%s\n", c.index, c.camera_ray ? "camera" : "random", agreement_name(c.agreement),

@@ -46,8 +46,8 @@ std::string what_was_used(const DenoiseReport& report) {
   for (std::size_t i = 0; i < report.features.size(); ++i) text += (i ? ", " : "") + report.features[i];
   if (report.features.empty()) text += "the colour alone";
   text += report.used_measured_noise ? "; noise measured by the renderer" : "; noise estimated from the neighbourhood";
-  return text + "; " + std::to_string(report.firefly_pixels) + (report.firefly_pixels == 1 ? " firefly" : " fireflies") +
-         " left out";
+  return text + "; " + std::to_string(report.firefly_pixels) +
+         (report.firefly_pixels == 1 ? " firefly" : " fireflies") + " left out";
 }
 
 std::string seconds_text(double seconds) {
@@ -60,9 +60,8 @@ int run_denoise(const DenoiseCommandOptions& o) {
   if (o.threads && *o.threads < 0) throw InputError("--threads must be >= 0 (0: all cores)");
   const std::filesystem::path input = o.input, output = o.output;
   check_image_output(output);  // a typo in -o fails now, not after the denoise
-  const int threads = o.threads.value_or(0) > 0
-                          ? *o.threads
-                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads =
+      o.threads.value_or(0) > 0 ? *o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
   const auto start = std::chrono::steady_clock::now();

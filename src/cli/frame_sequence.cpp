@@ -47,8 +47,7 @@ FrameRange parse_frame_range(const std::string& text) {
     throw InputError("--frames '" + text + "': the step must be at most " + std::to_string(kMaxFrameNumber));
   if (range.first < 0 || range.last > kMaxFrameNumber)
     throw InputError("--frames '" + text + "': frame numbers go from 0 to " + std::to_string(kMaxFrameNumber));
-  if (range.first > range.last)
-    throw InputError("--frames '" + text + "': the first frame is after the last");
+  if (range.first > range.last) throw InputError("--frames '" + text + "': the first frame is after the last");
   if ((range.last - range.first) / range.step + 1 > kMaxFrames)
     throw InputError("--frames '" + text + "': more than " + std::to_string(kMaxFrames) + " frames");
   return range;

@@ -57,8 +57,9 @@ nlohmann::json info_json(const std::string& file, const RenderScene& scene, cons
                       {"warnings", m.stats.warnings},
                       {"load_seconds", m.load_seconds}});
   // An empty scene has no bounds: null, not [inf, ...] (which is not even valid JSON).
-  const nlohmann::json bounds = s.bounds.empty() ? nlohmann::json(nullptr)
-                                                 : nlohmann::json{{"lower", vec_json(s.bounds.lower)}, {"upper", vec_json(s.bounds.upper)}};
+  const nlohmann::json bounds =
+      s.bounds.empty() ? nlohmann::json(nullptr)
+                       : nlohmann::json{{"lower", vec_json(s.bounds.lower)}, {"upper", vec_json(s.bounds.upper)}};
   return {{"scene", file},
           {"camera",
            {{"position", vec_json(scene.camera.position)},
@@ -66,7 +67,9 @@ nlohmann::json info_json(const std::string& file, const RenderScene& scene, cons
             {"fov", scene.camera.fov_degrees},
             {"resolution", {scene.camera.width, scene.camera.height}}}},
           {"render",
-           {{"spp", scene.render.spp}, {"max_depth", scene.render.max_depth}, {"seed", scene.render.seed},
+           {{"spp", scene.render.spp},
+            {"max_depth", scene.render.max_depth},
+            {"seed", scene.render.seed},
             {"integrator", integrator_name(scene.render.integrator)}}},
           {"materials", s.materials},
           {"lights",
@@ -115,8 +118,8 @@ void print_text(const std::string& file, const RenderScene& scene, const SceneSu
   if (s.bounds.empty()) {
     std::cout << "bounds       none (nothing to render)\n";
   } else {
-    std::cout << "bounds       [" << s.bounds.lower.x << ", " << s.bounds.lower.y << ", " << s.bounds.lower.z << "] .. ["
-              << s.bounds.upper.x << ", " << s.bounds.upper.y << ", " << s.bounds.upper.z << "]\n";
+    std::cout << "bounds       [" << s.bounds.lower.x << ", " << s.bounds.lower.y << ", " << s.bounds.lower.z
+              << "] .. [" << s.bounds.upper.x << ", " << s.bounds.upper.y << ", " << s.bounds.upper.z << "]\n";
   }
   std::cout << std::setprecision(1) << "memory       " << mib(s.geometry_bytes) << " MiB geometry + ~"
             << mib(s.estimated_bvh_bytes) << " MiB native BVH (estimate)\n";
@@ -155,7 +158,8 @@ int run_info(const InfoOptions& o) {
 void add_info_command(CLI::App& app, Action& action) {
   auto options = std::make_shared<InfoOptions>();
   CLI::App* cmd = app.add_subcommand("info", "Describe what a scene holds without rendering it");
-  cmd->add_option("scene", options->scene, "Scene file (YAML or glTF), or '-' for a YAML scene on standard input")->required();
+  cmd->add_option("scene", options->scene, "Scene file (YAML or glTF), or '-' for a YAML scene on standard input")
+      ->required();
   add_scene_override_options(*cmd, options->overrides, options->defines);
   cmd->add_flag("--json", options->json, "Print JSON instead of text");
   cmd->add_option("--max-memory", options->max_memory_mb,

@@ -11,7 +11,8 @@ namespace rtpro::cli {
 MemoryBudget parse_memory_budget(const std::string& text) {
   if (text.empty())
     return {default_memory_budget(),
-            "the default: the smaller of " + format_bytes(kDefaultMemoryBudgetCap) + " and the available memory", false};
+            "the default: the smaller of " + format_bytes(kDefaultMemoryBudgetCap) + " and the available memory",
+            false};
   std::uint64_t mib = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), mib);
   constexpr std::uint64_t kMaxMib = std::uint64_t{1} << 40;  // 1 EiB: beyond any machine

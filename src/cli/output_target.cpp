@@ -28,7 +28,9 @@ std::string lowercase(std::string text) {
   return text;
 }
 
-std::string without_dot(const std::string& format) { return !format.empty() && format[0] == '.' ? format.substr(1) : format; }
+std::string without_dot(const std::string& format) {
+  return !format.empty() && format[0] == '.' ? format.substr(1) : format;
+}
 
 constexpr const char* kStdoutTemporaryPrefix = "rtpro-stdout-";
 
@@ -48,7 +50,8 @@ OutputTarget::OutputTarget(const std::string& output, const std::string& format)
   if (output == "-") {
     if (wanted.empty()) throw InputError("-o - writes to standard output and needs --format, e.g. --format exr");
     if (::isatty(STDOUT_FILENO) == 1)
-      throw InputError("-o - would write binary image data to the terminal; redirect standard output to a file or pipe");
+      throw InputError(
+          "-o - would write binary image data to the terminal; redirect standard output to a file or pipe");
     to_stdout_ = true;
     file_ = temporary_output(wanted);
     return;
@@ -121,7 +124,8 @@ void apply_exposure(Image& image, double stops) {
   for (int c = 0; c < image.channel_count(); ++c) {
     const std::string& name = image.channels[static_cast<std::size_t>(c)];
     if (name != "R" && name != "G" && name != "B") continue;
-    for (std::size_t i = static_cast<std::size_t>(c); i < image.data.size(); i += image.channels.size()) image.data[i] *= scale;
+    for (std::size_t i = static_cast<std::size_t>(c); i < image.data.size(); i += image.channels.size())
+      image.data[i] *= scale;
   }
 }
 

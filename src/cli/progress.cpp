@@ -43,12 +43,9 @@ std::string format_duration(double seconds) {
 }
 
 ProgressReporter::ProgressReporter(ProgressMode mode, bool stderr_is_terminal, long frame)
-    : enabled_(mode != ProgressMode::kNever),
-      json_(mode == ProgressMode::kJson),
-      frame_(frame),
-      bar_(!json_ && (mode == ProgressMode::kAlways || stderr_is_terminal)),
-      start_(std::chrono::steady_clock::now()),
-      interval_(bar_    ? std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::milliseconds(250))
+    : enabled_(mode != ProgressMode::kNever), json_(mode == ProgressMode::kJson), frame_(frame),
+      bar_(!json_ && (mode == ProgressMode::kAlways || stderr_is_terminal)), start_(std::chrono::steady_clock::now()),
+      interval_(bar_ ? std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::milliseconds(250))
                 : json_ ? std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::seconds(1))
                         : std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::seconds(5))) {}
 

@@ -46,7 +46,8 @@ int run_renders(const RenderCommandOptions& o, Communicator* job) {
       log.info("frame " + std::to_string(frame) + " skipped: " + one.output + " exists (--skip-existing)");
       continue;
     }
-    one.scene_overrides.push_back({"variables.frame=" + std::to_string(frame), "--frames (frame " + std::to_string(frame) + ")"});
+    one.scene_overrides.push_back(
+        {"variables.frame=" + std::to_string(frame), "--frames (frame " + std::to_string(frame) + ")"});
     const int code = run_render(one, job);
     if (code != kExitOk) return code;
   }
@@ -65,10 +66,8 @@ int run_renders_in_mpi_job(const RenderCommandOptions& o) {
     job.reset();
     return code;
   } catch (const std::exception& e) {
-    if (rank == 0)
-      std::fprintf(stderr, "rtpro: error: %s\n", e.what());
-    else
-      std::fprintf(stderr, "rtpro: error on rank %d: %s\n", rank, e.what());
+    if (rank == 0) std::fprintf(stderr, "rtpro: error: %s\n", e.what());
+    else std::fprintf(stderr, "rtpro: error on rank %d: %s\n", rank, e.what());
     std::fflush(stderr);
     job->abort(dynamic_cast<const InputError*>(&e) ? kExitInputError : kExitRuntimeFailure);
   }

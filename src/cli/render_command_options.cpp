@@ -7,50 +7,55 @@ namespace rtpro::cli {
 
 void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
   cmd.add_option("scene", o.scene, "Scene file (YAML or glTF), or '-' for a YAML scene on standard input")->required();
-  cmd.footer("Scene values: the file, then --set, -D, --spp, --size, --seed, --max-depth and --integrator in the order typed (the "
-              "last to set a key wins); every value is checked by the scene file's own rules.");
+  cmd.footer(
+      "Scene values: the file, then --set, -D, --spp, --size, --seed, --max-depth and --integrator in the order typed "
+      "(the "
+      "last to set a key wins); every value is checked by the scene file's own rules.");
   cmd.add_option("-o,--output", o.output, kOutputFormatsHelp)->required();
   cmd.add_option("--format", o.format, "Image format for -o - (standard output): exr, png, tif, hdr, ...");
   cmd.add_option("--exposure", o.exposure,
-                  "Scale the rendered colour by 2^STOPS, in every format (before the view transform for display "
-                  "formats; not the AOVs)");
+                 "Scale the rendered colour by 2^STOPS, in every format (before the view transform for display "
+                 "formats; not the AOVs)");
   cmd.add_option("--backend", o.backend, "Ray tracing backend: embree or native")
       ->check(CLI::IsMember({"native", "embree"}))
       ->capture_default_str();
   cmd.add_option("--spp", o.spp,
-                  "Samples per pixel, 1 to 65536, stratified over the most nearly square grid (48: 8x6)");
+                 "Samples per pixel, 1 to 65536, stratified over the most nearly square grid (48: 8x6)");
   cmd.add_option("--size", o.size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
   cmd.add_option("--threads", o.threads, "Worker threads (0: all cores)");
   cmd.add_option("--seed", o.seed, "Seed of the pixel sampler");
   cmd.add_option("--max-depth", o.max_depth,
-                  "Most bounces after the camera ray: mirror bounces (whitted), path vertices (path)");
+                 "Most bounces after the camera ray: mirror bounces (whitted), path vertices (path)");
   cmd.add_option("--integrator", o.integrator,
-                  "Light transport: path (physically based path tracing with MIS) or whitted (Phong, mirrors, "
-                  "glass); default: the scene's render.integrator, else whitted")
+                 "Light transport: path (physically based path tracing with MIS) or whitted (Phong, mirrors, "
+                 "glass); default: the scene's render.integrator, else whitted")
       ->check(CLI::IsMember({"path", "whitted"}));
   add_scene_override_options(cmd, o.overrides, o.defines);
   cmd.add_option("--display-server", o.display_server,
-                  "Stream the image after each pass to the tev image viewer listening at HOST:PORT (tev's default: "
-                  "127.0.0.1:14158); the render goes on if it is absent or goes away");
+                 "Stream the image after each pass to the tev image viewer listening at HOST:PORT (tev's default: "
+                 "127.0.0.1:14158); the render goes on if it is absent or goes away");
   cmd.add_option("--frames", o.frames,
-                  "Render frames FIRST-LAST[:STEP] (e.g. 1-240:2), each to -o with its '####' replaced by the "
-                  "zero-padded frame number; the scene variable 'frame' follows (keyframed values, $frame)");
+                 "Render frames FIRST-LAST[:STEP] (e.g. 1-240:2), each to -o with its '####' replaced by the "
+                 "zero-padded frame number; the scene variable 'frame' follows (keyframed values, $frame)");
   cmd.add_flag("--skip-existing", o.skip_existing, "Skip frames (or the single output) whose file already exists");
   cmd.add_option("--region", o.region, "Render only pixels x0,y0,x1,y1 (x1, y1 exclusive)");
   cmd.add_flag("--crop", o.crop, "With --region: write only the region instead of a full-size image");
-  cmd.add_option("--aov", o.aovs, "Extra EXR layers: albedo,normal,depth,object-id,halves,variance,spp (EXR outputs only)")
+  cmd.add_option("--aov", o.aovs,
+                 "Extra EXR layers: albedo,normal,depth,object-id,halves,variance,spp (EXR outputs only)")
       ->delimiter(',')
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd.add_flag("--denoise", o.denoise,
-                "Denoise the finished image with rtpro's own denoiser (the albedo, normal, depth and half-buffer "
-                "layers are rendered for it); an EXR keeps the noisy colour as noisy.R/G/B and those layers");
+               "Denoise the finished image with rtpro's own denoiser (the albedo, normal, depth and half-buffer "
+               "layers are rendered for it); an EXR keeps the noisy colour as noisy.R/G/B and those layers");
   cmd.add_option("--tile-size", o.tile_size, "Tile edge in pixels")->capture_default_str();
   cmd.add_option("--ocio-config", o.ocio_config, "OpenColorIO config (default: $OCIO, else bundled)");
   cmd.add_option("--ocio-display", o.display, "OCIO display for display-referred outputs (default: the config's)");
   cmd.add_option("--display", o.deprecated_display, "Deprecated spelling of --ocio-display")->group("");
   cmd.add_option("--view", o.view, "OCIO view for display-referred outputs (default: the display's)");
-  cmd.add_option("--progress", o.progress, "Progress on stderr: never, auto (bar on a terminal), always, or json (one object a line, kept with -q)")
+  cmd.add_option(
+         "--progress", o.progress,
+         "Progress on stderr: never, auto (bar on a terminal), always, or json (one object a line, kept with -q)")
       ->type_name("TEXT:{never,auto,always,json}")
       ->capture_default_str();
   cmd.add_flag("-q,--quiet", o.quiet, "Print only errors");
@@ -58,34 +63,35 @@ void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
   cmd.add_flag("--stats", o.stats, "Print statistics at the end");
   cmd.add_option("--stats-json", o.stats_json, "Write statistics as JSON to this file");
   cmd.add_flag("--resume", o.resume,
-                "Continue an interrupted or killed render of the same scene and settings from its journal "
-                "(OUTPUT.rtpro-journal): only the missing tiles are rendered, and the image is bit-identical to "
-                "an uninterrupted one");
+               "Continue an interrupted or killed render of the same scene and settings from its journal "
+               "(OUTPUT.rtpro-journal): only the missing tiles are rendered, and the image is bit-identical to "
+               "an uninterrupted one");
   cmd.add_option("--time-limit", o.time_limit,
-                  "Stop after this many seconds with the passes finished by then (the first always finishes)");
+                 "Stop after this many seconds with the passes finished by then (the first always finishes)");
   cmd.add_option("--rank-timeout", o.rank_timeout,
-                  "Under mpirun: end the job when a rank sends nothing for this many seconds while the ranks render "
-                  "(stopped, hung or unreachable), as if it had died; the journal keeps the finished tiles "
-                  "(0: wait for ever)")
+                 "Under mpirun: end the job when a rank sends nothing for this many seconds while the ranks render "
+                 "(stopped, hung or unreachable), as if it had died; the journal keeps the finished tiles "
+                 "(0: wait for ever)")
       ->capture_default_str();
   cmd.add_option("--noise-threshold", o.noise_threshold,
-                  "Adaptive sampling: a pixel stops when its error (--noise-metric) is below this, e.g. 0.01 "
-                  "(cycles) or 0.002 (relmse); --spp is then the most a pixel gets");
+                 "Adaptive sampling: a pixel stops when its error (--noise-metric) is below this, e.g. 0.01 "
+                 "(cycles) or 0.002 (relmse); --spp is then the most a pixel gets");
   cmd.add_option("--noise-metric", o.noise_metric,
-                  "The error --noise-threshold stops at: cycles (Cycles' measure: every pixel stops at about one "
-                  "error) or relmse (one more sample's gain in relative MSE: the lowest relMSE for the time)")
+                 "The error --noise-threshold stops at: cycles (Cycles' measure: every pixel stops at about one "
+                 "error) or relmse (one more sample's gain in relative MSE: the lowest relMSE for the time)")
       ->check(CLI::IsMember({"cycles", "relmse"}))
       ->default_str("cycles");
   cmd.add_option("--min-samples", o.min_samples,
-                  "With --noise-threshold: samples every pixel takes first (0: 16, or more for small thresholds)");
+                 "With --noise-threshold: samples every pixel takes first (0: 16, or more for small thresholds)");
   cmd.add_flag("--no-journal", o.no_journal,
-                "Keep no resume journal beside the output (one is kept while rendering and removed once the image "
-                "is written)");
+               "Keep no resume journal beside the output (one is kept while rendering and removed once the image "
+               "is written)");
   add_embree_options(cmd, o.backend_options);
-  cmd.add_flag("--embree-compact", o.backend_options.embree_compact, "Smaller Embree BVH (about half), about 20% slower to trace");
+  cmd.add_flag("--embree-compact", o.backend_options.embree_compact,
+               "Smaller Embree BVH (about half), about 20% slower to trace");
   cmd.add_option("--max-memory", o.max_memory_mb,
-                  "Memory budget in MiB for the whole render, checked against an up-front estimate and given to "
-                  "Embree as its limit (0: no limit; default: the smaller of 4096 and the available memory)");
+                 "Memory budget in MiB for the whole render, checked against an up-front estimate and given to "
+                 "Embree as its limit (0: no limit; default: the smaller of 4096 and the available memory)");
 }
 
 }  // namespace rtpro::cli

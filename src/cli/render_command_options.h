@@ -20,13 +20,13 @@ struct RenderCommandOptions {
   std::string spp, max_depth, seed, size, integrator;
   std::optional<int> threads;
   std::string ocio_config, display, deprecated_display, view;
-  std::string format;      // for -o -
-  double exposure = 0.0;   // stops
+  std::string format;     // for -o -
+  double exposure = 0.0;  // stops
   std::vector<std::string> overrides, defines;
   std::vector<SceneOverride> scene_overrides;  // all of the above, in command-line order
-  std::string display_server;  // HOST:PORT of a tev for a live preview
-  std::string frames;  // FIRST-LAST[:STEP]
-  long frame = -1;     // the frame of --frames being rendered
+  std::string display_server;                  // HOST:PORT of a tev for a live preview
+  std::string frames;                          // FIRST-LAST[:STEP]
+  long frame = -1;                             // the frame of --frames being rendered
   bool skip_existing = false;
   std::string region;
   bool crop = false;
@@ -46,7 +46,7 @@ struct RenderCommandOptions {
   int min_samples = 0;           // 0: automatic (adaptive_sampling.h)
   std::string noise_metric = "cycles";
   BackendOptions backend_options;  // Embree settings from the command line; threads and memory set later
-  std::string max_memory_mb;  // MiB; empty: the default budget (see parse_memory_budget)
+  std::string max_memory_mb;       // MiB; empty: the default budget (see parse_memory_budget)
 };
 
 // Registers every option of `rtpro render` on `cmd`, writing into `o` (which must outlive it).

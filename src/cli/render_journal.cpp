@@ -71,9 +71,9 @@ OpenedJournal open_render_journal(const std::filesystem::path& output, const Job
     }
     log.info("resuming: " + std::to_string(contents.tiles.size()) + " records of " + std::to_string(grid.count()) +
              " tiles in passes from " + file.string() +
-             (contents.dropped_records > 0
-                  ? " (" + std::to_string(contents.dropped_records) + " damaged records dropped; their tiles render again)"
-                  : ""));
+             (contents.dropped_records > 0 ? " (" + std::to_string(contents.dropped_records) +
+                                                 " damaged records dropped; their tiles render again)"
+                                           : ""));
     opened.finished = std::move(contents.tiles);
   } else if (exists) {
     log.warning("replacing the journal of an unfinished render at " + file.string() +

@@ -43,15 +43,15 @@ std::string RenderStatistics::text() const {
                 "  speed         %.2f Mrays/s\n"
                 "  rejected      %llu rays,  %llu NaN samples\n"
                 "  memory        peak RSS %.1f MiB, acceleration structure %.1f MiB\n",
-                width, height, spp, complete ? "" : " (interrupted: partial)", backend.c_str(), threads,
-                load_seconds, build_seconds, render_seconds, write_seconds, total_seconds,
-                rays_text(rays).c_str(),
+                width, height, spp, complete ? "" : " (interrupted: partial)", backend.c_str(), threads, load_seconds,
+                build_seconds, render_seconds, write_seconds, total_seconds, rays_text(rays).c_str(),
                 mrays_per_second(), static_cast<unsigned long long>(rejected_rays),
                 static_cast<unsigned long long>(nan_samples), mib(peak_rss_bytes), mib(acceleration_bytes));
   std::string out = buffer;
   if (ranks.empty()) return out;
-  std::snprintf(buffer, sizeof buffer, "  ranks         %zu, load imbalance %.3f (busiest rank's busy time over the mean)\n",
-                ranks.size(), load_imbalance(ranks));
+  std::snprintf(buffer, sizeof buffer,
+                "  ranks         %zu, load imbalance %.3f (busiest rank's busy time over the mean)\n", ranks.size(),
+                load_imbalance(ranks));
   out += buffer;
   for (const RankStats& r : ranks) {
     std::snprintf(buffer, sizeof buffer,
@@ -70,26 +70,27 @@ std::string RenderStatistics::text() const {
 }
 
 nlohmann::json RenderStatistics::json() const {
-  nlohmann::json out = {{"scene", scene},
-          {"output", output},
-          {"backend", backend},
-          {"threads", threads},
-          {"spp", spp},
-          {"resolution", {width, height}},
-          {"complete", complete},
-          {"passes", {{"done", passes_done}, {"total", passes_total}, {"stop", stop}, {"seconds", pass_seconds}}},
-          {"seconds",
-           {{"load", load_seconds},
-            {"build", build_seconds},
-            {"render", render_seconds},
-            {"write", write_seconds},
-            {"denoise", denoise_seconds},
-            {"total", total_seconds}}},
-          {"rays", rays_json(rays)},
-          {"mrays_per_second", mrays_per_second()},
-          {"rejected_rays", rejected_rays},
-          {"nan_samples", nan_samples},
-          {"memory_bytes", {{"peak_rss", peak_rss_bytes}, {"acceleration", acceleration_bytes}}}};
+  nlohmann::json out = {
+      {"scene", scene},
+      {"output", output},
+      {"backend", backend},
+      {"threads", threads},
+      {"spp", spp},
+      {"resolution", {width, height}},
+      {"complete", complete},
+      {"passes", {{"done", passes_done}, {"total", passes_total}, {"stop", stop}, {"seconds", pass_seconds}}},
+      {"seconds",
+       {{"load", load_seconds},
+        {"build", build_seconds},
+        {"render", render_seconds},
+        {"write", write_seconds},
+        {"denoise", denoise_seconds},
+        {"total", total_seconds}}},
+      {"rays", rays_json(rays)},
+      {"mrays_per_second", mrays_per_second()},
+      {"rejected_rays", rejected_rays},
+      {"nan_samples", nan_samples},
+      {"memory_bytes", {{"peak_rss", peak_rss_bytes}, {"acceleration", acceleration_bytes}}}};
   if (!ranks.empty()) {
     nlohmann::json per_rank = nlohmann::json::array();
     for (const RankStats& r : ranks)

@@ -28,9 +28,9 @@ struct RenderStatistics {
   std::size_t peak_rss_bytes = 0;
   bool complete = true;
   int passes_done = 0, passes_total = 0;
-  std::string stop = "all passes";  // or "converged", "time limit", "interrupted"
+  std::string stop = "all passes";   // or "converged", "time limit", "interrupted"
   std::vector<double> pass_seconds;  // of the passes rendered by this run
-  std::vector<RankStats> ranks;  // of a distributed render (mpirun), by rank; empty otherwise
+  std::vector<RankStats> ranks;      // of a distributed render (mpirun), by rank; empty otherwise
 
   double mrays_per_second() const { return render_seconds > 0 ? rays.total() / render_seconds * 1e-6 : 0.0; }
   std::string text() const;

@@ -61,7 +61,8 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   Log log(o.quiet || !leader ? LogLevel::kQuiet : (o.verbose > 0 ? LogLevel::kVerbose : LogLevel::kNormal));
   const BackendKind kind = parse_backend_kind(o.backend);
   if (o.threads && *o.threads < 0) throw InputError("--threads must be >= 0 (0: all cores)");
-  const int threads = o.threads.value_or(0) > 0 ? *o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads =
+      o.threads.value_or(0) > 0 ? *o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   RenderOptions render_options;
   render_options.region = parse_region(o.region);
   if (o.tile_size < 1) throw InputError("--tile-size must be at least 1 pixel, got " + std::to_string(o.tile_size));
@@ -97,7 +98,8 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   const ProgressMode progress_mode =
       !leader || (o.quiet && chosen_progress != ProgressMode::kJson) ? ProgressMode::kNever : chosen_progress;
   if (o.crop && !render_options.region) throw InputError("--crop needs --region");
-  if (o.resume && o.no_journal) throw InputError("--resume reads the journal that --no-journal turns off: give one of them");
+  if (o.resume && o.no_journal)
+    throw InputError("--resume reads the journal that --no-journal turns off: give one of them");
   if (o.resume && output.to_stdout()) throw InputError("--resume needs an output file: -o - keeps no journal");
   if (!(o.time_limit >= 0.0 && o.time_limit < 1e9))
     throw InputError("--time-limit must be a number of seconds >= 0 (0: no limit)");
@@ -109,8 +111,9 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   if (o.min_samples < 0) throw InputError("--min-samples must be >= 0 (0: automatic)");
   if (o.min_samples > 0 && o.noise_threshold == 0.0) throw InputError("--min-samples needs --noise-threshold");
   if (o.noise_threshold > 0.0 && job)
-    throw InputError("--noise-threshold decides between passes from the whole image, which only rank 0 has: "
-                     "render adaptively in one process");
+    throw InputError(
+        "--noise-threshold decides between passes from the whole image, which only rank 0 has: "
+        "render adaptively in one process");
   render_options.time_limit_seconds = o.time_limit;
   const MemoryBudget memory = parse_memory_budget(o.max_memory_mb);
 
@@ -137,7 +140,6 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   // Must exist before any TBB or Embree work so the cap really holds.
   tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
-
   const SceneDescription description = parse_with_overrides(o.scene, o.scene_overrides);
   check_region_fits(render_options.region, o.region, description.camera.width, description.camera.height);
   // Refused before anything large is allocated: image buffers, flattened instances, meshes.
@@ -152,9 +154,10 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
     throw InputError(std::string(o.noise_threshold > 0.0 ? "--noise-threshold" : "--time-limit") +
                      " works between passes, and this render is one pass: the stratified sampler fills its strata "
                      "grid only with all spp samples (set render.sampler: sobol, the path integrator's default)");
-  render_options.adaptive = {static_cast<float>(o.noise_threshold),
-                             resolved_min_samples(o.min_samples, static_cast<float>(o.noise_threshold), scene.render.spp),
-                             parse_noise_metric(o.noise_metric)};
+  render_options.adaptive = {
+      static_cast<float>(o.noise_threshold),
+      resolved_min_samples(o.min_samples, static_cast<float>(o.noise_threshold), scene.render.spp),
+      parse_noise_metric(o.noise_metric)};
   for (const auto& mesh : report.meshes) {
     log.verbose("loaded " + mesh.file + ": " + std::to_string(mesh.stats.triangles) + " triangles in " +
                 std::to_string(mesh.load_seconds) + " s");
@@ -218,7 +221,8 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
     settings.adaptive = render_options.adaptive;
     const JobIdentity identity = render_job_identity(description, report, scene, settings);
     if (job) agree_on_job(*job, identity);
-    if (journaled) opened = open_render_journal(output.file(), identity, grid, render_sums(render_options).floats(), o.resume, log);
+    if (journaled)
+      opened = open_render_journal(output.file(), identity, grid, render_sums(render_options).floats(), o.resume, log);
   }
   if (opened.journal) {
     render_options.journal_items = opened.finished;
@@ -241,8 +245,8 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   }
   if (job)
     render_options.tile_executor = [&job, &stats, &render_thread, rank_timeout](const TileRenderer& renderer,
-                                                                               const TileGrid& tiles, TileSource& source,
-                                                                               TileSink& sink) {
+                                                                                const TileGrid& tiles,
+                                                                                TileSource& source, TileSink& sink) {
       stats.ranks = lead_distributed_render(*job, renderer, tiles, source, sink, &*render_thread, rank_timeout);
     };
   const InterruptGuard interrupt;
@@ -293,11 +297,11 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   if (render_options.region) write_options.metadata.push_back({"rtpro:region", o.region});
   if (o.frame >= 0) write_options.metadata.push_back({"rtpro:frame", std::to_string(o.frame)});
   if (result.passes_done < result.passes_total)
-    write_options.metadata.push_back({"rtpro:passes", std::to_string(result.passes_done) + " of " +
-                                                          std::to_string(result.passes_total)});
+    write_options.metadata.push_back(
+        {"rtpro:passes", std::to_string(result.passes_done) + " of " + std::to_string(result.passes_total)});
   if (!result.complete())
-    write_options.metadata.push_back({"rtpro:partial", std::to_string(result.tiles_done) + " of " +
-                                                           std::to_string(result.tiles_total) + " tiles"});
+    write_options.metadata.push_back(
+        {"rtpro:partial", std::to_string(result.tiles_done) + " of " + std::to_string(result.tiles_total) + " tiles"});
   if (o.exposure != 0.0) write_options.metadata.push_back({"rtpro:exposure", std::to_string(o.exposure)});
   Image image = o.crop ? crop_image(result.image, *render_options.region) : std::move(result.image);
   if (o.denoise && result.complete()) {

@@ -13,7 +13,7 @@
 namespace rtpro::cli {
 
 struct SceneImages {
-  std::unique_ptr<TextureLookup> textures;       // null without image textures
+  std::unique_ptr<TextureLookup> textures;      // null without image textures
   std::optional<EnvironmentLight> environment;  // empty without an environment
 };
 

@@ -38,11 +38,12 @@ SceneOverride size_override(const std::string& value) {
 SceneOverride variable_override(const std::string& value) {
   const std::size_t equals = value.find('=');
   const std::string name = value.substr(0, equals);
-  const bool valid_name = !name.empty() && name.find_first_not_of("abcdefghijklmnopqrstuvwxyz"
-                                                                   "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") ==
-                                               std::string::npos;
+  const bool valid_name = !name.empty() && name.find_first_not_of(
+                                               "abcdefghijklmnopqrstuvwxyz"
+                                               "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") == std::string::npos;
   if (equals == std::string::npos || !valid_name)
-    throw InputError("-D '" + value + "': expected NAME=VALUE with a name of letters, digits and '_', e.g. -D radius=2");
+    throw InputError("-D '" + value +
+                     "': expected NAME=VALUE with a name of letters, digits and '_', e.g. -D radius=2");
   return {"variables." + value, "-D " + value};
 }
 
@@ -70,7 +71,8 @@ std::string read_standard_input() {
   while (true) {
     const ssize_t got = ::read(STDIN_FILENO, chunk, sizeof chunk);
     if (got < 0 && errno == EINTR) continue;
-    if (got < 0) throw InputError(SourceLocation{"<stdin>"}, std::string("cannot read the scene: ") + std::strerror(errno));
+    if (got < 0)
+      throw InputError(SourceLocation{"<stdin>"}, std::string("cannot read the scene: ") + std::strerror(errno));
     if (got == 0) return text;
     if (text.size() + static_cast<std::size_t>(got) > kMaxStdinSceneBytes)
       throw InputError(SourceLocation{"<stdin>"}, "the scene on standard input is larger than the limit of 256 MiB");

@@ -71,7 +71,8 @@ std::string bash_completion(const CLI::App& app) {
     std::vector<std::string> all;
     for (const CLI::Option* option : visible_options(*command))
       for (const std::string& name : spellings(*option)) all.push_back(name);
-    out << "    " << command->get_name() << ")\n      options=\"" << space_separated(all) << "\"\n      case \"$prev\" in\n";
+    out << "    " << command->get_name() << ")\n      options=\"" << space_separated(all)
+        << "\"\n      case \"$prev\" in\n";
     for (const CLI::Option* option : visible_options(*command)) {
       if (!takes_value(*option)) continue;
       std::string pattern;
@@ -81,7 +82,8 @@ std::string bash_completion(const CLI::App& app) {
         out << "        " << pattern << ") COMPREPLY=(" << (names_a_file(*option) ? "$(compgen -f -- \"$cur\")" : "")
             << "); return ;;\n";
       } else {
-        out << "        " << pattern << ") COMPREPLY=($(compgen -W \"" << space_separated(values) << "\" -- \"$cur\")); return ;;\n";
+        out << "        " << pattern << ") COMPREPLY=($(compgen -W \"" << space_separated(values)
+            << "\" -- \"$cur\")); return ;;\n";
       }
     }
     out << "      esac\n      ;;\n";
@@ -127,7 +129,8 @@ std::string man_page(const CLI::App& app) {
     for (const CLI::Option* option : visible_options(*command)) {
       out << ".TP\n";
       std::string names;
-      for (const std::string& name : spellings(*option)) names += (names.empty() ? "" : ", ") + ("\\fB" + roff(name) + "\\fR");
+      for (const std::string& name : spellings(*option))
+        names += (names.empty() ? "" : ", ") + ("\\fB" + roff(name) + "\\fR");
       out << names;
       if (takes_value(*option)) out << " \\fI" << roff(option->get_type_name()) << "\\fR";
       out << "\n" << roff(option->get_description()) << "\n";

@@ -55,7 +55,8 @@ int connect_with_timeout(const DisplayServerAddress& address, int timeout_second
   int connected = -1;
   error = "no address";
   for (addrinfo* candidate = found; candidate && connected < 0; candidate = candidate->ai_next) {
-    const int fd = socket(candidate->ai_family, candidate->ai_socktype | SOCK_CLOEXEC | SOCK_NONBLOCK, candidate->ai_protocol);
+    const int fd =
+        socket(candidate->ai_family, candidate->ai_socktype | SOCK_CLOEXEC | SOCK_NONBLOCK, candidate->ai_protocol);
     if (fd < 0) continue;
     int result = connect(fd, candidate->ai_addr, candidate->ai_addrlen);
     if (result != 0 && errno == EINPROGRESS) {

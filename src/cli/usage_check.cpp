@@ -21,7 +21,8 @@ const CLI::App* find_subcommand(const CLI::App& app, const std::string& name) {
 
 std::vector<std::string> subcommand_names(const CLI::App& app) {
   std::vector<std::string> names;
-  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    names.push_back(sub->get_name());
   return names;
 }
 
@@ -115,8 +116,8 @@ void check_options(const CLI::App& command, const std::vector<std::string>& args
     if (!takes_one_value(*option)) continue;
     const auto [seen, first_time] = given.emplace(option, value);
     if (!first_time)
-      throw InputError(spelling + " given twice ('" + seen->second + "' and '" + value +
-                       "'); it takes one value" + help_pointer(command.get_name()));
+      throw InputError(spelling + " given twice ('" + seen->second + "' and '" + value + "'); it takes one value" +
+                       help_pointer(command.get_name()));
   }
 }
 
@@ -145,7 +146,8 @@ void check_command_line(const CLI::App& app, const std::vector<std::string>& arg
   const std::string& name = args[i];
   if (!name.empty() && name[0] == '-') unknown_option(app, name.substr(0, name.find('=')));
   const CLI::App* command = find_subcommand(app, name);
-  if (!command) throw InputError("unknown command '" + name + "'" + suggestion(name, subcommand_names(app)) + help_pointer(""));
+  if (!command)
+    throw InputError("unknown command '" + name + "'" + suggestion(name, subcommand_names(app)) + help_pointer(""));
   check_options(*command, args, i + 1);
 }
 
@@ -155,9 +157,9 @@ std::string usage_error_line(const CLI::App& app, const std::vector<std::string>
     if (find_subcommand(app, args[i])) command = args[i];
   std::string text = message;
   // CLI11's words for arguments no option or positional takes, in rtpro's voice.
-  for (const auto& [theirs, ours] : {std::pair<std::string, std::string>{"The following argument was not expected: ",
-                                                                          "unexpected argument: "},
-                                     {"The following arguments were not expected: ", "unexpected arguments: "}})
+  for (const auto& [theirs, ours] :
+       {std::pair<std::string, std::string>{"The following argument was not expected: ", "unexpected argument: "},
+        {"The following arguments were not expected: ", "unexpected arguments: "}})
     if (text.rfind(theirs, 0) == 0) text = ours + in_typed_order(text.substr(theirs.size()));
   std::string line = "rtpro: error: " + text;
   while (!line.empty() && line.back() == '\n') line.pop_back();

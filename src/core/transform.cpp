@@ -43,15 +43,13 @@ Vec3 Affine::apply_point(const Vec3& p) const {
 }
 
 Vec3 Affine::apply_vector(const Vec3& v) const {
-  return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
-          m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+  return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
           m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
 }
 
 Vec3 Affine::apply_normal_of_inverse(const Vec3& n) const {
   // (M⁻¹)ᵀ·n, with `this` already being M⁻¹: multiply by the transpose of the linear part.
-  return {m[0][0] * n.x + m[1][0] * n.y + m[2][0] * n.z,
-          m[0][1] * n.x + m[1][1] * n.y + m[2][1] * n.z,
+  return {m[0][0] * n.x + m[1][0] * n.y + m[2][0] * n.z, m[0][1] * n.x + m[1][1] * n.y + m[2][1] * n.z,
           m[0][2] * n.x + m[1][2] * n.y + m[2][2] * n.z};
 }
 
@@ -74,8 +72,7 @@ bool Affine::is_finite() const {
 }
 
 float Affine::determinant() const {
-  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-         m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
          m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
 

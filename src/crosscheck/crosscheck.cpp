@@ -165,8 +165,8 @@ double edge_distance(const WorldTriangle& tri, float u, float v) {
     const double base = magnitude(b - a);
     return base > 0.0 ? twice_area / base : 0.0;
   };
-  return std::min({(1.0 - u - v) * height(tri.p1, tri.p2), double(u) * height(tri.p2, tri.p0),
-                   double(v) * height(tri.p0, tri.p1)});
+  return std::min(
+      {(1.0 - u - v) * height(tri.p1, tri.p2), double(u) * height(tri.p2, tri.p0), double(v) * height(tri.p0, tri.p1)});
 }
 
 // Whether the ray passes an instanced sphere so nearly tangentially that the two backends'
@@ -243,8 +243,9 @@ void classify_different_primitives(const RenderScene& scene, const TracedRay& tr
   const bool reference_closer =
       traced.reference_found && (!traced.candidate_found || traced.reference.t <= traced.candidate.t);
   const Hit& closer = reference_closer ? traced.reference : traced.candidate;
-  const char* closer_side = reference_closer ? traced.candidate_found ? "reference" : "only the reference"
-                                             : traced.reference_found ? "candidate" : "only the candidate";
+  const char* closer_side = reference_closer         ? traced.candidate_found ? "reference" : "only the reference"
+                            : traced.reference_found ? "candidate"
+                                                     : "only the candidate";
   const bool both_top_spheres =
       both && is_top_level_sphere(scene, traced.reference) && is_top_level_sphere(scene, traced.candidate);
   if (both) c.t_error = relative_t_error(traced.ray, traced.reference.t, traced.candidate.t);
@@ -349,8 +350,8 @@ CrosscheckReport crosscheck(const RenderScene& scene, const Backend& reference, 
       for (std::size_t k = range.begin(); k != range.end(); ++k) {
         const std::size_t i = first + k;
         traced[k] = TracedRay{};
-        traced[k].ray = i < camera_rays ? random_camera_ray(scene.camera, options.seed, i)
-                                        : random_ray(bounds, options.seed, i);
+        traced[k].ray =
+            i < camera_rays ? random_camera_ray(scene.camera, options.seed, i) : random_ray(bounds, options.seed, i);
         trace(reference, candidate, traced[k]);
       }
     });

@@ -43,7 +43,8 @@ Image denoise(const Image& image, const DenoiseSettings& settings, DenoiseReport
 Image with_denoised_colour(const Image& noisy, const Image& denoised) {
   if (denoised.width != noisy.width || denoised.height != noisy.height || denoised.channel_count() != 3)
     throw InputError("the denoised image does not match the noisy one");
-  if (noisy.data.size() != static_cast<std::size_t>(noisy.width) * static_cast<std::size_t>(noisy.height) * noisy.channels.size())
+  if (noisy.data.size() !=
+      static_cast<std::size_t>(noisy.width) * static_cast<std::size_t>(noisy.height) * noisy.channels.size())
     throw InputError("the image's pixel data does not match its size");
   int colour[3], kept[3];
   for (int c = 0; c < 3; ++c) {

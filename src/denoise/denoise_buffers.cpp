@@ -113,7 +113,8 @@ PaddedPlane window_median(const PaddedPlane& plane, int radius) {
     for (int x = 0; x < width; ++x) {
       window.clear();
       for (int j = std::max(0, y - radius); j <= std::min(height - 1, y + radius); ++j)
-        for (int i = std::max(0, x - radius); i <= std::min(width - 1, x + radius); ++i) window.push_back(plane.at(i, j));
+        for (int i = std::max(0, x - radius); i <= std::min(width - 1, x + radius); ++i)
+          window.push_back(plane.at(i, j));
       const auto middle = window.begin() + static_cast<std::ptrdiff_t>(window.size() / 2);
       std::nth_element(window.begin(), middle, window.end());
       result.at(x, y) = *middle;

@@ -53,13 +53,9 @@ struct TileScratch {
 class RegressionFilter {
  public:
   RegressionFilter(const DenoiseBuffers& buffers, const DenoiseSettings& settings)
-      : b_(buffers),
-        radius_(settings.window_radius),
-        patch_(settings.patch_radius),
-        window_(2 * settings.window_radius + 1),
-        regressed_(regressed_features(buffers)),
-        regressors_(static_cast<int>(regressed_.size()) + 3),
-        moments_(moment_count(regressors_)),
+      : b_(buffers), radius_(settings.window_radius), patch_(settings.patch_radius),
+        window_(2 * settings.window_radius + 1), regressed_(regressed_features(buffers)),
+        regressors_(static_cast<int>(regressed_.size()) + 3), moments_(moment_count(regressors_)),
         tolerance2_(settings.colour_tolerance * settings.colour_tolerance),
         inv_albedo2_(1.0f / (settings.albedo_tolerance * settings.albedo_tolerance)),
         inv_normal2_(1.0f / (settings.normal_tolerance * settings.normal_tolerance)),
@@ -178,7 +174,8 @@ class RegressionFilter {
         Lanes sum{};
         auto add_squared = [&](int first, float inv_tolerance2) {
           for (int f = first; f < first + 3; ++f) {
-            const Lanes diff = load_lanes(b_.features[f].row(py) + x) - load_lanes(b_.features[f].row(py + dy) + x + dx);
+            const Lanes diff =
+                load_lanes(b_.features[f].row(py) + x) - load_lanes(b_.features[f].row(py + dy) + x + dx);
             sum += diff * diff * inv_tolerance2;
           }
         };
@@ -267,10 +264,8 @@ class RegressionFilter {
       for (int k = 0; k <= r; ++k) {
         double sum = l[r][k];
         for (int j = 0; j < k; ++j) sum -= l[r][j] * l[k][j];
-        if (k < r)
-          l[r][k] = l[k][k] > 0.0 ? sum / l[k][k] : 0.0;
-        else
-          l[r][r] = sum > 1e-9 * diagonal[r] && sum > 0.0 ? std::sqrt(sum) : 0.0;
+        if (k < r) l[r][k] = l[k][k] > 0.0 ? sum / l[k][k] : 0.0;
+        else l[r][r] = sum > 1e-9 * diagonal[r] && sum > 0.0 ? std::sqrt(sum) : 0.0;
       }
       for (int c = 0; c < 3; ++c) {
         double sum = z[r][c];
@@ -328,10 +323,11 @@ Image regression_filter(const DenoiseBuffers& buffers, const DenoiseSettings& se
     filter.prepare(s);
     return s;
   });
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<std::size_t>& range) {
-    TileScratch& s = scratch.local();
-    for (std::size_t t = range.begin(); t != range.end(); ++t) filter.filter(tiles[t], s, out);
-  });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      TileScratch& s = scratch.local();
+                      for (std::size_t t = range.begin(); t != range.end(); ++t) filter.filter(tiles[t], s, out);
+                    });
   return out;
 }
 

@@ -42,7 +42,9 @@ using IntLanes = std::int32_t __attribute__((vector_size(kLanes * sizeof(std::in
 int lane_chunks(int count) { return (count + kLanes - 1) / kLanes; }
 
 // NaN (from absurd inputs) becomes the clamp too: the comparison is false for it.
-[[gnu::always_inline]] inline Lanes clamped_distance(Lanes d) { return d < kDistanceClamp ? d : Lanes{} + kDistanceClamp; }
+[[gnu::always_inline]] inline Lanes clamped_distance(Lanes d) {
+  return d < kDistanceClamp ? d : Lanes{} + kDistanceClamp;
+}
 
 // e^-x for x >= 0 (to about 3e-6, relative), in plain arithmetic on all lanes at once (std::exp
 // is a library call per value): 2^-n by the exponent bits, the rest by its Taylor series.

@@ -17,7 +17,7 @@ struct MomentPair {
   int a, b;
 };
 template <int D>
-constexpr int kMoments = D * (D + 1) / 2 + 3 * D;
+constexpr int kMoments = D*(D + 1) / 2 + 3 * D;
 template <int D>
 constexpr std::array<MomentPair, kMoments<D>> moment_pairs() {
   std::array<MomentPair, kMoments<D>> pairs{};

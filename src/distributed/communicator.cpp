@@ -18,7 +18,8 @@ bool launched_by_mpirun() {
 std::unique_ptr<Communicator> join_mpi_job() {
   std::error_code error;
   const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (error) throw RuntimeError("cannot load MPI: cannot find rtpro's own folder (/proc/self/exe: " + error.message() + ")");
+  if (error)
+    throw RuntimeError("cannot load MPI: cannot find rtpro's own folder (/proc/self/exe: " + error.message() + ")");
   const std::filesystem::path file = executable.parent_path() / kMpiPluginFileName;
   // Global: Open MPI loads its own components with dlopen and needs its symbols visible to them.
   void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_GLOBAL);

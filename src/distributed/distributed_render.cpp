@@ -64,7 +64,8 @@ template <class T>
 T value_of(const Message& message) {
   T value{};
   if (message.bytes.size() != sizeof value)
-    throw RuntimeError("distributed render: a message from rank " + std::to_string(message.source) + " has the wrong size");
+    throw RuntimeError("distributed render: a message from rank " + std::to_string(message.source) +
+                       " has the wrong size");
   std::memcpy(&value, message.bytes.data(), sizeof value);
   return value;
 }
@@ -99,10 +100,8 @@ class BackgroundRender {
       finished_ = true;
       on_finish();
     };
-    if (prestarted_)
-      prestarted_->run(std::move(task));
-    else
-      thread_ = std::thread(std::move(task));
+    if (prestarted_) prestarted_->run(std::move(task));
+    else thread_ = std::thread(std::move(task));
   }
   ~BackgroundRender() { wait(); }
   bool finished() const { return finished_.load(); }
@@ -113,10 +112,8 @@ class BackgroundRender {
 
  private:
   void wait() {
-    if (prestarted_)
-      prestarted_->join();
-    else if (thread_.joinable())
-      thread_.join();
+    if (prestarted_) prestarted_->join();
+    else if (thread_.joinable()) thread_.join();
   }
 
   PrestartedThread* prestarted_;
@@ -164,8 +161,8 @@ std::size_t tiles_ahead(const RankClock& clock, int threads) {
     const double mean_seconds = clock.busy_seconds() / static_cast<double>(tiles);
     const double wanted = mean_seconds > 0.0 ? std::ceil(kQueuedWorkSeconds / mean_seconds)
                                              : static_cast<double>(kMaxTilesAheadPerThread);
-    per_thread = static_cast<std::size_t>(std::clamp(wanted, static_cast<double>(kMinTilesAheadPerThread),
-                                                     static_cast<double>(kMaxTilesAheadPerThread)));
+    per_thread = static_cast<std::size_t>(
+        std::clamp(wanted, static_cast<double>(kMinTilesAheadPerThread), static_cast<double>(kMaxTilesAheadPerThread)));
   }
   return per_thread * static_cast<std::size_t>(std::max(1, threads));
 }
@@ -186,10 +183,10 @@ void agree_on_job(Communicator& communicator, const JobIdentity& identity) {
       throw RuntimeError("distributed render: rank " + std::to_string(hello.source) + " skipped the handshake");
     const std::string_view theirs(reinterpret_cast<const char*>(hello.bytes.data()), hello.bytes.size());
     const std::string rank_name = "rank " + std::to_string(hello.source);
-    const std::vector<std::string> differences =
-        identity.differences(JobIdentity::parse(theirs, rank_name), rank_name);
+    const std::vector<std::string> differences = identity.differences(JobIdentity::parse(theirs, rank_name), rank_name);
     if (!differences.empty()) {
-      std::string message = rank_name + " would render another job than rank 0 (a different file, build or setting on "
+      std::string message = rank_name +
+                            " would render another job than rank 0 (a different file, build or setting on "
                             "its node):";
       for (const std::string& line : differences) message += "\n  " + line;
       throw InputError(message);
@@ -200,14 +197,16 @@ void agree_on_job(Communicator& communicator, const JobIdentity& identity) {
 
 std::vector<RankStats> lead_distributed_render(Communicator& communicator, const TileRenderer& renderer,
                                                const TileGrid& grid, TileSource& source, TileSink& sink,
-                                               PrestartedThread* render_thread, std::chrono::milliseconds rank_timeout) {
+                                               PrestartedThread* render_thread,
+                                               std::chrono::milliseconds rank_timeout) {
   const int channels = renderer.sums().floats();
   std::vector<RankStats> ranks(static_cast<std::size_t>(communicator.size()));
   for (int r = 0; r < communicator.size(); ++r) ranks[std::size_t(r)].rank = r;
   RankClock clock;
   TimedSource local_source(source, clock);
   TimedSink local_sink(sink, clock);
-  BackgroundRender render(renderer, grid, local_source, local_sink, [] {}, render_thread);
+  BackgroundRender render(
+      renderer, grid, local_source, local_sink, [] {}, render_thread);
 
   int following = communicator.size() - 1;
   std::vector<bool> done(ranks.size(), false);
@@ -254,7 +253,8 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
       }
       case kTile: {
         std::optional<TileResult> tile = decode_tile(message->bytes, grid, channels);
-        if (!tile) throw RuntimeError("distributed render: rank " + std::to_string(message->source) + " sent a damaged tile");
+        if (!tile)
+          throw RuntimeError("distributed render: rank " + std::to_string(message->source) + " sent a damaged tile");
         sink.put(std::move(*tile));
         ++remote_tiles;
         break;
@@ -271,7 +271,8 @@ std::vector<RankStats> lead_distributed_render(Communicator& communicator, const
         break;
       }
       default:
-        throw RuntimeError("distributed render: rank " + std::to_string(message->source) + " sent an unexpected message");
+        throw RuntimeError("distributed render: rank " + std::to_string(message->source) +
+                           " sent an unexpected message");
     }
     handling_seconds += thread_cpu_seconds() - handling_start;
   }
@@ -362,7 +363,8 @@ void follow_distributed_render(Communicator& communicator, const TileRenderer& r
   }
   render.join();
   const RayCounts rays = clock.rays();
-  const DoneRecord done{clock.tiles(), rays, clock.busy_seconds(), clock.idle_seconds(), bytes_sent + sizeof(DoneRecord)};
+  const DoneRecord done{clock.tiles(), rays, clock.busy_seconds(), clock.idle_seconds(),
+                        bytes_sent + sizeof(DoneRecord)};
   communicator.send(0, kDone, bytes_of(done));
   // No heartbeats from here: rank 0 reads nothing more of this image once every kDone is in.
   while (true) {

@@ -84,7 +84,7 @@ class MpiCommunicator final : public Communicator {
 }  // namespace rtpro
 
 extern "C" __attribute__((visibility("default"))) rtpro::Communicator* rtpro_join_mpi_job(const char* version, int abi,
-                                                                                         std::string* error) {
+                                                                                          std::string* error) {
   if (abi != rtpro::kMpiPluginAbiVersion || std::strcmp(version, RTPRO_VERSION) != 0) {
     *error = std::string("librtpro_mpi.so is not the MPI plugin of this rtpro build (") + RTPRO_VERSION + ")";
     return nullptr;

@@ -128,7 +128,8 @@ DisplayTransform ColorConfig::display_transform(const std::string& display, cons
   const auto known_views = views(chosen_display);
   if (std::find(known_views.begin(), known_views.end(), chosen_view) == known_views.end())
     throw InputError(without_control_characters("unknown view \"" + chosen_view + "\" for display \"" + chosen_display +
-                                                "\" in the " + source_ + " OpenColorIO config; available: " + join(known_views)));
+                                                "\" in the " + source_ +
+                                                " OpenColorIO config; available: " + join(known_views)));
   try {
     const auto processor = config_->ocio->getProcessor(OCIO::ROLE_SCENE_LINEAR, chosen_display.c_str(),
                                                        chosen_view.c_str(), OCIO::TRANSFORM_DIR_FORWARD);
@@ -136,7 +137,8 @@ DisplayTransform ColorConfig::display_transform(const std::string& display, cons
                             std::make_shared<const DisplayTransform::Processor>(
                                 DisplayTransform::Processor{processor->getDefaultCPUProcessor()}));
   } catch (const OCIO::Exception& e) {
-    throw InputError(without_control_characters("the " + source_ + " OpenColorIO config cannot encode scene_linear for display \"" +
+    throw InputError(without_control_characters("the " + source_ +
+                                                " OpenColorIO config cannot encode scene_linear for display \"" +
                                                 chosen_display + "\", view \"" + chosen_view + "\": " + e.what()));
   }
 }
@@ -148,8 +150,8 @@ DisplayTransform ColorConfig::to_scene_linear(const std::string& colorspace) con
                             std::make_shared<const DisplayTransform::Processor>(
                                 DisplayTransform::Processor{processor->getDefaultCPUProcessor()}));
   } catch (const OCIO::Exception& e) {
-    throw InputError(without_control_characters("the " + source_ + " OpenColorIO config cannot convert \"" + colorspace +
-                                                "\" to scene_linear: " + e.what()));
+    throw InputError(without_control_characters("the " + source_ + " OpenColorIO config cannot convert \"" +
+                                                colorspace + "\" to scene_linear: " + e.what()));
   }
 }
 

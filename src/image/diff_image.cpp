@@ -24,8 +24,7 @@ Rgb ramp_colour(float error, float full_scale) {
   const std::size_t lower = std::min(static_cast<std::size_t>(position), kRamp.size() - 2);
   const float blend = position - float(lower);
   Rgb colour;
-  for (std::size_t c = 0; c < 3; ++c)
-    colour[c] = kRamp[lower][c] + blend * (kRamp[lower + 1][c] - kRamp[lower][c]);
+  for (std::size_t c = 0; c < 3; ++c) colour[c] = kRamp[lower][c] + blend * (kRamp[lower + 1][c] - kRamp[lower][c]);
   return colour;
 }
 
@@ -35,10 +34,8 @@ float pixel_error(const Image& reference, const Image& test, int x, int y) {
   for (int c = 0; c < reference.channel_count(); ++c) {
     const float a = reference.at(x, y, c);
     const float b = test.at(x, y, c);
-    if (std::isfinite(a) && std::isfinite(b))
-      error = std::max(error, std::abs(a - b));
-    else if (!same_non_finite(a, b))
-      return INFINITY;
+    if (std::isfinite(a) && std::isfinite(b)) error = std::max(error, std::abs(a - b));
+    else if (!same_non_finite(a, b)) return INFINITY;
   }
   return error;
 }
@@ -71,16 +68,13 @@ Image diff_heat_map(const Image& reference, const Image& test, float full_scale)
   return heat_map;
 }
 
-void write_diff_image(const std::filesystem::path& file, const Image& reference, const Image& test,
-                      float full_scale) {
+void write_diff_image(const std::filesystem::path& file, const Image& reference, const Image& test, float full_scale) {
   Image heat_map = diff_heat_map(reference, test, full_scale);
   ImageWriteOptions options;
   std::ostringstream description;
   description << "rtpro compare heat map: largest channel difference per pixel, black 0 to white >= ";
-  if (full_scale > 0.0f)
-    description << full_scale;
-  else
-    description << "the largest difference";
+  if (full_scale > 0.0f) description << full_scale;
+  else description << "the largest difference";
   description << "; magenta: NaN or infinity in one image only";
   options.metadata = {{"ImageDescription", description.str()}};
   if (writes_scene_linear(file)) {

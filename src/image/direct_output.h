@@ -13,7 +13,6 @@ bool written_without_openimageio(const std::filesystem::path& file);
 
 // Writes `file` and returns true when its format is one of those; otherwise writes nothing and
 // returns false. Throws as write_image does.
-bool write_without_openimageio(const std::filesystem::path& file, const Image& image,
-                               const ImageWriteOptions& options);
+bool write_without_openimageio(const std::filesystem::path& file, const Image& image, const ImageWriteOptions& options);
 
 }  // namespace rtpro

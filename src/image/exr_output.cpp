@@ -84,7 +84,8 @@ Imf::Header describe(const std::filesystem::path& file, const Image& image, cons
 std::vector<std::size_t> channel_order(const Image& image) {
   std::vector<std::size_t> order(image.channels.size());
   for (std::size_t c = 0; c < order.size(); ++c) order[c] = c;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return image.channels[a] < image.channels[b]; });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return image.channels[a] < image.channels[b]; });
   return order;
 }
 
@@ -98,7 +99,8 @@ void gather_chunk(const Image& image, const std::vector<std::size_t>& order, int
   for (int y = y0; y < y0 + lines; ++y) {
     const float* row = image.data.data() + static_cast<std::size_t>(y) * width * channels;
     for (std::size_t channel : order)
-      for (std::size_t x = 0; x < width; ++x, out += sizeof(float)) std::memcpy(out, &row[x * channels + channel], sizeof(float));
+      for (std::size_t x = 0; x < width; ++x, out += sizeof(float))
+        std::memcpy(out, &row[x * channels + channel], sizeof(float));
   }
 }
 
@@ -107,7 +109,8 @@ void gather_chunk(const Image& image, const std::vector<std::size_t>& order, int
 bool uses_long_names(const Imf::Header& header) {
   constexpr std::size_t kShortNameLength = 31;
   for (auto it = header.begin(); it != header.end(); ++it)
-    if (std::strlen(it.name()) > kShortNameLength || std::strlen(it.attribute().typeName()) > kShortNameLength) return true;
+    if (std::strlen(it.name()) > kShortNameLength || std::strlen(it.attribute().typeName()) > kShortNameLength)
+      return true;
   for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
     if (std::strlen(it.name()) > kShortNameLength) return true;
   return false;
@@ -157,7 +160,8 @@ std::string encode_exr(const std::filesystem::path& file, const Image& image, co
     // offset of every chunk, then the chunks in increasing y, each with its y and size.
     MemoryStream stream;
     append_le(stream, static_cast<std::int32_t>(Imf::MAGIC));
-    append_le(stream, static_cast<std::int32_t>(Imf::EXR_VERSION | (uses_long_names(header) ? Imf::LONG_NAMES_FLAG : 0)));
+    append_le(stream,
+              static_cast<std::int32_t>(Imf::EXR_VERSION | (uses_long_names(header) ? Imf::LONG_NAMES_FLAG : 0)));
     header.writeTo(stream);
     std::uint64_t offset = stream.tellp() + sizeof(std::uint64_t) * static_cast<std::uint64_t>(chunks);
     for (const std::vector<std::uint8_t>& bytes : stored) {

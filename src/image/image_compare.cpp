@@ -50,10 +50,8 @@ void count_non_finite(const Image& reference, const Image& test, const CompareTh
       const float b = test.data[pixel * stride + c];
       nan_in_reference |= std::isnan(a);
       nan_in_test |= std::isnan(b);
-      if (std::isfinite(a) && std::isfinite(b))
-        finite_error = std::max(finite_error, std::abs(a - b));
-      else
-        mismatch |= !same_non_finite(a, b);
+      if (std::isfinite(a) && std::isfinite(b)) finite_error = std::max(finite_error, std::abs(a - b));
+      else mismatch |= !same_non_finite(a, b);
     }
     comparison.nan_pixels_reference += nan_in_reference;
     comparison.nan_pixels_test += nan_in_test;
@@ -99,8 +97,8 @@ void judge(const CompareThresholds& thresholds, ImageComparison& comparison) {
   std::ostringstream verdict;
   const double allowed_failures = thresholds.fail_percent / 100.0 * double(comparison.pixel_count);
   if (double(comparison.fail_pixels) > allowed_failures) {
-    verdict << comparison.fail_pixels << " pixels (" << 100.0 * comparison.fail_fraction()
-            << "%) differ by more than " << thresholds.fail << " (allowed: " << thresholds.fail_percent << "%)";
+    verdict << comparison.fail_pixels << " pixels (" << 100.0 * comparison.fail_fraction() << "%) differ by more than "
+            << thresholds.fail << " (allowed: " << thresholds.fail_percent << "%)";
   } else if (thresholds.max_mean_error && !(comparison.mean_error <= *thresholds.max_mean_error)) {
     verdict << "the mean error " << comparison.mean_error << " exceeds " << *thresholds.max_mean_error;
   } else {

@@ -34,8 +34,9 @@ class Reader {
   bool starts_with(const unsigned char* bytes, std::size_t count) {
     in_.seekg(0);
     std::string head(count, '\0');
-    return in_.read(head.data(), static_cast<std::streamsize>(count)) && std::equal(bytes, bytes + count, head.begin(),
-                                                                                    [](unsigned char a, char b) { return a == static_cast<unsigned char>(b); });
+    return in_.read(head.data(), static_cast<std::streamsize>(count)) &&
+           std::equal(bytes, bytes + count, head.begin(),
+                      [](unsigned char a, char b) { return a == static_cast<unsigned char>(b); });
   }
   std::uint32_t u32(bool big_endian) {
     unsigned char b[4] = {};
@@ -71,12 +72,30 @@ class Reader {
 // of the rest of the header out of step with this walk (a fuzz finding: OpenEXR then read a 1.9 GB
 // attribute size out of a channel name), so such files are refused.
 std::optional<std::uint32_t> exr_fixed_size(const std::string& type) {
-  static const std::map<std::string, std::uint32_t, std::less<>> kSizes = {
-      {"box2i", 16},    {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"deepImageState", 1},
-      {"double", 8},    {"envmap", 1}, {"float", 4},           {"int", 4},          {"keycode", 28},
-      {"lineOrder", 1}, {"m33f", 36},  {"m33d", 72},           {"m44f", 64},        {"m44d", 128},
-      {"rational", 8},  {"tiledesc", 9}, {"timecode", 8},      {"v2i", 8},          {"v2f", 8},
-      {"v2d", 16},      {"v3i", 12},   {"v3f", 12},            {"v3d", 24}};
+  static const std::map<std::string, std::uint32_t, std::less<>> kSizes = {{"box2i", 16},
+                                                                           {"box2f", 16},
+                                                                           {"chromaticities", 32},
+                                                                           {"compression", 1},
+                                                                           {"deepImageState", 1},
+                                                                           {"double", 8},
+                                                                           {"envmap", 1},
+                                                                           {"float", 4},
+                                                                           {"int", 4},
+                                                                           {"keycode", 28},
+                                                                           {"lineOrder", 1},
+                                                                           {"m33f", 36},
+                                                                           {"m33d", 72},
+                                                                           {"m44f", 64},
+                                                                           {"m44d", 128},
+                                                                           {"rational", 8},
+                                                                           {"tiledesc", 9},
+                                                                           {"timecode", 8},
+                                                                           {"v2i", 8},
+                                                                           {"v2f", 8},
+                                                                           {"v2d", 16},
+                                                                           {"v3i", 12},
+                                                                           {"v3f", 12},
+                                                                           {"v3d", 24}};
   const auto found = kSizes.find(type);
   if (found == kSizes.end()) return std::nullopt;
   return found->second;
@@ -223,7 +242,9 @@ void check_jpeg_photoshop_block(const std::string& block, const SourceLocation& 
                                 std::to_string(block.size()) + " bytes) " + why);
   };
   const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(block[i]); };
-  constexpr char kSignature[] = "Photoshop 3.0\0" "8BIM";  // compared up to the first difference
+  constexpr char kSignature[] =
+      "Photoshop 3.0\0"
+      "8BIM";  // compared up to the first difference
   for (std::size_t i = 0; i < sizeof kSignature - 1; ++i) {
     if (i >= block.size()) refuse("ends inside its signature");
     if (block[i] != kSignature[i]) return;  // not an IPTC block: the reader stops here
@@ -244,9 +265,9 @@ void check_jpeg(Reader& in, const SourceLocation& where) {
   while (in.ok() && in.left() >= 2) {
     if (u8() != 0xFF) continue;  // libjpeg skips bytes before a marker (with a warning)
     unsigned char marker = u8();
-    while (marker == 0xFF && in.ok() && in.left() > 0) marker = u8();  // fill bytes
-    if (!in.ok() || marker == 0xD9 || marker == 0xDA) return;  // end of image, start of scan
-    if (marker == 0x00) continue;  // a stuffed 0xFF byte, not a marker
+    while (marker == 0xFF && in.ok() && in.left() > 0) marker = u8();    // fill bytes
+    if (!in.ok() || marker == 0xD9 || marker == 0xDA) return;            // end of image, start of scan
+    if (marker == 0x00) continue;                                        // a stuffed 0xFF byte, not a marker
     if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) continue;  // markers without a length
     if (in.left() < 2) return;
     const unsigned char high = u8(), low = u8();
@@ -338,8 +359,7 @@ void check_raw_pnm(const std::string& head, std::uintmax_t file_size, const Sour
   const std::uintmax_t sample_bytes = float_map ? 4 : (maxval > 255 ? 2 : 1);
   const std::uintmax_t header_bytes = 2 + static_cast<std::uintmax_t>(consumed) + 1;
   const std::uintmax_t data = file_size > header_bytes ? file_size - header_bytes : 0;
-  if (width > 0 && height > 0 &&
-      (width > data || height > data || width * height > data / (sample_bytes * channels)))
+  if (width > 0 && height > 0 && (width > data || height > data || width * height > data / (sample_bytes * channels)))
     throw InputError(where, "not a valid " + std::string(float_map ? "PFM" : "PNM") + " file: its header declares " +
                                 std::to_string(width) + "x" + std::to_string(height) + " pixels, more than the " +
                                 std::to_string(data) + " bytes of data hold");

@@ -72,8 +72,7 @@ void describe_scene_linear(OIIO::ImageSpec& spec, const Image& image, bool any_c
   // the float formats keep where they keep any colour information, not oiio:ColorSpace.
   spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), kRec709Chromaticities);
   spec.attribute("compression", "zip");
-  for (const auto& [key, value] : scene_linear_metadata(options))
-    spec.attribute(key, value);
+  for (const auto& [key, value] : scene_linear_metadata(options)) spec.attribute(key, value);
 }
 
 PixelBuffer encode_display_referred(OIIO::ImageSpec& spec, const Image& image, PixelEncoding encoding,
@@ -171,10 +170,7 @@ void write_pixels(const std::filesystem::path& file, const OIIO::ImageSpec& spec
 class NativeBands {
  public:
   NativeBands(OIIO::ImageInput& input, const OIIO::ImageSpec& spec, int band_rows, const SourceLocation& where)
-      : input_(input),
-        spec_(spec),
-        where_(where),
-        pixel_bytes_(spec.pixel_bytes(/*native=*/true)),
+      : input_(input), spec_(spec), where_(where), pixel_bytes_(spec.pixel_bytes(/*native=*/true)),
         row_bytes_(pixel_bytes_ * static_cast<std::size_t>(spec.width)),
         row_by_row_(std::string_view(input.format_name()) == "tiff" &&
                     (spec.get_int_attribute("tiff:PhotometricInterpretation", -1) == 0 ||
@@ -220,10 +216,12 @@ class NativeBands {
     for (int x = 0; x < spec_.width; x += spec_.tile_width) {
       if (!input_.read_native_tile(0, 0, spec_.x + x, spec_.y + y, spec_.z, tile_.data())) return false;
       require_guard_intact(tile_);
-      const std::size_t columns_bytes = pixel_bytes_ * static_cast<std::size_t>(std::min(spec_.tile_width, spec_.width - x));
+      const std::size_t columns_bytes =
+          pixel_bytes_ * static_cast<std::size_t>(std::min(spec_.tile_width, spec_.width - x));
       for (int row = 0; row < end - y; ++row)
-        std::memcpy(native_.data() + static_cast<std::size_t>(row) * row_bytes_ + pixel_bytes_ * static_cast<std::size_t>(x),
-                    tile_.data() + static_cast<std::size_t>(row) * tile_row_bytes, columns_bytes);
+        std::memcpy(
+            native_.data() + static_cast<std::size_t>(row) * row_bytes_ + pixel_bytes_ * static_cast<std::size_t>(x),
+            tile_.data() + static_cast<std::size_t>(row) * tile_row_bytes, columns_bytes);
     }
     return true;
   }
@@ -274,10 +272,12 @@ void write_image(const std::filesystem::path& file, const Image& image, const Im
   write_pixels(file, spec, pixels);
 }
 
-Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) { return read_image_counting(file, max_bytes, 0, ""); }
+Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
+  return read_image_counting(file, max_bytes, 0, "");
+}
 
-Image read_image_counting(const std::filesystem::path& file, std::uint64_t max_bytes, std::uint64_t extra_bytes_per_pixel,
-                          const std::string& extra_purpose) {
+Image read_image_counting(const std::filesystem::path& file, std::uint64_t max_bytes,
+                          std::uint64_t extra_bytes_per_pixel, const std::string& extra_purpose) {
   const SourceLocation where{file.string()};
   std::error_code error;
   const auto status = std::filesystem::status(file, error);
@@ -285,9 +285,9 @@ Image read_image_counting(const std::filesystem::path& file, std::uint64_t max_b
   if (!std::filesystem::is_regular_file(status))
     throw InputError(where, "not a regular file (a FIFO, device or folder is never read as an image)");
   // The caller's budget (render's --max-memory or its default) or, without one, the default here.
-  const std::string budget = max_bytes == 0 ? " (the smaller of " + format_bytes(kDefaultMemoryBudgetCap) +
-                                                  " and the available memory)"
-                                            : " (the memory budget)";
+  const std::string budget =
+      max_bytes == 0 ? " (the smaller of " + format_bytes(kDefaultMemoryBudgetCap) + " and the available memory)"
+                     : " (the memory budget)";
   if (max_bytes == 0) max_bytes = default_memory_budget();
   // A small hostile header can declare an enormous image: its size is checked before the library
   // allocates for it (at open for OpenEXR, whose declared size the header check returns) and
@@ -303,15 +303,17 @@ Image read_image_counting(const std::filesystem::path& file, std::uint64_t max_b
     // A tiled file costs its tile buffers too (a tile and its compressor's, counted as two).
     const std::uint64_t read_pixels =
         std::max({pixels, saturating_multiply(width, kLibraryRows), saturating_multiply(tile_pixels, 2)});
-    const std::uint64_t bytes = saturating_add(saturating_multiply(saturating_multiply(read_pixels, channels), sizeof(float)),
-                                               saturating_multiply(pixels, extra_bytes_per_pixel));
+    const std::uint64_t bytes =
+        saturating_add(saturating_multiply(saturating_multiply(read_pixels, channels), sizeof(float)),
+                       saturating_multiply(pixels, extra_bytes_per_pixel));
     if (pixels > kMaxReadValues || saturating_multiply(pixels, channels) > kMaxReadValues || bytes > max_bytes)
-      throw InputError(where, "the image is too large to read: " + std::to_string(width) + "x" +
-                                  std::to_string(height) + ", " + std::to_string(channels) + " channels" +
-                                  (tile_pixels > pixels ? " in tiles of " + std::to_string(tile_pixels) + " pixels" : "") +
-                                  " is " +
-                                  format_bytes(bytes) + " as floats" + (extra_bytes_per_pixel ? " " + extra_purpose : std::string()) +
-                                  "; the limit is " + format_bytes(max_bytes) + budget);
+      throw InputError(
+          where, "the image is too large to read: " + std::to_string(width) + "x" + std::to_string(height) + ", " +
+                     std::to_string(channels) + " channels" +
+                     (tile_pixels > pixels ? " in tiles of " + std::to_string(tile_pixels) + " pixels" : "") + " is " +
+                     format_bytes(bytes) + " as floats" +
+                     (extra_bytes_per_pixel ? " " + extra_purpose : std::string()) + "; the limit is " +
+                     format_bytes(max_bytes) + budget);
   };
   if (const auto declared = check_image_header(file))
     refuse_if_too_large(declared->width, declared->height, declared->channels,
@@ -322,7 +324,8 @@ Image read_image_counting(const std::filesystem::path& file, std::uint64_t max_b
   if (reader.empty())
     throw InputError(where, "cannot tell what kind of image this is: it has no extension and no signature rtpro knows");
   const auto input = OIIO::ImageInput::create(reader, /*do_open=*/false);
-  if (!input) throw InputError(where, "cannot read image: no reader for '" + reader + "' images (" + oiio_errors("") + ")");
+  if (!input)
+    throw InputError(where, "cannot read image: no reader for '" + reader + "' images (" + oiio_errors("") + ")");
   // OpenImageIO's readers can throw from inside open and read (its BMP reader's RLE decoding at
   // open resized a vector to a corrupt file's size and threw std::length_error: a fuzz finding
   // that ended `rtpro compare` in std::terminate). Anything the library throws is this file's
@@ -330,12 +333,11 @@ Image read_image_counting(const std::filesystem::path& file, std::uint64_t max_b
   const auto decode = [&]() -> Image {
     OIIO::ImageSpec opened_spec;
     if (!input->open(file.string(), opened_spec))
-      throw InputError(where, "cannot read image as " + std::string(input->format_name()) + ": " +
-                                  oiio_errors(input->geterror()));
+      throw InputError(
+          where, "cannot read image as " + std::string(input->format_name()) + ": " + oiio_errors(input->geterror()));
     const OIIO::ImageSpec& spec = input->spec();
     if (spec.deep || spec.depth > 1) throw InputError(where, "deep and volume images are not supported");
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-      throw InputError(where, "the image has no pixels");
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throw InputError(where, "the image has no pixels");
     refuse_if_too_large(static_cast<std::uint64_t>(spec.width), static_cast<std::uint64_t>(spec.height),
                         static_cast<std::uint64_t>(spec.nchannels));
     // The data window is the image: an offset or a differing display window is not kept.
@@ -355,8 +357,9 @@ Image read_image_counting(const std::filesystem::path& file, std::uint64_t max_b
     // A tiled image is read one row of tiles at a time.
     const bool tiled = spec.tile_width > 0;
     const std::size_t wanted_rows = std::max<std::size_t>(kBandValues / row_values, 64);
-    const int band_rows = static_cast<int>(std::min<std::size_t>(
-        tiled ? static_cast<std::size_t>(std::max(spec.tile_height, 1)) : wanted_rows, static_cast<std::size_t>(spec.height)));
+    const int band_rows = static_cast<int>(
+        std::min<std::size_t>(tiled ? static_cast<std::size_t>(std::max(spec.tile_height, 1)) : wanted_rows,
+                              static_cast<std::size_t>(spec.height)));
     if (tiled) {
       const std::uint64_t tile_bytes =
           saturating_multiply(saturating_multiply(static_cast<std::uint64_t>(spec.tile_width),

@@ -133,8 +133,7 @@ ImageComparison compare_images(const Image& reference, const Image& test, const 
   return image_layer().compare_images(reference, test, thresholds);
 }
 
-void write_diff_image(const std::filesystem::path& file, const Image& reference, const Image& test,
-                      float full_scale) {
+void write_diff_image(const std::filesystem::path& file, const Image& reference, const Image& test, float full_scale) {
   image_layer().write_diff_image(file, reference, test, full_scale);
 }
 

@@ -22,15 +22,14 @@ std::string current_date_time() {
 
 std::vector<std::pair<std::string, std::string>> image_metadata(std::string description,
                                                                 const ImageWriteOptions& options) {
-  std::vector<std::pair<std::string, std::string>> entries = {
-      {"Software", "rtpro " RTPRO_VERSION}, {"ImageDescription", std::move(description)}, {"DateTime", current_date_time()}};
+  std::vector<std::pair<std::string, std::string>> entries = {{"Software", "rtpro " RTPRO_VERSION},
+                                                              {"ImageDescription", std::move(description)},
+                                                              {"DateTime", current_date_time()}};
   for (const auto& given : options.metadata) {
     const auto same =
         std::find_if(entries.begin(), entries.end(), [&](const auto& entry) { return entry.first == given.first; });
-    if (same != entries.end())
-      same->second = given.second;
-    else
-      entries.push_back(given);
+    if (same != entries.end()) same->second = given.second;
+    else entries.push_back(given);
   }
   return entries;
 }

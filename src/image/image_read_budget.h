@@ -10,7 +10,7 @@
 
 namespace rtpro {
 
-Image read_image_counting(const std::filesystem::path& file, std::uint64_t max_bytes, std::uint64_t extra_bytes_per_pixel,
-                          const std::string& extra_purpose);
+Image read_image_counting(const std::filesystem::path& file, std::uint64_t max_bytes,
+                          std::uint64_t extra_bytes_per_pixel, const std::string& extra_purpose);
 
 }  // namespace rtpro

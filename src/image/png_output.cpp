@@ -89,8 +89,7 @@ bool run_libpng(const PngRequest& request, PngSink& sink) {
   if (request.text_count > 0) png_set_text(png, info, request.texts, request.text_count);
   png_write_info(png, info);
   const std::size_t row_bytes = static_cast<std::size_t>(request.width) * 3;
-  for (int y = 0; y < request.height; ++y)
-    png_write_row(png, request.rgb + static_cast<std::size_t>(y) * row_bytes);
+  for (int y = 0; y < request.height; ++y) png_write_row(png, request.rgb + static_cast<std::size_t>(y) * row_bytes);
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
   return true;
@@ -133,10 +132,8 @@ std::string encode_png(const std::filesystem::path& file, const Image& image, co
   if (display.srgb) entries.emplace_back("oiio:ColorSpace", "sRGB");
   std::optional<png_time> time;
   for (auto& entry : image_metadata(display.description, options)) {
-    if (strcasecmp(entry.first.c_str(), "DateTime") == 0)
-      time = modification_time(entry.second);
-    else
-      entries.push_back(std::move(entry));
+    if (strcasecmp(entry.first.c_str(), "DateTime") == 0) time = modification_time(entry.second);
+    else entries.push_back(std::move(entry));
   }
   std::vector<png_text> texts;
   for (const auto& [name, value] : entries) {

@@ -42,7 +42,8 @@ class TemporaryFolder {
       }
       if (errno != EEXIST) break;
     }
-    throw RuntimeError("cannot create a folder for decoded textures under " + base.string() + ": " + std::strerror(errno));
+    throw RuntimeError("cannot create a folder for decoded textures under " + base.string() + ": " +
+                       std::strerror(errno));
   }
   ~TemporaryFolder() {
     std::error_code ignored;
@@ -116,8 +117,9 @@ class OiioTextureLookup final : public TextureLookup {
 
   // Decodes the texture to linear floats and writes it as the private .tx file the system reads.
   void prepare(const TextureSource& source, std::size_t i, const ColorConfig& config, std::uint64_t max_bytes) {
-    const Image image = read_image_counting(source.bytes ? write_embedded(source, i) : source.file, max_bytes,
-                                            kTexturePreparationBytesPerPixel, "with its linear and mip-mapped texture copies");
+    const Image image =
+        read_image_counting(source.bytes ? write_embedded(source, i) : source.file, max_bytes,
+                            kTexturePreparationBytesPerPixel, "with its linear and mip-mapped texture copies");
     const std::vector<float> rgb = linear_rgb(image, config.to_scene_linear(source.colorspace));
     const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
     const OIIO::ImageBuf linear(spec, const_cast<float*>(rgb.data()));
@@ -137,7 +139,8 @@ class OiioTextureLookup final : public TextureLookup {
 
   // An image stored inside a glTF, as a file in the private folder (for rtpro's checked reader).
   std::filesystem::path write_embedded(const TextureSource& source, std::size_t index) const {
-    const std::filesystem::path file = folder_.path() / ("embedded" + std::to_string(index) + source.file.extension().string());
+    const std::filesystem::path file =
+        folder_.path() / ("embedded" + std::to_string(index) + source.file.extension().string());
     std::ofstream out(file, std::ios::binary);
     out.write(reinterpret_cast<const char*>(source.bytes->data()), static_cast<std::streamsize>(source.bytes->size()));
     if (!out.flush()) throw RuntimeError("cannot write a decoded texture into " + folder_.path().string());

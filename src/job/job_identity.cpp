@@ -53,12 +53,14 @@ JobIdentity JobIdentity::parse(std::string_view text, std::string_view source) {
     ++line_number;
     const std::size_t end = text.find('\n');
     if (end == std::string_view::npos)
-      throw InputError(std::string(source) + ": job description line " + std::to_string(line_number) + " is not terminated");
+      throw InputError(std::string(source) + ": job description line " + std::to_string(line_number) +
+                       " is not terminated");
     const std::string_view line = text.substr(0, end);
     text.remove_prefix(end + 1);
     const std::size_t colon = line.find(": ");
     if (colon == std::string_view::npos || colon == 0)
-      throw InputError(std::string(source) + ": job description line " + std::to_string(line_number) + " is not 'key: value'");
+      throw InputError(std::string(source) + ": job description line " + std::to_string(line_number) +
+                       " is not 'key: value'");
     identity.entries_.emplace_back(std::string(line.substr(0, colon)), std::string(line.substr(colon + 2)));
   }
   return identity;
@@ -75,13 +77,13 @@ std::vector<std::string> JobIdentity::differences(const JobIdentity& other, std:
   std::vector<std::string> out;
   for (const auto& [key, value] : entries_) {
     const std::string* theirs = find(other, key);
-    if (!theirs)
-      out.push_back(shown(key) + ": " + shown(value) + " here, absent in " + std::string(other_name));
+    if (!theirs) out.push_back(shown(key) + ": " + shown(value) + " here, absent in " + std::string(other_name));
     else if (*theirs != value)
       out.push_back(shown(key) + ": " + shown(value) + " here, " + shown(*theirs) + " in " + std::string(other_name));
   }
   for (const auto& [key, value] : other.entries_)
-    if (!find(*this, key)) out.push_back(shown(key) + ": absent here, " + shown(value) + " in " + std::string(other_name));
+    if (!find(*this, key))
+      out.push_back(shown(key) + ": absent here, " + shown(value) + " in " + std::string(other_name));
   return out;
 }
 

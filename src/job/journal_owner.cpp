@@ -18,7 +18,8 @@ namespace {
 // Whether `descriptor` is still the file at `path`: an owner that finished deletes its lock file,
 // and a render that opened that file just before then locked a file no other render will see.
 bool is_file_at(int descriptor, const std::filesystem::path& path) {
-  struct stat opened {}, there {};
+  struct stat opened {
+  }, there{};
   return ::fstat(descriptor, &opened) == 0 && ::lstat(path.c_str(), &there) == 0 && S_ISREG(there.st_mode) &&
          opened.st_dev == there.st_dev && opened.st_ino == there.st_ino;
 }
@@ -43,7 +44,8 @@ JournalOwner::JournalOwner(std::filesystem::path journal) : lock_file_(journal_l
       const int error = errno;
       ::close(descriptor);
       if (error == EWOULDBLOCK)
-        throw InputError(journal.string() + ": another render of the same output owns this resume journal and is "
+        throw InputError(journal.string() +
+                         ": another render of the same output owns this resume journal and is "
                          "still running; wait for it to finish or choose another output");
       throw InputError(lock_file_.string() + ": cannot lock the resume journal: " + std::strerror(error));
     }
@@ -53,7 +55,8 @@ JournalOwner::JournalOwner(std::filesystem::path journal) : lock_file_(journal_l
     }
     ::close(descriptor);
   }
-  throw InputError(lock_file_.string() + ": the resume journal's lock file keeps changing; is another render "
+  throw InputError(lock_file_.string() +
+                   ": the resume journal's lock file keeps changing; is another render "
                    "of the same output starting?");
 }
 

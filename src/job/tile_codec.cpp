@@ -25,8 +25,8 @@ struct RecordHeader {
 static_assert(sizeof(RecordHeader) == kTileRecordHeaderBytes);
 
 bool matches_grid(const RecordHeader& h, const TileGrid& grid, int channel_count) {
-  if (h.magic != kTileMagic || h.channel_count != static_cast<std::uint32_t>(channel_count) || h.index >= grid.count() ||
-      (h.flags & ~kCumulative) != 0 || h.reserved != 0)
+  if (h.magic != kTileMagic || h.channel_count != static_cast<std::uint32_t>(channel_count) ||
+      h.index >= grid.count() || (h.flags & ~kCumulative) != 0 || h.reserved != 0)
     return false;
   const PixelRegion expected = grid.tile(static_cast<std::size_t>(h.index));
   return h.x0 == expected.x0 && h.y0 == expected.y0 && h.x1 == expected.x1 && h.y1 == expected.y1;

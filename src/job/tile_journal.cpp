@@ -158,7 +158,8 @@ JournalContents read_journal(const std::filesystem::path& file, const TileGrid& 
     buffer.resize(kTileRecordHeaderBytes);
     const std::size_t got = read(buffer.data(), buffer.size());
     if (got == 0) break;
-    const std::optional<std::size_t> size = tile_record_size_from_header(std::span(buffer).first(got), grid, channel_count);
+    const std::optional<std::size_t> size =
+        tile_record_size_from_header(std::span(buffer).first(got), grid, channel_count);
     if (!size) {
       ++contents.dropped_records;
       break;
@@ -248,8 +249,7 @@ void TileJournal::append(const TileResult& tile) {
   if (!write_all(descriptor_, record.data(), record.size()))
     error_ = file_.string() + ": cannot write the resume journal (" + std::strerror(errno) +
              "): tiles finished from now on are not recorded";
-  else
-    bytes_ += record.size();
+  else bytes_ += record.size();
 }
 
 std::string TileJournal::error() const {
@@ -261,9 +261,10 @@ void TileJournal::remove() {
   const std::lock_guard lock(mutex_);
   if (descriptor_ < 0) return;
   // Deletes the journal this object wrote, and nothing put in its place since.
-  struct stat ours {}, there {};
-  const bool same = ::fstat(descriptor_, &ours) == 0 && ::lstat(file_.c_str(), &there) == 0 &&
-                    S_ISREG(there.st_mode) && ours.st_dev == there.st_dev && ours.st_ino == there.st_ino;
+  struct stat ours {
+  }, there{};
+  const bool same = ::fstat(descriptor_, &ours) == 0 && ::lstat(file_.c_str(), &there) == 0 && S_ISREG(there.st_mode) &&
+                    ours.st_dev == there.st_dev && ours.st_ino == there.st_ino;
   ::close(descriptor_);
   descriptor_ = -1;
   if (same) ::unlink(file_.c_str());

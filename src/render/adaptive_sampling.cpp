@@ -68,14 +68,16 @@ float pixel_error(const PixelAccumulator& acc, NoiseMetric metric) {
   return INFINITY;
 }
 
-std::size_t active_pixels(const ProgressiveFilm& film, const AdaptiveSampling& settings, std::vector<std::uint8_t>& mask) {
+std::size_t active_pixels(const ProgressiveFilm& film, const AdaptiveSampling& settings,
+                          std::vector<std::uint8_t>& mask) {
   const PixelRegion& region = film.grid().region();
   const int width = region.width(), height = region.height();
   std::vector<std::uint8_t> unconverged(region.pixel_count());
   tbb::parallel_for(0, height, [&](int row) {
     for (int column = 0; column < width; ++column) {
       const PixelAccumulator& acc = film.pixel(region.x0 + column, region.y0 + row);
-      const bool goes_on = acc.samples < settings.min_samples || !(pixel_error(acc, settings.metric) < settings.threshold);
+      const bool goes_on =
+          acc.samples < settings.min_samples || !(pixel_error(acc, settings.metric) < settings.threshold);
       unconverged[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(column)] =
           goes_on ? 1 : 0;
     }
@@ -88,8 +90,10 @@ std::size_t active_pixels(const ProgressiveFilm& film, const AdaptiveSampling& s
       bool goes_on = false;
       for (int y = std::max(row - 1, 0); y <= std::min(row + 1, height - 1) && !goes_on; ++y)
         for (int x = std::max(column - 1, 0); x <= std::min(column + 1, width - 1) && !goes_on; ++x)
-          goes_on = unconverged[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] != 0;
-      mask[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(column)] = goes_on;
+          goes_on = unconverged[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                                static_cast<std::size_t>(x)] != 0;
+      mask[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(column)] =
+          goes_on;
       count += goes_on ? 1 : 0;
     }
     row_counts[static_cast<std::size_t>(row)] = count;

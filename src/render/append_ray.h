@@ -23,6 +23,8 @@ namespace rtpro {
 
 // Appends `ray` field by field (copy_ray); always inline, or the copy is made of the record in
 // memory after all, merged into wide loads.
-[[gnu::always_inline]] inline void append_ray(std::vector<Ray>& rays, const Ray& ray) { copy_ray(ray, rays.emplace_back()); }
+[[gnu::always_inline]] inline void append_ray(std::vector<Ray>& rays, const Ray& ray) {
+  copy_ray(ray, rays.emplace_back());
+}
 
 }  // namespace rtpro

@@ -9,7 +9,6 @@
 namespace rtpro {
 namespace {
 
-
 float channel_mean(const Color& c) { return (c.x + c.y + c.z) / 3.0f; }
 
 // F_avg of Schlick's F0 + (1 − F0)(1 − μ)⁵ in closed form: 2∫(1 − μ)⁵ μ dμ = 1/21.
@@ -70,12 +69,7 @@ float fresnel_complex(float cos_theta, float eta, float k) {
 
 ConductorBsdf::ConductorBsdf(FresnelModel model, const Color& f0, const Color& eta, const Color& k, float alpha,
                              bool energy_compensation)
-    : model_(model),
-      f0_(f0),
-      eta_(eta),
-      k_(k),
-      ggx_{alpha},
-      energy_compensation_(energy_compensation),
+    : model_(model), f0_(f0), eta_(eta), k_(k), ggx_{alpha}, energy_compensation_(energy_compensation),
       fresnel_average_(model == FresnelModel::kSchlick ? schlick_average(f0) : complex_ior_average(eta, k)),
       average_albedo_(ggx_average_albedo(alpha)),
       multiple_scattering_tint_(multiple_scattering_tint(fresnel_average_, average_albedo_)) {}
@@ -84,8 +78,7 @@ ConductorBsdf ConductorBsdf::from_f0(const Color& f0, float alpha, bool energy_c
   return ConductorBsdf(FresnelModel::kSchlick, f0, Color(0.0f), Color(0.0f), alpha, energy_compensation);
 }
 
-ConductorBsdf ConductorBsdf::from_complex_ior(const Color& eta, const Color& k, float alpha,
-                                              bool energy_compensation) {
+ConductorBsdf ConductorBsdf::from_complex_ior(const Color& eta, const Color& k, float alpha, bool energy_compensation) {
   return ConductorBsdf(FresnelModel::kComplexIor, Color(0.0f), eta, k, alpha, energy_compensation);
 }
 

@@ -13,8 +13,6 @@ float fresnel_either_side(float cos_theta, float eta) {
   return cos_theta >= 0.0f ? fresnel_dielectric(cos_theta, eta) : fresnel_dielectric(-cos_theta, 1.0f / eta);
 }
 
-
-
 struct Evaluation {
   Color f;
   float pdf;

@@ -57,7 +57,8 @@ Distribution2D::Distribution2D(std::span<const float> func, int width, int heigh
       rows_[static_cast<std::size_t>(y)] = Distribution1D(func.subspan(static_cast<std::size_t>(y) * w, w));
   });
   std::vector<float> row_integrals(static_cast<std::size_t>(height));
-  for (int y = 0; y < height; ++y) row_integrals[static_cast<std::size_t>(y)] = rows_[static_cast<std::size_t>(y)].integral();
+  for (int y = 0; y < height; ++y)
+    row_integrals[static_cast<std::size_t>(y)] = rows_[static_cast<std::size_t>(y)].integral();
   marginal_ = Distribution1D(row_integrals);
 }
 

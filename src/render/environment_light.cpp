@@ -25,10 +25,8 @@ constexpr float kCellWeights[3] = {0.125f, 0.75f, 0.125f};
 }  // namespace
 
 EnvironmentLight::EnvironmentLight(const Environment& environment, Image image)
-    : to_world_(environment.to_world),
-      to_local_(inverse(environment.to_world).value_or(Affine::identity())),
-      scale_(environment.scale),
-      visible_(environment.visible) {
+    : to_world_(environment.to_world), to_local_(inverse(environment.to_world).value_or(Affine::identity())),
+      scale_(environment.scale), visible_(environment.visible) {
   if (image.width <= 0 || image.height <= 0 || image.data.empty()) {
     mean_radiance_ = channel_average(scale_);
     return;
@@ -85,8 +83,8 @@ EnvironmentLight::EnvironmentLight(const Environment& environment, Image image)
   // The sphere's mean: each row's cells cover 2π² sin θ / (w·h) of solid angle per unit of (u, v).
   double total = 0.0;
   for (double s : row_sums) total += s;
-  mean_radiance_ = static_cast<float>(total * (2.0 * kPi * kPi) / (static_cast<double>(w) * static_cast<double>(h)) /
-                                      (4.0 * kPi));
+  mean_radiance_ =
+      static_cast<float>(total * (2.0 * kPi * kPi) / (static_cast<double>(w) * static_cast<double>(h)) / (4.0 * kPi));
 }
 
 EnvironmentLight::ImageCoordinates EnvironmentLight::image_coordinates(const Vec3& world_direction) const {
@@ -105,7 +103,9 @@ Color EnvironmentLight::lookup(float u, float v) const {
     const int i = static_cast<int>(x) % width_;
     return static_cast<std::size_t>(i < 0 ? i + width_ : i);
   };
-  const auto row = [this](float y) { return static_cast<std::size_t>(std::clamp(static_cast<int>(y), 0, height_ - 1)); };
+  const auto row = [this](float y) {
+    return static_cast<std::size_t>(std::clamp(static_cast<int>(y), 0, height_ - 1));
+  };
   const std::size_t x0 = wrap(fs), x1 = wrap(fs + 1.0f);
   const std::size_t y0 = row(ft), y1 = row(ft + 1.0f);
   const auto w = static_cast<std::size_t>(width_);

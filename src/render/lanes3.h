@@ -24,9 +24,7 @@ inline __m128 dot(const Lanes3& a, const Lanes3& b) {
   return _mm_add_ps(_mm_add_ps(_mm_mul_ps(a.x, b.x), _mm_mul_ps(a.y, b.y)), _mm_mul_ps(a.z, b.z));
 }
 
-inline Lanes3 divide(const Lanes3& v, __m128 s) {
-  return {_mm_div_ps(v.x, s), _mm_div_ps(v.y, s), _mm_div_ps(v.z, s)};
-}
+inline Lanes3 divide(const Lanes3& v, __m128 s) { return {_mm_div_ps(v.x, s), _mm_div_ps(v.y, s), _mm_div_ps(v.z, s)}; }
 
 // c ? a : b, lane by lane (c all ones or all zeros per lane).
 inline __m128 select(__m128 c, __m128 a, __m128 b) { return _mm_or_ps(_mm_and_ps(c, a), _mm_andnot_ps(c, b)); }

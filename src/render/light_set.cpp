@@ -139,10 +139,8 @@ void LightSet::add_emitters(const RenderScene& scene, const Group& group, std::u
                                                 to_world->apply_vector(Vec3(0.0f, 0.0f, 1.0f))) < 0.0f;
           EmissiveTriangle light{p0, e1, e2, n / (mirrored ? -twice_area : twice_area), 0.5f * twice_area, e};
           if (e.texture) {
-            if (mesh.uvs.empty())
-              light.uv = {TexCoord{0.0f, 0.0f}, TexCoord{1.0f, 0.0f}, TexCoord{0.0f, 1.0f}};
-            else
-              light.uv = {mesh.uvs[tri.v0], mesh.uvs[tri.v1], mesh.uvs[tri.v2]};
+            if (mesh.uvs.empty()) light.uv = {TexCoord{0.0f, 0.0f}, TexCoord{1.0f, 0.0f}, TexCoord{0.0f, 1.0f}};
+            else light.uv = {mesh.uvs[tri.v0], mesh.uvs[tri.v1], mesh.uvs[tri.v2]};
           }
           add(t, count, light);
         }

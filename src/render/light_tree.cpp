@@ -55,10 +55,10 @@ float split_cost(const LightBounds& b, const BBox& centroid_bounds, int axis) {
   const float theta_e = std::acos(std::clamp(b.cos_theta_e, -1.0f, 1.0f));
   const float theta_w = std::min(theta_o + theta_e, kPi);
   const float sin_theta_o = safe_sqrt(1.0f - b.cos_theta_o * b.cos_theta_o);
-  const float m_omega = 2.0f * kPi * (1.0f - b.cos_theta_o) +
-                        0.5f * kPi *
-                            (2.0f * theta_w * sin_theta_o - std::cos(theta_o - 2.0f * theta_w) -
-                             2.0f * theta_o * sin_theta_o + b.cos_theta_o);
+  const float m_omega =
+      2.0f * kPi * (1.0f - b.cos_theta_o) + 0.5f * kPi *
+                                                (2.0f * theta_w * sin_theta_o - std::cos(theta_o - 2.0f * theta_w) -
+                                                 2.0f * theta_o * sin_theta_o + b.cos_theta_o);
   const Vec3 extent = centroid_bounds.extent();
   const float largest = std::max({extent.x, extent.y, extent.z});
   const float kr = extent[axis] > 0.0f ? largest / extent[axis] : 1.0f;
@@ -71,15 +71,10 @@ constexpr int kMaxDepth = 63;
 }  // namespace
 
 LightTree::Importance::Importance(const LightBounds& b)
-    : center(b.bounds.center()),
-      w(b.w),
-      half_diagonal(0.5f * length(b.bounds.extent())),
-      radius2(0.25f * dot(b.bounds.extent(), b.bounds.extent())),
-      phi(b.phi),
-      cos_theta_o(b.cos_theta_o),
-      sin_theta_o(safe_sqrt(1.0f - b.cos_theta_o * b.cos_theta_o)),
-      cos_theta_e(b.cos_theta_e),
-      two_sided(b.two_sided) {}
+    : center(b.bounds.center()), w(b.w), half_diagonal(0.5f * length(b.bounds.extent())),
+      radius2(0.25f * dot(b.bounds.extent(), b.bounds.extent())), phi(b.phi), cos_theta_o(b.cos_theta_o),
+      sin_theta_o(safe_sqrt(1.0f - b.cos_theta_o * b.cos_theta_o)), cos_theta_e(b.cos_theta_e), two_sided(b.two_sided) {
+}
 
 float LightTree::Importance::at(const Vec3& p) const {
   const Vec3 to_p = p - center;
@@ -104,8 +99,9 @@ LightBounds merge(const LightBounds& a, const LightBounds& b) {
   if (a.phi == 0.0f) return b;
   if (b.phi == 0.0f) return a;
   const Cone cone = cone_union({a.w, a.cos_theta_o}, {b.w, b.cos_theta_o});
-  return {rtpro::merge(a.bounds, b.bounds), cone.w,           a.phi + b.phi,
-          cone.cos_theta,                   std::min(a.cos_theta_e, b.cos_theta_e), a.two_sided || b.two_sided};
+  return {
+      rtpro::merge(a.bounds, b.bounds), cone.w, a.phi + b.phi, cone.cos_theta, std::min(a.cos_theta_e, b.cos_theta_e),
+      a.two_sided || b.two_sided};
 }
 
 LightTree::LightTree(std::span<const std::optional<LightBounds>> lights)

@@ -10,7 +10,6 @@
 namespace rtpro {
 namespace {
 
-
 float tan2_theta(const Vec3& w) {
   const float cos2 = w.z * w.z;
   return std::max(0.0f, 1.0f - cos2) / cos2;
@@ -89,7 +88,6 @@ const AlbedoTable& albedo_table() {
 }
 
 TableCoordinate albedo_table_coordinate(float x) { return sqrt_spaced_coordinate(x, kTableSize); }
-
 
 }  // namespace
 

@@ -21,7 +21,8 @@ PassSchedule::PassSchedule(int spp, SamplerKind sampler) {
     case SamplerKind::kStratified: ends_.push_back(spp); return;
     case SamplerKind::kSobol: break;
   }
-  const int step = std::clamp(power_of_two_at_least(static_cast<int>(std::ceil(std::sqrt(static_cast<double>(spp))))), 4, 64);
+  const int step =
+      std::clamp(power_of_two_at_least(static_cast<int>(std::ceil(std::sqrt(static_cast<double>(spp))))), 4, 64);
   int done = 0;
   while (done < spp) {
     const int size = std::min(done == 0 ? 1 : std::min(done, step), spp - done);

@@ -60,8 +60,8 @@ class PathTracer {
     Color beta = path.beta;
     if (path.medium != PathWorkspace::kOutside) {
       const Dielectric& medium = *scene_.materials[path.medium].dielectric;
-      beta = beta * beer_lambert_transmittance(medium.transmittance, medium.transmittance_distance,
-                                               hit.t * length(ray.dir));
+      beta = beta *
+             beer_lambert_transmittance(medium.transmittance, medium.transmittance_distance, hit.t * length(ray.dir));
     }
     if (material.emission.emits() && (material.emission.two_sided || sp.front_face))
       add_emission(path, result, emitted_radiance(material.emission, sp.tex_u, sp.tex_v, textures_),
@@ -142,7 +142,9 @@ class PathTracer {
     float weight = 1.0f;
     if (!path.specular) {
       switch (scene_.render.path_sampling) {
-        case PathSampling::kMis: weight = power_heuristic(path.bsdf_pdf, lights_.environment_pdf(ray.dir, path.group)); break;
+        case PathSampling::kMis:
+          weight = power_heuristic(path.bsdf_pdf, lights_.environment_pdf(ray.dir, path.group));
+          break;
         case PathSampling::kLight: weight = 0.0f; break;
         case PathSampling::kBsdf: break;
       }

@@ -51,7 +51,9 @@ struct Bounds {
     for (const Vec3& p : points) b.extend(p);
     return b;
   }
-  static BBox sphere_box(const Vec3& center, float radius) { return box({center - Vec3(radius), center + Vec3(radius)}); }
+  static BBox sphere_box(const Vec3& center, float radius) {
+    return box({center - Vec3(radius), center + Vec3(radius)});
+  }
   // A point light shines every way: a sphere of normals (cos θ_o = −1), each emitting over its
   // hemisphere (θ_e = π/2), as pbrt-v4 bounds it.
   std::optional<LightBounds> operator()(const PointLight& l) const {
@@ -69,8 +71,12 @@ struct Bounds {
     return LightBounds{sphere_box(l.center, l.radius), Vec3(0, 0, 1), power, -1.0f, 0.0f, false};
   }
   std::optional<LightBounds> operator()(const QuadLight& l) const {
-    return LightBounds{box({l.corner, l.corner + l.edge1, l.corner + l.edge2, l.corner + l.edge1 + l.edge2}), l.normal,
-                       power, 1.0f, 0.0f, false};
+    return LightBounds{box({l.corner, l.corner + l.edge1, l.corner + l.edge2, l.corner + l.edge1 + l.edge2}),
+                       l.normal,
+                       power,
+                       1.0f,
+                       0.0f,
+                       false};
   }
   std::optional<LightBounds> operator()(const EmissiveTriangle& l) const {
     return LightBounds{box({l.p0, l.p0 + l.e1, l.p0 + l.e2}), l.normal, power, 1.0f, 0.0f, l.emission.two_sided};
@@ -122,9 +128,7 @@ struct Sampler {
     if (!(falloff > 0.0f)) return false;  // outside the outer cone
     return found(direction, d, l.radiance * (falloff / d2), 1.0f, true);
   }
-  bool operator()(const DirectionalLight& l) const {
-    return found(l.to_light, kInfinity, l.radiance, 1.0f, true);
-  }
+  bool operator()(const DirectionalLight& l) const { return found(l.to_light, kInfinity, l.radiance, 1.0f, true); }
   bool operator()(const SphereLight& l) const {
     if (!clearly_outside(l.center, l.radius, from)) return false;  // emits outwards only
     return on_surface(sample_sphere(l.center, l.radius, from, u), Emission{l.radiance, false, std::nullopt});
@@ -146,8 +150,8 @@ struct Sampler {
     const float b0 = 1.0f - b1 - b2;
     const float tex_u = l.uv[0].u * b0 + l.uv[1].u * b1 + l.uv[2].u * b2;
     const float tex_v = l.uv[0].v * b0 + l.uv[1].v * b1 + l.uv[2].v * b2;
-    return on_surface({point, l.normal, area_to_solid_angle(1.0f / l.area, from, point, l.normal)}, l.emission,
-                      tex_u, tex_v);
+    return on_surface({point, l.normal, area_to_solid_angle(1.0f / l.area, from, point, l.normal)}, l.emission, tex_u,
+                      tex_v);
   }
   bool operator()(const EmissiveSphere& l) const {
     const SphereSample s = sample_sphere(l.center, l.radius, from, u);

@@ -2,7 +2,6 @@
 
 #include "rtpro/render/film.h"
 
-
 namespace rtpro {
 
 SumLayout::SumLayout(std::span<const Aov> aovs, ExtraSums extra) {

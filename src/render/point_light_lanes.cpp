@@ -44,9 +44,9 @@ void point_light_lanes(const PointLight& light, const SurfacePoint* const surfac
   const __m128 behind = _mm_andnot_ps(_mm_cmpge_ps(dot(towards, ng), _mm_setzero_ps()), sign_bit);
   const Lanes3 n{_mm_xor_ps(ng.x, behind), _mm_xor_ps(ng.y, behind), _mm_xor_ps(ng.z, behind)};
   // dot(|n|, (e, e, e)); |−g| is |g|.
-  const __m128 offset = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_andnot_ps(sign_bit, ng.x), error),
-                                              _mm_mul_ps(_mm_andnot_ps(sign_bit, ng.y), error)),
-                                   _mm_mul_ps(_mm_andnot_ps(sign_bit, ng.z), error));
+  const __m128 offset = _mm_add_ps(
+      _mm_add_ps(_mm_mul_ps(_mm_andnot_ps(sign_bit, ng.x), error), _mm_mul_ps(_mm_andnot_ps(sign_bit, ng.y), error)),
+      _mm_mul_ps(_mm_andnot_ps(sign_bit, ng.z), error));
   const Lanes3 origin{round_away_from_surface(_mm_add_ps(p.x, _mm_mul_ps(n.x, offset)), n.x),
                       round_away_from_surface(_mm_add_ps(p.y, _mm_mul_ps(n.y, offset)), n.y),
                       round_away_from_surface(_mm_add_ps(p.z, _mm_mul_ps(n.z, offset)), n.z)};

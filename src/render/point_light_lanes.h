@@ -15,9 +15,9 @@
 namespace rtpro {
 
 struct PointLightLanes {
-  Ray rays[4];        // spawn_ray_to(surface, light position), for lanes with a finite distance
-  float n_dot_l[4];   // shading normal · direction to the light
-  float r_dot_l[4];   // mirror direction · direction to the light
+  Ray rays[4];       // spawn_ray_to(surface, light position), for lanes with a finite distance
+  float n_dot_l[4];  // shading normal · direction to the light
+  float r_dot_l[4];  // mirror direction · direction to the light
   // Bit i: lane i needs its shadow ray (neither normal faces away from the light: the scalar test
   // `n_dot_l <= 0 || g_dot_l <= 0` is false, NaNs included).
   std::uint32_t lit = 0;

@@ -50,8 +50,6 @@ std::optional<Vec3> sample_reflection(const GgxDistribution& ggx, const Vec3& wo
   return wi;
 }
 
-
-
 struct TransmissionGeometry {
   Vec3 wm;  // the generalised half vector, facing +z
   float etap, wo_dot_wm, wi_dot_wm, denom;
@@ -77,17 +75,12 @@ std::optional<TransmissionGeometry> transmission_geometry(const Vec3& wo, const 
 }  // namespace
 
 PrincipledBsdf::PrincipledBsdf(const PrincipledParameters& p)
-    : base_color_(clamp01(p.base_color)),
-      metalness_(clamp01(p.metalness)),
+    : base_color_(clamp01(p.base_color)), metalness_(clamp01(p.metalness)),
       transmission_(clamp01(p.transmission_weight)),
-      eta_(std::max(1.0f, p.ior)),
-      ggx_{roughness_to_alpha(clamp01(p.roughness))},
+      eta_(std::max(1.0f, p.ior)), ggx_{roughness_to_alpha(clamp01(p.roughness))},
       specular_f90_(clamp01(p.specular_weight)),
-      coat_weight_(clamp01(p.coat_weight)),
-      coat_ggx_{roughness_to_alpha(clamp01(p.coat_roughness))},
-      fuzz_color_(clamp01(p.fuzz_color)),
-      fuzz_max_(max_component(fuzz_color_)),
-      fuzz_(p.fuzz_roughness),
+      coat_weight_(clamp01(p.coat_weight)), coat_ggx_{roughness_to_alpha(clamp01(p.coat_roughness))},
+      fuzz_color_(clamp01(p.fuzz_color)), fuzz_max_(max_component(fuzz_color_)), fuzz_(p.fuzz_roughness),
       metal_(ConductorBsdf::from_f0(base_color_, ggx_.alpha)) {
   // KHR_materials_specular clamps the tinted F0 before applying the weight.
   const float reflectance = ((eta_ - 1.0f) / (eta_ + 1.0f)) * ((eta_ - 1.0f) / (eta_ + 1.0f));
@@ -176,8 +169,8 @@ PrincipledBsdf::Outgoing PrincipledBsdf::outgoing(const Vec3& wo) const {
   if (active_[kCoat]) estimate[kCoat] = coat_weight_ * coat_albedo;
   if (active_[kFuzz]) estimate[kFuzz] = o.below_coat * mean(fuzz_color_) * fuzz_albedo;
   if (active_[kSpecular]) {
-    estimate[kSpecular] = dielectric * ((1.0f - transmission_) * mean(o.specular_albedo) +
-                                        transmission_ * mean(glass_reflectance));
+    estimate[kSpecular] =
+        dielectric * ((1.0f - transmission_) * mean(o.specular_albedo) + transmission_ * mean(glass_reflectance));
   }
   if (active_[kDiffuse]) {
     estimate[kDiffuse] = dielectric * (1.0f - transmission_) * mean(base_color_ * (Color(1.0f) - o.specular_albedo));

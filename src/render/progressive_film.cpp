@@ -34,7 +34,8 @@ void ProgressiveFilm::count_cost(const TileResult& item) {
 
 void ProgressiveFilm::add(TileResult&& item) {
   const std::size_t tiles = grid_.tiles_per_pass();
-  if (item.index >= grid_.count() || item.pixels.size() != item.region.pixel_count() * static_cast<std::size_t>(sums_.floats()))
+  if (item.index >= grid_.count() ||
+      item.pixels.size() != item.region.pixel_count() * static_cast<std::size_t>(sums_.floats()))
     throw std::logic_error("ProgressiveFilm: an item that is not a work item of this grid");
   const int pass = grid_.pass(item.index);
   std::unique_lock lock(mutex_);
@@ -161,7 +162,8 @@ std::vector<TileResult> ProgressiveFilm::journal_items() const {
       for (int y = item.region.y0; y < item.region.y1; ++y) {
         const float* row = pixel_sums(item.region.x0, y);
         std::copy(row, row + row_floats,
-                  item.pixels.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y - item.region.y0) * row_floats));
+                  item.pixels.begin() +
+                      static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y - item.region.y0) * row_floats));
       }
       items.push_back(std::move(item));
     }

@@ -48,7 +48,9 @@ class PassItemSource final : public TileSource {
     }
     return items_[position];
   }
-  std::optional<std::size_t> remaining() const override { return items_.size() - std::min(next_.load(), items_.size()); }
+  std::optional<std::size_t> remaining() const override {
+    return items_.size() - std::min(next_.load(), items_.size());
+  }
 
  private:
   std::vector<std::size_t> items_;
@@ -175,7 +177,8 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
 
   std::optional<Clock::time_point> deadline;
   if (options.time_limit_seconds > 0.0)
-    deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_limit_seconds));
+    deadline =
+        start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_limit_seconds));
   const auto unrendered = [&](std::size_t first, std::size_t last) {
     std::vector<std::size_t> items;
     for (std::size_t index = first; index < last; ++index)
@@ -183,10 +186,8 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
     return items;
   };
   const auto execute = [&](TileSource& source) {
-    if (options.tile_executor)
-      options.tile_executor(renderer, grid, source, sink);
-    else
-      render_tiles(renderer, grid, source, sink);
+    if (options.tile_executor) options.tile_executor(renderer, grid, source, sink);
+    else render_tiles(renderer, grid, source, sink);
   };
 
   result.passes_total = grid.passes();
@@ -214,8 +215,9 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
         deadline_passed = true;
         break;
       }
-      PassItemSource source(unrendered(static_cast<std::size_t>(pass) * tiles, static_cast<std::size_t>(pass + 1) * tiles),
-                            options.cancel, pass_deadline, tiles);
+      PassItemSource source(
+          unrendered(static_cast<std::size_t>(pass) * tiles, static_cast<std::size_t>(pass + 1) * tiles),
+          options.cancel, pass_deadline, tiles);
       execute(source);
       if (film.passes_merged() <= pass) {
         deadline_passed = pass_deadline && Clock::now() >= *pass_deadline;
@@ -228,10 +230,8 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
     result.stop = deadline_passed && result.passes_done > 0 ? RenderStop::kTimeLimit : RenderStop::kInterrupted;
 
   result.image = Image(scene.camera.width, scene.camera.height, layout.channels());
-  if (result.passes_done > 0)
-    film.resolve(layout, result.image);
-  else
-    film.resolve_with_partial_pass(layout, result.image);
+  if (result.passes_done > 0) film.resolve(layout, result.image);
+  else film.resolve_with_partial_pass(layout, result.image);
   result.tiles_done = sink.done();
   result.rays = film.rays();
   result.nan_samples = film.nan_samples();

@@ -82,7 +82,7 @@ void StratifiedSampler::pixel_offsets(std::uint64_t pixel_key, PixelOffset* out)
 }
 
 StratifiedSampler::PermutedSample StratifiedSampler::permuted(std::uint64_t pixel_key, int sample_index,
-                                                               int dimension) const {
+                                                              int dimension) const {
   const std::uint64_t pixel_dimension = hash_combine(hash_combine(seed_, pixel_key), 0x5eed0000ull + dimension);
   const auto count = static_cast<std::uint32_t>(grid_.columns * grid_.rows);
   return {pixel_dimension, count,
@@ -110,7 +110,8 @@ float StratifiedSampler::sample_1d(std::uint64_t pixel_key, int sample_index, in
 
 Sample2D StratifiedSampler::light_sample(std::uint64_t pixel_key, int sample_index, int bounce, int light, int index,
                                          int per_axis) const {
-  std::uint64_t bits = hash_combine(sample_bits(pixel_key, sample_index), 0x11947000ull + static_cast<std::uint64_t>(bounce));
+  std::uint64_t bits =
+      hash_combine(sample_bits(pixel_key, sample_index), 0x11947000ull + static_cast<std::uint64_t>(bounce));
   bits = hash_combine(hash_combine(bits, static_cast<std::uint64_t>(light)), static_cast<std::uint64_t>(index));
   const float inv = 1.0f / static_cast<float>(per_axis);
   const float x = (static_cast<float>(index % per_axis) + to_unit_float(bits)) * inv;

@@ -49,7 +49,8 @@ std::optional<SeenEmitter> seen_emitter(const RenderScene& scene, const Workspac
 Color through_medium(const RenderScene& scene, const Workspace::RayTask& task, const Ray& ray, float t) {
   if (task.medium == Workspace::kOutside) return task.weight;
   const Dielectric& glass = *scene.materials[task.medium].dielectric;
-  return task.weight * beer_lambert_transmittance(glass.transmittance, glass.transmittance_distance, t * length(ray.dir));
+  return task.weight *
+         beer_lambert_transmittance(glass.transmittance, glass.transmittance_distance, t * length(ray.dir));
 }
 
 // The shadow rays of light `l` for surface `s`: one for a point, spot or directional light, samples²
@@ -63,8 +64,9 @@ void queue_light_shadow_rays(const RenderScene& scene, const StratifiedSampler& 
     if (is_black(ls.radiance)) return;  // outside a spot light's cone
     const float n_dot_l = dot(s.point.shading_normal, ls.direction);
     if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) return;
-    append_ray(ws.shadow_rays, std::isinf(ls.distance) ? spawn_ray(s.point, ls.direction)
-                                                       : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
+    append_ray(ws.shadow_rays, std::isinf(ls.distance)
+                                   ? spawn_ray(s.point, ls.direction)
+                                   : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
     ws.shadow_queries.push_back({ls.radiance, n_dot_l, dot(s.mirror, ls.direction)});
     if (scene.links.linked()) ws.shadow_lights.push_back(l);
     return;
@@ -77,8 +79,9 @@ void queue_light_shadow_rays(const RenderScene& scene, const StratifiedSampler& 
     if (is_black(ls.radiance)) continue;
     const float n_dot_l = dot(s.point.shading_normal, ls.direction);
     if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) continue;
-    append_ray(ws.shadow_rays, std::isinf(ls.distance) ? spawn_ray(s.point, ls.direction)
-                                                       : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
+    append_ray(ws.shadow_rays, std::isinf(ls.distance)
+                                   ? spawn_ray(s.point, ls.direction)
+                                   : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
     ws.shadow_queries.push_back({ls.radiance * share, n_dot_l, dot(s.mirror, ls.direction)});
     if (scene.links.linked()) ws.shadow_lights.push_back(l);
   }
@@ -98,8 +101,7 @@ void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sample
                        const Workspace::Generation& generation, int depth, Workspace& ws) {
   const std::size_t light_count = scene.lights.size();
   bool laned = light_count <= kMaxLanedLights && !scene.links.linked();
-  for (std::size_t l = 0; l < light_count && laned; ++l)
-    laned = ws.light_samples_per_axis[l] == 1 && !ws.is_emitter[l];
+  for (std::size_t l = 0; l < light_count && laned; ++l) laned = ws.light_samples_per_axis[l] == 1 && !ws.is_emitter[l];
   std::size_t i = 0;
   PointLightLanes lanes[kMaxLanedLights];
   for (; laned && i + 4 <= ws.surfaces.size(); i += 4) {
@@ -110,7 +112,8 @@ void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sample
       mirrors[k] = &ws.surfaces[i + k].mirror;
     }
     for (std::size_t l = 0; l < light_count; ++l)
-      if (const auto* point = std::get_if<PointLight>(&scene.lights[l])) point_light_lanes(*point, points, mirrors, lanes[l]);
+      if (const auto* point = std::get_if<PointLight>(&scene.lights[l]))
+        point_light_lanes(*point, points, mirrors, lanes[l]);
     for (unsigned k = 0; k < 4; ++k) {
       Workspace::ShadedSurface& s = ws.surfaces[i + k];
       s.first_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
@@ -216,7 +219,8 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
     }
     if (is_plain_triangle_hit(scene, hit)) {
       triangles.surfaces[triangles.count++] = index;
-      if (triangles.count == 4) make_waiting_surfaces(triangles, [](auto&&... four) { make_triangle_surfaces4(four...); });
+      if (triangles.count == 4)
+        make_waiting_surfaces(triangles, [](auto&&... four) { make_triangle_surfaces4(four...); });
       continue;
     }
     make_one_surface(s);
@@ -323,7 +327,8 @@ void shade_batch(const RenderScene& scene, const Backend& backend, const Stratif
     counts[RayKind::kShadow] += ws.shadow_rays.size();
 
     light_surfaces(scene, ws.current, depth, results, ws);
-    for (const Workspace::RayTask& task : ws.next.tasks) counts[task.refracted ? RayKind::kRefraction : RayKind::kReflection] += 1;
+    for (const Workspace::RayTask& task : ws.next.tasks)
+      counts[task.refracted ? RayKind::kRefraction : RayKind::kReflection] += 1;
     std::swap(ws.current, ws.next);
   }
 }

@@ -67,7 +67,6 @@ std::array<double, kSheenQuadrature> row_integrals(const CharlieSheen& sheen, fl
   return rows;
 }
 
-
 TableCoordinate mu_coordinate(float mu) { return sqrt_spaced_coordinate(mu, kMuNodes); }
 
 // Below kMinRoughness the lobe is the one at kMinRoughness, so the nodes start there.
@@ -76,8 +75,8 @@ float roughness_node(int r) {
 }
 
 TableCoordinate roughness_coordinate(float roughness) {
-  const float scaled = (std::clamp(roughness, kMinRoughness, 1.0f) - kMinRoughness) / (1.0f - kMinRoughness) *
-                       (kRoughnessNodes - 1);
+  const float scaled =
+      (std::clamp(roughness, kMinRoughness, 1.0f) - kMinRoughness) / (1.0f - kMinRoughness) * (kRoughnessNodes - 1);
   const int index = std::min(static_cast<int>(scaled), kRoughnessNodes - 2);
   return {index, scaled - static_cast<float>(index)};
 }

@@ -96,8 +96,8 @@ struct Scrambles {
 };
 
 Scrambles scrambles(std::uint64_t seed, std::uint64_t pixel_key, int dimension) {
-  const std::uint64_t h =
-      mix64(seed ^ (pixel_key * 0x9e3779b97f4a7c15ULL) ^ (static_cast<std::uint64_t>(dimension) * 0xd1b54a32d192ed03ULL));
+  const std::uint64_t h = mix64(seed ^ (pixel_key * 0x9e3779b97f4a7c15ULL) ^
+                                (static_cast<std::uint64_t>(dimension) * 0xd1b54a32d192ed03ULL));
   const std::uint64_t h2 = (h ^ (h >> 29)) * 0xbf58476d1ce4e5b9ULL;
   return {static_cast<std::uint32_t>(h), static_cast<std::uint32_t>(h >> 32), static_cast<std::uint32_t>(h2 >> 32)};
 }

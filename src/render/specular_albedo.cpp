@@ -25,7 +25,7 @@ struct Node {
 
 struct SpecularTables {
   std::array<std::array<Node, kSpecularTableSize>, kSpecularTableSize> e{};  // [√α node][√μ node]
-  std::array<Node, kSpecularTableSize> average{};                    // per √α node
+  std::array<Node, kSpecularTableSize> average{};                            // per √α node
 };
 
 float specular_node_coordinate(int i) { return static_cast<float>(i) / (kSpecularTableSize - 1); }

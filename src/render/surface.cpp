@@ -13,7 +13,6 @@ namespace rtpro {
 
 namespace {
 
-
 float magnitude(const Vec3& v) { return max_component(abs(v)); }
 
 struct LocalSurface {
@@ -50,7 +49,8 @@ struct LocalSurface {
   return out;
 }
 
-[[gnu::always_inline]] inline LocalSurface triangle_surface(const TriangleMesh& mesh, std::uint32_t prim, float u, float v) {
+[[gnu::always_inline]] inline LocalSurface triangle_surface(const TriangleMesh& mesh, std::uint32_t prim, float u,
+                                                            float v) {
   const TriangleIndices& tri = mesh.triangles[prim];
   const Vec3 p0 = mesh.vertex(tri.v0), p1 = mesh.vertex(tri.v1), p2 = mesh.vertex(tri.v2);
   const float w = 1.0f - u - v;

@@ -38,8 +38,7 @@ template <bool kAllFlat>
 [[gnu::always_inline]] inline void finish_surfaces4(const Hit* const hits[4], const Lanes3& dir, const Lanes3& position,
                                                     __m128 position_error, const Lanes3& geometric,
                                                     const Lanes3& shading, const std::uint32_t materials[4],
-                                                    SurfacePoint* const out[4],
-                                                    Vec3* const mirrors[4]) {
+                                                    SurfacePoint* const out[4], Vec3* const mirrors[4]) {
   const __m128 zero = _mm_setzero_ps();
   const __m128 infinity = _mm_set1_ps(std::numeric_limits<float>::infinity());
   const __m128 sign_bit = _mm_set1_ps(-0.0f);
@@ -128,7 +127,6 @@ void make_sphere_surfaces4(const RenderScene& scene, const Ray* const rays[4], c
   finish_surfaces4<true>(hits, dir, position, position_error, n, n, materials, out, mirrors);
 }
 
-
 RTPRO_AVX2_CLONES
 void make_triangle_surfaces4(const RenderScene& scene, const Ray* const rays[4], const Hit* const hits[4],
                              SurfacePoint* const out[4], Vec3* const mirrors[4]) {
@@ -170,9 +168,11 @@ void make_triangle_surfaces4(const RenderScene& scene, const Ray* const rays[4],
                   _mm_sub_ps(_mm_mul_ps(e1.z, e2.x), _mm_mul_ps(e1.x, e2.z)),
                   _mm_sub_ps(_mm_mul_ps(e1.x, e2.y), _mm_mul_ps(e1.y, e2.x))};
   const auto normal = [&](std::uint32_t TriangleIndices::*corner) {
-    return gather([&](int i) { return meshes[i]->normals.empty() ? Vec3() : meshes[i]->normals[triangles[i]->*corner]; });
+    return gather(
+        [&](int i) { return meshes[i]->normals.empty() ? Vec3() : meshes[i]->normals[triangles[i]->*corner]; });
   };
-  const Lanes3 ns = interpolate(normal(&TriangleIndices::v0), normal(&TriangleIndices::v1), normal(&TriangleIndices::v2));
+  const Lanes3 ns =
+      interpolate(normal(&TriangleIndices::v0), normal(&TriangleIndices::v1), normal(&TriangleIndices::v2));
   const __m128 local_magnitude = std_max(magnitude(p0), std_max(magnitude(p1), magnitude(p2)));
   const __m128 position_error =
       _mm_mul_ps(_mm_set1_ps(kRelativePositionError), std_max(local_magnitude, magnitude(position)));

@@ -27,15 +27,8 @@ TileGrid render_grid(const RenderScene& scene, const PixelRegion& region, int ti
 
 TileRenderer::TileRenderer(const RenderScene& scene, const Backend& backend, const TileGrid& grid,
                            const SumLayout& sums, const TextureLookup* textures, const EnvironmentLight* environment)
-    : scene_(scene),
-      backend_(backend),
-      grid_(grid),
-      sums_(sums),
-      schedule_(render_passes(scene)),
-      textures_(textures),
-      environment_(environment),
-      sampler_(scene.render.spp, scene.render.seed),
-      sobol_(scene.render.seed) {
+    : scene_(scene), backend_(backend), grid_(grid), sums_(sums), schedule_(render_passes(scene)), textures_(textures),
+      environment_(environment), sampler_(scene.render.spp, scene.render.seed), sobol_(scene.render.seed) {
   if (grid.passes() != schedule_.passes())
     throw std::logic_error("TileRenderer: the grid's passes are not the scene's pass schedule");
   if (scene.environment && !environment)
@@ -84,9 +77,10 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
     }
     for (; s < range.end; ++s, ++next) {
       const PixelOffset& offset = offsets[s];
-      const Sample2D lens = pinhole                                             ? Sample2D{0.5f, 0.5f}
-                            : scene_.render.sampler == SamplerKind::kStratified ? sampler_.sample_2d(pixel_key, s, sample_dimension::kLens)
-                                                                                : sobol_.sample_2d(pixel_key, s, sample_dimension::kLens);
+      const Sample2D lens = pinhole ? Sample2D{0.5f, 0.5f}
+                            : scene_.render.sampler == SamplerKind::kStratified
+                                ? sampler_.sample_2d(pixel_key, s, sample_dimension::kLens)
+                                : sobol_.sample_2d(pixel_key, s, sample_dimension::kLens);
       copy_ray(camera_ray(scene_.camera, static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y, lens),
                ws.camera_rays[next]);
       ws.sample_keys[next] = {pixel_key, s};
@@ -122,7 +116,8 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
       }
       acc.add(sample.radiance, sample.primary, range.begin + k);
     }
-    sums_.store(acc, out.pixels.data() + static_cast<std::size_t>(pixels[i]) * static_cast<std::size_t>(sums_.floats()));
+    sums_.store(acc,
+                out.pixels.data() + static_cast<std::size_t>(pixels[i]) * static_cast<std::size_t>(sums_.floats()));
   }
 }
 
@@ -141,7 +136,8 @@ TileResult TileRenderer::render(std::size_t index, const PixelRegion& tile, Work
                                  static_cast<std::size_t>(x - region.x0)])
         ws.pixels.push_back(static_cast<std::uint32_t>((y - tile.y0) * tile.width() + (x - tile.x0)));
   // Whole pixels per batch, about kSamplesPerBatch samples.
-  const std::size_t pixels_per_batch = std::max<std::size_t>(1, kSamplesPerBatch / static_cast<std::size_t>(range.count()));
+  const std::size_t pixels_per_batch =
+      std::max<std::size_t>(1, kSamplesPerBatch / static_cast<std::size_t>(range.count()));
   for (std::size_t first = 0; first < ws.pixels.size(); first += pixels_per_batch)
     render_pixels(tile, range, ws.pixels.data() + first, std::min(pixels_per_batch, ws.pixels.size() - first), out, ws);
   return out;

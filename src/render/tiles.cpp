@@ -7,11 +7,9 @@ namespace rtpro {
 // A tile larger than the region covers it all the same; clamped, the sums below stay within int
 // (--tile-size 2147483647 overflowed them into a grid of no tiles).
 TileGrid::TileGrid(const PixelRegion& region, int tile_size, int passes)
-    : region_(region),
-      tile_size_(std::min(tile_size, std::max({region.width(), region.height(), 1}))),
+    : region_(region), tile_size_(std::min(tile_size, std::max({region.width(), region.height(), 1}))),
       columns_(static_cast<std::size_t>((region.width() + tile_size_ - 1) / tile_size_)),
-      rows_(static_cast<std::size_t>((region.height() + tile_size_ - 1) / tile_size_)),
-      passes_(std::max(passes, 1)) {}
+      rows_(static_cast<std::size_t>((region.height() + tile_size_ - 1) / tile_size_)), passes_(std::max(passes, 1)) {}
 
 PixelRegion TileGrid::tile(std::size_t item) const {
   const std::size_t index = item % tiles_per_pass();

@@ -65,11 +65,11 @@ TEST_F(EmbreeBackendTest, SphereDistancesAreBitIdenticalToIntersectSphere) {
 
   const Vec3 to_far = far_small.center - Vec3(0.0f, 0.0f, -1.0f);
   const std::vector<std::pair<Ray, std::uint32_t>> cases = {
-      {make_ray({0.0f, 0.0f, -1.0f}, {0.0f, 0.0f, 1.0f}), 0},           // from outside
-      {make_ray({0.1f, -0.2f, 3.3f}, {0.3f, 0.5f, -0.7f}), 0},          // from inside: far root
-      {make_ray({1.1f, -5.0f, 3.0f}, {0.0f, 1.0f, 0.0f}), 0},           // tangent at x = 1.1
-      {make_ray({0.0f, 0.0f, -1.0f}, normalize(to_far)), 1},           // far away, small
-      {make_ray({0.0f, 0.0f, -1.0f}, to_far * 0.5f), 1},               // non-unit direction
+      {make_ray({0.0f, 0.0f, -1.0f}, {0.0f, 0.0f, 1.0f}), 0},   // from outside
+      {make_ray({0.1f, -0.2f, 3.3f}, {0.3f, 0.5f, -0.7f}), 0},  // from inside: far root
+      {make_ray({1.1f, -5.0f, 3.0f}, {0.0f, 1.0f, 0.0f}), 0},   // tangent at x = 1.1
+      {make_ray({0.0f, 0.0f, -1.0f}, normalize(to_far)), 1},    // far away, small
+      {make_ray({0.0f, 0.0f, -1.0f}, to_far * 0.5f), 1},        // non-unit direction
   };
   const Sphere* list[] = {&near_sphere, &far_small};
   for (const auto& [ray, prim] : cases) {
@@ -144,8 +144,8 @@ TEST_F(EmbreeBackendTest, InstancedHitsNameTheInstanceAndThePrototypeGeometry) {
   prototype.geometries.emplace_back(spheres({{{0.0f, 0.0f, 0.0f}, 0.5f, 0}, {{5.0f, 0.0f, 0.0f}, 0.5f, 0}}));
   // 90° about z then scale 2 then move to x = 10: the sphere of radius 0.5 at the prototype's
   // origin becomes a sphere of radius 1 at (10, 0, 0); prototype sphere 1 lands at (10, 10, 0).
-  const Affine placement = compose(Affine::translate({10, 0, 0}),
-                                   compose(Affine::scale({2, 2, 2}), Affine::rotate({0, 0, 1}, 90.0f)));
+  const Affine placement =
+      compose(Affine::translate({10, 0, 0}), compose(Affine::scale({2, 2, 2}), Affine::rotate({0, 0, 1}, 90.0f)));
   const Instance instance{0, placement, *inverse(placement)};
   const RenderScene scene = scene_with({spheres({{{-10.0f, 0.0f, 0.0f}, 1.0f, 0}}), instance, instance}, {prototype});
   const auto backend = make_backend(BackendKind::kEmbree, scene, {});

@@ -38,8 +38,8 @@ Ray random_ray(std::mt19937& rng, float broken) {
     case 8: ray.tnear = kNaN; break;
     case 9: ray.tfar = kNaN; break;
     case 10: ray.tnear = 60.0f, ray.tfar = 50.0f; break;
-    case 11: ray.tnear = -0.0f; break;                                           // accepted
-    case 12: ray.tnear = 0.0f, ray.tfar = 0.0f; break;                           // accepted
+    case 11: ray.tnear = -0.0f; break;                                         // accepted
+    case 12: ray.tnear = 0.0f, ray.tfar = 0.0f; break;                         // accepted
     case 13: ray.org.x = std::nextafter(kMaxTraceableMagnitude, 0.0f); break;  // accepted
   }
   return ray;
@@ -72,11 +72,17 @@ TEST(RayPacket, WideLoadHoldsWhatEightSetsHoldAndRefusesExactlyWhatIsTraceableRe
     for (unsigned lane = 0; lane < kPacketSize; ++lane) {
       SCOPED_TRACE(testing::Message() << "round " << round << " lane " << lane);
       EXPECT_EQ(wide.rays[lane], &rays[lane]);
-      const std::array<std::pair<const float*, const float*>, 11> fields = {{
-          {wide.org_x, scalar.org_x}, {wide.org_y, scalar.org_y}, {wide.org_z, scalar.org_z},
-          {wide.dir_x, scalar.dir_x}, {wide.dir_y, scalar.dir_y}, {wide.dir_z, scalar.dir_z},
-          {wide.inv_x, scalar.inv_x}, {wide.inv_y, scalar.inv_y}, {wide.inv_z, scalar.inv_z},
-          {wide.tnear, scalar.tnear}, {wide.tmax, scalar.tmax}}};
+      const std::array<std::pair<const float*, const float*>, 11> fields = {{{wide.org_x, scalar.org_x},
+                                                                             {wide.org_y, scalar.org_y},
+                                                                             {wide.org_z, scalar.org_z},
+                                                                             {wide.dir_x, scalar.dir_x},
+                                                                             {wide.dir_y, scalar.dir_y},
+                                                                             {wide.dir_z, scalar.dir_z},
+                                                                             {wide.inv_x, scalar.inv_x},
+                                                                             {wide.inv_y, scalar.inv_y},
+                                                                             {wide.inv_z, scalar.inv_z},
+                                                                             {wide.tnear, scalar.tnear},
+                                                                             {wide.tmax, scalar.tmax}}};
       for (const auto& [w, s] : fields) EXPECT_TRUE(same_bits(w[lane], s[lane])) << w[lane] << " vs " << s[lane];
     }
   }

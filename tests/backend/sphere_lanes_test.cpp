@@ -36,7 +36,7 @@ LaneRay random_lane_ray(std::mt19937& rng, const Vec3& center, float radius) {
   switch (kind(rng)) {
     case 0: ray.dir = center - ray.org + Vec3(unit(rng), unit(rng), unit(rng)) * (0.3f * radius); break;
     case 1: ray.org = center + random_dir * (0.5f * radius); break;  // inside
-    case 2: {  // on the surface, leaving or entering
+    case 2: {                                                        // on the surface, leaving or entering
       const Vec3 n = normalize(random_dir);
       ray.org = center + n * radius;
       ray.dir = n * unit(rng) + Vec3(unit(rng), unit(rng), unit(rng)) * 0.2f;
@@ -53,7 +53,10 @@ LaneRay random_lane_ray(std::mt19937& rng, const Vec3& center, float radius) {
     case 5: ray.tnear = -std::fabs(unit(rng)) * radius; break;
     case 6: ray.dir = Vec3(0.0f); break;
     case 7: ray.dir.y = std::numeric_limits<float>::quiet_NaN(); break;
-    case 8: ray.org = ray.org * 1e6f; ray.dir = center - ray.org; break;  // far away, small sphere
+    case 8:
+      ray.org = ray.org * 1e6f;
+      ray.dir = center - ray.org;
+      break;  // far away, small sphere
     default: break;
   }
   return ray;
@@ -74,8 +77,9 @@ void expect_lanes_match(const Vec3& center, float radius, const std::vector<Lane
     fields[6][i] = rays[i].tnear;
     fields[7][i] = rays[i].tfar;
   }
-  const RayLanes lanes{fields[0].data(), fields[1].data(), fields[2].data(), fields[3].data(),
-                       fields[4].data(), fields[5].data(), fields[6].data(), fields[7].data(), count};
+  const RayLanes lanes{fields[0].data(), fields[1].data(), fields[2].data(),
+                       fields[3].data(), fields[4].data(), fields[5].data(),
+                       fields[6].data(), fields[7].data(), count};
   constexpr float kUntouched = -12345.0f;
   std::vector<float> t(count, kUntouched);
   const std::uint32_t hits = intersect_sphere_lanes(center, radius, lanes, active, t.data());
@@ -87,8 +91,7 @@ void expect_lanes_match(const Vec3& center, float radius, const std::vector<Lane
     ASSERT_EQ(bool(hits >> i & 1u), expected) << "lane " << i;
     if (expected)
       EXPECT_EQ(std::bit_cast<std::uint32_t>(t[i]), std::bit_cast<std::uint32_t>(expected_t)) << "lane " << i;
-    else
-      EXPECT_EQ(t[i], kUntouched) << "lane " << i << " was written without a hit";
+    else EXPECT_EQ(t[i], kUntouched) << "lane " << i << " was written without a hit";
   }
 }
 

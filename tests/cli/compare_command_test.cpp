@@ -114,9 +114,8 @@ TEST(CompareCommand, DiffImageIsWritten) {
   const auto folder = test::scratch_dir();
   const auto pair = write_pair(folder, 1, 0.25f, ".png");
   std::string output;
-  EXPECT_EQ(compare(quoted(pair.reference) + " " + quoted(pair.test) + " --diff " + quoted(folder / "diff.png"),
-                    &output),
-            1)
+  EXPECT_EQ(
+      compare(quoted(pair.reference) + " " + quoted(pair.test) + " --diff " + quoted(folder / "diff.png"), &output), 1)
       << output;
   const Image diff = read_image(folder / "diff.png");
   EXPECT_EQ(diff.at(0, 3, 0), 1.0f) << "the failing pixel is white";
@@ -129,12 +128,17 @@ TEST(CompareCommand, ADiffImageThatIsAnInputIsRefusedBeforeAnythingIsWritten) {
   const auto pair = write_pair(folder, 1, 0.25f, ".png");
   const auto reference_before = read_image(pair.reference).data;
   std::string output;
-  EXPECT_EQ(compare(quoted(pair.reference) + " " + quoted(pair.test) + " --diff " + quoted(pair.reference), &output), 2) << output;
-  EXPECT_NE(output.find("--diff " + pair.reference.string() + " is the same file as the reference " + pair.reference.string()),
+  EXPECT_EQ(compare(quoted(pair.reference) + " " + quoted(pair.test) + " --diff " + quoted(pair.reference), &output), 2)
+      << output;
+  EXPECT_NE(output.find("--diff " + pair.reference.string() + " is the same file as the reference " +
+                        pair.reference.string()),
             std::string::npos)
       << output;
   // Another spelling of the test image's path is the same file too.
-  EXPECT_EQ(compare(quoted(pair.reference) + " " + quoted(pair.test) + " --diff " + quoted(folder / "." / pair.test.filename()), &output), 2)
+  EXPECT_EQ(compare(quoted(pair.reference) + " " + quoted(pair.test) + " --diff " +
+                        quoted(folder / "." / pair.test.filename()),
+                    &output),
+            2)
       << output;
   EXPECT_NE(output.find("is the same file as the test image"), std::string::npos) << output;
   EXPECT_EQ(read_image(pair.reference).data, reference_before);

@@ -19,8 +19,8 @@
 namespace rtpro {
 namespace display_server_test {
 
-using test::run_command;
 using test::rtpro_command;
+using test::run_command;
 
 std::string scene_text(int width, int height) {
   return "rtpro: 1\ncamera: {position: [0, 1, 6], look_at: [0, 0.5, 0], fov: 40, resolution: [" +
@@ -61,8 +61,8 @@ struct ReceivedImage {
   std::string name;
   int width = 0, height = 0;
   std::vector<std::string> channels;
-  std::vector<float> rgb;     // width * height * 3
-  std::vector<int> writes;    // per pixel: how many tiles wrote it
+  std::vector<float> rgb;   // width * height * 3
+  std::vector<int> writes;  // per pixel: how many tiles wrote it
   int creates = 0, updates = 0;
 };
 
@@ -223,7 +223,7 @@ TEST(DisplayServer, AbsentViewerWarnsAndTheRenderGoesOn) {
   const auto output = scene.parent_path() / "alone.exr";
   std::string out;
   ASSERT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + output.string() + " --progress never" +
-                              " --display-server 127.0.0.1:" + std::to_string(port)),
+                                      " --display-server 127.0.0.1:" + std::to_string(port)),
                         &out),
             0)
       << out;

@@ -12,8 +12,8 @@
 namespace rtpro {
 namespace frame_sequence_test {
 
-using test::run_command;
 using test::rtpro_command;
+using test::run_command;
 using test::run_rtpro;
 
 const char* kAnimated = R"(rtpro: 1
@@ -52,8 +52,8 @@ TEST(Keyframes, MistakesAreErrorsAtTheirPlace) {
   std::string out = run_rtpro("info " + bad_shape.string(), 2);
   EXPECT_NE(out.find("a.yaml:3:"), std::string::npos) << out;
   EXPECT_NE(out.find("the same shape as the first"), std::string::npos) << out;
-  const auto bad_mode = test::write_file(
-      "b.yaml", std::string(kAnimated).replace(std::string(kAnimated).find("smooth"), 6, "smoth"));
+  const auto bad_mode =
+      test::write_file("b.yaml", std::string(kAnimated).replace(std::string(kAnimated).find("smooth"), 6, "smoth"));
   out = run_rtpro("info " + bad_mode.string(), 2);
   EXPECT_NE(out.find("b.yaml:5:"), std::string::npos) << out;
   EXPECT_NE(out.find("did you mean 'smooth'?"), std::string::npos) << out;
@@ -92,12 +92,12 @@ TEST(FrameSequence, ProgressAndStatsNameTheFrame) {
   const auto scene = test::write_file("anim.yaml", kAnimated);
   const auto dir = scene.parent_path();
   std::string out;
-  ASSERT_EQ(run_command("{ " +
-                            rtpro_command("render " + scene.string() + " -o " + (dir / "p_#.exr").string() +
-                                          " --frames 2-3 -q --progress json --stats-json " +
-                                          (dir / "stats_#.json").string()) +
-                            " > /dev/null; }",
-                        &out),
+  ASSERT_EQ(run_command(
+                "{ " +
+                    rtpro_command("render " + scene.string() + " -o " + (dir / "p_#.exr").string() +
+                                  " --frames 2-3 -q --progress json --stats-json " + (dir / "stats_#.json").string()) +
+                    " > /dev/null; }",
+                &out),
             0)
       << out;
   std::istringstream lines(out);
@@ -110,8 +110,8 @@ TEST(FrameSequence, ProgressAndStatsNameTheFrame) {
   EXPECT_TRUE(std::filesystem::exists(dir / "stats_2.json"));
   EXPECT_TRUE(std::filesystem::exists(dir / "stats_3.json"));
   out = run_rtpro("render " + scene.string() + " -o " + (dir / "q_#.exr").string() + " --frames 2-3 --stats-json " +
-                (dir / "stats.json").string(),
-            2);
+                      (dir / "stats.json").string(),
+                  2);
   EXPECT_NE(out.find("--stats-json with --frames needs a frame number pattern"), std::string::npos) << out;
 }
 
@@ -126,7 +126,8 @@ TEST(FrameSequence, PatternAndRangeMistakesAreRefused) {
   EXPECT_NE(out.find("the first frame is after the last"), std::string::npos) << out;
   out = run_rtpro("render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 1-3:0", 2);
   EXPECT_NE(out.find("the step must be at least 1"), std::string::npos) << out;
-  out = run_rtpro("render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 5-5:9223372036854775807", 2);
+  out = run_rtpro(
+      "render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 5-5:9223372036854775807", 2);
   EXPECT_NE(out.find("--frames '5-5:9223372036854775807': the step must be at most 99999999"), std::string::npos)
       << out;
   out = run_rtpro("render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 1-3 -D frame=2", 2);

@@ -53,7 +53,8 @@ std::filesystem::path quad_scene(const std::string& name, const nlohmann::json& 
     gltf.json["textures"].push_back(nlohmann::json::object({{"source", i}}));
     gltf.json["images"].push_back(nlohmann::json::object({{"uri", image_uris[i]}}));
   }
-  gltf.json["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"aspectRatio", 1.0}, {"znear", 0.1}}}}};
+  gltf.json["cameras"] = {
+      {{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"aspectRatio", 1.0}, {"znear", 0.1}}}}};
   std::vector<int> roots{gltf.node({{"mesh", quad}}), gltf.node({{"camera", 0}, {"translation", {0, 0, 3}}})};
   if (from_light) {
     gltf.json["extensionsUsed"] = {"KHR_lights_punctual"};
@@ -66,8 +67,8 @@ std::filesystem::path quad_scene(const std::string& name, const nlohmann::json& 
     const float half = 0.5f * std::atan2(sin_angle, cos_angle);
     const Vec3 unit_axis = sin_angle > 0.0f ? axis / sin_angle : Vec3(1.0f, 0.0f, 0.0f);
     const Vec3 q = unit_axis * std::sin(half);
-    roots.push_back(gltf.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}},
-                               {"rotation", {q.x, q.y, q.z, std::cos(half)}}}));
+    roots.push_back(gltf.node(
+        {{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}, {"rotation", {q.x, q.y, q.z, std::cos(half)}}}));
   }
   gltf.scene(roots);
   return gltf.write(name);
@@ -116,7 +117,8 @@ void write_stripes(const std::filesystem::path& file) {
 // whose top corners have v = 0, shows the image's top half at its top.
 TEST(GltfTextureSlots, TheBaseColourImageIsTheRightWayUp) {
   write_stripes(test::scratch_dir() / "stripes.png");
-  const nlohmann::json material = {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 0}}}};
+  const nlohmann::json material = {
+      {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 0}}}};
   const Image image = render(quad_scene("quad", material, {"stripes.png"}, nullptr), "--spp 4");
   const int x = image.width / 2, top = image.height / 4, bottom = 3 * image.height / 4;
   EXPECT_GT(image.at(x, top, 0), 2.0f * image.at(x, top, 2)) << "the top of the picture is not red";
@@ -143,8 +145,7 @@ TEST(GltfTextureSlots, ANormalMapTiltsTheShadingTowardsItsTextureAxes) {
   // The map's scale multiplies its x and y: 0 undoes the tilt.
   tilted_normal("scaled.exr", 30.0f, false);
   const nlohmann::json unscaled = lambert({{"normalTexture", {{"index", 0}, {"scale", 0.0}}}});
-  EXPECT_NEAR(centre_mean(render(quad_scene("scaled", unscaled, {"scaled.exr"}, &from_right)), 1) / flat,
-              1.0, 0.01)
+  EXPECT_NEAR(centre_mean(render(quad_scene("scaled", unscaled, {"scaled.exr"}, &from_right)), 1) / flat, 1.0, 0.01)
       << "scale 0 leaves the map's z alone, which normalises to the flat normal";
 }
 
@@ -153,8 +154,9 @@ TEST(GltfTextureSlots, MetallicRoughnessTextureScalesTheFactors) {
   const float k = std::sqrt(0.5f);
   const Vec3 light(k, 0.0f, k);
   const auto red = [](float metallic, float roughness) {
-    return nlohmann::json{{"pbrMetallicRoughness",
-                           {{"baseColorFactor", {0.8, 0.1, 0.1, 1}}, {"metallicFactor", metallic}, {"roughnessFactor", roughness}}}};
+    return nlohmann::json{
+        {"pbrMetallicRoughness",
+         {{"baseColorFactor", {0.8, 0.1, 0.1, 1}}, {"metallicFactor", metallic}, {"roughnessFactor", roughness}}}};
   };
   // Green 0.5 (roughness) and blue 0 or 1 (metalness), under factors of 1.
   solid_texture("dielectric.exr", 0.0f, 0.5f, 0.0f);
@@ -166,7 +168,8 @@ TEST(GltfTextureSlots, MetallicRoughnessTextureScalesTheFactors) {
   const Image dielectric = render(quad_scene("dielectric", red(0.0f, 0.5f), {}, &light));
   const Image metal = render(quad_scene("metal", red(1.0f, 0.5f), {}, &light));
   for (int c = 0; c < 3; ++c) {
-    EXPECT_NEAR(centre_mean(from_dielectric_texture, c), centre_mean(dielectric, c), 0.01 * centre_mean(dielectric, c) + 1e-4)
+    EXPECT_NEAR(centre_mean(from_dielectric_texture, c), centre_mean(dielectric, c),
+                0.01 * centre_mean(dielectric, c) + 1e-4)
         << "channel " << c;
     EXPECT_NEAR(centre_mean(from_metal_texture, c), centre_mean(metal, c), 0.01 * centre_mean(metal, c) + 1e-4)
         << "channel " << c;

@@ -51,8 +51,8 @@ TEST(ImageLayer, OnlyReadingOrWritingAnImageLoadsOpenImageIo) {
 // The render starts loading the image layer in the background before it reads the scene; an error
 // in the scene must still be reported in full, and not wait for that load.
 TEST(ImageLayer, SceneErrorsDuringABackgroundLoadAreReportedInFull) {
-  const auto scene = test::write_file(
-      "scene.yaml", std::string(kTinyScene) + "  - {type: mesh, file: missing_mesh.obj}\n");
+  const auto scene =
+      test::write_file("scene.yaml", std::string(kTinyScene) + "  - {type: mesh, file: missing_mesh.obj}\n");
   std::string out;
   EXPECT_EQ(run_command(rtpro_executable().string() + " render " + scene.string() + " -o " +
                             (scene.parent_path() / "x.tif").string(),
@@ -78,8 +78,7 @@ TEST(ImageLayer, WithoutThePluginImagesFailWithAClearErrorAndEverythingElseWorks
     EXPECT_EQ(run_command(lonely.string() + " render -q " + scene.string() + " -o " + image.string(), &out), 0) << out;
     EXPECT_TRUE(std::filesystem::exists(image));
   }
-  EXPECT_EQ(run_command(lonely.string() + " compare " + (folder / "a.exr").string() + " " +
-                            (folder / "b.exr").string(),
+  EXPECT_EQ(run_command(lonely.string() + " compare " + (folder / "a.exr").string() + " " + (folder / "b.exr").string(),
                         &out),
             1);
   EXPECT_NE(out.find("librtpro_image_oiio.so"), std::string::npos) << out;
@@ -109,10 +108,10 @@ TEST(ImageLayer, ThePluginsLibraryListChangesOnlyWhoOpensThem) {
   // The same pixels (the files differ in their time stamps).
   const auto same_pixels = [&](const std::string& a, const std::string& b) {
     std::string out;
-    EXPECT_EQ(run_command(rtpro_executable().string() + " compare " + (folder / a).string() + " " +
-                              (folder / b).string(),
-                          &out),
-              0)
+    EXPECT_EQ(
+        run_command(rtpro_executable().string() + " compare " + (folder / a).string() + " " + (folder / b).string(),
+                    &out),
+        0)
         << out;
     return out.find("max error   0 ") != std::string::npos;
   };

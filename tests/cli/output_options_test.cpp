@@ -17,8 +17,8 @@
 namespace rtpro {
 namespace output_options_test {
 
-using test::run_command;
 using test::rtpro_command;
+using test::run_command;
 using test::run_rtpro;
 
 const char* kScene = R"(rtpro: 1
@@ -121,7 +121,8 @@ TEST(OutputOptions, OldDisplaySpellingWarns) {
 
 TEST(OutputOptions, HelpListsFormatsAndTheirEncodings) {
   const std::string out = run_rtpro("render --help", 0);
-  for (const char* fragment : {".exr", "scene-linear", ".tif", "16-bit", ".png", "8-bit", "--ocio-display", "-D,--define"})
+  for (const char* fragment :
+       {".exr", "scene-linear", ".tif", "16-bit", ".png", "8-bit", "--ocio-display", "-D,--define"})
     EXPECT_NE(out.find(fragment), std::string::npos) << fragment << "\n" << out;
 }
 
@@ -157,18 +158,20 @@ TEST(OutputOptions, WhatKilledRendersLeftInTmpdirIsRemovedByTheNextOne) {
   Image texture(2, 2);
   std::fill(texture.data.begin(), texture.data.end(), 0.5f);
   write_image(dir / "tex.png", texture, {});
-  const auto scene = test::write_file("textured.yaml",
-                                      "rtpro: 1\ncamera: {position: [0, 1, 6], look_at: [0, 0.5, 0], resolution: [24, 16]}\n"
-                                      "render: {spp: 2}\nlights: [{type: point, position: [4, 6, 5]}]\n"
-                                      "materials: {t: {color: {texture: tex.png}}}\n"
-                                      "world: [{type: sphere, center: [0, 0.7, 0], radius: 0.7, material: t}]\n");
+  const auto scene =
+      test::write_file("textured.yaml",
+                       "rtpro: 1\ncamera: {position: [0, 1, 6], look_at: [0, 0.5, 0], resolution: [24, 16]}\n"
+                       "render: {spp: 2}\nlights: [{type: point, position: [4, 6, 5]}]\n"
+                       "materials: {t: {color: {texture: tex.png}}}\n"
+                       "world: [{type: sphere, center: [0, 0.7, 0], radius: 0.7, material: t}]\n");
   const std::string dead = std::to_string(test::dead_pid()), alive = std::to_string(::getpid());
   std::ofstream(tmp / ("rtpro-stdout-" + dead + "-0.png")) << "a killed render's image";
   std::ofstream(tmp / ("rtpro-stdout-" + alive + "-0.png")) << "a live render's image";
   std::filesystem::create_directories(tmp / ("rtpro-textures-" + dead + "-0"));
   std::ofstream(tmp / ("rtpro-textures-" + dead + "-0") / "0.tx") << "a killed render's texture";
   std::string out;
-  ASSERT_EQ(run_command("{ TMPDIR=" + tmp.string() + " " + rtpro_command("render " + scene.string() + " -q -o - --format png") + " > " +
+  ASSERT_EQ(run_command("{ TMPDIR=" + tmp.string() + " " +
+                            rtpro_command("render " + scene.string() + " -q -o - --format png") + " > " +
                             (dir / "out.png").string() + "; }",
                         &out),
             0)
@@ -179,7 +182,8 @@ TEST(OutputOptions, WhatKilledRendersLeftInTmpdirIsRemovedByTheNextOne) {
   EXPECT_TRUE(std::filesystem::exists(tmp / ("rtpro-stdout-" + alive + "-0.png")));
   std::vector<std::string> left;
   for (const auto& entry : std::filesystem::directory_iterator(tmp)) left.push_back(entry.path().filename().string());
-  EXPECT_EQ(left, std::vector<std::string>{"rtpro-stdout-" + alive + "-0.png"}) << "the render left its own files behind";
+  EXPECT_EQ(left, std::vector<std::string>{"rtpro-stdout-" + alive + "-0.png"})
+      << "the render left its own files behind";
 }
 
 }  // namespace output_options_test

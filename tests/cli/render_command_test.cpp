@@ -52,13 +52,13 @@ TEST(RenderCommand, SameImageAtOneAndTwoThreads) {
   const auto scene = test::write_file("scene.yaml", kSmallScene);
   const auto dir = scene.parent_path();
   std::string out;
-  ASSERT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o " + (dir / "t1.exr").string() + " --threads 1 -q"),
-                        &out),
-            0)
+  ASSERT_EQ(
+      run_command(rtpro_cmd("render " + scene.string() + " -o " + (dir / "t1.exr").string() + " --threads 1 -q"), &out),
+      0)
       << out;
-  ASSERT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o " + (dir / "t2.exr").string() + " --threads 2 -q"),
-                        &out),
-            0)
+  ASSERT_EQ(
+      run_command(rtpro_cmd("render " + scene.string() + " -o " + (dir / "t2.exr").string() + " --threads 2 -q"), &out),
+      0)
       << out;
   const Image one = read_image(dir / "t1.exr"), two = read_image(dir / "t2.exr");
   ASSERT_EQ(one.data.size(), two.data.size());
@@ -138,14 +138,14 @@ TEST(RenderCommand, AovLayersAreWrittenWithCompositorNames) {
             0)
       << out;
   const Image image = read_image(file);
-  for (const char* name : {"R", "G", "B", "albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z", "depth.Z",
-                           "object_id.id"})
+  for (const char* name :
+       {"R", "G", "B", "albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z", "depth.Z", "object_id.id"})
     EXPECT_NE(std::find(image.channels.begin(), image.channels.end(), name), image.channels.end()) << name;
   EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -q -o " + file.string() + " --aov bogus"), &out), 2);
   // A layer asked for twice is refused before the render, not when the image is written.
   const auto twice = scene.parent_path() / "twice.exr";
-  EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -q -o " + twice.string() + " --aov depth,albedo,depth"),
-                        &out),
+  EXPECT_EQ(run_command(
+                rtpro_cmd("render " + scene.string() + " -q -o " + twice.string() + " --aov depth,albedo,depth"), &out),
             2)
       << out;
   EXPECT_NE(out.find("--aov depth"), std::string::npos) << out;
@@ -154,8 +154,9 @@ TEST(RenderCommand, AovLayersAreWrittenWithCompositorNames) {
 
 TEST(RenderCommand, BadInputsFailCleanlyAndLeaveNoFile) {
   const auto dir = test::scratch_dir();
-  const auto bad_scene = test::write_file("bad.yaml", "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\n"
-                                                      "world:\n  - {type: sphere, center: [0, 0, 0], radius: -1}\n");
+  const auto bad_scene = test::write_file("bad.yaml",
+                                          "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\n"
+                                          "world:\n  - {type: sphere, center: [0, 0, 0], radius: -1}\n");
   std::string out;
   const auto target = bad_scene.parent_path() / "never.png";
   EXPECT_EQ(run_command(rtpro_cmd("render " + bad_scene.string() + " -o " + target.string()), &out), 2);

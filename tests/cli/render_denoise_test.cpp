@@ -34,9 +34,11 @@ TEST(RenderDenoise, KeepsTheNoisyColourAndTheLayersAndSmoothsTheColour) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto dir = scene.parent_path();
   test::run_rtpro("render " + scene.string() + " -o " + (dir / "noisy.exr").string() + " -q --no-journal", 0);
-  test::run_rtpro("render " + scene.string() + " -o " + (dir / "denoised.exr").string() + " -q --no-journal --denoise", 0);
+  test::run_rtpro("render " + scene.string() + " -o " + (dir / "denoised.exr").string() + " -q --no-journal --denoise",
+                  0);
   const Image noisy = read_image(dir / "noisy.exr"), denoised = read_image(dir / "denoised.exr");
-  for (const char* name : {"R", "G", "B", "noisy.R", "noisy.G", "noisy.B", "albedo.R", "N.X", "depth.Z", "half_a.R", "half_b.B"})
+  for (const char* name :
+       {"R", "G", "B", "noisy.R", "noisy.G", "noisy.B", "albedo.R", "N.X", "depth.Z", "half_a.R", "half_b.B"})
     EXPECT_GE(channel(denoised, name), 0) << name;
   // The noisy layer is the render without --denoise, bit for bit; the colour differs from it but
   // keeps its mean.

@@ -18,8 +18,8 @@
 namespace rtpro {
 namespace resume_test {
 
-using test::rtpro_executable;
 using test::expect_same_pixels;
+using test::rtpro_executable;
 using test::run_command;
 
 const char* kScene = R"(rtpro: 1
@@ -143,7 +143,8 @@ TEST(Resume, KilledProgressiveRenderResumesBitIdenticallyBetweenAndWithinPasses)
     kill_after(scene, out, static_cast<std::size_t>(records), true, compactions);
     ASSERT_TRUE(std::filesystem::exists(out.string() + ".rtpro-journal"));
     std::string output;
-    ASSERT_EQ(run_command(quiet_render_cmd(scene, out, "--integrator path --resume --threads 2"), &output), 0) << output;
+    ASSERT_EQ(run_command(quiet_render_cmd(scene, out, "--integrator path --resume --threads 2"), &output), 0)
+        << output;
     expect_same_pixels(whole, out);
   }
 }

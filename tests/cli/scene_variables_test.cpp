@@ -8,8 +8,8 @@
 namespace rtpro {
 namespace scene_variables_test {
 
-using test::run_command;
 using test::rtpro_command;
+using test::run_command;
 using test::run_rtpro;
 
 nlohmann::json info(const std::string& args) { return nlohmann::json::parse(run_rtpro("info --json " + args, 0)); }
@@ -29,10 +29,11 @@ TEST(SceneVariables, DefaultsAreReplacedByDefines) {
 
 TEST(SceneVariables, ListsAndTextSubstitute) {
   const auto dir = test::scratch_dir();
-  const auto scene = test::write_file("v.yaml", std::string("rtpro: 1\n") +
-                                                    "camera: {position: $eye, look_at: [0, 0, 0], fov: 40, resolution: [16, 12]}\n"
-                                                    "variables: {eye: [0, 0, 5]}\n"
-                                                    "world: [{type: sphere, center: [0, 0, 0], radius: 1}]\n");
+  const auto scene =
+      test::write_file("v.yaml", std::string("rtpro: 1\n") +
+                                     "camera: {position: $eye, look_at: [0, 0, 0], fov: 40, resolution: [16, 12]}\n"
+                                     "variables: {eye: [0, 0, 5]}\n"
+                                     "world: [{type: sphere, center: [0, 0, 0], radius: 1}]\n");
   const nlohmann::json json = info(scene.string() + " -D eye=[0,2,9]");
   EXPECT_EQ(json["camera"]["position"], nlohmann::json::array({0, 2, 9})) << json.dump();
 }
@@ -60,14 +61,16 @@ TEST(SceneIncludes, MergeMappingsAndSpliceLists) {
   const auto dir = test::scratch_dir();
   std::filesystem::create_directories(dir / "parts");
   test::write_file("parts/base.yaml", std::string(kCamera) + "render: {spp: 16, seed: 5}\n");
-  test::write_file("parts/spheres.yaml", "- {type: sphere, center: [2, 0, 0], radius: 0.5}\n"
-                                         "- {type: sphere, center: [-2, 0, 0], radius: 0.5}\n");
-  const auto scene = test::write_file("scene.yaml", "rtpro: 1\ninclude: parts/base.yaml\nrender: {spp: 4}\n"
-                                                    "world:\n  - {type: sphere, center: [0, 0, 0], radius: 1}\n"
-                                                    "  - {include: parts/spheres.yaml}\n");
+  test::write_file("parts/spheres.yaml",
+                   "- {type: sphere, center: [2, 0, 0], radius: 0.5}\n"
+                   "- {type: sphere, center: [-2, 0, 0], radius: 0.5}\n");
+  const auto scene = test::write_file("scene.yaml",
+                                      "rtpro: 1\ninclude: parts/base.yaml\nrender: {spp: 4}\n"
+                                      "world:\n  - {type: sphere, center: [0, 0, 0], radius: 1}\n"
+                                      "  - {include: parts/spheres.yaml}\n");
   const nlohmann::json json = info(scene.string());
   EXPECT_EQ(json["render"]["spp"], 4) << json.dump();  // the including file's own key wins
-  EXPECT_EQ(json["render"]["seed"], 0);  // ... as a whole value: no deep merge
+  EXPECT_EQ(json["render"]["seed"], 0);                // ... as a whole value: no deep merge
   EXPECT_EQ(json["spheres"]["stored"], 3) << json.dump();
 }
 
@@ -75,8 +78,8 @@ TEST(SceneIncludes, MeshPathsAreRelativeToTheFileThatWritesThem) {
   const auto dir = test::scratch_dir();
   test::write_file("props/tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   test::write_file("props/table.yaml", "- {type: mesh, file: tri.obj}\n");
-  const auto scene = test::write_file("scene.yaml", std::string("rtpro: 1\n") + kCamera +
-                                                        "world: [{include: props/table.yaml}]\n");
+  const auto scene =
+      test::write_file("scene.yaml", std::string("rtpro: 1\n") + kCamera + "world: [{include: props/table.yaml}]\n");
   const nlohmann::json json = info(scene.string());
   EXPECT_EQ(json["triangles"]["stored"], 1) << json.dump();
 }
@@ -104,7 +107,8 @@ TEST(SceneIncludes, CyclesMissingFilesAndErrorsNameTheFile) {
 
 TEST(SceneIncludes, DepthIsLimited) {
   const auto dir = test::scratch_dir();
-  for (int i = 0; i < 20; ++i) test::write_file("d" + std::to_string(i) + ".yaml", "include: d" + std::to_string(i + 1) + ".yaml\n");
+  for (int i = 0; i < 20; ++i)
+    test::write_file("d" + std::to_string(i) + ".yaml", "include: d" + std::to_string(i + 1) + ".yaml\n");
   test::write_file("d20.yaml", std::string("rtpro: 1\n") + kCamera);
   const std::string out = run_rtpro("info " + (dir / "d0.yaml").string(), 2);
   EXPECT_NE(out.find("includes nested deeper than 16 files"), std::string::npos) << out;

@@ -10,8 +10,8 @@
 namespace rtpro {
 namespace shell_integration_test {
 
-using test::run_command;
 using test::rtpro_command;
+using test::run_command;
 
 std::string output_of(const std::string& command_line) {
   std::string out;

@@ -11,8 +11,8 @@
 namespace rtpro {
 namespace usage_test {
 
-using test::run_command;
 using test::rtpro_command;
+using test::run_command;
 using test::run_rtpro;
 
 const char* kScene = R"(rtpro: 1
@@ -55,7 +55,8 @@ TEST(Usage, UnknownOptionSuggestsTheNearest) {
   expect_one_line_error("render " + scene.string() + " -o " + out + " --render-anim", "rtpro's is --frames FIRST-LAST");
   expect_one_line_error("render " + scene.string() + " -o " + out + " -qx", "unknown option '-x'");
   // Mitsuba's -x once suggested -h; docs/usage.md names rtpro's spelling.
-  expect_one_line_error("render " + scene.string() + " -o " + out + " -x", "unknown option '-x' for 'rtpro render'; rtpro's is --skip-existing (Mitsuba's -x)");
+  expect_one_line_error("render " + scene.string() + " -o " + out + " -x",
+                        "unknown option '-x' for 'rtpro render'; rtpro's is --skip-existing (Mitsuba's -x)");
   expect_one_line_error("info " + scene.string() + " second.yaml third.yaml",
                         "unexpected arguments: 'second.yaml' 'third.yaml'");
   EXPECT_FALSE(std::filesystem::exists(out));
@@ -64,8 +65,9 @@ TEST(Usage, UnknownOptionSuggestsTheNearest) {
 TEST(Usage, SingleValueOptionsGivenTwiceAreRefused) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto dir = scene.parent_path();
-  expect_one_line_error("render " + scene.string() + " -o " + (dir / "a.exr").string() + " -o " + (dir / "b.exr").string(),
-                        "-o given twice");
+  expect_one_line_error(
+      "render " + scene.string() + " -o " + (dir / "a.exr").string() + " -o " + (dir / "b.exr").string(),
+      "-o given twice");
   expect_one_line_error("render " + scene.string() + " -o a.exr --spp=4 --spp 16", "--spp given twice ('4' and '16')");
   EXPECT_FALSE(std::filesystem::exists(dir / "a.exr"));
   EXPECT_FALSE(std::filesystem::exists(dir / "b.exr"));
@@ -76,8 +78,7 @@ TEST(Usage, ValuesAreCheckedByTheSceneFilesRules) {
   const std::string out = (scene.parent_path() / "out.exr").string();
   expect_one_line_error("render " + scene.string() + " -o " + out + " --seed -1",
                         "--seed -1: render.seed: expected a non-negative integer");
-  expect_one_line_error("render " + scene.string() + " -o " + out + " --size 64",
-                        "--size '64': expected WIDTHxHEIGHT");
+  expect_one_line_error("render " + scene.string() + " -o " + out + " --size 64", "--size '64': expected WIDTHxHEIGHT");
   expect_one_line_error("render " + scene.string() + " -o " + out + " --set render.background=[255,0,0]",
                         "looks like 8-bit sRGB values");
   expect_one_line_error("render " + scene.string() + " -o " + out + " --region 0,0,30,10",
@@ -102,8 +103,8 @@ TEST(Usage, AovsNeedAnExrOutput) {
 // --set and its shorthands apply in the order typed: the last one to set a key wins.
 TEST(Usage, OverridesApplyInCommandLineOrder) {
   const auto scene = test::write_file("scene.yaml", kScene);
-  const std::string base = "render " + scene.string() + " -o " + (scene.parent_path() / "o.exr").string() +
-                           " --stats --progress never";
+  const std::string base =
+      "render " + scene.string() + " -o " + (scene.parent_path() / "o.exr").string() + " --stats --progress never";
   EXPECT_NE(run_rtpro(base + " --set render.spp=9 --spp 16", 0).find(", 16 spp"), std::string::npos);
   EXPECT_NE(run_rtpro(base + " --spp 16 --set render.spp=9", 0).find(", 9 spp"), std::string::npos);
   EXPECT_NE(run_rtpro(base + " --size 8x8 --set camera.resolution=[10,6]", 0).find("10x6"), std::string::npos);

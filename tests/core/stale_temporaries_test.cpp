@@ -31,8 +31,8 @@ TEST(StaleTemporaries, OnlyDeadProcessesFilesOfThePrefixAreRemoved) {
   std::filesystem::create_symlink(folder / "k.tmp-" / "nowhere", folder / ("j.tmp-" + dead + "-7"));
   remove_stale_temporaries(folder, "j.tmp-");
   EXPECT_FALSE(std::filesystem::exists(folder / ("j.tmp-" + dead + "-0")));
-  for (const std::string& kept : {"j.tmp-" + live + "-1", "k.tmp-" + dead + "-0", std::string("j.tmp-x-1"),
-                                  "j.tmp-" + dead})
+  for (const std::string& kept :
+       {"j.tmp-" + live + "-1", "k.tmp-" + dead + "-0", std::string("j.tmp-x-1"), "j.tmp-" + dead})
     EXPECT_TRUE(std::filesystem::exists(folder / kept)) << kept;
   EXPECT_TRUE(std::filesystem::is_symlink(folder / ("j.tmp-" + dead + "-7")));
   remove_stale_temporaries(folder / "missing", "j.tmp-");  // nothing to list: nothing happens

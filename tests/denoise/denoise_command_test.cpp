@@ -130,7 +130,8 @@ void write_subsampled_exr(const fs::path& file) {
   std::vector<float> full(kSize * kSize, 0.5f), half(kSize * kSize / 4, 0.25f);
   Imf::FrameBuffer frame;
   for (const char* name : {"R", "G", "B"})
-    frame.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(full.data()), sizeof(float), sizeof(float) * kSize));
+    frame.insert(name,
+                 Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(full.data()), sizeof(float), sizeof(float) * kSize));
   frame.insert("albedo.R", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(half.data()), sizeof(float),
                                       sizeof(float) * (kSize / 2), 2, 2));
   Imf::OutputFile output(file.string().c_str(), header);
@@ -158,10 +159,8 @@ TEST(DenoiseCommand, RefusesBadInputsAndKeepsAnExistingOutput) {
     const char* file;
     const char* says;
   } cases[] = {
-      {"no_colour.exr", "no R, G, B colour channels"},
-      {"torn_albedo.exr", "albedo.R and albedo.G but not albedo.B"},
-      {"subsampled.exr", "Subsampled channels"},
-      {"not_an_image.exr", "not_an_image.exr"},
+      {"no_colour.exr", "no R, G, B colour channels"}, {"torn_albedo.exr", "albedo.R and albedo.G but not albedo.B"},
+      {"subsampled.exr", "Subsampled channels"},       {"not_an_image.exr", "not_an_image.exr"},
       {"missing.exr", "no such image file"},
   };
   for (const auto& bad : cases) {

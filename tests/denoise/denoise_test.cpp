@@ -64,7 +64,8 @@ constexpr float kEdgeNoise = 0.1f;  // relative
 
 void expect_side_kept(const Image& denoised, int x, float truth, float step, int c) {
   const float tolerance = 0.05f * step + 3.0f * kEdgeNoise * truth / std::sqrt(static_cast<float>(kEdgeHeight));
-  EXPECT_NEAR(region_mean(denoised, c, x, 0, x + 1, kEdgeHeight), truth, tolerance) << "column " << x << " channel " << c;
+  EXPECT_NEAR(region_mean(denoised, c, x, 0, x + 1, kEdgeHeight), truth, tolerance)
+      << "column " << x << " channel " << c;
 }
 
 TEST(Denoise, AlbedoEdgeStaysSharp) {
@@ -72,12 +73,15 @@ TEST(Denoise, AlbedoEdgeStaysSharp) {
   constexpr float kLight = 1.5f;
   NoisyOptions options;
   options.relative_sigma = kEdgeNoise;
-  const Image noisy = noisy_fixture::noisy_render(kWidth, kEdgeHeight, [&](int x, int) {
-    PixelTruth t;
-    t.albedo = x < kEdge ? bright : dark;
-    for (int c = 0; c < 3; ++c) t.colour[c] = kLight * t.albedo[c];
-    return t;
-  }, options);
+  const Image noisy = noisy_fixture::noisy_render(
+      kWidth, kEdgeHeight,
+      [&](int x, int) {
+        PixelTruth t;
+        t.albedo = x < kEdge ? bright : dark;
+        for (int c = 0; c < 3; ++c) t.colour[c] = kLight * t.albedo[c];
+        return t;
+      },
+      options);
   const Image denoised = denoise(noisy);
   for (int c = 0; c < 3; ++c) {
     const float step = kLight * (bright[c] - dark[c]);
@@ -100,14 +104,17 @@ TEST(Denoise, NormalEdgeStaysSharp) {
   constexpr float kLight = 2.0f;
   NoisyOptions options;
   options.relative_sigma = kEdgeNoise;
-  const Image noisy = noisy_fixture::noisy_render(kWidth, kEdgeHeight, [&](int x, int) {
-    PixelTruth t;
-    t.albedo = albedo;
-    t.normal = x < kEdge ? facing : turned;
-    const float shade = x < kEdge ? 1.0f : 0.5f;
-    for (int c = 0; c < 3; ++c) t.colour[c] = kLight * shade * albedo[c];
-    return t;
-  }, options);
+  const Image noisy = noisy_fixture::noisy_render(
+      kWidth, kEdgeHeight,
+      [&](int x, int) {
+        PixelTruth t;
+        t.albedo = albedo;
+        t.normal = x < kEdge ? facing : turned;
+        const float shade = x < kEdge ? 1.0f : 0.5f;
+        for (int c = 0; c < 3; ++c) t.colour[c] = kLight * shade * albedo[c];
+        return t;
+      },
+      options);
   const Image denoised = denoise(noisy);
   for (int c = 0; c < 3; ++c) {
     const float lit = kLight * albedo[c], dimmer = 0.5f * lit;
@@ -132,9 +139,12 @@ TEST(Denoise, FlatRegionsKeepTheirLevel) {
       options.relative_sigma = relative ? 0.5f : 0.0f;
       options.absolute_sigma = relative ? 0.0f : 0.3f * level;
       options.seed = 7;
-      const Image noisy = noisy_fixture::noisy_render(kWidth, kHeight, [&](int, int) {
-        return flat({level, 0.5f * level, 0.25f * level});
-      }, options);
+      const Image noisy = noisy_fixture::noisy_render(
+          kWidth, kHeight,
+          [&](int, int) {
+            return flat({level, 0.5f * level, 0.25f * level});
+          },
+          options);
       DenoiseReport report;
       const Image denoised = denoise(noisy, {}, &report);
       EXPECT_EQ(report.firefly_pixels, 0u) << "level " << level;
@@ -152,8 +162,12 @@ TEST(Denoise, FlatRegionsKeepTheirLevel) {
 TEST(Denoise, WithoutFeaturesTheColourAloneGuides) {
   NoisyOptions options;
   options.features = false;
-  const Image noisy = noisy_fixture::noisy_render(kWidth, kHeight, [](int, int) { return flat({1.0f, 0.5f, 0.2f}); },
-                                                  options);
+  const Image noisy = noisy_fixture::noisy_render(
+      kWidth, kHeight,
+      [](int, int) {
+        return flat({1.0f, 0.5f, 0.2f});
+      },
+      options);
   DenoiseReport report;
   const Image denoised = denoise(noisy, {}, &report);
   EXPECT_TRUE(report.features.empty());
@@ -221,11 +235,14 @@ Image with_noise_measure(const Image& image, bool halves, int noisy_columns = 0,
 // there, or a variance of zero) they are details and stay exactly as they are.
 TEST(Denoise, CleanDetailsStayWithTheRenderersNoiseMeasure) {
   constexpr int kNoisyColumns = 12;
-  const Image picture = noisy_fixture::noisy_render(kWidth, kHeight, [](int x, int y) {
-    const float level = (x == 40 && y == 20) ? 3.0f : (y == 40 ? 0.6f : 1.0f);
-    PixelTruth t = flat({0.3f * level, 0.3f * level, 0.3f * level});
-    return t;
-  }, NoisyOptions{0.0f});
+  const Image picture = noisy_fixture::noisy_render(
+      kWidth, kHeight,
+      [](int x, int y) {
+        const float level = (x == 40 && y == 20) ? 3.0f : (y == 40 ? 0.6f : 1.0f);
+        PixelTruth t = flat({0.3f * level, 0.3f * level, 0.3f * level});
+        return t;
+      },
+      NoisyOptions{0.0f});
   Image noisy_band = picture;
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kNoisyColumns; ++x)

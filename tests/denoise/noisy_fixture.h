@@ -35,9 +35,9 @@ inline std::uint32_t mix(std::uint32_t x) {
 // A standard normal variate (approximately: the sum of four uniforms, scaled to unit variance),
 // a pure function of its arguments.
 inline float gaussian(int x, int y, int channel, std::uint32_t stream) {
-  std::uint32_t h = mix(stream * 0x9e3779b9u ^ mix(static_cast<std::uint32_t>(x) * 73856093u ^
-                                                   static_cast<std::uint32_t>(y) * 19349663u ^
-                                                   static_cast<std::uint32_t>(channel) * 83492791u));
+  std::uint32_t h = mix(stream * 0x9e3779b9u ^
+                        mix(static_cast<std::uint32_t>(x) * 73856093u ^ static_cast<std::uint32_t>(y) * 19349663u ^
+                            static_cast<std::uint32_t>(channel) * 83492791u));
   float sum = 0.0f;
   for (int i = 0; i < 4; ++i) {
     h = mix(h + 0x632be5abu);
@@ -47,9 +47,9 @@ inline float gaussian(int x, int y, int channel, std::uint32_t stream) {
 }
 
 struct NoisyOptions {
-  float relative_sigma = 0.2f;   // the full mean's noise, per channel, relative to its value
-  float absolute_sigma = 0.0f;   // plus this
-  bool features = true;          // write albedo, N and depth
+  float relative_sigma = 0.2f;  // the full mean's noise, per channel, relative to its value
+  float absolute_sigma = 0.0f;  // plus this
+  bool features = true;         // write albedo, N and depth
   std::uint32_t seed = 1;
 };
 

@@ -111,7 +111,9 @@ TEST_P(DistributedRenderScenes, ImageIsBitIdenticalForAnyRankCountAndTileSize) {
       const JobResult job = render_as_job(scene, *backend, ranks, tile_size);
       ASSERT_TRUE(job.image.complete());
       ASSERT_EQ(job.image.image.data.size(), alone.image.data.size());
-      EXPECT_EQ(std::memcmp(job.image.image.data.data(), alone.image.data.data(), alone.image.data.size() * sizeof(float)), 0);
+      EXPECT_EQ(
+          std::memcmp(job.image.image.data.data(), alone.image.data.data(), alone.image.data.size() * sizeof(float)),
+          0);
       EXPECT_EQ(job.image.rays.total(), alone.rays.total());
       ASSERT_EQ(job.ranks.size(), std::size_t(ranks));
       std::uint64_t tiles = 0, rays = 0;
@@ -129,7 +131,8 @@ TEST_P(DistributedRenderScenes, ImageIsBitIdenticalForAnyRankCountAndTileSize) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Integrators, DistributedRenderScenes, ::testing::Values(Integrator::kWhitted, Integrator::kPath));
+INSTANTIATE_TEST_SUITE_P(Integrators, DistributedRenderScenes,
+                         ::testing::Values(Integrator::kWhitted, Integrator::kPath));
 
 TEST(DistributedRender, HandshakeNamesTheRankAndWhatDiffers) {
   Mailboxes mail(3);
@@ -220,7 +223,8 @@ TEST(DistributedRender, FramesFollowEachOtherWhenOneRankIsLate) {
     agree_on_job(leader, identity);
     const RenderResult result = render_image(scene, *backend, options);
     ASSERT_TRUE(result.complete());
-    EXPECT_EQ(std::memcmp(result.image.data.data(), alone.image.data.data(), alone.image.data.size() * sizeof(float)), 0);
+    EXPECT_EQ(std::memcmp(result.image.data.data(), alone.image.data.data(), alone.image.data.size() * sizeof(float)),
+              0);
   }
   for (auto& follower : followers) follower.join();
 }

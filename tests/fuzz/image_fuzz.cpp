@@ -21,8 +21,8 @@ namespace {
 // comparing big images pixel by pixel.
 constexpr std::uint64_t kReadBudget = std::uint64_t{2} << 20;
 constexpr std::array<std::string_view, 9> kExtensions = {".exr", ".png", ".tif", ".jpg", ".hdr",
-                                                        ".pfm", ".ppm", ".bmp", ".tga"};
-}
+                                                         ".pfm", ".ppm", ".bmp", ".tga"};
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;

@@ -51,7 +51,8 @@ int main(int argc, char** argv) {
     if (argument.rfind("-timeout=", 0) == 0) timeout_seconds = std::atof(argument.c_str() + 9);
     else if (argument.rfind("-rss_limit_mb=", 0) == 0) rss_limit_mb = std::atol(argument.c_str() + 14);
     else if (argument.rfind("-", 0) == 0) continue;
-    else for (auto& file : inputs_in(argument)) files.push_back(std::move(file));
+    else
+      for (auto& file : inputs_in(argument)) files.push_back(std::move(file));
   }
   int failures = 0;
   for (const auto& file : files) {

@@ -62,7 +62,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<std::string> overrides;
   while (overrides.size() < kMaxOverrides && text.substr(0, kOverridePrefix.size()) == kOverridePrefix) {
     const std::size_t end = text.find('\n');
-    overrides.emplace_back(text.substr(kOverridePrefix.size(), end == std::string_view::npos ? end : end - kOverridePrefix.size()));
+    overrides.emplace_back(
+        text.substr(kOverridePrefix.size(), end == std::string_view::npos ? end : end - kOverridePrefix.size()));
     text.remove_prefix(end == std::string_view::npos ? text.size() : end + 1);
   }
   try {

@@ -49,8 +49,8 @@ TEST(TriangleIntersect, RaysThroughASharedEdgeHitAtLeastOneSide) {
     const Vec3 org{along(rng) * 3 - 1, along(rng) * 3 - 1, 2.0f};
     const Vec3 dir = target - org;
     TriangleHit h1{}, h2{};
-    const bool hit = intersect_triangle(a, b, c, org, dir, 0.0f, kInf, h1) ||
-                     intersect_triangle(a, c, d, org, dir, 0.0f, kInf, h2);
+    const bool hit =
+        intersect_triangle(a, b, c, org, dir, 0.0f, kInf, h1) || intersect_triangle(a, c, d, org, dir, 0.0f, kInf, h2);
     ASSERT_TRUE(hit) << "ray " << i << " slipped through the diagonal at s=" << s;
   }
 }

@@ -28,11 +28,14 @@ void expect_answer(const CappedRun& run, int expected, const std::vector<std::st
                    const CappedRun* baseline = nullptr) {
   EXPECT_FALSE(run.killed) << "no answer within the kill limit:\n" << run.output;
   EXPECT_EQ(run.exit_code, expected) << run.output;
-  for (const std::string& text : says) EXPECT_NE(run.output.find(text), std::string::npos) << "missing '" << text << "' in:\n" << run.output;
+  for (const std::string& text : says)
+    EXPECT_NE(run.output.find(text), std::string::npos) << "missing '" << text << "' in:\n" << run.output;
   const CappedRun& startup = baseline ? *baseline : startup_cost();
-  EXPECT_LT(run.seconds, startup.seconds + kExtraSeconds) << "start-up alone took " << startup.seconds << " s\n" << run.output;
+  EXPECT_LT(run.seconds, startup.seconds + kExtraSeconds) << "start-up alone took " << startup.seconds << " s\n"
+                                                          << run.output;
   EXPECT_LT(run.peak_rss_mb, startup.peak_rss_mb + kExtraMegabytes)
-      << "start-up alone used " << startup.peak_rss_mb << " MB\n" << run.output;
+      << "start-up alone used " << startup.peak_rss_mb << " MB\n"
+      << run.output;
 }
 
 // Ten levels of ten instances: 10^10 after flattening, from about 1 KB of YAML.
@@ -40,7 +43,8 @@ std::filesystem::path instance_bomb() {
   std::string text = "rtpro: 1\n" + kCamera + "objects:\n  l0: [{type: sphere}]\n";
   for (int level = 1; level <= 10; ++level) {
     text += "  l" + std::to_string(level) + ": [";
-    for (int i = 0; i < 10; ++i) text += std::string(i ? ", " : "") + "{type: instance, object: l" + std::to_string(level - 1) + "}";
+    for (int i = 0; i < 10; ++i)
+      text += std::string(i ? ", " : "") + "{type: instance, object: l" + std::to_string(level - 1) + "}";
     text += "]\n";
   }
   return write_file("bomb.yaml", text + "world: [{type: instance, object: l10}]\n");
@@ -67,13 +71,15 @@ TEST(HostileInput, NestedInstancesOfAnEmptyObjectAreRefusedBeforeFlattening) {
   std::string text = "rtpro: 1\n" + kCamera + "objects:\n  l0: []\n";
   for (int level = 1; level <= 10; ++level) {
     text += "  l" + std::to_string(level) + ": [";
-    for (int i = 0; i < 10; ++i) text += std::string(i ? ", " : "") + "{type: instance, object: l" + std::to_string(level - 1) + "}";
+    for (int i = 0; i < 10; ++i)
+      text += std::string(i ? ", " : "") + "{type: instance, object: l" + std::to_string(level - 1) + "}";
     text += "]\n";
   }
   const auto scene = write_file("empty_bomb.yaml", text + "world: [{type: sphere}, {type: instance, object: l10}]\n");
   expect_answer(run_capped({rtpro(), "info", scene.string()}), 2, {"empty_bomb.yaml:", "10000000000 after flattening"});
-  expect_answer(run_capped({rtpro(), "render", scene.string(), "-o", (scene.parent_path() / "x.png").string(), "--max-memory", "0"}), 2,
-                {"instancing expands to 10000000000 instances"});
+  expect_answer(run_capped({rtpro(), "render", scene.string(), "-o", (scene.parent_path() / "x.png").string(),
+                            "--max-memory", "0"}),
+                2, {"instancing expands to 10000000000 instances"});
   EXPECT_FALSE(std::filesystem::exists(scene.parent_path() / "x.png"));
 }
 
@@ -82,8 +88,10 @@ TEST(HostileInput, InstancesWithinTheCountButOverTheMemoryBudgetNameTheBudget) {
   // 4 x 10^6 instances: under the 10^7 structural limit, 3.8 GiB estimated, over --max-memory 512.
   std::string text = "rtpro: 1\n" + kCamera + "objects:\n  a: [{type: sphere}]\n";
   text += "  b: [" + std::string("{type: instance, object: a}, ") + "{type: instance, object: a}]\n";
-  text += "  c: [{type: instance, object: b}, {type: instance, object: b}, {type: instance, object: b}, {type: instance, object: b}]\n";
-  text += "  d: [" ;
+  text +=
+      "  c: [{type: instance, object: b}, {type: instance, object: b}, {type: instance, object: b}, {type: instance, "
+      "object: b}]\n";
+  text += "  d: [";
   for (int i = 0; i < 500; ++i) text += std::string(i ? ", " : "") + "{type: instance, object: c}";
   text += "]\n  e: [";
   for (int i = 0; i < 1000; ++i) text += std::string(i ? ", " : "") + "{type: instance, object: d}";
@@ -104,13 +112,13 @@ TEST(HostileInput, GltfNodesPlacedByInstancesCountInTheMemoryEstimate) {
     nodes += std::string(i ? "," : "") + "{\"mesh\":0,\"translation\":[" + std::to_string(i) + ",0,0]}";
     roots += std::string(i ? "," : "") + std::to_string(i);
   }
-  write_file("many.gltf",
-             "{\"asset\":{\"version\":\"2.0\"},\"scenes\":[{\"nodes\":[" + roots + "]}],\"nodes\":[" + nodes +
-                 "],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],"
-                 "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"}],"
-                 "\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],"
-                 "\"buffers\":[{\"byteLength\":36,\"uri\":\"data:application/octet-stream;base64,"
-                 "AACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAAAAAAIA/\"}]}");
+  write_file("many.gltf", "{\"asset\":{\"version\":\"2.0\"},\"scenes\":[{\"nodes\":[" + roots + "]}],\"nodes\":[" +
+                              nodes +
+                              "],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],"
+                              "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"}],"
+                              "\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],"
+                              "\"buffers\":[{\"byteLength\":36,\"uri\":\"data:application/octet-stream;base64,"
+                              "AACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAAAAAAIA/\"}]}");
   std::string text = "rtpro: 1\n" + kCamera + "objects:\n  g: [{type: mesh, file: many.gltf}]\n  h: [";
   for (int i = 0; i < 50; ++i) text += std::string(i ? ", " : "") + "{type: instance, object: g}";
   text += "]\nworld: [";
@@ -132,7 +140,8 @@ TEST(HostileInput, VariableSubstitutionThatMultipliesTextIsRefusedNamingTheLimit
   const std::string value = "v=" + std::string(100000, 'a');
   expect_answer(run_capped({rtpro(), "info", scene.string(), "-D", value}), 2,
                 {"expand.yaml:", "variable substitution makes more than 64 MiB of text in all"});
-  const auto one = write_file("one.yaml", "rtpro: 1\n" + kCamera + "variables: {v: x}\nextra: \"" + repeated + repeated + "\"\n");
+  const auto one =
+      write_file("one.yaml", "rtpro: 1\n" + kCamera + "variables: {v: x}\nextra: \"" + repeated + repeated + "\"\n");
   expect_answer(run_capped({rtpro(), "info", one.string(), "-D", value}), 2,
                 {"one.yaml:", "makes a value longer than 1 MiB"});
 }
@@ -147,7 +156,8 @@ TEST(HostileInput, ADagOfIncludesIsRefusedAtTheIncludeOverTheLimit) {
   write_file("l0.yaml", base);
   for (int level = 1; level <= 14; ++level) {
     const std::string below = "l" + std::to_string(level - 1) + ".yaml";
-    write_file("l" + std::to_string(level) + ".yaml", "include: [" + below + ", " + below + ", " + below + ", " + below + "]\n");
+    write_file("l" + std::to_string(level) + ".yaml",
+               "include: [" + below + ", " + below + ", " + below + ", " + below + "]\n");
   }
   const auto scene = write_file("dag.yaml", "rtpro: 1\n" + kCamera + "include: l14.yaml\n");
   expect_answer(run_capped({rtpro(), "info", scene.string()}), 2, {"more than 1024 includes in one scene"});
@@ -165,7 +175,8 @@ TEST(HostileInput, EndlessAndBlockingSourcesAreRefusedByType) {
     const auto gltf_fifo = dir / name;
     ASSERT_EQ(::mkfifo(gltf_fifo.c_str(), 0600), 0);
     expect_answer(run_capped({rtpro(), "info", gltf_fifo.string()}, 10.0), 2, {name, "FIFO"});
-    expect_answer(run_capped({rtpro(), "render", gltf_fifo.string(), "-o", (dir / "x.png").string()}, 10.0), 2, {"FIFO"});
+    expect_answer(run_capped({rtpro(), "render", gltf_fifo.string(), "-o", (dir / "x.png").string()}, 10.0), 2,
+                  {"FIFO"});
     expect_answer(run_capped({rtpro(), "crosscheck", gltf_fifo.string()}, 10.0), 2, {"FIFO"});
   }
 }
@@ -213,7 +224,8 @@ TEST(HostileInput, AScaleEmbreeCannotTraceIsAnInputErrorForBothBackends) {
   const auto dir = scratch_dir();
   std::string text = "rtpro: 1\n" + kCamera + "objects:\n  s0: [{type: sphere}]\n";
   for (int i = 1; i <= 6; ++i)
-    text += "  s" + std::to_string(i) + ": [{type: instance, object: s" + std::to_string(i - 1) + ", transform: {scale: 0.001}}]\n";
+    text += "  s" + std::to_string(i) + ": [{type: instance, object: s" + std::to_string(i - 1) +
+            ", transform: {scale: 0.001}}]\n";
   const auto scene = write_file("tiny.yaml", text + "world: [{type: instance, object: s6}]\n");
   for (const char* backend : {"embree", "native"}) {
     expect_answer(run_capped({rtpro(), "render", scene.string(), "-o", (dir / "x.png").string(), "--backend", backend}),
@@ -229,7 +241,8 @@ TEST(HostileInput, AVertexAtTheCoordinateLimitIsTheSameInputErrorForBothBackends
   std::string messages[2];
   int i = 0;
   for (const char* backend : {"embree", "native"}) {
-    const CappedRun run = run_capped({rtpro(), "render", scene.string(), "-o", (dir / "x.png").string(), "--backend", backend});
+    const CappedRun run =
+        run_capped({rtpro(), "render", scene.string(), "-o", (dir / "x.png").string(), "--backend", backend});
     expect_answer(run, 2, {"far.yaml:4:", "1e+16"});
     messages[i++] = run.output;
   }
@@ -244,13 +257,16 @@ TEST(HostileInput, ImagesWhoseHeadersDeclareGigabytesAreRefusedFromTheHeader) {
   const auto exr = write_file("bad.exr", bytes.substr(1));  // the fuzz input's first byte picks the extension
   const auto good = dir / "good.exr";
   ASSERT_EQ(run_capped({rtpro(), "render", (scenes_dir() / "demo.yaml").string(), "-o", good.string(), "--size", "8x8",
-                        "--spp", "1", "-q"}).exit_code, 0);
+                        "--spp", "1", "-q"})
+                .exit_code,
+            0);
   const CappedRun image_startup = run_capped({rtpro(), "compare", good.string(), good.string()});
   ASSERT_EQ(image_startup.exit_code, 0) << image_startup.output;
-  expect_answer(run_capped({rtpro(), "compare", good.string(), exr.string()}), 2, {"bad.exr", "attribute"}, &image_startup);
+  expect_answer(run_capped({rtpro(), "compare", good.string(), exr.string()}), 2, {"bad.exr", "attribute"},
+                &image_startup);
   // A PNG signature and header declaring 65535 x 65535 pixels, nothing more.
-  const unsigned char png[] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a, 0, 0, 0, 13, 'I', 'H', 'D', 'R', 0, 0, 0xff, 0xff,
-                               0, 0, 0xff, 0xff, 8, 2, 0, 0, 0, 0x39, 0x67, 0x4e, 0x07};
+  const unsigned char png[] = {0x89, 'P',  'N',  'G', 0x0d, 0x0a, 0x1a, 0x0a, 0, 0, 0, 13, 'I',  'H',  'D',  'R', 0,
+                               0,    0xff, 0xff, 0,   0,    0xff, 0xff, 8,    2, 0, 0, 0,  0x39, 0x67, 0x4e, 0x07};
   const auto huge = write_file("huge.png", std::string(reinterpret_cast<const char*>(png), sizeof png));
   expect_answer(run_capped({rtpro(), "compare", good.string(), huge.string()}), 2, {"huge.png"}, &image_startup);
 }

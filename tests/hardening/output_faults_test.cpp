@@ -62,8 +62,8 @@ TEST(AtomicWrite, RemovesStaleTemporariesOfDeadProcessesOnly) {
   write_file_atomically(target, "done");
   EXPECT_EQ(read_all(target), "done");
   EXPECT_FALSE(std::filesystem::exists(stale));
-  EXPECT_TRUE(std::filesystem::exists(live));    // its process may still be writing
-  EXPECT_TRUE(std::filesystem::exists(other));   // another target's business
+  EXPECT_TRUE(std::filesystem::exists(live));   // its process may still be writing
+  EXPECT_TRUE(std::filesystem::exists(other));  // another target's business
 }
 
 // A file-size limit makes write(2) fail with EFBIG exactly as a full disk fails with ENOSPC;
@@ -107,8 +107,8 @@ TEST(AtomicWrite, ARealFullTmpfsKeepsTheOldImage) {
     ~Unmount() { ::umount(dir.c_str()); }
   } unmount{dir};
   const auto good = dir / "render.exr";
-  const CappedRun first = run_capped({rtpro_executable().string(), "render", (scenes_dir() / "demo.yaml").string(), "-o",
-                                      good.string(), "--size", "32x32", "--spp", "1", "-q"});
+  const CappedRun first = run_capped({rtpro_executable().string(), "render", (scenes_dir() / "demo.yaml").string(),
+                                      "-o", good.string(), "--size", "32x32", "--spp", "1", "-q"});
   ASSERT_EQ(first.exit_code, 0) << first.output;
   const std::string before = read_all(good);
   // Fill what is left, then ask for an image that cannot fit.
@@ -124,9 +124,14 @@ TEST(OutputFaults, AFullDiskDuringAnImageWriteIsExitOneAndKeepsTheOldImage) {
   const auto dir = scratch_dir();
   for (const char* name : {"out.exr", "out.png", "out.tif"}) {
     const auto target = dir / name;
-    const std::vector<std::string> render = {rtpro_executable().string(), "render",
-                                             (scenes_dir() / "demo.yaml").string(), "-o", target.string(),
-                                             "--spp", "1", "-q"};
+    const std::vector<std::string> render = {rtpro_executable().string(),
+                                             "render",
+                                             (scenes_dir() / "demo.yaml").string(),
+                                             "-o",
+                                             target.string(),
+                                             "--spp",
+                                             "1",
+                                             "-q"};
     std::vector<std::string> small = render;
     small.insert(small.end(), {"--size", "16x16"});
     ASSERT_EQ(run_capped(small).exit_code, 0);
@@ -146,8 +151,9 @@ TEST(OutputFaults, StatsJsonNeverReplacesADeviceOrASymlink) {
   const auto link = dir / "stats.json";
   std::filesystem::create_symlink(victim, link);
   for (const std::string& target : {link.string(), std::string("/dev/null")}) {
-    const CappedRun run = run_capped({rtpro_executable().string(), "render", (scenes_dir() / "demo.yaml").string(), "-o",
-                                      (dir / "x.png").string(), "--size", "8x8", "--spp", "1", "--stats-json", target});
+    const CappedRun run =
+        run_capped({rtpro_executable().string(), "render", (scenes_dir() / "demo.yaml").string(), "-o",
+                    (dir / "x.png").string(), "--size", "8x8", "--spp", "1", "--stats-json", target});
     EXPECT_EQ(run.exit_code, 1) << run.output;
     EXPECT_NE(run.output.find("rtpro replaces only regular files"), std::string::npos) << run.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "x.png")) << "refused before rendering";
@@ -164,7 +170,8 @@ TEST(OutputFaults, AnOutputThatIsTheImageOrTheSceneIsRefusedBeforeRendering) {
   const auto image = dir / "x.png";
   std::ofstream(image) << "a previous good image";
   const std::string same_image = (dir / "." / "x.png").string();
-  for (const auto& [target, other] : {std::pair{same_image, std::string("-o")}, std::pair{scene.string(), std::string("the scene")}}) {
+  for (const auto& [target, other] :
+       {std::pair{same_image, std::string("-o")}, std::pair{scene.string(), std::string("the scene")}}) {
     const CappedRun run = run_capped({rtpro_executable().string(), "render", scene.string(), "--size", "8x8", "--spp",
                                       "1", "-o", image.string(), "--stats-json", target});
     EXPECT_EQ(run.exit_code, 2) << target << ": " << run.output;
@@ -181,8 +188,16 @@ TEST(OutputFaults, AnOutputThatIsTheImageOrTheSceneIsRefusedBeforeRendering) {
 TEST(OutputFaults, SigkillDuringARenderNeverLeavesABrokenImage) {
   const auto dir = scratch_dir();
   const auto target = dir / "out.exr";
-  const std::vector<std::string> render = {rtpro_executable().string(), "render", (scenes_dir() / "demo.yaml").string(),
-                                           "-o", target.string(), "--size", "512x384", "--spp", "1", "-q"};
+  const std::vector<std::string> render = {rtpro_executable().string(),
+                                           "render",
+                                           (scenes_dir() / "demo.yaml").string(),
+                                           "-o",
+                                           target.string(),
+                                           "--size",
+                                           "512x384",
+                                           "--spp",
+                                           "1",
+                                           "-q"};
   const CappedRun reference = run_capped(render, 120);
   ASSERT_EQ(reference.exit_code, 0) << reference.output;
   const std::string good = read_all(target);
@@ -218,8 +233,18 @@ TEST(OutputFaults, SigkillDuringARenderNeverLeavesABrokenImage) {
 TEST(OutputFaults, TwoRendersWritingOneFileEndWithOneCompleteImageOrTheSecondRefused) {
   const auto dir = scratch_dir();
   const auto target = dir / "out.png";
-  std::vector<std::string> a = {rtpro_executable().string(), "render", (scenes_dir() / "demo.yaml").string(), "-o",
-                                target.string(), "--size", "320x240", "--spp", "1", "-q", "--threads", "1"};
+  std::vector<std::string> a = {rtpro_executable().string(),
+                                "render",
+                                (scenes_dir() / "demo.yaml").string(),
+                                "-o",
+                                target.string(),
+                                "--size",
+                                "320x240",
+                                "--spp",
+                                "1",
+                                "-q",
+                                "--threads",
+                                "1"};
   std::vector<std::string> b = a;
   b.insert(b.end(), {"--seed", "7"});
   CappedRun first, second;

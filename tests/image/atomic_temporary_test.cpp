@@ -43,7 +43,8 @@ std::vector<fs::path> plant_links(const fs::path& target, const fs::path& victim
 void expect_untouched(const fs::path& victim, const fs::path& output, const std::vector<fs::path>& links) {
   EXPECT_EQ(contents(victim), "precious") << "the planted link was followed";
   EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(output))) << output << " is not a regular file of its own";
-  for (const fs::path& link : links) EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link))) << link << " was replaced or removed";
+  for (const fs::path& link : links)
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link))) << link << " was replaced or removed";
 }
 
 TEST(AtomicTemporary, LinksPlantedAtTheTemporaryNamesOfATiffAreNotFollowed) {

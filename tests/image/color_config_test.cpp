@@ -39,10 +39,8 @@ class ScopedOcioVariable {
     setenv("OCIO", value.c_str(), 1);
   }
   ~ScopedOcioVariable() {
-    if (previous_)
-      setenv("OCIO", previous_->c_str(), 1);
-    else
-      unsetenv("OCIO");
+    if (previous_) setenv("OCIO", previous_->c_str(), 1);
+    else unsetenv("OCIO");
   }
 
  private:
@@ -110,8 +108,7 @@ TEST(ColorConfig, RawViewLeavesValuesAlone) {
 }
 
 TEST(ColorConfig, UnknownViewListsTheAvailableOnes) {
-  const std::string message =
-      error_message_of([] { ColorConfig::bundled().display_transform("sRGB", "Filmic"); });
+  const std::string message = error_message_of([] { ColorConfig::bundled().display_transform("sRGB", "Filmic"); });
   EXPECT_NE(message.find("\"Filmic\""), std::string::npos) << message;
   for (const char* view : {"Standard", "ACES 1.0 SDR-video", "Raw"})
     EXPECT_NE(message.find(view), std::string::npos) << message;
@@ -126,10 +123,10 @@ TEST(ColorConfig, UnknownDisplayListsTheAvailableOnes) {
 // A colour-space or view name from a scene file reached the terminal raw, escape sequences and all.
 TEST(ColorConfig, NamesFromInputFilesAreShownWithoutControlCharacters) {
   const ColorConfig config = ColorConfig::bundled();
-  for (const std::function<void()>& attempt : std::vector<std::function<void()>>{
-           [&] { config.to_scene_linear("evil\x1b[2J\nname"); },
-           [&] { config.display_transform("sRGB", "evil\x1b[2J\nname"); },
-           [&] { config.display_transform("evil\x1b[2J\nname", ""); }}) {
+  for (const std::function<void()>& attempt :
+       std::vector<std::function<void()>>{[&] { config.to_scene_linear("evil\x1b[2J\nname"); },
+                                          [&] { config.display_transform("sRGB", "evil\x1b[2J\nname"); },
+                                          [&] { config.display_transform("evil\x1b[2J\nname", ""); }}) {
     try {
       attempt();
       ADD_FAILURE() << "an unknown name was accepted";

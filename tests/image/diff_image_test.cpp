@@ -38,7 +38,7 @@ TEST(DiffImage, HottestPixelIsWhereTheErrorIs) {
   EXPECT_EQ(heat_map.at(7, 2, 2), 1.0f);
   EXPECT_NEAR(heat_map.at(7, 2, 3), 0.4f, 1e-6f);
   EXPECT_EQ(heat_map.at(0, 0, 0) + heat_map.at(0, 0, 1) + heat_map.at(0, 0, 2), 0.0f);  // no error: black
-  EXPECT_GT(heat_map.at(1, 5, 2), 0.0f);  // a quarter of the scale: blue
+  EXPECT_GT(heat_map.at(1, 5, 2), 0.0f);                                                // a quarter of the scale: blue
 }
 
 TEST(DiffImage, ErrorsAtTheFailThresholdAreWhiteAndNanIsMagenta) {

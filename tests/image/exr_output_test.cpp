@@ -28,9 +28,16 @@ namespace fs = std::filesystem;
 // Every kind of float a film can hold: signed zeros, denormals, huge values, infinities, NaN.
 Image every_kind_of_float(int width, int height, std::vector<std::string> channels) {
   Image image(width, height, std::move(channels));
-  const float specials[] = {0.0f, -0.0f, std::numeric_limits<float>::denorm_min(), -1e-40f, 1e30f,
-                            std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
-                            std::numeric_limits<float>::quiet_NaN(), 0.18f, -3.5f};
+  const float specials[] = {0.0f,
+                            -0.0f,
+                            std::numeric_limits<float>::denorm_min(),
+                            -1e-40f,
+                            1e30f,
+                            std::numeric_limits<float>::infinity(),
+                            -std::numeric_limits<float>::infinity(),
+                            std::numeric_limits<float>::quiet_NaN(),
+                            0.18f,
+                            -3.5f};
   std::uint32_t state = 7;
   for (std::size_t i = 0; i < image.data.size(); ++i) {
     state = state * 1664525u + 1013904223u;
@@ -53,7 +60,8 @@ std::map<std::string, std::string> attributes_of(const fs::path& file) {
 std::map<std::string, std::string> raw_attributes_of(const fs::path& file) {
   Imf::InputFile input(file.c_str());
   std::map<std::string, std::string> attributes;
-  for (auto it = input.header().begin(); it != input.header().end(); ++it) attributes[it.name()] = it.attribute().typeName();
+  for (auto it = input.header().begin(); it != input.header().end(); ++it)
+    attributes[it.name()] = it.attribute().typeName();
   return attributes;
 }
 

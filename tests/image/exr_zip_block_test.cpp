@@ -20,7 +20,8 @@ std::vector<std::uint8_t> decode(std::span<const std::uint8_t> stored, std::size
   uLongf size = static_cast<uLongf>(raw_size);
   EXPECT_EQ(uncompress(filtered.data(), &size, stored.data(), static_cast<uLong>(stored.size())), Z_OK);
   EXPECT_EQ(size, raw_size);
-  for (std::size_t i = 1; i < filtered.size(); ++i) filtered[i] = static_cast<std::uint8_t>(filtered[i - 1] + filtered[i] - 128);
+  for (std::size_t i = 1; i < filtered.size(); ++i)
+    filtered[i] = static_cast<std::uint8_t>(filtered[i - 1] + filtered[i] - 128);
   std::vector<std::uint8_t> raw(raw_size);
   const std::size_t half = (raw_size + 1) / 2;
   for (std::size_t i = 0; i < raw_size; ++i) raw[i] = i % 2 == 0 ? filtered[i / 2] : filtered[half + i / 2];

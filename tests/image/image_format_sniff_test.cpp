@@ -28,7 +28,7 @@ TEST(ImageFormatSniff, TextAndShortHeadsNameNoReader) {
   EXPECT_EQ(image_format_from_signature(""), "");
   EXPECT_EQ(image_format_from_signature("this is not a PNG file at all"), "");
   EXPECT_EQ(image_format_from_signature("P7 is not netpbm"), "");
-  EXPECT_EQ(image_format_from_signature("P6"), "");  // no separator yet: too short to trust
+  EXPECT_EQ(image_format_from_signature("P6"), "");           // no separator yet: too short to trust
   EXPECT_EQ(image_format_from_signature("\x89PNG\r\n"), "");  // a cut signature
   // Formats read by their extension alone: DPX, WebP.
   EXPECT_EQ(image_format_from_signature("SDPX\0\0\x20\0"s), "");

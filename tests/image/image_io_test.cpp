@@ -99,8 +99,8 @@ TEST(ImageIo, ExrKeepsNanAndInfinity) {
 
 TEST(ImageIo, ExrKeepsEveryChannelByName) {
   const auto file = test::scratch_dir() / "aovs.exr";
-  const std::vector<std::string> names = {"R", "G", "B", "A", "albedo.R", "albedo.G", "albedo.B",
-                                          "N.X", "N.Y", "N.Z", "Z"};
+  const std::vector<std::string> names = {"R",        "G",   "B",   "A",   "albedo.R", "albedo.G",
+                                          "albedo.B", "N.X", "N.Y", "N.Z", "Z"};
   const Image image = varied_image(5, 4, names);
   write_image(file, image, {});
   test::expect_same_channels(image, read_image(file));
@@ -119,7 +119,7 @@ TEST(ImageIo, ExrCarriesChromaticitiesAndMetadata) {
   ASSERT_NE(chromaticities, nullptr);
   ASSERT_EQ(chromaticities->type(), OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8));
   const float* xy = static_cast<const float*>(chromaticities->data());
-  EXPECT_FLOAT_EQ(xy[0], 0.64f);  // Rec.709 red x
+  EXPECT_FLOAT_EQ(xy[0], 0.64f);    // Rec.709 red x
   EXPECT_FLOAT_EQ(xy[7], 0.3290f);  // D65 white y
 }
 
@@ -496,7 +496,8 @@ TEST(ImageIo, AnExrAttributeWhoseStatedSizeItsContentsDoNotFillIsRefused) {
   const auto folder = test::scratch_dir();
   write_image(folder / "whole.exr", varied_image(8, 8, {"R", "G", "B", "A", "depth.Z"}), {});
   ASSERT_NO_THROW(read_image(folder / "whole.exr"));
-  for (const auto& [name, type] : {std::pair<std::string, std::string>{"channels", "chlist"}, {"dataWindow", "box2i"}}) {
+  for (const auto& [name, type] :
+       {std::pair<std::string, std::string>{"channels", "chlist"}, {"dataWindow", "box2i"}}) {
     std::string bytes = file_bytes(folder / "whole.exr");
     const std::size_t field = exr_attribute_size_field(bytes, name, type);
     const std::uint32_t size = static_cast<unsigned char>(bytes[field]);  // both are under 256 bytes
@@ -571,7 +572,8 @@ TEST(ImageIo, ABmpDeclaringMorePixelsThanTheBudgetIsRefusedBeforeOpenImageIoDeco
   put_u32(bytes, 18, 8);
   put_u32(bytes, 22, 0x80000000u);  // a height of INT32_MIN: top-down, and no absolute value in 32 bits
   std::ofstream(folder / "tall.bmp", std::ios::binary) << bytes;
-  const std::string tall = error_message_of<InputError>([&] { read_image(folder / "tall.bmp", std::uint64_t{256} << 20); });
+  const std::string tall =
+      error_message_of<InputError>([&] { read_image(folder / "tall.bmp", std::uint64_t{256} << 20); });
   EXPECT_NE(tall.find("8x2147483648"), std::string::npos) << tall;
 }
 

@@ -99,8 +99,11 @@ void write_through_openimageio(const fs::path& file, const Image& image, const I
 TEST(PngOutput, IsWhatOpenImageIoWroteForTheSameImage) {
   const Image image = ramp_image(37, 23, {"R", "G", "B", "A", "N.X"});
   ImageWriteOptions options;
-  options.metadata = {{"DateTime", "2026:01:02 03:04:05"}, {"rtpro:backend", "embree"}, {"Software", "rtpro test"},
-                      {"Artist", "the test"}, {"Copyright", "none"}};
+  options.metadata = {{"DateTime", "2026:01:02 03:04:05"},
+                      {"rtpro:backend", "embree"},
+                      {"Software", "rtpro test"},
+                      {"Artist", "the test"},
+                      {"Copyright", "none"}};
   const auto folder = test::scratch_dir();
   write_png(folder / "libpng.png", image, options);
   write_through_openimageio(folder / "openimageio.png", image, options,
@@ -114,7 +117,7 @@ TEST(PngOutput, IsWhatOpenImageIoWroteForTheSameImage) {
   const std::vector<Chunk> ours = chunks_of(folder / "libpng.png");
   EXPECT_EQ(ours, chunks_of(folder / "openimageio.png"));
   EXPECT_EQ(types_of(ours), (std::vector<std::string>{"IHDR", "gAMA", "sRGB", "cHRM", "oFFs", "tIME", "tEXt", "tEXt",
-                                                     "tEXt", "tEXt", "tEXt", "tEXt", "pixels", "IEND"}));
+                                                      "tEXt", "tEXt", "tEXt", "tEXt", "pixels", "IEND"}));
   const auto input = OIIO::ImageInput::open((folder / "libpng.png").string());
   ASSERT_TRUE(input) << OIIO::geterror();
   EXPECT_EQ(input->spec().get_string_attribute("DateTime"), "2026:01:02 03:04:05");

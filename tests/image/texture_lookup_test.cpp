@@ -54,8 +54,8 @@ TEST(TextureLookup, MatchesOpenImageIOsOwnTextureCallOnTheSameFile) {
   for (const TextureWrap wrap : {TextureWrap::kRepeat, TextureWrap::kClamp, TextureWrap::kMirror, TextureWrap::kBlack})
     for (const auto& [s, t] : {std::pair{0.3f, 0.7f}, {0.01f, 0.99f}, {1.37f, -0.2f}, {-0.6f, 2.45f}}) {
       OIIO::TextureOpt options;
-      options.swrap = options.twrap = wrap == TextureWrap::kRepeat  ? OIIO::TextureOpt::WrapPeriodic
-                                      : wrap == TextureWrap::kClamp ? OIIO::TextureOpt::WrapClamp
+      options.swrap = options.twrap = wrap == TextureWrap::kRepeat   ? OIIO::TextureOpt::WrapPeriodic
+                                      : wrap == TextureWrap::kClamp  ? OIIO::TextureOpt::WrapClamp
                                       : wrap == TextureWrap::kMirror ? OIIO::TextureOpt::WrapMirror
                                                                      : OIIO::TextureOpt::WrapBlack;
       options.interpmode = OIIO::TextureOpt::InterpBilinear;
@@ -110,10 +110,11 @@ std::filesystem::path write_declared_png(const std::string& name, std::uint32_t 
   const std::string row(1 + 3 * std::size_t(width), '\0');
   std::string compressed(compressBound(uLong(row.size())), '\0');
   uLongf size = uLongf(compressed.size());
-  compress(reinterpret_cast<Bytef*>(compressed.data()), &size, reinterpret_cast<const Bytef*>(row.data()), uLong(row.size()));
+  compress(reinterpret_cast<Bytef*>(compressed.data()), &size, reinterpret_cast<const Bytef*>(row.data()),
+           uLong(row.size()));
   compressed.resize(size);
-  return test::write_file(name, std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", header) + chunk("IDAT", compressed) +
-                                     chunk("IEND", ""));
+  return test::write_file(name, std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", header) +
+                                    chunk("IDAT", compressed) + chunk("IEND", ""));
 }
 
 // A 0.8 MB PNG declaring 16384x16384 pixels took 7.2 GB and a minute: the decoded image fitted
@@ -127,7 +128,8 @@ TEST(TextureLookup, ATextureWhoseCopiesExceedTheBudgetIsRefusedFromItsHeader) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.where().file, file.string());
     EXPECT_NE(e.message().find("16384x12000, 3 channels"), std::string::npos) << e.message();
-    EXPECT_NE(e.message().find("with its linear and mip-mapped texture copies; the limit is"), std::string::npos) << e.message();
+    EXPECT_NE(e.message().find("with its linear and mip-mapped texture copies; the limit is"), std::string::npos)
+        << e.message();
   }
 }
 

@@ -211,8 +211,8 @@ TEST(TileJournal, FifoDeviceDirectoryOrLinkAtTheJournalIsRefusedAndLeftInPlace) 
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   std::filesystem::create_symlink("/dev/zero", link);
   std::filesystem::create_directory(directory);
-  for (const auto& [file, kind] : {std::pair{fifo, "a FIFO"}, std::pair{link, "a symbolic link"},
-                                   std::pair{directory, "a directory"}}) {
+  for (const auto& [file, kind] :
+       {std::pair{fifo, "a FIFO"}, std::pair{link, "a symbolic link"}, std::pair{directory, "a directory"}}) {
     SCOPED_TRACE(file.string());
     try {
       read_journal(file, grid, kChannels);

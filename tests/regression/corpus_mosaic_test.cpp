@@ -37,9 +37,10 @@ std::vector<fs::path> corpus_models() {
   std::error_code error;
   for (const auto& entry : fs::recursive_directory_iterator(kCorpus, error)) {
     std::string extension = entry.path().extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    const bool gltf2 = (extension == ".gltf" || extension == ".glb") &&
-                       entry.path().string().find("glTF2") != std::string::npos;
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    const bool gltf2 =
+        (extension == ".gltf" || extension == ".glb") && entry.path().string().find("glTF2") != std::string::npos;
     if (entry.is_regular_file() && (extension == ".obj" || extension == ".ply" || gltf2)) files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
@@ -52,7 +53,8 @@ std::string scene_text(const fs::path& model) {
          std::to_string(kTile) + "]}\nrender: {spp: 4, max_depth: 1, ambient: 0.3, background: [" +
          std::to_string(kBackground) + ", " + std::to_string(kBackground) + ", " + std::to_string(kBackground) +
          "]}\nlights: [{type: directional, direction: [-0.4, -1, -0.7], intensity: 0.9}]\nworld:\n"
-         "  - {type: mesh, file: \"" + model.string() + "\"}\n";
+         "  - {type: mesh, file: \"" +
+         model.string() + "\"}\n";
 }
 
 // Looks at the bounds' centre from a fixed diagonal, far enough that the bounding sphere fits.

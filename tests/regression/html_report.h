@@ -27,20 +27,11 @@ inline std::string html_escaped(std::string_view text) {
   std::string out;
   for (const char c : text) {
     switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
     }
   }
   return out;
@@ -122,7 +113,8 @@ table.figures th { text-align: left; padding-right: 10px; font-weight: normal; c
 </style></head><body>
 <h1>rtpro regression report</h1>
 )";
-  if (failures.empty()) return html + "<p>No failing regression tests.</p>\n" + mosaic_html(has_mosaic) + "</body></html>\n";
+  if (failures.empty())
+    return html + "<p>No failing regression tests.</p>\n" + mosaic_html(has_mosaic) + "</body></html>\n";
   html += "<p>" + std::to_string(failures.size()) +
           " failing (scene, backend) pairs. Images are shown through the default OpenColorIO view. The diff "
           "is black where the images agree, rising through blue and red to white at the error its figures "
@@ -180,8 +172,8 @@ inline std::filesystem::path regenerate_report(const std::filesystem::path& root
   std::filesystem::create_directories(root);
   const ReportLock lock(root / ".report.lock");
   const std::filesystem::path report = root / "report.html";
-  write_text_atomically(report, report_html(collect_failures(root), update_command,
-                                            std::filesystem::exists(root / "corpus_mosaic.png")));
+  write_text_atomically(
+      report, report_html(collect_failures(root), update_command, std::filesystem::exists(root / "corpus_mosaic.png")));
   return report;
 }
 

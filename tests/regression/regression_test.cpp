@@ -114,8 +114,7 @@ void update_reference(const fs::path& scene, const Image& rendered) {
     std::ostringstream change;
     if (comparison.incompatibility.empty())
       change << "changed: max error " << comparison.max_error << ", " << comparison.fail_pixels << " pixels differ";
-    else
-      change << "changed: " << comparison.incompatibility;
+    else change << "changed: " << comparison.incompatibility;
     outcome = change.str();
   }
   fs::create_directories(reference.parent_path());

@@ -28,8 +28,9 @@ constexpr int kSpp = 4;
 RenderScene unlit_scene(const std::filesystem::path& file) {
   const SceneDescription full = parse_scene_file(file);
   const long height = std::max(1L, std::lround(double(kWidth) * full.camera.height / full.camera.width));
-  RenderScene scene = build_render_scene(parse_scene_file(
-      file, {"render.spp=" + std::to_string(kSpp), "camera.resolution=[" + std::to_string(kWidth) + "," + std::to_string(height) + "]"}));
+  RenderScene scene = build_render_scene(
+      parse_scene_file(file, {"render.spp=" + std::to_string(kSpp),
+                              "camera.resolution=[" + std::to_string(kWidth) + "," + std::to_string(height) + "]"}));
   scene.render.ambient = 0.0f;
   scene.render.background = Color(0.0f);
   scene.environment.reset();

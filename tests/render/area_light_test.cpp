@@ -83,7 +83,8 @@ TEST(AreaLight, SphereLightDeliversItsClosedFormIrradiance) {
 
 TEST(AreaLight, QuadLightDeliversItsClosedFormIrradiance) {
   // A 2 × 2 square at height 1.5, centred above the point and facing down: four corner rectangles.
-  const Light quad = make_light(QuadLightDesc{{0.0f, 0.0f, 1.5f}, {0.0f, 2.0f, 0.0f}, {2.0f, 0.0f, 0.0f}, Color(1.0f), 1.0f, 8});
+  const Light quad =
+      make_light(QuadLightDesc{{0.0f, 0.0f, 1.5f}, {0.0f, 2.0f, 0.0f}, {2.0f, 0.0f, 0.0f}, Color(1.0f), 1.0f, 8});
   ASSERT_LT(std::get<QuadLight>(quad).normal.z, -0.99f);  // edge1 × edge2 points down
   const double expected = 4.0 * corner_rectangle_irradiance(1.0, 1.0, 1.5);
   for (BackendKind kind : {BackendKind::kNative, BackendKind::kEmbree}) {
@@ -91,7 +92,8 @@ TEST(AreaLight, QuadLightDeliversItsClosedFormIrradiance) {
     EXPECT_NEAR(value, expected, 0.005 * expected);
   }
   // Facing up, away from the point (off to the side, so the camera does not see its front).
-  const Light away = make_light(QuadLightDesc{{3.0f, 0.0f, 1.5f}, {2.0f, 0.0f, 0.0f}, {0.0f, 2.0f, 0.0f}, Color(1.0f), 1.0f, 4});
+  const Light away =
+      make_light(QuadLightDesc{{3.0f, 0.0f, 1.5f}, {2.0f, 0.0f, 0.0f}, {0.0f, 2.0f, 0.0f}, Color(1.0f), 1.0f, 4});
   EXPECT_EQ(render_probe(irradiance_probe(away, 4), BackendKind::kNative), 0.0f);
 }
 
@@ -144,7 +146,8 @@ TEST(AreaLight, CameraAndMirrorsSeeTheEmitterOnlyFromItsFront) {
   ASSERT_TRUE(hit_light(sphere, towards, 100.0f));
   EXPECT_FLOAT_EQ(*hit_light(sphere, towards, 100.0f), 1.25f);
   EXPECT_FALSE(hit_light(sphere, towards, 1.0f));  // a surface in front hides it
-  const Light quad = make_light(QuadLightDesc{{0.0f, 0.0f, 3.0f}, {0.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, Color(2.0f), 1.0f, 2});
+  const Light quad =
+      make_light(QuadLightDesc{{0.0f, 0.0f, 3.0f}, {0.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, Color(2.0f), 1.0f, 2});
   ASSERT_TRUE(hit_light(quad, towards, 100.0f));  // its normal faces -z, towards the ray
   EXPECT_EQ(light_emission(quad).x, 2.0f);
   Ray from_above = towards;
@@ -160,7 +163,9 @@ TEST(AreaLight, CameraAndMirrorsSeeTheEmitterOnlyFromItsFront) {
 TEST(AreaLight, BadAreaLightsAreRefusedAtTheirLocation) {
   const auto error_of = [](const std::string& light) {
     try {
-      parse_scene_text("rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\nworld: []\nlights:\n  - " + light + "\n", "s.yaml");
+      parse_scene_text(
+          "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\nworld: []\nlights:\n  - " + light + "\n",
+          "s.yaml");
     } catch (const InputError& e) {
       return std::string(e.what());
     }
@@ -168,10 +173,14 @@ TEST(AreaLight, BadAreaLightsAreRefusedAtTheirLocation) {
   };
   EXPECT_NE(error_of("{type: sphere, center: [0, 1, 0], radius: -1}").find("s.yaml:5:"), std::string::npos);
   EXPECT_NE(error_of("{type: sphere, center: [0, 1, 0], radius: 1, samples: 0}").find("samples"), std::string::npos);
-  EXPECT_NE(error_of("{type: sphere, center: [0, 1, 0], radius: 1, samples: 2.5}").find("whole number"), std::string::npos);
-  EXPECT_NE(error_of("{type: quad, position: [0, 1, 0], edge1: [1, 0, 0], edge2: [2, 0, 0]}").find("parallel"), std::string::npos);
-  EXPECT_NE(error_of("{type: quad, position: [0, 1, 0], edge1: [1, 0, 0], edge2: [0, 0, .nan]}").find("s.yaml:5:"), std::string::npos);
-  EXPECT_NE(error_of("{type: sphere, center: [0, 1, 0], radius: 1, intensity: -2}").find("intensity"), std::string::npos);
+  EXPECT_NE(error_of("{type: sphere, center: [0, 1, 0], radius: 1, samples: 2.5}").find("whole number"),
+            std::string::npos);
+  EXPECT_NE(error_of("{type: quad, position: [0, 1, 0], edge1: [1, 0, 0], edge2: [2, 0, 0]}").find("parallel"),
+            std::string::npos);
+  EXPECT_NE(error_of("{type: quad, position: [0, 1, 0], edge1: [1, 0, 0], edge2: [0, 0, .nan]}").find("s.yaml:5:"),
+            std::string::npos);
+  EXPECT_NE(error_of("{type: sphere, center: [0, 1, 0], radius: 1, intensity: -2}").find("intensity"),
+            std::string::npos);
   EXPECT_EQ(error_of("{type: quad, position: [0, 1, 0], edge1: [1, 0, 0], edge2: [0, 0, 1], samples: 3}"), "no error");
 }
 

@@ -155,8 +155,7 @@ double integrate_over_cell(PdfFn& pdf, double theta0, double theta1, double phi0
     parts[q] = gauss_legendre_cell(pdf, quarters[q][0], quarters[q][1], quarters[q][2], quarters[q][3]);
     sum += parts[q];
   }
-  if (depth == 0 ||
-      (std::fabs(sum - whole) <= 1e-9 + 1e-4 * sum && !must_split(theta0, theta1, phi0, phi1)))
+  if (depth == 0 || (std::fabs(sum - whole) <= 1e-9 + 1e-4 * sum && !must_split(theta0, theta1, phi0, phi1)))
     return sum;
   double refined = 0.0;
   for (int q = 0; q < 4; ++q)

@@ -88,7 +88,8 @@ TEST(Camera, EveryLensPointSeesTheSamePointOfThePlaneInFocus) {
   const RenderCamera camera = lens_camera(0.5f, 6.0f);
   const RenderCamera pinhole = lens_camera(0.0f, 6.0f);
   const Vec3 sharp = at_depth(camera_ray(pinhole, 40.25f, 9.5f, {0.5f, 0.5f}), pinhole, 6.0f);
-  for (const Sample2D lens : {Sample2D{0.0f, 0.0f}, Sample2D{0.99f, 0.5f}, Sample2D{0.3f, 0.8f}, Sample2D{0.7f, 0.1f}}) {
+  for (const Sample2D lens :
+       {Sample2D{0.0f, 0.0f}, Sample2D{0.99f, 0.5f}, Sample2D{0.3f, 0.8f}, Sample2D{0.7f, 0.1f}}) {
     const Ray ray = camera_ray(camera, 40.25f, 9.5f, lens);
     EXPECT_GT(length(ray.org - camera.position), 0.0f);
     EXPECT_LE(length(ray.org - camera.position), 0.5f * (1.0f + 1e-6f));

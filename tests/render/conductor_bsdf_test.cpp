@@ -66,8 +66,7 @@ TEST_P(ConductorChi2, SchlickSamplerMatchesPdf) {
 TEST_P(ConductorChi2, ComplexIorSamplerMatchesPdf) {
   for (bool compensation : {true, false}) {
     const ConductorBsdf bsdf = ConductorBsdf::from_complex_ior(kGoldEta, kGoldK, GetParam(), compensation);
-    test::expect_sampler_matches_pdf("conductor gold " + describe(bsdf), bsdf, incident_directions(true),
-                                      kChi2Samples);
+    test::expect_sampler_matches_pdf("conductor gold " + describe(bsdf), bsdf, incident_directions(true), kChi2Samples);
   }
 }
 
@@ -115,8 +114,8 @@ TEST(ConductorBsdf, CompensationConservesAPerfectReflectorsEnergy) {
       const float single = test::estimate_albedo(ConductorBsdf::from_f0(Color(1.0f), alpha, false), wo, 65536).x;
       std::ostringstream line;
       line << std::fixed << std::setprecision(4) << "[energy] F0=1 alpha=" << alpha << " cos=" << c
-           << " compensated=" << compensated << " single-scattering=" << single << " (loses "
-           << std::setprecision(1) << 100.0f * (1.0f - single) << "%)\n";
+           << " compensated=" << compensated << " single-scattering=" << single << " (loses " << std::setprecision(1)
+           << 100.0f * (1.0f - single) << "%)\n";
       std::cout << line.str();
       EXPECT_NEAR(compensated, 1.0f, 0.02f) << "alpha " << alpha << ", cos " << c;
       EXPECT_LE(single, compensated + 1e-3f);
@@ -170,8 +169,8 @@ TEST(ConductorBsdf, ComplexFresnelMatchesClosedForms) {
 }
 
 TEST(ConductorBsdf, FresnelAverageIsTheCosineWeightedMean) {
-  for (const ConductorBsdf& bsdf : {ConductorBsdf::from_f0(kCopperF0, 0.3f),
-                                    ConductorBsdf::from_complex_ior(kGoldEta, kGoldK, 0.3f)}) {
+  for (const ConductorBsdf& bsdf :
+       {ConductorBsdf::from_f0(kCopperF0, 0.3f), ConductorBsdf::from_complex_ior(kGoldEta, kGoldK, 0.3f)}) {
     constexpr int kIntervals = 100000;
     double total[3] = {0.0, 0.0, 0.0};
     for (int i = 0; i < kIntervals; ++i) {

@@ -43,7 +43,7 @@ TEST(Dielectric, SlabLeavesRayParallelAndObeysSnell) {
   const auto inside = refract(d, up, 1.5f);
   ASSERT_TRUE(inside.has_value());
   EXPECT_NEAR(length(*inside), 1.0f, 1e-6f);
-  EXPECT_NEAR(inside->x, d.x / 1.5f, 1e-6f);  // sin θt = sin θi / η
+  EXPECT_NEAR(inside->x, d.x / 1.5f, 1e-6f);           // sin θt = sin θi / η
   const auto out = refract(*inside, up, 1.0f / 1.5f);  // bottom face, normal on the inside side
   ASSERT_TRUE(out.has_value());
   EXPECT_NEAR(out->x, d.x, 1e-6f);

@@ -14,10 +14,10 @@
 namespace rtpro {
 namespace environment_light_test {
 
-using test::Chi2Outcome;
-using test::Uniforms;
 using test::chi2_test;
+using test::Chi2Outcome;
 using test::kChi2Significance;
+using test::Uniforms;
 
 // An RGB image of `width` × `height` (top row first) of `background`, with pixel (x, y) `spot`.
 Image image_with_spot(int width, int height, Color background, int x, int y, Color spot) {
@@ -91,9 +91,9 @@ TEST(EnvironmentLight, ImageCentreLooksAlongPlusXAndTheTopRowUp) {
   // +X lies between columns 7 and 8 on the horizon (between rows 3 and 4): a quarter of each.
   EXPECT_NEAR(radiance_towards(8, 4, Vec3(1, 0, 0)), 0.25f, 1e-5f);
   EXPECT_NEAR(radiance_towards(7, 3, Vec3(1, 0, 0)), 0.25f, 1e-5f);
-  EXPECT_NEAR(radiance_towards(3, 4, Vec3(0, 0, -1)), 0.25f, 1e-5f);   // u = 0.25: columns 3 and 4
-  EXPECT_NEAR(radiance_towards(12, 4, Vec3(0, 0, 1)), 0.25f, 1e-5f);   // u = 0.75: columns 11 and 12
-  EXPECT_NEAR(radiance_towards(0, 4, Vec3(-1, 0, 0)), 0.25f, 1e-5f);   // u = 0 and 1: wraps
+  EXPECT_NEAR(radiance_towards(3, 4, Vec3(0, 0, -1)), 0.25f, 1e-5f);  // u = 0.25: columns 3 and 4
+  EXPECT_NEAR(radiance_towards(12, 4, Vec3(0, 0, 1)), 0.25f, 1e-5f);  // u = 0.75: columns 11 and 12
+  EXPECT_NEAR(radiance_towards(0, 4, Vec3(-1, 0, 0)), 0.25f, 1e-5f);  // u = 0 and 1: wraps
   EXPECT_NEAR(radiance_towards(15, 4, Vec3(-1, 0, 0)), 0.25f, 1e-5f);
   // Straight up reads the top row only, straight down the bottom one.
   const auto row_lit = [&](int lit_row) {
@@ -172,7 +172,8 @@ void expect_sampler_matches_pdf(const EnvironmentLight& light, const char* label
   ASSERT_TRUE(outcome.failure.empty()) << label << ": " << outcome.failure;
   EXPECT_NEAR(outcome.pdf_integral, 1.0, 2e-3) << label;
   EXPECT_GT(outcome.sampled_fraction, 0.999) << label;
-  EXPECT_GT(outcome.p_value, kChi2Significance) << label << ": χ² " << outcome.chi2 << " with " << outcome.dof << " dof";
+  EXPECT_GT(outcome.p_value, kChi2Significance)
+      << label << ": χ² " << outcome.chi2 << " with " << outcome.dof << " dof";
 }
 
 // Each case on its own thread: the pdf's integral over the bins dominates, and is adaptive.

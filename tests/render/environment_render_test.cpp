@@ -80,8 +80,9 @@ TEST_P(EnvironmentRender, BsdfSamplingHidesAWhiteSphereInEveryPixel) {
 TEST_P(EnvironmentRender, MisAndEnvironmentSamplingHideAWhiteSphereOnAverage) {
   for (const char* sampling : {"mis", "light"})
     for (const char* rotation : {"[0, 0, 0]", "[30, 60, 10]"}) {
-      const Channels s = stats_of(render(kFurnace, GetParam(), {std::string("render.sampling=") + sampling,
-                                                                  std::string("environment.rotation=") + rotation}));
+      const Channels s = stats_of(
+          render(kFurnace, GetParam(),
+                 {std::string("render.sampling=") + sampling, std::string("environment.rotation=") + rotation}));
       EXPECT_NEAR(s.mean, 1.0, 0.003) << sampling << " " << rotation;
       EXPECT_GT(s.min, 0.8) << sampling << " " << rotation;
       EXPECT_LT(s.max, 1.2) << sampling << " " << rotation;
@@ -89,8 +90,9 @@ TEST_P(EnvironmentRender, MisAndEnvironmentSamplingHideAWhiteSphereOnAverage) {
 }
 
 TEST_P(EnvironmentRender, AnInvisibleEnvironmentStillLightsButTheCameraSeesTheBackground) {
-  const Image image = render(kFurnace, GetParam(),
-                             {"render.sampling=bsdf", "environment.visible=false", "render.background=[0.25, 0.5, 0.75]"});
+  const Image image =
+      render(kFurnace, GetParam(),
+             {"render.sampling=bsdf", "environment.visible=false", "render.background=[0.25, 0.5, 0.75]"});
   // The corner misses the sphere, the centre sees it.
   EXPECT_FLOAT_EQ(image.at(0, 0, 0), 0.25f);
   EXPECT_FLOAT_EQ(image.at(0, 0, 2), 0.75f);
@@ -119,7 +121,8 @@ struct Estimate {
 Estimate mean_over_seeds(const std::string& yaml, BackendKind kind, const std::string& sampling, int seeds) {
   std::vector<double> means;
   for (int seed = 1; seed <= seeds; ++seed)
-    means.push_back(stats_of(render(yaml, kind, {"render.sampling=" + sampling, "render.seed=" + std::to_string(seed)})).mean);
+    means.push_back(
+        stats_of(render(yaml, kind, {"render.sampling=" + sampling, "render.seed=" + std::to_string(seed)})).mean);
   double mean = 0.0;
   for (double m : means) mean += m;
   mean /= seeds;
@@ -154,8 +157,8 @@ world:
   };
   EXPECT_TRUE(agree(mis, light)) << "mis " << mis.mean << " ± " << mis.standard_error << ", light " << light.mean
                                  << " ± " << light.standard_error;
-  EXPECT_TRUE(agree(mis, bsdf)) << "mis " << mis.mean << " ± " << mis.standard_error << ", bsdf " << bsdf.mean
-                                << " ± " << bsdf.standard_error;
+  EXPECT_TRUE(agree(mis, bsdf)) << "mis " << mis.mean << " ± " << mis.standard_error << ", bsdf " << bsdf.mean << " ± "
+                                << bsdf.standard_error;
   // Environment sampling is what makes the sun tractable.
   EXPECT_LT(mis.standard_error * 3.0, bsdf.standard_error);
 }

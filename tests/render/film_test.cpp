@@ -25,7 +25,7 @@ TEST(Film, HalvesAreTheMeansOfTheEvenAndOddSamples) {
   const std::vector<float> p =
       resolve({Aov::kHalves}, {Color(1, 2, 3), Color(5, 6, 7), Color(3, 4, 5), Color(9, 10, 11), Color(2, 0, 0)});
   EXPECT_FLOAT_EQ(p[0], 20.0f / 5.0f);
-  EXPECT_FLOAT_EQ(p[3], 6.0f / 3.0f);   // samples 0, 2, 4
+  EXPECT_FLOAT_EQ(p[3], 6.0f / 3.0f);  // samples 0, 2, 4
   EXPECT_FLOAT_EQ(p[4], 6.0f / 3.0f);
   EXPECT_FLOAT_EQ(p[6], 14.0f / 2.0f);  // samples 1, 3
   EXPECT_FLOAT_EQ(p[8], 18.0f / 2.0f);
@@ -40,7 +40,8 @@ TEST(Film, OneSampleHasBothHalvesEqualToIt) {
 }
 
 TEST(Film, VarianceIsTheSampleVarianceOverTheSampleCount) {
-  const std::vector<float> p = resolve({Aov::kVariance}, {Color(1, 0, 2), Color(3, 0, 2), Color(5, 0, 2), Color(7, 0, 2)});
+  const std::vector<float> p =
+      resolve({Aov::kVariance}, {Color(1, 0, 2), Color(3, 0, 2), Color(5, 0, 2), Color(7, 0, 2)});
   // Red: mean 4, sample variance ((9 + 1 + 1 + 9) / 3) = 20/3, of the mean 20/12.
   EXPECT_NEAR(p[3], 20.0f / 12.0f, 1e-5f);
   EXPECT_EQ(p[4], 0.0f);

@@ -16,12 +16,14 @@ namespace glass_test {
 // One sphere of `material` filling the middle of a 32x32 image under a uniform sky, no lights:
 // every path ends in the sky, so what a pixel shows is the sky times what the glass let through.
 RenderScene sphere_under_sky(const std::string& material) {
-  return build_render_scene(parse_scene_text(
-      "rtpro: 1\ncamera: {position: [0, 0, -4], look_at: [0, 0, 0], fov: 30, resolution: [32, 32]}\n"
-      "render: {spp: 4, max_depth: 24, ambient: 0, background: [0.5, 0.5, 0.5]}\n"
-      "materials:\n  glass: " + material + "\n"
-      "world:\n  - {type: sphere, center: [0, 0, 0], radius: 1, material: glass}\n",
-      "glass.yaml"));
+  return build_render_scene(
+      parse_scene_text("rtpro: 1\ncamera: {position: [0, 0, -4], look_at: [0, 0, 0], fov: 30, resolution: [32, 32]}\n"
+                       "render: {spp: 4, max_depth: 24, ambient: 0, background: [0.5, 0.5, 0.5]}\n"
+                       "materials:\n  glass: " +
+                           material +
+                           "\n"
+                           "world:\n  - {type: sphere, center: [0, 0, 0], radius: 1, material: glass}\n",
+                       "glass.yaml"));
 }
 
 Color pixel(const RenderResult& result, int x, int y) {
@@ -54,16 +56,16 @@ TEST(Glass, AClearSphereUnderAUniformSkyNeitherGainsNorLosesEnergy) {
 // centre the light crosses the sphere along its diameter (2 units, a little less off-centre), so the
 // centre pixel is the sky times transmittance^(2 / distance) per channel.
 TEST(Glass, AbsorptionFollowsBeerLambertAlongThePathInside) {
-  const RenderResult tinted = render_with(
-      BackendKind::kNative,
-      sphere_under_sky("{ior: 1, specular: 0, transmittance: [0.5, 0.8, 1.0], transmittance_distance: 1}"));
+  const RenderResult tinted =
+      render_with(BackendKind::kNative,
+                  sphere_under_sky("{ior: 1, specular: 0, transmittance: [0.5, 0.8, 1.0], transmittance_distance: 1}"));
   const Color c = pixel(tinted, 16, 16);
   EXPECT_NEAR(c.x, 0.5f * 0.25f, 0.5f * 0.25f * 0.01f);  // 0.5^2
   EXPECT_NEAR(c.y, 0.5f * 0.64f, 0.5f * 0.64f * 0.01f);  // 0.8^2
   EXPECT_NEAR(c.z, 0.5f, 1e-6f);
-  const RenderResult half = render_with(
-      BackendKind::kNative,
-      sphere_under_sky("{ior: 1, specular: 0, transmittance: [0.5, 0.8, 1.0], transmittance_distance: 2}"));
+  const RenderResult half =
+      render_with(BackendKind::kNative,
+                  sphere_under_sky("{ior: 1, specular: 0, transmittance: [0.5, 0.8, 1.0], transmittance_distance: 2}"));
   EXPECT_NEAR(pixel(half, 16, 16).x, 0.5f * 0.5f, 0.5f * 0.5f * 0.01f);  // 0.5^(2/2)
 }
 
@@ -73,9 +75,9 @@ TEST(Glass, OpaqueScenesTraceNoRefractionRays) {
 }
 
 TEST(Glass, BadIndicesAndAbsorptionWithoutGlassAreInputErrors) {
-  for (const std::string material : {"{ior: 0}", "{ior: -1.5}", "{ior: .NaN}", "{ior: .inf}",
-                                     "{transmittance: [0.5, 0.5, 0.5]}", "{ior: 1.5, transmittance: [2, 1, 1]}",
-                                     "{ior: 1.5, transmittance_distance: 0}"}) {
+  for (const std::string material :
+       {"{ior: 0}", "{ior: -1.5}", "{ior: .NaN}", "{ior: .inf}", "{transmittance: [0.5, 0.5, 0.5]}",
+        "{ior: 1.5, transmittance: [2, 1, 1]}", "{ior: 1.5, transmittance_distance: 0}"}) {
     try {
       sphere_under_sky(material);
       ADD_FAILURE() << material << " was accepted";

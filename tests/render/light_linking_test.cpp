@@ -69,8 +69,11 @@ std::string scene(const std::string& camera, int max_depth, const Links& links, 
                   const std::string& integrator = "path") {
   const auto entry = [](const std::string& keys) { return keys.empty() ? std::string() : ", " + keys; };
   return "rtpro: 1\n"
-         "camera: " + camera + "\n"
-         "render: {integrator: " + integrator + ", spp: 6, max_depth: " + std::to_string(max_depth) +
+         "camera: " +
+         camera +
+         "\n"
+         "render: {integrator: " +
+         integrator + ", spp: 6, max_depth: " + std::to_string(max_depth) +
          ", background: [0, 0, 0], ambient: 0}\n"
          "environment: {color: [0.15, 0.2, 0.3]}\n"
          "materials:\n"
@@ -82,9 +85,14 @@ std::string scene(const std::string& camera, int max_depth, const Links& links, 
          (with_a ? kLightA : std::string()) +
          "  - {type: spot, name: rim, position: [-3, 4, 3], look_at: [0, 1, 0], intensity: 40, outer_angle: 25}\n"
          "world:\n"
-         "  - {type: sphere, center: [0, -1000, 0], radius: 1000, material: clay" + entry(links.ground) + "}\n"
-         "  - {type: sphere, center: [0, 1, 0], radius: 1, material: chrome" + entry(links.ball) + "}\n"
-         "  - {type: sphere, center: [2.2, 0.4, 1.5], radius: 0.4, material: lamp" + entry(links.lamp) + "}\n";
+         "  - {type: sphere, center: [0, -1000, 0], radius: 1000, material: clay" +
+         entry(links.ground) +
+         "}\n"
+         "  - {type: sphere, center: [0, 1, 0], radius: 1, material: chrome" +
+         entry(links.ball) +
+         "}\n"
+         "  - {type: sphere, center: [2.2, 0.4, 1.5], radius: 0.4, material: lamp" +
+         entry(links.lamp) + "}\n";
 }
 
 // Only the ground in view (looking down beside the ball), or the ball and what surrounds it.
@@ -145,7 +153,9 @@ TEST_P(LightLinking, WhittedLeavesAnExcludedLightsObjectAsTheSceneWithoutIt) {
 std::string shadow_scene(const std::string& integrator, const std::string& ball_keys, bool ball, bool second_light) {
   return "rtpro: 1\n"
          "camera: {position: [0, 6, 0], look_at: [0, 0, 0], up: [0, 0, 1], fov: 50, resolution: [40, 40]}\n"
-         "render: {integrator: " + integrator + ", spp: 4, max_depth: 1, background: [0, 0, 0], ambient: 0}\n"
+         "render: {integrator: " +
+         integrator +
+         ", spp: 4, max_depth: 1, background: [0, 0, 0], ambient: 0}\n"
          "materials:\n"
          "  white: {type: diffuse, color: [0.8, 0.8, 0.8]}\n"
          "lights:\n"
@@ -165,9 +175,11 @@ TEST_P(LightLinking, AnObjectThatCastsNoShadowsFromALightIsTransparentToItsShado
     const Image shading = render(shadow_scene(integrator, "", true, false), GetParam());
     ASSERT_GT(differing_pixels(shading, no_ball), 100) << "the ball must shade the ground in view";
     EXPECT_LT(sum(shading), sum(no_ball));
-    const Image passing = render(shadow_scene(integrator, "shadow_linking: {no_shadows_from: [sun]}", true, false), GetParam());
+    const Image passing =
+        render(shadow_scene(integrator, "shadow_linking: {no_shadows_from: [sun]}", true, false), GetParam());
     EXPECT_EQ(differing_pixels(passing, no_ball), 0);
-    const Image blocking = render(shadow_scene(integrator, "shadow_linking: {shadows_from: [sun]}", true, false), GetParam());
+    const Image blocking =
+        render(shadow_scene(integrator, "shadow_linking: {shadows_from: [sun]}", true, false), GetParam());
     EXPECT_EQ(differing_pixels(blocking, shading), 0);
 
     // With a second light the ball still shades: transparent to the sun's shadow rays only.

@@ -125,11 +125,10 @@ class TestScene {
     mesh.material = add_material(emission);
     const Affine to_object = *inverse(placement);
     const Vec3 front = to_object.apply_normal_of_inverse(cross(object[1] - object[0], object[2] - object[0]));
-    add_emissive_triangle("instanced triangle",
-                          {{placement.apply_point(object[0]), placement.apply_point(object[1]),
-                            placement.apply_point(object[2])},
-                           front},
-                          emission, add_instance(std::move(mesh), placement, to_object));
+    add_emissive_triangle(
+        "instanced triangle",
+        {{placement.apply_point(object[0]), placement.apply_point(object[1]), placement.apply_point(object[2])}, front},
+        emission, add_instance(std::move(mesh), placement, to_object));
   }
 
   // Top-level spheres; each emits what its material does.
@@ -182,15 +181,15 @@ class TestScene {
   void add_emissive_triangle(const std::string& name, const TestPolygon& t, const Emission& e, const Hit& hit) {
     if (!e.emits()) return;
     const double area = 0.5 * length(cross(t.corners[1] - t.corners[0], t.corners[2] - t.corners[0]));
-    lights_.push_back({name, t, e.two_sided, kPi * area * average(e.radiance) * (e.two_sided ? 2 : 1), std::nullopt,
-                       hit});
+    lights_.push_back(
+        {name, t, e.two_sided, kPi * area * average(e.radiance) * (e.two_sided ? 2 : 1), std::nullopt, hit});
   }
 
   void add_emissive_ball(const std::string& name, const TestBall& b, const Emission& e, const Hit& hit) {
     if (!e.emits()) return;
     const double area = 4.0 * kPi * double(b.radius) * b.radius;
-    lights_.push_back({name, b, e.two_sided, kPi * area * average(e.radiance) * (e.two_sided ? 2 : 1), std::nullopt,
-                       hit});
+    lights_.push_back(
+        {name, b, e.two_sided, kPi * area * average(e.radiance) * (e.two_sided ? 2 : 1), std::nullopt, hit});
   }
 };
 
@@ -481,10 +480,10 @@ void add_emissive_triangles(TestScene& scene, const Vec3& offset) {
   const auto moved = [&](const std::array<Vec3, 3>& t) {
     return std::array<Vec3, 3>{t[0] + offset, t[1] + offset, t[2] + offset};
   };
-  scene.add_mesh({moved({Vec3(3.0f, 3.0f, 3.0f), Vec3(3.5f, 3.0f, 3.0f), Vec3(3.0f, 3.5f, 3.0f)}),
-                  moved({Vec3(-1.0f, 2.0f, -1.0f), Vec3(1.5f, 2.3f, -0.6f), Vec3(-0.2f, 2.6f, 1.4f)}),
-                  moved(kSmallTriangle)},
-                 {Emission(), emission(Color(3.0f, 2.0f, 1.0f), false), emission(Color(12.0f, 10.0f, 8.0f), true)});
+  scene.add_mesh(
+      {moved({Vec3(3.0f, 3.0f, 3.0f), Vec3(3.5f, 3.0f, 3.0f), Vec3(3.0f, 3.5f, 3.0f)}),
+       moved({Vec3(-1.0f, 2.0f, -1.0f), Vec3(1.5f, 2.3f, -0.6f), Vec3(-0.2f, 2.6f, 1.4f)}), moved(kSmallTriangle)},
+      {Emission(), emission(Color(3.0f, 2.0f, 1.0f), false), emission(Color(12.0f, 10.0f, 8.0f), true)});
   const Affine placement =
       compose(Affine::translate(Vec3(-1.6f, 0.2f, 0.6f) + offset),
               compose(Affine::rotate(Vec3(1.0f, 0.5f, 0.0f), 110.0f), Affine::scale(Vec3(-0.9f, 1.4f, 1.1f))));
@@ -501,8 +500,7 @@ void add_emissive_spheres(TestScene& scene, const Vec3& offset) {
                     {Emission(), emission(Color(1.0f, 1.0f, 2.0f), true)});
   const Affine placement =
       compose(Affine::translate(Vec3(2.5f, 1.0f, -0.5f) + offset), Affine::rotate(Vec3(0.0f, 0.0f, 1.0f), 30.0f));
-  scene.add_instanced_sphere({Vec3(0.2f, 0.0f, 0.0f), 0.5f}, 1.5f, placement,
-                             emission(Color(2.0f, 1.5f, 1.0f), false));
+  scene.add_instanced_sphere({Vec3(0.2f, 0.0f, 0.0f), 0.5f}, 1.5f, placement, emission(Color(2.0f, 1.5f, 1.0f), false));
 }
 
 TEST(LightSetChi2, QuadLightSamplerMatchesPdf) {
@@ -561,13 +559,13 @@ TEST(LightSetChi2, EmissiveSpheresSamplerMatchesPdf) {
   add_emissive_spheres(scene, Vec3(0.0f));
   const Vec3& c = kTwoSidedBall.center;
   const float r = kTwoSidedBall.radius;
-  expect_light_sampler_matches_pdf("emissive spheres", scene,
-                                   {{"far", Vec3(-2.5f, 1.5f, 2.0f)},
-                                    {"1.01 radii from the two-sided one",
-                                     at_distance(c, 1.01f * r, Vec3(-1.0f, 0.4f, 0.3f))},
-                                    {"on the two-sided one", at_distance(c, r, Vec3(0.2f, -1.0f, 0.5f))},
-                                    {"inside the two-sided one", at_distance(c, 0.4f * r, Vec3(0.5f, 0.5f, -1.0f))},
-                                    {"inside the one-sided instanced one", Vec3(2.6f, 1.1f, -0.4f)}});
+  expect_light_sampler_matches_pdf(
+      "emissive spheres", scene,
+      {{"far", Vec3(-2.5f, 1.5f, 2.0f)},
+       {"1.01 radii from the two-sided one", at_distance(c, 1.01f * r, Vec3(-1.0f, 0.4f, 0.3f))},
+       {"on the two-sided one", at_distance(c, r, Vec3(0.2f, -1.0f, 0.5f))},
+       {"inside the two-sided one", at_distance(c, 0.4f * r, Vec3(0.5f, 0.5f, -1.0f))},
+       {"inside the one-sided instanced one", Vec3(2.6f, 1.1f, -0.4f)}});
 }
 
 // Every kind at once, with a point light: its share of the picks returns delta samples.

@@ -30,7 +30,8 @@ lights:
 world:
   - {type: sphere, center: [-2, 2, 0], radius: 0.4, material: lamp}
   - {type: sphere, center: [0, 0, 0], radius: 0.5, material: both}
-)", "lights.yaml"));
+)",
+                                             "lights.yaml"));
 }
 
 TEST(LightSet, HoldsTheSceneLightsAndItsEmissiveSpheres) {
@@ -60,7 +61,8 @@ TEST(LightSet, SamplePdfIsThePdfOfTheSampledPoint) {
     ++area_samples;
     const Vec3 on_light = from + s->direction * s->distance;
     const float pdf = lights.pdf(s->light, from, on_light);
-    EXPECT_NEAR(pdf, s->pdf, 2e-3f * s->pdf) << "light " << s->light << " from " << from.x << "," << from.y << "," << from.z;
+    EXPECT_NEAR(pdf, s->pdf, 2e-3f * s->pdf)
+        << "light " << s->light << " from " << from.x << "," << from.y << "," << from.z;
   }
   EXPECT_GT(area_samples, 5000);
 }
@@ -78,7 +80,8 @@ TEST(LightSet, PdfOfASphereLightIntegratesToOne) {
     const Vec3 axis = normalize(center - from);
     const float sin_light = radius / length(center - from);
     const float cos_cone = std::cos(std::min(1.2f * std::asin(sin_light), 1.5f));
-    Vec3 t1 = std::fabs(axis.x) < 0.9f ? normalize(cross(axis, Vec3(1.0f, 0.0f, 0.0f))) : normalize(cross(axis, Vec3(0.0f, 1.0f, 0.0f)));
+    Vec3 t1 = std::fabs(axis.x) < 0.9f ? normalize(cross(axis, Vec3(1.0f, 0.0f, 0.0f)))
+                                       : normalize(cross(axis, Vec3(0.0f, 1.0f, 0.0f)));
     const Vec3 t2 = cross(axis, t1);
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);

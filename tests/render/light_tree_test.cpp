@@ -117,7 +117,8 @@ TEST(LightTree, PrefersTheNearLightOfEqualPower) {
 TEST(LightTree, LightsOfZeroPowerOrWithoutPositionAreLeftOut) {
   BBox b;
   b.extend(Vec3(0.0f));
-  const std::vector<std::optional<LightBounds>> lights{std::nullopt, LightBounds{b, Vec3(0, 0, 1), 0.0f, -1.0f, 0.0f, false},
+  const std::vector<std::optional<LightBounds>> lights{std::nullopt,
+                                                       LightBounds{b, Vec3(0, 0, 1), 0.0f, -1.0f, 0.0f, false},
                                                        LightBounds{b, Vec3(0, 0, 1), 2.0f, -1.0f, 0.0f, false}};
   const LightTree tree(lights);
   EXPECT_EQ(tree.node_count(), 1u);

@@ -73,9 +73,9 @@ TEST(Microfacet, VisibleNormalSamplingMatchesItsPdf) {
       const GgxDistribution ggx{alpha};
       const double level = test::sidak_level(test::kChi2Significance, 5);
       for (const Vec3& w : incident_directions(sign)) {
-        const test::Chi2Outcome outcome = test::chi2_test(
-            [&](float, Sample2D u) -> std::optional<Vec3> { return ggx.sample_visible_normal(w, u); },
-            [&](const Vec3& wm) { return ggx.visible_normal_pdf(w, wm); }, 200'000, 17);
+        const test::Chi2Outcome outcome =
+            test::chi2_test([&](float, Sample2D u) -> std::optional<Vec3> { return ggx.sample_visible_normal(w, u); },
+                            [&](const Vec3& wm) { return ggx.visible_normal_pdf(w, wm); }, 200'000, 17);
         SCOPED_TRACE("alpha " + std::to_string(alpha) + ", w.z " + std::to_string(w.z));
         EXPECT_TRUE(outcome.failure.empty()) << outcome.failure;
         EXPECT_GE(outcome.p_value, level);

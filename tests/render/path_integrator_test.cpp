@@ -104,7 +104,8 @@ camera: {position: [0, 0, -4], look_at: [0, 0, 0], fov: 40, resolution: [24, 24]
 render: {spp: 64, max_depth: 64, integrator: path}
 materials:
   sky: {type: diffuse, color: [0, 0, 0], emission: [1, 1, 1], emission_sides: both}
-  object: )" + object_material + R"(
+  object: )" +
+         object_material + R"(
 world:
   - {type: sphere, center: [0, 0, 0], radius: 20, material: sky}
   - {type: sphere, center: [0, 0, 0], radius: 1, material: object}
@@ -139,13 +140,15 @@ materials:
   white: {type: diffuse, color: [1, 1, 1]}
 objects:
   sky_sphere: [{type: sphere, center: [0, 0, 0], radius: 1, material: sky}]
-  sky_box: [{type: mesh, file: )" + std::string(RTPRO_SOURCE_DIR) + R"(/scenes/meshes/box.obj, material: sky}]
+  sky_box: [{type: mesh, file: )" +
+                             std::string(RTPRO_SOURCE_DIR) + R"(/scenes/meshes/box.obj, material: sky}]
 world:
   - {type: sphere, center: [0, 0, 0], radius: 1, material: white}
 )";
   for (const std::string& enclosure :
        {std::string("  - {type: instance, object: sky_sphere, transform: [{scale: 20}, {translate: [1, 0, 0]}]}\n"),
-        std::string("  - {type: instance, object: sky_box, transform: [{scale: [-30, 30, 30]}, {translate: [0, -15, 0]}]}\n")}) {
+        std::string("  - {type: instance, object: sky_box, transform: [{scale: [-30, 30, 30]}, {translate: [0, -15, "
+                    "0]}]}\n")}) {
     const RenderScene scene = scene_from(common + enclosure);
     const LightSet lights(scene);
     EXPECT_FALSE(lights.empty()) << enclosure;
@@ -181,8 +184,8 @@ TEST_P(PathIntegrator, FurnaceLosesOnlyMicrofacetEnergyInRoughGlass) {
 
 TEST_P(PathIntegrator, FurnaceHidesAPerfectRoughConductorWithEnergyCompensation) {
   for (const char* roughness : {"0.2236", "0.5", "0.7071", "1"}) {  // alpha 0.05, 0.25, 0.5, 1
-    const RenderScene scene = scene_from(
-        furnace(std::string("{type: conductor, color: [1, 1, 1], roughness: ") + roughness + "}"));
+    const RenderScene scene =
+        scene_from(furnace(std::string("{type: conductor, color: [1, 1, 1], roughness: ") + roughness + "}"));
     const ImageStats s = stats_of(render(scene, GetParam()));
     EXPECT_NEAR(s.mean, 1.0, 0.02) << "roughness " << roughness;
   }
@@ -225,7 +228,7 @@ world:
   - {type: sphere, center: [1.8, 2.2, 1], radius: 0.3, material: lamp}
 )";
   constexpr int kSeeds = 8;
-  constexpr int kRegions = 4;  // quadrants
+  constexpr int kRegions = 4;                                       // quadrants
   std::map<std::string, std::vector<std::vector<double>>> regions;  // estimator → region → per seed
   for (const char* sampling : {"mis", "light", "bsdf"}) {
     auto& per_region = regions[sampling];
@@ -308,8 +311,8 @@ INSTANTIATE_TEST_SUITE_P(Backends, PathIntegrator, ::testing::Values(BackendKind
                          [](const auto& info) { return std::string(backend_name(info.param)); });
 
 TEST(PathIntegratorBackends, SphereScenesAreBitIdenticalAcrossBackends) {
-  const RenderScene scene = scene_from(furnace("{type: dielectric, ior: 1.5, roughness: 0.3}"),
-                                       {"render.spp=4", "render.max_depth=8"});
+  const RenderScene scene =
+      scene_from(furnace("{type: dielectric, ior: 1.5, roughness: 0.3}"), {"render.spp=4", "render.max_depth=8"});
   const Image native = render(scene, BackendKind::kNative), embree = render(scene, BackendKind::kEmbree);
   ASSERT_EQ(native.data.size(), embree.data.size());
   EXPECT_EQ(std::memcmp(native.data.data(), embree.data.data(), native.data.size() * sizeof(float)), 0);

@@ -25,7 +25,8 @@ PrimaryHit hit(std::uint32_t object_id, float depth) {
 PixelAccumulator samples(int begin, int end) {
   PixelAccumulator acc;
   for (int s = begin; s < end; ++s)
-    acc.add(Color(0.1f * static_cast<float>(s), 1.0f / static_cast<float>(s + 3), 2.0f), s % 2 == 0 ? hit(7, 2.5f) : PrimaryHit{}, s);
+    acc.add(Color(0.1f * static_cast<float>(s), 1.0f / static_cast<float>(s + 3), 2.0f),
+            s % 2 == 0 ? hit(7, 2.5f) : PrimaryHit{}, s);
   return acc;
 }
 
@@ -38,7 +39,8 @@ TEST(SumLayout, ColourOnlyKeepsFourFloatsAndEveryLayerAddsItsOwn) {
   EXPECT_EQ(SumLayout(spp, {}).floats(), 4);
   const std::vector<Aov> halves{Aov::kHalves};
   EXPECT_EQ(SumLayout(halves, {.even_half = true}).floats(), 10);
-  const std::vector<Aov> all{Aov::kAlbedo, Aov::kNormal, Aov::kDepth, Aov::kObjectId, Aov::kHalves, Aov::kVariance, Aov::kSpp};
+  const std::vector<Aov> all{Aov::kAlbedo, Aov::kNormal,   Aov::kDepth, Aov::kObjectId,
+                             Aov::kHalves, Aov::kVariance, Aov::kSpp};
   EXPECT_EQ(SumLayout(all, {.even_half = true, .squares = true}).floats(), 4 + 3 + 3 + 3 + 3 + 3 + 2 + 1);
 }
 
@@ -60,7 +62,8 @@ void add_pass(PixelAccumulator& total, const PixelAccumulator& pass) {
 // Passes merged in order give, bit for bit, what every layer resolves from the passes' sums added
 // in pass order; a pass that did not sample the pixel changes nothing.
 TEST(SumLayout, MergedPassesResolveAsOneAccumulatorOfEverySample) {
-  const std::vector<Aov> all{Aov::kAlbedo, Aov::kNormal, Aov::kDepth, Aov::kObjectId, Aov::kHalves, Aov::kVariance, Aov::kSpp};
+  const std::vector<Aov> all{Aov::kAlbedo, Aov::kNormal,   Aov::kDepth, Aov::kObjectId,
+                             Aov::kHalves, Aov::kVariance, Aov::kSpp};
   const SumLayout sums(all, {.even_half = true, .squares = true});
   const FilmLayout layout(all);
   std::vector<float> film(static_cast<std::size_t>(sums.floats()), 0.0f), item(film.size());

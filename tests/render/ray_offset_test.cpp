@@ -159,8 +159,18 @@ TEST(RayOffset, RoundsAwayFromTheSurfaceUnderTheTracingFloatingPointMode) {
 // the smallest normal float, coordinates whose step crosses a power of two, axis-aligned normals.
 void expect_sse_offset_equals_per_axis_definition() {
   std::mt19937 rng(17);
-  const float specials[] = {0.0f, -0.0f, 1e-40f, -1e-40f, std::numeric_limits<float>::min(),
-                            -std::numeric_limits<float>::min(), 1.0f, -1.0f, 2.0f, 0x1.fffffep0f, -3.5e7f, 1e30f};
+  const float specials[] = {0.0f,
+                            -0.0f,
+                            1e-40f,
+                            -1e-40f,
+                            std::numeric_limits<float>::min(),
+                            -std::numeric_limits<float>::min(),
+                            1.0f,
+                            -1.0f,
+                            2.0f,
+                            0x1.fffffep0f,
+                            -3.5e7f,
+                            1e30f};
   std::uniform_int_distribution<int> pick(0, 2 * static_cast<int>(std::size(specials)));
   std::uniform_real_distribution<float> coordinate(-100.0f, 100.0f);
   auto value = [&] {

@@ -53,9 +53,11 @@ TEST(StratifiedSampler, AllOffsetsOfAPixelAtOnceArePixelOffsetBitForBit) {
         sampler.pixel_offsets(pixel, all.data());
         for (int s = 0; s < spp; ++s) {
           const PixelOffset one = sampler.pixel_offset(pixel, s);
-          ASSERT_EQ(std::bit_cast<std::uint32_t>(all[static_cast<std::size_t>(s)].x), std::bit_cast<std::uint32_t>(one.x))
+          ASSERT_EQ(std::bit_cast<std::uint32_t>(all[static_cast<std::size_t>(s)].x),
+                    std::bit_cast<std::uint32_t>(one.x))
               << "spp " << spp << " pixel " << pixel << " sample " << s;
-          ASSERT_EQ(std::bit_cast<std::uint32_t>(all[static_cast<std::size_t>(s)].y), std::bit_cast<std::uint32_t>(one.y))
+          ASSERT_EQ(std::bit_cast<std::uint32_t>(all[static_cast<std::size_t>(s)].y),
+                    std::bit_cast<std::uint32_t>(one.y))
               << "spp " << spp << " pixel " << pixel << " sample " << s;
         }
       }

@@ -44,7 +44,8 @@ void expect_net(const std::vector<Sample2D>& points, int m) {
       const int b = static_cast<int>(points[static_cast<std::size_t>(p)].y * static_cast<float>(1 << j));
       ++count[static_cast<std::size_t>(a * (1 << j) + b)];
     }
-    for (int c = 0; c < n; ++c) ASSERT_EQ(count[static_cast<std::size_t>(c)], 1) << "2^" << i << " x 2^" << j << " cell " << c;
+    for (int c = 0; c < n; ++c)
+      ASSERT_EQ(count[static_cast<std::size_t>(c)], 1) << "2^" << i << " x 2^" << j << " cell " << c;
   }
 }
 
@@ -93,7 +94,8 @@ TEST(SobolSampler, ValuesDependOnlyOnSeedPixelSampleAndDimension) {
 TEST(SobolSampler, DrawingManyKeysAtOnceIsDrawingEachKey) {
   const SobolSampler sampler(0x5eed);
   std::mt19937_64 rng(9);
-  for (const std::size_t count : {std::size_t{1}, std::size_t{63}, std::size_t{64}, std::size_t{65}, std::size_t{1000}}) {
+  for (const std::size_t count :
+       {std::size_t{1}, std::size_t{63}, std::size_t{64}, std::size_t{65}, std::size_t{1000}}) {
     std::vector<SampleKey> keys(count);
     for (SampleKey& key : keys) {
       key.pixel_key = rng() >> (rng() % 64);
@@ -109,7 +111,8 @@ TEST(SobolSampler, DrawingManyKeysAtOnceIsDrawingEachKey) {
         ASSERT_EQ(std::bit_cast<std::uint32_t>(many[i].x), std::bit_cast<std::uint32_t>(one.x)) << i << " of " << count;
         ASSERT_EQ(std::bit_cast<std::uint32_t>(many[i].y), std::bit_cast<std::uint32_t>(one.y)) << i << " of " << count;
         const float one_1d = sampler.sample_1d(keys[i].pixel_key, keys[i].sample_index, dimension + 1);
-        ASSERT_EQ(std::bit_cast<std::uint32_t>(many_1d[i]), std::bit_cast<std::uint32_t>(one_1d)) << i << " of " << count;
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(many_1d[i]), std::bit_cast<std::uint32_t>(one_1d))
+            << i << " of " << count;
       }
     }
   }

@@ -37,14 +37,16 @@ SpotLight make_spot(const Vec3& position, const Vec3& axis, const Color& radianc
 // pbrt-v4's falloff, in double: smoothstep(cos outer, cos inner, cos θ).
 double expected_falloff(double theta_degrees, double inner_degrees, double outer_degrees) {
   const double c = std::cos(theta_degrees * kRadiansPerDegree);
-  const double c_inner = std::cos(inner_degrees * kRadiansPerDegree), c_outer = std::cos(outer_degrees * kRadiansPerDegree);
+  const double c_inner = std::cos(inner_degrees * kRadiansPerDegree),
+               c_outer = std::cos(outer_degrees * kRadiansPerDegree);
   const double t = std::clamp((c - c_outer) / (c_inner - c_outer), 0.0, 1.0);
   return t * t * (3.0 - 2.0 * t);
 }
 
 // A unit direction θ degrees off +z, in the xz plane.
 Vec3 off_z(double theta_degrees) {
-  return Vec3(float(std::sin(theta_degrees * kRadiansPerDegree)), 0.0f, float(std::cos(theta_degrees * kRadiansPerDegree)));
+  return Vec3(float(std::sin(theta_degrees * kRadiansPerDegree)), 0.0f,
+              float(std::cos(theta_degrees * kRadiansPerDegree)));
 }
 
 TEST(SpotLight, FallsOffAsASmoothStepInCosineBetweenItsCones) {
@@ -78,7 +80,9 @@ TEST(SpotLight, WhittedSampleIsThePointLightsTimesTheFalloff) {
   EXPECT_EQ(light_emission(spot), Color(0.0f));
   for (const double theta : {0.0, 5.0, 15.0, 25.0, 34.0, 36.0, 80.0}) {
     const float d = 3.0f;
-    const Vec3 below = position + Vec3(float(std::sin(theta * kRadiansPerDegree)), -float(std::cos(theta * kRadiansPerDegree)), 0.0f) * d;
+    const Vec3 below =
+        position +
+        Vec3(float(std::sin(theta * kRadiansPerDegree)), -float(std::cos(theta * kRadiansPerDegree)), 0.0f) * d;
     const LightSample s = sample_light(spot, below, Sample2D{0.3f, 0.7f});
     const LightSample p = sample_light(point, below, Sample2D{0.3f, 0.7f});
     EXPECT_EQ(s.direction, p.direction);
@@ -126,7 +130,8 @@ TEST(SpotLight, PathSampleFallsOffWithTheSquareOfDistanceAndIsADeltaLight) {
 
 // pbrt-v4's power of a spot light: the inner cone at full intensity, the falloff band at half.
 double spot_power(double intensity, double inner_degrees, double outer_degrees) {
-  const double c_inner = std::cos(inner_degrees * kRadiansPerDegree), c_outer = std::cos(outer_degrees * kRadiansPerDegree);
+  const double c_inner = std::cos(inner_degrees * kRadiansPerDegree),
+               c_outer = std::cos(outer_degrees * kRadiansPerDegree);
   return 2.0 * kPi * intensity * ((1.0 - c_inner) + 0.5 * (c_inner - c_outer));
 }
 
@@ -137,14 +142,16 @@ TEST(SpotLight, IsPickedInProportionToItsPower) {
   scene.render.light_sampler = LightSamplerKind::kPower;
   scene.lights.push_back(PointLight{Vec3(2.0f, 3.0f, 0.0f), Color(2.0f)});
   scene.lights.push_back(make_spot(Vec3(0.0f, 4.0f, 0.0f), Vec3(0, -1, 0), Color(30.0f, 20.0f, 10.0f), 15.0, 35.0));
-  scene.lights.push_back(QuadLight{Vec3(-1.0f, 5.0f, -1.0f), Vec3(2, 0, 0), Vec3(0, 0, 2), Vec3(0, -1, 0), 4.0f, Color(1.5f), 1});
+  scene.lights.push_back(
+      QuadLight{Vec3(-1.0f, 5.0f, -1.0f), Vec3(2, 0, 0), Vec3(0, 0, 2), Vec3(0, -1, 0), 4.0f, Color(1.5f), 1});
   const LightSet set(scene);
   const double power[3] = {4.0 * kPi * 2.0, spot_power(20.0, 15.0, 35.0), kPi * 4.0 * 1.5};
   const double total = power[0] + power[1] + power[2];
   constexpr int kPicks = 1 << 16;
   int picked[3] = {0, 0, 0};
   for (int i = 0; i < kPicks; ++i) {
-    const std::optional<PathLightSample> s = set.sample(Vec3(0.1f, 0.0f, 0.2f), (float(i) + 0.5f) / kPicks, {0.4f, 0.6f});
+    const std::optional<PathLightSample> s =
+        set.sample(Vec3(0.1f, 0.0f, 0.2f), (float(i) + 0.5f) / kPicks, {0.4f, 0.6f});
     ASSERT_TRUE(s) << i;
     ASSERT_LT(s->light, 3u);
     ++picked[s->light];
@@ -163,8 +170,9 @@ TEST(SpotLight, TheLightTreePicksItWhereItsConeReaches) {
   scene.lights.push_back(make_spot(Vec3(0.0f, 4.0f, 0.0f), Vec3(0, -1, 0), Color(1.0f), 5.0, 25.0));
   const LightSet set(scene);
   for (const double theta : {0.0, 10.0, 20.0, 24.5}) {
-    const Vec3 from = Vec3(0.0f, 4.0f, 0.0f) + Vec3(float(std::sin(theta * kRadiansPerDegree)),
-                                                    -float(std::cos(theta * kRadiansPerDegree)), 0.0f) * 3.0f;
+    const Vec3 from =
+        Vec3(0.0f, 4.0f, 0.0f) +
+        Vec3(float(std::sin(theta * kRadiansPerDegree)), -float(std::cos(theta * kRadiansPerDegree)), 0.0f) * 3.0f;
     int spot_picks = 0;
     for (int i = 0; i < 4096; ++i) {
       const std::optional<PathLightSample> s = set.sample(from, (float(i) + 0.5f) / 4096.0f, {0.5f, 0.5f});
@@ -185,8 +193,8 @@ constexpr float kHeight = 2.0f;
 constexpr double kInner = 20.0, kOuter = 40.0, kIntensity = 3.0;
 
 std::string lit_plane(const std::string& integrator, int spp) {
-  const auto plane = test::write_file("plane.obj",
-                                      "v -50 0 -50\nv -50 0 50\nv 50 0 50\nv 50 0 -50\nf 1 2 3\nf 1 3 4\n");
+  const auto plane =
+      test::write_file("plane.obj", "v -50 0 -50\nv -50 0 50\nv 50 0 50\nv 50 0 -50\nf 1 2 3\nf 1 3 4\n");
   return R"(rtpro: 1
 camera: {position: [0, 6, 0], look_at: [0, 0, 0], up: [0, 0, 1], fov: 50, resolution: [64, 64]}
 render: {integrator: )" +
@@ -196,7 +204,8 @@ materials:
 lights:
   - {type: spot, position: [0, 2, 0], direction: [0, -1, 0], intensity: 3, inner_angle: 20, outer_angle: 40}
 world:
-  - {type: mesh, file: ")" + plane.string() +
+  - {type: mesh, file: ")" +
+         plane.string() +
          R"(", material: white}
 )";
 }

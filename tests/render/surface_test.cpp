@@ -84,7 +84,8 @@ void expect_four_at_a_time_is_make_surface() {
     }
     ASSERT_GT(hits.size(), 2000u) << "extent " << extent;
     int back_faces = 0;
-    expect_same_surfaces(scene, rays, hits, [](auto&&... four) { make_sphere_surfaces4(four...); }, back_faces);
+    expect_same_surfaces(
+        scene, rays, hits, [](auto&&... four) { make_sphere_surfaces4(four...); }, back_faces);
     EXPECT_GT(back_faces, 50) << "rays from inside spheres are exercised, extent " << extent;
   }
 }
@@ -125,7 +126,8 @@ void expect_four_triangle_hits_at_a_time_are_make_surface() {
       hits.push_back(hit);
     }
     int back_faces = 0;
-    expect_same_surfaces(scene, rays, hits, [](auto&&... four) { make_triangle_surfaces4(four...); }, back_faces);
+    expect_same_surfaces(
+        scene, rays, hits, [](auto&&... four) { make_triangle_surfaces4(four...); }, back_faces);
     EXPECT_GT(back_faces, 1000) << "extent " << extent;
     EXPECT_GT(degenerate, 100) << "extent " << extent;
   }
@@ -133,7 +135,9 @@ void expect_four_triangle_hits_at_a_time_are_make_surface() {
 
 TEST(Surface, FourSphereHitsAtATimeAreMakeSurfaceBitForBit) { expect_four_at_a_time_is_make_surface(); }
 
-TEST(Surface, FourTriangleHitsAtATimeAreMakeSurfaceBitForBit) { expect_four_triangle_hits_at_a_time_are_make_surface(); }
+TEST(Surface, FourTriangleHitsAtATimeAreMakeSurfaceBitForBit) {
+  expect_four_triangle_hits_at_a_time_are_make_surface();
+}
 
 TEST(Surface, FourTriangleHitsAtATimeAreMakeSurfaceUnderTheTracingFloatingPointMode) {
   test::in_tracing_fp_mode(expect_four_triangle_hits_at_a_time_are_make_surface);
@@ -214,13 +218,13 @@ TEST(Surface, ABatchOfHitsIsMakeSurfaceOfEachHit) {
 }
 
 TEST(Surface, OnlyTopLevelSpheresWithoutImageTexturesArePlain) {
-  expect_plain_hits_are<SphereSet>(50, [](const RenderScene& scene, const Hit& hit) { return is_plain_sphere_hit(scene, hit); });
+  expect_plain_hits_are<SphereSet>(
+      50, [](const RenderScene& scene, const Hit& hit) { return is_plain_sphere_hit(scene, hit); });
 }
 
 TEST(Surface, OnlyTopLevelTrianglesWithoutImageTexturesArePlain) {
-  expect_plain_hits_are<TriangleMesh>(200, [](const RenderScene& scene, const Hit& hit) {
-    return is_plain_triangle_hit(scene, hit);
-  });
+  expect_plain_hits_are<TriangleMesh>(
+      200, [](const RenderScene& scene, const Hit& hit) { return is_plain_triangle_hit(scene, hit); });
 }
 
 }  // namespace surface_test

@@ -35,7 +35,8 @@ TEST(GltfLoader, HierarchyTransformsMatchHandComputedPositions) {
   const float s = std::sqrt(0.5f);
   // child: a column-major matrix translating by (0, 1, 0), drawing the mesh; root: TRS.
   const int child = gltf.node({{"mesh", mesh}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 1}}});
-  const int root = gltf.node({{"children", {child}}, {"translation", {1, 0, 0}}, {"rotation", {0, s, 0, s}}, {"scale", {2, 2, 2}}});
+  const int root =
+      gltf.node({{"children", {child}}, {"translation", {1, 0, 0}}, {"rotation", {0, s, 0, s}}, {"scale", {2, 2, 2}}});
   gltf.node({{"mesh", mesh}, {"translation", {0, 0, 5}}});  // not in the scene: not placed
   gltf.scene({root});
   const GltfAsset asset = load_gltf_file(gltf.write("tree"));
@@ -61,7 +62,8 @@ TEST(GltfLoader, IndexedStripsAndFansKeepTheirWinding) {
     ASSERT_EQ(mesh.triangles.size(), 2u);
     for (std::uint32_t t = 0; t < 2; ++t) {
       const TriangleIndices& tri = mesh.triangles[t];
-      EXPECT_GT(cross(mesh.vertex(tri.v1) - mesh.vertex(tri.v0), mesh.vertex(tri.v2) - mesh.vertex(tri.v0)).z, 0.0f) << mesh.name;
+      EXPECT_GT(cross(mesh.vertex(tri.v1) - mesh.vertex(tri.v0), mesh.vertex(tri.v2) - mesh.vertex(tri.v0)).z, 0.0f)
+          << mesh.name;
     }
     EXPECT_TRUE(mesh.normals.empty());  // no NORMAL: flat, as the specification says
   }
@@ -102,8 +104,15 @@ TEST(GltfLoader, MaterialsAreThePrincipledModelWithAPhongAndMirrorViewForWhitted
   gltf.json["extensionsUsed"] = {"KHR_materials_ior", "KHR_materials_clearcoat", "KHR_materials_sheen",
                                  "KHR_materials_specular", "KHR_materials_transmission"};
   gltf.json["materials"] = {
-      {{"name", "chrome"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 0.9, 0.9, 1}}, {"metallicFactor", 1}, {"roughnessFactor", 0}}}},
-      {{"name", "clay"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.4, 0.2, 0.5}}, {"metallicFactor", 0}, {"roughnessFactor", 1}, {"baseColorTexture", {{"index", 0}}}}}},
+      {{"name", "chrome"},
+       {"pbrMetallicRoughness",
+        {{"baseColorFactor", {0.9, 0.9, 0.9, 1}}, {"metallicFactor", 1}, {"roughnessFactor", 0}}}},
+      {{"name", "clay"},
+       {"pbrMetallicRoughness",
+        {{"baseColorFactor", {0.8, 0.4, 0.2, 0.5}},
+         {"metallicFactor", 0},
+         {"roughnessFactor", 1},
+         {"baseColorTexture", {{"index", 0}}}}}},
       {{"name", "coated"},
        {"extensions",
         {{"KHR_materials_ior", {{"ior", 1.33}}},
@@ -117,7 +126,8 @@ TEST(GltfLoader, MaterialsAreThePrincipledModelWithAPhongAndMirrorViewForWhitted
   const std::filesystem::path file = gltf.write("materials");
   std::filesystem::create_directories(file.parent_path() / "textures");
   std::filesystem::copy_file(test::source_dir() / "scenes" / "textures" / "uv_grid.png",
-                             file.parent_path() / "textures" / "clay.png", std::filesystem::copy_options::overwrite_existing);
+                             file.parent_path() / "textures" / "clay.png",
+                             std::filesystem::copy_options::overwrite_existing);
   const GltfAsset asset = load_gltf_file(file);
   ASSERT_EQ(asset.materials.size(), 3u);
   const MaterialDesc& chrome = asset.materials[0];
@@ -184,18 +194,21 @@ TEST(GltfHostile, AccessorsMustFitTheirBufferView) {
   GltfFile gltf;
   gltf.scene({gltf.node({{"mesh", gltf.mesh(gltf.floats(kTriangle, "VEC3"))}})});
   gltf.json["accessors"][0]["count"] = 1000000000;  // a 4-byte file claiming 12 GB
-  EXPECT_NE(error_of(gltf.write("count")).find("accessors[0].count: 1000000000 elements from byte 0 do not fit in bufferViews[0]"),
+  EXPECT_NE(error_of(gltf.write("count"))
+                .find("accessors[0].count: 1000000000 elements from byte 0 do not fit in bufferViews[0]"),
             std::string::npos);
   gltf.json["accessors"][0]["count"] = 3;
   gltf.json["accessors"][0]["bufferView"] = 9;
-  EXPECT_NE(error_of(gltf.write("view")).find("accessors[0].bufferView: bufferView 9 does not exist"), std::string::npos);
+  EXPECT_NE(error_of(gltf.write("view")).find("accessors[0].bufferView: bufferView 9 does not exist"),
+            std::string::npos);
   gltf.json["accessors"][0]["bufferView"] = 0;
   gltf.json["bufferViews"][0]["byteLength"] = 400;
   EXPECT_NE(error_of(gltf.write("length")).find("bufferViews[0].byteLength"), std::string::npos);
   gltf.json["bufferViews"][0]["byteLength"] = 36;
   gltf.json["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 4;
-  EXPECT_NE(error_of(gltf.write("reference")).find("meshes[0].primitives[0].attributes.POSITION: accessor 4 does not exist"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(gltf.write("reference")).find("meshes[0].primitives[0].attributes.POSITION: accessor 4 does not exist"),
+      std::string::npos);
 }
 
 TEST(GltfHostile, EmptyAccessorsAreReadWithoutTouchingTheirMissingStorage) {
@@ -224,11 +237,13 @@ TEST(GltfHostile, CyclesSharedChildrenAndDeepTreesAreRefused) {
   GltfFile shared;
   const int leaf = shared.node({{"mesh", shared.mesh(shared.floats(kTriangle, "VEC3"))}});
   shared.scene({shared.node({{"children", {leaf}}}), shared.node({{"children", {leaf}}})});
-  EXPECT_NE(error_of(shared.write("shared")).find("nodes[2].children[0]: node 0 already has a parent"), std::string::npos);
+  EXPECT_NE(error_of(shared.write("shared")).find("nodes[2].children[0]: node 0 already has a parent"),
+            std::string::npos);
 
   GltfFile deep;  // a chain of 2,000 nodes: too deep, refused without recursion
   deep.mesh(deep.floats(kTriangle, "VEC3"));
-  for (int i = 0; i < 2000; ++i) deep.node(i + 1 < 2000 ? nlohmann::json{{"children", {i + 1}}} : nlohmann::json{{"mesh", 0}});
+  for (int i = 0; i < 2000; ++i)
+    deep.node(i + 1 < 2000 ? nlohmann::json{{"children", {i + 1}}} : nlohmann::json{{"mesh", 0}});
   deep.scene({0});
   EXPECT_NE(error_of(deep.write("deep")).find("nodes nest deeper than 1024 levels"), std::string::npos);
 }
@@ -244,7 +259,8 @@ TEST(GltfHostile, MissingOrEscapingBuffersNameTheBuffer) {
   nlohmann::json escaping = nlohmann::json::parse(std::ifstream(outside));
   escaping["buffers"][0]["uri"] = "../outside.bin";
   const auto inner = test::write_file("sub/escape.gltf", escaping.dump());
-  EXPECT_NE(error_of(inner).find("buffers[0].uri: '../outside.bin' leads outside the glTF's folder"), std::string::npos);
+  EXPECT_NE(error_of(inner).find("buffers[0].uri: '../outside.bin' leads outside the glTF's folder"),
+            std::string::npos);
   std::filesystem::remove(inner.parent_path() / "link.bin");  // the scratch folder outlives a run
   std::filesystem::create_symlink(outside.parent_path() / "outside.bin", inner.parent_path() / "link.bin");
   escaping["buffers"][0]["uri"] = "link.bin";
@@ -255,8 +271,11 @@ TEST(GltfHostile, DeepJsonAndForeignFilesAreRefusedBeforeParsing) {
   std::string deep = R"({"asset": {"version": "2.0"}, "extras": )";
   for (int i = 0; i < 100000; ++i) deep += '[';
   EXPECT_NE(error_of(test::write_file("deep.gltf", deep)).find("nests deeper than 128 levels"), std::string::npos);
-  EXPECT_NE(error_of(test::write_file("old.gltf", R"({"asset": {"version": "1.0"}})")).find("glTF 2.0 files only"), std::string::npos);
-  EXPECT_NE(error_of(test::write_file("draco.gltf", R"({"asset": {"version": "2.0"}, "extensionsRequired": ["KHR_draco_mesh_compression"]})"))
+  EXPECT_NE(error_of(test::write_file("old.gltf", R"({"asset": {"version": "1.0"}})")).find("glTF 2.0 files only"),
+            std::string::npos);
+  EXPECT_NE(error_of(test::write_file(
+                         "draco.gltf",
+                         R"({"asset": {"version": "2.0"}, "extensionsRequired": ["KHR_draco_mesh_compression"]})"))
                 .find("KHR_draco_mesh_compression"),
             std::string::npos);
   EXPECT_FALSE(error_of(test::write_file("text.glb", "glTF\x01\0\0\0garbage")).empty());

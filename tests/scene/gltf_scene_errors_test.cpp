@@ -99,7 +99,8 @@ TEST(GltfSceneErrors, ACameraTooFarForItsViewDirectionNamesItsNode) {
   GltfFile gltf = triangle_model();
   add_camera(gltf, 0.7, {{"translation", {0, 0, 1e9}}});
   const std::string message = scene_error(gltf.write("lost_camera"));
-  EXPECT_TRUE(starts_with(message, "nodes[1] (cameras[0]): camera.look_at must differ from camera.position")) << message;
+  EXPECT_TRUE(starts_with(message, "nodes[1] (cameras[0]): camera.look_at must differ from camera.position"))
+      << message;
 }
 
 // A sheared node matrix turns the camera's -z nearly onto its +y (sine 1e-4): the loader keeps
@@ -134,24 +135,31 @@ TEST(GltfSceneErrors, TheCameraFramingFarMeshesSaysItIsRtprosOwn) {
   gltf.json["nodes"][0]["translation"] = {1e9, 0, 0};
   gltf.json["scenes"][0]["nodes"] = {gltf.node({{"children", {0}}, {"scale", {5, 5, 5}}})};
   const std::string message = scene_error(gltf.write("far_meshes"));
-  EXPECT_TRUE(starts_with(message, "the camera rtpro places to frame the meshes (the file has no perspective camera): "
-                                   "camera.position: ")) << message;
+  EXPECT_TRUE(starts_with(message,
+                          "the camera rtpro places to frame the meshes (the file has no perspective camera): "
+                          "camera.position: "))
+      << message;
 }
 
 TEST(GltfSceneErrors, APointLightBeyondTheSceneFormatsRangeNamesItsNodeAndLight) {
   GltfFile gltf = triangle_model();
   const int lamp = add_doubled_light(gltf, {{"type", "point"}, {"intensity", 10}}, {{"translation", {0, 0, 1e9}}});
   const std::string message = scene_error(gltf.write("far_point"));
-  EXPECT_TRUE(starts_with(message, "nodes[" + std::to_string(lamp) + "] (extensions.KHR_lights_punctual.lights[0]): "
-                                   "point light.position: 2e+09 is out of range")) << message;
+  EXPECT_TRUE(starts_with(message, "nodes[" + std::to_string(lamp) +
+                                       "] (extensions.KHR_lights_punctual.lights[0]): "
+                                       "point light.position: 2e+09 is out of range"))
+      << message;
 }
 
 TEST(GltfSceneErrors, ASpotLightBeyondTheSceneFormatsRangeNamesItsNodeAndLight) {
   GltfFile gltf = triangle_model();
-  const int lamp = add_doubled_light(gltf, {{"type", "spot"}, {"spot", nlohmann::json::object()}}, {{"translation", {1e9, 0, 0}}});
+  const int lamp =
+      add_doubled_light(gltf, {{"type", "spot"}, {"spot", nlohmann::json::object()}}, {{"translation", {1e9, 0, 0}}});
   const std::string message = scene_error(gltf.write("far_spot"));
-  EXPECT_TRUE(starts_with(message, "nodes[" + std::to_string(lamp) + "] (extensions.KHR_lights_punctual.lights[0]): "
-                                   "spot light.position: 2e+09 is out of range")) << message;
+  EXPECT_TRUE(starts_with(message, "nodes[" + std::to_string(lamp) +
+                                       "] (extensions.KHR_lights_punctual.lights[0]): "
+                                       "spot light.position: 2e+09 is out of range"))
+      << message;
 }
 
 // An override's errors stay at the override, as in a scene file.
@@ -178,7 +186,8 @@ GltfFile far_instance_model() {
 
 TEST(GltfSceneErrors, AnInstanceBeyondTheTraceableRangeNamesItsNode) {
   const std::string message = build_error(far_instance_model().write("far_instance"));
-  EXPECT_TRUE(starts_with(message, "nodes[0]: this instance places geometry as far as 1e+17 from the origin")) << message;
+  EXPECT_TRUE(starts_with(message, "nodes[0]: this instance places geometry as far as 1e+17 from the origin"))
+      << message;
 }
 
 // Scaled by 1e-9 twice: rays entering the object would reach 1e18 in its space.
@@ -187,14 +196,17 @@ TEST(GltfSceneErrors, AnInstanceShrunkBeyondTheTraceableRangeNamesItsNode) {
   gltf.json["nodes"][0]["scale"] = {1e-9, 1e-9, 1e-9};
   gltf.json["scenes"][0]["nodes"] = {gltf.node({{"children", {0}}, {"scale", {1e-9, 1e-9, 1e-9}}})};
   const std::string message = build_error(gltf.write("shrunk_instance"));
-  EXPECT_TRUE(starts_with(message, "nodes[0]: this instance's transform (combined with its parents) shrinks its object")) << message;
+  EXPECT_TRUE(
+      starts_with(message, "nodes[0]: this instance's transform (combined with its parents) shrinks its object"))
+      << message;
 }
 
 // Placed by a YAML scene, the error is at the scene's entry and names the glTF file and node.
 TEST(GltfSceneErrors, AnInstancePlacedByAYamlSceneNamesTheEntryTheFileAndTheNode) {
   const auto gltf = far_instance_model().write("far_piece");
-  const auto scene = test::write_file("far_piece.yaml", "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\n"
-                                                        "world:\n  - {type: mesh, file: far_piece.gltf}\n");
+  const auto scene = test::write_file("far_piece.yaml",
+                                      "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\n"
+                                      "world:\n  - {type: mesh, file: far_piece.gltf}\n");
   try {
     build_render_scene(parse_scene_file(scene));
     FAIL() << "built";

@@ -49,16 +49,20 @@ TEST(GltfScene, WithoutCameraTheDefaultOneFramesTheBoundsAndADefaultLightShines)
 
 TEST(GltfScene, TheFirstCameraAndThePunctualLightsAreUsed) {
   GltfFile gltf = offset_model();
-  gltf.json["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"aspectRatio", 2.0}, {"znear", 0.1}}}}};
+  gltf.json["cameras"] = {
+      {{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"aspectRatio", 2.0}, {"znear", 0.1}}}}};
   gltf.json["extensionsUsed"] = {"KHR_lights_punctual"};
   gltf.json["extensions"]["KHR_lights_punctual"]["lights"] = {
       {{"type", "point"}, {"intensity", 400}, {"color", {1, 0.5, 0.5}}},
       {{"type", "directional"}, {"intensity", 2}},
       {{"type", "spot"}, {"intensity", 100}, {"spot", nlohmann::json::object()}}};
   const int camera = gltf.node({{"camera", 0}, {"translation", {10.5, 0.5, 5}}});
-  const int point = gltf.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}, {"translation", {10.5, 10.5, 0.5}}});
-  const int sun = gltf.node({{"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}, {"rotation", {-0.7071068, 0, 0, 0.7071068}}});
-  const int spot = gltf.node({{"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}, {"translation", {10.5, 0.5, 10.5}}});
+  const int point =
+      gltf.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}, {"translation", {10.5, 10.5, 0.5}}});
+  const int sun = gltf.node(
+      {{"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}, {"rotation", {-0.7071068, 0, 0, 0.7071068}}});
+  const int spot =
+      gltf.node({{"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}, {"translation", {10.5, 0.5, 10.5}}});
   gltf.json["scenes"][0]["nodes"] = {0, camera, point, sun, spot};
   const SceneDescription scene = parse_scene_file(gltf.write("lit"), {"render.spp=4"});
   EXPECT_EQ(scene.camera.position, Vec3(10.5f, 0.5f, 5.0f));
@@ -90,7 +94,8 @@ TEST(GltfScene, TheFirstCameraAndThePunctualLightsAreUsed) {
 // aspectRatio 0.0011 made a 640x65536 image: ratios past 1:16 are clamped, with a warning.
 TEST(GltfScene, AnAbsurdCameraAspectRatioIsClampedWithAWarning) {
   GltfFile gltf = offset_model();
-  gltf.json["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"aspectRatio", 0.0011}, {"znear", 0.1}}}}};
+  gltf.json["cameras"] = {
+      {{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"aspectRatio", 0.0011}, {"znear", 0.1}}}}};
   const int camera = gltf.node({{"camera", 0}, {"translation", {10.5, 0.5, 5}}});
   gltf.json["scenes"][0]["nodes"] = {0, camera};
   const auto file = gltf.write("tall");
@@ -101,7 +106,8 @@ TEST(GltfScene, AnAbsurdCameraAspectRatioIsClampedWithAWarning) {
   ASSERT_TRUE(scene.world.gltfs[0].loaded);
   bool warned = false;
   for (const std::string& w : scene.world.gltfs[0].loaded->stats.warnings)
-    warned |= w.find("cameras[0].perspective.aspectRatio 0.001100 is outside 1/16..16; 0.062500 is used") != std::string::npos;
+    warned |= w.find("cameras[0].perspective.aspectRatio 0.001100 is outside 1/16..16; 0.062500 is used") !=
+              std::string::npos;
   EXPECT_TRUE(warned);
 }
 
@@ -118,9 +124,12 @@ TEST(GltfScene, ASpotLightKeepsItsConeAndShinesDownItsNodesMinusZ) {
   GltfFile gltf = offset_model();
   gltf.json["extensionsUsed"] = {"KHR_lights_punctual"};
   gltf.json["extensions"]["KHR_lights_punctual"]["lights"] = {
-      {{"type", "spot"}, {"intensity", 1366}, {"color", {0.5, 1, 1}},
+      {{"type", "spot"},
+       {"intensity", 1366},
+       {"color", {0.5, 1, 1}},
        {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.6}}}},
-      {{"type", "spot"}, {"spot", {{"outerConeAngle", double(1.5707963705062866)}}}}};  // π/2 as a float, as Blender writes it
+      {{"type", "spot"},
+       {"spot", {{"outerConeAngle", double(1.5707963705062866)}}}}};  // π/2 as a float, as Blender writes it
   const double s = std::sqrt(0.5);
   const int lamp = gltf.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}, {"translation", {0, 0, -2}}});
   // 90° about +y: -z turns to -x.
@@ -214,8 +223,9 @@ TEST(GltfScene, TheCostEstimateCountsTheNodesOfAGltfSceneAsInstances) {
 // flattened.
 TEST(GltfScene, PlacementsInsideAGltfObjectCountTowardTheInstanceLimitBeforeFlattening) {
   repeated_model(100).write("hundred", true);
-  std::string text = "rtpro: 1\ncamera: {position: [0, 0, 30], look_at: [0, 0, 0]}\nobjects:\n  piece:\n"
-                     "    - {type: mesh, file: hundred.gltf}\n  row:\n";
+  std::string text =
+      "rtpro: 1\ncamera: {position: [0, 0, 30], look_at: [0, 0, 0]}\nobjects:\n  piece:\n"
+      "    - {type: mesh, file: hundred.gltf}\n  row:\n";
   for (int i = 0; i < 1000; ++i) text += "    - {type: instance, object: piece}\n";
   text += "world:\n";
   for (int i = 0; i < 200; ++i) text += "  - {type: instance, object: row}\n";
@@ -252,20 +262,24 @@ world:
   EXPECT_EQ(scene.prototypes.size(), 2u);
   std::vector<Vec3> origins;
   for (const Geometry& g : scene.top.geometries)
-    if (const auto* instance = std::get_if<Instance>(&g)) origins.push_back(instance->object_to_world.apply_point(Vec3(0, 0, 0)));
+    if (const auto* instance = std::get_if<Instance>(&g))
+      origins.push_back(instance->object_to_world.apply_point(Vec3(0, 0, 0)));
   ASSERT_EQ(origins.size(), 3u);
-  EXPECT_EQ(origins[0], Vec3(10, 0, 0));   // the world's own glTF, placed first
-  EXPECT_EQ(origins[1], Vec3(10, 5, 0));   // node translation, then the instance's
-  EXPECT_EQ(origins[2], Vec3(20, 0, 0));   // node translation, then scaled by 2
-  const auto& red = std::get<TriangleMesh>(scene.prototypes[std::get<Instance>(scene.top.geometries[0]).prototype].geometries[0]);
+  EXPECT_EQ(origins[0], Vec3(10, 0, 0));  // the world's own glTF, placed first
+  EXPECT_EQ(origins[1], Vec3(10, 5, 0));  // node translation, then the instance's
+  EXPECT_EQ(origins[2], Vec3(20, 0, 0));  // node translation, then scaled by 2
+  const auto& red =
+      std::get<TriangleMesh>(scene.prototypes[std::get<Instance>(scene.top.geometries[0]).prototype].geometries[0]);
   EXPECT_EQ(scene.material_names[red.material], "red");
 }
 
 TEST(GltfScene, NormalsKeyIsCheckedLikeEveryOtherKey) {
   offset_model().write("piece");
   try {
-    parse_scene_text("rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\nworld:\n  - {type: mesh, file: piece.gltf, normals: smoth}\n",
-                     test::write_file("bad.yaml", ""));
+    parse_scene_text(
+        "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\nworld:\n  - {type: mesh, file: piece.gltf, "
+        "normals: smoth}\n",
+        test::write_file("bad.yaml", ""));
     ADD_FAILURE() << "accepted normals: smoth";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where().line, 4);
@@ -285,14 +299,18 @@ TEST(GltfScene, RendersFromTheCommandLineWithBothBackends) {
     EXPECT_TRUE(std::filesystem::is_regular_file(file.parent_path() / (std::string(backend) + ".exr")));
   }
   std::string output;
-  EXPECT_EQ(test::run_command(test::rtpro_executable().string() + " render " + (file.parent_path() / "absent.glb").string() + " -o x.exr", &output), 2)
+  EXPECT_EQ(test::run_command(test::rtpro_executable().string() + " render " +
+                                  (file.parent_path() / "absent.glb").string() + " -o x.exr",
+                              &output),
+            2)
       << output;
 }
 
 TEST(GltfScene, InfoShowsLoaderWarningsAndNoInfiniteBoundsForAnEmptyMesh) {
   const auto mesh = test::write_file("empty.obj", "o nothing\nl 1 1\n");
-  const auto scene = test::write_file("empty.yaml", "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\n"
-                                                    "world:\n  - {type: mesh, file: empty.obj}\n");
+  const auto scene = test::write_file("empty.yaml",
+                                      "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\n"
+                                      "world:\n  - {type: mesh, file: empty.obj}\n");
   std::string output;
   EXPECT_EQ(test::run_command(test::rtpro_executable().string() + " info " + scene.string(), &output), 0) << output;
   EXPECT_NE(output.find("warning    " + mesh.string() + ": no faces"), std::string::npos) << output;

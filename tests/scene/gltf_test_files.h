@@ -59,7 +59,9 @@ class GltfFile {
   std::string bin;
 
  private:
-  static int components(const std::string& type) { return type == "SCALAR" ? 1 : type == "VEC2" ? 2 : type == "VEC3" ? 3 : 4; }
+  static int components(const std::string& type) {
+    return type == "SCALAR" ? 1 : type == "VEC2" ? 2 : type == "VEC3" ? 3 : 4;
+  }
 
   int append(const void* data, std::size_t bytes) {
     while (bin.size() % 4) bin += '\0';
@@ -70,7 +72,8 @@ class GltfFile {
   }
 
   int accessor(int view, int component_type, int count, const char* type) {
-    json["accessors"].push_back({{"bufferView", view}, {"componentType", component_type}, {"count", count}, {"type", type}});
+    json["accessors"].push_back(
+        {{"bufferView", view}, {"componentType", component_type}, {"count", count}, {"type", type}});
     return int(json["accessors"].size()) - 1;
   }
 

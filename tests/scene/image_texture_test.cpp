@@ -19,11 +19,12 @@ std::string scene_with(const std::string& material) {
 TEST(ImageTexture, SceneTextureIsRegisteredOnceWithItsColourSpaceAndWrap) {
   const auto image = test::write_file("maps/wood.png", "not read until rendering");
   const auto scene_file = test::write_file("s.yaml", "");
-  const std::string text = "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\nmaterials:\n"
-                           "  a: {color: {texture: maps/wood.png}}\n"
-                           "  b: {color: {texture: maps/wood.png, wrap: clamp, tint: [1, 0.5, 0.5]}}\n"
-                           "  c: {color: {texture: maps/wood.png, colorspace: linear}}\n"
-                           "world:\n  - {type: sphere, center: [0, 0, 0], radius: 1, material: a}\n";
+  const std::string text =
+      "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\nmaterials:\n"
+      "  a: {color: {texture: maps/wood.png}}\n"
+      "  b: {color: {texture: maps/wood.png, wrap: clamp, tint: [1, 0.5, 0.5]}}\n"
+      "  c: {color: {texture: maps/wood.png, colorspace: linear}}\n"
+      "world:\n  - {type: sphere, center: [0, 0, 0], radius: 1, material: a}\n";
   const RenderScene scene = build_render_scene(parse_scene_text(text, scene_file));
   ASSERT_EQ(scene.textures.size(), 2u);  // a and b share the file and colour space
   EXPECT_EQ(scene.textures[0].file, image);
@@ -58,7 +59,8 @@ TEST(ImageTexture, MissingSceneTextureIsRefusedAtItsKey) {
 // Kd, unlike a texture in rtpro's own scene file.
 TEST(ImageTexture, MissingMapKdIsAWarningAtItsMtlLineAndTheMaterialKeepsKd) {
   test::scratch_dir();  // empty: wood.png is written below
-  test::write_file("box.obj", "mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl wood\nf 1/1 2/2 3/3\n");
+  test::write_file("box.obj",
+                   "mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl wood\nf 1/1 2/2 3/3\n");
   const auto mtl = test::write_file("box.mtl", "newmtl wood\nKd 0.5 0.25 1\nmap_Kd wood.png\n");
   const auto scene_file = test::write_file("s.yaml", "");
   const std::string text =
@@ -71,7 +73,8 @@ TEST(ImageTexture, MissingMapKdIsAWarningAtItsMtlLineAndTheMaterialKeepsKd) {
   EXPECT_EQ(loaded.materials[0].color, Color(0.5f, 0.25f, 1.0f));
   bool warned = false;
   for (const std::string& w : loaded.stats.warnings)
-    warned |= w.find(mtl.string() + ":3: texture 'wood.png' not found; material 'wood' uses its Kd colour") != std::string::npos;
+    warned |= w.find(mtl.string() + ":3: texture 'wood.png' not found; material 'wood' uses its Kd colour") !=
+              std::string::npos;
   EXPECT_TRUE(warned);
   test::write_file("wood.png", "present");
   const RenderScene scene = build_render_scene(parse_scene_text(text, scene_file));

@@ -45,7 +45,7 @@ TEST(MaterialKinds, EachTypeReadsItsOwnKeys) {
   EXPECT_FLOAT_EQ(d.materials[3].conductor_k->y, 2.45f);
   EXPECT_EQ(d.materials[4].kind, MaterialKind::kDielectric);
   ASSERT_TRUE(d.materials[4].ior);
-  EXPECT_FLOAT_EQ(*d.materials[4].ior, 1.5f);  // a dielectric's default index
+  EXPECT_FLOAT_EQ(*d.materials[4].ior, 1.5f);                     // a dielectric's default index
   EXPECT_EQ(d.materials[5].emission, Color(34.0f, 24.0f, 8.0f));  // radiance: values above 1 are meant
   EXPECT_TRUE(d.materials[5].emission_two_sided);
   EXPECT_EQ(d.materials[6].kind, MaterialKind::kPhong);
@@ -100,8 +100,9 @@ TEST(MaterialKinds, AKeyOfAnotherKindIsAnErrorAtItsPosition) {
 }
 
 TEST(MaterialKinds, BadValuesAreErrors) {
-  EXPECT_NE(error_of("materials:\n  m: {type: metal}\n").find("must be phong, diffuse, conductor, dielectric or principled"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of("materials:\n  m: {type: metal}\n").find("must be phong, diffuse, conductor, dielectric or principled"),
+      std::string::npos);
   EXPECT_NE(error_of("materials:\n  m: {type: conductor, roughness: 1.5}\n").find("from 0 (smooth) to 1"),
             std::string::npos);
   EXPECT_NE(error_of("materials:\n  m: {type: conductor, eta: [1, 1, 1]}\n").find("needs both eta and k"),

@@ -26,8 +26,8 @@ TEST(TextEncoding, ByteOrderMarksAndNulPatternsAreRecognised) {
 TEST(QuotedWords, ControlBytesAreEscapedAndLongWordsCut) {
   EXPECT_EQ(ascii::quoted("usemtl"), "'usemtl'");
   EXPECT_EQ(ascii::quoted("a\0b\x1b"s), "'a\\x00b\\x1b'");
-  EXPECT_EQ(ascii::quoted("caf\xC3\xA9"), "'caf\xC3\xA9'");   // well-formed UTF-8 shown as it is
-  EXPECT_EQ(ascii::quoted("caf\xC3"), "'caf\\xc3'");          // a cut sequence is not
+  EXPECT_EQ(ascii::quoted("caf\xC3\xA9"), "'caf\xC3\xA9'");  // well-formed UTF-8 shown as it is
+  EXPECT_EQ(ascii::quoted("caf\xC3"), "'caf\\xc3'");         // a cut sequence is not
   EXPECT_EQ(ascii::quoted("back\\slash"), "'back\\x5cslash'");
   const std::string quoted = ascii::quoted(std::string(1000, 'x'));
   EXPECT_EQ(quoted, "'" + std::string(ascii::kMaxQuotedBytes, 'x') + "' (cut: 1000 bytes)");

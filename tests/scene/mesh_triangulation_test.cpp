@@ -33,7 +33,8 @@ double triangle_area(const std::vector<Vec3>& p, const LocalTriangle& t) {
 bool inside_polygon(const std::vector<Vec3>& p, double x, double y) {
   bool in = false;
   for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) {
-    if ((p[i].y > y) != (p[j].y > y) && x < (p[j].x - p[i].x) * (y - p[i].y) / (double(p[j].y) - p[i].y) + p[i].x) in = !in;
+    if ((p[i].y > y) != (p[j].y > y) && x < (p[j].x - p[i].x) * (y - p[i].y) / (double(p[j].y) - p[i].y) + p[i].x)
+      in = !in;
   }
   return in;
 }
@@ -41,7 +42,9 @@ bool inside_polygon(const std::vector<Vec3>& p, double x, double y) {
 bool covered(const std::vector<Vec3>& p, const std::vector<LocalTriangle>& triangles, double x, double y) {
   for (const LocalTriangle& t : triangles) {
     const Vec3 &a = p[t[0]], &b = p[t[1]], &c = p[t[2]];
-    const auto side = [&](const Vec3& u, const Vec3& v) { return (double(v.x) - u.x) * (y - u.y) - (double(v.y) - u.y) * (x - u.x); };
+    const auto side = [&](const Vec3& u, const Vec3& v) {
+      return (double(v.x) - u.x) * (y - u.y) - (double(v.y) - u.y) * (x - u.x);
+    };
     const double s0 = side(a, b), s1 = side(b, c), s2 = side(c, a);
     if ((s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0)) return true;
   }
@@ -76,7 +79,8 @@ TEST(PolygonTriangulation, ConcaveDartIsNotFanned) {
 // A square ring written as one keyhole polygon: the outer square counter-clockwise, a bridge to
 // the hole, the hole clockwise, back along the bridge.
 std::vector<Vec3> keyhole_ring(float z_tilt = 0.0f) {
-  const std::vector<std::array<float, 2>> xy = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}, {1, 1}, {1, 3}, {3, 3}, {3, 1}, {1, 1}};
+  const std::vector<std::array<float, 2>> xy = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0},
+                                                {1, 1}, {1, 3}, {3, 3}, {3, 1}, {1, 1}};
   std::vector<Vec3> p;
   for (const auto& [x, y] : xy) p.emplace_back(x, y, z_tilt * x);
   return p;
@@ -139,7 +143,8 @@ TEST(PolygonTriangulation, RandomSimplePolygonsKeepTheirAreaAndStayInside) {
       EXPECT_GT(a * polygon_area(p), 0.0) << "a triangle wound against the polygon";
       area += a;
       // Inside: the centroid of every triangle lies in the polygon.
-      const double cx = (double(p[t[0]].x) + p[t[1]].x + p[t[2]].x) / 3, cy = (double(p[t[0]].y) + p[t[1]].y + p[t[2]].y) / 3;
+      const double cx = (double(p[t[0]].x) + p[t[1]].x + p[t[2]].x) / 3,
+                   cy = (double(p[t[0]].y) + p[t[1]].y + p[t[2]].y) / 3;
       EXPECT_TRUE(inside_polygon(p, cx, cy));
     }
     EXPECT_NEAR(area, polygon_area(p), 1e-5);

@@ -48,7 +48,8 @@ TEST(ObjNormals, CubeWithoutSmoothingGroupIsFlatWithExactFaceNormals) {
   for (std::uint32_t t = 0; t < 12; ++t) {
     const Vec3 n = face_normal(loaded.mesh, t);
     EXPECT_TRUE(is_axis(n)) << t;
-    const Vec3 centre = (loaded.mesh.vertex(loaded.mesh.triangles[t].v0) + loaded.mesh.vertex(loaded.mesh.triangles[t].v2)) * 0.5f;
+    const Vec3 centre =
+        (loaded.mesh.vertex(loaded.mesh.triangles[t].v0) + loaded.mesh.vertex(loaded.mesh.triangles[t].v2)) * 0.5f;
     EXPECT_GT(dot(n, centre - Vec3(0.5f, 0.5f, 0.5f)), 0.0f) << t;
   }
 }
@@ -67,14 +68,16 @@ TEST(ObjNormals, SmoothingGroupOneRoundsTheCubeAndFlatOverrideUndoesIt) {
 
   const LoadedMesh flat = load_mesh_file(write_file("smooth.obj", smooth_cube), {NormalsMode::kFlat});
   EXPECT_TRUE(flat.mesh.normals.empty());
-  const LoadedMesh forced = load_mesh_file(write_file("flat.obj", std::string(kCubePositions) + kCubeFaces), {NormalsMode::kSmooth});
+  const LoadedMesh forced =
+      load_mesh_file(write_file("flat.obj", std::string(kCubePositions) + kCubeFaces), {NormalsMode::kSmooth});
   EXPECT_EQ(forced.mesh.normals, smooth.mesh.normals);
 }
 
 TEST(ObjNormals, SmoothingGroupsSmoothWithinAndSplitBetween) {
   // Top and front in group 1 share the edge y = 1, z = 1 smoothly; the side in group 2 meets
   // them at a crease; the bottom (s off) is flat.
-  const std::string text = std::string(kCubePositions) + "s 1\nf 5 6 7 8\nf 3 4 8 7\ns 2\nf 2 3 7 6\ns off\nf 1 4 3 2\n";
+  const std::string text =
+      std::string(kCubePositions) + "s 1\nf 5 6 7 8\nf 3 4 8 7\ns 2\nf 2 3 7 6\ns off\nf 1 4 3 2\n";
   const LoadedMesh loaded = load_mesh_file(write_file("groups.obj", text));
   const TriangleMesh& mesh = loaded.mesh;
   ASSERT_EQ(mesh.triangles.size(), 8u);
@@ -110,8 +113,8 @@ TEST(ObjNormals, SmoothingGroupsSmoothWithinAndSplitBetween) {
 TEST(ObjNormals, FileModeNeedsTheFilesNormals) {
   const auto file = write_file("none.obj", std::string(kCubePositions) + kCubeFaces);
   EXPECT_THROW(load_mesh_file(file, {NormalsMode::kFile}), InputError);
-  const LoadedMesh with = load_mesh_file(write_file("with.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 3\nf 1//1 2//1 3//1\n"),
-                                         {NormalsMode::kFile});
+  const LoadedMesh with = load_mesh_file(
+      write_file("with.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 3\nf 1//1 2//1 3//1\n"), {NormalsMode::kFile});
   EXPECT_EQ(with.mesh.normals, (std::vector<Vec3>(3, Vec3(0, 0, 1))));
 }
 
@@ -144,7 +147,8 @@ f 2/4 4/2 3/5
 }
 
 TEST(ObjAttributes, VertexColoursAreKeptLinear) {
-  const LoadedMesh loaded = load_mesh_file(write_file("colours.obj", "v 0 0 0 1 0 0\nv 1 0 0 0 0.5 0\nv 0 1 0 0 0 1\nf 1 2 3\n"));
+  const LoadedMesh loaded =
+      load_mesh_file(write_file("colours.obj", "v 0 0 0 1 0 0\nv 1 0 0 0 0.5 0\nv 0 1 0 0 0 1\nf 1 2 3\n"));
   ASSERT_EQ(loaded.mesh.colors.size(), 3u);
   EXPECT_EQ(loaded.mesh.colors[0], Color(1, 0, 0));
   EXPECT_NEAR(loaded.mesh.colors[1].y, 0.214f, 1e-3f);  // sRGB 0.5 decoded
@@ -168,7 +172,8 @@ f 1 2 3 4 1 5 6 7 8 5
   double area = 0;
   for (std::uint32_t t = 0; t < loaded.mesh.triangles.size(); ++t) {
     const TriangleIndices& tri = loaded.mesh.triangles[t];
-    area += 0.5 * length(cross(loaded.mesh.vertex(tri.v1) - loaded.mesh.vertex(tri.v0), loaded.mesh.vertex(tri.v2) - loaded.mesh.vertex(tri.v0)));
+    area += 0.5 * length(cross(loaded.mesh.vertex(tri.v1) - loaded.mesh.vertex(tri.v0),
+                               loaded.mesh.vertex(tri.v2) - loaded.mesh.vertex(tri.v0)));
     const Vec3 centre = (loaded.mesh.vertex(tri.v0) + loaded.mesh.vertex(tri.v1) + loaded.mesh.vertex(tri.v2)) / 3.0f;
     EXPECT_FALSE(centre.x > 1 && centre.x < 3 && centre.y > 1 && centre.y < 3) << "a triangle in the hole";
   }

@@ -54,8 +54,9 @@ TEST(MtlMapping, NsZeroWithStrongKsGivesNoHighlightInsteadOfAWhiteDisc) {
 
 TEST(MtlMapping, DissolveTransparencyAndDiffuseTextureAreKept) {
   write_file("tex/maps/wood.png", "present");
-  const std::filesystem::path file = write_file("tex/lib.mtl", "newmtl a\nd 0.25\nmap_Kd -s 1 1 1 maps/wood.png\n"
-                                                                "newmtl b\nTr 0.75\nmap_Kd /etc/secret.png\n");
+  const std::filesystem::path file = write_file("tex/lib.mtl",
+                                                "newmtl a\nd 0.25\nmap_Kd -s 1 1 1 maps/wood.png\n"
+                                                "newmtl b\nTr 0.75\nmap_Kd /etc/secret.png\n");
   const MaterialLibrary library = parse_mtl_file(file);
   ASSERT_EQ(library.materials.size(), 2u);
   EXPECT_FLOAT_EQ(library.materials[0].opacity, 0.25f);
@@ -94,14 +95,15 @@ TEST(MtlMapping, ATextureThroughASymbolicLinkOutsideTheFolderIsRefusedAtItsLine)
   } catch (const InputError& e) {
     EXPECT_EQ(e.where().file, file.string());
     EXPECT_EQ(e.where().line, 3);
-    EXPECT_NE(e.message().find("texture 'link.png' leads outside the material library's folder"), std::string::npos) << e.message();
+    EXPECT_NE(e.message().find("texture 'link.png' leads outside the material library's folder"), std::string::npos)
+        << e.message();
   }
 }
 
 TEST(ObjLenience, BareUsemtlAndNewmtlMeanTheDefaultMaterial) {
   write_file("blender.mtl", "newmtl \nKd 0.1 0.1 0.1\nnewmtl red\nKd 1 0 0\n");
-  const LoadedMesh loaded = load_mesh_file(write_file("blender.obj", std::string("mtllib blender.mtl\n") + kTriangle +
-                                                                         "usemtl red\nf 1 2 3\nusemtl \nf 1 3 2\n"));
+  const LoadedMesh loaded = load_mesh_file(write_file(
+      "blender.obj", std::string("mtllib blender.mtl\n") + kTriangle + "usemtl red\nf 1 2 3\nusemtl \nf 1 3 2\n"));
   ASSERT_EQ(loaded.materials.size(), 2u);
   EXPECT_EQ(loaded.materials[0].name, "red");
   EXPECT_EQ(loaded.materials[1].name, "default");
@@ -126,9 +128,12 @@ TEST(ObjLenience, Utf16FilesAreRefusedWithoutPrintingNulBytes) {
     big_endian += '\0';
     big_endian += c;
   }
-  EXPECT_NE(mesh_load_error(write_file("wide_be.obj", big_endian)).message().find("UTF-16 (big-endian)"), std::string::npos);
+  EXPECT_NE(mesh_load_error(write_file("wide_be.obj", big_endian)).message().find("UTF-16 (big-endian)"),
+            std::string::npos);
   // A UTF-8 byte order mark is skipped, not read as part of the first keyword.
-  EXPECT_EQ(load_mesh_file(write_file("bom.obj", "\xEF\xBB\xBF" + std::string(kTriangle) + "f 1 2 3\n")).mesh.triangles.size(), 1u);
+  EXPECT_EQ(load_mesh_file(write_file("bom.obj", "\xEF\xBB\xBF" + std::string(kTriangle) + "f 1 2 3\n"))
+                .mesh.triangles.size(),
+            1u);
 }
 
 TEST(ObjHardening, ManyDistinctUnknownKeywordsGiveAFewWarningLines) {
@@ -145,7 +150,8 @@ TEST(ObjHardening, ManyDistinctUnknownKeywordsGiveAFewWarningLines) {
 
 TEST(ObjHardening, HugeOrBinaryTokensAreCutAndEscapedInMessages) {
   const std::string token(10'000'000, 'x');
-  const LoadedMesh loaded = load_mesh_file(write_file("token.obj", std::string(kTriangle) + token + "\n\x01\x1b[31m 2\nf 1 2 3\n"));
+  const LoadedMesh loaded =
+      load_mesh_file(write_file("token.obj", std::string(kTriangle) + token + "\n\x01\x1b[31m 2\nf 1 2 3\n"));
   ASSERT_EQ(loaded.stats.warnings.size(), 2u);
   EXPECT_EQ(loaded.stats.warnings[0].find(std::string(ascii::kMaxQuotedBytes + 1, 'x')), std::string::npos);
   EXPECT_NE(loaded.stats.warnings[0].find("(cut: 10000000 bytes)"), std::string::npos);
@@ -157,12 +163,15 @@ TEST(ObjHardening, HugeOrBinaryTokensAreCutAndEscapedInMessages) {
 TEST(ObjHardening, MaterialLibraryBehindASymlinkMustStayInsideTheFolder) {
   const std::filesystem::path outside = write_file("outside/secret.mtl", "newmtl s\nKd 1 0 0\n");
   const std::filesystem::path model = write_file("model/keep", "").parent_path();
-  for (const char* link : {"linked.mtl", "linked_dir", "inside.mtl"}) std::filesystem::remove(model / link);  // from an earlier run
+  for (const char* link : {"linked.mtl", "linked_dir", "inside.mtl"})
+    std::filesystem::remove(model / link);  // from an earlier run
   std::filesystem::create_symlink(outside, model / "linked.mtl");
   std::filesystem::create_directory_symlink(outside.parent_path(), model / "linked_dir");
-  const InputError file_link = mesh_load_error(write_file("model/a.obj", std::string("mtllib linked.mtl\n") + kTriangle));
+  const InputError file_link =
+      mesh_load_error(write_file("model/a.obj", std::string("mtllib linked.mtl\n") + kTriangle));
   EXPECT_NE(file_link.message().find("outside the OBJ's folder"), std::string::npos) << file_link.message();
-  const InputError dir_link = mesh_load_error(write_file("model/b.obj", std::string("mtllib linked_dir/secret.mtl\n") + kTriangle));
+  const InputError dir_link =
+      mesh_load_error(write_file("model/b.obj", std::string("mtllib linked_dir/secret.mtl\n") + kTriangle));
   EXPECT_NE(dir_link.message().find("outside the OBJ's folder"), std::string::npos) << dir_link.message();
   // A link that stays inside is fine.
   write_file("model/real.mtl", "newmtl r\n");

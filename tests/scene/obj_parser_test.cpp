@@ -192,16 +192,18 @@ TEST(ObjLoader, NormalsMissingOnSomeCornersAreSetAsideWithAWarning) {
 }
 
 TEST(ObjLoader, DegenerateTrianglesAreDroppedAndCounted) {
-  const LoadedMesh loaded = load_mesh_file(write_file("degenerate.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
-                                                                        "f 1 1 2\nf 1 2 2 3\nf 1 2 3\n"));
+  const LoadedMesh loaded = load_mesh_file(write_file("degenerate.obj",
+                                                      "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                                      "f 1 1 2\nf 1 2 2 3\nf 1 2 3\n"));
   EXPECT_EQ(loaded.stats.faces, 3u);
   EXPECT_EQ(loaded.mesh.triangles.size(), 2u);
   EXPECT_EQ(loaded.stats.dropped_degenerate, 2u);
 }
 
 TEST(ObjLoader, MaterialsComeFromTheLibraryPerTriangle) {
-  write_file("two.mtl", "# colours\nnewmtl red\nKd 1 0 0\nKs 0.3 0.6 0.9\nNs 50\nillum 2\n"
-                        "newmtl grey\nKd 0.25\nKa 0 0 0\n");
+  write_file("two.mtl",
+             "# colours\nnewmtl red\nKd 1 0 0\nKs 0.3 0.6 0.9\nNs 50\nillum 2\n"
+             "newmtl grey\nKd 0.25\nKa 0 0 0\n");
   const LoadedMesh loaded = load_mesh_file(write_file("two.obj", R"(mtllib two.mtl
 v 0 0 0
 v 1 0 0
@@ -231,8 +233,9 @@ f 1 4 3
 
 TEST(ObjLoader, OneMaterialNeedsNoPerTriangleList) {
   write_file("one.mtl", "newmtl blue\nKd 0 0 1\n");
-  const LoadedMesh loaded = load_mesh_file(write_file("one.obj", "mtllib one.mtl\nusemtl blue\n"
-                                                                 "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  const LoadedMesh loaded = load_mesh_file(write_file("one.obj",
+                                                      "mtllib one.mtl\nusemtl blue\n"
+                                                      "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
   ASSERT_EQ(loaded.materials.size(), 1u);
   EXPECT_EQ(loaded.materials[0].color, Color(0, 0, 1));
   EXPECT_EQ(loaded.mesh.material, 0u);
@@ -241,16 +244,18 @@ TEST(ObjLoader, OneMaterialNeedsNoPerTriangleList) {
 
 TEST(ObjLoader, FacesBeforeAnyUsemtlShareADefaultMaterial) {
   write_file("one.mtl", "newmtl blue\nKd 0 0 1\n");
-  const LoadedMesh loaded = load_mesh_file(write_file("mixed.obj", "mtllib one.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
-                                                                   "f 1 2 3\nusemtl blue\nf 1 3 2\n"));
+  const LoadedMesh loaded = load_mesh_file(write_file("mixed.obj",
+                                                      "mtllib one.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                                      "f 1 2 3\nusemtl blue\nf 1 3 2\n"));
   ASSERT_EQ(loaded.materials.size(), 2u);
   EXPECT_EQ(loaded.materials[0].name, "default");
   EXPECT_EQ(loaded.mesh.triangle_materials, (std::vector<std::uint32_t>{0, 1}));
 }
 
 TEST(ObjLoader, MissingMaterialLibraryIsAWarningAndMaterialsFallBack) {
-  const LoadedMesh loaded = load_mesh_file(write_file("nolib.obj", "mtllib absent.mtl\nusemtl shiny\n"
-                                                                   "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  const LoadedMesh loaded = load_mesh_file(write_file("nolib.obj",
+                                                      "mtllib absent.mtl\nusemtl shiny\n"
+                                                      "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
   EXPECT_TRUE(has_warning_containing(loaded.stats, "nolib.obj:1: material library 'absent.mtl' not found"));
   EXPECT_TRUE(has_warning_containing(loaded.stats, "nolib.obj:2: material 'shiny' is not defined"));
   ASSERT_EQ(loaded.materials.size(), 1u);
@@ -277,8 +282,9 @@ TEST(ObjLoader, MalformedMaterialLibraryNamesItsOwnLine) {
   const InputError e = mesh_load_error(write_file("uses_bad.obj", "mtllib bad.mtl\n"));
   EXPECT_NE(std::string(e.what()).find("bad.mtl:2:6"), std::string::npos) << e.what();
   write_file("early.mtl", "Kd 1 1 1\n");
-  EXPECT_NE(std::string(mesh_load_error(write_file("uses_early.obj", "mtllib early.mtl\n")).what()).find("before any newmtl"),
-            std::string::npos);
+  EXPECT_NE(
+      std::string(mesh_load_error(write_file("uses_early.obj", "mtllib early.mtl\n")).what()).find("before any newmtl"),
+      std::string::npos);
 }
 
 // Two triangles sharing the edge (1,0,0)-(0,1,0), folded along it.
@@ -303,7 +309,8 @@ TEST(ObjLoader, OneSmoothingGroupSharesAndAveragesNormalsAlongTheEdge) {
 }
 
 TEST(ObjLoader, FlatFacesKeepTheirFaceNormals) {
-  const LoadedMesh loaded = load_mesh_file(write_file("flat.obj", std::string(kFold) + "s 1\nf 1 2 3\ns off\nf 2 4 3\n"));
+  const LoadedMesh loaded =
+      load_mesh_file(write_file("flat.obj", std::string(kFold) + "s 1\nf 1 2 3\ns off\nf 2 4 3\n"));
   EXPECT_EQ(loaded.mesh.vertices.size(), 6u);
   expect_unit_normals(loaded.mesh);
   EXPECT_EQ(normal_of_vertex_at(loaded.mesh, 0, 1), Vec3(0, 0, 1));
@@ -314,7 +321,8 @@ TEST(ObjLoader, FlatFacesKeepTheirFaceNormals) {
 }
 
 TEST(ObjLoader, DifferentSmoothingGroupsDoNotShareVertices) {
-  const LoadedMesh loaded = load_mesh_file(write_file("groups.obj", std::string(kFold) + "s 1\nf 1 2 3\ns 2\nf 2 4 3\n"));
+  const LoadedMesh loaded =
+      load_mesh_file(write_file("groups.obj", std::string(kFold) + "s 1\nf 1 2 3\ns 2\nf 2 4 3\n"));
   EXPECT_EQ(loaded.mesh.vertices.size(), 6u);
   EXPECT_EQ(normal_of_vertex_at(loaded.mesh, 0, 1), Vec3(0, 0, 1));
 }
@@ -337,8 +345,9 @@ TEST(ObjLoader, HugeAndTinyTrianglesStillGetUnitNormals) {
 }
 
 TEST(ObjLoader, UnknownStatementsWarnOncePerKeyword) {
-  const LoadedMesh loaded = load_mesh_file(write_file("unknown.obj", "o thing\ng part\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
-                                                                     "l 1 2\nl 2 3\ncstype bspline\nf 1 2 3\n"));
+  const LoadedMesh loaded = load_mesh_file(write_file("unknown.obj",
+                                                      "o thing\ng part\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                                      "l 1 2\nl 2 3\ncstype bspline\nf 1 2 3\n"));
   ASSERT_EQ(loaded.stats.warnings.size(), 2u);
   EXPECT_NE(loaded.stats.warnings[0].find("unknown.obj:6: ignored 'l' statements (2 in total)"), std::string::npos);
   EXPECT_NE(loaded.stats.warnings[1].find(":8: ignored 'cstype' statements (1 in total)"), std::string::npos);
@@ -364,8 +373,11 @@ std::string varied_obj(int rows) {
     for (int x = 0; x < rows; ++x) {
       const int i = y * row + x + 1;
       if (x % 4 == 0) obj << "f " << i << ' ' << i + 1 << ' ' << i + row + 1 << ' ' << i + row << "\n";
-      else if (x % 4 == 1) obj << "f " << i << ' ' << i + 1 << ' ' << i + row << "\nf " << i + 1 << ' ' << i + row + 1 << ' ' << i + row << "\n";
-      else if (x % 4 == 2) obj << "f " << i - (row * (rows + 1) + 1) << " " << i + 1 << ' ' << i + row << "\n";  // relative
+      else if (x % 4 == 1)
+        obj << "f " << i << ' ' << i + 1 << ' ' << i + row << "\nf " << i + 1 << ' ' << i + row + 1 << ' ' << i + row
+            << "\n";
+      else if (x % 4 == 2)
+        obj << "f " << i - (row * (rows + 1) + 1) << " " << i + 1 << ' ' << i + row << "\n";  // relative
       else obj << "f " << i << ' ' << i << ' ' << i + row << "\nl 1 2\n";  // degenerate, then an ignored line
     }
   }

@@ -39,7 +39,9 @@ void put(std::string& out, T value, Encoding encoding) {
 }
 
 std::string sample_ply(Encoding encoding, const std::string& coordinate_type = "float") {
-  const char* format = encoding == Encoding::kAscii ? "ascii" : encoding == Encoding::kLittleEndian ? "binary_little_endian" : "binary_big_endian";
+  const char* format = encoding == Encoding::kAscii          ? "ascii"
+                       : encoding == Encoding::kLittleEndian ? "binary_little_endian"
+                                                             : "binary_big_endian";
   std::string ply = std::string("ply\nformat ") + format + " 1.0\ncomment made by a test\n" +
                     "element vertex 5\nproperty " + coordinate_type + " x\nproperty " + coordinate_type + " y\n" +
                     "property " + coordinate_type + " z\nproperty uchar red\n" +
@@ -47,7 +49,8 @@ std::string sample_ply(Encoding encoding, const std::string& coordinate_type = "
                     "element extra 1\nproperty list uchar float weights\nend_header\n";
   for (const Vertex& v : kVertices) {
     if (encoding == Encoding::kAscii) {
-      ply += std::to_string(v.x) + " " + std::to_string(v.y) + " " + std::to_string(v.z) + " " + std::to_string(v.red) + "\n";
+      ply += std::to_string(v.x) + " " + std::to_string(v.y) + " " + std::to_string(v.z) + " " + std::to_string(v.red) +
+             "\n";
     } else if (coordinate_type == "double") {
       for (float c : {v.x, v.y, v.z}) put<double>(ply, c, encoding);
       put<unsigned char>(ply, v.red, encoding);
@@ -79,7 +82,8 @@ std::string sample_ply(Encoding encoding, const std::string& coordinate_type = "
 
 void expect_same_mesh(const TriangleMesh& a, const TriangleMesh& b) {
   ASSERT_EQ(a.vertices.size(), b.vertices.size());
-  for (std::size_t i = 0; i < a.vertices.size(); ++i) EXPECT_EQ(a.vertices[i].position(), b.vertices[i].position()) << i;
+  for (std::size_t i = 0; i < a.vertices.size(); ++i)
+    EXPECT_EQ(a.vertices[i].position(), b.vertices[i].position()) << i;
   ASSERT_EQ(a.triangles.size(), b.triangles.size());
   for (std::size_t i = 0; i < a.triangles.size(); ++i) {
     EXPECT_EQ(a.triangles[i].v0, b.triangles[i].v0);
@@ -109,32 +113,37 @@ TEST(PlyLoader, AsciiAndBothBinaryEncodingsGiveIdenticalMeshes) {
 
 TEST(PlyLoader, ReadsTheSameMeshAsTheEquivalentObj) {
   const LoadedMesh ply = load_mesh_file(write_file("same.ply", sample_ply(Encoding::kAscii)));
-  const LoadedMesh obj = load_mesh_file(write_file("same.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0.5\nv 0 1 0\nv 2 0.25 -1\n"
-                                                               "f 1 2 3 4\nf 2 5 3\n"));
+  const LoadedMesh obj = load_mesh_file(write_file("same.obj",
+                                                   "v 0 0 0\nv 1 0 0\nv 1 1 0.5\nv 0 1 0\nv 2 0.25 -1\n"
+                                                   "f 1 2 3 4\nf 2 5 3\n"));
   expect_same_mesh(ply.mesh, obj.mesh);
 }
 
 TEST(PlyLoader, FileNormalsAreNormalised) {
-  const LoadedMesh loaded = load_mesh_file(write_file("normals.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"
-                                                                     "property float x\nproperty float y\nproperty float z\n"
-                                                                     "property float nx\nproperty float ny\nproperty float nz\n"
-                                                                     "element face 1\nproperty list uchar uint vertex_indices\nend_header\n"
-                                                                     "0 0 0 0 0 2\n1 0 0 0 3 0\n0 1 0 4 0 0\n3 0 1 2\n"));
+  const LoadedMesh loaded =
+      load_mesh_file(write_file("normals.ply",
+                                "ply\nformat ascii 1.0\nelement vertex 3\n"
+                                "property float x\nproperty float y\nproperty float z\n"
+                                "property float nx\nproperty float ny\nproperty float nz\n"
+                                "element face 1\nproperty list uchar uint vertex_indices\nend_header\n"
+                                "0 0 0 0 0 2\n1 0 0 0 3 0\n0 1 0 4 0 0\n3 0 1 2\n"));
   EXPECT_FALSE(loaded.stats.normals_generated);
   EXPECT_EQ(loaded.mesh.normals, (std::vector<Vec3>{{0, 0, 1}, {0, 1, 0}, {1, 0, 0}}));
 }
 
 TEST(PlyLoader, HugeDeclaredCountsInATinyFileAreRejectedBeforeAllocating) {
-  std::string header = "ply\nformat binary_little_endian 1.0\nelement vertex 1099511627776\n"
-                       "property float x\nproperty float y\nproperty float z\n"
-                       "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  std::string header =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 1099511627776\n"
+      "property float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
   header.resize(200, '\0');
   const InputError e = mesh_load_error(write_file("huge.ply", header));
   EXPECT_EQ(e.where().line, 3);
   EXPECT_NE(e.message().find("declares 1099511627776"), std::string::npos) << e.message();
 
-  std::string ascii = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                      "element face 18446744073709551615\nproperty list uchar int vertex_indices\nend_header\n";
+  std::string ascii =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 18446744073709551615\nproperty list uchar int vertex_indices\nend_header\n";
   EXPECT_THROW(load_mesh_file(write_file("huge_ascii.ply", ascii + "0 0 0\n")), InputError);
 }
 
@@ -152,13 +161,15 @@ TEST(PlyLoader, NonFiniteBinaryCoordinateIsAnError) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   std::memcpy(&ply[body + 13 + 4], &nan, sizeof nan);  // vertex 1, y
   const InputError e = mesh_load_error(write_file("nan.ply", ply));
-  EXPECT_NE(e.message().find("not a finite number (at byte offset " + std::to_string(body + 17) + ")"), std::string::npos)
+  EXPECT_NE(e.message().find("not a finite number (at byte offset " + std::to_string(body + 17) + ")"),
+            std::string::npos)
       << e.message();
 }
 
 std::string ascii_ply(const std::string& body) {
   return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-         "element face 1\nproperty list uchar int vertex_indices\nend_header\n" + body;
+         "element face 1\nproperty list uchar int vertex_indices\nend_header\n" +
+         body;
 }
 
 TEST(PlyLoader, AsciiErrorsNameLineAndColumn) {
@@ -188,16 +199,19 @@ TEST(PlyLoader, AsciiErrorsNameLineAndColumn) {
 
 TEST(PlyLoader, MalformedHeadersAreErrors) {
   EXPECT_NE(mesh_load_error(write_file("a.ply", "solid\n")).message().find("not a PLY file"), std::string::npos);
-  EXPECT_NE(mesh_load_error(write_file("b.ply", "ply\nformat ascii 1.0\nelement vertex 0\n")).message().find("no end_header"),
-            std::string::npos);
-  EXPECT_NE(mesh_load_error(write_file("c.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n"))
-                .message()
-                .find("unknown property type 'quad'"),
-            std::string::npos);
-  EXPECT_NE(mesh_load_error(write_file("d.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n1\n"))
-                .message()
-                .find("needs properties x, y and z"),
-            std::string::npos);
+  EXPECT_NE(
+      mesh_load_error(write_file("b.ply", "ply\nformat ascii 1.0\nelement vertex 0\n")).message().find("no end_header"),
+      std::string::npos);
+  EXPECT_NE(
+      mesh_load_error(write_file("c.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n"))
+          .message()
+          .find("unknown property type 'quad'"),
+      std::string::npos);
+  EXPECT_NE(
+      mesh_load_error(write_file("d.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n1\n"))
+          .message()
+          .find("needs properties x, y and z"),
+      std::string::npos);
   const InputError e = mesh_load_error(write_file("e.ply", "ply\nformat ascii 1.0\nelement vertex -1\nend_header\n"));
   EXPECT_EQ(e.where().line, 3);
 }
@@ -211,22 +225,25 @@ TEST(PlyLoader, DegenerateFacesAreDroppedAndCounted) {
 
 TEST(PlyLoader, UnknownHeaderLinesAreOneWarning) {
   // Blender 2.47 wrote its credit line into the header without `comment`.
-  const std::string ply = "ply\nformat ascii 1.0\nCreated by Blender3D 247 - www.blender.org\nsome other line\n"
-                          "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                          "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const std::string ply =
+      "ply\nformat ascii 1.0\nCreated by Blender3D 247 - www.blender.org\nsome other line\n"
+      "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   const LoadedMesh loaded = load_mesh_file(write_file("blender.ply", ply));
   EXPECT_EQ(loaded.mesh.triangles.size(), 1u);
   ASSERT_EQ(loaded.stats.warnings.size(), 1u);
-  EXPECT_NE(loaded.stats.warnings[0].find("blender.ply:3: ignored 2 unknown header line(s), the first starting 'Created'"),
-            std::string::npos)
+  EXPECT_NE(
+      loaded.stats.warnings[0].find("blender.ply:3: ignored 2 unknown header line(s), the first starting 'Created'"),
+      std::string::npos)
       << loaded.stats.warnings[0];
 }
 
 TEST(PlyLoader, TextureCoordinatesAndColoursAreKept) {
-  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                          "property float s\nproperty float t\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
-                          "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
-                          "0 0 0 0 0 255 0 0\n1 0 0 1 0 0 255 0\n0 1 0 0 1 0 0 0\n3 0 1 2\n";
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "property float s\nproperty float t\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0 0 0 255 0 0\n1 0 0 1 0 0 255 0\n0 1 0 0 1 0 0 0\n3 0 1 2\n";
   const LoadedMesh loaded = load_mesh_file(write_file("attributes.ply", ply));
   ASSERT_EQ(loaded.mesh.uvs.size(), 3u);
   EXPECT_EQ(loaded.mesh.uvs[1].u, 1.0f);
@@ -239,8 +256,10 @@ TEST(PlyLoader, TextureCoordinatesAndColoursAreKept) {
 
 TEST(PlyLoader, NormalsModes) {
   const std::string body = "0 0 0\n1 0 0\n0 1 0\n1 1 1\n4 0 1 3 2\n";
-  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
-                          "element face 1\nproperty list uchar int vertex_indices\nend_header\n" + body;
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n" +
+      body;
   const auto file = write_file("modes.ply", ply);
   EXPECT_TRUE(load_mesh_file(file).mesh.normals.empty());
   const LoadedMesh smooth = load_mesh_file(file, {NormalsMode::kSmooth});

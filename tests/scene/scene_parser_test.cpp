@@ -308,11 +308,12 @@ TEST(SceneParser, RejectsFovOutsideZeroTo180) {
 }
 
 TEST(SceneParser, ReadsAThinLensAndRejectsBadOnes) {
-  const SceneDescription lens =
-      parse_scene_text(camera_scene("{position: [0, 0, -5], look_at: [0, 0, 0], aperture: 0.25, focus_distance: 3}"), "l.yaml");
+  const SceneDescription lens = parse_scene_text(
+      camera_scene("{position: [0, 0, -5], look_at: [0, 0, 0], aperture: 0.25, focus_distance: 3}"), "l.yaml");
   EXPECT_EQ(lens.camera.aperture, 0.25f);
   EXPECT_EQ(lens.camera.focus_distance, 3.0f);
-  EXPECT_EQ(parse_scene_text(camera_scene("{position: [0, 0, -5], look_at: [0, 0, 0]}"), "p.yaml").camera.aperture, 0.0f);
+  EXPECT_EQ(parse_scene_text(camera_scene("{position: [0, 0, -5], look_at: [0, 0, 0]}"), "p.yaml").camera.aperture,
+            0.0f);
   for (const std::string aperture : {"-0.1", ".NaN", ".inf"}) {
     const std::string text = camera_scene("{position: [0, 0, -5], look_at: [0, 0, 0], aperture: " + aperture + "}");
     EXPECT_SCENE_ERROR(text, at(text, 2, aperture + "}"), {"camera.aperture"});
@@ -331,7 +332,8 @@ TEST(SceneParser, ReadsACheckerColourAndRejectsBadOnes) {
   EXPECT_EQ(scene.materials[1].checker->size, 0.5f);
   EXPECT_EQ(scene.materials[1].checker->odd, (Color{0, 0, 0.5f}));
   EXPECT_EQ(scene.materials[1].checker->axes, CheckerAxes::kXYZ);
-  const SceneDescription defaults = parse_scene_text(kHeader + "materials:\n  floor: {color: {checker: {}}}\n", "d.yaml");
+  const SceneDescription defaults =
+      parse_scene_text(kHeader + "materials:\n  floor: {color: {checker: {}}}\n", "d.yaml");
   EXPECT_EQ(defaults.materials[1].checker->axes, CheckerAxes::kXZ);
   const std::string size = kHeader + "materials:\n  floor: {color: {checker: {size: 0}}}\n";
   EXPECT_SCENE_ERROR(size, at(size, 4, "0}"), {"checker.size", "positive"});

@@ -66,7 +66,8 @@ TEST(YamlDocument, OutlivesTheTextItWasParsedFrom) {
 }
 
 TEST(YamlDocument, AliasesAreTheAnchoredNodeItself) {
-  const YamlDocument document = YamlDocument::parse("a: &shared {x: [1, 2]}\nb: *shared\nc: [*shared, *shared]\n", "s.yaml");
+  const YamlDocument document =
+      YamlDocument::parse("a: &shared {x: [1, 2]}\nb: *shared\nc: [*shared, *shared]\n", "s.yaml");
   const YamlNode& root = document.root();
   const YamlNode* anchored = &value_of(root, "a");
   EXPECT_EQ(&value_of(root, "b"), anchored);
@@ -106,7 +107,8 @@ TEST(YamlDocument, OverrideValuesOutliveTheOverrideText) {
 
 TEST(YamlDocument, IncludedNodesOutliveTheIncludedText) {
   const auto read = [](const std::filesystem::path& file) {
-    if (file.filename() == "materials.yaml") return std::string("red: {color: [1, 0, 0]}\nname: from_the_included_file\n");
+    if (file.filename() == "materials.yaml")
+      return std::string("red: {color: [1, 0, 0]}\nname: from_the_included_file\n");
     throw InputError(SourceLocation{file.string()}, "no such file");
   };
   const YamlDocument document = YamlDocument::parse("materials: {include: materials.yaml, blue: {color: [0, 0, 1]}}\n",
@@ -122,7 +124,8 @@ TEST(YamlDocument, IncludedNodesOutliveTheIncludedText) {
 }
 
 TEST(YamlDocument, VariablesAreSubstitutedIntoNewNodesAndRemoved) {
-  YamlDocument document = YamlDocument::parse("variables: {n: 16, who: world}\nspp: $n\ngreeting: hello ${who}\n", "s.yaml");
+  YamlDocument document =
+      YamlDocument::parse("variables: {n: 16, who: world}\nspp: $n\ngreeting: hello ${who}\n", "s.yaml");
   document.apply_override("variables.who=everyone");
   document.resolve_variables();
   const YamlNode& root = document.root();

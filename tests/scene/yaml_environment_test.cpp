@@ -43,10 +43,10 @@ TEST(YamlEnvironment, AbsentMeansNone) {
 }
 
 TEST(YamlEnvironment, ReadsAnImageWithItsSettings) {
-  const SceneDescription d = parse_scene_text(
-      kHeader + "environment: {file: " + sunset() +
-          ", color: [1, 0.5, 0.25], intensity: 2, rotation: [0, 90, 0], visible: false}\n",
-      "test.yaml");
+  const SceneDescription d =
+      parse_scene_text(kHeader + "environment: {file: " + sunset() +
+                           ", color: [1, 0.5, 0.25], intensity: 2, rotation: [0, 90, 0], visible: false}\n",
+                       "test.yaml");
   ASSERT_TRUE(d.environment);
   EXPECT_EQ(d.environment->file, sunset());
   EXPECT_EQ(d.environment->file_where.line, 3);
@@ -60,7 +60,8 @@ TEST(YamlEnvironment, ReadsAnImageWithItsSettings) {
 }
 
 TEST(YamlEnvironment, AColourAloneIsAConstantEnvironment) {
-  const RenderScene scene = build_render_scene(parse_scene_text(kHeader + "environment: {color: [0.2, 0.3, 0.4]}\n", "test.yaml"));
+  const RenderScene scene =
+      build_render_scene(parse_scene_text(kHeader + "environment: {color: [0.2, 0.3, 0.4]}\n", "test.yaml"));
   ASSERT_TRUE(scene.environment);
   EXPECT_TRUE(scene.environment->file.empty());
   EXPECT_EQ(scene.environment->scale, Color(0.2f, 0.3f, 0.4f));

@@ -31,7 +31,8 @@ const std::string kHead =
 SceneDescription parse(const std::string& world) { return parse_scene_text(kHead + world, "link.yaml"); }
 
 // The error `world` gets: on `line` at the first `token` of the line, saying each fragment.
-void expect_error(const std::string& world, int line, const std::string& token, const std::vector<std::string>& fragments) {
+void expect_error(const std::string& world, int line, const std::string& token,
+                  const std::vector<std::string>& fragments) {
   SCOPED_TRACE(world);
   const std::string text = kHead + world;
   std::size_t start = 0;
@@ -53,7 +54,8 @@ TEST(YamlLightLinking, LightsKeepTheirNamesAndEntriesTheirLists) {
   const SceneDescription scene = parse(
       "  - {type: sphere, light_linking: {not_illuminated_by: [rim]}}\n"
       "  - {type: sphere}\n"
-      "  - {type: instance, object: pair, light_linking: {illuminated_by: [key]}, shadow_linking: {shadows_from: []}}\n");
+      "  - {type: instance, object: pair, light_linking: {illuminated_by: [key]}, shadow_linking: {shadows_from: "
+      "[]}}\n");
   EXPECT_EQ(scene.light_names, (std::vector<std::string>{"key", "rim", ""}));
   ASSERT_EQ(scene.linkings.size(), 2u);
   EXPECT_EQ(scene.world.spheres[0].linking, 0u);
@@ -72,13 +74,15 @@ TEST(YamlLightLinking, LightsKeepTheirNamesAndEntriesTheirLists) {
 
 TEST(YamlLightLinking, TheRenderSceneGroupsObjectsThatAgree) {
   const auto cube = test::write_file("link_cube.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-  const RenderScene scene = build_render_scene(parse(
-      "  - {type: sphere, light_linking: {not_illuminated_by: [rim]}}\n"
-      "  - {type: sphere}\n"
-      "  - {type: sphere, light_linking: {illuminated_by: [key]}}\n"
-      "  - {type: mesh, file: " + cube.string() + ", shadow_linking: {no_shadows_from: [key]}}\n"
-      "  - {type: instance, object: pair, light_linking: {illuminated_by: [key]}}\n"
-      "  - {type: instance, object: pair}\n"));
+  const RenderScene scene =
+      build_render_scene(parse("  - {type: sphere, light_linking: {not_illuminated_by: [rim]}}\n"
+                               "  - {type: sphere}\n"
+                               "  - {type: sphere, light_linking: {illuminated_by: [key]}}\n"
+                               "  - {type: mesh, file: " +
+                               cube.string() +
+                               ", shadow_linking: {no_shadows_from: [key]}}\n"
+                               "  - {type: instance, object: pair, light_linking: {illuminated_by: [key]}}\n"
+                               "  - {type: instance, object: pair}\n"));
   const LightLinks& links = scene.links;
   ASSERT_TRUE(links.linked());
   // Group 0: every light; not_illuminated_by [rim] keeps the unnamed sun, illuminated_by [key] does not.
@@ -110,7 +114,8 @@ TEST(YamlLightLinking, ASceneWithoutLinkingHasNoGroups) {
 }
 
 TEST(YamlLightLinking, MistakesAreRefusedWhereTheyAreMade) {
-  expect_error("  - {type: sphere, light_linking: {not_illuminated_by: [rym]}}\n", 10, "rym", {"unknown light 'rym'", "did you mean 'rim'"});
+  expect_error("  - {type: sphere, light_linking: {not_illuminated_by: [rym]}}\n", 10, "rym",
+               {"unknown light 'rym'", "did you mean 'rim'"});
   expect_error("  - {type: sphere, shadow_linking: {shadows_from: [key, key]}}\n", 10, "key]", {"listed twice"});
   expect_error("  - {type: sphere, light_linking: {illuminated_by: [key], not_illuminated_by: [rim]}}\n", 10, "[rim]",
                {"not both"});
@@ -125,7 +130,8 @@ TEST(YamlLightLinking, MistakesAreRefusedWhereTheyAreMade) {
 TEST(YamlLightLinking, OnlyTheWorldsEntriesAreLinked) {
   try {
     parse_scene_text(
-        "rtpro: 1\ncamera: {position: [0, 1, -5], look_at: [0, 0, 0]}\nlights: [{type: point, name: key, position: [0, 5, 0]}]\n"
+        "rtpro: 1\ncamera: {position: [0, 1, -5], look_at: [0, 0, 0]}\nlights: [{type: point, name: key, position: [0, "
+        "5, 0]}]\n"
         "objects:\n  one: [{type: sphere, light_linking: {not_illuminated_by: [key]}}]\n",
         "link.yaml");
     ADD_FAILURE() << "accepted";

@@ -67,8 +67,9 @@ TEST(YamlLights, ASpotLightReadsEveryKey) {
   EXPECT_EQ(spot.inner_angle, 15.0f);
   EXPECT_EQ(spot.outer_angle, 90.0f);
   // Equal angles are a hard edge.
-  EXPECT_EQ(spot_of("{type: spot, position: [0, 1, 0], direction: [0, -1, 0], inner_angle: 30, outer_angle: 30}").inner_angle,
-            30.0f);
+  EXPECT_EQ(
+      spot_of("{type: spot, position: [0, 1, 0], direction: [0, -1, 0], inner_angle: 30, outer_angle: 30}").inner_angle,
+      30.0f);
 }
 
 TEST(YamlLights, ASpotLightsAxisCanBeAPointItLooksAt) {
@@ -109,7 +110,8 @@ TEST(YamlLights, ASpotLightsAnglesAreRefusedOutsideTheirRange) {
   expect_error_at(spot + "outer_angle: 90.5}", "90.5", {"spot light.outer_angle", "from 0 to 90 degrees, got 90.5"});
   expect_error_at(spot + "outer_angle: -10}", "-10", {"spot light.outer_angle", "from 0 to 90 degrees"});
   expect_error_at(spot + "inner_angle: -1}", "-1}", {"spot light.inner_angle", "from 0 to 90 degrees, got -1"});
-  expect_error_at(spot + "inner_angle: 50, outer_angle: 40}", "50", {"spot light.inner_angle (50) must not exceed outer_angle (40)"});
+  expect_error_at(spot + "inner_angle: 50, outer_angle: 40}", "50",
+                  {"spot light.inner_angle (50) must not exceed outer_angle (40)"});
   expect_error_at(spot + "inner_angle: 46}", "46", {"must not exceed outer_angle (45, the default)"});
   expect_error_at(spot + "outer_angle: wide}", "wide", {"spot light.outer_angle: expected a number"});
   expect_error_at(spot + "intensity: -3}", "-3", {"spot light.intensity must be >= 0"});
@@ -118,8 +120,7 @@ TEST(YamlLights, ASpotLightsAnglesAreRefusedOutsideTheirRange) {
 }
 
 TEST(YamlLights, UnknownLightTypesSuggestTheClosest) {
-  expect_error_at("{type: spto, position: [0, 1, 0]}", "spto",
-                  {"unknown light type 'spto'", "did you mean 'spot'?"});
+  expect_error_at("{type: spto, position: [0, 1, 0]}", "spto", {"unknown light type 'spto'", "did you mean 'spot'?"});
 }
 
 TEST(YamlLights, EveryKindIsReadInOrder) {
@@ -129,7 +130,8 @@ TEST(YamlLights, EveryKindIsReadInOrder) {
   - {type: directional, direction: [0, -1, 0]}
   - {type: sphere, center: [0, 3, 0], radius: 0.5, samples: 2}
   - {type: quad, position: [0, 4, 0], edge1: [1, 0, 0], edge2: [0, 0, 1]}
-)", "test.yaml");
+)",
+                                                  "test.yaml");
   ASSERT_EQ(scene.lights.size(), 5u);
   EXPECT_TRUE(std::holds_alternative<PointLightDesc>(scene.lights[0]));
   EXPECT_TRUE(std::holds_alternative<SpotLightDesc>(scene.lights[1]));

@@ -29,11 +29,11 @@ enum class RayCoherence { kCoherent, kIncoherent };
 enum class EmbreeBuildQuality { kLow, kMedium, kHigh };
 
 struct BackendOptions {
-  int threads = 0;                                            // 0: all cores
+  int threads = 0;  // 0: all cores
   EmbreeBuildQuality embree_quality = EmbreeBuildQuality::kMedium;
-  bool embree_robust = true;                                  // RTC_SCENE_FLAG_ROBUST
-  bool embree_compact = false;                                // smaller, slower BVH
-  std::size_t max_memory_bytes = 0;                           // 0: no limit
+  bool embree_robust = true;         // RTC_SCENE_FLAG_ROBUST
+  bool embree_compact = false;       // smaller, slower BVH
+  std::size_t max_memory_bytes = 0;  // 0: no limit
 };
 
 class Backend {

@@ -10,8 +10,14 @@ struct BBox {
   Vec3 upper{-std::numeric_limits<float>::infinity()};
 
   bool empty() const { return lower.x > upper.x || lower.y > upper.y || lower.z > upper.z; }
-  void extend(const Vec3& p) { lower = min(lower, p); upper = max(upper, p); }
-  void extend(const BBox& b) { lower = min(lower, b.lower); upper = max(upper, b.upper); }
+  void extend(const Vec3& p) {
+    lower = min(lower, p);
+    upper = max(upper, p);
+  }
+  void extend(const BBox& b) {
+    lower = min(lower, b.lower);
+    upper = max(upper, b.upper);
+  }
   Vec3 center() const { return (lower + upper) * 0.5f; }
   Vec3 extent() const { return upper - lower; }
   float surface_area() const {
@@ -25,6 +31,9 @@ struct BBox {
   }
 };
 
-inline BBox merge(BBox a, const BBox& b) { a.extend(b); return a; }
+inline BBox merge(BBox a, const BBox& b) {
+  a.extend(b);
+  return a;
+}
 
 }  // namespace rtpro

@@ -45,9 +45,9 @@ struct CrosscheckCase {
   Hit reference, candidate;
   bool occlusion_differs = false;
   Agreement agreement = Agreement::kIdentical;
-  double t_error = 0.0;   // hit-point distance relative to the coordinates' magnitude
+  double t_error = 0.0;        // hit-point distance relative to the coordinates' magnitude
   double surface_error = 0.0;  // distance between the barycentric points, relative likewise
-  std::string note;       // why the case was classified as it was
+  std::string note;            // why the case was classified as it was
 };
 
 struct CrosscheckReport {
@@ -57,7 +57,7 @@ struct CrosscheckReport {
   std::size_t top_level_sphere_hits = 0;  // closest hits on top-level spheres (reference side)
   std::size_t occlusion_queries = 0, occlusion_mismatches = 0;
   double max_t_error = 0.0, max_surface_error = 0.0;  // over same-primitive hits
-  std::vector<CrosscheckCase> worst;  // mismatches first, then the largest errors
+  std::vector<CrosscheckCase> worst;                  // mismatches first, then the largest errors
 
   bool passed() const { return mismatches == 0 && occlusion_mismatches == 0; }
 };

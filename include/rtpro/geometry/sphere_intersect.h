@@ -14,8 +14,8 @@ namespace rtpro {
 
 // Nearest root t of |org + t·dir − center| = radius with tnear < t <= tfar, or false.
 // The closed upper end lets callers apply their own tie rule on exactly equal distances.
-inline bool intersect_sphere(const Vec3& center, float radius, const Vec3& org, const Vec3& dir,
-                             float tnear, float tfar, float& t_hit) {
+inline bool intersect_sphere(const Vec3& center, float radius, const Vec3& org, const Vec3& dir, float tnear,
+                             float tfar, float& t_hit) {
   const double fx = double(org.x) - double(center.x);
   const double fy = double(org.y) - double(center.y);
   const double fz = double(org.z) - double(center.z);
@@ -46,13 +46,23 @@ inline bool intersect_sphere(const Vec3& center, float radius, const Vec3& org, 
   } else {
     t0 = q / a;
     t1 = c / q;
-    if (t0 > t1) { const double tmp = t0; t0 = t1; t1 = tmp; }
+    if (t0 > t1) {
+      const double tmp = t0;
+      t0 = t1;
+      t1 = tmp;
+    }
   }
 
   const float near_root = static_cast<float>(t0);
-  if (near_root > tnear && near_root <= tfar) { t_hit = near_root; return true; }
+  if (near_root > tnear && near_root <= tfar) {
+    t_hit = near_root;
+    return true;
+  }
   const float far_root = static_cast<float>(t1);
-  if (far_root > tnear && far_root <= tfar) { t_hit = far_root; return true; }
+  if (far_root > tnear && far_root <= tfar) {
+    t_hit = far_root;
+    return true;
+  }
   return false;
 }
 

@@ -11,8 +11,8 @@ struct TriangleHit {
 
 // Nearest hit with tnear < t <= tfar. Edges are inclusive (u, v >= 0, u + v <= 1), so a ray
 // through a shared edge hits at least one of the two triangles.
-inline bool intersect_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& org,
-                               const Vec3& dir, float tnear, float tfar, TriangleHit& hit) {
+inline bool intersect_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& org, const Vec3& dir,
+                               float tnear, float tfar, TriangleHit& hit) {
   const double e1x = double(p1.x) - p0.x, e1y = double(p1.y) - p0.y, e1z = double(p1.z) - p0.z;
   const double e2x = double(p2.x) - p0.x, e2y = double(p2.y) - p0.y, e2z = double(p2.z) - p0.z;
   const double dx = dir.x, dy = dir.y, dz = dir.z;

@@ -22,7 +22,6 @@ Image diff_heat_map(const Image& reference, const Image& test, float full_scale)
 
 // Throws like write_image; InputError when the chosen OpenColorIO config has no "Raw" view on its
 // default display and the format needs one.
-void write_diff_image(const std::filesystem::path& file, const Image& reference, const Image& test,
-                      float full_scale);
+void write_diff_image(const std::filesystem::path& file, const Image& reference, const Image& test, float full_scale);
 
 }  // namespace rtpro

@@ -24,8 +24,8 @@ struct CompareThresholds {
   // The defaults follow idiff: anything above float rounding noise fails.
   float fail = 1e-6f;
   float warn = 1e-6f;
-  double fail_percent = 0.0;              // how many pixels (percent) may fail and still pass
-  std::optional<double> max_mean_error;   // when set, a higher mean error also fails
+  double fail_percent = 0.0;             // how many pixels (percent) may fail and still pass
+  std::optional<double> max_mean_error;  // when set, a higher mean error also fails
 };
 
 struct ImageComparison {
@@ -39,7 +39,7 @@ struct ImageComparison {
 
   double mean_error = 0.0;  // mean over all channel values
   double rms_error = 0.0;
-  double psnr = 0.0;        // dB with a peak of 1.0; +infinity for identical images
+  double psnr = 0.0;  // dB with a peak of 1.0; +infinity for identical images
   // Relative MSE: the mean over channel values of (test − reference)² / (reference² + 0.01)
   // (Rousselle et al. 2011), how renderers compare noise against a long reference; finite
   // channels only.
@@ -51,8 +51,8 @@ struct ImageComparison {
   int max_y = 0;
   std::string max_channel;  // channel name
 
-  std::size_t warn_pixels = 0;  // pixels with a channel over the warn threshold
-  std::size_t fail_pixels = 0;  // pixels with a channel over the fail threshold
+  std::size_t warn_pixels = 0;           // pixels with a channel over the warn threshold
+  std::size_t fail_pixels = 0;           // pixels with a channel over the fail threshold
   std::size_t nan_pixels_reference = 0;  // pixels with a NaN channel
   std::size_t nan_pixels_test = 0;
   std::size_t nonfinite_mismatch_pixels = 0;  // included in warn_pixels and fail_pixels

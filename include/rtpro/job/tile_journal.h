@@ -28,7 +28,7 @@ void check_journal_file(const std::filesystem::path& file);
 
 struct JournalContents {
   JobIdentity identity;
-  std::vector<TileResult> tiles;  // intact records of work items of `grid`, each once
+  std::vector<TileResult> tiles;    // intact records of work items of `grid`, each once
   std::size_t dropped_records = 0;  // torn, corrupt or repeated records, and a torn tail
 };
 

@@ -46,6 +46,7 @@ float pixel_error(const PixelAccumulator& acc, NoiseMetric metric);
 
 // One flag per pixel of the film's region (row-major): 1 when the pixel takes the next pass.
 // Returns how many do.
-std::size_t active_pixels(const ProgressiveFilm& film, const AdaptiveSampling& settings, std::vector<std::uint8_t>& mask);
+std::size_t active_pixels(const ProgressiveFilm& film, const AdaptiveSampling& settings,
+                          std::vector<std::uint8_t>& mask);
 
 }  // namespace rtpro

@@ -19,8 +19,8 @@ class AliasTable {
 
   struct Pick {
     std::uint32_t index;
-    float pmf;          // the probability of picking `index`
-    float remapped_u;   // u's remaining precision, uniform in [0, 1) again, for a further choice
+    float pmf;         // the probability of picking `index`
+    float remapped_u;  // u's remaining precision, uniform in [0, 1) again, for a further choice
   };
   // u in [0, 1). The table must not be empty.
   Pick sample(float u) const;
@@ -30,7 +30,7 @@ class AliasTable {
   struct Bin {
     float threshold;  // below it the bin keeps its own item
     std::uint32_t alias;
-    float pmf;        // the item's own probability
+    float pmf;  // the item's own probability
   };
   std::vector<Bin> bins_;
 };

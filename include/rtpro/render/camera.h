@@ -46,14 +46,13 @@ inline Ray camera_ray(const RenderCamera& camera, float px, float py, Sample2D l
 // lane), so each ray is camera_ray's bit for bit. The square root and the three divisions of each
 // direction's normalisation were a latency chain per sample; four lanes run one chain for four.
 inline void pinhole_rays4(const RenderCamera& camera, const float* px, const float* py, Ray* rays) {
-  const __m128 x = _mm_mul_ps(
-      _mm_sub_ps(_mm_mul_ps(_mm_mul_ps(_mm_set1_ps(2.0f), _mm_loadu_ps(px)), _mm_set1_ps(camera.inv_width)),
-                 _mm_set1_ps(1.0f)),
-      _mm_set1_ps(camera.half_width));
-  const __m128 y = _mm_mul_ps(
-      _mm_sub_ps(_mm_set1_ps(1.0f),
-                 _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(2.0f), _mm_loadu_ps(py)), _mm_set1_ps(camera.inv_height))),
-      _mm_set1_ps(camera.half_height));
+  const __m128 x =
+      _mm_mul_ps(_mm_sub_ps(_mm_mul_ps(_mm_mul_ps(_mm_set1_ps(2.0f), _mm_loadu_ps(px)), _mm_set1_ps(camera.inv_width)),
+                            _mm_set1_ps(1.0f)),
+                 _mm_set1_ps(camera.half_width));
+  const __m128 y = _mm_mul_ps(_mm_sub_ps(_mm_set1_ps(1.0f), _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(2.0f), _mm_loadu_ps(py)),
+                                                                       _mm_set1_ps(camera.inv_height))),
+                              _mm_set1_ps(camera.half_height));
   // forward + right·x + true_up·y, one coordinate at a time.
   auto through = [&](float forward, float right, float up) {
     return _mm_add_ps(_mm_add_ps(_mm_set1_ps(forward), _mm_mul_ps(_mm_set1_ps(right), x)),

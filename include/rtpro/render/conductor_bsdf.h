@@ -49,7 +49,7 @@ class ConductorBsdf {
   };
   // ... and of the pair wo, wi (on the same side).
   struct Geometry {
-    Vec3 wm;  // the half vector, facing +z
+    Vec3 wm;                 // the half vector, facing +z
     float cos_i, wo_dot_wm;  // absolute values
   };
 
@@ -66,7 +66,7 @@ class ConductorBsdf {
   GgxDistribution ggx_;
   bool energy_compensation_;
   Color fresnel_average_;
-  float average_albedo_;           // E_avg(α)
+  float average_albedo_;            // E_avg(α)
   Color multiple_scattering_tint_;  // F_ms = F_avg² E_avg / (1 − F_avg (1 − E_avg))
 };
 

@@ -18,8 +18,8 @@ class Distribution1D {
   explicit Distribution1D(std::span<const float> func);
 
   struct Sample {
-    float x;      // in [0, 1)
-    float pdf;    // density at x
+    float x;    // in [0, 1)
+    float pdf;  // density at x
     std::size_t cell;
   };
   // u in [0, 1).
@@ -44,8 +44,8 @@ class Distribution2D {
   Distribution2D(std::span<const float> func, int width, int height);
 
   struct Sample {
-    float u, v;   // in [0, 1)
-    float pdf;    // density over [0,1)²
+    float u, v;  // in [0, 1)
+    float pdf;   // density over [0,1)²
   };
   Sample sample(Sample2D u) const;
   float pdf(float u, float v) const;  // u, v in [0, 1]; clamped to the cells

@@ -34,7 +34,7 @@ class EnvironmentLight {
   struct Sample {
     Vec3 direction;  // unit, world space, towards the environment
     Color radiance;
-    float pdf;       // solid angle
+    float pdf;  // solid angle
   };
   // Nothing when the environment is black everywhere.
   std::optional<Sample> sample(Sample2D u) const;

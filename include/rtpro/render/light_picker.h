@@ -48,7 +48,7 @@ class LightPicker {
   LightSamplerKind kind_ = LightSamplerKind::kTree;
   std::vector<std::uint32_t> members_;    // the set's index of each member
   std::vector<std::uint32_t> member_of_;  // per light of the set: its member index, or kNone
-  AliasTable pick_;  // power: every member by its power
+  AliasTable pick_;                       // power: every member by its power
   // tree: the members with a position in the tree, those without by their power; which of the
   // two by the power of each side.
   LightTree tree_;

@@ -22,7 +22,7 @@ namespace rtpro {
 struct LightBounds {
   BBox bounds;
   Vec3 w{0.0f, 0.0f, 1.0f};
-  float phi = 0.0f;          // power
+  float phi = 0.0f;  // power
   float cos_theta_o = 1.0f;
   float cos_theta_e = 0.0f;
   bool two_sided = false;
@@ -61,8 +61,8 @@ class LightTree {
   // A node's bounds as importance() reads them, the square roots taken once.
   struct Importance {
     Vec3 center, w;
-    float half_diagonal;     // not closer than this: a point inside a cluster sees it finitely bright
-    float radius2;           // of the bounding sphere
+    float half_diagonal;  // not closer than this: a point inside a cluster sees it finitely bright
+    float radius2;        // of the bounding sphere
     float phi, cos_theta_o, sin_theta_o, cos_theta_e;
     bool two_sided;
     explicit Importance(const LightBounds& b);

@@ -30,9 +30,9 @@ namespace rtpro {
 
 namespace path_dimension {
 // Offsets within a bounce's dimensions (sample_dimension::at_bounce).
-inline constexpr int kLightPoint = 0;   // and 1
+inline constexpr int kLightPoint = 0;     // and 1
 inline constexpr int kBsdfDirection = 2;  // and 3
-inline constexpr int kChoices = 4;  // and 5: which light (x) and which BSDF lobe (y)
+inline constexpr int kChoices = 4;        // and 5: which light (x) and which BSDF lobe (y)
 inline constexpr int kRoulette = 6;
 }  // namespace path_dimension
 
@@ -44,14 +44,14 @@ class PathWorkspace {
   struct Path {
     std::uint32_t sample;
     int bounce;
-    Color beta;             // throughput from the camera to this ray's origin
-    Vec3 origin;            // the vertex the ray leaves (for the pdf of light sampling)
-    float bsdf_pdf;         // solid-angle pdf of the ray's direction
-    bool specular;          // the ray left a specular vertex or the camera: emission counts in full
-    bool aov_pending;       // albedo and normal AOVs wait for the first non-specular vertex
-    bool transmitted;       // the ray was refracted into or out of a surface (counted as refraction)
-    std::uint32_t medium;   // the dielectric material whose inside the ray crosses, or kOutside
-    std::uint32_t group;    // the light-link group of the vertex the ray leaves (0 for the camera)
+    Color beta;            // throughput from the camera to this ray's origin
+    Vec3 origin;           // the vertex the ray leaves (for the pdf of light sampling)
+    float bsdf_pdf;        // solid-angle pdf of the ray's direction
+    bool specular;         // the ray left a specular vertex or the camera: emission counts in full
+    bool aov_pending;      // albedo and normal AOVs wait for the first non-specular vertex
+    bool transmitted;      // the ray was refracted into or out of a surface (counted as refraction)
+    std::uint32_t medium;  // the dielectric material whose inside the ray crosses, or kOutside
+    std::uint32_t group;   // the light-link group of the vertex the ray leaves (0 for the camera)
   };
   static constexpr std::uint32_t kOutside = ~0u;
   struct ShadowQuery {

@@ -51,11 +51,11 @@ struct WithEmitters<std::variant<Lights...>, Emitters...> {
 using PathLight = WithEmitters<Light, EmissiveTriangle, EmissiveSphere, EnvironmentRef>::type;
 
 struct PathLightSample {
-  Vec3 direction;   // unit, from the point towards the light
-  float distance;   // to the sampled point; infinity for directional lights and the environment
-  Color radiance;   // arriving along `direction` (no pdf folded in)
-  float pdf;        // solid angle, times the probability of picking the light; 1 for delta lights
-  bool delta;       // point, spot and directional lights: no BSDF sample can reach them
+  Vec3 direction;       // unit, from the point towards the light
+  float distance;       // to the sampled point; infinity for directional lights and the environment
+  Color radiance;       // arriving along `direction` (no pdf folded in)
+  float pdf;            // solid angle, times the probability of picking the light; 1 for delta lights
+  bool delta;           // point, spot and directional lights: no BSDF sample can reach them
   std::uint32_t light;  // which light of the set
 };
 

@@ -10,8 +10,8 @@ namespace rtpro {
 
 enum class RayKind : std::uint8_t { kCamera, kShadow, kReflection, kRefraction };
 inline constexpr std::size_t kRayKindCount = 4;
-inline constexpr std::array<RayKind, kRayKindCount> kRayKinds = {RayKind::kCamera, RayKind::kShadow, RayKind::kReflection,
-                                                                 RayKind::kRefraction};
+inline constexpr std::array<RayKind, kRayKindCount> kRayKinds = {RayKind::kCamera, RayKind::kShadow,
+                                                                 RayKind::kReflection, RayKind::kRefraction};
 
 // The kind's name in statistics ("camera", "shadow", "reflection", "refraction"): the keys of
 // `rays` in --stats-json, which benchmarks read.

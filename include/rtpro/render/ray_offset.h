@@ -70,7 +70,8 @@ inline __m128 round_away_from_surface(__m128 origin, __m128 n) {
   __m128 next = _mm_castsi128_ps(_mm_add_epi32(_mm_castps_si128(origin), step));
   next = _mm_andnot_ps(_mm_cmplt_ps(_mm_andnot_ps(sign_bit, next), smallest_normal), next);  // a denormal is 0
   // ... except from zero or a denormal, which goes to the smallest normal float on the normal's side.
-  const __m128 from_zero = _mm_or_ps(_mm_and_ps(up, smallest_normal), _mm_andnot_ps(up, _mm_xor_ps(smallest_normal, sign_bit)));
+  const __m128 from_zero =
+      _mm_or_ps(_mm_and_ps(up, smallest_normal), _mm_andnot_ps(up, _mm_xor_ps(smallest_normal, sign_bit)));
   const __m128 tiny = _mm_cmplt_ps(_mm_andnot_ps(sign_bit, origin), smallest_normal);
   const __m128 stepped = _mm_or_ps(_mm_and_ps(tiny, from_zero), _mm_andnot_ps(tiny, next));
   const __m128 moves = _mm_cmpneq_ps(n, zero);

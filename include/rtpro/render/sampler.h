@@ -54,14 +54,16 @@ class StratifiedSampler {
   Sample2D sample_2d(std::uint64_t pixel_key, int sample_index, int dimension) const;
   // sample_2d of each key into out[i] (out.size() == keys.size()).
   void sample_2d(std::span<const SampleKey> keys, int dimension, std::span<Sample2D> out) const {
-    for (std::size_t i = 0; i < keys.size(); ++i) out[i] = sample_2d(keys[i].pixel_key, keys[i].sample_index, dimension);
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      out[i] = sample_2d(keys[i].pixel_key, keys[i].sample_index, dimension);
   }
 
   // A 1D value of `dimension`, stratified over spp strata in a permuted order.
   float sample_1d(std::uint64_t pixel_key, int sample_index, int dimension) const;
   // sample_1d of each key into out[i] (out.size() == keys.size()).
   void sample_1d(std::span<const SampleKey> keys, int dimension, std::span<float> out) const {
-    for (std::size_t i = 0; i < keys.size(); ++i) out[i] = sample_1d(keys[i].pixel_key, keys[i].sample_index, dimension);
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      out[i] = sample_1d(keys[i].pixel_key, keys[i].sample_index, dimension);
   }
 
   // Point `index` of the per_axis × per_axis stratified points a shading point spreads over an

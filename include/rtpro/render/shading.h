@@ -31,8 +31,8 @@ namespace rtpro {
 struct PrimaryHit {
   bool hit = false;
   Color albedo;
-  Vec3 normal;          // shading normal, world space, unit
-  float depth = 0.0f;   // distance from the camera
+  Vec3 normal;         // shading normal, world space, unit
+  float depth = 0.0f;  // distance from the camera
   std::uint32_t object_id = 0;
 };
 
@@ -96,7 +96,7 @@ class ShadingWorkspace {
   std::vector<int> light_samples_per_axis;
   std::vector<std::uint8_t> is_emitter;
   std::vector<std::uint32_t> emitters;
-  const TextureLookup* textures = nullptr;  // the scene's image textures, for this batch
+  const TextureLookup* textures = nullptr;        // the scene's image textures, for this batch
   const EnvironmentLight* environment = nullptr;  // the scene's environment, for this batch
 };
 

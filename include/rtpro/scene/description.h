@@ -89,18 +89,18 @@ struct MaterialDesc {
   Color emission{0.0f};
   bool emission_two_sided = false;
   std::optional<TextureSlotDesc> emission_texture;  // multiplies `emission` (glTF emissiveTexture)
-  PrincipledDesc principled;  // kind principled only
-  Color color{0.8f, 0.8f, 0.8f};  // diffuse (and ambient) colour
-  std::optional<CheckerDesc> checker;  // when set, the diffuse colour instead of `color`
+  PrincipledDesc principled;                        // kind principled only
+  Color color{0.8f, 0.8f, 0.8f};                    // diffuse (and ambient) colour
+  std::optional<CheckerDesc> checker;               // when set, the diffuse colour instead of `color`
   // Glass: an index of refraction makes the material a smooth dielectric (Fresnel-weighted
   // reflection and refraction, highlights from `specular`, no diffuse part); white light inside
   // it has colour `transmittance` after `transmittance_distance` scene units.
   std::optional<float> ior;
   Color transmittance{1.0f};
   float transmittance_distance = 1.0f;
-  float specular = 0.5f;          // Phong highlight weight
-  float shininess = 10.0f;        // Phong exponent
-  float reflectivity = 0.0f;      // weight of the mirror reflection
+  float specular = 0.5f;      // Phong highlight weight
+  float shininess = 10.0f;    // Phong exponent
+  float reflectivity = 0.0f;  // weight of the mirror reflection
   // An image whose colour multiplies `color` (`color: {texture: ...}`, MTL map_Kd, glTF
   // baseColorTexture), looked up at the surface's texture coordinates; decoded from
   // `texture_colorspace` (an OpenColorIO colour space) to scene-linear first.
@@ -111,7 +111,7 @@ struct MaterialDesc {
   // An image stored inside a glTF: its encoded bytes (color_texture then names it, e.g.
   // "model.glb#images[0].png", the extension telling its format).
   std::shared_ptr<const std::vector<unsigned char>> texture_bytes;
-  float opacity = 1.0f;          // MTL d (or 1 - Tr), glTF baseColorFactor alpha; not rendered yet
+  float opacity = 1.0f;  // MTL d (or 1 - Tr), glTF baseColorFactor alpha; not rendered yet
 };
 
 // How a mesh entry gets its shading normals (`normals:` in the scene file).
@@ -144,14 +144,14 @@ inline constexpr std::uint32_t kNoLinking = ~0u;
 struct SphereDesc {
   Vec3 center;
   float radius = 1.0f;
-  std::uint32_t material = 0;  // index into SceneDescription::materials
+  std::uint32_t material = 0;          // index into SceneDescription::materials
   std::uint32_t linking = kNoLinking;  // index into SceneDescription::linkings (world entries only)
 };
 
 struct MeshDesc {
-  std::filesystem::path file;               // resolved against the scene file's folder
-  std::uint32_t material = kNoMaterial;     // overrides the OBJ's own materials when set
-  SourceLocation where;                     // of the entry in the scene file, for load errors
+  std::filesystem::path file;            // resolved against the scene file's folder
+  std::uint32_t material = kNoMaterial;  // overrides the OBJ's own materials when set
+  SourceLocation where;                  // of the entry in the scene file, for load errors
   NormalsMode normals = NormalsMode::kAuto;
   std::uint32_t linking = kNoLinking;
 };
@@ -199,9 +199,9 @@ void visit_shape_lists(const ObjectDesc& object, Visit&& visit) {
 struct EnvironmentDesc {
   std::filesystem::path file;  // empty: a constant environment of `color`
   SourceLocation file_where;
-  Color color{1.0f};           // with a file: a tint multiplying the image
+  Color color{1.0f};  // with a file: a tint multiplying the image
   float intensity = 1.0f;
-  Affine rotation;             // image frame to world
+  Affine rotation;  // image frame to world
   bool visible = true;
 };
 
@@ -217,8 +217,8 @@ struct SceneDescription {
   std::vector<LightDesc> lights;
   std::vector<std::string> light_names;  // one per light: its `name:`, empty when it has none
   std::optional<EnvironmentDesc> environment;
-  std::vector<ObjectDesc> objects;      // named, reachable only through instances
-  ObjectDesc world;                     // what is rendered
+  std::vector<ObjectDesc> objects;         // named, reachable only through instances
+  ObjectDesc world;                        // what is rendered
   std::vector<LightLinkingDesc> linkings;  // of the world's entries that have one
 };
 

@@ -32,8 +32,8 @@ struct TriangleMesh {
   std::string name;
   std::vector<PaddedVertex> vertices;
   std::vector<TriangleIndices> triangles;
-  std::vector<Vec3> normals;                     // per vertex, unit length; empty: flat shading
-  std::vector<std::uint32_t> triangle_materials; // per triangle; empty: `material` for all
+  std::vector<Vec3> normals;                      // per vertex, unit length; empty: flat shading
+  std::vector<std::uint32_t> triangle_materials;  // per triangle; empty: `material` for all
   std::uint32_t material = 0;
   // Per vertex when the file has them, else empty; kept for texturing, not rendered yet.
   std::vector<TexCoord> uvs;

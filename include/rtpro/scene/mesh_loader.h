@@ -18,10 +18,10 @@ struct MeshLoadOptions {
 struct MeshLoadStats {
   std::size_t vertices = 0;
   std::size_t triangles = 0;
-  std::size_t faces = 0;              // polygons read before triangulation
+  std::size_t faces = 0;  // polygons read before triangulation
   std::size_t materials = 0;
-  std::size_t dropped_degenerate = 0; // triangles with repeated vertices or zero area, not kept
-  std::size_t concave_polygons = 0;   // triangulated by ear clipping instead of a fan
+  std::size_t dropped_degenerate = 0;  // triangles with repeated vertices or zero area, not kept
+  std::size_t concave_polygons = 0;    // triangulated by ear clipping instead of a fan
   bool normals_generated = false;
   std::vector<std::string> warnings;  // one line each, already "file:line: ..." formatted
   // Files read besides the mesh file itself (MTL libraries, glTF buffers): a pixel depends on them.

@@ -16,12 +16,12 @@ namespace rtpro {
 struct RenderCost {
   std::uint64_t flattened_instances = 0;  // instances after flattening nested ones (saturating)
   std::uint64_t pixels = 0;
-  int channels = 3;                       // colour plus AOV channels
-  std::uint64_t samples = 0;              // camera samples: pixels × spp
-  std::uint64_t image_bytes = 0;          // film plus one output copy
-  std::uint64_t instance_bytes = 0;       // rtpro's and Embree's per-instance records
-  std::uint64_t mesh_bytes = 0;           // loaded meshes and their BVHs, from the file sizes
-  std::uint64_t total_bytes = 0;          // the sum, saturating
+  int channels = 3;                  // colour plus AOV channels
+  std::uint64_t samples = 0;         // camera samples: pixels × spp
+  std::uint64_t image_bytes = 0;     // film plus one output copy
+  std::uint64_t instance_bytes = 0;  // rtpro's and Embree's per-instance records
+  std::uint64_t mesh_bytes = 0;      // loaded meshes and their BVHs, from the file sizes
+  std::uint64_t total_bytes = 0;     // the sum, saturating
 };
 
 // Rough bytes per flattened instance (two 3×4 transforms and the geometry record in rtpro, an

@@ -93,7 +93,7 @@ struct NormalMap {
 // A smooth dielectric (glass, water): refraction index and interior absorption.
 struct Dielectric {
   float ior;
-  Color transmittance;         // of white light after `transmittance_distance`
+  Color transmittance;  // of white light after `transmittance_distance`
   float transmittance_distance;
 };
 
@@ -169,11 +169,11 @@ struct RenderScene {
   std::vector<Material> materials;
   std::vector<std::string> material_names;
   std::vector<Light> lights;
-  LightLinks links;              // which lights reach which top-level objects, and whose shadows they cast
+  LightLinks links;  // which lights reach which top-level objects, and whose shadows they cast
   std::optional<Environment> environment;
   std::vector<TextureImage> textures;  // each file and colour space once
-  Group top;                     // may contain instances
-  std::vector<Group> prototypes; // never contain instances
+  Group top;                           // may contain instances
+  std::vector<Group> prototypes;       // never contain instances
 
   std::vector<BBox> prototype_bounds() const;
   BBox bounds() const { return top.bounds(prototype_bounds()); }

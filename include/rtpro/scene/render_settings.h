@@ -61,8 +61,8 @@ constexpr const char* integrator_name(Integrator integrator) {
 }
 
 struct RenderSettings {
-  int spp = 16;        // samples per pixel, 1..65536 (stratified over the most nearly square grid)
-  int max_depth = 5;   // bounces after the camera ray: mirror bounces (whitted), path vertices (path)
+  int spp = 16;       // samples per pixel, 1..65536 (stratified over the most nearly square grid)
+  int max_depth = 5;  // bounces after the camera ray: mirror bounces (whitted), path vertices (path)
   Integrator integrator = Integrator::kWhitted;
   PathSampling path_sampling = PathSampling::kMis;
   SamplerKind sampler = SamplerKind::kStratified;  // the scene parser makes `path` default to sobol

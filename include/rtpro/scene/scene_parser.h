@@ -14,8 +14,7 @@ namespace rtpro {
 // world, its camera and lights or defaults.
 // `overrides` are "dotted.key=value" strings (e.g. "render.spp=64", "camera.fov=30") applied to
 // the document before validation, so they are checked exactly like the file's own values.
-SceneDescription parse_scene_file(const std::filesystem::path& file,
-                                  const std::vector<std::string>& overrides = {});
+SceneDescription parse_scene_file(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
 
 // Same, for text already in memory; `file` names it in errors and anchors relative paths.
 SceneDescription parse_scene_text(std::string_view text, const std::filesystem::path& file,

@@ -16,15 +16,15 @@ struct SceneSummary {
   std::size_t area_lights = 0;  // sphere and quad lights
   std::size_t prototypes = 0;
   std::size_t instances = 0;
-  std::size_t meshes = 0;                 // stored meshes (top level and in prototypes)
-  std::uint64_t spheres_stored = 0;       // each stored once
+  std::size_t meshes = 0;            // stored meshes (top level and in prototypes)
+  std::uint64_t spheres_stored = 0;  // each stored once
   std::uint64_t triangles_stored = 0;
   std::uint64_t vertices_stored = 0;
-  std::uint64_t spheres_rendered = 0;     // after instancing: what the camera can see
+  std::uint64_t spheres_rendered = 0;  // after instancing: what the camera can see
   std::uint64_t triangles_rendered = 0;
   BBox bounds;
-  std::size_t geometry_bytes = 0;         // spheres, vertices, indices, normals, materials
-  std::size_t estimated_bvh_bytes = 0;    // native BVH, from primitive counts
+  std::size_t geometry_bytes = 0;       // spheres, vertices, indices, normals, materials
+  std::size_t estimated_bvh_bytes = 0;  // native BVH, from primitive counts
 };
 
 // What one group's shapes add up to, each kind of shape adding its own (tally_shapes, in the

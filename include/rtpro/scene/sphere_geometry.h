@@ -11,8 +11,8 @@
 
 namespace rtpro {
 
-struct SphereDesc;    // scene/description.h
-struct ShapeTally;    // scene/scene_summary.h
+struct SphereDesc;  // scene/description.h
+struct ShapeTally;  // scene/scene_summary.h
 struct SceneSummary;
 
 struct Sphere {

@@ -15,8 +15,8 @@ struct SpotLightDesc {
   Vec3 position;
   Vec3 direction{0.0f, -1.0f, 0.0f};  // unit: the axis light travels along (`look_at` resolved)
   Color color{1.0f, 1.0f, 1.0f};
-  float intensity = 1.0f;    // on the axis, as a point light's
-  float inner_angle = 0.0f;  // degrees off the axis, 0 <= inner_angle <= outer_angle
+  float intensity = 1.0f;     // on the axis, as a point light's
+  float inner_angle = 0.0f;   // degrees off the axis, 0 <= inner_angle <= outer_angle
   float outer_angle = 45.0f;  // degrees, 0 < outer_angle <= 90
 };
 

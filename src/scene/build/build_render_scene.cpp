@@ -23,8 +23,8 @@ namespace {
 
 // The index of an image in `textures`, each file and colour space registered once.
 std::uint32_t texture_index(const std::filesystem::path& file, const std::string& colorspace,
-                            const std::shared_ptr<const std::vector<unsigned char>>& bytes,
-                            const SourceLocation& where, std::vector<TextureImage>& textures) {
+                            const std::shared_ptr<const std::vector<unsigned char>>& bytes, const SourceLocation& where,
+                            std::vector<TextureImage>& textures) {
   std::error_code error;
   if (!bytes && !std::filesystem::is_regular_file(file, error))
     throw InputError(where, "texture '" + file.string() + "' not found");
@@ -45,8 +45,9 @@ std::optional<ImageTexture> slot_texture(const std::optional<TextureSlotDesc>& s
 // A material's diffuse colour as shading evaluates it; image textures are registered in `textures`.
 ColorTexture color_texture(const MaterialDesc& m, std::vector<TextureImage>& textures) {
   if (!m.color_texture.empty())
-    return ImageTexture{texture_index(m.color_texture, m.texture_colorspace, m.texture_bytes, m.texture_where, textures),
-                        m.color, m.texture_wrap};
+    return ImageTexture{
+        texture_index(m.color_texture, m.texture_colorspace, m.texture_bytes, m.texture_where, textures), m.color,
+        m.texture_wrap};
   if (!m.checker) return m.color;
   CheckerTexture checker;
   checker.inv_size = 1.0f / m.checker->size;
@@ -66,10 +67,10 @@ SurfaceModel surface_model(const MaterialDesc& m, std::vector<TextureImage>& tex
     case MaterialKind::kDielectric: return DielectricSurface{m.roughness};
     case MaterialKind::kPrincipled: {
       const PrincipledDesc& p = m.principled;
-      PrincipledSurface surface{color_texture(m, textures), p.metalness,          m.roughness,     m.ior.value_or(1.5f),
-                                p.specular_weight,          p.specular_color,     p.transmission_weight,
-                                p.coat_weight,              p.coat_roughness,     p.fuzz_color,
-                                p.fuzz_roughness,           std::nullopt,         std::nullopt};
+      PrincipledSurface surface{
+          color_texture(m, textures), p.metalness,           m.roughness,   m.ior.value_or(1.5f), p.specular_weight,
+          p.specular_color,           p.transmission_weight, p.coat_weight, p.coat_roughness,     p.fuzz_color,
+          p.fuzz_roughness,           std::nullopt,          std::nullopt};
       surface.metallic_roughness =
           slot_texture(p.metallic_roughness_texture, Color(1.0f, m.roughness, p.metalness), textures);
       if (const std::optional<ImageTexture> normals = slot_texture(p.normal_texture, Color(1.0f), textures))
@@ -172,9 +173,11 @@ class RenderSceneBuilder {
     std::optional<Dielectric> whitted_glass = m.kind == MaterialKind::kPrincipled ? std::nullopt : dielectric;
     Material material{color_texture(m, scene_.textures), m.specular, m.shininess, m.reflectivity, whitted_glass};
     material.model = surface_model(m, scene_.textures);
-    material.emission = Emission{m.emission, m.emission_two_sided, slot_texture(m.emission_texture, Color(1.0f), scene_.textures)};
+    material.emission =
+        Emission{m.emission, m.emission_two_sided, slot_texture(m.emission_texture, Color(1.0f), scene_.textures)};
     approximate_for_whitted(m, material);
-    if (m.kind == MaterialKind::kPrincipled) material.color = color_texture(whitted_view_of_principled(m), scene_.textures);
+    if (m.kind == MaterialKind::kPrincipled)
+      material.color = color_texture(whitted_view_of_principled(m), scene_.textures);
     scene_.materials.push_back(std::move(material));
     scene_.material_names.push_back(name);
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);
@@ -195,10 +198,10 @@ class RenderSceneBuilder {
     for (const InstanceDesc& instance : description_.world.instances) {
       count = saturating_add(count, per_object[instance.object]);
       if (count > kMaxFlattenedInstances)
-        throw InputError(instance.where, "instancing expands to " +
-                                             (count == UINT64_MAX ? std::string("more than 2^64") : std::to_string(count)) +
-                                             " instances after flattening nested instances; the limit is " +
-                                             std::to_string(kMaxFlattenedInstances));
+        throw InputError(
+            instance.where,
+            "instancing expands to " + (count == UINT64_MAX ? std::string("more than 2^64") : std::to_string(count)) +
+                " instances after flattening nested instances; the limit is " + std::to_string(kMaxFlattenedInstances));
     }
   }
 
@@ -276,7 +279,8 @@ class RenderSceneBuilder {
       throw geometry_error(origin, "instancing expands to more than " + std::to_string(kMaxFlattenedInstances) +
                                        " instances after flattening nested instances");
     const auto inverse_transform = inverse(to_world);
-    if (!inverse_transform) throw geometry_error(origin, "instance transform (combined with its parents) is singular or not finite");
+    if (!inverse_transform)
+      throw geometry_error(origin, "instance transform (combined with its parents) is singular or not finite");
     scene_.top.geometries.emplace_back(Instance{prototype, to_world, *inverse_transform});
     top_origins_.push_back(origin);
   }
@@ -306,9 +310,12 @@ class RenderSceneBuilder {
 
     std::vector<std::uint32_t> remap;
     if (desc.material == kNoMaterial)
-      for (const MaterialDesc& m : asset->materials) remap.push_back(add_material(m, desc.file.filename().string() + ":" + m.name));
+      for (const MaterialDesc& m : asset->materials)
+        remap.push_back(add_material(m, desc.file.filename().string() + ":" + m.name));
     // Primitives without a material take the scene's "default", like shapes without one.
-    const auto material = [&](std::uint32_t m) { return desc.material != kNoMaterial ? desc.material : m == kNoMaterial ? 0u : remap[m]; };
+    const auto material = [&](std::uint32_t m) {
+      return desc.material != kNoMaterial ? desc.material : m == kNoMaterial ? 0u : remap[m];
+    };
     PlacedGltf placed{asset, {}};
     for (const TriangleMesh& source : asset->meshes) {
       if (source.triangles.empty()) {
@@ -364,8 +371,8 @@ class RenderSceneBuilder {
   std::map<std::tuple<std::filesystem::path, int, std::uint32_t>, PlacedGltf> gltfs_;
   std::size_t flattened_ = 0;
   const SourceLocation scene_file_{description_.file.string()};  // where the world's spheres are
-  std::vector<GeometryOrigin> top_origins_;  // where each top-level geometry came from
-  std::vector<std::uint32_t> linking_of_object_;  // per top-level geometry: its world entry's linking
+  std::vector<GeometryOrigin> top_origins_;                      // where each top-level geometry came from
+  std::vector<std::uint32_t> linking_of_object_;                 // per top-level geometry: its world entry's linking
 };
 
 }  // namespace

@@ -7,8 +7,13 @@ namespace rtpro {
 
 QuadLight light_from(const QuadLightDesc& d) {
   const Vec3 n = cross(d.edge1, d.edge2);
-  return QuadLight{d.position - d.edge1 * 0.5f - d.edge2 * 0.5f, d.edge1, d.edge2, normalize(n), length(n),
-                   d.color * d.intensity, d.samples};
+  return QuadLight{d.position - d.edge1 * 0.5f - d.edge2 * 0.5f,
+                   d.edge1,
+                   d.edge2,
+                   normalize(n),
+                   length(n),
+                   d.color * d.intensity,
+                   d.samples};
 }
 
 double reach_from_origin(const QuadLightDesc& d) {

@@ -35,8 +35,8 @@ std::uint64_t placements_in(const std::vector<GltfDesc>& gltfs, const GltfPlacem
 // Instances one placement of `object` becomes, memoised per object. An object that draws nothing
 // still counts as one: flattening visits it, and ten levels of ten instances of an empty object
 // are 10^10 visits that would otherwise pass the limit as 0 and hang the flattening.
-std::uint64_t instances_of(const SceneDescription& scene, std::uint32_t object, const GltfPlacementCount& gltf_placements,
-                           std::vector<std::optional<std::uint64_t>>& memo) {
+std::uint64_t instances_of(const SceneDescription& scene, std::uint32_t object,
+                           const GltfPlacementCount& gltf_placements, std::vector<std::optional<std::uint64_t>>& memo) {
   if (memo[object]) return *memo[object];
   const ObjectDesc& desc = scene.objects[object];
   std::uint64_t count = saturating_add(has_own_shapes(desc) ? 1 : 0, placements_in(desc.gltfs, gltf_placements));
@@ -76,7 +76,8 @@ void add_shape_bytes(const ObjectDesc& object, std::set<std::filesystem::path>& 
                                        },
                                        [&](const std::vector<GltfDesc>& gltfs) { add_gltf_bytes(gltfs, seen, bytes); },
                                        [&](const auto& shapes) {
-                                         for (const auto& shape : shapes) bytes = saturating_add(bytes, estimated_bytes(shape));
+                                         for (const auto& shape : shapes)
+                                           bytes = saturating_add(bytes, estimated_bytes(shape));
                                        }});
 }
 

@@ -5,7 +5,9 @@
 
 namespace rtpro {
 
-SphereLight light_from(const SphereLightDesc& d) { return SphereLight{d.center, d.radius, d.color * d.intensity, d.samples}; }
+SphereLight light_from(const SphereLightDesc& d) {
+  return SphereLight{d.center, d.radius, d.color * d.intensity, d.samples};
+}
 
 double reach_from_origin(const SphereLightDesc& d) { return largest_magnitude(d.center) + double(d.radius); }
 

@@ -71,9 +71,10 @@ void check_traceable_range(const RenderScene& scene, std::span<const GeometryOri
     const double reach = largest_magnitude(geometry_bounds(scene.top, g, prototype_bounds));
     if (!in_range(reach)) {
       const bool instance = kind_of(geometry) == GeometryKind::kInstance;
-      throw geometry_error(origins[g], std::string(instance ? "this instance places geometry" : "this geometry reaches") +
-                                     " as far as " + number(reach) + " from the origin; coordinates must stay within ±" +
-                                     limit + " (after all transforms) for the ray tracing backends");
+      throw geometry_error(
+          origins[g], std::string(instance ? "this instance places geometry" : "this geometry reaches") +
+                          " as far as " + number(reach) + " from the origin; coordinates must stay within ±" + limit +
+                          " (after all transforms) for the ray tracing backends");
     }
     extent = std::max(extent, reach);
   }
@@ -87,13 +88,14 @@ void check_traceable_range(const RenderScene& scene, std::span<const GeometryOri
     const double origin_reach = s.linear * extent + s.translation;
     const double direction_reach = s.linear * direction;
     if (!in_range(origin_reach) || !in_range(direction_reach) || !std::isfinite(s.linear)) {
-      throw geometry_error(origins[g], "this instance's transform (combined with its parents) shrinks its object so far "
-                                 "that rays entering it reach " +
-                                     number(std::max(origin_reach, direction_reach)) +
-                                     " in object space, beyond the ±" + limit +
-                                     " the ray tracing backends support; use a larger scale (the largest inverse "
-                                     "scale factor is " +
-                                     number(s.linear) + ")");
+      throw geometry_error(origins[g],
+                           "this instance's transform (combined with its parents) shrinks its object so far "
+                           "that rays entering it reach " +
+                               number(std::max(origin_reach, direction_reach)) + " in object space, beyond the ±" +
+                               limit +
+                               " the ray tracing backends support; use a larger scale (the largest inverse "
+                               "scale factor is " +
+                               number(s.linear) + ")");
     }
   }
 }

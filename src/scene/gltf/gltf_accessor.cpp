@@ -14,9 +14,12 @@ namespace {
 
 std::size_t component_size(int component_type) {
   switch (component_type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-    case TINYGLTF_COMPONENT_TYPE_SHORT: case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
     default: return 0;
   }
 }
@@ -42,10 +45,12 @@ void AccessorReader::fail(const std::string& path, const std::string& message) c
 AccessorReader::View AccessorReader::view(int index, const std::string& where, std::initializer_list<int> types,
                                           std::initializer_list<int> component_types) const {
   if (index < 0 || std::size_t(index) >= model_.accessors.size())
-    fail(where, "accessor " + std::to_string(index) + " does not exist (the file has " + std::to_string(model_.accessors.size()) + ")");
+    fail(where, "accessor " + std::to_string(index) + " does not exist (the file has " +
+                    std::to_string(model_.accessors.size()) + ")");
   const tinygltf::Accessor& a = model_.accessors[std::size_t(index)];
   const std::string path = index_path("accessors", index);
-  if (std::find(types.begin(), types.end(), a.type) == types.end()) fail(path + ".type", "type not allowed for " + where);
+  if (std::find(types.begin(), types.end(), a.type) == types.end())
+    fail(path + ".type", "type not allowed for " + where);
   if (std::find(component_types.begin(), component_types.end(), a.componentType) == component_types.end())
     fail(path + ".componentType", "component type " + std::to_string(a.componentType) + " not allowed for " + where);
   if (a.sparse.isSparse) fail(path + ".sparse", "sparse accessors are not supported");
@@ -65,13 +70,14 @@ AccessorReader::View AccessorReader::view(int index, const std::string& where, s
                                         " lie beyond the end of buffers[" + std::to_string(bv.buffer) + "] (" +
                                         std::to_string(data.size()) + " bytes)");
   v.stride = bv.byteStride == 0 ? element : bv.byteStride;
-  if (v.stride < element) fail(view_path + ".byteStride", "stride " + std::to_string(v.stride) + " is smaller than one element");
+  if (v.stride < element)
+    fail(view_path + ".byteStride", "stride " + std::to_string(v.stride) + " is smaller than one element");
   // All in 64 bits: count < 2^32 and stride, offsets < 2^32 (bufferView sizes), so no product overflows.
   if (a.count > 0) {
     const std::uint64_t needed = std::uint64_t(a.byteOffset) + std::uint64_t(v.stride) * (a.count - 1) + element;
     if (a.byteOffset > bv.byteLength || needed > bv.byteLength)
-      fail(path + ".count", std::to_string(a.count) + " elements from byte " + std::to_string(a.byteOffset) + " do not fit in " +
-                                view_path + " (" + std::to_string(bv.byteLength) + " bytes)");
+      fail(path + ".count", std::to_string(a.count) + " elements from byte " + std::to_string(a.byteOffset) +
+                                " do not fit in " + view_path + " (" + std::to_string(bv.byteLength) + " bytes)");
   }
   v.data = data.data() + bv.byteOffset + a.byteOffset;
   return v;
@@ -86,10 +92,14 @@ float AccessorReader::component(const View& v, std::size_t i, int k) const {
   };
   switch (v.component_type) {
     case TINYGLTF_COMPONENT_TYPE_FLOAT: return load(float{});
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return v.normalized ? float(load(std::uint8_t{})) / 255.0f : float(load(std::uint8_t{}));
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return v.normalized ? float(load(std::uint16_t{})) / 65535.0f : float(load(std::uint16_t{}));
-    case TINYGLTF_COMPONENT_TYPE_BYTE: return v.normalized ? std::max(float(load(std::int8_t{})) / 127.0f, -1.0f) : float(load(std::int8_t{}));
-    case TINYGLTF_COMPONENT_TYPE_SHORT: return v.normalized ? std::max(float(load(std::int16_t{})) / 32767.0f, -1.0f) : float(load(std::int16_t{}));
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return v.normalized ? float(load(std::uint8_t{})) / 255.0f : float(load(std::uint8_t{}));
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return v.normalized ? float(load(std::uint16_t{})) / 65535.0f : float(load(std::uint16_t{}));
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+      return v.normalized ? std::max(float(load(std::int8_t{})) / 127.0f, -1.0f) : float(load(std::int8_t{}));
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+      return v.normalized ? std::max(float(load(std::int16_t{})) / 32767.0f, -1.0f) : float(load(std::int16_t{}));
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return float(load(std::uint32_t{}));
     default: return 0.0f;
   }
@@ -132,7 +142,8 @@ std::vector<Vec3> AccessorReader::positions(int accessor, const std::string& whe
     // One test per coordinate for both: NaN fails it, and so do infinities and magnitudes beyond
     // the limit.
     const Vec3& p = out[i];
-    if (!(std::fabs(p.x) <= kMaxAbsCoordinate && std::fabs(p.y) <= kMaxAbsCoordinate && std::fabs(p.z) <= kMaxAbsCoordinate)) {
+    if (!(std::fabs(p.x) <= kMaxAbsCoordinate && std::fabs(p.y) <= kMaxAbsCoordinate &&
+          std::fabs(p.z) <= kMaxAbsCoordinate)) {
       if (!is_finite(out[i])) fail(v.path, "element " + std::to_string(i) + " is not a finite number");
       fail(v.path, "element " + std::to_string(i) + " has a coordinate beyond the supported magnitude 1e16");
     }
@@ -149,8 +160,9 @@ std::vector<Vec3> AccessorReader::normals(int accessor, const std::string& where
 }
 
 std::vector<TexCoord> AccessorReader::texcoords(int accessor, const std::string& where) const {
-  const View v = view(accessor, where, {TINYGLTF_TYPE_VEC2},
-                      {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+  const View v = view(
+      accessor, where, {TINYGLTF_TYPE_VEC2},
+      {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
   std::vector<TexCoord> out;
   out.reserve(v.count);
   // glTF's v grows down the image; rtpro's texture coordinates are OBJ's and PLY's (v up), which
@@ -160,8 +172,9 @@ std::vector<TexCoord> AccessorReader::texcoords(int accessor, const std::string&
 }
 
 std::vector<Color> AccessorReader::colors(int accessor, const std::string& where) const {
-  const View v = view(accessor, where, {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4},
-                      {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+  const View v = view(
+      accessor, where, {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4},
+      {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
   std::vector<Color> out;
   out.reserve(v.count);
   for (std::size_t i = 0; i < v.count; ++i) {
@@ -172,9 +185,11 @@ std::vector<Color> AccessorReader::colors(int accessor, const std::string& where
   return out;
 }
 
-std::vector<std::uint32_t> AccessorReader::indices(int accessor, std::uint32_t vertex_count, const std::string& where) const {
+std::vector<std::uint32_t> AccessorReader::indices(int accessor, std::uint32_t vertex_count,
+                                                   const std::string& where) const {
   const View v = view(accessor, where, {TINYGLTF_TYPE_SCALAR},
-                      {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
+                      {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                       TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
   if (v.normalized) fail(v.path + ".normalized", "indices must not be normalized");
   std::vector<std::uint32_t> out;
   resize_large(out, v.count);
@@ -183,8 +198,8 @@ std::vector<std::uint32_t> AccessorReader::indices(int accessor, std::uint32_t v
     std::memcpy(out.data(), v.data, v.count * 4);
     for (std::size_t i = 0; i < v.count; ++i)
       if (out[i] >= vertex_count)
-        fail(v.path, "index " + std::to_string(out[i]) + " (element " + std::to_string(i) + ") is out of range: the primitive has " +
-                         std::to_string(vertex_count) + " vertices");
+        fail(v.path, "index " + std::to_string(out[i]) + " (element " + std::to_string(i) +
+                         ") is out of range: the primitive has " + std::to_string(vertex_count) + " vertices");
     return out;
   }
   for (std::size_t i = 0; i < v.count; ++i) {
@@ -193,13 +208,18 @@ std::vector<std::uint32_t> AccessorReader::indices(int accessor, std::uint32_t v
       const unsigned char* p = v.data + i * v.stride;
       switch (v.component_type) {
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: index = *p; break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { std::uint16_t s; std::memcpy(&s, p, 2); index = s; break; }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+          std::uint16_t s;
+          std::memcpy(&s, p, 2);
+          index = s;
+          break;
+        }
         default: std::memcpy(&index, p, 4); break;
       }
     }
     if (index >= vertex_count)
-      fail(v.path, "index " + std::to_string(index) + " (element " + std::to_string(i) + ") is out of range: the primitive has " +
-                       std::to_string(vertex_count) + " vertices");
+      fail(v.path, "index " + std::to_string(index) + " (element " + std::to_string(i) +
+                       ") is out of range: the primitive has " + std::to_string(vertex_count) + " vertices");
     out[i] = index;
   }
   return out;

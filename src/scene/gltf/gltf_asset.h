@@ -26,7 +26,7 @@ struct GltfPlacement {
 };
 
 struct GltfCamera {
-  std::uint32_t node;    // nodes[node] places cameras[camera]
+  std::uint32_t node;  // nodes[node] places cameras[camera]
   std::uint32_t camera;
   Vec3 position;
   Vec3 forward;  // the node's -z
@@ -38,7 +38,7 @@ struct GltfCamera {
 struct GltfLight {
   enum class Kind : std::uint8_t { kPoint, kDirectional, kSpot };
   Kind kind;
-  std::uint32_t node;   // nodes[node] places extensions.KHR_lights_punctual.lights[light]
+  std::uint32_t node;  // nodes[node] places extensions.KHR_lights_punctual.lights[light]
   std::uint32_t light;
   Vec3 position;   // point and spot
   Vec3 direction;  // directional and spot: the direction light travels in (the node's -z)
@@ -57,9 +57,9 @@ struct GltfAsset {
   std::vector<TriangleMesh> meshes;
   std::vector<MaterialDesc> materials;  // one per glTF material, in file order
   std::vector<GltfPlacement> placements;
-  std::vector<GltfCamera> cameras;      // in node order
-  std::vector<GltfLight> lights;        // in node order
-  MeshLoadStats stats;                  // summed over all meshes, with the loader's warnings
+  std::vector<GltfCamera> cameras;  // in node order
+  std::vector<GltfLight> lights;    // in node order
+  MeshLoadStats stats;              // summed over all meshes, with the loader's warnings
 
   // The world bounds of every placed mesh; empty when nothing is placed.
   BBox bounds() const;

@@ -66,7 +66,8 @@ class TypeCheck {
     const auto asset = root.find("asset");
     if (asset == root.end() || !asset->is_object()) return;
     const auto version = asset->find("version");
-    if (version == asset->end() || !version->is_string() || version->get_ref<const std::string&>().rfind("2.", 0) != 0) return;
+    if (version == asset->end() || !version->is_string() || version->get_ref<const std::string&>().rfind("2.", 0) != 0)
+      return;
     for (const char* key : {"extensionsUsed", "extensionsRequired"}) elements(root, key, JsonKind::kString, key);
     member(root, "scene", JsonKind::kIndex, "scene");
     member(root, "asset", JsonKind::kObject, "asset");
@@ -76,19 +77,22 @@ class TypeCheck {
     each_object(root, "nodes", [&](const Json& node, const std::string& path) { this->node(node, path); });
     each_object(root, "meshes", [&](const Json& mesh, const std::string& path) { this->mesh(mesh, path); });
     each_object(root, "accessors", [&](const Json& accessor, const std::string& path) {
-      for (const char* key : {"bufferView", "byteOffset", "componentType", "count"}) member(accessor, key, JsonKind::kIndex, path + "." + key);
+      for (const char* key : {"bufferView", "byteOffset", "componentType", "count"})
+        member(accessor, key, JsonKind::kIndex, path + "." + key);
       member(accessor, "type", JsonKind::kString, path + ".type");
       member(accessor, "normalized", JsonKind::kBool, path + ".normalized");
       member(accessor, "sparse", JsonKind::kObject, path + ".sparse");
     });
     each_object(root, "bufferViews", [&](const Json& view, const std::string& path) {
-      for (const char* key : {"buffer", "byteOffset", "byteLength", "byteStride"}) member(view, key, JsonKind::kIndex, path + "." + key);
+      for (const char* key : {"buffer", "byteOffset", "byteLength", "byteStride"})
+        member(view, key, JsonKind::kIndex, path + "." + key);
     });
     each_object(root, "buffers", [&](const Json& buffer, const std::string& path) {
       member(buffer, "uri", JsonKind::kString, path + ".uri");
       member(buffer, "byteLength", JsonKind::kIndex, path + ".byteLength");
     });
-    each_object(root, "materials", [&](const Json& material, const std::string& path) { this->material(material, path); });
+    each_object(root, "materials",
+                [&](const Json& material, const std::string& path) { this->material(material, path); });
     each_object(root, "textures", [&](const Json& texture, const std::string& path) {
       member(texture, "source", JsonKind::kIndex, path + ".source");
       member(texture, "sampler", JsonKind::kIndex, path + ".sampler");
@@ -99,7 +103,8 @@ class TypeCheck {
       member(image, "bufferView", JsonKind::kIndex, path + ".bufferView");
     });
     each_object(root, "samplers", [&](const Json& sampler, const std::string& path) {
-      for (const char* key : {"magFilter", "minFilter", "wrapS", "wrapT"}) member(sampler, key, JsonKind::kIndex, path + "." + key);
+      for (const char* key : {"magFilter", "minFilter", "wrapS", "wrapT"})
+        member(sampler, key, JsonKind::kIndex, path + "." + key);
     });
     each_object(root, "cameras", [&](const Json& camera, const std::string& path) {
       member(camera, "type", JsonKind::kString, path + ".type");
@@ -144,7 +149,8 @@ class TypeCheck {
 
   // `extensions`: an object of objects, one per extension.
   void extensions(const Json& object, const std::string& path) {
-    const Json* all = member(object, "extensions", JsonKind::kObject, path == "extensions" ? path : path + ".extensions");
+    const Json* all =
+        member(object, "extensions", JsonKind::kObject, path == "extensions" ? path : path + ".extensions");
     if (!all) return;
     const std::string prefix = path == "extensions" ? path : path + ".extensions";
     for (const auto& [name, value] : all->items())
@@ -154,7 +160,8 @@ class TypeCheck {
   void node(const Json& node, const std::string& path) {
     elements(node, "children", JsonKind::kIndex, path + ".children");
     for (const char* key : {"mesh", "camera", "skin"}) member(node, key, JsonKind::kIndex, path + "." + key);
-    for (const char* key : {"matrix", "translation", "rotation", "scale", "weights"}) elements(node, key, JsonKind::kNumber, path + "." + key);
+    for (const char* key : {"matrix", "translation", "rotation", "scale", "weights"})
+      elements(node, key, JsonKind::kNumber, path + "." + key);
     extensions(node, path);
     if (const auto all = node.find("extensions"); all != node.end())
       if (const auto lights = all->find("KHR_lights_punctual"); lights != all->end())
@@ -162,14 +169,20 @@ class TypeCheck {
   }
 
   void mesh(const Json& mesh, const std::string& path) {
-    each_object(mesh, "primitives", [&](const Json& primitive, const std::string& primitive_path) {
-      if (const Json* attributes = member(primitive, "attributes", JsonKind::kObject, primitive_path + ".attributes"))
-        for (const auto& [name, value] : attributes->items())
-          if (!is_kind(value, JsonKind::kIndex)) fail(primitive_path + ".attributes." + ascii::printable(name, 100), value, JsonKind::kIndex);
-      for (const char* key : {"indices", "material", "mode"}) member(primitive, key, JsonKind::kIndex, primitive_path + "." + key);
-      member(primitive, "targets", JsonKind::kArray, primitive_path + ".targets");
-      extensions(primitive, primitive_path);
-    }, path);
+    each_object(
+        mesh, "primitives",
+        [&](const Json& primitive, const std::string& primitive_path) {
+          if (const Json* attributes =
+                  member(primitive, "attributes", JsonKind::kObject, primitive_path + ".attributes"))
+            for (const auto& [name, value] : attributes->items())
+              if (!is_kind(value, JsonKind::kIndex))
+                fail(primitive_path + ".attributes." + ascii::printable(name, 100), value, JsonKind::kIndex);
+          for (const char* key : {"indices", "material", "mode"})
+            member(primitive, key, JsonKind::kIndex, primitive_path + "." + key);
+          member(primitive, "targets", JsonKind::kArray, primitive_path + ".targets");
+          extensions(primitive, primitive_path);
+        },
+        path);
     elements(mesh, "weights", JsonKind::kNumber, path + ".weights");
   }
 
@@ -209,7 +222,8 @@ class TypeCheck {
   [[noreturn]] void fail(const std::string& path, const Json& found, JsonKind expected) const {
     std::string shown = found_name(found);
     if (shown.size() > 80) shown = shown.substr(0, 77) + "...";
-    throw InputError(SourceLocation{file_}, path + ": " + expected_name(expected) + " expected, found " + ascii::printable(shown, 100));
+    throw InputError(SourceLocation{file_},
+                     path + ": " + expected_name(expected) + " expected, found " + ascii::printable(shown, 100));
   }
 
   const std::string& file_;

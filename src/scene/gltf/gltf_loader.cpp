@@ -26,15 +26,15 @@ namespace fs = std::filesystem;
 namespace {
 
 // Extensions without which the geometry cannot be read at all.
-constexpr const char* kGeometryExtensions[] = {"KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_mesh_quantization"};
+constexpr const char* kGeometryExtensions[] = {"KHR_draco_mesh_compression", "EXT_meshopt_compression",
+                                               "KHR_mesh_quantization"};
 // Extensions rtpro reads. A file that requires any other is refused (the glTF specification: a
 // loader that does not support a required extension must not load the file); one that merely
 // uses another is read with a warning naming it. Of the material extensions, the factors are read
 // and their own textures are not (gltf_material.cpp warns about those).
-constexpr const char* kSupportedExtensions[] = {"KHR_lights_punctual",        "KHR_materials_emissive_strength",
-                                                "KHR_texture_transform",      "KHR_materials_ior",
-                                                "KHR_materials_specular",     "KHR_materials_transmission",
-                                                "KHR_materials_clearcoat",    "KHR_materials_sheen"};
+constexpr const char* kSupportedExtensions[] = {
+    "KHR_lights_punctual",    "KHR_materials_emissive_strength", "KHR_texture_transform",   "KHR_materials_ior",
+    "KHR_materials_specular", "KHR_materials_transmission",      "KHR_materials_clearcoat", "KHR_materials_sheen"};
 
 // Characters of a tinygltf message line shown.
 constexpr std::size_t kMaxTinygltfLine = 300;
@@ -134,11 +134,13 @@ std::string_view json_text(std::string_view bytes, bool binary) {
 }
 
 bool is_geometry_extension(const std::string& name) {
-  return std::find(std::begin(kGeometryExtensions), std::end(kGeometryExtensions), name) != std::end(kGeometryExtensions);
+  return std::find(std::begin(kGeometryExtensions), std::end(kGeometryExtensions), name) !=
+         std::end(kGeometryExtensions);
 }
 
 bool is_supported_extension(const std::string& name) {
-  return std::find(std::begin(kSupportedExtensions), std::end(kSupportedExtensions), name) != std::end(kSupportedExtensions);
+  return std::find(std::begin(kSupportedExtensions), std::end(kSupportedExtensions), name) !=
+         std::end(kSupportedExtensions);
 }
 
 // extensionsRequired: each one rtpro lacks refuses the file; extensionsUsed: each one it lacks is
@@ -148,8 +150,8 @@ void check_extensions(const tinygltf::Model& model, const std::string& name, std
   for (std::size_t i = 0; i < model.extensionsRequired.size(); ++i) {
     const std::string& required = model.extensionsRequired[i];
     if (!is_supported_extension(required))
-      throw InputError(where, "extensionsRequired[" + std::to_string(i) + "]: the file needs " + ascii::quoted(required) +
-                                  ", which rtpro does not support" +
+      throw InputError(where, "extensionsRequired[" + std::to_string(i) + "]: the file needs " +
+                                  ascii::quoted(required) + ", which rtpro does not support" +
                                   (is_geometry_extension(required) ? " (its meshes cannot be read without it)" : ""));
   }
   for (std::size_t i = 0; i < model.extensionsUsed.size(); ++i) {
@@ -177,7 +179,8 @@ std::string diagnose(std::string_view json_text, const Confinement& confinement,
   if (const auto required = json.find("extensionsRequired"); required != json.end() && required->is_array())
     for (std::size_t i = 0; i < required->size(); ++i)
       if ((*required)[i].is_string() && is_geometry_extension((*required)[i].get<std::string>()))
-        return "extensionsRequired[" + std::to_string(i) + "]: the file needs " + ascii::quoted((*required)[i].get<std::string>()) +
+        return "extensionsRequired[" + std::to_string(i) + "]: the file needs " +
+               ascii::quoted((*required)[i].get<std::string>()) +
                ", which rtpro does not support (its meshes cannot be read without it)";
   if (const auto buffers = json.find("buffers"); buffers != json.end() && buffers->is_array()) {
     for (std::size_t i = 0; i < buffers->size(); ++i) {
@@ -189,7 +192,8 @@ std::string diagnose(std::string_view json_text, const Confinement& confinement,
       const std::string where = "buffers[" + std::to_string(i) + "].uri: ";
       if (!inside(confinement, path)) return where + ascii::quoted(name) + " leads outside the glTF's folder";
       std::error_code error;
-      if (!fs::is_regular_file(path, error)) return where + ascii::quoted(name) + " not found (looked for '" + path + "')";
+      if (!fs::is_regular_file(path, error))
+        return where + ascii::quoted(name) + " not found (looked for '" + path + "')";
     }
   }
   return {};
@@ -199,19 +203,22 @@ tinygltf::Model parse(const fs::path& file, std::vector<std::string>& warnings, 
   const std::string name = file.string();
   const SourceLocation where{name};
   const MappedFile bytes(file);
-  if (bytes.size() >= (std::size_t(1) << 32)) throw InputError(where, "the file is 4 GiB or larger, beyond what glTF allows");
+  if (bytes.size() >= (std::size_t(1) << 32))
+    throw InputError(where, "the file is 4 GiB or larger, beyond what glTF allows");
   const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   if (binary && bytes.size() >= 8) {
     std::uint32_t version = 0;
     std::memcpy(&version, bytes.data() + 4, 4);
-    if (version != 2) throw InputError(where, "GLB container version " + std::to_string(version) + ": rtpro reads glTF 2.0 files only");
+    if (version != 2)
+      throw InputError(where, "GLB container version " + std::to_string(version) + ": rtpro reads glTF 2.0 files only");
   }
   if (json_depth(json_text(bytes.text(), binary), kMaxGltfJsonDepth) > kMaxGltfJsonDepth)
     throw InputError(where, "the JSON nests deeper than " + std::to_string(kMaxGltfJsonDepth) + " levels");
   gltf::check_json_types(json_text(bytes.text(), binary), name);
 
   std::error_code error;
-  Confinement confinement{fs::weakly_canonical(file.parent_path().empty() ? fs::path(".") : file.parent_path(), error), {}};
+  Confinement confinement{fs::weakly_canonical(file.parent_path().empty() ? fs::path(".") : file.parent_path(), error),
+                          {}};
   tinygltf::TinyGLTF gltf;
   gltf.SetImageLoader(keep_image_reference, nullptr);
   gltf.SetFsCallbacks({file_exists, expand_path, read_whole_file, write_whole_file, &confinement});
@@ -228,13 +235,15 @@ tinygltf::Model parse(const fs::path& file, std::vector<std::string>& warnings, 
     std::size_t begin = 0;
     while (begin < text.size()) {
       const std::size_t end = std::min(text.find('\n', begin), text.size());
-      if (end > begin) out.push_back(ascii::printable(std::string_view(text).substr(begin, end - begin), kMaxTinygltfLine));
+      if (end > begin)
+        out.push_back(ascii::printable(std::string_view(text).substr(begin, end - begin), kMaxTinygltfLine));
       begin = end + 1;
     }
     return out;
   };
   if (!ok) {
-    if (const std::string diagnosis = diagnose(json_text(bytes.text(), binary), confinement, file.parent_path()); !diagnosis.empty())
+    if (const std::string diagnosis = diagnose(json_text(bytes.text(), binary), confinement, file.parent_path());
+        !diagnosis.empty())
       throw InputError(where, diagnosis);
     std::string message;
     for (const std::string& line : lines(err)) message += (message.empty() ? "" : "; ") + line;
@@ -243,7 +252,8 @@ tinygltf::Model parse(const fs::path& file, std::vector<std::string>& warnings, 
   for (const std::string& line : lines(warn)) warnings.push_back(name + ": " + line);
   files_read = std::move(confinement.files_read);
   if (model.asset.version.rfind("2.", 0) != 0)
-    throw InputError(where, "asset.version: " + ascii::quoted(model.asset.version) + ": rtpro reads glTF 2.0 files only");
+    throw InputError(where,
+                     "asset.version: " + ascii::quoted(model.asset.version) + ": rtpro reads glTF 2.0 files only");
   check_extensions(model, name, warnings);
   return model;
 }

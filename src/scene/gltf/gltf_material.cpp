@@ -22,7 +22,8 @@ std::filesystem::path texture_path(const tinygltf::Model& model, int texture, co
   if (texture < 0) return {};
   if (std::size_t(texture) >= model.textures.size() || model.textures[std::size_t(texture)].source < 0 ||
       std::size_t(model.textures[std::size_t(texture)].source) >= model.images.size()) {
-    warnings.push_back(file.string() + ": " + where + ": texture " + std::to_string(texture) + " has no image; ignored");
+    warnings.push_back(file.string() + ": " + where + ": texture " + std::to_string(texture) +
+                       " has no image; ignored");
     return {};
   }
   const int source = model.textures[std::size_t(texture)].source;
@@ -33,10 +34,10 @@ std::filesystem::path texture_path(const tinygltf::Model& model, int texture, co
       return {};
     }
     // Stored inside the glTF: kept encoded, named with an extension OpenImageIO picks a reader by.
-    const std::string mime = !image.mimeType.empty() ? image.mimeType
-                                                     : image.uri.substr(5, image.uri.find(';') == std::string::npos
-                                                                               ? 0
-                                                                               : image.uri.find(';') - 5);
+    const std::string mime =
+        !image.mimeType.empty()
+            ? image.mimeType
+            : image.uri.substr(5, image.uri.find(';') == std::string::npos ? 0 : image.uri.find(';') - 5);
     const std::string extension = mime == "image/png" ? ".png" : mime == "image/jpeg" ? ".jpg" : ".img";
     *bytes = std::make_shared<const std::vector<unsigned char>>(image.image);
     return file.string() + "#images[" + std::to_string(source) + "]" + extension;
@@ -44,12 +45,14 @@ std::filesystem::path texture_path(const tinygltf::Model& model, int texture, co
   const std::filesystem::path relative(image.uri);
   const std::filesystem::path normal = relative.lexically_normal();
   if (relative.is_absolute() || normal.empty() || *normal.begin() == "..") {
-    warnings.push_back(file.string() + ": images[" + std::to_string(source) + "].uri leaves the glTF's folder; ignored");
+    warnings.push_back(file.string() + ": images[" + std::to_string(source) +
+                       "].uri leaves the glTF's folder; ignored");
     return {};
   }
   const std::filesystem::path path = file.parent_path() / normal;
   if (!resolves_inside(file.parent_path(), path))
-    throw InputError(SourceLocation{file.string()}, "images[" + std::to_string(source) + "].uri: " + ascii::quoted(image.uri) +
+    throw InputError(SourceLocation{file.string()}, "images[" + std::to_string(source) +
+                                                        "].uri: " + ascii::quoted(image.uri) +
                                                         " leads outside the glTF's folder (through a symbolic link)");
   return path;
 }
@@ -57,9 +60,9 @@ std::filesystem::path texture_path(const tinygltf::Model& model, int texture, co
 // A texture slot other than the base colour; nothing when the reference leads nowhere (a warning).
 // Data textures (metallic-roughness, normals) are decoded as "Raw", colour ones as sRGB, as the
 // glTF specification defines them.
-std::optional<TextureSlotDesc> texture_slot(const tinygltf::Model& model, int texture, const std::filesystem::path& file,
-                                            const std::string& where, const char* colorspace,
-                                            std::vector<std::string>& warnings) {
+std::optional<TextureSlotDesc> texture_slot(const tinygltf::Model& model, int texture,
+                                            const std::filesystem::path& file, const std::string& where,
+                                            const char* colorspace, std::vector<std::string>& warnings) {
   TextureSlotDesc slot;
   slot.file = texture_path(model, texture, file, where, warnings, &slot.bytes);
   if (slot.file.empty()) return std::nullopt;
@@ -72,7 +75,8 @@ std::optional<TextureSlotDesc> texture_slot(const tinygltf::Model& model, int te
 // (glTF renders its back faces as front faces with the normal flipped).
 void read_emission(const tinygltf::Material& m, MaterialDesc& desc) {
   if (m.emissiveFactor.size() != 3) return;
-  Color emission(clamped_unit(m.emissiveFactor[0]), clamped_unit(m.emissiveFactor[1]), clamped_unit(m.emissiveFactor[2]));
+  Color emission(clamped_unit(m.emissiveFactor[0]), clamped_unit(m.emissiveFactor[1]),
+                 clamped_unit(m.emissiveFactor[2]));
   if (const auto ext = m.extensions.find("KHR_materials_emissive_strength"); ext != m.extensions.end()) {
     const tinygltf::Value& strength = ext->second.Get("emissiveStrength");
     if (strength.IsNumber()) {
@@ -143,7 +147,8 @@ MaterialDesc read_material(const tinygltf::Model& model, int index, const std::f
   Color base(1.0f, 1.0f, 1.0f);
   float alpha = 1.0f;
   if (pbr.baseColorFactor.size() == 4) {
-    base = Color(clamped_unit(pbr.baseColorFactor[0]), clamped_unit(pbr.baseColorFactor[1]), clamped_unit(pbr.baseColorFactor[2]));
+    base = Color(clamped_unit(pbr.baseColorFactor[0]), clamped_unit(pbr.baseColorFactor[1]),
+                 clamped_unit(pbr.baseColorFactor[2]));
     alpha = clamped_unit(pbr.baseColorFactor[3]);
   }
   const float metallic = clamped_unit(pbr.metallicFactor);
@@ -153,10 +158,11 @@ MaterialDesc read_material(const tinygltf::Model& model, int index, const std::f
     if (ext.IsObject())
       for (const std::string& key : ext.Keys())
         if (key.size() > 7 && key.compare(key.size() - 7, 7, "Texture") == 0)
-          warnings.push_back(file.string() + ": " + path + ".extensions." + ascii::quoted(name) + "." + ascii::quoted(key) +
-                             " is not read; the factor alone is used");
+          warnings.push_back(file.string() + ": " + path + ".extensions." + ascii::quoted(name) + "." +
+                             ascii::quoted(key) + " is not read; the factor alone is used");
   if (m.extensions.count("KHR_materials_pbrSpecularGlossiness"))
-    warnings.push_back(file.string() + ": " + path + ": KHR_materials_pbrSpecularGlossiness is not read; using the metallic-roughness values");
+    warnings.push_back(file.string() + ": " + path +
+                       ": KHR_materials_pbrSpecularGlossiness is not read; using the metallic-roughness values");
 
   // The path integrator's principled model; the Whitted fields are worked out from it when the
   // render scene is built (build_render_scene.cpp, whitted_view_of_principled).
@@ -168,16 +174,17 @@ MaterialDesc read_material(const tinygltf::Model& model, int index, const std::f
   desc.principled.metalness = metallic;
   read_extensions(m, desc);
   desc.opacity = alpha;
-  desc.color_texture = texture_path(model, pbr.baseColorTexture.index, file, path + ".pbrMetallicRoughness.baseColorTexture",
-                                    warnings, &desc.texture_bytes);
+  desc.color_texture = texture_path(model, pbr.baseColorTexture.index, file,
+                                    path + ".pbrMetallicRoughness.baseColorTexture", warnings, &desc.texture_bytes);
   desc.texture_where = SourceLocation{file.string() + ": " + path + ".pbrMetallicRoughness.baseColorTexture"};
   read_emission(m, desc);
   desc.principled.metallic_roughness_texture =
-      texture_slot(model, pbr.metallicRoughnessTexture.index, file, path + ".pbrMetallicRoughness.metallicRoughnessTexture",
-                   "Raw", warnings);
+      texture_slot(model, pbr.metallicRoughnessTexture.index, file,
+                   path + ".pbrMetallicRoughness.metallicRoughnessTexture", "Raw", warnings);
   desc.principled.normal_texture =
       texture_slot(model, m.normalTexture.index, file, path + ".normalTexture", "Raw", warnings);
-  desc.principled.normal_scale = std::isfinite(m.normalTexture.scale) ? static_cast<float>(m.normalTexture.scale) : 1.0f;
+  desc.principled.normal_scale =
+      std::isfinite(m.normalTexture.scale) ? static_cast<float>(m.normalTexture.scale) : 1.0f;
   if (desc.emission != Color(0.0f))
     desc.emission_texture =
         texture_slot(model, m.emissiveTexture.index, file, path + ".emissiveTexture", "sRGB - Texture", warnings);

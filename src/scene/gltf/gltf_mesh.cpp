@@ -40,7 +40,8 @@ std::vector<TriangleIndices> triangles_of(int mode, const std::vector<std::uint3
 }
 
 bool all_nonzero(const std::vector<Vec3>& normals) {
-  return std::all_of(normals.begin(), normals.end(), [](const Vec3& n) { return is_finite(n) && (n.x != 0.0f || n.y != 0.0f || n.z != 0.0f); });
+  return std::all_of(normals.begin(), normals.end(),
+                     [](const Vec3& n) { return is_finite(n) && (n.x != 0.0f || n.y != 0.0f || n.z != 0.0f); });
 }
 
 // A primitive's data before it joins the mesh.
@@ -56,12 +57,14 @@ class MeshBuilder {
  public:
   MeshBuilder(const tinygltf::Model& model, int mesh, const AccessorReader& reader, const MeshLoadOptions& options,
               const std::vector<UvMapping>& uv_mappings, MeshLoadStats& stats)
-      : model_(model), mesh_index_(mesh), reader_(reader), options_(options), uv_mappings_(uv_mappings), stats_(stats) {}
+      : model_(model), mesh_index_(mesh), reader_(reader), options_(options), uv_mappings_(uv_mappings), stats_(stats) {
+  }
 
   TriangleMesh build() {
     const tinygltf::Mesh& mesh = model_.meshes[std::size_t(mesh_index_)];
     const std::string path = "meshes[" + std::to_string(mesh_index_) + "]";
-    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) read_primitive(mesh.primitives[p], path + ".primitives[" + std::to_string(p) + "]");
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+      read_primitive(mesh.primitives[p], path + ".primitives[" + std::to_string(p) + "]");
     out_.name = mesh.name.empty() ? path : mesh.name;
     finish();
     return std::move(out_);
@@ -102,30 +105,35 @@ class MeshBuilder {
     p.triangles.erase(kept_end, p.triangles.end());
     stats_.faces += p.triangles.size();
     if (const auto n = prim.attributes.find("NORMAL"); n != prim.attributes.end()) {
-      p.normals = read_sized(reader_.normals(n->second, path + ".attributes.NORMAL"), vertex_count, path + ".attributes.NORMAL");
+      p.normals = read_sized(reader_.normals(n->second, path + ".attributes.NORMAL"), vertex_count,
+                             path + ".attributes.NORMAL");
       if (!all_nonzero(p.normals)) {
-        stats_.warnings.push_back(file() + ": " + path + ".attributes.NORMAL has zero-length normals; that primitive is flat");
+        stats_.warnings.push_back(file() + ": " + path +
+                                  ".attributes.NORMAL has zero-length normals; that primitive is flat");
         p.normals.clear();
       }
     }
     const UvMapping mapping = prim.material >= 0 ? uv_mappings_[std::size_t(prim.material)] : UvMapping{};
     const std::string uv_name = "TEXCOORD_" + std::to_string(mapping.set);
     if (const auto uv = prim.attributes.find(uv_name); uv != prim.attributes.end()) {
-      p.uvs = read_sized(reader_.texcoords(uv->second, path + ".attributes." + uv_name), vertex_count, path + ".attributes." + uv_name);
+      p.uvs = read_sized(reader_.texcoords(uv->second, path + ".attributes." + uv_name), vertex_count,
+                         path + ".attributes." + uv_name);
       apply_uv_mapping(mapping, p.uvs);
     } else if (mapping.set != 0 && prim.attributes.count("TEXCOORD_0")) {
       stats_.warnings.push_back(file() + ": " + path + ": its material's textures read " + uv_name +
                                 ", which the primitive lacks; its textures show their corner (0, 0)");
     }
     if (const auto c = prim.attributes.find("COLOR_0"); c != prim.attributes.end())
-      p.colors = read_sized(reader_.colors(c->second, path + ".attributes.COLOR_0"), vertex_count, path + ".attributes.COLOR_0");
+      p.colors = read_sized(reader_.colors(c->second, path + ".attributes.COLOR_0"), vertex_count,
+                            path + ".attributes.COLOR_0");
     primitives_.push_back(std::move(p));
   }
 
   // The glTF specification's counts: a multiple of 3 for TRIANGLES, at least 3 for strips and fans.
   void check_corner_count(int mode, std::size_t count, const std::string& path) const {
     if (mode == TINYGLTF_MODE_TRIANGLES && count % 3 != 0)
-      reader_.fail(path, std::to_string(count) + " corners for TRIANGLES, not a multiple of 3 (a truncated or wrong array)");
+      reader_.fail(path,
+                   std::to_string(count) + " corners for TRIANGLES, not a multiple of 3 (a truncated or wrong array)");
     if (mode != TINYGLTF_MODE_TRIANGLES && count > 0 && count < 3)
       reader_.fail(path, std::to_string(count) + " corners for a strip or fan, which needs at least 3");
   }
@@ -141,18 +149,24 @@ class MeshBuilder {
   // vertices of their own when the mesh needs normals for its other primitives.
   void finish() {
     const bool file_normals = options_.normals == NormalsMode::kAuto || options_.normals == NormalsMode::kFile;
-    const bool any_normals = file_normals && std::any_of(primitives_.begin(), primitives_.end(), [](const Primitive& p) { return !p.normals.empty(); });
-    if (options_.normals == NormalsMode::kFile && std::any_of(primitives_.begin(), primitives_.end(), [](const Primitive& p) { return p.normals.empty(); }))
-      throw InputError(SourceLocation{file()}, "normals: file, but meshes[" + std::to_string(mesh_index_) + "] has primitives without usable NORMAL");
-    const bool any_uvs = std::any_of(primitives_.begin(), primitives_.end(), [](const Primitive& p) { return !p.uvs.empty(); });
-    const bool any_colors = std::any_of(primitives_.begin(), primitives_.end(), [](const Primitive& p) { return !p.colors.empty(); });
+    const bool any_normals = file_normals && std::any_of(primitives_.begin(), primitives_.end(),
+                                                         [](const Primitive& p) { return !p.normals.empty(); });
+    if (options_.normals == NormalsMode::kFile &&
+        std::any_of(primitives_.begin(), primitives_.end(), [](const Primitive& p) { return p.normals.empty(); }))
+      throw InputError(SourceLocation{file()}, "normals: file, but meshes[" + std::to_string(mesh_index_) +
+                                                   "] has primitives without usable NORMAL");
+    const bool any_uvs =
+        std::any_of(primitives_.begin(), primitives_.end(), [](const Primitive& p) { return !p.uvs.empty(); });
+    const bool any_colors =
+        std::any_of(primitives_.begin(), primitives_.end(), [](const Primitive& p) { return !p.colors.empty(); });
     std::size_t vertices = 0, triangles = 0;
     for (const Primitive& p : primitives_) {
       vertices += any_normals && p.normals.empty() ? 3 * p.triangles.size() : p.positions.size();
       triangles += p.triangles.size();
     }
     if (vertices > kMaxMeshElements || triangles > kMaxMeshElements)
-      throw InputError(SourceLocation{file()}, "meshes[" + std::to_string(mesh_index_) + "] has more than 2^32 - 2 vertices or triangles");
+      throw InputError(SourceLocation{file()},
+                       "meshes[" + std::to_string(mesh_index_) + "] has more than 2^32 - 2 vertices or triangles");
     reserve_large(out_.vertices, vertices);
     reserve_large(out_.triangles, triangles);
     if (any_normals) reserve_large(out_.normals, vertices);
@@ -175,7 +189,8 @@ class MeshBuilder {
   void append_shared(const Primitive& p, bool normals, bool uvs, bool colors) {
     const auto base = std::uint32_t(out_.vertices.size());
     for (const Vec3& v : p.positions) out_.vertices.push_back({v.x, v.y, v.z, 0.0f});
-    if (normals) for (const Vec3& n : p.normals) out_.normals.push_back(unit_or(n, Vec3(0, 0, 1)));
+    if (normals)
+      for (const Vec3& n : p.normals) out_.normals.push_back(unit_or(n, Vec3(0, 0, 1)));
     if (uvs) append_or_fill(out_.uvs, p.uvs, p.positions.size(), TexCoord{0.0f, 0.0f});
     if (colors) append_or_fill(out_.colors, p.colors, p.positions.size(), Color(1.0f, 1.0f, 1.0f));
     for (const TriangleIndices& t : p.triangles) out_.triangles.push_back({base + t.v0, base + t.v1, base + t.v2});
@@ -184,7 +199,8 @@ class MeshBuilder {
   void append_flat(const Primitive& p, bool uvs, bool colors) {
     for (const TriangleIndices& t : p.triangles) {
       const auto base = std::uint32_t(out_.vertices.size());
-      const Vec3 face = unit_or(cross(p.positions[t.v1] - p.positions[t.v0], p.positions[t.v2] - p.positions[t.v0]), Vec3(0, 0, 1));
+      const Vec3 face =
+          unit_or(cross(p.positions[t.v1] - p.positions[t.v0], p.positions[t.v2] - p.positions[t.v0]), Vec3(0, 0, 1));
       for (const std::uint32_t v : {t.v0, t.v1, t.v2}) {
         out_.vertices.push_back({p.positions[v].x, p.positions[v].y, p.positions[v].z, 0.0f});
         out_.normals.push_back(face);
@@ -216,8 +232,9 @@ class MeshBuilder {
 
 }  // namespace
 
-TriangleMesh read_mesh(const tinygltf::Model& model, int mesh, const AccessorReader& reader, const MeshLoadOptions& options,
-                       const std::vector<UvMapping>& uv_mappings, MeshLoadStats& stats) {
+TriangleMesh read_mesh(const tinygltf::Model& model, int mesh, const AccessorReader& reader,
+                       const MeshLoadOptions& options, const std::vector<UvMapping>& uv_mappings,
+                       MeshLoadStats& stats) {
   return MeshBuilder(model, mesh, reader, options, uv_mappings, stats).build();
 }
 

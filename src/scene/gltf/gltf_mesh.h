@@ -25,7 +25,7 @@
 namespace rtpro::gltf {
 
 // `uv_mappings`: one per material of the model (gltf_uv_mapping.h).
-TriangleMesh read_mesh(const tinygltf::Model& model, int mesh, const AccessorReader& reader, const MeshLoadOptions& options,
-                       const std::vector<UvMapping>& uv_mappings, MeshLoadStats& stats);
+TriangleMesh read_mesh(const tinygltf::Model& model, int mesh, const AccessorReader& reader,
+                       const MeshLoadOptions& options, const std::vector<UvMapping>& uv_mappings, MeshLoadStats& stats);
 
 }  // namespace rtpro::gltf

@@ -28,7 +28,8 @@ bool all_finite(const std::vector<double>& values) {
 Affine local_transform(const tinygltf::Node& node, int index, const AccessorReader& reader) {
   const std::string path = node_path(index);
   if (!node.matrix.empty()) {
-    if (node.matrix.size() != 16 || !all_finite(node.matrix)) reader.fail(path + ".matrix", "needs 16 finite numbers (magnitude <= 1e9)");
+    if (node.matrix.size() != 16 || !all_finite(node.matrix))
+      reader.fail(path + ".matrix", "needs 16 finite numbers (magnitude <= 1e9)");
     const auto& c = node.matrix;  // column-major: element (row r, column k) is c[4k + r]
     if (c[3] != 0.0 || c[7] != 0.0 || c[11] != 0.0 || c[15] != 1.0)
       reader.fail(path + ".matrix", "is not affine: its last row must be 0 0 0 1");
@@ -43,7 +44,8 @@ Affine local_transform(const tinygltf::Node& node, int index, const AccessorRead
     t = Affine::scale(Vec3(float(node.scale[0]), float(node.scale[1]), float(node.scale[2])));
   }
   if (!node.rotation.empty()) {
-    if (node.rotation.size() != 4 || !all_finite(node.rotation)) reader.fail(path + ".rotation", "needs 4 finite numbers (x, y, z, w)");
+    if (node.rotation.size() != 4 || !all_finite(node.rotation))
+      reader.fail(path + ".rotation", "needs 4 finite numbers (x, y, z, w)");
     double x = node.rotation[0], y = node.rotation[1], z = node.rotation[2], w = node.rotation[3];
     const double norm = std::sqrt(x * x + y * y + z * z + w * w);
     if (!(norm > 0.0)) reader.fail(path + ".rotation", "is a zero quaternion");
@@ -55,8 +57,10 @@ Affine local_transform(const tinygltf::Node& node, int index, const AccessorRead
     t = compose(r, t);
   }
   if (!node.translation.empty()) {
-    if (node.translation.size() != 3 || !all_finite(node.translation)) reader.fail(path + ".translation", "needs 3 finite numbers");
-    t = compose(Affine::translate(Vec3(float(node.translation[0]), float(node.translation[1]), float(node.translation[2]))), t);
+    if (node.translation.size() != 3 || !all_finite(node.translation))
+      reader.fail(path + ".translation", "needs 3 finite numbers");
+    t = compose(
+        Affine::translate(Vec3(float(node.translation[0]), float(node.translation[1]), float(node.translation[2]))), t);
   }
   return t;
 }
@@ -92,10 +96,11 @@ class NodeWalker {
       for (std::size_t c = 0; c < children.size(); ++c) {
         const std::string path = node_path(int(n)) + ".children[" + std::to_string(c) + "]";
         const int child = children[c];
-        if (child < 0 || std::size_t(child) >= model_.nodes.size()) reader_.fail(path, "node " + std::to_string(child) + " does not exist");
+        if (child < 0 || std::size_t(child) >= model_.nodes.size())
+          reader_.fail(path, "node " + std::to_string(child) + " does not exist");
         if (parent_[std::size_t(child)] != kNone)
-          reader_.fail(path, "node " + std::to_string(child) + " already has a parent (" + node_path(int(parent_[std::size_t(child)])) +
-                                 "); glTF nodes form trees");
+          reader_.fail(path, "node " + std::to_string(child) + " already has a parent (" +
+                                 node_path(int(parent_[std::size_t(child)])) + "); glTF nodes form trees");
         parent_[std::size_t(child)] = n;
       }
     }
@@ -130,18 +135,23 @@ class NodeWalker {
     if (model_.scenes.empty()) {
       for (std::size_t n = 0; n < model_.nodes.size(); ++n)
         if (parent_[n] == kNone) roots.push_back(int(n));
-      if (!roots.empty()) asset_.stats.warnings.push_back(reader_.file() + ": the file has no scenes; every root node is placed");
+      if (!roots.empty())
+        asset_.stats.warnings.push_back(reader_.file() + ": the file has no scenes; every root node is placed");
       return roots;
     }
     const int scene = model_.defaultScene >= 0 ? model_.defaultScene : 0;
-    if (std::size_t(scene) >= model_.scenes.size()) reader_.fail("scene", "scene " + std::to_string(scene) + " does not exist");
+    if (std::size_t(scene) >= model_.scenes.size())
+      reader_.fail("scene", "scene " + std::to_string(scene) + " does not exist");
     std::vector<bool> listed(model_.nodes.size(), false);
     const std::vector<int>& nodes = model_.scenes[std::size_t(scene)].nodes;
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       const std::string path = "scenes[" + std::to_string(scene) + "].nodes[" + std::to_string(i) + "]";
       const int node = nodes[i];
-      if (node < 0 || std::size_t(node) >= model_.nodes.size()) reader_.fail(path, "node " + std::to_string(node) + " does not exist");
-      if (parent_[std::size_t(node)] != kNone) reader_.fail(path, "node " + std::to_string(node) + " is not a root: it is a child of " + node_path(int(parent_[std::size_t(node)])));
+      if (node < 0 || std::size_t(node) >= model_.nodes.size())
+        reader_.fail(path, "node " + std::to_string(node) + " does not exist");
+      if (parent_[std::size_t(node)] != kNone)
+        reader_.fail(path, "node " + std::to_string(node) + " is not a root: it is a child of " +
+                               node_path(int(parent_[std::size_t(node)])));
       if (listed[std::size_t(node)]) reader_.fail(path, "node " + std::to_string(node) + " is listed twice");
       listed[std::size_t(node)] = true;
       roots.push_back(node);
@@ -173,8 +183,10 @@ class NodeWalker {
       const std::size_t c = frame.next_child++;
       const int child = node.children[c];
       const std::string path = node_path(frame.node) + ".children[" + std::to_string(c) + "]";
-      if (on_path[std::size_t(child)]) reader_.fail(path, "node " + std::to_string(child) + " is its own ancestor (a cycle)");
-      if (stack.size() >= kMaxGltfNodeDepth) reader_.fail(path, "nodes nest deeper than " + std::to_string(kMaxGltfNodeDepth) + " levels");
+      if (on_path[std::size_t(child)])
+        reader_.fail(path, "node " + std::to_string(child) + " is its own ancestor (a cycle)");
+      if (stack.size() >= kMaxGltfNodeDepth)
+        reader_.fail(path, "nodes nest deeper than " + std::to_string(kMaxGltfNodeDepth) + " levels");
       const Affine world = compose(frame.world, local_transform(model_.nodes[std::size_t(child)], child, reader_));
       on_path[std::size_t(child)] = true;
       stack.push_back({child, world, 0});
@@ -187,7 +199,8 @@ class NodeWalker {
     const std::string path = node_path(index);
     const bool invertible = inverse(world).has_value();
     if (node.mesh >= 0) {
-      if (std::size_t(node.mesh) >= model_.meshes.size()) reader_.fail(path + ".mesh", "mesh " + std::to_string(node.mesh) + " does not exist");
+      if (std::size_t(node.mesh) >= model_.meshes.size())
+        reader_.fail(path + ".mesh", "mesh " + std::to_string(node.mesh) + " does not exist");
       if (invertible) asset_.placements.push_back({std::uint32_t(node.mesh), std::uint32_t(index), world});
       else ++singular_;
     }
@@ -198,17 +211,19 @@ class NodeWalker {
 
   void add_camera(const tinygltf::Node& node, int index, const Affine& world) {
     const std::string path = node_path(index);
-    if (std::size_t(node.camera) >= model_.cameras.size()) reader_.fail(path + ".camera", "camera " + std::to_string(node.camera) + " does not exist");
+    if (std::size_t(node.camera) >= model_.cameras.size())
+      reader_.fail(path + ".camera", "camera " + std::to_string(node.camera) + " does not exist");
     const tinygltf::Camera& camera = model_.cameras[std::size_t(node.camera)];
     if (camera.type != "perspective") {
-      asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) + "]: " + ascii::quoted(camera.type) +
-                                      " cameras are not supported; skipped");
+      asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) +
+                                      "]: " + ascii::quoted(camera.type) + " cameras are not supported; skipped");
       return;
     }
     const double yfov = camera.perspective.yfov * kRadiansToDegrees;
     const Vec3 forward = world.apply_vector(Vec3(0, 0, -1)), up = world.apply_vector(Vec3(0, 1, 0));
     if (!(yfov > 0.0 && yfov < 180.0) || !(length(forward) > 0.0f) || !(length(cross(forward, up)) > 0.0f)) {
-      asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) + "]: unusable field of view or placement; skipped");
+      asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) +
+                                      "]: unusable field of view or placement; skipped");
       return;
     }
     // The image is 640 pixels wide and as high as the aspect ratio makes it (0.0011 would make it
@@ -217,17 +232,19 @@ class NodeWalker {
     if (!std::isfinite(aspect) || aspect < 0.0) aspect = 0.0;  // none: the default size
     if (aspect > 0.0 && (aspect < kMinCameraAspect || aspect > kMaxCameraAspect)) {
       const double clamped = std::clamp(aspect, kMinCameraAspect, kMaxCameraAspect);
-      asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) + "].perspective.aspectRatio " +
-                                      std::to_string(aspect) + " is outside 1/16..16; " + std::to_string(clamped) + " is used");
+      asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) +
+                                      "].perspective.aspectRatio " + std::to_string(aspect) + " is outside 1/16..16; " +
+                                      std::to_string(clamped) + " is used");
       aspect = clamped;
     }
-    asset_.cameras.push_back({std::uint32_t(index), std::uint32_t(node.camera), world.apply_point(Vec3(0, 0, 0)), normalize(forward),
-                              normalize(up), float(yfov), float(aspect)});
+    asset_.cameras.push_back({std::uint32_t(index), std::uint32_t(node.camera), world.apply_point(Vec3(0, 0, 0)),
+                              normalize(forward), normalize(up), float(yfov), float(aspect)});
   }
 
   void add_light(int index, int node, const Affine& world) {
     const std::string where = node_path(node) + ".extensions.KHR_lights_punctual.light";
-    if (index < 0 || std::size_t(index) >= model_.lights.size()) reader_.fail(where, "light " + std::to_string(index) + " does not exist");
+    if (index < 0 || std::size_t(index) >= model_.lights.size())
+      reader_.fail(where, "light " + std::to_string(index) + " does not exist");
     const tinygltf::Light& light = model_.lights[std::size_t(index)];
     GltfLight out{};
     out.node = std::uint32_t(node);
@@ -235,14 +252,19 @@ class NodeWalker {
     if (light.type == "point") out.kind = GltfLight::Kind::kPoint;
     else if (light.type == "directional") out.kind = GltfLight::Kind::kDirectional;
     else if (light.type == "spot") out.kind = GltfLight::Kind::kSpot;
-    else reader_.fail("extensions.KHR_lights_punctual.lights[" + std::to_string(index) + "].type", "unknown light type " + ascii::quoted(light.type));
+    else
+      reader_.fail("extensions.KHR_lights_punctual.lights[" + std::to_string(index) + "].type",
+                   "unknown light type " + ascii::quoted(light.type));
     out.position = world.apply_point(Vec3(0, 0, 0));
     const Vec3 direction = world.apply_vector(Vec3(0, 0, -1));
     out.direction = length(direction) > 0.0f ? normalize(direction) : Vec3(0, -1, 0);
     out.color = Color(1.0f, 1.0f, 1.0f);
     if (light.color.size() == 3 && all_finite(light.color))
-      out.color = Color(float(std::max(light.color[0], 0.0)), float(std::max(light.color[1], 0.0)), float(std::max(light.color[2], 0.0)));
-    out.intensity = std::isfinite(light.intensity) && light.intensity >= 0.0 && light.intensity <= 1e9 ? float(light.intensity) : 0.0f;
+      out.color = Color(float(std::max(light.color[0], 0.0)), float(std::max(light.color[1], 0.0)),
+                        float(std::max(light.color[2], 0.0)));
+    out.intensity = std::isfinite(light.intensity) && light.intensity >= 0.0 && light.intensity <= 1e9
+                        ? float(light.intensity)
+                        : 0.0f;
     if (out.kind == GltfLight::Kind::kSpot) read_spot_cone(light.spot, index, out);
     asset_.lights.push_back(out);
   }
@@ -256,7 +278,8 @@ class NodeWalker {
       reader_.fail(path + "outerConeAngle", "is " + std::to_string(outer) + "; it must be > 0 and at most π/2 radians");
     out.outer_cone_angle = float(std::min(outer, kHalfPi));
     if (!(inner >= 0.0 && inner <= outer + kConeAngleSlack))
-      reader_.fail(path + "innerConeAngle", "is " + std::to_string(inner) + "; it must be >= 0 and at most outerConeAngle (" +
+      reader_.fail(path + "innerConeAngle", "is " + std::to_string(inner) +
+                                                "; it must be >= 0 and at most outerConeAngle (" +
                                                 std::to_string(outer) + ")");
     out.inner_cone_angle = std::min(float(inner), out.outer_cone_angle);
   }

@@ -35,8 +35,10 @@ std::array<double, 2> pair_of(const tinygltf::Value& object, const char* key, st
                               const std::string& path, const std::string& file) {
   if (!object.Has(key)) return fallback;
   const tinygltf::Value& value = object.Get(key);
-  if (!value.IsArray() || value.ArrayLen() != 2) throw InputError(SourceLocation{file}, path + "." + key + ": an array of 2 numbers expected");
-  return {finite_number(value.Get(0), path + "." + key + "[0]", file), finite_number(value.Get(1), path + "." + key + "[1]", file)};
+  if (!value.IsArray() || value.ArrayLen() != 2)
+    throw InputError(SourceLocation{file}, path + "." + key + ": an array of 2 numbers expected");
+  return {finite_number(value.Get(0), path + "." + key + "[0]", file),
+          finite_number(value.Get(1), path + "." + key + "[1]", file)};
 }
 
 // The slot's mapping: its texCoord, and the transform of its KHR_texture_transform.
@@ -49,10 +51,12 @@ UvMapping slot_mapping(const TextureSlotRef& slot, const std::string& file) {
   const std::string path = slot.path + ".extensions." + kTextureTransform;
   const std::array<double, 2> offset = pair_of(transform, "offset", {0.0, 0.0}, path, file);
   const std::array<double, 2> scale = pair_of(transform, "scale", {1.0, 1.0}, path, file);
-  const double rotation = transform.Has("rotation") ? finite_number(transform.Get("rotation"), path + ".rotation", file) : 0.0;
+  const double rotation =
+      transform.Has("rotation") ? finite_number(transform.Get("rotation"), path + ".rotation", file) : 0.0;
   if (transform.Has("texCoord")) {
     const tinygltf::Value& set = transform.Get("texCoord");
-    if (!set.IsInt() || set.Get<int>() < 0) throw InputError(SourceLocation{file}, path + ".texCoord: a non-negative integer expected");
+    if (!set.IsInt() || set.Get<int>() < 0)
+      throw InputError(SourceLocation{file}, path + ".texCoord: a non-negative integer expected");
     mapping.set = set.Get<int>();
   }
   // The extension's matrix: translation × rotation × scale, rotation counter-clockwise in
@@ -69,15 +73,17 @@ bool same(const UvMapping& a, const UvMapping& b) {
 
 }  // namespace
 
-UvMapping uv_mapping(const tinygltf::Model& model, int material, const std::string& file, std::vector<std::string>& warnings) {
+UvMapping uv_mapping(const tinygltf::Model& model, int material, const std::string& file,
+                     std::vector<std::string>& warnings) {
   if (material < 0 || std::size_t(material) >= model.materials.size()) return {};
   const tinygltf::Material& m = model.materials[std::size_t(material)];
   const std::string path = "materials[" + std::to_string(material) + "]";
   const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
   const TextureSlotRef slots[] = {
-      {path + ".pbrMetallicRoughness.baseColorTexture", pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, &pbr.baseColorTexture.extensions},
-      {path + ".pbrMetallicRoughness.metallicRoughnessTexture", pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-       &pbr.metallicRoughnessTexture.extensions},
+      {path + ".pbrMetallicRoughness.baseColorTexture", pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+       &pbr.baseColorTexture.extensions},
+      {path + ".pbrMetallicRoughness.metallicRoughnessTexture", pbr.metallicRoughnessTexture.index,
+       pbr.metallicRoughnessTexture.texCoord, &pbr.metallicRoughnessTexture.extensions},
       {path + ".normalTexture", m.normalTexture.index, m.normalTexture.texCoord, &m.normalTexture.extensions},
       {path + ".emissiveTexture", m.emissiveTexture.index, m.emissiveTexture.texCoord, &m.emissiveTexture.extensions},
   };
@@ -90,8 +96,9 @@ UvMapping uv_mapping(const tinygltf::Model& model, int material, const std::stri
       chosen = mapping;
       chosen_path = slot.path;
     } else if (!same(mapping, *chosen)) {
-      warnings.push_back(file + ": " + slot.path + " uses other texture coordinates (texCoord or KHR_texture_transform) than " +
-                         chosen_path + "; rtpro maps all of a material's textures the same way, as " + chosen_path);
+      warnings.push_back(file + ": " + slot.path +
+                         " uses other texture coordinates (texCoord or KHR_texture_transform) than " + chosen_path +
+                         "; rtpro maps all of a material's textures the same way, as " + chosen_path);
     }
   }
   return chosen.value_or(UvMapping{});

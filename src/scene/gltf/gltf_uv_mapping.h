@@ -23,7 +23,8 @@ struct UvMapping {
 
 // The mapping of model.materials[material] (the default one for a negative index); warnings name
 // the material's slots that disagree with it.
-UvMapping uv_mapping(const tinygltf::Model& model, int material, const std::string& file, std::vector<std::string>& warnings);
+UvMapping uv_mapping(const tinygltf::Model& model, int material, const std::string& file,
+                     std::vector<std::string>& warnings);
 
 // Applies `mapping` to coordinates in rtpro's convention (v flipped from glTF's, see
 // gltf_accessor.h).

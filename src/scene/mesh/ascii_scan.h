@@ -49,8 +49,10 @@ inline constexpr std::size_t kMaxQuotedBytes = 64;
 inline std::size_t utf8_sequence_length(std::string_view text) {
   const auto lead = static_cast<unsigned char>(text[0]);
   if (lead >= 0x20 && lead < 0x7f) return 1;
-  const std::size_t length = lead >= 0xc2 && lead <= 0xdf ? 2 : lead >= 0xe0 && lead <= 0xef ? 3
-                             : lead >= 0xf0 && lead <= 0xf4 ? 4 : 0;
+  const std::size_t length = lead >= 0xc2 && lead <= 0xdf   ? 2
+                             : lead >= 0xe0 && lead <= 0xef ? 3
+                             : lead >= 0xf0 && lead <= 0xf4 ? 4
+                                                            : 0;
   if (length == 0 || text.size() < length) return 0;
   for (std::size_t k = 1; k < length; ++k)
     if ((static_cast<unsigned char>(text[k]) & 0xc0) != 0x80) return 0;
@@ -116,9 +118,9 @@ inline int leading_digits(std::uint64_t word) {
 
 // The value of the first n (1..8) digits of `word`.
 inline std::uint32_t digits_value(std::uint64_t word, int n) {
-  std::uint64_t t = (word ^ (kOnes * '0')) << (8 * (8 - n));  // leading zeros replace later bytes
-  t = (t * (10 * 256 + 1)) >> 8 & 0x00FF00FF00FF00FFull;       // pairs of digits
-  t = (t * (100 * 65536 + 1)) >> 16 & 0x0000FFFF0000FFFFull;   // groups of four
+  std::uint64_t t = (word ^ (kOnes * '0')) << (8 * (8 - n));     // leading zeros replace later bytes
+  t = (t * (10 * 256 + 1)) >> 8 & 0x00FF00FF00FF00FFull;         // pairs of digits
+  t = (t * (100 * 65536 + 1)) >> 16 & 0x0000FFFF0000FFFFull;     // groups of four
   return std::uint32_t((t * (10000 * (1ull << 32) + 1)) >> 32);  // all eight
 }
 
@@ -130,7 +132,8 @@ inline const char* find_line_end(const char* p, const char* end) {
   const __m128i newline = _mm_set1_epi8('\n');
   for (; end - p >= 16; p += 16) {
     const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
-    if (const unsigned mask = unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(bytes, newline)))) return p + std::countr_zero(mask);
+    if (const unsigned mask = unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(bytes, newline))))
+      return p + std::countr_zero(mask);
   }
 #else
   if constexpr (swar::kAvailable) {
@@ -166,9 +169,8 @@ inline void for_each_newline(const char* p, const char* end, Visit&& visit) {
     if (*p == '\n') visit(p);
 }
 
-inline constexpr std::uint64_t kPowersOf10[] = {1,         10,         100,         1000,        10000,
-                                                100000,    1000000,    10000000,    100000000,   1000000000,
-                                                10000000000ull};
+inline constexpr std::uint64_t kPowersOf10[] = {1,       10,       100,       1000,       10000,         100000,
+                                                1000000, 10000000, 100000000, 1000000000, 10000000000ull};
 
 // Up to 18 decimal digits at p into `value` (so it cannot overflow); returns the number read,
 // or -1 past 18.

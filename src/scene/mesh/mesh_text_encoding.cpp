@@ -24,8 +24,10 @@ std::optional<std::string> wide_text_encoding(std::string_view bytes) {
   const std::string_view head = bytes.substr(0, 64);
   const auto nuls = std::count(head.begin(), head.end(), '\0');
   if (nuls == 0 || head.size() < 4) return std::nullopt;
-  if (nuls * 4 >= std::ptrdiff_t(head.size()) * 3 - 4) return head[0] == '\0' ? "UTF-32 (big-endian)" : "UTF-32 (little-endian)";
-  if (nuls * 2 >= std::ptrdiff_t(head.size()) - 2) return head[0] == '\0' ? "UTF-16 (big-endian)" : "UTF-16 (little-endian)";
+  if (nuls * 4 >= std::ptrdiff_t(head.size()) * 3 - 4)
+    return head[0] == '\0' ? "UTF-32 (big-endian)" : "UTF-32 (little-endian)";
+  if (nuls * 2 >= std::ptrdiff_t(head.size()) - 2)
+    return head[0] == '\0' ? "UTF-16 (big-endian)" : "UTF-16 (little-endian)";
   return std::nullopt;
 }
 

@@ -20,7 +20,7 @@ inline constexpr std::size_t kMaxEarClippedCorners = 1024;
 using LocalTriangle = std::array<std::uint32_t, 3>;  // indices into the polygon's corners
 
 struct PolygonTriangulation {
-  bool concave = false;   // ear clipping was needed
+  bool concave = false;       // ear clipping was needed
   bool fan_fallback = false;  // concave but too large, self-intersecting or not planar enough
                               // for ear clipping: fan-triangulated (maybe wrongly)
   std::size_t dropped = 0;    // of the n - 2 triangles, those with zero area (not emitted)

@@ -42,8 +42,9 @@ class MtlParser {
     }
     finish_material();
     for (const auto& [keyword, ignored] : ignored_)
-      library_.warnings.push_back(file_ + ":" + std::to_string(ignored.first_line) + ": ignored " + ascii::quoted(keyword) +
-                                  " (" + std::to_string(ignored.count) + " in total): rtpro reads newmtl, Kd, Ks, Ns, d, Tr, map_Kd");
+      library_.warnings.push_back(file_ + ":" + std::to_string(ignored.first_line) + ": ignored " +
+                                  ascii::quoted(keyword) + " (" + std::to_string(ignored.count) +
+                                  " in total): rtpro reads newmtl, Kd, Ks, Ns, d, Tr, map_Kd");
     return std::move(library_);
   }
 
@@ -54,7 +55,8 @@ class MtlParser {
     const std::string_view keyword = word_at(p, end);
     const char* rest = skip_blanks(p + keyword.size(), end);
     if (keyword == "newmtl") return start_material(rest, end);
-    if (keyword == "Kd" || keyword == "Ks" || keyword == "Ns" || keyword == "d" || keyword == "Tr" || keyword == "map_Kd") {
+    if (keyword == "Kd" || keyword == "Ks" || keyword == "Ns" || keyword == "d" || keyword == "Tr" ||
+        keyword == "map_Kd") {
       if (unnamed_) return;  // the statements of a nameless material: no face can use it
       if (!current_) fail(p, std::string(keyword) + " before any newmtl");
       if (keyword == "Kd") current_->color = colour(rest, end, keyword);
@@ -79,8 +81,9 @@ class MtlParser {
     // faces get the default material, so this definition is not used.
     unnamed_ = p == end;
     if (unnamed_) {
-      library_.warnings.push_back(file_ + ":" + std::to_string(line_) +
-                                  ": newmtl without a name: ignored (faces after a bare usemtl use the default material)");
+      library_.warnings.push_back(
+          file_ + ":" + std::to_string(line_) +
+          ": newmtl without a name: ignored (faces after a bare usemtl use the default material)");
       return;
     }
     current_ = MaterialDesc{};
@@ -95,11 +98,13 @@ class MtlParser {
     current_->shininess = std::max(ns_, 1.0f);
     current_->specular = ks_ * std::min(1.0f, ns_ / kFullHighlightNs);
     if (current_->opacity < 1.0f)
-      library_.warnings.push_back(file_ + ":" + std::to_string(material_line_) + ": material " + ascii::quoted(current_->name) +
-                                  " is partly transparent (d " + std::to_string(current_->opacity) + "); rtpro renders it opaque");
+      library_.warnings.push_back(file_ + ":" + std::to_string(material_line_) + ": material " +
+                                  ascii::quoted(current_->name) + " is partly transparent (d " +
+                                  std::to_string(current_->opacity) + "); rtpro renders it opaque");
     for (const MaterialDesc& m : library_.materials) {
       if (m.name == current_->name) {
-        library_.warnings.push_back(file_ + ": material " + ascii::quoted(m.name) + " is defined twice; the first one is used");
+        library_.warnings.push_back(file_ + ": material " + ascii::quoted(m.name) +
+                                    " is defined twice; the first one is used");
         current_.reset();
         return;
       }
@@ -136,7 +141,8 @@ class MtlParser {
     }
     const std::filesystem::path path = path_.parent_path() / normal;
     if (!resolves_inside(path_.parent_path(), path))
-      fail(name, "texture " + ascii::quoted(written) + " leads outside the material library's folder (through a symbolic link)");
+      fail(name, "texture " + ascii::quoted(written) +
+                     " leads outside the material library's folder (through a symbolic link)");
     std::error_code not_readable;
     if (!std::filesystem::is_regular_file(path, not_readable)) {
       library_.warnings.push_back(file_ + ":" + std::to_string(line_) + ": texture " + ascii::quoted(written) +

@@ -102,7 +102,8 @@ ShadingVertices key_by_smoothing_group(MeshParts& parts, std::vector<TriangleInd
   }
   ShadingVertices shading;
   shading.position_of = std::move(corners.position_of);
-  shading.normals = area_weighted_vertex_normals(gather_positions(parts.positions, shading, shading.position_of.size()), triangles);
+  shading.normals =
+      area_weighted_vertex_normals(gather_positions(parts.positions, shading, shading.position_of.size()), triangles);
   return shading;
 }
 
@@ -153,7 +154,8 @@ bool assemble_mesh(MeshParts parts, TriangleMesh& mesh) {
   } else {
     mesh.vertices.clear();
     reserve_large(mesh.vertices, count);
-    for (std::uint32_t v = 0; v < count; ++v) mesh.vertices.push_back(parts.positions[shading.position(shading_vertex(v))]);
+    for (std::uint32_t v = 0; v < count; ++v)
+      mesh.vertices.push_back(parts.positions[shading.position(shading_vertex(v))]);
   }
   if (!shading.normals.empty()) {
     if (shading_of.empty()) {

@@ -68,7 +68,8 @@ class ChunkParser {
       const char* number_begin = p;
       p = number(p, xyz[axis]);
       if (!(std::fabs(xyz[axis]) <= kMaxAbsCoordinate))
-        fail(number_begin, "coordinate " + std::string(word_at(number_begin, end_)) + " is beyond the supported magnitude 1e16");
+        fail(number_begin,
+             "coordinate " + std::string(word_at(number_begin, end_)) + " is beyond the supported magnitude 1e16");
     }
     const std::uint32_t position = std::uint32_t(seen_.positions++);
     out_.positions[position] = PaddedVertex{xyz[0], xyz[1], xyz[2], 0.0f};
@@ -115,7 +116,8 @@ class ChunkParser {
     for (; corners < 3 && !at_line_end(p); p = skip_blanks(p, end_)) first3[corners++] = corner(p);
     if (corners < 3) fail(line_begin_, "face needs at least 3 vertices, found " + std::to_string(corners));
     // Attribute bookkeeping costs nothing once both kinds are known to be missing somewhere.
-    if (tracking_attributes_) for (const Corner& c : first3) note_attributes(c);
+    if (tracking_attributes_)
+      for (const Corner& c : first3) note_attributes(c);
     ++chunk_.faces;
     if (at_line_end(p)) {
       add_triangle(first3[0], first3[1], first3[2]);
@@ -144,8 +146,8 @@ class ChunkParser {
   }
 
   [[gnu::noinline]] void start_polygon(const Corner (&first3)[3]) {
-    chunk_.polygons.push_back({std::uint32_t(chunk_.triangles_in_slots), std::uint32_t(chunk_.polygon_corners.size()), 0,
-                               seen_.lines});
+    chunk_.polygons.push_back(
+        {std::uint32_t(chunk_.triangles_in_slots), std::uint32_t(chunk_.polygon_corners.size()), 0, seen_.lines});
     chunk_.polygon_corners.insert(chunk_.polygon_corners.end(), first3, first3 + 3);
   }
 
@@ -154,7 +156,8 @@ class ChunkParser {
       ++chunk_.dropped_degenerate;
       return;
     }
-    out_.triangles[chunk_.start.faces + chunk_.triangles_in_slots++] = TriangleIndices{a.position, b.position, c.position};
+    out_.triangles[chunk_.start.faces + chunk_.triangles_in_slots++] =
+        TriangleIndices{a.position, b.position, c.position};
     if (chunk_.every_corner_has_normal) chunk_.triangle_normals.push_back({a.normal, b.normal, c.normal});
     if (chunk_.every_corner_has_texcoord) chunk_.triangle_texcoords.push_back({a.texcoord, b.texcoord, c.texcoord});
   }
@@ -162,7 +165,8 @@ class ChunkParser {
   // One face vertex: v, v/vt, v//vn or v/vt/vn. Advances p past it.
   [[gnu::always_inline]] Corner corner(const char*& p) {
     std::uint32_t plain = 0;
-    if (const int digits = ascii::scan_short_unsigned(p, end_, plain); digits > 0 && plain - 1u < out_.totals.positions) {
+    if (const int digits = ascii::scan_short_unsigned(p, end_, plain);
+        digits > 0 && plain - 1u < out_.totals.positions) {
       p += digits;
       return {plain - 1, kNoIndex, kNoIndex};
     }
@@ -170,13 +174,15 @@ class ChunkParser {
     Corner result{index(p, seen_.positions, out_.totals.positions, "vertex"), kNoIndex, kNoIndex};
     if (p != end_ && *p == '/') {
       ++p;
-      if (p == end_ || *p != '/') result.texcoord = index(p, seen_.texcoords, out_.totals.texcoords, "texture coordinate");
+      if (p == end_ || *p != '/')
+        result.texcoord = index(p, seen_.texcoords, out_.totals.texcoords, "texture coordinate");
       if (p != end_ && *p == '/') {
         ++p;
         result.normal = index(p, seen_.normals, out_.totals.normals, "normal");
       }
     }
-    if (p != end_ && !is_word_end(*p) && *p != '#') fail(token, "malformed face vertex " + ascii::quoted(word_at(token, end_)));
+    if (p != end_ && !is_word_end(*p) && *p != '#')
+      fail(token, "malformed face vertex " + ascii::quoted(word_at(token, end_)));
     return result;
   }
 
@@ -196,12 +202,14 @@ class ChunkParser {
     fail_index(p, scan.ok, raw, declared, total, what);
   }
 
-  [[noreturn, gnu::cold, gnu::noinline]] void fail_index(const char* p, bool is_integer, std::int64_t raw, std::uint64_t declared,
-                                                         std::uint64_t total, const char* what) const {
+  [[noreturn, gnu::cold, gnu::noinline]] void fail_index(const char* p, bool is_integer, std::int64_t raw,
+                                                         std::uint64_t declared, std::uint64_t total,
+                                                         const char* what) const {
     if (!is_integer) fail(p, std::string("expected a ") + what + " index, found " + ascii::quoted(word_at(p, end_)));
     if (raw == 0) fail(p, std::string(what) + " index 0 is invalid: OBJ indices start at 1");
     if (raw > 0)
-      fail(p, std::string(what) + " index " + std::to_string(raw) + " is out of range: the file has " + std::to_string(total));
+      fail(p, std::string(what) + " index " + std::to_string(raw) + " is out of range: the file has " +
+                  std::to_string(total));
     fail(p, std::string(what) + " index " + std::to_string(raw) + " is out of range: only " + std::to_string(declared) +
                 " declared before this line");
   }

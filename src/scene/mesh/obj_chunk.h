@@ -88,24 +88,24 @@ struct Chunk {
   // arrays. So do triangle faces (as position indices), one slot per `f` line, so a file of
   // triangles needs no copy. Polygons wait in `polygons` for every position to be known.
   std::size_t triangles_in_slots = 0;
-  std::vector<TriangleIndices> triangle_normals;  // kept only while every corner has a normal
+  std::vector<TriangleIndices> triangle_normals;    // kept only while every corner has a normal
   std::vector<TriangleIndices> triangle_texcoords;  // kept only while every corner has one
   bool every_corner_has_normal = true;
   bool every_corner_has_texcoord = true;
-  std::uint64_t first_zero_normal_line = 0;       // a `vn 0 0 0`; 0: none
+  std::uint64_t first_zero_normal_line = 0;  // a `vn 0 0 0`; 0: none
   std::vector<Polygon> polygons;
   std::vector<Corner> polygon_corners;
   std::vector<VertexColor> colors;
   std::vector<StateChange> state_changes;
-  std::vector<LocatedName> material_names;        // usemtl, one slot per distinct name
-  std::vector<LocatedName> material_libraries;    // mtllib, in order
-  LocatedName object_name{};                      // the first `o`
-  std::uint64_t first_unnamed_usemtl_line = 0;    // `usemtl` without a name; 0: none
+  std::vector<LocatedName> material_names;      // usemtl, one slot per distinct name
+  std::vector<LocatedName> material_libraries;  // mtllib, in order
+  LocatedName object_name{};                    // the first `o`
+  std::uint64_t first_unnamed_usemtl_line = 0;  // `usemtl` without a name; 0: none
   bool has_smoothing_statement = false;
   std::uint64_t faces = 0;
   std::uint64_t dropped_degenerate = 0;
-  std::vector<IgnoredKeyword> ignored;            // one entry per distinct keyword
-  std::exception_ptr error;  // an InputError naming file:line:column; parsing stopped there
+  std::vector<IgnoredKeyword> ignored;  // one entry per distinct keyword
+  std::exception_ptr error;             // an InputError naming file:line:column; parsing stopped there
 
   // After triangulate_polygons(): the polygons' triangles in order, with their attribute indices
   // (kept only while the chunk's triangle faces keep theirs), and how many each polygon gave.
@@ -133,7 +133,7 @@ struct Destination {
   Vec3* normals;
   TexCoord* texcoords;
   TriangleIndices* triangles;  // chunk.counts.faces slots from chunk.start.faces
-  Counts totals;  // of the whole file: positive indices may point forward
+  Counts totals;               // of the whole file: positive indices may point forward
   std::string file;
 };
 

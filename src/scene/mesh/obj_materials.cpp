@@ -30,7 +30,8 @@ fs::path material_library_path(const fs::path& obj_file, const LocatedName& libr
     throw InputError(where, "mtllib path " + ascii::quoted(library.name) + " leaves the OBJ's folder");
   const fs::path path = obj_file.parent_path() / normal;
   if (!resolves_inside(obj_file.parent_path(), path))
-    throw InputError(where, "mtllib path " + ascii::quoted(library.name) + " leads outside the OBJ's folder (through a symbolic link)");
+    throw InputError(where, "mtllib path " + ascii::quoted(library.name) +
+                                " leads outside the OBJ's folder (through a symbolic link)");
   return path;
 }
 
@@ -47,8 +48,9 @@ std::vector<MaterialDesc> load_obj_materials(const fs::path& file, const std::ve
       if (!loaded.insert(path).second) continue;
       std::error_code not_readable;  // e.g. a name over 255 bytes: a warning, not an escaped filesystem_error
       if (!fs::is_regular_file(path, not_readable)) {
-        warnings.push_back(located(file.string(), library.line, "material library " + ascii::quoted(library.name) +
-                                                                    " not found; its materials use defaults"));
+        warnings.push_back(
+            located(file.string(), library.line,
+                    "material library " + ascii::quoted(library.name) + " not found; its materials use defaults"));
         continue;
       }
       MaterialLibrary mtl = parse_mtl_file(path);
@@ -65,7 +67,9 @@ std::vector<MaterialDesc> load_obj_materials(const fs::path& file, const std::ve
     if (const auto found = defined.find(use.name); found != defined.end()) {
       m = found->second;
     } else {
-      warnings.push_back(located(file.string(), use.line, "material " + ascii::quoted(m.name) + " is not defined in any material library; using defaults"));
+      warnings.push_back(
+          located(file.string(), use.line,
+                  "material " + ascii::quoted(m.name) + " is not defined in any material library; using defaults"));
     }
   }
   return materials;

@@ -20,7 +20,6 @@
 
 namespace rtpro {
 
-
 namespace fs = std::filesystem;
 using namespace obj;
 
@@ -68,7 +67,8 @@ TriangleIndices* merge_in_file_order(const Chunk& chunk, const TriangleIndices* 
     out = std::copy(faces + face, faces + until, out);
     face = until;
     const std::size_t n = chunk.triangles_of_polygon[p];
-    out = std::copy(polygon_part.begin() + std::ptrdiff_t(from_polygons), polygon_part.begin() + std::ptrdiff_t(from_polygons + n), out);
+    out = std::copy(polygon_part.begin() + std::ptrdiff_t(from_polygons),
+                    polygon_part.begin() + std::ptrdiff_t(from_polygons + n), out);
     from_polygons += n;
   }
   return std::copy(faces + face, faces + chunk.triangles_in_slots, out);
@@ -143,7 +143,8 @@ StitchedState stitch_state(const std::vector<Chunk>& chunks, const std::vector<s
   return state;
 }
 
-void warn_about_ignored_statements(const std::string& file, const std::vector<Chunk>& chunks, std::vector<std::string>& warnings) {
+void warn_about_ignored_statements(const std::string& file, const std::vector<Chunk>& chunks,
+                                   std::vector<std::string>& warnings) {
   std::vector<IgnoredKeyword> all;
   std::unordered_map<std::string_view, std::size_t> index_of;
   for (const Chunk& chunk : chunks) {
@@ -157,9 +158,10 @@ void warn_about_ignored_statements(const std::string& file, const std::vector<Ch
   for (std::size_t i = 0; i < all.size(); ++i) {
     const IgnoredKeyword& k = all[i];
     if (i < kListedIgnoredKeywords)
-      warnings.push_back(located(file, k.first_line, "ignored " + ascii::quoted(k.keyword) + " statements (" + std::to_string(k.count) + " in total)"));
-    else
-      unlisted_statements += k.count;
+      warnings.push_back(
+          located(file, k.first_line,
+                  "ignored " + ascii::quoted(k.keyword) + " statements (" + std::to_string(k.count) + " in total)"));
+    else unlisted_statements += k.count;
   }
   if (all.size() > kListedIgnoredKeywords)
     warnings.push_back(file + ": ignored " + std::to_string(unlisted_statements) + " more statements with " +
@@ -172,7 +174,8 @@ bool file_normals_usable(const std::string& file, const std::vector<Chunk>& chun
   if (totals.normals == 0 || triangles == 0) return false;
   for (const Chunk& chunk : chunks) {
     if (chunk.first_zero_normal_line != 0) {
-      warnings.push_back(located(file, chunk.first_zero_normal_line, "vertex normal has zero length; the file's normals are not used"));
+      warnings.push_back(located(file, chunk.first_zero_normal_line,
+                                 "vertex normal has zero length; the file's normals are not used"));
       return false;
     }
   }
@@ -184,7 +187,8 @@ bool file_normals_usable(const std::string& file, const std::vector<Chunk>& chun
 bool texcoords_usable(const std::string& file, const std::vector<Chunk>& chunks, const Counts& totals,
                       std::size_t triangles, std::vector<std::string>& warnings) {
   if (totals.texcoords == 0 || triangles == 0) return false;
-  if (std::all_of(chunks.begin(), chunks.end(), [](const Chunk& c) { return c.every_corner_has_texcoord; })) return true;
+  if (std::all_of(chunks.begin(), chunks.end(), [](const Chunk& c) { return c.every_corner_has_texcoord; }))
+    return true;
   warnings.push_back(file + ": some face vertices have no texture coordinate (vt); texture coordinates dropped");
   return false;
 }
@@ -195,7 +199,9 @@ bool choose_file_normals(NormalsMode mode, bool usable, const std::string& file,
   switch (mode) {
     case NormalsMode::kAuto: return usable;
     case NormalsMode::kFile:
-      if (!usable) throw InputError(SourceLocation{file}, "normals: file, but the file has no usable normals (vn on every face vertex)");
+      if (!usable)
+        throw InputError(SourceLocation{file},
+                         "normals: file, but the file has no usable normals (vn on every face vertex)");
       return true;
     case NormalsMode::kFlat:
       for (TriangleRun& run : runs) run.smoothing = kFlat;
@@ -222,15 +228,17 @@ void warn_about_faces(const std::string& file, const std::vector<Chunk>& chunks,
                       std::vector<std::string>& warnings) {
   for (const Chunk& chunk : chunks) {
     if (chunk.first_unnamed_usemtl_line != 0) {
-      warnings.push_back(located(file, chunk.first_unnamed_usemtl_line, "usemtl without a material name: those faces use the default material"));
+      warnings.push_back(located(file, chunk.first_unnamed_usemtl_line,
+                                 "usemtl without a material name: those faces use the default material"));
       break;
     }
   }
   for (const Chunk& chunk : chunks) {
     if (chunk.fan_fallback_line != 0) {
-      warnings.push_back(located(file, chunk.fan_fallback_line,
-                                 "concave polygon that ear clipping cannot triangulate (self-intersecting, or more than " +
-                                     std::to_string(kMaxEarClippedCorners) + " corners): fan-triangulated, may look wrong"));
+      warnings.push_back(
+          located(file, chunk.fan_fallback_line,
+                  "concave polygon that ear clipping cannot triangulate (self-intersecting, or more than " +
+                      std::to_string(kMaxEarClippedCorners) + " corners): fan-triangulated, may look wrong"));
       break;
     }
   }
@@ -259,8 +267,8 @@ LoadedMesh load_obj_file(const fs::path& file, const MeshLoadOptions& options, s
                          resize_large(parts.normals, totals.normals);
                          resize_large(parts.texcoords, totals.texcoords);
                        });
-  const Destination out{parts.positions.data(), parts.normals.data(), parts.texcoords.data(), triangle_slots.data(), totals,
-                        file_name};
+  const Destination out{
+      parts.positions.data(), parts.normals.data(), parts.texcoords.data(), triangle_slots.data(), totals, file_name};
   for_each_chunk(chunks, [&out](Chunk& chunk) { parse_chunk(chunk, out); });
   for (const Chunk& chunk : chunks)
     if (chunk.error) std::rethrow_exception(chunk.error);
@@ -283,8 +291,12 @@ LoadedMesh load_obj_file(const fs::path& file, const MeshLoadOptions& options, s
   const bool file_normals = choose_file_normals(options.normals, usable_normals, file_name, parts.runs);
   const bool texcoords = texcoords_usable(file_name, chunks, totals, offsets.back(), warnings);
   parts.triangle_positions = gather_triangles(chunks, offsets, std::move(triangle_slots));
-  if (file_normals) parts.triangle_normals = gather_attribute(chunks, offsets, &Chunk::triangle_normals, &Chunk::polygon_triangle_normals);
-  if (texcoords) parts.triangle_texcoords = gather_attribute(chunks, offsets, &Chunk::triangle_texcoords, &Chunk::polygon_triangle_texcoords);
+  if (file_normals)
+    parts.triangle_normals =
+        gather_attribute(chunks, offsets, &Chunk::triangle_normals, &Chunk::polygon_triangle_normals);
+  if (texcoords)
+    parts.triangle_texcoords =
+        gather_attribute(chunks, offsets, &Chunk::triangle_texcoords, &Chunk::polygon_triangle_texcoords);
   else parts.texcoords = {};
   parts.colors = vertex_colors(chunks, parts.positions.size());
 

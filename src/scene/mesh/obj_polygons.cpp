@@ -15,7 +15,8 @@ void triangulate_polygons(Chunk& chunk, const std::vector<PaddedVertex>& positio
     const Corner* corners = chunk.polygon_corners.data() + polygon.first_corner;
     points.clear();
     local.clear();
-    for (std::uint32_t k = 0; k < polygon.corner_count; ++k) points.push_back(positions[corners[k].position].position());
+    for (std::uint32_t k = 0; k < polygon.corner_count; ++k)
+      points.push_back(positions[corners[k].position].position());
     const PolygonTriangulation result = triangulate_polygon(points, local);
     chunk.concave_polygons += result.concave;
     if (result.fan_fallback && chunk.fan_fallback_line == 0) chunk.fan_fallback_line = polygon.line;

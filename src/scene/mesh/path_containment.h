@@ -10,7 +10,8 @@ namespace rtpro {
 // check that follows).
 inline bool resolves_inside(const std::filesystem::path& folder, const std::filesystem::path& path) {
   std::error_code folder_error, target_error;
-  const std::filesystem::path canonical_folder = std::filesystem::weakly_canonical(folder.empty() ? std::filesystem::path(".") : folder, folder_error);
+  const std::filesystem::path canonical_folder =
+      std::filesystem::weakly_canonical(folder.empty() ? std::filesystem::path(".") : folder, folder_error);
   const std::filesystem::path target = std::filesystem::weakly_canonical(path, target_error);
   if (folder_error || target_error) return true;
   const std::filesystem::path inside = target.lexically_relative(canonical_folder);

@@ -8,14 +8,25 @@
 
 namespace rtpro::ply {
 
-
 namespace {
 
 constexpr std::array<std::pair<std::string_view, Type>, 16> kTypeNames{{
-    {"char", Type::kInt8},     {"int8", Type::kInt8},       {"uchar", Type::kUInt8},    {"uint8", Type::kUInt8},
-    {"short", Type::kInt16},   {"int16", Type::kInt16},     {"ushort", Type::kUInt16},  {"uint16", Type::kUInt16},
-    {"int", Type::kInt32},     {"int32", Type::kInt32},     {"uint", Type::kUInt32},    {"uint32", Type::kUInt32},
-    {"float", Type::kFloat32}, {"float32", Type::kFloat32}, {"double", Type::kFloat64}, {"float64", Type::kFloat64},
+    {"char", Type::kInt8},
+    {"int8", Type::kInt8},
+    {"uchar", Type::kUInt8},
+    {"uint8", Type::kUInt8},
+    {"short", Type::kInt16},
+    {"int16", Type::kInt16},
+    {"ushort", Type::kUInt16},
+    {"uint16", Type::kUInt16},
+    {"int", Type::kInt32},
+    {"int32", Type::kInt32},
+    {"uint", Type::kUInt32},
+    {"uint32", Type::kUInt32},
+    {"float", Type::kFloat32},
+    {"float32", Type::kFloat32},
+    {"double", Type::kFloat64},
+    {"float64", Type::kFloat64},
 }};
 
 class HeaderParser {
@@ -159,9 +170,13 @@ class HeaderParser {
 
 std::size_t size_of(Type type) {
   switch (type) {
-    case Type::kInt8: case Type::kUInt8: return 1;
-    case Type::kInt16: case Type::kUInt16: return 2;
-    case Type::kInt32: case Type::kUInt32: case Type::kFloat32: return 4;
+    case Type::kInt8:
+    case Type::kUInt8: return 1;
+    case Type::kInt16:
+    case Type::kUInt16: return 2;
+    case Type::kInt32:
+    case Type::kUInt32:
+    case Type::kFloat32: return 4;
     case Type::kFloat64: return 8;
   }
   return 0;

@@ -16,7 +16,7 @@ inline bool is_integer(Type type) { return type != Type::kFloat32 && type != Typ
 
 struct Property {
   std::string name;
-  Type type;                // of the value, or of each list item
+  Type type;  // of the value, or of each list item
   bool is_list = false;
   Type count_type = Type::kUInt8;  // of a list's length
 };
@@ -36,8 +36,8 @@ enum class Encoding { kAscii, kBinaryLittleEndian, kBinaryBigEndian };
 struct Header {
   Encoding encoding = Encoding::kAscii;
   std::vector<Element> elements;
-  std::size_t body_offset = 0;  // the first byte after "end_header\n"
-  int body_line = 0;            // the line number of that byte
+  std::size_t body_offset = 0;        // the first byte after "end_header\n"
+  int body_line = 0;                  // the line number of that byte
   std::vector<std::string> warnings;  // "file:line: ..." lines
 };
 

@@ -20,7 +20,6 @@
 
 namespace rtpro {
 
-
 using namespace ply;
 
 namespace {
@@ -42,7 +41,8 @@ struct PlyMesh {
 };
 
 // Appends the triangles of the polygon with these corners (vertex indices) to ply.triangles.
-void add_polygon(PlyMesh& ply, std::span<const std::uint32_t> corners, std::vector<Vec3>& points, std::vector<LocalTriangle>& local) {
+void add_polygon(PlyMesh& ply, std::span<const std::uint32_t> corners, std::vector<Vec3>& points,
+                 std::vector<LocalTriangle>& local) {
   points.clear();
   local.clear();
   for (const std::uint32_t c : corners) points.push_back(ply.vertices[c].position());
@@ -61,7 +61,8 @@ void add_polygon(PlyMesh& ply, std::span<const std::uint32_t> corners, std::vect
 std::array<int, 2> find_pair(const Element& element, std::initializer_list<std::array<std::string_view, 2>> names) {
   for (const auto& [a, b] : names) {
     const int i = element.find(a), j = element.find(b);
-    if (i >= 0 && j >= 0 && !element.properties[std::size_t(i)].is_list && !element.properties[std::size_t(j)].is_list) return {i, j};
+    if (i >= 0 && j >= 0 && !element.properties[std::size_t(i)].is_list && !element.properties[std::size_t(j)].is_list)
+      return {i, j};
   }
   return {-1, -1};
 }
@@ -75,7 +76,8 @@ double channel_scale(Type type) {
     case Type::kUInt16: return 1.0 / UINT16_MAX;
     case Type::kInt32: return 1.0 / INT32_MAX;
     case Type::kUInt32: return 1.0 / UINT32_MAX;
-    case Type::kFloat32: case Type::kFloat64: return 1.0;
+    case Type::kFloat32:
+    case Type::kFloat64: return 1.0;
   }
   return 1.0;
 }
@@ -84,7 +86,8 @@ double channel_scale(Type type) {
 template <typename Reader>
 class BodyReader {
  public:
-  BodyReader(Reader& reader, const Header& header, const std::string& file) : r_(reader), header_(header), file_(file) {}
+  BodyReader(Reader& reader, const Header& header, const std::string& file)
+      : r_(reader), header_(header), file_(file) {}
 
   PlyMesh read(std::size_t body_bytes) {
     const Element* vertex = find_element("vertex");
@@ -95,8 +98,7 @@ class BodyReader {
       if (&element == vertex) {
         read_vertices(element);
         vertices_read_ = true;
-      }
-      else if (element.name == "face") read_faces(element, body_bytes);
+      } else if (element.name == "face") read_faces(element, body_bytes);
       else skip(element);
     }
     return std::move(mesh_);
@@ -119,14 +121,18 @@ class BodyReader {
   void read_vertices(const Element& element) {
     const int axes[3] = {scalar_property(element, "x"), scalar_property(element, "y"), scalar_property(element, "z")};
     if (axes[0] < 0 || axes[1] < 0 || axes[2] < 0) fail_at(element, "the vertex element needs properties x, y and z");
-    const int normal_axes[3] = {scalar_property(element, "nx"), scalar_property(element, "ny"), scalar_property(element, "nz")};
+    const int normal_axes[3] = {scalar_property(element, "nx"), scalar_property(element, "ny"),
+                                scalar_property(element, "nz")};
     const bool has_normals = normal_axes[0] >= 0 && normal_axes[1] >= 0 && normal_axes[2] >= 0;
-    const std::array<int, 2> uv = find_pair(element, {{"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}});
+    const std::array<int, 2> uv =
+        find_pair(element, {{"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}});
     const int red = element.find("red") >= 0 ? element.find("red") : element.find("diffuse_red");
-    const std::array<int, 2> green_blue = element.find("red") >= 0 ? find_pair(element, {{"green", "blue"}})
-                                                                   : find_pair(element, {{"diffuse_green", "diffuse_blue"}});
+    const std::array<int, 2> green_blue = element.find("red") >= 0
+                                              ? find_pair(element, {{"green", "blue"}})
+                                              : find_pair(element, {{"diffuse_green", "diffuse_blue"}});
     const int rgb[3] = {red, green_blue[0], green_blue[1]};
-    const bool has_colors = rgb[0] >= 0 && rgb[1] >= 0 && rgb[2] >= 0 && !element.properties[std::size_t(rgb[0])].is_list;
+    const bool has_colors =
+        rgb[0] >= 0 && rgb[1] >= 0 && rgb[2] >= 0 && !element.properties[std::size_t(rgb[0])].is_list;
     std::vector<double> values(element.properties.size());
     reserve_large(mesh_.vertices, element.count);
     if (has_normals) reserve_large(mesh_.normals, element.count);
@@ -247,7 +253,8 @@ PlyMesh read_body(std::string_view bytes, const Header& header, const std::strin
 }
 
 bool all_nonzero(const std::vector<Vec3>& normals) {
-  return std::all_of(normals.begin(), normals.end(), [](const Vec3& n) { return n.x != 0.0f || n.y != 0.0f || n.z != 0.0f; });
+  return std::all_of(normals.begin(), normals.end(),
+                     [](const Vec3& n) { return n.x != 0.0f || n.y != 0.0f || n.z != 0.0f; });
 }
 
 void triangulate_deferred_polygons(PlyMesh& ply, MeshLoadStats& stats, const std::string& file) {
@@ -262,8 +269,9 @@ void triangulate_deferred_polygons(PlyMesh& ply, MeshLoadStats& stats, const std
   ply.polygon_corners = {};
   stats.concave_polygons = ply.concave_polygons;
   if (ply.fan_fallback)
-    stats.warnings.push_back(file + ": a concave polygon that ear clipping cannot triangulate (self-intersecting, or more than " +
-                             std::to_string(kMaxEarClippedCorners) + " corners): fan-triangulated, may look wrong");
+    stats.warnings.push_back(
+        file + ": a concave polygon that ear clipping cannot triangulate (self-intersecting, or more than " +
+        std::to_string(kMaxEarClippedCorners) + " corners): fan-triangulated, may look wrong");
 }
 
 // The file's normals, generated ones or none (flat), as the scene's `normals:` asks.
@@ -274,7 +282,8 @@ void choose_normals(PlyMesh& ply, NormalsMode mode, TriangleMesh& mesh, MeshLoad
     stats.warnings.push_back(file + ": some vertex normals have zero length; the file's normals are not used");
   switch (mode) {
     case NormalsMode::kFile:
-      if (!usable) throw InputError(SourceLocation{file}, "normals: file, but the file has no usable vertex normals (nx, ny, nz)");
+      if (!usable)
+        throw InputError(SourceLocation{file}, "normals: file, but the file has no usable vertex normals (nx, ny, nz)");
       [[fallthrough]];
     case NormalsMode::kAuto:
       if (usable) {

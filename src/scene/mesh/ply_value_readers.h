@@ -24,7 +24,8 @@ inline bool fits(std::int64_t v, Type type) {
     case Type::kUInt16: return v >= 0 && v <= UINT16_MAX;
     case Type::kInt32: return v >= INT32_MIN && v <= INT32_MAX;
     case Type::kUInt32: return v >= 0 && v <= UINT32_MAX;
-    case Type::kFloat32: case Type::kFloat64: return true;
+    case Type::kFloat32:
+    case Type::kFloat64: return true;
   }
   return false;
 }
@@ -107,7 +108,8 @@ class AsciiReader {
   void end_element() {
     p_ = ascii::skip_blanks(p_, line_end_);
     value_ = p_;
-    if (p_ != line_end_) fail("unexpected " + ascii::quoted(ascii::word_at(p_, line_end_)) + ": more values than the header declares");
+    if (p_ != line_end_)
+      fail("unexpected " + ascii::quoted(ascii::word_at(p_, line_end_)) + ": more values than the header declares");
   }
 
   double value(Type type) {
@@ -137,7 +139,8 @@ class AsciiReader {
   double real() {
     Real v = 0;
     const ascii::FloatScan scan = ascii::scan_real(p_, line_end_, v);
-    if (scan.status == ascii::NumberStatus::kMalformed) fail(ascii::quoted(ascii::word_at(p_, line_end_)) + " is not a number");
+    if (scan.status == ascii::NumberStatus::kMalformed)
+      fail(ascii::quoted(ascii::word_at(p_, line_end_)) + " is not a number");
     if (scan.status == ascii::NumberStatus::kNotFinite)
       fail(ascii::quoted(ascii::word_at(p_, line_end_)) + " is not a finite number in range");
     p_ = scan.next;

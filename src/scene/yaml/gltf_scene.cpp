@@ -52,9 +52,11 @@ std::string quoted_yaml(const std::string& text) {
 void add_camera(const GltfAsset& asset, const BBox& bounds, GltfSceneText& text) {
   if (!asset.cameras.empty()) {
     const GltfCamera& c = asset.cameras.front();
-    const int height = c.aspect_ratio > 0.0f ? std::clamp(int(std::lround(kDefaultWidth / c.aspect_ratio)), 1, 65536) : kDefaultHeight;
-    text.add("camera: {position: " + vector(c.position) + ", look_at: " + vector(c.position + c.forward) + ", up: " + vector(c.up) +
-                 ", fov: " + number(c.yfov_degrees) + ", resolution: [" + std::to_string(kDefaultWidth) + ", " + std::to_string(height) + "]}",
+    const int height =
+        c.aspect_ratio > 0.0f ? std::clamp(int(std::lround(kDefaultWidth / c.aspect_ratio)), 1, 65536) : kDefaultHeight;
+    text.add("camera: {position: " + vector(c.position) + ", look_at: " + vector(c.position + c.forward) +
+                 ", up: " + vector(c.up) + ", fov: " + number(c.yfov_degrees) + ", resolution: [" +
+                 std::to_string(kDefaultWidth) + ", " + std::to_string(height) + "]}",
              gltf_node_path(c.node) + " (cameras[" + std::to_string(c.camera) + "])");
     return;
   }
@@ -68,8 +70,9 @@ void add_camera(const GltfAsset& asset, const BBox& bounds, GltfSceneText& text)
   // where the bounding sphere just fits the view.
   const Vec3 direction = normalize(Vec3(0.35f, 0.3f, 1.0f));
   const float distance = radius / std::sin(0.5f * kDefaultFov * 3.14159265f / 180.0f) * 1.05f;
-  text.add("camera: {position: " + vector(center + direction * distance) + ", look_at: " + vector(center) + ", fov: " +
-               number(kDefaultFov) + ", resolution: [" + std::to_string(kDefaultWidth) + ", " + std::to_string(kDefaultHeight) + "]}",
+  text.add("camera: {position: " + vector(center + direction * distance) + ", look_at: " + vector(center) +
+               ", fov: " + number(kDefaultFov) + ", resolution: [" + std::to_string(kDefaultWidth) + ", " +
+               std::to_string(kDefaultHeight) + "]}",
            "the camera rtpro places to frame the meshes (the file has no perspective camera)");
 }
 
@@ -104,7 +107,8 @@ void add_lights(const GltfAsset& asset, GltfSceneText& text) {
   }
   text.add("lights:", "the file's KHR_lights_punctual lights");
   for (const GltfLight& light : asset.lights) {
-    const std::string common = ", color: " + vector(light.color) + ", intensity: " + number(light.intensity / kLumensPerWatt) + "}";
+    const std::string common =
+        ", color: " + vector(light.color) + ", intensity: " + number(light.intensity / kLumensPerWatt) + "}";
     const std::string origin =
         gltf_node_path(light.node) + " (extensions.KHR_lights_punctual.lights[" + std::to_string(light.light) + "])";
     switch (light.kind) {
@@ -192,11 +196,13 @@ SceneDescription parse_gltf_scene_file(const std::filesystem::path& file, const 
   // error is about (geometry_origin.h).
   for (GltfDesc& gltf : description.world.gltfs) {
     if (gltf.where.file == file.string()) gltf.where = SourceLocation{file.string()};
-    if (gltf.file == file.lexically_normal() && gltf.normals == NormalsMode::kAuto && gltf.material == kNoMaterial) gltf.loaded = asset;
+    if (gltf.file == file.lexically_normal() && gltf.normals == NormalsMode::kAuto && gltf.material == kNoMaterial)
+      gltf.loaded = asset;
   }
   // A name YAML cannot hold (not UTF-8) is placed here instead of in the text.
   if (!writable_in_yaml(file.filename().string()))
-    description.world.gltfs.push_back({file.lexically_normal(), kNoMaterial, SourceLocation{file.string()}, NormalsMode::kAuto, asset});
+    description.world.gltfs.push_back(
+        {file.lexically_normal(), kNoMaterial, SourceLocation{file.string()}, NormalsMode::kAuto, asset});
   return description;
 }
 

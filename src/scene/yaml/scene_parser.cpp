@@ -47,8 +47,8 @@ void read_version(const YamlNode& root) {
 int read_image_side(const YamlNode& node, const std::string& name) {
   const std::int64_t side = read_integer(node, name);
   if (side < 1 || side > kMaxImageSide)
-    fail_at(node,
-            name + ": each side must be from 1 to " + std::to_string(kMaxImageSide) + " pixels, got " + std::string(node.scalar()));
+    fail_at(node, name + ": each side must be from 1 to " + std::to_string(kMaxImageSide) + " pixels, got " +
+                      std::string(node.scalar()));
   return static_cast<int>(side);
 }
 
@@ -95,13 +95,15 @@ CameraDesc read_camera(const YamlNode& node) {
   if (const YamlNode* aperture = camera.optional("aperture")) {
     const double radius = read_number(*aperture, "camera.aperture");
     if (!(radius >= 0.0) || !std::isfinite(radius))
-      fail_at(*aperture, "camera.aperture is the lens radius in scene units: 0 (a pinhole) or more, got " + std::string(aperture->scalar()));
+      fail_at(*aperture, "camera.aperture is the lens radius in scene units: 0 (a pinhole) or more, got " +
+                             std::string(aperture->scalar()));
     desc.aperture = static_cast<float>(radius);
   }
   if (const YamlNode* focus = camera.optional("focus_distance")) {
     const double distance = read_number(*focus, "camera.focus_distance");
     if (!(distance > 0.0) || !std::isfinite(static_cast<float>(distance)))
-      fail_at(*focus, "camera.focus_distance must be a positive distance in scene units, got " + std::string(focus->scalar()));
+      fail_at(*focus,
+              "camera.focus_distance must be a positive distance in scene units, got " + std::string(focus->scalar()));
     desc.focus_distance = static_cast<float>(distance);
   }
   return desc;
@@ -117,7 +119,9 @@ int read_spp(const YamlNode& node) {
 RenderSettings read_render(const YamlNode* node) {
   RenderSettings settings;
   if (absent(node)) return settings;
-  const MappingReader render(*node, "render", {"spp", "max_depth", "seed", "ambient", "background", "integrator", "sampling", "sampler", "light_sampler"});
+  const MappingReader render(
+      *node, "render",
+      {"spp", "max_depth", "seed", "ambient", "background", "integrator", "sampling", "sampler", "light_sampler"});
   if (const YamlNode* spp = render.optional("spp")) settings.spp = read_spp(*spp);
   if (const YamlNode* integrator = render.optional("integrator")) {
     const std::string text = read_string(*integrator, "render.integrator");
@@ -148,7 +152,8 @@ RenderSettings read_render(const YamlNode* node) {
   if (const YamlNode* depth = render.optional("max_depth")) {
     const std::int64_t value = read_integer(*depth, "render.max_depth");
     if (value < 0 || value > kMaxDepth)
-      fail_at(*depth, "render.max_depth must be from 0 to " + std::to_string(kMaxDepth) + ", got " + std::string(depth->scalar()));
+      fail_at(*depth, "render.max_depth must be from 0 to " + std::to_string(kMaxDepth) + ", got " +
+                          std::string(depth->scalar()));
     settings.max_depth = static_cast<int>(value);
   }
   if (const YamlNode* seed = render.optional("seed")) settings.seed = read_unsigned(*seed, "render.seed");

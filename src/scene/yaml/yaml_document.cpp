@@ -20,18 +20,15 @@ const YamlEntry* YamlNode::find(std::string_view key) const {
 
 std::string YamlNode::describe() const {
   switch (kind) {
-    case Kind::null:
-      return "an empty value";
+    case Kind::null: return "an empty value";
     case Kind::scalar: {
       constexpr std::size_t kShown = 40;
       const std::string_view text = scalar();
       const std::string shown = text.size() > kShown ? std::string(text.substr(0, kShown)) + "..." : std::string(text);
       return (plain ? "'" : "the quoted string '") + shown + "'";
     }
-    case Kind::sequence:
-      return "a list of " + std::to_string(size_) + (size_ == 1 ? " item" : " items");
-    case Kind::mapping:
-      return "a mapping";
+    case Kind::sequence: return "a list of " + std::to_string(size_) + (size_ == 1 ? " item" : " items");
+    case Kind::mapping: return "a mapping";
   }
   return "a value";
 }
@@ -40,7 +37,8 @@ std::string YamlNode::describe() const {
 void LineLengthGuard::feed(std::string_view bytes) {
   while (!bytes.empty()) {
     const void* found = std::memchr(bytes.data(), '\n', bytes.size());
-    const std::size_t length = found ? static_cast<std::size_t>(static_cast<const char*>(found) - bytes.data()) : bytes.size();
+    const std::size_t length =
+        found ? static_cast<std::size_t>(static_cast<const char*>(found) - bytes.data()) : bytes.size();
     current_ += length;
     if (current_ > kMaxYamlLineBytes) {
       throw InputError(SourceLocation{source_, line_, static_cast<int>(kMaxYamlLineBytes) + 1},
@@ -71,7 +69,8 @@ YamlNodePtr with_value_at(YamlNodeArena& arena, YamlNodePtr node, const std::vec
   }
   if (base.is_mapping()) {
     std::vector<YamlEntry> entries(base.entries().begin(), base.entries().end());
-    const auto same = std::find_if(entries.begin(), entries.end(), [&](const YamlEntry& e) { return e.key == segment; });
+    const auto same =
+        std::find_if(entries.begin(), entries.end(), [&](const YamlEntry& e) { return e.key == segment; });
     if (same != entries.end()) {
       same->value = with_value_at(arena, same->value, segments, i + 1, value, at);
     } else {
@@ -120,8 +119,7 @@ YamlDocument YamlDocument::parse(std::string_view text, const std::string& sourc
 }
 
 YamlDocument YamlDocument::parse_included(std::string_view text, const std::string& source_name,
-                                          const YamlFileReader& read_include,
-                                          IncludeWalk& walk) {
+                                          const YamlFileReader& read_include, IncludeWalk& walk) {
   YamlDocument document;
   document.arena_ = std::make_shared<YamlNodeArena>();
   const std::string* source = &document.sources_.emplace_back(source_name);

@@ -79,10 +79,16 @@ struct YamlNode {
   bool is_sequence() const { return kind == Kind::sequence; }
   bool is_mapping() const { return kind == Kind::mapping; }
   // Empty for a node of another kind.
-  std::string_view scalar() const { return is_scalar() ? std::string_view(static_cast<const char*>(data_), size_) : std::string_view(); }
-  YamlNodeList items() const { return is_sequence() ? YamlNodeList(static_cast<const YamlNodePtr*>(data_), size_) : YamlNodeList(); }
+  std::string_view scalar() const {
+    return is_scalar() ? std::string_view(static_cast<const char*>(data_), size_) : std::string_view();
+  }
+  YamlNodeList items() const {
+    return is_sequence() ? YamlNodeList(static_cast<const YamlNodePtr*>(data_), size_) : YamlNodeList();
+  }
   // In document order, keys unique.
-  YamlEntryList entries() const { return is_mapping() ? YamlEntryList(static_cast<const YamlEntry*>(data_), size_) : YamlEntryList(); }
+  YamlEntryList entries() const {
+    return is_mapping() ? YamlEntryList(static_cast<const YamlEntry*>(data_), size_) : YamlEntryList();
+  }
   void set_scalar(std::string_view text) { set(text.data(), text.size()); }
   void set_items(YamlNodeList list) { set(list.data(), list.size()); }
   void set_entries(YamlEntryList list) { set(list.data(), list.size()); }
@@ -166,9 +172,9 @@ class YamlDocument {
   YamlNodePtr expand_includes(YamlNodePtr node, const YamlFileReader& read_include, IncludeWalk& walk);
   YamlNodePtr load_include(const YamlNode& file_name, const YamlFileReader& read_include, IncludeWalk& walk);
 
-  std::deque<std::string> sources_;  // stable addresses for YamlPosition::source
+  std::deque<std::string> sources_;                      // stable addresses for YamlPosition::source
   std::vector<std::unique_ptr<YamlDocument>> includes_;  // keep the included files' sources and nodes
-  std::shared_ptr<YamlNodeArena> arena_;  // this document's nodes, its overrides' and substitutions'
+  std::shared_ptr<YamlNodeArena> arena_;                 // this document's nodes, its overrides' and substitutions'
   YamlNodePtr root_ = nullptr;
   bool has_includes_ = false;   // an `include` key was read: expansion walks the tree
   bool has_variables_ = false;  // a `$`, `variables` or `keyframes` was read: substitution walks it

@@ -45,7 +45,8 @@ std::optional<EnvironmentDesc> read_environment(const YamlNode* node, const std:
       fail_at(*file, environment.field("file") + ": '" + desc.file.string() +
                          "' is not a scene-linear image; an environment is read from an EXR, Radiance HDR or PFM file");
   }
-  if (const YamlNode* color = environment.optional("color")) desc.color = read_color(*color, environment.field("color"));
+  if (const YamlNode* color = environment.optional("color"))
+    desc.color = read_color(*color, environment.field("color"));
   if (const YamlNode* intensity = environment.optional("intensity")) {
     const double value = read_number(*intensity, environment.field("intensity"));
     if (!(value >= 0.0) || !std::isfinite(static_cast<float>(value)))

@@ -19,12 +19,14 @@ std::vector<const YamlNode*> include_names(const YamlNode& value) {
   if (value.is_sequence() && !value.items().empty()) {
     std::vector<const YamlNode*> names;
     for (const YamlNodePtr& item : value.items()) {
-      if (!item->is_scalar()) throw InputError(item->at.location(), "include: expected a file name, got " + item->describe());
+      if (!item->is_scalar())
+        throw InputError(item->at.location(), "include: expected a file name, got " + item->describe());
       names.push_back(item);
     }
     return names;
   }
-  throw InputError(value.at.location(), "include: expected a file name or a list of file names, got " + value.describe());
+  throw InputError(value.at.location(),
+                   "include: expected a file name or a list of file names, got " + value.describe());
 }
 
 std::string chain_text(const std::vector<std::filesystem::path>& chain, const std::filesystem::path& last) {
@@ -36,7 +38,8 @@ std::string chain_text(const std::vector<std::filesystem::path>& chain, const st
 // `entries` with `added` merged in: an added key replaces an existing one in place.
 void merge_entries(std::vector<YamlEntry>& entries, YamlEntryList added) {
   for (const YamlEntry& entry : added) {
-    const auto same = std::find_if(entries.begin(), entries.end(), [&](const YamlEntry& e) { return e.key == entry.key; });
+    const auto same =
+        std::find_if(entries.begin(), entries.end(), [&](const YamlEntry& e) { return e.key == entry.key; });
     if (same == entries.end()) {
       entries.push_back(entry);
     } else {
@@ -47,27 +50,30 @@ void merge_entries(std::vector<YamlEntry>& entries, YamlEntryList added) {
 
 }  // namespace
 
-YamlNodePtr YamlDocument::load_include(const YamlNode& file_name, const YamlFileReader& read_include, IncludeWalk& walk) {
+YamlNodePtr YamlDocument::load_include(const YamlNode& file_name, const YamlFileReader& read_include,
+                                       IncludeWalk& walk) {
   const std::vector<std::filesystem::path>& chain = walk.chain;
   const SourceLocation where = file_name.at.location();
   if (file_name.scalar().empty()) throw InputError(where, "include: the file name is empty");
-  const std::filesystem::path base = file_name.at.source ? std::filesystem::path(*file_name.at.source).parent_path()
-                                                         : std::filesystem::path();
+  const std::filesystem::path base =
+      file_name.at.source ? std::filesystem::path(*file_name.at.source).parent_path() : std::filesystem::path();
   const std::filesystem::path file = base / std::filesystem::path(file_name.scalar());
   const std::filesystem::path identity = include_identity(file);
   if (std::find(chain.begin(), chain.end(), identity) != chain.end())
     throw InputError(where, "include cycle: " + chain_text(chain, identity));
   if (chain.size() >= static_cast<std::size_t>(kMaxIncludeDepth))
-    throw InputError(where, "includes nested deeper than " + std::to_string(kMaxIncludeDepth) + " files: " +
-                                chain_text(chain, identity));
+    throw InputError(where, "includes nested deeper than " + std::to_string(kMaxIncludeDepth) +
+                                " files: " + chain_text(chain, identity));
   if (++walk.files_read > kMaxIncludesRead)
-    throw InputError(where, "more than " + std::to_string(kMaxIncludesRead) +
-                                " includes in one scene (each counted every time it is included; the limit on included files)");
+    throw InputError(
+        where, "more than " + std::to_string(kMaxIncludesRead) +
+                   " includes in one scene (each counted every time it is included; the limit on included files)");
   std::string text;
   try {
     text = read_include(file);
   } catch (const InputError& e) {
-    throw InputError(where, "cannot include '" + std::string(file_name.scalar()) + "' (" + file.string() + "): " + e.message());
+    throw InputError(
+        where, "cannot include '" + std::string(file_name.scalar()) + "' (" + file.string() + "): " + e.message());
   }
   walk.bytes_read += text.size();
   if (walk.bytes_read > kMaxIncludedBytes)
@@ -95,7 +101,9 @@ YamlNodePtr YamlDocument::expand_includes(YamlNodePtr node, const YamlFileReader
         } else if (included->is_mapping()) {
           items.push_back(included);
         } else if (!included->is_null()) {
-          throw InputError(name->at.location(), "include '" + std::string(name->scalar()) + "': a list item includes a list or a mapping, got " + included->describe());
+          throw InputError(name->at.location(), "include '" + std::string(name->scalar()) +
+                                                    "': a list item includes a list or a mapping, got " +
+                                                    included->describe());
         }
       }
     }
@@ -109,7 +117,8 @@ YamlNodePtr YamlDocument::expand_includes(YamlNodePtr node, const YamlFileReader
       const YamlNodePtr included = load_include(*name, read_include, walk);
       if (included->is_null()) continue;
       if (!included->is_mapping())
-        throw InputError(name->at.location(), "include '" + std::string(name->scalar()) + "': a mapping includes a mapping, got " + included->describe());
+        throw InputError(name->at.location(), "include '" + std::string(name->scalar()) +
+                                                  "': a mapping includes a mapping, got " + included->describe());
       merge_entries(entries, included->entries());
     }
   }

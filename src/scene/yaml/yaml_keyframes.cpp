@@ -29,7 +29,8 @@ double parse_number(const YamlNode& node, const std::string& what) {
 std::vector<double> numbers_of(const YamlNode& value, const std::string& what) {
   if (value.is_scalar()) return {parse_number(value, what)};
   if (!value.is_sequence())
-    throw InputError(value.at.location(), what + ": a keyframed value is a number or a list of numbers, got " + value.describe());
+    throw InputError(value.at.location(),
+                     what + ": a keyframed value is a number or a list of numbers, got " + value.describe());
   std::vector<double> numbers;
   for (const YamlNodePtr& item : value.items()) numbers.push_back(parse_number(*item, what));
   return numbers;
@@ -66,7 +67,8 @@ YamlNodePtr value_at_frame(const YamlNode& animated, double frame, YamlNodeArena
   const YamlEntry* interpolation_entry = animated.find("interpolation");
   const Interpolation interpolation = read_interpolation(interpolation_entry ? interpolation_entry->value : nullptr);
   if (!keys.is_mapping() || keys.entries().empty())
-    throw InputError(keys.at.location(), "keyframes: expected a mapping of frame numbers to values, got " + keys.describe());
+    throw InputError(keys.at.location(),
+                     "keyframes: expected a mapping of frame numbers to values, got " + keys.describe());
 
   std::map<double, std::pair<std::vector<double>, const YamlNode*>> by_frame;
   for (const YamlEntry& key : keys.entries()) {
@@ -100,14 +102,9 @@ YamlNodePtr value_at_frame(const YamlNode& animated, double frame, YamlNodeArena
     t = (frame - before->first) / (after->first - before->first);
   }
   switch (interpolation) {
-    case Interpolation::kLinear:
-      break;
-    case Interpolation::kSmooth:
-      t = t * t * (3.0 - 2.0 * t);
-      break;
-    case Interpolation::kStep:
-      t = 0.0;
-      break;
+    case Interpolation::kLinear: break;
+    case Interpolation::kSmooth: t = t * t * (3.0 - 2.0 * t); break;
+    case Interpolation::kStep: t = 0.0; break;
   }
 
   const auto scalar_at = [&](double value) -> YamlNodePtr {
@@ -118,7 +115,8 @@ YamlNodePtr value_at_frame(const YamlNode& animated, double frame, YamlNodeArena
     return node;
   };
   std::vector<double> values(from->size());
-  for (std::size_t i = 0; i < values.size(); ++i) values[i] = t == 0.0 ? (*from)[i] : (*from)[i] + ((*to)[i] - (*from)[i]) * t;
+  for (std::size_t i = 0; i < values.size(); ++i)
+    values[i] = t == 0.0 ? (*from)[i] : (*from)[i] + ((*to)[i] - (*from)[i]) * t;
   if (first.second->is_scalar()) return scalar_at(values[0]);
   std::vector<YamlNodePtr> items;
   for (double value : values) items.push_back(scalar_at(value));

@@ -38,8 +38,8 @@ LightListDesc read_light_list(const YamlNode& node, const std::string& what, con
   const YamlNode* only = list.optional(keys.only);
   const YamlNode* all_but = list.optional(keys.all_but);
   if (only && all_but)
-    fail_at(*all_but, what + ": give " + std::string(keys.only) + " (only these lights) or " + std::string(keys.all_but) +
-                          " (every light but these), not both");
+    fail_at(*all_but, what + ": give " + std::string(keys.only) + " (only these lights) or " +
+                          std::string(keys.all_but) + " (every light but these), not both");
   if (!only && !all_but)
     fail_at(node, what + " needs " + std::string(keys.only) + ": [light names] (only these) or " +
                       std::string(keys.all_but) + ": [light names] (every light but these)");
@@ -59,7 +59,8 @@ LightListDesc read_light_list(const YamlNode& node, const std::string& what, con
 
 }  // namespace
 
-std::optional<LightLinkingDesc> read_light_linking(const MappingReader& entry, const std::vector<std::string>& light_names) {
+std::optional<LightLinkingDesc> read_light_linking(const MappingReader& entry,
+                                                   const std::vector<std::string>& light_names) {
   const YamlNode* light = entry.optional(kLightLinkingKey);
   const YamlNode* shadow = entry.optional(kShadowLinkingKey);
   if (!light && !shadow) return std::nullopt;

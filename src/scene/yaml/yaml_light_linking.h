@@ -17,6 +17,7 @@ inline constexpr std::string_view kShadowLinkingKey = "shadow_linking";
 
 // The entry's linking, or nothing when it has neither key. `light_names`: one per light of the
 // scene (empty for a light without a name); an unknown name fails at its node, with a suggestion.
-std::optional<LightLinkingDesc> read_light_linking(const MappingReader& entry, const std::vector<std::string>& light_names);
+std::optional<LightLinkingDesc> read_light_linking(const MappingReader& entry,
+                                                   const std::vector<std::string>& light_names);
 
 }  // namespace rtpro

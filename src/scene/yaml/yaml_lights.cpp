@@ -30,7 +30,8 @@ std::vector<LightDesc> every_light_kind(std::index_sequence<I...>) {
 }
 
 LightDesc read_light(const YamlNode& node) {
-  static const std::vector<LightDesc> kinds = every_light_kind(std::make_index_sequence<std::variant_size_v<LightDesc>>());
+  static const std::vector<LightDesc> kinds =
+      every_light_kind(std::make_index_sequence<std::variant_size_v<LightDesc>>());
   std::vector<std::string> types;
   for (const LightDesc& kind : kinds) types.push_back(light_type(kind));
   const std::string type = read_entry_type(node, "light", types);

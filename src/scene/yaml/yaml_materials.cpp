@@ -144,14 +144,16 @@ void read_microfacet_keys(const MappingReader& material, MaterialDesc& desc) {
   if (const YamlNode* roughness = material.optional("roughness")) {
     desc.roughness = read_non_negative(*roughness, material.field("roughness"));
     if (desc.roughness > 1.0f)
-      fail_at(*roughness, material.field("roughness") + " must be from 0 (smooth) to 1, got " + std::string(roughness->scalar()));
+      fail_at(*roughness,
+              material.field("roughness") + " must be from 0 (smooth) to 1, got " + std::string(roughness->scalar()));
   }
   const YamlNode* eta = material.optional("eta");
   const YamlNode* k = material.optional("k");
   if (!eta != !k)
-    fail_at(eta ? *eta : *k, material.field(eta ? "eta" : "k") +
-                                 ": a complex index of refraction needs both eta and k (gold: eta [0.143, 0.374, 1.442], "
-                                 "k [3.983, 2.385, 1.603])");
+    fail_at(eta ? *eta : *k,
+            material.field(eta ? "eta" : "k") +
+                ": a complex index of refraction needs both eta and k (gold: eta [0.143, 0.374, 1.442], "
+                "k [3.983, 2.385, 1.603])");
   if (eta) {
     desc.conductor_eta = read_color(*eta, material.field("eta"));
     desc.conductor_k = read_color(*k, material.field("k"));
@@ -193,7 +195,8 @@ MaterialDesc read_material(const std::string& name, const YamlNode& node, const 
                       node.describe());
   MaterialDesc desc;
   desc.name = name;
-  if (const YamlEntry* type = node.find("type")) desc.kind = read_material_kind(*type->value, "material '" + name + "'.type");
+  if (const YamlEntry* type = node.find("type"))
+    desc.kind = read_material_kind(*type->value, "material '" + name + "'.type");
   const std::vector<std::string_view> keys = material_keys(desc.kind);
   const MappingReader material(node, "material '" + name + "'", keys);
   read_emission(material, desc);
@@ -217,7 +220,8 @@ MaterialDesc read_material(const std::string& name, const YamlNode& node, const 
   if (const YamlNode* reflectivity = material.optional("reflectivity")) {
     desc.reflectivity = read_non_negative(*reflectivity, material.field("reflectivity"));
     if (desc.reflectivity > 1.0f)
-      fail_at(*reflectivity, material.field("reflectivity") + " must be from 0 to 1, got " + std::string(reflectivity->scalar()));
+      fail_at(*reflectivity,
+              material.field("reflectivity") + " must be from 0 to 1, got " + std::string(reflectivity->scalar()));
   }
   if (desc.kind == MaterialKind::kDielectric || desc.kind == MaterialKind::kPrincipled) desc.ior = 1.5f;
   if (const YamlNode* ior = material.optional("ior")) {
@@ -241,7 +245,8 @@ MaterialDesc read_material(const std::string& name, const YamlNode& node, const 
   if (distance) {
     const double d = read_number(*distance, material.field("transmittance_distance"));
     if (!(d > 0.0) || !std::isfinite(static_cast<float>(d)))
-      fail_at(*distance, material.field("transmittance_distance") + " must be a positive distance, got " + std::string(distance->scalar()));
+      fail_at(*distance, material.field("transmittance_distance") + " must be a positive distance, got " +
+                             std::string(distance->scalar()));
     desc.transmittance_distance = static_cast<float>(d);
   }
   return desc;

@@ -42,7 +42,8 @@ Integer parse_integer(const YamlNode& node, const std::string& name, std::string
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (end != text.data() + text.size() || text.empty())
     fail_at(node, name + ": expected " + std::string(expected) + ", got " + node.describe());
-  if (error == std::errc::result_out_of_range) fail_at(node, name + ": " + std::string(node.scalar()) + " is out of range");
+  if (error == std::errc::result_out_of_range)
+    fail_at(node, name + ": " + std::string(node.scalar()) + " is out of range");
   return value;
 }
 
@@ -86,13 +87,15 @@ std::string read_entry_type(const YamlNode& entry, const std::string& what, cons
 
 double read_number(const YamlNode& node, const std::string& name) {
   const std::string_view text = without_plus(scalar_or_fail(node, name, "a number").scalar());
-  if (is_yaml_special_float(text)) fail_at(node, name + ": expected a finite number, got '" + std::string(node.scalar()) + "'");
+  if (is_yaml_special_float(text))
+    fail_at(node, name + ": expected a finite number, got '" + std::string(node.scalar()) + "'");
   double value = 0.0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (end != text.data() + text.size() || text.empty())
     fail_at(node, name + ": expected a number, got " + node.describe());
   if (error == std::errc::result_out_of_range || !std::isfinite(value) || std::fabs(value) > kMaxSceneNumber) {
-    fail_at(node, name + ": " + std::string(node.scalar()) + " is out of range (numbers must be finite and within ±1e9)");
+    fail_at(node,
+            name + ": " + std::string(node.scalar()) + " is out of range (numbers must be finite and within ±1e9)");
   }
   return value;
 }
@@ -116,8 +119,7 @@ std::string read_string(const YamlNode& node, const std::string& name) {
   return std::string(node.scalar());
 }
 
-YamlNodeList read_list(const YamlNode& node, const std::string& name, std::size_t count,
-                                          std::string_view shape) {
+YamlNodeList read_list(const YamlNode& node, const std::string& name, std::size_t count, std::string_view shape) {
   if (!node.is_sequence() || node.items().size() != count)
     fail_at(node, name + ": expected " + std::string(shape) + ", got " + node.describe());
   return node.items();
@@ -156,7 +158,8 @@ void reject_8bit_color(const YamlNode& node, YamlNodeList items, const std::stri
     std::snprintf(text, sizeof text, "%.3g", decoded);
     linear += (linear.empty() ? "" : ", ") + std::string(text);
   }
-  fail_at(node, name + ": [" + std::string(items[0]->scalar()) + ", " + std::string(items[1]->scalar()) + ", " + std::string(items[2]->scalar()) +
+  fail_at(node, name + ": [" + std::string(items[0]->scalar()) + ", " + std::string(items[1]->scalar()) + ", " +
+                    std::string(items[2]->scalar()) +
                     "] looks like 8-bit sRGB values; colours are linear with 1 as full: that colour is [" + linear +
                     "] (for a brighter light raise its intensity; write 2.0 for a deliberate value above 1)");
 }
@@ -168,7 +171,8 @@ Color read_color(const YamlNode& node, const std::string& name) {
   Color color;
   for (int i = 0; i < 3; ++i) {
     const double component = read_number(*items[i], name);
-    if (component < 0.0) fail_at(*items[i], name + ": colour components must be >= 0, got " + std::string(items[i]->scalar()));
+    if (component < 0.0)
+      fail_at(*items[i], name + ": colour components must be >= 0, got " + std::string(items[i]->scalar()));
     color[i] = static_cast<float>(component);
   }
   reject_8bit_color(node, items, name);

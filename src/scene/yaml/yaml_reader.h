@@ -22,7 +22,6 @@ inline constexpr double kMaxSceneNumber = 1e9;
 [[noreturn]] void fail_at(const YamlPosition& at, const std::string& message);
 [[noreturn]] void fail_at(const YamlNode& node, const std::string& message);
 
-
 // A mapping with a fixed set of keys; constructing it rejects any other key.
 class MappingReader {
  public:
@@ -56,7 +55,6 @@ Vec3 read_vec3(const YamlNode& node, const std::string& name);
 // A vec3 whose components are all >= 0 (colours).
 Color read_color(const YamlNode& node, const std::string& name);
 // A list of exactly `count` items, or a failure naming the expected shape.
-YamlNodeList read_list(const YamlNode& node, const std::string& name, std::size_t count,
-                                          std::string_view shape);
+YamlNodeList read_list(const YamlNode& node, const std::string& name, std::size_t count, std::string_view shape);
 
 }  // namespace rtpro

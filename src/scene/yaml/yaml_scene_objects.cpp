@@ -143,8 +143,8 @@ class ObjectsReader {
 
  private:
   // `in_world`: the entries are the world's, which may be light-linked.
-  void read_entries(const YamlNode* list, const std::string& what, ObjectDesc& object,
-                    std::vector<InstanceLink>& links, bool in_world) {
+  void read_entries(const YamlNode* list, const std::string& what, ObjectDesc& object, std::vector<InstanceLink>& links,
+                    bool in_world) {
     if (!list || list->is_null()) return;
     if (!list->is_sequence())
       fail_at(*list, what + ": expected a list of entries (sphere, mesh, instance), got " + list->describe());
@@ -186,7 +186,8 @@ class ObjectsReader {
     if (const YamlNode* center = sphere.optional("center")) desc.center = read_vec3(*center, sphere.field("center"));
     if (const YamlNode* radius = sphere.optional("radius")) {
       const double value = read_number(*radius, sphere.field("radius"));
-      if (!(value > 0.0)) fail_at(*radius, sphere.field("radius") + " must be > 0, got " + std::string(radius->scalar()));
+      if (!(value > 0.0))
+        fail_at(*radius, sphere.field("radius") + " must be > 0, got " + std::string(radius->scalar()));
       desc.radius = static_cast<float>(value);
     }
     if (const YamlNode* material = sphere.optional("material"))
@@ -197,12 +198,14 @@ class ObjectsReader {
 
   // An OBJ or PLY file is one mesh; a glTF file is a scene of its own, placed as a whole.
   void read_mesh(const YamlNode& node, ObjectDesc& object, bool in_world) {
-    const MappingReader mesh(node, "mesh", {"type", "file", "material", "normals", kLightLinkingKey, kShadowLinkingKey});
+    const MappingReader mesh(node, "mesh",
+                             {"type", "file", "material", "normals", kLightLinkingKey, kShadowLinkingKey});
     MeshDesc desc;
     desc.file = resolve_mesh_file(mesh.required("file"), mesh.field("file"));
     if (const YamlNode* material = mesh.optional("material"))
       desc.material = material_index(*material, mesh.field("material"));
-    if (const YamlNode* normals = mesh.optional("normals")) desc.normals = read_normals_mode(*normals, mesh.field("normals"));
+    if (const YamlNode* normals = mesh.optional("normals"))
+      desc.normals = read_normals_mode(*normals, mesh.field("normals"));
     desc.where = node.at.location();
     desc.linking = read_linking(mesh, in_world);
     if (is_gltf_file(desc.file))
@@ -219,7 +222,8 @@ class ObjectsReader {
   }
 
   InstanceDesc read_instance(const YamlNode& node, std::vector<InstanceLink>& links, bool in_world) {
-    const MappingReader instance(node, "instance", {"type", "object", "transform", kLightLinkingKey, kShadowLinkingKey});
+    const MappingReader instance(node, "instance",
+                                 {"type", "object", "transform", kLightLinkingKey, kShadowLinkingKey});
     InstanceDesc desc;
     const YamlNode& object = instance.required("object");
     const std::string name = read_string(object, instance.field("object"));
@@ -255,7 +259,8 @@ class ObjectsReader {
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (std::find(kMeshExtensions.begin(), kMeshExtensions.end(), extension) == kMeshExtensions.end())
-      fail_at(node, field + ": '" + written + "' is not a mesh format rtpro reads (.obj or .ply, or a .gltf or .glb scene)");
+      fail_at(node,
+              field + ": '" + written + "' is not a mesh format rtpro reads (.obj or .ply, or a .gltf or .glb scene)");
     std::error_code error;
     const std::filesystem::file_status status = std::filesystem::status(file, error);
     if (!std::filesystem::exists(status))

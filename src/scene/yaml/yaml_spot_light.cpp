@@ -13,7 +13,8 @@ namespace {
 float read_cone_angle(const YamlNode& node, const std::string& name) {
   const double degrees = read_number(node, name);
   if (!(degrees >= 0.0 && degrees <= 90.0))
-    fail_at(node, name + " is the cone's half-angle off the axis: from 0 to 90 degrees, got " + std::string(node.scalar()));
+    fail_at(node,
+            name + " is the cone's half-angle off the axis: from 0 to 90 degrees, got " + std::string(node.scalar()));
   return static_cast<float>(degrees);
 }
 
@@ -29,7 +30,8 @@ Vec3 read_spot_axis(const MappingReader& light, const Vec3& position) {
     return normalize(axis);
   }
   if (!look_at)
-    fail_at(light.node(), "spot light needs 'direction' (the axis light travels along) or 'look_at' (a point on the axis)");
+    fail_at(light.node(),
+            "spot light needs 'direction' (the axis light travels along) or 'look_at' (a point on the axis)");
   const Vec3 axis = read_vec3(*look_at, light.field("look_at")) - position;
   if (!(length(axis) > 0.0f))
     fail_at(*look_at, light.field("look_at") + " must differ from position: the light needs an axis to shine along");
@@ -39,8 +41,9 @@ Vec3 read_spot_axis(const MappingReader& light, const Vec3& position) {
 }  // namespace
 
 void read_light_desc(const YamlNode& node, SpotLightDesc& desc) {
-  const MappingReader light(node, "spot light",
-                            {"type", "name", "position", "direction", "look_at", "color", "intensity", "inner_angle", "outer_angle"});
+  const MappingReader light(
+      node, "spot light",
+      {"type", "name", "position", "direction", "look_at", "color", "intensity", "inner_angle", "outer_angle"});
   desc.position = read_vec3(light.required("position"), light.field("position"));
   desc.direction = read_spot_axis(light, desc.position);
   read_color_and_intensity(light, desc);
@@ -53,7 +56,8 @@ void read_light_desc(const YamlNode& node, SpotLightDesc& desc) {
   if (const YamlNode* inner = light.optional("inner_angle")) {
     desc.inner_angle = read_cone_angle(*inner, light.field("inner_angle"));
     if (desc.inner_angle > desc.outer_angle)
-      fail_at(*inner, light.field("inner_angle") + " (" + std::string(inner->scalar()) + ") must not exceed outer_angle (" +
+      fail_at(*inner, light.field("inner_angle") + " (" + std::string(inner->scalar()) +
+                          ") must not exceed outer_angle (" +
                           (outer ? std::string(outer->scalar()) : "45, the default") +
                           "): the light is at full intensity inside the inner cone and ends at the outer one");
   }

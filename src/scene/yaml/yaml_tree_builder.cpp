@@ -81,14 +81,11 @@ class TreeBuilder {
         open(mark, text_of(event.data.mapping_start.anchor), YamlNode::Kind::mapping);
         break;
       case YAML_SEQUENCE_END_EVENT:
-      case YAML_MAPPING_END_EVENT:
-        close();
-        break;
+      case YAML_MAPPING_END_EVENT: close(); break;
       case YAML_NO_EVENT:
       case YAML_STREAM_START_EVENT:
       case YAML_STREAM_END_EVENT:
-      case YAML_DOCUMENT_END_EVENT:
-        break;
+      case YAML_DOCUMENT_END_EVENT: break;
     }
   }
 
@@ -184,7 +181,8 @@ class TreeBuilder {
       parent.item_list.push_back(node);
     } else if (!parent.pending) {
       // Keys that are plain scalars never get here (add_key); anything else is not a name.
-      if (!node->is_scalar()) throw InputError(node->at.location(), "a mapping key must be a name, got " + node->describe());
+      if (!node->is_scalar())
+        throw InputError(node->at.location(), "a mapping key must be a name, got " + node->describe());
       add_key(node->scalar(), node->at);
     } else {
       YamlEntry& entry = parent.entry_list.back();
@@ -230,8 +228,8 @@ yaml_mark_t mark_of_offset(std::string_view text, std::size_t offset) {
     const YamlPosition context_at = builder.position(parser.context_mark);
     message += std::string(" (") + parser.context;
     if (context_at.line > 0)
-      message += " that starts at line " + std::to_string(context_at.line) + ", column " +
-                 std::to_string(context_at.column);
+      message +=
+          " that starts at line " + std::to_string(context_at.line) + ", column " + std::to_string(context_at.column);
     message += ")";
   }
   throw InputError(builder.position(mark).location(), message);

@@ -30,11 +30,15 @@ class Substitution {
  public:
   Substitution(const YamlNode& variables, YamlNodeArena& arena) : arena_(arena) {
     if (!variables.is_mapping() && !variables.is_null())
-      throw InputError(variables.at.location(), "variables: expected a mapping of names to values, got " + variables.describe());
+      throw InputError(variables.at.location(),
+                       "variables: expected a mapping of names to values, got " + variables.describe());
     for (const YamlEntry& entry : variables.entries()) {
       if (entry.key.empty() || !is_name_start(entry.key[0]) ||
-          entry.key.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
-        throw InputError(entry.key_at.location(), "variables: '" + std::string(entry.key) + "' is not a name (letters, digits and '_', not starting with a digit)");
+          entry.key.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") !=
+              std::string::npos)
+        throw InputError(entry.key_at.location(),
+                         "variables: '" + std::string(entry.key) +
+                             "' is not a name (letters, digits and '_', not starting with a digit)");
       values_[std::string(entry.key)] = entry.value;
       if (entry.key_at.line == 0 && entry.key_at.source) command_line_.push_back(&entry);
     }
@@ -46,7 +50,8 @@ class Substitution {
       // --frames sets `frame` for every frame, whether or not this scene is animated.
       if (used_.count(entry->key) || entry->key == "frame") continue;
       std::string message = "the scene uses no variable '$" + std::string(entry->key) + "'";
-      if (const auto near = closest_match(entry->key, unused_candidates())) message += "; did you mean '" + *near + "'?";
+      if (const auto near = closest_match(entry->key, unused_candidates()))
+        message += "; did you mean '" + *near + "'?";
       throw InputError(entry->key_at.location(), message);
     }
   }
@@ -64,10 +69,8 @@ class Substitution {
  private:
   YamlNodePtr apply_once(YamlNodePtr node) const {
     switch (node->kind) {
-      case YamlNode::Kind::null:
-        return node;
-      case YamlNode::Kind::scalar:
-        return node->scalar().find('$') == std::string_view::npos ? node : substitute(*node);
+      case YamlNode::Kind::null: return node;
+      case YamlNode::Kind::scalar: return node->scalar().find('$') == std::string_view::npos ? node : substitute(*node);
       case YamlNode::Kind::sequence: {
         std::vector<YamlNodePtr> items(node->items().begin(), node->items().end());
         for (YamlNodePtr& item : items) item = apply(item);
@@ -100,7 +103,8 @@ class Substitution {
     std::size_t end = i;
     while (end < text.size() && is_name_char(text[end])) ++end;
     if (end == i || !is_name_start(text[i]))
-      throw InputError(node.at.location(), "'$' must start a variable reference ($name or ${name}; '$$' for a '$') in " + node.describe());
+      throw InputError(node.at.location(),
+                       "'$' must start a variable reference ($name or ${name}; '$$' for a '$') in " + node.describe());
     return {std::string(text.substr(i, end - i)), end - i};
   }
 
@@ -152,7 +156,8 @@ class Substitution {
     }
     substituted_bytes_ += result.size();
     if (substituted_bytes_ > kMaxSubstitutedTotalBytes)
-      throw InputError(node.at.location(), "variable substitution makes more than " + std::to_string(kMaxSubstitutedTotalBytes >> 20) +
+      throw InputError(node.at.location(), "variable substitution makes more than " +
+                                               std::to_string(kMaxSubstitutedTotalBytes >> 20) +
                                                " MiB of text in all (the limit on substituted text)");
     YamlNode* copy = arena_.node(node);
     copy->set_scalar(arena_.text(result));
@@ -168,8 +173,7 @@ class Substitution {
     double number = 0;
     const std::string_view text = value.scalar();
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
-    if (!value.is_scalar() || error != std::errc() || end != text.data() + text.size() ||
-        !std::isfinite(number))
+    if (!value.is_scalar() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(number))
       throw InputError(value.at.location(), "frame: expected a frame number, got " + value.describe());
     return number;
   }

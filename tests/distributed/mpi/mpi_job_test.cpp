@@ -20,8 +20,8 @@
 namespace rtpro {
 namespace mpi_job_test {
 
-using test::rtpro_executable;
 using test::expect_same_pixels;
+using test::rtpro_executable;
 using test::run_command;
 
 const char* kScene = R"(rtpro: 1
@@ -71,8 +71,8 @@ TEST(MpiJob, ImageIsBitIdenticalToOneProcessForAnyRanksThreadsAndTiles) {
     const auto reference = dir / (backend + ".exr");
     ASSERT_EQ(run_command(render_args(scene, reference) + " --backend " + backend), 0);
     for (const Run run : {Run{1, 2, 16}, Run{2, 1, 7}, Run{3, 2, 16}, Run{4, 1, 5}}) {
-      const std::string name = backend + std::to_string(run.ranks) + "x" + std::to_string(run.threads) + "t" +
-                               std::to_string(run.tile_size);
+      const std::string name =
+          backend + std::to_string(run.ranks) + "x" + std::to_string(run.threads) + "t" + std::to_string(run.tile_size);
       SCOPED_TRACE(name);
       const auto out = dir / (name + ".exr");
       const auto stats = dir / (name + ".json");
@@ -101,9 +101,8 @@ TEST(MpiJob, RanksThatWouldRenderSomethingElseAreRefused) {
   const auto out = dir / "out.exr";
   // Open MPI's MPMD form: rank 0 and rank 1 run different command lines.
   std::string output;
-  const int code = run_command(mpirun(1) + render_args(scene, out) + " : -n 1 " + render_args(scene, out) +
-                                   " --set render.seed=10",
-                               &output);
+  const int code = run_command(
+      mpirun(1) + render_args(scene, out) + " : -n 1 " + render_args(scene, out) + " --set render.seed=10", &output);
   EXPECT_EQ(code, 2) << output;
   EXPECT_NE(output.find("rank 1 would render another job than rank 0"), std::string::npos) << output;
   EXPECT_NE(output.find("seed: 9 here, 10 in rank 1"), std::string::npos) << output;
@@ -151,8 +150,8 @@ TEST(MpiJob, KilledRankEndsTheJobAndResumeFinishesItExactly) {
     set_mpiexec_environment();
     const std::string exe = rtpro_executable().string();
     execl(RTPRO_MPIEXEC, RTPRO_MPIEXEC, "--bind-to", "none", "-n", "3", exe.c_str(), "render", scene.c_str(), "-o",
-          out.c_str(), "--aov", "albedo,normal,depth,object-id", "-q", "--spp", "1024", "--threads", "1",
-          "--tile-size", "8", static_cast<char*>(nullptr));
+          out.c_str(), "--aov", "albedo,normal,depth,object-id", "-q", "--spp", "1024", "--threads", "1", "--tile-size",
+          "8", static_cast<char*>(nullptr));
     _exit(127);
   }
   // Kill rank 1 once the journal holds about ten of the 70 tiles (8 x 8 pixels, 14 channels: 3.7 KB
@@ -229,8 +228,8 @@ TEST(MpiJob, StoppedRankEndsTheJobAfterTheRankTimeoutAndResumeFinishesIt) {
     std::freopen(log.c_str(), "w", stderr);
     const std::string exe = rtpro_executable().string();
     execl(RTPRO_MPIEXEC, RTPRO_MPIEXEC, "--bind-to", "none", "-n", "2", exe.c_str(), "render", scene.c_str(), "-o",
-          out.c_str(), "--aov", "albedo,normal,depth,object-id", "-q", "--spp", "256", "--threads", "1",
-          "--tile-size", "8", "--rank-timeout", "2", static_cast<char*>(nullptr));
+          out.c_str(), "--aov", "albedo,normal,depth,object-id", "-q", "--spp", "256", "--threads", "1", "--tile-size",
+          "8", "--rank-timeout", "2", static_cast<char*>(nullptr));
     _exit(127);
   }
   // Stop rank 1 once the journal holds a few of the 70 tiles (3.7 KB a record).
