@@ -23,6 +23,19 @@ void expect_same_vector(const Vec3& actual, const Vec3& expected, const char* wh
     ASSERT_EQ(bits(actual[axis]), bits(expected[axis])) << what << " axis " << axis << " of hit " << hit;
 }
 
+// Every field of `actual` is `expected`'s, bit for bit.
+void expect_same_surface(const SurfacePoint& actual, const SurfacePoint& expected, int hit) {
+  expect_same_vector(actual.position, expected.position, "position", hit);
+  expect_same_vector(actual.geometric_normal, expected.geometric_normal, "geometric normal", hit);
+  expect_same_vector(actual.shading_normal, expected.shading_normal, "shading normal", hit);
+  ASSERT_EQ(actual.front_face, expected.front_face) << hit;
+  ASSERT_EQ(bits(actual.position_error), bits(expected.position_error)) << hit;
+  ASSERT_EQ(actual.material, expected.material) << hit;
+  ASSERT_EQ(actual.object_id, expected.object_id) << hit;
+  ASSERT_EQ(bits(actual.tex_u), bits(expected.tex_u)) << hit;
+  ASSERT_EQ(bits(actual.tex_v), bits(expected.tex_v)) << hit;
+}
+
 // Every field of four surfaces made at once against make_surface and reflect, one hit at a time.
 template <typename MakeFour>
 void expect_same_surfaces(const RenderScene& scene, const std::vector<Ray>& rays, const std::vector<Hit>& hits,
@@ -44,15 +57,7 @@ void expect_same_surfaces(const RenderScene& scene, const std::vector<Ray>& rays
     for (int k = 0; k < 4; ++k) {
       const int hit = static_cast<int>(first) + k;
       const SurfacePoint one = make_surface(scene, rays[first + k], hits[first + k]);
-      expect_same_vector(four[k].position, one.position, "position", hit);
-      expect_same_vector(four[k].geometric_normal, one.geometric_normal, "geometric normal", hit);
-      expect_same_vector(four[k].shading_normal, one.shading_normal, "shading normal", hit);
-      ASSERT_EQ(four[k].front_face, one.front_face) << hit;
-      ASSERT_EQ(bits(four[k].position_error), bits(one.position_error)) << hit;
-      ASSERT_EQ(four[k].material, one.material) << hit;
-      ASSERT_EQ(four[k].object_id, one.object_id) << hit;
-      ASSERT_EQ(bits(four[k].tex_u), bits(one.tex_u));
-      ASSERT_EQ(bits(four[k].tex_v), bits(one.tex_v));
+      ASSERT_NO_FATAL_FAILURE(expect_same_surface(four[k], one, hit));
       expect_same_vector(four_mirrors[k], reflect(normalize(rays[first + k].dir), one.shading_normal), "mirror", hit);
       back_faces += !one.front_face;
     }
@@ -201,15 +206,7 @@ TEST(Surface, ABatchOfHitsIsMakeSurfaceOfEachHit) {
     plain_triangles += is_plain_triangle_hit(scene, hits[i]);
     others += !is_plain_sphere_hit(scene, hits[i]) && !is_plain_triangle_hit(scene, hits[i]);
     const SurfacePoint one = make_surface(scene, rays[i], hits[i]);
-    expect_same_vector(batch[i].position, one.position, "position", hit);
-    expect_same_vector(batch[i].geometric_normal, one.geometric_normal, "geometric normal", hit);
-    expect_same_vector(batch[i].shading_normal, one.shading_normal, "shading normal", hit);
-    ASSERT_EQ(batch[i].front_face, one.front_face) << hit;
-    ASSERT_EQ(bits(batch[i].position_error), bits(one.position_error)) << hit;
-    ASSERT_EQ(batch[i].material, one.material) << hit;
-    ASSERT_EQ(batch[i].object_id, one.object_id) << hit;
-    ASSERT_EQ(bits(batch[i].tex_u), bits(one.tex_u)) << hit;
-    ASSERT_EQ(bits(batch[i].tex_v), bits(one.tex_v)) << hit;
+    ASSERT_NO_FATAL_FAILURE(expect_same_surface(batch[i], one, hit));
   }
   EXPECT_GT(plain_spheres, 100);
   EXPECT_GT(plain_triangles, 100);
