@@ -82,9 +82,10 @@ class PathTracer {
     if (path.bounce >= scene_.render.max_depth) return;
 
     const Vec3 wo = surface.frame.to_local(-normalize(ray.dir));
+    SpawnOrigins origins(sp);
     if (!delta && !lights_.empty(group) &&
         lights_.sample(sp.position, u.choices.x, u.light_point, textures_, group, light_sample_))
-      queue_shadow_ray(path.sample, sp, surface, wo, light_sample_, beta);
+      queue_shadow_ray(path.sample, origins, surface, wo, light_sample_, beta);
 
     const std::optional<BsdfSample> bs = bsdf_sample(surface.bsdf, wo, u.choices.y, u.bsdf_direction);
     if (!bs || !(bs->pdf > 0.0f) || carries_no_light(bs->f)) return;
@@ -109,7 +110,7 @@ class PathTracer {
     next.transmitted = bs->transmitted;
     next.medium = medium;
     next.group = group;
-    append_ray(ws_.next_rays, spawn_ray(sp, direction));
+    append_ray(ws_.next_rays, spawn_ray(origins, direction));
   }
 
  private:
@@ -152,7 +153,7 @@ class PathTracer {
     result.radiance += path.beta * radiance * weight;
   }
 
-  void queue_shadow_ray(std::uint32_t sample, const SurfacePoint& sp, const SurfaceBsdf& surface, const Vec3& wo,
+  void queue_shadow_ray(std::uint32_t sample, SpawnOrigins& origins, const SurfaceBsdf& surface, const Vec3& wo,
                         const PathLightSample& ls, const Color& beta) {
     const Vec3 wi = surface.frame.to_local(ls.direction);
     const Color f = bsdf_eval(surface.bsdf, wo, wi) * std::fabs(wi.z);
@@ -169,9 +170,9 @@ class PathTracer {
     if (!is_finite(contribution) || carries_no_light(contribution)) return;
     Ray ray;
     if (std::isinf(ls.distance)) {
-      ray = spawn_ray(sp, ls.direction);
+      ray = spawn_ray(origins, ls.direction);
     } else {
-      ray = spawn_ray_to(sp, sp.position + ls.direction * ls.distance);
+      ray = spawn_ray_to(origins, origins.surface().position + ls.direction * ls.distance);
       ray.tfar = 1.0f - kShadowEpsilon;
     }
     PathWorkspace::ShadowQuery& query = ws_.shadow_queries.emplace_back();

@@ -203,5 +203,35 @@ TEST(RayOffset, SseOffsetIsThePerAxisDefinitionUnderTheTracingFloatingPointMode)
   test::in_tracing_fp_mode(expect_sse_offset_equals_per_axis_definition);
 }
 
+// A vertex's shadow ray and next ray share its cached origins: each must be the origin that
+// spawning on its own gives, whichever side asks first and however often.
+TEST(RayOffset, SpawnOriginsAreTheOffsetOriginsOfEachSide) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> coordinate(-10.0f, 10.0f);
+  for (int i = 0; i < 20000; ++i) {
+    SurfacePoint sp{};
+    sp.position = {coordinate(rng), coordinate(rng), coordinate(rng)};
+    sp.geometric_normal = normalize(Vec3{coordinate(rng), coordinate(rng), coordinate(rng)});
+    sp.position_error = std::fabs(coordinate(rng)) * 1e-6f;
+    SpawnOrigins origins(sp);
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 direction{coordinate(rng), coordinate(rng), coordinate(rng)};
+      const Ray expected = spawn_ray(sp, direction);
+      const Ray actual = spawn_ray(origins, direction);
+      const Vec3 target = sp.position + direction;
+      const Ray expected_to = spawn_ray_to(sp, target);
+      const Ray actual_to = spawn_ray_to(origins, target);
+      for (int axis = 0; axis < 3; ++axis) {
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(actual.org[axis]), std::bit_cast<std::uint32_t>(expected.org[axis]));
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(actual_to.org[axis]),
+                  std::bit_cast<std::uint32_t>(expected_to.org[axis]));
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(actual_to.dir[axis]),
+                  std::bit_cast<std::uint32_t>(expected_to.dir[axis]));
+      }
+      ASSERT_EQ(actual_to.tfar, expected_to.tfar);
+    }
+  }
+}
+
 }  // namespace ray_offset_test
 }  // namespace rtpro
