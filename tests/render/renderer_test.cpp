@@ -135,5 +135,24 @@ TEST(Renderer, AovLayersHavePlausibleValues) {
   EXPECT_GT(hit_pixels, 100);
 }
 
+// A render that keeps only the colour sums it in a loop of its own: the colour must be the one a
+// render with every layer gives.
+TEST(Renderer, ColourIsTheSameWithAndWithoutLayers) {
+  const RenderScene scene = test_scene();
+  const RenderResult plain = render_with(scene, 2, 16);
+  const RenderResult layered =
+      render_with(scene, 2, 16, {Aov::kAlbedo, Aov::kHalves, Aov::kVariance, Aov::kDepth, Aov::kObjectId});
+  ASSERT_EQ(plain.image.channels.size(), 3u);
+  ASSERT_GT(layered.image.channels.size(), 3u);
+  int lit = 0;
+  for (int y = 0; y < plain.image.height; ++y)
+    for (int x = 0; x < plain.image.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        ASSERT_EQ(plain.image.at(x, y, c), layered.image.at(x, y, c)) << x << "," << y << " channel " << c;
+        lit += plain.image.at(x, y, c) > 0.0f;
+      }
+  EXPECT_GT(lit, 100);
+}
+
 }  // namespace renderer_test
 }  // namespace rtpro

@@ -28,8 +28,7 @@ struct PixelAccumulator {
   // Inline: it runs once per camera sample.
   void add(const Color& sample_radiance, const PrimaryHit& primary, int sample_index) {
     if (samples == 0) first_object_id = primary.hit ? primary.object_id + 1 : 0;
-    ++samples;
-    radiance += sample_radiance;
+    add_color(sample_radiance);
     (sample_index % 2 == 0 ? even_radiance : odd_radiance) += sample_radiance;
     radiance_squared += sample_radiance * sample_radiance;
     if (!primary.hit) return;
@@ -37,6 +36,11 @@ struct PixelAccumulator {
     normal += primary.normal;
     depth_sum += primary.depth;
     ++hits;
+  }
+  // The colour and the count alone, as add sums them: all a SumLayout that keeps_color_only reads.
+  void add_color(const Color& sample_radiance) {
+    ++samples;
+    radiance += sample_radiance;
   }
 };
 
@@ -59,6 +63,7 @@ class SumLayout {
 
   int floats() const { return floats_; }
   bool keeps_even() const { return even_ >= 0; }
+  bool keeps_color_only() const { return floats_ == 4; }
 
   // Inline below, as they run once per pixel of every work item: writes the sums this layout keeps.
   void store(const PixelAccumulator& acc, float* out) const;
