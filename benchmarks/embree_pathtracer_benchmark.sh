@@ -3,7 +3,9 @@
 # integrator, on its cornell_box.ecs at 512x512 and the same path length. Embree renders 2 warm-up
 # and FRAMES timed frames of 1 spp (--benchmark 2 FRAMES) and reports its average Mrays/s; rtpro
 # renders benchmarks/embree/cornell_box.yaml at FRAMES spp (the same samples) with each of its
-# backends (embree: the same kernels as the peer; native: its own BVH) and its rays are
+# backends (embree: the same kernels as the peer; native: its own BVH), and once more with embree
+# built as the peer builds its scene (--no-embree-robust; rtpro's default is Embree's robust
+# mode, whose watertight triangle test costs more), and its rays are
 # counted by kind in --stats-json (camera, shadow, bounce rays) over the render phase. Runs are
 # interleaved per thread count; the table gives medians, the spread, rtpro / Embree, and paths
 # (camera samples) per second, which does not depend on how either counts rays.
@@ -21,9 +23,11 @@ for t in $threads; do
   for r in $(seq "$runs"); do
     (cd "$out" && pathtracer -c "$models/cornell_box.ecs" --size 512 512 --spp 1 --max-path-length 8 --threads "$t" \
       --benchmark 2 "$frames" >"$out/embree-t$t-r$r.log" 2>&1)
-    for backend in embree native; do
+    for config in embree native embree-not-robust; do
+      flags=(--backend "${config%%-*}")
+      [[ $config != *-not-robust ]] || flags+=(--no-embree-robust)
       "$build/rtpro" render "$root/benchmarks/embree/cornell_box.yaml" -o "$out/rtpro.exr" --spp "$frames" --threads "$t" \
-        --backend "$backend" --quiet --no-journal --stats-json "$out/rtpro-$backend-t$t-r$r.json"
+        "${flags[@]}" --quiet --no-journal --stats-json "$out/rtpro-$config-t$t-r$r.json"
     done
   done
 done
@@ -42,16 +46,16 @@ def rtpro(backend, t, r):
     seconds = s["seconds"]["render"]
     return s["rays"]["total"] / seconds / 1e6, frames * pixels / seconds / 1e6
 print(f"Embree pathtracer vs rtpro path integrator, cornell_box.ecs 512x512, path length 8, {runs} interleaved runs\n")
-print(f"{'renderer':17} {'thr':>3} {'Mrays/s':>8} {'min-max':>13} {'Mpaths/s':>9} {'rtpro/Embree rays':>18} {'paths':>6}")
+print(f"{'renderer':23} {'thr':>3} {'Mrays/s':>8} {'min-max':>13} {'Mpaths/s':>9} {'rtpro/Embree rays':>18} {'paths':>6}")
 for t in threads:
     e = [embree(t, r) for r in range(1, runs + 1)]
     em, ep = statistics.median(x for x, _ in e), statistics.median(y for _, y in e)
     rows_of = {"Embree pathtracer": e}
-    for backend in ("embree", "native"):
-        rows_of[f"rtpro {backend}"] = [rtpro(backend, t, r) for r in range(1, runs + 1)]
+    for config in ("embree", "native", "embree-not-robust"):
+        rows_of[f"rtpro {config}"] = [rtpro(config, t, r) for r in range(1, runs + 1)]
     for name, rows in rows_of.items():
         m, q = statistics.median(x for x, _ in rows), statistics.median(y for _, y in rows)
         ratio = f"{m / em:17.2f}x {q / ep:5.2f}x" if name.startswith("rtpro") else ""
-        print(f"{name:17} {t:>3} {m:8.2f} {min(x for x, _ in rows):6.2f}-{max(x for x, _ in rows):<6.2f} {q:9.3f} {ratio}")
+        print(f"{name:23} {t:>3} {m:8.2f} {min(x for x, _ in rows):6.2f}-{max(x for x, _ in rows):<6.2f} {q:9.3f} {ratio}")
 print(f"\nlogs and statistics: {out}")
 PY
