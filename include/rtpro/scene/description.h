@@ -9,12 +9,18 @@
 #include "rtpro/scene/checker_axes.h"
 #include "rtpro/scene/light.h"  // LightDesc
 #include "rtpro/scene/render_settings.h"
+// Each kind of shape's scene side (its entries' type and reader, its shapes and their bounds),
+// here so that whatever visits the lists below finds the kind's functions.
+#include "rtpro/scene/sphere_geometry.h"
+#include "rtpro/scene/triangle_geometry.h"
 
+#include <concepts>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -187,9 +193,11 @@ struct ObjectDesc {
 };
 
 // Calls visit(shapes) with the object's list of each kind of shape, in this order: a visitor
-// without an overload for a new kind of shape does not compile.
-template <typename Visit>
-void visit_shape_lists(const ObjectDesc& object, Visit&& visit) {
+// without an overload for a new kind of shape does not compile. `Object` is ObjectDesc or a const
+// one, for readers that fill the lists and users that read them.
+template <typename Object, typename Visit>
+requires std::same_as<std::remove_const_t<Object>, ObjectDesc>
+void visit_shape_lists(Object& object, Visit&& visit) {
   visit(object.spheres);
   visit(object.meshes);
   visit(object.gltfs);
