@@ -148,10 +148,7 @@ class RenderSceneBuilder {
 
     check_instance_count();
     prototype_of_object_.assign(description_.objects.size(), std::nullopt);
-    add_own_shapes(description_.world, scene_.top, &top_origins_);
-    const bool world_spheres = !description_.world.spheres.empty();
-    linking_of_object_.assign(world_spheres ? 1 : 0, kNoLinking);
-    for (const MeshDesc& mesh : description_.world.meshes) linking_of_object_.push_back(mesh.linking);
+    add_own_shapes(description_.world, scene_.top, true);
     for (const GltfDesc& gltf : description_.world.gltfs) {
       place_gltf(gltf, Affine::identity());
       linking_of_object_.resize(scene_.top.geometries.size(), gltf.linking);
@@ -160,7 +157,7 @@ class RenderSceneBuilder {
       flatten_instance(instance.object, instance.transform, instance.where);
       linking_of_object_.resize(scene_.top.geometries.size(), instance.linking);
     }
-    link_objects(world_spheres);
+    link_objects();
     check_traceable_range(scene_, top_origins_, description_.camera, description_.lights);
     if (report_) report_->flattened_instances = flattened_;
     return std::move(scene_);
@@ -206,22 +203,28 @@ class RenderSceneBuilder {
   }
 
   // Spheres and meshes that belong to `object` itself (not through its instances). Only the
-  // world's own shapes are top-level geometries that need an origin (`origins` is null for
-  // prototypes). Every list of shapes written in the scene file becomes one geometry of its kind
-  // (shapes_from, in the kind's file: scene/sphere_geometry.h); glTF files are placed as instances
-  // of their meshes (place_gltf).
-  void add_own_shapes(const ObjectDesc& object, Group& group, std::vector<GeometryOrigin>* origins = nullptr) {
+  // world's own shapes are top-level geometries, which need an origin and their entries' light
+  // linking. Every list of shapes written in the scene file becomes one geometry of its kind
+  // (shapes_from, in the kind's file: scene/sphere_geometry.h), linked entry by entry; glTF files
+  // are placed as instances of their meshes (place_gltf).
+  void add_own_shapes(const ObjectDesc& object, Group& group, bool world = false) {
     visit_shape_lists(object, Overloaded{[&](const std::vector<MeshDesc>& meshes) {
                                            for (const MeshDesc& mesh : meshes) {
                                              group.geometries.emplace_back(load_mesh(mesh));
-                                             if (origins) origins->push_back({&mesh.where});
+                                             if (!world) continue;
+                                             top_origins_.push_back({&mesh.where});
+                                             linking_of_object_.push_back(mesh.linking);
                                            }
                                          },
                                          [](const std::vector<GltfDesc>&) {},
                                          [&](const auto& shapes) {
                                            if (shapes.empty()) return;
                                            group.geometries.emplace_back(shapes_from(shapes));
-                                           if (origins) origins->push_back({&scene_file_});
+                                           if (!world) return;
+                                           top_origins_.push_back({&scene_file_});
+                                           linking_of_object_.push_back(kLinkedPerPrimitive);
+                                           std::vector<std::uint32_t>& linkings = primitive_linkings_.emplace_back();
+                                           for (const auto& shape : shapes) linkings.push_back(shape.linking);
                                          }});
   }
 
@@ -348,19 +351,26 @@ class RenderSceneBuilder {
       flatten_instance(nested.object, compose(to_world, nested.transform), nested.where);
   }
 
-  // Light linking: the group of each top-level object (none when no world entry is linked). The
-  // world's spheres share one geometry, so theirs are per sphere.
-  void link_objects(bool world_spheres) {
+  // Light linking: the group of each top-level object (none when no world entry is linked), per
+  // primitive for a geometry of many entries.
+  void link_objects() {
     if (description_.linkings.empty()) return;
     LightLinks& links = scene_.links;
     std::vector<std::uint32_t> group_of_linking;
     for (const LightLinkingDesc& linking : description_.linkings)
       group_of_linking.push_back(links.group_with(make_link_group(linking, description_.lights.size())));
     const auto group = [&](std::uint32_t linking) { return linking == kNoLinking ? 0u : group_of_linking[linking]; };
-    for (const std::uint32_t linking : linking_of_object_) links.group_of_object.push_back(group(linking));
-    if (!world_spheres) return;
-    links.group_of_object[0] = LightLinks::kPerSphere;
-    for (const SphereDesc& sphere : description_.world.spheres) links.group_of_sphere.push_back(group(sphere.linking));
+    std::size_t next_per_primitive = 0;
+    for (const std::uint32_t linking : linking_of_object_) {
+      if (linking != kLinkedPerPrimitive) {
+        links.group_of_object.push_back(group(linking));
+        continue;
+      }
+      links.group_of_object.push_back(LightLinks::kPerPrimitive |
+                                      static_cast<std::uint32_t>(links.group_of_primitive.size()));
+      for (const std::uint32_t entry : primitive_linkings_[next_per_primitive++])
+        links.group_of_primitive.push_back(group(entry));
+    }
   }
 
   static constexpr std::uint32_t kInvalidPrototype = ~0u;
@@ -372,7 +382,11 @@ class RenderSceneBuilder {
   std::size_t flattened_ = 0;
   const SourceLocation scene_file_{description_.file.string()};  // where the world's spheres are
   std::vector<GeometryOrigin> top_origins_;                      // where each top-level geometry came from
-  std::vector<std::uint32_t> linking_of_object_;                 // per top-level geometry: its world entry's linking
+  // Per top-level geometry: its world entry's linking, or kLinkedPerPrimitive for a geometry of
+  // many entries, whose entries' linkings are the next list of primitive_linkings_.
+  std::vector<std::uint32_t> linking_of_object_;
+  std::vector<std::vector<std::uint32_t>> primitive_linkings_;
+  static constexpr std::uint32_t kLinkedPerPrimitive = kNoLinking - 1;  // not an index: linkings < kMaxSceneEntries
 };
 
 }  // namespace
