@@ -7,130 +7,29 @@
 #include "traceable_range_check.h"
 #include "gltf_asset.h"
 #include "gltf_loader.h"
-#include "mtl_parser.h"
+#include "material_textures.h"
 
 #include <algorithm>
 #include <chrono>
 #include <map>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <tuple>
+#include <variant>
 
 namespace rtpro {
 
 namespace {
 
-// The index of an image in `textures`, each file and colour space registered once.
-std::uint32_t texture_index(const std::filesystem::path& file, const std::string& colorspace,
-                            const std::shared_ptr<const std::vector<unsigned char>>& bytes, const SourceLocation& where,
-                            std::vector<TextureImage>& textures) {
-  std::error_code error;
-  if (!bytes && !std::filesystem::is_regular_file(file, error))
-    throw InputError(where, "texture '" + file.string() + "' not found");
-  std::uint32_t index = 0;
-  while (index < textures.size() && !(textures[index].file == file && textures[index].colorspace == colorspace))
-    ++index;
-  if (index == textures.size()) textures.push_back({file, colorspace, bytes, where});
-  return index;
-}
-
-std::optional<ImageTexture> slot_texture(const std::optional<TextureSlotDesc>& slot, const Color& tint,
-                                         std::vector<TextureImage>& textures) {
-  if (!slot) return std::nullopt;
-  return ImageTexture{texture_index(slot->file, slot->colorspace, slot->bytes, slot->where, textures), tint,
-                      TextureWrap::kRepeat};
-}
-
-// A material's diffuse colour as shading evaluates it; image textures are registered in `textures`.
-ColorTexture color_texture(const MaterialDesc& m, std::vector<TextureImage>& textures) {
-  if (!m.color_texture.empty())
-    return ImageTexture{
-        texture_index(m.color_texture, m.texture_colorspace, m.texture_bytes, m.texture_where, textures), m.color,
-        m.texture_wrap};
-  if (!m.checker) return m.color;
-  CheckerTexture checker;
-  checker.inv_size = 1.0f / m.checker->size;
-  checker.even = m.checker->even;
-  checker.odd = m.checker->odd;
-  checker.axes = m.checker->axes;
-  return checker;
+// The Whitted fields and the surface model of a material, each its kind's own
+// (scene/phong_material.h and its neighbours): a kind without them does not compile here.
+WhittedFields whitted_fields(const MaterialDesc& m) {
+  return std::visit([&](const auto& params) { return whitted_approximation_of(params, m); }, m.params);
 }
 
 SurfaceModel surface_model(const MaterialDesc& m, std::vector<TextureImage>& textures) {
-  switch (m.kind) {
-    case MaterialKind::kPhong: return PhongSurface{};
-    case MaterialKind::kDiffuse: return DiffuseSurface{};
-    case MaterialKind::kConductor:
-      return ConductorSurface{m.roughness, m.conductor_eta.has_value(), m.conductor_eta.value_or(Color(0.0f)),
-                              m.conductor_k.value_or(Color(0.0f))};
-    case MaterialKind::kDielectric: return DielectricSurface{m.roughness};
-    case MaterialKind::kPrincipled: {
-      const PrincipledDesc& p = m.principled;
-      PrincipledSurface surface{
-          color_texture(m, textures), p.metalness,           m.roughness,   m.ior.value_or(1.5f), p.specular_weight,
-          p.specular_color,           p.transmission_weight, p.coat_weight, p.coat_roughness,     p.fuzz_color,
-          p.fuzz_roughness,           std::nullopt,          std::nullopt};
-      surface.metallic_roughness =
-          slot_texture(p.metallic_roughness_texture, Color(1.0f, m.roughness, p.metalness), textures);
-      if (const std::optional<ImageTexture> normals = slot_texture(p.normal_texture, Color(1.0f), textures))
-        surface.normal_map = NormalMap{normals->image, p.normal_scale};
-      return surface;
-    }
-  }
-  throw std::logic_error("surface_model: unknown material kind");
-}
-
-// glTF's metallic-roughness model as the Phong highlight and mirror (FORMAT.md, "glTF files"):
-// with F0 = 0.04 + (mean(base) − 0.04) × metallic and gloss = (1 − roughness)², the mirror takes
-// F0 × gloss and the diffuse colour what the mirror leaves; the highlight is the peak of an
-// energy-normalised Phong lobe about as wide as the GGX one.
-MaterialDesc whitted_view_of_principled(const MaterialDesc& m) {
-  MaterialDesc whitted = m;
-  const Color base = m.color;
-  const float metallic = m.principled.metalness, roughness = m.roughness;
-  const float f0 = 0.04f + ((base.x + base.y + base.z) / 3.0f - 0.04f) * metallic;
-  const float gloss = (1.0f - roughness) * (1.0f - roughness);
-  const float alpha4 = std::max(roughness * roughness * roughness * roughness, 1e-6f);
-  const float n = std::clamp(2.0f / alpha4 - 2.0f, 1.0f, 10000.0f);
-  whitted.reflectivity = std::clamp(f0 * gloss, 0.0f, 1.0f);
-  whitted.color = base * (1.0f - whitted.reflectivity);
-  whitted.shininess = n;
-  whitted.specular = std::min(f0 * (n + 2.0f) / 2.0f, 2.0f) * std::min(1.0f, n / kFullHighlightNs);
-  return whitted;
-}
-
-// The Whitted fields of a physically based kind: what the Phong model can show of it, so the
-// whitted integrator still renders the scene (a preview; `path` renders it as it is). Phong
-// materials keep what their file says.
-void approximate_for_whitted(const MaterialDesc& m, Material& material) {
-  const float alpha = m.roughness * m.roughness;
-  // The Phong exponent whose lobe is about as wide as a GGX lobe of this alpha (Walter et al. 2007).
-  const float shininess = std::min(2.0f / std::max(alpha * alpha, 1e-4f) - 2.0f, 10000.0f);
-  switch (m.kind) {
-    case MaterialKind::kPhong: return;
-    case MaterialKind::kDiffuse:
-      material.specular = 0.0f;
-      material.reflectivity = 0.0f;
-      return;
-    case MaterialKind::kConductor:
-      material.specular = 1.0f - m.roughness;
-      material.shininess = shininess;
-      material.reflectivity = m.roughness < 0.1f ? 1.0f - m.roughness * 10.0f : 0.0f;
-      return;
-    case MaterialKind::kDielectric:
-      material.specular = 1.0f - m.roughness;
-      material.shininess = shininess;
-      material.reflectivity = 0.0f;
-      return;
-    case MaterialKind::kPrincipled: {
-      const MaterialDesc whitted = whitted_view_of_principled(m);
-      material.specular = whitted.specular;
-      material.shininess = whitted.shininess;
-      material.reflectivity = whitted.reflectivity;
-      return;  // the caller sets the colour, which may be a texture
-    }
-  }
+  return std::visit([&](const auto& params) -> SurfaceModel { return surface_model_from(params, m, textures); },
+                    m.params);
 }
 
 class RenderSceneBuilder {
@@ -164,17 +63,14 @@ class RenderSceneBuilder {
   }
 
  private:
+  // Images are registered as they are met: the colour's, the model's own, the emission's.
   std::uint32_t add_material(const MaterialDesc& m, const std::string& name) {
-    std::optional<Dielectric> dielectric;
-    if (m.ior) dielectric = Dielectric{*m.ior, m.transmittance, m.transmittance_distance};
-    std::optional<Dielectric> whitted_glass = m.kind == MaterialKind::kPrincipled ? std::nullopt : dielectric;
-    Material material{color_texture(m, scene_.textures), m.specular, m.shininess, m.reflectivity, whitted_glass};
+    const WhittedFields whitted = whitted_fields(m);
+    Material material{color_texture(m, m.color * whitted.color_scale, scene_.textures), whitted.specular,
+                      whitted.shininess, whitted.reflectivity, whitted.glass};
     material.model = surface_model(m, scene_.textures);
     material.emission =
         Emission{m.emission, m.emission_two_sided, slot_texture(m.emission_texture, Color(1.0f), scene_.textures)};
-    approximate_for_whitted(m, material);
-    if (m.kind == MaterialKind::kPrincipled)
-      material.color = color_texture(whitted_view_of_principled(m), scene_.textures);
     scene_.materials.push_back(std::move(material));
     scene_.material_names.push_back(name);
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);
