@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <tuple>
+#include <type_traits>
 #include <variant>
 
 namespace rtpro {
@@ -113,15 +114,21 @@ class RenderSceneBuilder {
                                            }
                                          },
                                          [](const std::vector<GltfDesc>&) {},
-                                         [&](const auto& shapes) {
-                                           if (shapes.empty()) return;
-                                           group.geometries.emplace_back(shapes_from(shapes));
-                                           if (!world) return;
-                                           top_origins_.push_back({&scene_file_});
-                                           linking_of_object_.push_back(kLinkedPerPrimitive);
-                                           std::vector<std::uint32_t>& linkings = primitive_linkings_.emplace_back();
-                                           for (const auto& shape : shapes) linkings.push_back(shape.linking);
-                                         }});
+                                         [&](const auto& shapes) { add_shape_list(shapes, group, world); }});
+  }
+
+  // One geometry of the object's list of a kind of shape; in the world, each entry linked as it says.
+  template <typename Desc>
+  void add_shape_list(const std::vector<Desc>& shapes, Group& group, bool world) {
+    static_assert(std::is_constructible_v<Geometry, decltype(shapes_from(shapes))>,
+                  "a kind of shape needs its alternative of Geometry and its GeometryKind (scene/render_scene.h)");
+    if (shapes.empty()) return;
+    group.geometries.emplace_back(shapes_from(shapes));
+    if (!world) return;
+    top_origins_.push_back({&scene_file_});
+    linking_of_object_.push_back(kLinkedPerPrimitive);
+    std::vector<std::uint32_t>& linkings = primitive_linkings_.emplace_back();
+    for (const Desc& shape : shapes) linkings.push_back(shape.linking);
   }
 
   TriangleMesh load_mesh(const MeshDesc& desc) {
