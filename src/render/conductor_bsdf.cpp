@@ -1,5 +1,7 @@
 #include "rtpro/render/conductor_bsdf.h"
 
+#include "rtpro/render/material_bsdf.h"
+#include "rtpro/render/texture.h"
 #include "rtpro/core/math_constants.h"
 
 #include <algorithm>
@@ -161,6 +163,20 @@ std::optional<BsdfSample> ConductorBsdf::sample(const Vec3& wo, float u_lobe, Sa
   const float pdf = density(wo, o, *g);
   if (pdf == 0.0f) return std::nullopt;
   return BsdfSample{value(wo, wi, o, *g), wi, pdf, false, false};
+}
+
+}  // namespace rtpro
+
+namespace rtpro {
+
+Vec3 bsdf_from(const ConductorSurface& conductor, const Material& material, const SurfacePoint& point,
+               const TextureLookup* textures, SurfaceBsdf& out) {
+  const float alpha = roughness_to_alpha(conductor.roughness);
+  const Color c = evaluate(material.color, point, textures);
+  out.bsdf = conductor.has_complex_ior ? ConductorBsdf::from_complex_ior(conductor.eta, conductor.k, alpha)
+                                       : ConductorBsdf::from_f0(c, alpha);
+  out.albedo = c;
+  return point.shading_normal;
 }
 
 }  // namespace rtpro

@@ -1,5 +1,7 @@
 #include "rtpro/render/dielectric_bsdf.h"
 
+#include "rtpro/render/material_bsdf.h"
+#include "rtpro/render/texture.h"
 #include "rtpro/render/dielectric.h"
 
 #include <cmath>
@@ -95,6 +97,17 @@ std::optional<BsdfSample> DielectricBsdf::sample(const Vec3& wo, float u_lobe, S
   const Evaluation e = evaluate_rough(wo, wi, eta, ggx);
   if (e.pdf == 0.0f) return std::nullopt;
   return BsdfSample{e.f, wi, e.pdf, false, wi.z * wo.z < 0.0f};
+}
+
+}  // namespace rtpro
+
+namespace rtpro {
+
+Vec3 bsdf_from(const DielectricSurface& d, const Material& material, const SurfacePoint& point,
+               const TextureLookup* textures, SurfaceBsdf& out) {
+  out.bsdf = DielectricBsdf{material.dielectric ? material.dielectric->ior : 1.5f, roughness_to_alpha(d.roughness)};
+  out.albedo = evaluate(material.color, point, textures);
+  return point.shading_normal;
 }
 
 }  // namespace rtpro

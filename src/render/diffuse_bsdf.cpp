@@ -1,5 +1,8 @@
 #include "rtpro/render/diffuse_bsdf.h"
 
+#include "rtpro/render/material_bsdf.h"
+#include "rtpro/render/texture.h"
+
 #include <numbers>
 
 namespace rtpro {
@@ -22,6 +25,15 @@ std::optional<BsdfSample> DiffuseBsdf::sample(const Vec3& wo, float /*u_lobe*/, 
   // The disk's rim maps to the horizon, where the direction carries nothing.
   if (pdf == 0.0f) return std::nullopt;
   return BsdfSample{reflectance * std::numbers::inv_pi_v<float>, wi, pdf, false, false};
+}
+
+}  // namespace rtpro
+
+namespace rtpro {
+
+Vec3 bsdf_from(const DiffuseSurface&, const Material& material, const SurfacePoint& point,
+               const TextureLookup* textures, SurfaceBsdf& out) {
+  return lambert_surface(evaluate(material.color, point, textures), point.shading_normal, out);
 }
 
 }  // namespace rtpro

@@ -1,5 +1,8 @@
 #include "rtpro/render/principled_bsdf.h"
 
+#include "rtpro/render/material_bsdf.h"
+#include "rtpro/render/normal_map.h"
+#include "rtpro/render/texture.h"
 #include "rtpro/core/math_constants.h"
 #include "rtpro/render/dielectric.h"
 #include "rtpro/render/specular_albedo.h"
@@ -350,6 +353,41 @@ std::optional<BsdfSample> PrincipledBsdf::sample(const Vec3& wo, float u_lobe, S
   const float pdf = density(wo, *wi, o);
   if (pdf == 0.0f) return std::nullopt;
   return BsdfSample{evaluate(wo, *wi, o), *wi, pdf, false, !same_hemisphere(wo, *wi)};
+}
+
+}  // namespace rtpro
+
+namespace rtpro {
+
+// Material::color is the Whitted view's; the model's base colour is its own texture.
+Vec3 bsdf_from(const PrincipledSurface& p, const Material&, const SurfacePoint& point, const TextureLookup* textures,
+               SurfaceBsdf& out) {
+  PrincipledParameters parameters;
+  parameters.base_color = evaluate(p.base_color, point, textures);
+  parameters.metalness = p.metalness;
+  parameters.roughness = p.roughness;
+  parameters.ior = p.ior;
+  parameters.specular_weight = p.specular_weight;
+  parameters.specular_color = p.specular_color;
+  parameters.transmission_weight = p.transmission_weight;
+  parameters.coat_weight = p.coat_weight;
+  parameters.coat_roughness = p.coat_roughness;
+  parameters.fuzz_color = p.fuzz_color;
+  parameters.fuzz_roughness = p.fuzz_roughness;
+  if (p.metallic_roughness) {
+    const Color texel = evaluate(*p.metallic_roughness, point.tex_u, point.tex_v, textures);
+    parameters.roughness = texel.y;
+    parameters.metalness = texel.z;
+  }
+  const Vec3 normal = p.normal_map ? mapped_normal(*p.normal_map, point, textures) : point.shading_normal;
+  // KHR_materials_specular's specularFactor 0 on a non-metal without other layers is the pure
+  // Lambert base, by the extension's definition: the same f and pdf from the cheaper kind.
+  if (p.specular_weight == 0.0f && parameters.metalness == 0.0f && p.transmission_weight == 0.0f &&
+      p.coat_weight == 0.0f && max_component(p.fuzz_color) == 0.0f)
+    return lambert_surface(parameters.base_color, normal, out);
+  out.bsdf = PrincipledBsdf(parameters);
+  out.albedo = parameters.base_color;
+  return normal;
 }
 
 }  // namespace rtpro

@@ -131,17 +131,17 @@ TEST(GltfLoader, MaterialsAreThePrincipledModelWithAPhongAndMirrorViewForWhitted
   const GltfAsset asset = load_gltf_file(file);
   ASSERT_EQ(asset.materials.size(), 3u);
   const MaterialDesc& chrome = asset.materials[0];
-  EXPECT_EQ(chrome.kind, MaterialKind::kPrincipled);
+  ASSERT_TRUE(std::holds_alternative<PrincipledParams>(chrome.params));
   EXPECT_EQ(chrome.color, Color(0.9f, 0.9f, 0.9f));
-  EXPECT_EQ(chrome.principled.metalness, 1.0f);
-  EXPECT_EQ(chrome.roughness, 0.0f);
+  EXPECT_EQ(std::get<PrincipledParams>(chrome.params).metalness, 1.0f);
+  EXPECT_EQ(std::get<PrincipledParams>(chrome.params).roughness, 0.0f);
   const MaterialDesc& clay = asset.materials[1];
   EXPECT_EQ(clay.color, Color(0.8f, 0.4f, 0.2f));
   EXPECT_EQ(clay.opacity, 0.5f);
   EXPECT_EQ(clay.color_texture.filename(), "clay.png");
   EXPECT_EQ(clay.color_texture.parent_path().filename(), "textures");
-  const PrincipledDesc& coated = asset.materials[2].principled;
-  EXPECT_FLOAT_EQ(*asset.materials[2].ior, 1.33f);
+  const PrincipledParams& coated = std::get<PrincipledParams>(asset.materials[2].params);
+  EXPECT_FLOAT_EQ(coated.ior, 1.33f);
   EXPECT_FLOAT_EQ(coated.coat_weight, 0.7f);
   EXPECT_FLOAT_EQ(coated.coat_roughness, 0.2f);
   EXPECT_EQ(coated.fuzz_color, Color(0.5f, 0.25f, 1.0f));  // clamped to 1

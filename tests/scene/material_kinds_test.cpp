@@ -37,18 +37,19 @@ TEST(MaterialKinds, EachTypeReadsItsOwnKeys) {
   old: {color: [0.9, 0.1, 0.1], reflectivity: 0.3}
 )");
   ASSERT_EQ(d.materials.size(), 7u);
-  EXPECT_EQ(d.materials[1].kind, MaterialKind::kDiffuse);
-  EXPECT_EQ(d.materials[2].kind, MaterialKind::kConductor);
-  EXPECT_FLOAT_EQ(d.materials[2].roughness, 0.3f);
-  EXPECT_FALSE(d.materials[2].conductor_eta);
-  ASSERT_TRUE(d.materials[3].conductor_k);
-  EXPECT_FLOAT_EQ(d.materials[3].conductor_k->y, 2.45f);
-  EXPECT_EQ(d.materials[4].kind, MaterialKind::kDielectric);
-  ASSERT_TRUE(d.materials[4].ior);
-  EXPECT_FLOAT_EQ(*d.materials[4].ior, 1.5f);                     // a dielectric's default index
+  EXPECT_TRUE(std::holds_alternative<DiffuseParams>(d.materials[1].params));
+  const auto& gold = std::get<ConductorParams>(d.materials[2].params);
+  EXPECT_FLOAT_EQ(gold.roughness, 0.3f);
+  EXPECT_FALSE(gold.eta);
+  const auto& copper = std::get<ConductorParams>(d.materials[3].params);
+  ASSERT_TRUE(copper.k);
+  EXPECT_FLOAT_EQ(copper.k->y, 2.45f);
+  const auto& glass = std::get<DielectricParams>(d.materials[4].params);
+  EXPECT_FLOAT_EQ(glass.roughness, 0.1f);
+  EXPECT_FLOAT_EQ(glass.glass.ior, 1.5f);                         // a dielectric's default index
   EXPECT_EQ(d.materials[5].emission, Color(34.0f, 24.0f, 8.0f));  // radiance: values above 1 are meant
   EXPECT_TRUE(d.materials[5].emission_two_sided);
-  EXPECT_EQ(d.materials[6].kind, MaterialKind::kPhong);
+  EXPECT_TRUE(std::holds_alternative<PhongParams>(d.materials[6].params));
 }
 
 TEST(MaterialKinds, TheRenderSceneCarriesTheModelAndAWhittedApproximation) {
@@ -74,16 +75,18 @@ TEST(MaterialKinds, PrincipledReadsTheGltfModelsParameters) {
   velvet: {type: principled, fuzz_color: [1, 0.5, 0.5], fuzz_roughness: 0.3, specular_weight: 0}
   glass: {type: principled, transmission_weight: 1, roughness: 0, ior: 1.45, specular_color: [1, 0.9, 0.8]}
 )");
-  const MaterialDesc& paint = d.materials[1];
-  EXPECT_EQ(paint.kind, MaterialKind::kPrincipled);
-  EXPECT_FLOAT_EQ(paint.principled.metalness, 0.2f);
+  ASSERT_TRUE(std::holds_alternative<PrincipledParams>(d.materials[1].params));
+  const auto& paint = std::get<PrincipledParams>(d.materials[1].params);
+  EXPECT_FLOAT_EQ(paint.metalness, 0.2f);
   EXPECT_FLOAT_EQ(paint.roughness, 0.4f);
-  EXPECT_FLOAT_EQ(paint.principled.coat_weight, 1.0f);
-  EXPECT_FLOAT_EQ(d.materials[2].roughness, 0.5f);  // the principled default
-  EXPECT_EQ(d.materials[2].principled.fuzz_color, Color(1.0f, 0.5f, 0.5f));
-  EXPECT_FLOAT_EQ(d.materials[2].principled.specular_weight, 0.0f);
-  EXPECT_FLOAT_EQ(*d.materials[3].ior, 1.45f);
-  EXPECT_FLOAT_EQ(d.materials[3].principled.transmission_weight, 1.0f);
+  EXPECT_FLOAT_EQ(paint.coat_weight, 1.0f);
+  const auto& velvet = std::get<PrincipledParams>(d.materials[2].params);
+  EXPECT_FLOAT_EQ(velvet.roughness, 0.5f);  // the principled default
+  EXPECT_EQ(velvet.fuzz_color, Color(1.0f, 0.5f, 0.5f));
+  EXPECT_FLOAT_EQ(velvet.specular_weight, 0.0f);
+  const auto& glass = std::get<PrincipledParams>(d.materials[3].params);
+  EXPECT_FLOAT_EQ(glass.ior, 1.45f);
+  EXPECT_FLOAT_EQ(glass.transmission_weight, 1.0f);
   const RenderScene scene = build_render_scene(d);
   const auto& model = std::get<PrincipledSurface>(scene.materials[3].model);
   EXPECT_FLOAT_EQ(model.ior, 1.45f);

@@ -31,25 +31,28 @@ MaterialDesc only_material(const std::string& mtl) {
   return library.materials.empty() ? MaterialDesc{} : library.materials.front();
 }
 
+// An MTL material is the Phong kind: its highlight is there.
+const PhongParams& phong(const MaterialDesc& m) { return std::get<PhongParams>(m.params); }
+
 TEST(MtlMapping, KsNsAndTheirDefaults) {
   const MaterialDesc m = only_material("newmtl m\nKd 0.5 0.25 1\nKs 0.3 0.6 0.9\nNs 50\n");
   EXPECT_EQ(m.color, Color(0.5f, 0.25f, 1.0f));
-  EXPECT_FLOAT_EQ(m.specular, 0.6f);
-  EXPECT_FLOAT_EQ(m.shininess, 50.0f);
+  EXPECT_FLOAT_EQ(phong(m).specular, 0.6f);
+  EXPECT_FLOAT_EQ(phong(m).shininess, 50.0f);
   const MaterialDesc plain = only_material("newmtl m\nKd 1 1 1\n");
-  EXPECT_EQ(plain.specular, MaterialDesc{}.specular);
-  EXPECT_EQ(plain.shininess, MaterialDesc{}.shininess);
+  EXPECT_EQ(phong(plain).specular, PhongParams{}.specular);
+  EXPECT_EQ(phong(plain).shininess, PhongParams{}.shininess);
 }
 
 TEST(MtlMapping, NsZeroWithStrongKsGivesNoHighlightInsteadOfAWhiteDisc) {
   // 3ds Max writes this; a Phong exponent of 0 would add Ks everywhere the light reaches.
   const MaterialDesc zero = only_material("newmtl m\nKs 0.9 0.9 0.9\nNs 0\n");
-  EXPECT_EQ(zero.specular, 0.0f);
-  EXPECT_GE(zero.shininess, 1.0f);
+  EXPECT_EQ(phong(zero).specular, 0.0f);
+  EXPECT_GE(phong(zero).shininess, 1.0f);
   const MaterialDesc two = only_material("newmtl m\nKs 0.9 0.9 0.9\nNs 2\n");
-  EXPECT_NEAR(two.specular, 0.9f * 2.0f / kFullHighlightNs, 1e-6f);
+  EXPECT_NEAR(phong(two).specular, 0.9f * 2.0f / kFullHighlightNs, 1e-6f);
   const MaterialDesc eight = only_material("newmtl m\nKs 0.9 0.9 0.9\nNs 8\n");
-  EXPECT_FLOAT_EQ(eight.specular, 0.9f);  // from kFullHighlightNs on, untouched
+  EXPECT_FLOAT_EQ(phong(eight).specular, 0.9f);  // from kFullHighlightNs on, untouched
 }
 
 TEST(MtlMapping, DissolveTransparencyAndDiffuseTextureAreKept) {

@@ -222,8 +222,8 @@ f 1 4 3
   EXPECT_EQ(loaded.materials[0].color, Color(0.25f, 0.25f, 0.25f));
   EXPECT_EQ(loaded.materials[1].name, "red");
   EXPECT_EQ(loaded.materials[1].color, Color(1, 0, 0));
-  EXPECT_NEAR(loaded.materials[1].specular, 0.6f, 1e-6f);
-  EXPECT_EQ(loaded.materials[1].shininess, 50.0f);
+  EXPECT_NEAR(std::get<PhongParams>(loaded.materials[1].params).specular, 0.6f, 1e-6f);
+  EXPECT_EQ(std::get<PhongParams>(loaded.materials[1].params).shininess, 50.0f);
   EXPECT_EQ(loaded.mesh.triangle_materials, (std::vector<std::uint32_t>{0, 1, 1, 0}));
   EXPECT_EQ(loaded.stats.materials, 2u);
   // Unused MTL statements are reported once per keyword, with their count.

@@ -106,12 +106,13 @@ TEST(SceneParser, FullSceneRoundTrips) {
   EXPECT_EQ(scene.materials[0].color, Color(0.8f));
   EXPECT_EQ(scene.materials[1].name, "red");
   EXPECT_EQ(scene.materials[1].color, Color(0.9f, 0.1f, 0.1f));
-  EXPECT_EQ(scene.materials[1].specular, 0.25f);
-  EXPECT_EQ(scene.materials[1].shininess, 20.0f);
-  EXPECT_EQ(scene.materials[1].reflectivity, 0.3f);
+  const PhongParams& red = std::get<PhongParams>(scene.materials[1].params);
+  EXPECT_EQ(red.specular, 0.25f);
+  EXPECT_EQ(red.shininess, 20.0f);
+  EXPECT_EQ(red.reflectivity, 0.3f);
   EXPECT_EQ(scene.materials[2].name, "mirror");
-  EXPECT_EQ(scene.materials[2].reflectivity, 1.0f);
-  EXPECT_EQ(scene.materials[2].specular, 0.5f);
+  EXPECT_EQ(std::get<PhongParams>(scene.materials[2].params).reflectivity, 1.0f);
+  EXPECT_EQ(std::get<PhongParams>(scene.materials[2].params).specular, 0.5f);
 
   ASSERT_EQ(scene.lights.size(), 2u);
   const auto& point = std::get<PointLightDesc>(scene.lights[0]);

@@ -32,7 +32,7 @@ TEST(YamlVariables, WholeValuesTextAndEscapes) {
                                        "  \"cost$$\": {color: [0.5, 0.5, 0.5]}\n");
   ASSERT_EQ(scene.materials.size(), 3u);               // the default material, then the two
   EXPECT_EQ(scene.materials[1].name, "${name}_ball");  // keys are names, never substituted
-  EXPECT_EQ(scene.materials[1].shininess, 20.0f);
+  EXPECT_EQ(std::get<PhongParams>(scene.materials[1].params).shininess, 20.0f);
   EXPECT_EQ(scene.materials[1].color.x, 0.9f);
 }
 

@@ -1,13 +1,15 @@
 #pragma once
 // The closed set of BSDF kinds the path tracer shades with, each a file pair of its own with the
-// members eval, pdf, sample, is_delta and needs_outward_frame: registering a kind is its include
-// and its alternative below, and the dispatch (bsdf.cpp, material_bsdf.cpp) names a member it
-// lacks. All directions are in the
-// local shading frame (render/shading_frame.h), conventions in render/bsdf_sample.h.
+// members eval, pdf, sample, is_delta and needs_outward_frame, and beside them the bsdf_from of the
+// material kind that makes it (a kind without a BSDF of its own, phong, has a file pair for its
+// bsdf_from alone). Registering a kind is its include and, for a BSDF, its alternative below; the
+// dispatch (bsdf.cpp, material_bsdf.cpp) names a member or a bsdf_from it lacks. All directions
+// are in the local shading frame (render/shading_frame.h), conventions in render/bsdf_sample.h.
 #include "rtpro/render/bsdf_sample.h"
 #include "rtpro/render/conductor_bsdf.h"
 #include "rtpro/render/dielectric_bsdf.h"
 #include "rtpro/render/diffuse_bsdf.h"
+#include "rtpro/render/phong_bsdf.h"
 #include "rtpro/render/principled_bsdf.h"
 
 #include <optional>

@@ -74,4 +74,15 @@ class ConductorBsdf {
 // for one channel, lit at cos θ (pbrt-v4's FrComplex).
 float fresnel_complex(float cos_theta, float eta, float k);
 
+struct ConductorSurface;  // scene/conductor_material.h
+struct Material;          // scene/render_scene.h
+struct SurfacePoint;      // render/surface.h
+class TextureLookup;      // image/texture_lookup.h
+struct SurfaceBsdf;       // render/material_bsdf.h
+
+// A conductor's BSDF at `point`, as render/material_bsdf.h asks of every kind: written into `out`
+// (its frame left to the caller), the shading normal returned.
+Vec3 bsdf_from(const ConductorSurface& model, const Material& material, const SurfacePoint& point,
+               const TextureLookup* textures, SurfaceBsdf& out);
+
 }  // namespace rtpro

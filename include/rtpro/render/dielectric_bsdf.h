@@ -28,4 +28,15 @@ struct DielectricBsdf {
   std::optional<BsdfSample> sample(const Vec3& wo, float u_lobe, Sample2D u) const;
 };
 
+struct DielectricSurface;  // scene/dielectric_material.h
+struct Material;           // scene/render_scene.h
+struct SurfacePoint;       // render/surface.h
+class TextureLookup;       // image/texture_lookup.h
+struct SurfaceBsdf;        // render/material_bsdf.h
+
+// A dielectric's BSDF at `point`, as render/material_bsdf.h asks of every kind: written into `out`
+// (its frame left to the caller), the shading normal returned.
+Vec3 bsdf_from(const DielectricSurface& model, const Material& material, const SurfacePoint& point,
+               const TextureLookup* textures, SurfaceBsdf& out);
+
 }  // namespace rtpro

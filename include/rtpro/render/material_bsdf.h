@@ -1,6 +1,7 @@
 #pragma once
-// A material's BSDF at a shading point, and the frame it is evaluated in: each surface kind of
-// the scene (SurfaceModel) maps to one BSDF kind here, exhaustively.
+// A material's BSDF at a shading point, and the frame it is evaluated in: each kind of surface
+// model (SurfaceModel, scene/material_kinds.h) makes its BSDF in its own bsdf_from
+// (render/conductor_bsdf.h and its neighbours, registered in render/bsdf.h).
 #include "rtpro/image/texture_lookup.h"
 #include "rtpro/render/bsdf.h"
 #include "rtpro/render/shading_frame.h"
@@ -17,6 +18,14 @@ struct SurfaceBsdf {
   ShadingFrame frame;
   Color albedo;  // what the albedo AOV shows: the base colour of the model at the point
 };
+
+// A Lambert surface of `reflectance`, which is its albedo too: what several kinds make (in their
+// bsdf_from). Returns `normal`.
+inline Vec3 lambert_surface(const Color& reflectance, const Vec3& normal, SurfaceBsdf& out) {
+  out.bsdf = DiffuseBsdf{reflectance};
+  out.albedo = reflectance;
+  return normal;
+}
 
 // `textures`: the scene's image textures, opened, for the colour textures the material reads.
 // Written into `out`, whose previous contents do not matter.

@@ -122,4 +122,15 @@ class PrincipledBsdf {
   std::array<bool, kLobeCount> sampled_with_density_;  // active and not a delta lobe
 };
 
+struct PrincipledSurface;  // scene/principled_material.h
+struct Material;           // scene/render_scene.h
+struct SurfacePoint;       // render/surface.h
+class TextureLookup;       // image/texture_lookup.h
+struct SurfaceBsdf;        // render/material_bsdf.h
+
+// A principled material's BSDF at `point`, as render/material_bsdf.h asks of every kind: written
+// into `out` (its frame left to the caller), the shading normal returned (its normal map's).
+Vec3 bsdf_from(const PrincipledSurface& model, const Material& material, const SurfacePoint& point,
+               const TextureLookup* textures, SurfaceBsdf& out);
+
 }  // namespace rtpro

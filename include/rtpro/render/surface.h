@@ -38,13 +38,12 @@ struct SurfacePoint {
 void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfacePoint& out);
 
 // Whether `material` reads an image (and so needs texture coordinates): its colour, its emission,
-// or a principled surface's metallic-roughness or normal map. (A principled base colour image is
-// its Whitted colour's too.)
+// or one of its model's own (reads_images, in the kind's header: a principled surface's
+// metallic-roughness or normal map; a principled base colour image is its Whitted colour's too).
 inline bool has_image_texture(const RenderScene& scene, std::uint32_t material) {
   const Material& m = scene.materials[material];
   if (std::holds_alternative<ImageTexture>(m.color) || m.emission.texture) return true;
-  const auto* principled = std::get_if<PrincipledSurface>(&m.model);
-  return principled && (principled->metallic_roughness || principled->normal_map);
+  return std::visit([](const auto& model) { return reads_images(model); }, m.model);
 }
 
 inline SurfacePoint make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit) {

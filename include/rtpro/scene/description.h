@@ -8,13 +8,21 @@
 #include "rtpro/core/vec3.h"
 #include "rtpro/scene/checker_axes.h"
 #include "rtpro/scene/light.h"  // LightDesc
+#include "rtpro/scene/material_kinds.h"
+#include "rtpro/scene/material_textures.h"
 #include "rtpro/scene/render_settings.h"
+// Each kind of shape's scene side (its entries' type and reader, its shapes and their bounds),
+// here so that whatever visits the lists below finds the kind's functions.
+#include "rtpro/scene/sphere_geometry.h"
+#include "rtpro/scene/triangle_geometry.h"
 
+#include <concepts>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -43,64 +51,18 @@ struct CheckerDesc {
   CheckerAxes axes = CheckerAxes::kXZ;
 };
 
-// What kind of surface a material is (`type:` in the scene file). `phong` is the Whitted model
-// (colour, highlight, mirror reflectivity, glass with an ior); the others are physically based.
-enum class MaterialKind : std::uint8_t { kPhong, kDiffuse, kConductor, kDielectric, kPrincipled };
-
-// An image a material parameter other than the colour reads (glTF's metallicRoughnessTexture,
-// normalTexture and emissiveTexture), looked up at the surface's texture coordinates.
-struct TextureSlotDesc {
-  std::filesystem::path file;  // for an image stored inside a glTF, its name ("model.glb#images[0].png")
-  std::string colorspace;      // the OpenColorIO colour space its values are decoded from; "Raw" for data
-  std::shared_ptr<const std::vector<unsigned char>> bytes;  // an image stored inside a glTF
-  SourceLocation where;                                     // where it was named, for a missing file
-};
-
-// The glTF 2.0 metallic-roughness model and its extensions, with OpenPBR's names where one exists
-// (`color` is the base colour, `roughness` and `ior` are MaterialDesc's own).
-struct PrincipledDesc {
-  float metalness = 0.0f;            // glTF metallicFactor
-  float specular_weight = 1.0f;      // KHR_materials_specular specularFactor
-  Color specular_color{1.0f};        // KHR_materials_specular specularColorFactor
-  float transmission_weight = 0.0f;  // KHR_materials_transmission transmissionFactor
-  float coat_weight = 0.0f;          // KHR_materials_clearcoat clearcoatFactor
-  float coat_roughness = 0.0f;       // KHR_materials_clearcoat clearcoatRoughnessFactor
-  Color fuzz_color{0.0f};            // KHR_materials_sheen sheenColorFactor
-  float fuzz_roughness = 0.0f;       // KHR_materials_sheen sheenRoughnessFactor
-  // glTF metallicRoughnessTexture: roughness × its green channel, metalness × its blue one.
-  std::optional<TextureSlotDesc> metallic_roughness_texture;
-  // glTF normalTexture: a tangent-space normal map (+x along increasing u, +y along increasing v
-  // on the image, i.e. towards its top), its x and y scaled by normal_scale.
-  std::optional<TextureSlotDesc> normal_texture;
-  float normal_scale = 1.0f;
-};
-
+// A material as the scene file (or an MTL library, or a glTF file) describes it: what every kind
+// has here, the kind's own parameters in `params` (scene/material_kinds.h).
 struct MaterialDesc {
   std::string name;
-  MaterialKind kind = MaterialKind::kPhong;
-  // Conductor and dielectric: GGX roughness from 0 (smooth, a perfect mirror or clear glass) to 1;
-  // the distribution's alpha is roughness².
-  float roughness = 0.0f;
-  // Conductor: a complex index of refraction eta + i·k per channel (measured metals); unset, the
-  // conductor's reflectance at normal incidence is `color` (Schlick's Fresnel).
-  std::optional<Color> conductor_eta, conductor_k;
+  MaterialParams params;  // its alternative is the material's kind (`type:` in the scene file)
   // Emitted radiance (colour × strength), on the front side of a surface (the side its normal
   // points to; a sphere's outside) or on both. Lights the scene under the path integrator.
   Color emission{0.0f};
   bool emission_two_sided = false;
   std::optional<TextureSlotDesc> emission_texture;  // multiplies `emission` (glTF emissiveTexture)
-  PrincipledDesc principled;                        // kind principled only
-  Color color{0.8f, 0.8f, 0.8f};                    // diffuse (and ambient) colour
+  Color color{0.8f, 0.8f, 0.8f};                    // diffuse (and ambient) colour; principled's base colour
   std::optional<CheckerDesc> checker;               // when set, the diffuse colour instead of `color`
-  // Glass: an index of refraction makes the material a smooth dielectric (Fresnel-weighted
-  // reflection and refraction, highlights from `specular`, no diffuse part); white light inside
-  // it has colour `transmittance` after `transmittance_distance` scene units.
-  std::optional<float> ior;
-  Color transmittance{1.0f};
-  float transmittance_distance = 1.0f;
-  float specular = 0.5f;      // Phong highlight weight
-  float shininess = 10.0f;    // Phong exponent
-  float reflectivity = 0.0f;  // weight of the mirror reflection
   // An image whose colour multiplies `color` (`color: {texture: ...}`, MTL map_Kd, glTF
   // baseColorTexture), looked up at the surface's texture coordinates; decoded from
   // `texture_colorspace` (an OpenColorIO colour space) to scene-linear first.
@@ -187,9 +149,11 @@ struct ObjectDesc {
 };
 
 // Calls visit(shapes) with the object's list of each kind of shape, in this order: a visitor
-// without an overload for a new kind of shape does not compile.
-template <typename Visit>
-void visit_shape_lists(const ObjectDesc& object, Visit&& visit) {
+// without an overload for a new kind of shape does not compile. `Object` is ObjectDesc or a const
+// one, for readers that fill the lists and users that read them.
+template <typename Object, typename Visit>
+requires std::same_as<std::remove_const_t<Object>, ObjectDesc>
+void visit_shape_lists(Object& object, Visit&& visit) {
   visit(object.spheres);
   visit(object.meshes);
   visit(object.gltfs);

@@ -18,11 +18,12 @@ struct LinkGroup {
 struct LightLinks {
   // Empty when nothing is linked (every lookup then answers group 0, lit and shadowing).
   std::vector<LinkGroup> groups;
-  // Per top-level geometry: its group, or kPerSphere for the world's own spheres (one geometry),
-  // whose groups are per sphere.
+  // Per top-level geometry: its group or, for a geometry whose primitives are entries of the scene
+  // file of their own (the world's spheres are one geometry), kPerPrimitive plus where its
+  // primitives' groups start in group_of_primitive.
   std::vector<std::uint32_t> group_of_object;
-  std::vector<std::uint32_t> group_of_sphere;
-  static constexpr std::uint32_t kPerSphere = ~0u;
+  std::vector<std::uint32_t> group_of_primitive;
+  static constexpr std::uint32_t kPerPrimitive = 1u << 31;  // above any group or offset: both < kMaxSceneEntries
 
   bool linked() const { return !groups.empty(); }
   // The group of a hit on top-level geometry `object` (the instance, for an instanced hit),
@@ -30,7 +31,7 @@ struct LightLinks {
   std::uint32_t group_of(std::uint32_t object, std::uint32_t primitive) const {
     if (groups.empty()) return 0;
     const std::uint32_t group = group_of_object[object];
-    return group == kPerSphere ? group_of_sphere[primitive] : group;
+    return group & kPerPrimitive ? group_of_primitive[(group & ~kPerPrimitive) + primitive] : group;
   }
   bool illuminates(std::uint32_t group, std::uint32_t light) const {
     return groups.empty() || groups[group].illuminated_by[light] != 0;

@@ -8,10 +8,13 @@
 #include "rtpro/scene/checker_axes.h"
 #include "rtpro/scene/light.h"
 #include "rtpro/scene/light_links.h"
+#include "rtpro/scene/material_kinds.h"
+#include "rtpro/scene/material_textures.h"
 #include "rtpro/scene/render_camera.h"
 #include "rtpro/scene/render_settings.h"
 #include "rtpro/scene/sphere_geometry.h"
 #include "rtpro/scene/triangle_geometry.h"
+#include "rtpro/scene/whitted_fields.h"
 
 #include <cstdint>
 #include <memory>
@@ -51,85 +54,6 @@ struct Group {
   BBox bounds(std::span<const BBox> prototype_bounds) const;
 };
 
-// A checkerboard as shading evaluates it (CheckerDesc, with the reciprocal size).
-// Two named colours, not an array: with `Color colors[2]` here GCC 12.2 (-O1 and above) copied
-// the Color alternative of ColorTexture as (x, x, y) in build_render_scene.cpp — every material's
-// colour wrong, found by the regression images; clang was right.
-struct CheckerTexture {
-  float inv_size;
-  Color even, odd;  // the square containing the origin's positive corner is even
-  CheckerAxes axes;
-};
-
-// A material's diffuse colour: constant, or a texture evaluated at the shading point
-// (render/texture.h). Adding a kind fails to compile where it is not evaluated.
-// An image texture (RenderScene::textures[image]) times `tint`, at the surface's texture
-// coordinates.
-struct ImageTexture {
-  std::uint32_t image;
-  Color tint;
-  TextureWrap wrap;
-};
-
-using ColorTexture = std::variant<Color, CheckerTexture, ImageTexture>;
-
-// An image file a texture reads, and the OpenColorIO colour space its values are encoded in.
-struct TextureImage {
-  std::filesystem::path file;
-  std::string colorspace;
-  // An image stored inside a glTF: its encoded bytes (`file` then only names it).
-  std::shared_ptr<const std::vector<unsigned char>> bytes;
-  SourceLocation where{};  // the key that named it first, for messages about the image
-};
-
-// A tangent-space normal map (glTF normalTexture): the image's RGB in [0, 1] read as a normal in
-// the frame of the surface's tangent (increasing u), bitangent (increasing v) and normal; x and y
-// scaled by `scale`.
-struct NormalMap {
-  std::uint32_t image;
-  float scale;
-};
-
-// A smooth dielectric (glass, water): refraction index and interior absorption.
-struct Dielectric {
-  float ior;
-  Color transmittance;  // of white light after `transmittance_distance`
-  float transmittance_distance;
-};
-
-// What the path integrator evaluates at a surface (render/material_bsdf.h makes its BSDF).
-// PhongSurface: the Whitted fields below, read as a Lambert surface of `color` (glass, with a
-// dielectric, as smooth glass). The others take their colour from Material::color.
-struct PhongSurface {};
-struct DiffuseSurface {};  // Lambert, reflectance `color`
-struct ConductorSurface {
-  float roughness;
-  // A complex index eta + i·k per channel; without one, `color` is the reflectance at normal
-  // incidence.
-  bool has_complex_ior;
-  Color eta, k;
-};
-struct DielectricSurface {
-  float roughness;  // index and absorption in Material::dielectric
-};
-// The glTF 2.0 metallic-roughness model (render/principled_bsdf.h). Its base colour is its own
-// (Material::color holds the Whitted approximation's diffuse colour); index of refraction 1.5 unless
-// Material::dielectric says otherwise.
-struct PrincipledSurface {
-  ColorTexture base_color;
-  float metalness, roughness, ior;
-  float specular_weight;
-  Color specular_color;
-  float transmission_weight;
-  float coat_weight, coat_roughness;
-  Color fuzz_color;
-  float fuzz_roughness;
-  // roughness × green and metalness × blue of an image (its tint is (1, roughness, metalness)).
-  std::optional<ImageTexture> metallic_roughness;
-  std::optional<NormalMap> normal_map;
-};
-using SurfaceModel = std::variant<PhongSurface, DiffuseSurface, ConductorSurface, DielectricSurface, PrincipledSurface>;
-
 // Radiance a surface emits: from its front side (where its normal points; a sphere's outside) or
 // from both.
 struct Emission {
@@ -142,8 +66,9 @@ struct Emission {
 };
 
 // A material as both integrators see it. The Whitted fields (colour, Phong highlight, mirror
-// reflectivity, glass) are set for every kind, physically based kinds approximated there, so the
-// whitted integrator renders any scene; the path integrator reads `model`.
+// reflectivity, glass) are set for every kind (whitted_approximation_of, in the kind's header),
+// physically based kinds approximated there, so the whitted integrator renders any scene; the path
+// integrator reads `model`, and `dielectric` for paths inside glass.
 struct Material {
   ColorTexture color;
   float specular;

@@ -1,6 +1,7 @@
 #pragma once
-// Spheres, the scene's side of the geometry kind in one place: the shapes a render scene stores
-// and what the scene needs of them (primitives, bounds, the summary, the cost estimate), defined in
+// Spheres, the scene's side of the geometry kind in one place: the entries a scene file writes
+// (read in src/scene/yaml/yaml_sphere_entry.cpp), the shapes a render scene stores and what the
+// scene needs of them (primitives, bounds, the summary, the cost estimate), defined in
 // src/scene/build/sphere_geometry.cpp. Its intersector is geometry/sphere_intersect.h, shared by
 // both backends; the kind is registered in scene/render_scene.h (Geometry).
 #include "rtpro/core/bbox.h"
@@ -14,6 +15,8 @@ namespace rtpro {
 struct SphereDesc;  // scene/description.h
 struct ShapeTally;  // scene/scene_summary.h
 struct SceneSummary;
+struct YamlNode;
+class ShapeEntryReader;  // src/scene/yaml/yaml_shape_entry.h
 
 struct Sphere {
   Vec3 center;
@@ -25,6 +28,10 @@ struct SphereSet {
   std::vector<Sphere> spheres;
   BBox sphere_bounds(std::uint32_t i) const;
 };
+
+// `type: sphere` in an object's or the world's list of entries.
+inline const char* entry_type_name(const std::vector<SphereDesc>&) { return "sphere"; }
+void read_shape_entry(const YamlNode& node, ShapeEntryReader& reader, std::vector<SphereDesc>& spheres);
 
 // One geometry of every sphere an object lists in the scene file, in their order.
 SphereSet shapes_from(const std::vector<SphereDesc>& spheres);

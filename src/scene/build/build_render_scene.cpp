@@ -7,130 +7,30 @@
 #include "traceable_range_check.h"
 #include "gltf_asset.h"
 #include "gltf_loader.h"
-#include "mtl_parser.h"
+#include "material_textures.h"
 
 #include <algorithm>
 #include <chrono>
 #include <map>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <tuple>
+#include <type_traits>
+#include <variant>
 
 namespace rtpro {
 
 namespace {
 
-// The index of an image in `textures`, each file and colour space registered once.
-std::uint32_t texture_index(const std::filesystem::path& file, const std::string& colorspace,
-                            const std::shared_ptr<const std::vector<unsigned char>>& bytes, const SourceLocation& where,
-                            std::vector<TextureImage>& textures) {
-  std::error_code error;
-  if (!bytes && !std::filesystem::is_regular_file(file, error))
-    throw InputError(where, "texture '" + file.string() + "' not found");
-  std::uint32_t index = 0;
-  while (index < textures.size() && !(textures[index].file == file && textures[index].colorspace == colorspace))
-    ++index;
-  if (index == textures.size()) textures.push_back({file, colorspace, bytes, where});
-  return index;
-}
-
-std::optional<ImageTexture> slot_texture(const std::optional<TextureSlotDesc>& slot, const Color& tint,
-                                         std::vector<TextureImage>& textures) {
-  if (!slot) return std::nullopt;
-  return ImageTexture{texture_index(slot->file, slot->colorspace, slot->bytes, slot->where, textures), tint,
-                      TextureWrap::kRepeat};
-}
-
-// A material's diffuse colour as shading evaluates it; image textures are registered in `textures`.
-ColorTexture color_texture(const MaterialDesc& m, std::vector<TextureImage>& textures) {
-  if (!m.color_texture.empty())
-    return ImageTexture{
-        texture_index(m.color_texture, m.texture_colorspace, m.texture_bytes, m.texture_where, textures), m.color,
-        m.texture_wrap};
-  if (!m.checker) return m.color;
-  CheckerTexture checker;
-  checker.inv_size = 1.0f / m.checker->size;
-  checker.even = m.checker->even;
-  checker.odd = m.checker->odd;
-  checker.axes = m.checker->axes;
-  return checker;
+// The Whitted fields and the surface model of a material, each its kind's own
+// (scene/phong_material.h and its neighbours): a kind without them does not compile here.
+WhittedFields whitted_fields(const MaterialDesc& m) {
+  return std::visit([&](const auto& params) { return whitted_approximation_of(params, m); }, m.params);
 }
 
 SurfaceModel surface_model(const MaterialDesc& m, std::vector<TextureImage>& textures) {
-  switch (m.kind) {
-    case MaterialKind::kPhong: return PhongSurface{};
-    case MaterialKind::kDiffuse: return DiffuseSurface{};
-    case MaterialKind::kConductor:
-      return ConductorSurface{m.roughness, m.conductor_eta.has_value(), m.conductor_eta.value_or(Color(0.0f)),
-                              m.conductor_k.value_or(Color(0.0f))};
-    case MaterialKind::kDielectric: return DielectricSurface{m.roughness};
-    case MaterialKind::kPrincipled: {
-      const PrincipledDesc& p = m.principled;
-      PrincipledSurface surface{
-          color_texture(m, textures), p.metalness,           m.roughness,   m.ior.value_or(1.5f), p.specular_weight,
-          p.specular_color,           p.transmission_weight, p.coat_weight, p.coat_roughness,     p.fuzz_color,
-          p.fuzz_roughness,           std::nullopt,          std::nullopt};
-      surface.metallic_roughness =
-          slot_texture(p.metallic_roughness_texture, Color(1.0f, m.roughness, p.metalness), textures);
-      if (const std::optional<ImageTexture> normals = slot_texture(p.normal_texture, Color(1.0f), textures))
-        surface.normal_map = NormalMap{normals->image, p.normal_scale};
-      return surface;
-    }
-  }
-  throw std::logic_error("surface_model: unknown material kind");
-}
-
-// glTF's metallic-roughness model as the Phong highlight and mirror (FORMAT.md, "glTF files"):
-// with F0 = 0.04 + (mean(base) − 0.04) × metallic and gloss = (1 − roughness)², the mirror takes
-// F0 × gloss and the diffuse colour what the mirror leaves; the highlight is the peak of an
-// energy-normalised Phong lobe about as wide as the GGX one.
-MaterialDesc whitted_view_of_principled(const MaterialDesc& m) {
-  MaterialDesc whitted = m;
-  const Color base = m.color;
-  const float metallic = m.principled.metalness, roughness = m.roughness;
-  const float f0 = 0.04f + ((base.x + base.y + base.z) / 3.0f - 0.04f) * metallic;
-  const float gloss = (1.0f - roughness) * (1.0f - roughness);
-  const float alpha4 = std::max(roughness * roughness * roughness * roughness, 1e-6f);
-  const float n = std::clamp(2.0f / alpha4 - 2.0f, 1.0f, 10000.0f);
-  whitted.reflectivity = std::clamp(f0 * gloss, 0.0f, 1.0f);
-  whitted.color = base * (1.0f - whitted.reflectivity);
-  whitted.shininess = n;
-  whitted.specular = std::min(f0 * (n + 2.0f) / 2.0f, 2.0f) * std::min(1.0f, n / kFullHighlightNs);
-  return whitted;
-}
-
-// The Whitted fields of a physically based kind: what the Phong model can show of it, so the
-// whitted integrator still renders the scene (a preview; `path` renders it as it is). Phong
-// materials keep what their file says.
-void approximate_for_whitted(const MaterialDesc& m, Material& material) {
-  const float alpha = m.roughness * m.roughness;
-  // The Phong exponent whose lobe is about as wide as a GGX lobe of this alpha (Walter et al. 2007).
-  const float shininess = std::min(2.0f / std::max(alpha * alpha, 1e-4f) - 2.0f, 10000.0f);
-  switch (m.kind) {
-    case MaterialKind::kPhong: return;
-    case MaterialKind::kDiffuse:
-      material.specular = 0.0f;
-      material.reflectivity = 0.0f;
-      return;
-    case MaterialKind::kConductor:
-      material.specular = 1.0f - m.roughness;
-      material.shininess = shininess;
-      material.reflectivity = m.roughness < 0.1f ? 1.0f - m.roughness * 10.0f : 0.0f;
-      return;
-    case MaterialKind::kDielectric:
-      material.specular = 1.0f - m.roughness;
-      material.shininess = shininess;
-      material.reflectivity = 0.0f;
-      return;
-    case MaterialKind::kPrincipled: {
-      const MaterialDesc whitted = whitted_view_of_principled(m);
-      material.specular = whitted.specular;
-      material.shininess = whitted.shininess;
-      material.reflectivity = whitted.reflectivity;
-      return;  // the caller sets the colour, which may be a texture
-    }
-  }
+  return std::visit([&](const auto& params) -> SurfaceModel { return surface_model_from(params, m, textures); },
+                    m.params);
 }
 
 class RenderSceneBuilder {
@@ -148,10 +48,7 @@ class RenderSceneBuilder {
 
     check_instance_count();
     prototype_of_object_.assign(description_.objects.size(), std::nullopt);
-    add_own_shapes(description_.world, scene_.top, &top_origins_);
-    const bool world_spheres = !description_.world.spheres.empty();
-    linking_of_object_.assign(world_spheres ? 1 : 0, kNoLinking);
-    for (const MeshDesc& mesh : description_.world.meshes) linking_of_object_.push_back(mesh.linking);
+    add_own_shapes(description_.world, scene_.top, true);
     for (const GltfDesc& gltf : description_.world.gltfs) {
       place_gltf(gltf, Affine::identity());
       linking_of_object_.resize(scene_.top.geometries.size(), gltf.linking);
@@ -160,24 +57,21 @@ class RenderSceneBuilder {
       flatten_instance(instance.object, instance.transform, instance.where);
       linking_of_object_.resize(scene_.top.geometries.size(), instance.linking);
     }
-    link_objects(world_spheres);
+    link_objects();
     check_traceable_range(scene_, top_origins_, description_.camera, description_.lights);
     if (report_) report_->flattened_instances = flattened_;
     return std::move(scene_);
   }
 
  private:
+  // Images are registered as they are met: the colour's, the model's own, the emission's.
   std::uint32_t add_material(const MaterialDesc& m, const std::string& name) {
-    std::optional<Dielectric> dielectric;
-    if (m.ior) dielectric = Dielectric{*m.ior, m.transmittance, m.transmittance_distance};
-    std::optional<Dielectric> whitted_glass = m.kind == MaterialKind::kPrincipled ? std::nullopt : dielectric;
-    Material material{color_texture(m, scene_.textures), m.specular, m.shininess, m.reflectivity, whitted_glass};
+    const WhittedFields whitted = whitted_fields(m);
+    Material material{color_texture(m, m.color * whitted.color_scale, scene_.textures), whitted.specular,
+                      whitted.shininess, whitted.reflectivity, whitted.glass};
     material.model = surface_model(m, scene_.textures);
     material.emission =
         Emission{m.emission, m.emission_two_sided, slot_texture(m.emission_texture, Color(1.0f), scene_.textures)};
-    approximate_for_whitted(m, material);
-    if (m.kind == MaterialKind::kPrincipled)
-      material.color = color_texture(whitted_view_of_principled(m), scene_.textures);
     scene_.materials.push_back(std::move(material));
     scene_.material_names.push_back(name);
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);
@@ -206,23 +100,35 @@ class RenderSceneBuilder {
   }
 
   // Spheres and meshes that belong to `object` itself (not through its instances). Only the
-  // world's own shapes are top-level geometries that need an origin (`origins` is null for
-  // prototypes). Every list of shapes written in the scene file becomes one geometry of its kind
-  // (shapes_from, in the kind's file: scene/sphere_geometry.h); glTF files are placed as instances
-  // of their meshes (place_gltf).
-  void add_own_shapes(const ObjectDesc& object, Group& group, std::vector<GeometryOrigin>* origins = nullptr) {
+  // world's own shapes are top-level geometries, which need an origin and their entries' light
+  // linking. Every list of shapes written in the scene file becomes one geometry of its kind
+  // (shapes_from, in the kind's file: scene/sphere_geometry.h), linked entry by entry; glTF files
+  // are placed as instances of their meshes (place_gltf).
+  void add_own_shapes(const ObjectDesc& object, Group& group, bool world = false) {
     visit_shape_lists(object, Overloaded{[&](const std::vector<MeshDesc>& meshes) {
                                            for (const MeshDesc& mesh : meshes) {
                                              group.geometries.emplace_back(load_mesh(mesh));
-                                             if (origins) origins->push_back({&mesh.where});
+                                             if (!world) continue;
+                                             top_origins_.push_back({&mesh.where});
+                                             linking_of_object_.push_back(mesh.linking);
                                            }
                                          },
                                          [](const std::vector<GltfDesc>&) {},
-                                         [&](const auto& shapes) {
-                                           if (shapes.empty()) return;
-                                           group.geometries.emplace_back(shapes_from(shapes));
-                                           if (origins) origins->push_back({&scene_file_});
-                                         }});
+                                         [&](const auto& shapes) { add_shape_list(shapes, group, world); }});
+  }
+
+  // One geometry of the object's list of a kind of shape; in the world, each entry linked as it says.
+  template <typename Desc>
+  void add_shape_list(const std::vector<Desc>& shapes, Group& group, bool world) {
+    static_assert(std::is_constructible_v<Geometry, decltype(shapes_from(shapes))>,
+                  "a kind of shape needs its alternative of Geometry and its GeometryKind (scene/render_scene.h)");
+    if (shapes.empty()) return;
+    group.geometries.emplace_back(shapes_from(shapes));
+    if (!world) return;
+    top_origins_.push_back({&scene_file_});
+    linking_of_object_.push_back(kLinkedPerPrimitive);
+    std::vector<std::uint32_t>& linkings = primitive_linkings_.emplace_back();
+    for (const Desc& shape : shapes) linkings.push_back(shape.linking);
   }
 
   TriangleMesh load_mesh(const MeshDesc& desc) {
@@ -348,19 +254,26 @@ class RenderSceneBuilder {
       flatten_instance(nested.object, compose(to_world, nested.transform), nested.where);
   }
 
-  // Light linking: the group of each top-level object (none when no world entry is linked). The
-  // world's spheres share one geometry, so theirs are per sphere.
-  void link_objects(bool world_spheres) {
+  // Light linking: the group of each top-level object (none when no world entry is linked), per
+  // primitive for a geometry of many entries.
+  void link_objects() {
     if (description_.linkings.empty()) return;
     LightLinks& links = scene_.links;
     std::vector<std::uint32_t> group_of_linking;
     for (const LightLinkingDesc& linking : description_.linkings)
       group_of_linking.push_back(links.group_with(make_link_group(linking, description_.lights.size())));
     const auto group = [&](std::uint32_t linking) { return linking == kNoLinking ? 0u : group_of_linking[linking]; };
-    for (const std::uint32_t linking : linking_of_object_) links.group_of_object.push_back(group(linking));
-    if (!world_spheres) return;
-    links.group_of_object[0] = LightLinks::kPerSphere;
-    for (const SphereDesc& sphere : description_.world.spheres) links.group_of_sphere.push_back(group(sphere.linking));
+    std::size_t next_per_primitive = 0;
+    for (const std::uint32_t linking : linking_of_object_) {
+      if (linking != kLinkedPerPrimitive) {
+        links.group_of_object.push_back(group(linking));
+        continue;
+      }
+      links.group_of_object.push_back(LightLinks::kPerPrimitive |
+                                      static_cast<std::uint32_t>(links.group_of_primitive.size()));
+      for (const std::uint32_t entry : primitive_linkings_[next_per_primitive++])
+        links.group_of_primitive.push_back(group(entry));
+    }
   }
 
   static constexpr std::uint32_t kInvalidPrototype = ~0u;
@@ -372,7 +285,11 @@ class RenderSceneBuilder {
   std::size_t flattened_ = 0;
   const SourceLocation scene_file_{description_.file.string()};  // where the world's spheres are
   std::vector<GeometryOrigin> top_origins_;                      // where each top-level geometry came from
-  std::vector<std::uint32_t> linking_of_object_;                 // per top-level geometry: its world entry's linking
+  // Per top-level geometry: its world entry's linking, or kLinkedPerPrimitive for a geometry of
+  // many entries, whose entries' linkings are the next list of primitive_linkings_.
+  std::vector<std::uint32_t> linking_of_object_;
+  std::vector<std::vector<std::uint32_t>> primitive_linkings_;
+  static constexpr std::uint32_t kLinkedPerPrimitive = kNoLinking - 1;  // not an index: linkings < kMaxSceneEntries
 };
 
 }  // namespace

@@ -115,11 +115,10 @@ Color color_of(const tinygltf::Value& object, const char* key, Color fallback) {
 
 // The material extensions tinygltf hands over, as their specifications define them (values
 // clamped to their ranges); their textures are not read.
-void read_extensions(const tinygltf::Material& m, MaterialDesc& desc) {
-  PrincipledDesc& p = desc.principled;
+void read_extensions(const tinygltf::Material& m, PrincipledParams& p) {
   if (const tinygltf::Value* ior = extension(m, "KHR_materials_ior")) {
     const float value = number_of(*ior, "ior", 1.5f);
-    desc.ior = value >= 1.0f ? std::min(value, 100.0f) : 1.5f;  // 0 (a glTF "infinite" index) is not modelled
+    p.ior = value >= 1.0f ? std::min(value, 100.0f) : 1.5f;  // 0 (a glTF "infinite" index) is not modelled
   }
   if (const tinygltf::Value* specular = extension(m, "KHR_materials_specular")) {
     p.specular_weight = clamped_unit(number_of(*specular, "specularFactor", 1.0f));
@@ -165,26 +164,25 @@ MaterialDesc read_material(const tinygltf::Model& model, int index, const std::f
                        ": KHR_materials_pbrSpecularGlossiness is not read; using the metallic-roughness values");
 
   // The path integrator's principled model; the Whitted fields are worked out from it when the
-  // render scene is built (build_render_scene.cpp, whitted_view_of_principled).
+  // render scene is built (whitted_approximation_of in scene/principled_material.h).
   MaterialDesc desc;
   desc.name = m.name.empty() ? path : m.name;
-  desc.kind = MaterialKind::kPrincipled;
+  PrincipledParams& principled = desc.params.emplace<PrincipledParams>();
   desc.color = base;
-  desc.roughness = roughness;
-  desc.principled.metalness = metallic;
-  read_extensions(m, desc);
+  principled.roughness = roughness;
+  principled.metalness = metallic;
+  read_extensions(m, principled);
   desc.opacity = alpha;
   desc.color_texture = texture_path(model, pbr.baseColorTexture.index, file,
                                     path + ".pbrMetallicRoughness.baseColorTexture", warnings, &desc.texture_bytes);
   desc.texture_where = SourceLocation{file.string() + ": " + path + ".pbrMetallicRoughness.baseColorTexture"};
   read_emission(m, desc);
-  desc.principled.metallic_roughness_texture =
+  principled.metallic_roughness_texture =
       texture_slot(model, pbr.metallicRoughnessTexture.index, file,
                    path + ".pbrMetallicRoughness.metallicRoughnessTexture", "Raw", warnings);
-  desc.principled.normal_texture =
+  principled.normal_texture =
       texture_slot(model, m.normalTexture.index, file, path + ".normalTexture", "Raw", warnings);
-  desc.principled.normal_scale =
-      std::isfinite(m.normalTexture.scale) ? static_cast<float>(m.normalTexture.scale) : 1.0f;
+  principled.normal_scale = std::isfinite(m.normalTexture.scale) ? static_cast<float>(m.normalTexture.scale) : 1.0f;
   if (desc.emission != Color(0.0f))
     desc.emission_texture =
         texture_slot(model, m.emissiveTexture.index, file, path + ".emissiveTexture", "sRGB - Texture", warnings);

@@ -88,15 +88,17 @@ class MtlParser {
     }
     current_ = MaterialDesc{};
     current_->name.assign(p, end);
-    ks_ = current_->specular;
-    ns_ = current_->shininess;
+    ks_ = PhongParams{}.specular;
+    ns_ = PhongParams{}.shininess;
     material_line_ = line_;
   }
 
   void finish_material() {
     if (!current_) return;
-    current_->shininess = std::max(ns_, 1.0f);
-    current_->specular = ks_ * std::min(1.0f, ns_ / kFullHighlightNs);
+    PhongParams phong;
+    phong.shininess = std::max(ns_, 1.0f);
+    phong.specular = ks_ * std::min(1.0f, ns_ / kFullHighlightNs);
+    current_->params = phong;
     if (current_->opacity < 1.0f)
       library_.warnings.push_back(file_ + ":" + std::to_string(material_line_) + ": material " +
                                   ascii::quoted(current_->name) + " is partly transparent (d " +

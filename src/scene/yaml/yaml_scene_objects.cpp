@@ -1,47 +1,25 @@
 #include "yaml_scene_objects.h"
 
-#include "gltf_loader.h"
+#include "rtpro/core/closest_match.h"
+#include "rtpro/core/overloaded.h"
 #include "yaml_light_linking.h"
+#include "yaml_name_table.h"
 #include "yaml_reader.h"
+#include "yaml_shape_entry.h"
 #include "yaml_transform.h"
 
 #include <algorithm>
-#include <cctype>
-#include <fstream>
-#include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace rtpro {
 
 namespace {
 
-const std::vector<std::string> kEntryTypes = {"sphere", "mesh", "instance"};
-const std::vector<std::string> kMeshExtensions = {".obj", ".ply", ".gltf", ".glb"};
-const std::vector<std::string> kNormalsModes = {"flat", "smooth", "file"};
-
 // One instance entry seen from the instance graph: which object it places, and where it says so.
 struct InstanceLink {
   std::uint32_t target;
   YamlPosition at;
-};
-
-// Names resolved to indices, with the names kept in order for suggestions.
-class NameTable {
- public:
-  void add(const std::string& name, std::uint32_t index) {
-    if (indices_.emplace(name, index).second) names_.push_back(name);
-  }
-  const std::uint32_t* find(const std::string& name) const {
-    const auto found = indices_.find(name);
-    return found == indices_.end() ? nullptr : &found->second;
-  }
-  const std::vector<std::string>& names() const { return names_; }
-
- private:
-  std::unordered_map<std::string, std::uint32_t> indices_;
-  std::vector<std::string> names_;
 };
 
 std::string chain_text(const std::vector<std::string>& names, const std::vector<std::uint32_t>& chain) {
@@ -109,12 +87,27 @@ void check_instance_graph(const std::vector<std::string>& names, const std::vect
   }
 }
 
+// Calls visit(shapes) with the object's list of each kind of shape an entry's `type:` names
+// (visit_shape_lists' order): a glTF file is written as a mesh entry, so its list has no type of
+// its own. A kind without entry_type_name and read_shape_entry (see scene/sphere_geometry.h) does
+// not compile.
+template <typename Visit>
+void visit_entry_kinds(ObjectDesc& object, Visit&& visit) {
+  visit_shape_lists(object, Overloaded{[](std::vector<GltfDesc>&) {}, [&](auto& shapes) { visit(shapes); }});
+}
+
+std::vector<std::string> entry_types() {
+  std::vector<std::string> types;
+  ObjectDesc kinds;
+  visit_entry_kinds(kinds, [&](const auto& shapes) { types.push_back(entry_type_name(shapes)); });
+  types.push_back("instance");
+  return types;
+}
+
 class ObjectsReader {
  public:
   ObjectsReader(const std::vector<MaterialDesc>& materials, std::filesystem::path folder, SceneDescription& scene)
-      : folder_(std::move(folder)), scene_(scene) {
-    for (std::uint32_t i = 0; i < materials.size(); ++i) materials_.add(materials[i].name, i);
-  }
+      : shapes_(materials, std::move(folder), scene) {}
 
   void read(const YamlNode* objects, const YamlNode* world, SceneDescription& scene) {
     const bool has_objects = objects && !objects->is_null();
@@ -146,82 +139,30 @@ class ObjectsReader {
   void read_entries(const YamlNode* list, const std::string& what, ObjectDesc& object, std::vector<InstanceLink>& links,
                     bool in_world) {
     if (!list || list->is_null()) return;
-    if (!list->is_sequence())
-      fail_at(*list, what + ": expected a list of entries (sphere, mesh, instance), got " + list->describe());
+    static const std::vector<std::string> types = entry_types();
+    if (!list->is_sequence()) {
+      std::string listed;
+      for (const std::string& type : types) listed += (listed.empty() ? "" : ", ") + type;
+      fail_at(*list, what + ": expected a list of entries (" + listed + "), got " + list->describe());
+    }
+    shapes_.start(object, in_world);
     for (const YamlNodePtr& entry : list->items()) {
       if (++entries_ > kMaxSceneEntries) {
         fail_at(*entry, "the scene has more than " + std::to_string(kMaxSceneEntries) +
                             " entries (counting every alias expansion); use meshes or instances");
       }
-      const std::string type = read_entry_type(*entry, "entry", kEntryTypes);
-      if (type == "sphere") {
-        object.spheres.push_back(read_sphere(*entry, in_world));
-      } else if (type == "mesh") {
-        read_mesh(*entry, object, in_world);
-      } else {
-        object.instances.push_back(read_instance(*entry, links, in_world));
+      const std::string type = read_entry_type(*entry, "entry", types);
+      if (type == "instance") {
+        object.instances.push_back(read_instance(*entry, links));
+        continue;
       }
+      visit_entry_kinds(object, [&](auto& shapes) {
+        if (type == entry_type_name(shapes)) read_shape_entry(*entry, shapes_, shapes);
+      });
     }
   }
 
-  // The index of the entry's light linking in the scene's list, or kNoLinking. Only world entries
-  // are linked: an object's entries are lit as the instances placing it are.
-  std::uint32_t read_linking(const MappingReader& entry, bool in_world) {
-    std::optional<LightLinkingDesc> linking = read_light_linking(entry, scene_.light_names);
-    if (!linking) return kNoLinking;
-    if (!in_world) {
-      const YamlNode* key = entry.optional(kLightLinkingKey);
-      fail_at(key ? *key : *entry.optional(kShadowLinkingKey),
-              entry.field(key ? kLightLinkingKey : kShadowLinkingKey) +
-                  ": only the world's entries are light-linked; link the instance that places this object");
-    }
-    scene_.linkings.push_back(std::move(*linking));
-    return static_cast<std::uint32_t>(scene_.linkings.size() - 1);
-  }
-
-  SphereDesc read_sphere(const YamlNode& node, bool in_world) {
-    const MappingReader sphere(node, "sphere",
-                               {"type", "center", "radius", "material", kLightLinkingKey, kShadowLinkingKey});
-    SphereDesc desc;
-    if (const YamlNode* center = sphere.optional("center")) desc.center = read_vec3(*center, sphere.field("center"));
-    if (const YamlNode* radius = sphere.optional("radius")) {
-      const double value = read_number(*radius, sphere.field("radius"));
-      if (!(value > 0.0))
-        fail_at(*radius, sphere.field("radius") + " must be > 0, got " + std::string(radius->scalar()));
-      desc.radius = static_cast<float>(value);
-    }
-    if (const YamlNode* material = sphere.optional("material"))
-      desc.material = material_index(*material, sphere.field("material"));
-    desc.linking = read_linking(sphere, in_world);
-    return desc;
-  }
-
-  // An OBJ or PLY file is one mesh; a glTF file is a scene of its own, placed as a whole.
-  void read_mesh(const YamlNode& node, ObjectDesc& object, bool in_world) {
-    const MappingReader mesh(node, "mesh",
-                             {"type", "file", "material", "normals", kLightLinkingKey, kShadowLinkingKey});
-    MeshDesc desc;
-    desc.file = resolve_mesh_file(mesh.required("file"), mesh.field("file"));
-    if (const YamlNode* material = mesh.optional("material"))
-      desc.material = material_index(*material, mesh.field("material"));
-    if (const YamlNode* normals = mesh.optional("normals"))
-      desc.normals = read_normals_mode(*normals, mesh.field("normals"));
-    desc.where = node.at.location();
-    desc.linking = read_linking(mesh, in_world);
-    if (is_gltf_file(desc.file))
-      object.gltfs.push_back({desc.file, desc.material, desc.where, desc.normals, nullptr, desc.linking});
-    else object.meshes.push_back(std::move(desc));
-  }
-
-  static NormalsMode read_normals_mode(const YamlNode& node, const std::string& field) {
-    const std::string mode = read_string(node, field);
-    if (mode == "flat") return NormalsMode::kFlat;
-    if (mode == "smooth") return NormalsMode::kSmooth;
-    if (mode == "file") return NormalsMode::kFile;
-    fail_at(node, field + ": expected flat, smooth or file, got '" + mode + "'" + suggestion(mode, kNormalsModes));
-  }
-
-  InstanceDesc read_instance(const YamlNode& node, std::vector<InstanceLink>& links, bool in_world) {
+  InstanceDesc read_instance(const YamlNode& node, std::vector<InstanceLink>& links) {
     const MappingReader instance(node, "instance",
                                  {"type", "object", "transform", kLightLinkingKey, kShadowLinkingKey});
     InstanceDesc desc;
@@ -237,43 +178,12 @@ class ObjectsReader {
     if (const YamlNode* transform = instance.optional("transform"))
       desc.transform = read_transform(*transform, instance.field("transform"));
     desc.where = node.at.location();
-    desc.linking = read_linking(instance, in_world);
+    desc.linking = shapes_.read_linking(instance);
     links.push_back({*index, object.at});
     return desc;
   }
 
-  std::uint32_t material_index(const YamlNode& node, const std::string& field) const {
-    const std::string name = read_string(node, field);
-    const std::uint32_t* index = materials_.find(name);
-    if (!index) fail_at(node, field + ": unknown material '" + name + "'" + suggestion(name, materials_.names()));
-    return *index;
-  }
-
-  std::filesystem::path resolve_mesh_file(const YamlNode& node, const std::string& field) const {
-    const std::string written = read_string(node, field);
-    // Relative to the file that wrote it: an included file's meshes sit beside it.
-    const std::filesystem::path folder =
-        node.at.line > 0 ? std::filesystem::path(*node.at.source).parent_path() : folder_;
-    const std::filesystem::path file = (folder / written).lexically_normal();
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (std::find(kMeshExtensions.begin(), kMeshExtensions.end(), extension) == kMeshExtensions.end())
-      fail_at(node,
-              field + ": '" + written + "' is not a mesh format rtpro reads (.obj or .ply, or a .gltf or .glb scene)");
-    std::error_code error;
-    const std::filesystem::file_status status = std::filesystem::status(file, error);
-    if (!std::filesystem::exists(status))
-      fail_at(node, field + ": mesh file '" + written + "' not found (looked for '" + file.string() + "')");
-    if (!std::filesystem::is_regular_file(status)) fail_at(node, field + ": '" + file.string() + "' is not a file");
-    if (!std::ifstream(file, std::ios::binary))
-      fail_at(node, field + ": cannot open mesh file '" + file.string() + "'");
-    return file;
-  }
-
-  std::filesystem::path folder_;
-  SceneDescription& scene_;
-  NameTable materials_;
+  ShapeEntryReader shapes_;
   NameTable objects_;
   std::vector<std::vector<InstanceLink>> links_;  // per object, the world last
   std::size_t entries_ = 0;

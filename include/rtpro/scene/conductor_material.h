@@ -1,0 +1,42 @@
+#pragma once
+// A conductor (`type: conductor`, a metal), the scene's side of the kind in one place (as
+// scene/phong_material.h explains): its reader is src/scene/yaml/yaml_conductor_material.cpp, the
+// rest src/scene/build/conductor_material.cpp, its shading side render/conductor_bsdf.h.
+#include "rtpro/core/vec3.h"
+#include "rtpro/scene/material_textures.h"
+#include "rtpro/scene/whitted_fields.h"
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace rtpro {
+
+struct MaterialDesc;  // scene/description.h
+class MappingReader;  // src/scene/yaml/yaml_reader.h
+
+struct ConductorParams {
+  // GGX roughness from 0 (smooth, a perfect mirror) to 1; the distribution's alpha is roughness².
+  float roughness = 0.0f;
+  // A complex index of refraction eta + i·k per channel (measured metals); unset, the conductor's
+  // reflectance at normal incidence is the material's colour (Schlick's Fresnel).
+  std::optional<Color> eta, k;
+};
+
+struct ConductorSurface {
+  float roughness;
+  // A complex index eta + i·k per channel; without one, Material::color is the reflectance at
+  // normal incidence.
+  bool has_complex_ior;
+  Color eta, k;
+};
+
+inline const char* material_type_name(const ConductorParams&) { return "conductor"; }
+std::vector<std::string_view> material_keys(const ConductorParams&);
+void read_material_params(const MappingReader& material, ConductorParams& params);
+ConductorSurface surface_model_from(const ConductorParams& params, const MaterialDesc&, std::vector<TextureImage>&);
+// A highlight as wide as its lobe, and a mirror while it is nearly smooth.
+WhittedFields whitted_approximation_of(const ConductorParams& params, const MaterialDesc&);
+inline bool reads_images(const ConductorSurface&) { return false; }
+
+}  // namespace rtpro

@@ -1,0 +1,35 @@
+#pragma once
+// A dielectric (`type: dielectric`: glass, water), the scene's side of the kind in one place (as
+// scene/phong_material.h explains): its reader is src/scene/yaml/yaml_dielectric_material.cpp, the
+// rest src/scene/build/dielectric_material.cpp, its shading side render/dielectric_bsdf.h.
+#include "rtpro/scene/material_textures.h"
+#include "rtpro/scene/whitted_fields.h"
+
+#include <string_view>
+#include <vector>
+
+namespace rtpro {
+
+struct MaterialDesc;  // scene/description.h
+class MappingReader;  // src/scene/yaml/yaml_reader.h
+
+struct DielectricParams {
+  // GGX roughness from 0 (clear glass) to 1; the distribution's alpha is roughness².
+  float roughness = 0.0f;
+  // White light inside it has colour `transmittance` after `transmittance_distance` scene units.
+  Dielectric glass;
+};
+
+struct DielectricSurface {
+  float roughness;  // index and absorption in Material::dielectric
+};
+
+inline const char* material_type_name(const DielectricParams&) { return "dielectric"; }
+std::vector<std::string_view> material_keys(const DielectricParams&);
+void read_material_params(const MappingReader& material, DielectricParams& params);
+DielectricSurface surface_model_from(const DielectricParams& params, const MaterialDesc&, std::vector<TextureImage>&);
+// Smooth glass with a highlight as wide as its lobe.
+WhittedFields whitted_approximation_of(const DielectricParams& params, const MaterialDesc&);
+inline bool reads_images(const DielectricSurface&) { return false; }
+
+}  // namespace rtpro

@@ -1,0 +1,37 @@
+#include "yaml_shape_entry.h"
+
+#include "rtpro/core/closest_match.h"
+#include "yaml_light_linking.h"
+
+#include <optional>
+#include <utility>
+
+namespace rtpro {
+
+ShapeEntryReader::ShapeEntryReader(const std::vector<MaterialDesc>& materials, std::filesystem::path folder,
+                                   SceneDescription& scene)
+    : folder_(std::move(folder)), scene_(scene) {
+  for (std::uint32_t i = 0; i < materials.size(); ++i) materials_.add(materials[i].name, i);
+}
+
+std::uint32_t ShapeEntryReader::material_index(const YamlNode& node, const std::string& field) const {
+  const std::string name = read_string(node, field);
+  const std::uint32_t* index = materials_.find(name);
+  if (!index) fail_at(node, field + ": unknown material '" + name + "'" + suggestion(name, materials_.names()));
+  return *index;
+}
+
+std::uint32_t ShapeEntryReader::read_linking(const MappingReader& entry) {
+  std::optional<LightLinkingDesc> linking = read_light_linking(entry, scene_.light_names);
+  if (!linking) return kNoLinking;
+  if (!in_world_) {
+    const YamlNode* key = entry.optional(kLightLinkingKey);
+    fail_at(key ? *key : *entry.optional(kShadowLinkingKey),
+            entry.field(key ? kLightLinkingKey : kShadowLinkingKey) +
+                ": only the world's entries are light-linked; link the instance that places this object");
+  }
+  scene_.linkings.push_back(std::move(*linking));
+  return static_cast<std::uint32_t>(scene_.linkings.size() - 1);
+}
+
+}  // namespace rtpro
