@@ -165,10 +165,6 @@ std::optional<BsdfSample> ConductorBsdf::sample(const Vec3& wo, float u_lobe, Sa
   return BsdfSample{value(wo, wi, o, *g), wi, pdf, false, false};
 }
 
-}  // namespace rtpro
-
-namespace rtpro {
-
 Vec3 bsdf_from(const ConductorSurface& conductor, const Material& material, const SurfacePoint& point,
                const TextureLookup* textures, SurfaceBsdf& out) {
   const float alpha = roughness_to_alpha(conductor.roughness);

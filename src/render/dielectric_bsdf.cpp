@@ -99,10 +99,6 @@ std::optional<BsdfSample> DielectricBsdf::sample(const Vec3& wo, float u_lobe, S
   return BsdfSample{e.f, wi, e.pdf, false, wi.z * wo.z < 0.0f};
 }
 
-}  // namespace rtpro
-
-namespace rtpro {
-
 Vec3 bsdf_from(const DielectricSurface& d, const Material& material, const SurfacePoint& point,
                const TextureLookup* textures, SurfaceBsdf& out) {
   out.bsdf = DielectricBsdf{material.dielectric ? material.dielectric->ior : 1.5f, roughness_to_alpha(d.roughness)};

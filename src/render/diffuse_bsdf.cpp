@@ -27,10 +27,6 @@ std::optional<BsdfSample> DiffuseBsdf::sample(const Vec3& wo, float /*u_lobe*/, 
   return BsdfSample{reflectance * std::numbers::inv_pi_v<float>, wi, pdf, false, false};
 }
 
-}  // namespace rtpro
-
-namespace rtpro {
-
 Vec3 bsdf_from(const DiffuseSurface&, const Material& material, const SurfacePoint& point,
                const TextureLookup* textures, SurfaceBsdf& out) {
   return lambert_surface(evaluate(material.color, point, textures), point.shading_normal, out);

@@ -355,10 +355,6 @@ std::optional<BsdfSample> PrincipledBsdf::sample(const Vec3& wo, float u_lobe, S
   return BsdfSample{evaluate(wo, *wi, o), *wi, pdf, false, !same_hemisphere(wo, *wi)};
 }
 
-}  // namespace rtpro
-
-namespace rtpro {
-
 // Material::color is the Whitted view's; the model's base colour is its own texture.
 Vec3 bsdf_from(const PrincipledSurface& p, const Material&, const SurfacePoint& point, const TextureLookup* textures,
                SurfaceBsdf& out) {

@@ -15,12 +15,7 @@ void read_material_params(const MappingReader& material, PhongParams& params) {
     params.specular = read_non_negative(*specular, material.field("specular"));
   if (const YamlNode* shininess = material.optional("shininess"))
     params.shininess = read_non_negative(*shininess, material.field("shininess"));
-  if (const YamlNode* reflectivity = material.optional("reflectivity")) {
-    params.reflectivity = read_non_negative(*reflectivity, material.field("reflectivity"));
-    if (params.reflectivity > 1.0f)
-      fail_at(*reflectivity,
-              material.field("reflectivity") + " must be from 0 to 1, got " + std::string(reflectivity->scalar()));
-  }
+  read_unit(material, "reflectivity", params.reflectivity);
   // Glass: an index of refraction, and then what it absorbs.
   if (material.optional("ior")) read_ior(material, params.glass.emplace().ior);
   const YamlNode* transmittance = material.optional("transmittance");
