@@ -48,16 +48,13 @@ inline Sample2D sample_uniform_disk_concentric(Sample2D u) {
   const float y = 2.0f * u.y - 1.0f;
   if (x == 0.0f && y == 0.0f) return {0.0f, 0.0f};
   constexpr float kQuarterPi = std::numbers::pi_v<float> / 4.0f;
-  // The larger coordinate is the radius and the angle's denominator: φ = π/4 · y/x when it is x;
-  // when it is y, φ = π/2 − θ with θ = π/4 · x/y, so cos φ = sin θ and sin φ = cos θ. One path
-  // for both wedges: which one a sample is in is a coin toss a branch would mispredict half the time.
-  // (Selected by index, which compiles to loads, not to branches.)
-  const int x_major = std::fabs(x) > std::fabs(y);
-  const float yx[2] = {y, x};
-  const float r = yx[x_major];
-  const SineCosine theta = sine_cosine_within_quarter_turn(kQuarterPi * (yx[1 - x_major] / r));
-  const float sin_cos[2] = {theta.sin, theta.cos};
-  return {r * sin_cos[x_major], r * sin_cos[1 - x_major]};
+  if (std::fabs(x) > std::fabs(y)) {
+    const SineCosine phi = sine_cosine_within_quarter_turn(kQuarterPi * (y / x));
+    return {x * phi.cos, x * phi.sin};
+  }
+  // φ = π/2 − θ with θ = π/4 · x/y, so cos φ = sin θ and sin φ = cos θ.
+  const SineCosine theta = sine_cosine_within_quarter_turn(kQuarterPi * (x / y));
+  return {y * theta.sin, y * theta.cos};
 }
 
 inline Vec3 sample_cosine_hemisphere(Sample2D u) {
