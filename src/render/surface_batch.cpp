@@ -5,6 +5,7 @@
 
 #include <emmintrin.h>
 
+#include <initializer_list>
 #include <limits>
 
 namespace rtpro {
@@ -250,12 +251,24 @@ void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::spa
       ++count;
     }
   };
-  Waiting spheres, triangles;
-  const Sphere* sphere_of[4];
-  const TriangleMesh* mesh_of[4];
-  std::uint32_t material_of[4];
+  struct WaitingSpheres : Waiting {
+    const Sphere* spheres[4];
+  };
+  struct WaitingTriangles : Waiting {
+    const TriangleMesh* meshes[4];
+    std::uint32_t materials[4];
+  };
+  // Flat and smooth meshes' triangles wait apart: four flat ones skip the normals.
+  WaitingSpheres spheres;
+  WaitingTriangles flat_triangles, smooth_triangles;
   Vec3 mirrors[4];  // the four-at-a-time kernels' mirror directions, not needed here
   Vec3* const four_mirrors[4] = {&mirrors[0], &mirrors[1], &mirrors[2], &mirrors[3]};
+  const auto add_triangle = [&](WaitingTriangles& waiting, const TriangleMesh& mesh, std::uint32_t material,
+                                std::size_t i) {
+    waiting.meshes[waiting.count] = &mesh;
+    waiting.materials[waiting.count] = material;
+    waiting.add(rays[i], hits[i], out[i]);
+  };
   for (std::size_t i = 0; i < hits.size(); ++i) {
     const Hit& hit = hits[i];
     if (!hit.valid()) continue;
@@ -265,22 +278,30 @@ void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::spa
       if (const auto* mesh = std::get_if<TriangleMesh>(&geometry)) {
         const std::uint32_t material = mesh->material_of(hit.prim_id);
         if (!has_image_texture(scene, material)) {
-          mesh_of[triangles.count] = mesh;
-          material_of[triangles.count] = material;
-          triangles.add(rays[i], hit, out[i]);
-          if (triangles.count == 4) {
-            triangle_surfaces4(mesh_of, material_of, triangles.rays, triangles.hits, triangles.points, four_mirrors);
-            triangles.count = 0;
+          if (mesh->normals.empty()) {
+            add_triangle(flat_triangles, *mesh, material, i);
+            if (flat_triangles.count == 4) {
+              triangle_surfaces4<true>(flat_triangles.meshes, flat_triangles.materials, flat_triangles.rays,
+                                       flat_triangles.hits, flat_triangles.points, four_mirrors);
+              flat_triangles.count = 0;
+            }
+          } else {
+            add_triangle(smooth_triangles, *mesh, material, i);
+            if (smooth_triangles.count == 4) {
+              triangle_surfaces4<false>(smooth_triangles.meshes, smooth_triangles.materials, smooth_triangles.rays,
+                                        smooth_triangles.hits, smooth_triangles.points, four_mirrors);
+              smooth_triangles.count = 0;
+            }
           }
           continue;
         }
       } else if (const auto* set = std::get_if<SphereSet>(&geometry)) {
         const Sphere& sphere = set->spheres[hit.prim_id];
         if (!has_image_texture(scene, sphere.material)) {
-          sphere_of[spheres.count] = &sphere;
+          spheres.spheres[spheres.count] = &sphere;
           spheres.add(rays[i], hit, out[i]);
           if (spheres.count == 4) {
-            sphere_surfaces4(sphere_of, spheres.rays, spheres.hits, spheres.points, four_mirrors);
+            sphere_surfaces4(spheres.spheres, spheres.rays, spheres.hits, spheres.points, four_mirrors);
             spheres.count = 0;
           }
           continue;
@@ -289,7 +310,7 @@ void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::spa
     }
     make_surface(scene, rays[i], hit, out[i]);
   }
-  for (const Waiting* waiting : {&spheres, &triangles})
+  for (const Waiting* waiting : std::initializer_list<const Waiting*>{&spheres, &flat_triangles, &smooth_triangles})
     for (unsigned k = 0; k < waiting->count; ++k)
       make_surface(scene, *waiting->rays[k], *waiting->hits[k], *waiting->points[k]);
 }
