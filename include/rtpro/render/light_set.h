@@ -54,11 +54,11 @@ class LightSet {
   // Inline, the pick and a point light's sample with it: every path vertex asks.
   bool sample(const Vec3& point, float u_pick, Sample2D u, const TextureLookup* textures, std::uint32_t group,
               PathLightSample& out) const {
-    const std::optional<LightPicker::Pick> pick = picker(group).pick(point, u_pick);
-    if (!pick) return false;
-    if (!sample_path_light(lights_[pick->light], point, u, textures, out)) return false;
-    out.pdf *= pick->pmf;
-    out.light = pick->light;
+    LightPicker::Pick pick;
+    if (!picker(group).pick(point, u_pick, pick)) return false;
+    if (!sample_path_light(lights_[pick.light], point, u, textures, out)) return false;
+    out.pdf *= pick.pmf;
+    out.light = pick.light;
     return true;
   }
 
