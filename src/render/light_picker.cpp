@@ -33,8 +33,10 @@ LightPicker::LightPicker(LightSamplerKind kind, std::span<const std::uint32_t> m
   const double total = infinite_total + static_cast<double>(tree_.power());
   infinite_probability_ = total > 0.0 ? static_cast<float>(infinite_total / total) : 0.0f;
   if (members_.size() == 1 && !empty()) {
-    single_pick_ = pick_among(Vec3(0.0f), 0.0f);
-    single_ = true;
+    if (const std::optional<Pick> pick = pick_among(Vec3(0.0f), 0.0f)) {
+      single_pick_ = *pick;
+      single_ = true;
+    }
   }
 }
 

@@ -63,16 +63,6 @@ float LightSet::pick_probability(std::uint32_t index, const Vec3& point, std::ui
   return picker(group).probability(index, point);
 }
 
-bool LightSet::sample(const Vec3& point, float u_pick, Sample2D u, const TextureLookup* textures, std::uint32_t group,
-                      PathLightSample& out) const {
-  const std::optional<LightPicker::Pick> pick = picker(group).pick(point, u_pick);
-  if (!pick) return false;
-  if (!sample_path_light(lights_[pick->light], point, u, textures, out)) return false;
-  out.pdf *= pick->pmf;
-  out.light = pick->light;
-  return true;
-}
-
 namespace {
 
 std::uint64_t geometry_key(std::uint32_t instance, std::uint32_t geometry) {

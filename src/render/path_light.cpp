@@ -111,13 +111,7 @@ struct Sampler {
     return true;
   }
 
-  bool operator()(const PointLight& l) const {
-    const Vec3 to_light = l.position - from;
-    const float d2 = dot(to_light, to_light);
-    if (!(d2 > 0.0f)) return false;
-    const float d = std::sqrt(d2);
-    return found(to_light / d, d, l.radiance / d2, 1.0f, true);
-  }
+  bool operator()(const PointLight& l) const { return sample_point_light(l, from, out); }
   bool operator()(const SpotLight& l) const {
     const Vec3 to_light = l.position - from;
     const float d2 = dot(to_light, to_light);
@@ -238,8 +232,8 @@ std::optional<LightBounds> path_light_bounds(const PathLight& light, float power
   return std::visit(Bounds{power}, light);
 }
 
-bool sample_path_light(const PathLight& light, const Vec3& from, Sample2D u, const TextureLookup* textures,
-                       PathLightSample& out) {
+bool sample_path_light_of_any_kind(const PathLight& light, const Vec3& from, Sample2D u, const TextureLookup* textures,
+                                   PathLightSample& out) {
   return std::visit(Sampler{from, u, textures, out}, light);
 }
 

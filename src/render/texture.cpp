@@ -28,7 +28,12 @@ int checker_parity(const CheckerTexture& checker, const Vec3& position) {
 
 }  // namespace
 
-Color evaluate(const ColorTexture& texture, const SurfacePoint& point, const TextureLookup* images) {
+namespace {
+
+// Every kind of colour texture. Out of line: evaluate's test for a constant colour then needs no
+// stack frame.
+[[gnu::noinline]] Color evaluate_any_kind(const ColorTexture& texture, const SurfacePoint& point,
+                                          const TextureLookup* images) {
   return std::visit(
       Overloaded{[](const Color& color) { return color; },
                  [&](const CheckerTexture& checker) {
@@ -36,6 +41,14 @@ Color evaluate(const ColorTexture& texture, const SurfacePoint& point, const Tex
                  },
                  [&](const ImageTexture& image) { return evaluate(image, point.tex_u, point.tex_v, images); }},
       texture);
+}
+
+}  // namespace
+
+Color evaluate(const ColorTexture& texture, const SurfacePoint& point, const TextureLookup* images) {
+  // A constant colour, what most materials have, before the dispatch.
+  if (const Color* color = std::get_if<Color>(&texture)) return *color;
+  return evaluate_any_kind(texture, point, images);
 }
 
 TexCoord sphere_texture_coordinates(const Vec3& n) {

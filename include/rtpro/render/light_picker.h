@@ -34,8 +34,19 @@ class LightPicker {
   };
   // u in [0, 1). Nothing when no light can reach `point`.
   std::optional<Pick> pick(const Vec3& point, float u) const {
-    if (single_) return single_pick_;
-    return pick_among(point, u);
+    Pick p;
+    return pick(point, u, p) ? std::optional<Pick>(p) : std::nullopt;
+  }
+  // The same into `out` (left as it was when there is none), for the path integrator's loop: a
+  // returned optional went through the stack.
+  bool pick(const Vec3& point, float u, Pick& out) const {
+    if (single_) {
+      out = single_pick_;
+      return true;
+    }
+    const std::optional<Pick> p = pick_among(point, u);
+    if (p) out = *p;
+    return p.has_value();
   }
   // The probability pick() chooses light `light` (the set's index) at `point`; 0 for lights it
   // does not hold.
@@ -60,7 +71,7 @@ class LightPicker {
   // one entry, the split 0 or 1), so it is made once, and a scene lit by one light pays nothing
   // per vertex to pick it.
   bool single_ = false;
-  std::optional<Pick> single_pick_;
+  Pick single_pick_{};
 };
 
 }  // namespace rtpro

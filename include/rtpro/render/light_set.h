@@ -51,8 +51,16 @@ class LightSet {
     return sample(point, u_pick, u, textures, group, s) ? std::optional<PathLightSample>(s) : std::nullopt;
   }
   // The same into `out` (its fields undefined when there is none), for the path integrator's loop.
+  // Inline, the pick and a point light's sample with it: every path vertex asks.
   bool sample(const Vec3& point, float u_pick, Sample2D u, const TextureLookup* textures, std::uint32_t group,
-              PathLightSample& out) const;
+              PathLightSample& out) const {
+    LightPicker::Pick pick;
+    if (!picker(group).pick(point, u_pick, pick)) return false;
+    if (!sample_path_light(lights_[pick.light], point, u, textures, out)) return false;
+    out.pdf *= pick.pmf;
+    out.light = pick.light;
+    return true;
+  }
 
   // The light that an emissive surface hit is (kInvalidId when it is not sampled).
   std::uint32_t light_of_hit(const Hit& hit) const;

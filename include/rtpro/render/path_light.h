@@ -11,6 +11,7 @@
 #include "rtpro/scene/render_scene.h"
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <variant>
@@ -65,10 +66,34 @@ float path_light_power(const PathLight& light, float scene_radius);
 // Where the light is and which way it shines, for the light tree; nothing for lights without a
 // position. `power` is path_light_power's.
 std::optional<LightBounds> path_light_bounds(const PathLight& light, float power);
+// A point light seen from `from`, as sample_path_light samples one: into `out` (not `light`);
+// false when `from` is at the light.
+inline bool sample_point_light(const PointLight& light, const Vec3& from, PathLightSample& out) {
+  const Vec3 to_light = light.position - from;
+  const float d2 = dot(to_light, to_light);
+  if (!(d2 > 0.0f)) return false;
+  const float d = std::sqrt(d2);
+  out.direction = to_light / d;
+  out.distance = d;
+  out.radiance = light.radiance / d2;
+  out.pdf = 1.0f;
+  out.delta = true;
+  return true;
+}
+
+// sample_path_light for a light of any kind, out of line.
+bool sample_path_light_of_any_kind(const PathLight& light, const Vec3& from, Sample2D u, const TextureLookup* textures,
+                                   PathLightSample& out);
+
 // A point of the light by `u`, seen from `from`, into `out` (its direction, distance, radiance,
 // pdf and whether it is a delta light; not `light`); false when the light sends nothing there.
-bool sample_path_light(const PathLight& light, const Vec3& from, Sample2D u, const TextureLookup* textures,
-                       PathLightSample& out);
+// Point lights inline: a scene lit by them samples one at every path vertex, and a point light's
+// sample costs less than a call.
+inline bool sample_path_light(const PathLight& light, const Vec3& from, Sample2D u, const TextureLookup* textures,
+                              PathLightSample& out) {
+  if (const auto* point = std::get_if<PointLight>(&light)) return sample_point_light(*point, from, out);
+  return sample_path_light_of_any_kind(light, from, u, textures, out);
+}
 // The solid-angle pdf of sample_path_light reaching `on_light` from `from`; 0 for delta lights.
 float path_light_pdf(const PathLight& light, const Vec3& from, const Vec3& on_light);
 // Whether camera and BSDF rays can meet the light itself (sphere and quad lights; the backend
