@@ -17,8 +17,4 @@ std::optional<BsdfSample> bsdf_sample(const Bsdf& bsdf, const Vec3& wo, float u_
   return std::visit([&](const auto& b) { return b.sample(wo, u_lobe, u); }, bsdf);
 }
 
-bool bsdf_is_delta(const Bsdf& bsdf) {
-  return std::visit([](const auto& b) { return b.is_delta(); }, bsdf);
-}
-
 }  // namespace rtpro

@@ -25,7 +25,10 @@ Color bsdf_eval(const Bsdf& bsdf, const Vec3& wo, const Vec3& wi);
 float bsdf_pdf(const Bsdf& bsdf, const Vec3& wo, const Vec3& wi);
 // A direction wi for wo: u_lobe chooses among lobes, u places the direction within one.
 std::optional<BsdfSample> bsdf_sample(const Bsdf& bsdf, const Vec3& wo, float u_lobe, Sample2D u);
-// True when every lobe is specular: sampling a light there can never be weighted in.
-bool bsdf_is_delta(const Bsdf& bsdf);
+// True when every lobe is specular: sampling a light there can never be weighted in. Inline: every
+// path vertex asks, and for most kinds the answer is a comparison or a constant.
+inline bool bsdf_is_delta(const Bsdf& bsdf) {
+  return std::visit([](const auto& b) { return b.is_delta(); }, bsdf);
+}
 
 }  // namespace rtpro
