@@ -53,10 +53,12 @@ constexpr std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t 
 
 std::uint32_t reverse_bits(std::uint32_t x);
 std::uint32_t nested_uniform_scramble(std::uint32_t x, std::uint32_t seed);
-// The second Sobol dimension of `index` (the first is reverse_bits(index)), and the same map
-// read and written bit-reversed: reverse_bits(sobol_second_dimension(reverse_bits(r))).
+// The second Sobol dimension of `index` (the first is reverse_bits(index)), and the same value
+// bit-reversed, the form the scrambles take it in: superset_sums(index) ==
+// reverse_bits(sobol_second_dimension(index)). Bit k of it is the xor of the bits of `index` at the
+// positions whose bits are a superset of k's.
 std::uint32_t sobol_second_dimension(std::uint32_t index);
-std::uint32_t reversed_sobol_second_dimension(std::uint32_t reversed_index);
+std::uint32_t superset_sums(std::uint32_t index);
 
 }  // namespace sobol_detail
 
