@@ -134,5 +134,43 @@ TEST(SobolSampler, DrawingManyKeysAtOnceIsDrawingEachKey) {
   }
 }
 
+// The one-pass batch of several dimensions into fields of records (the path integrator's vertex
+// samples): every value the single draw's, bit for bit, and nothing outside its field written.
+TEST(SobolSampler, DrawingManyDimensionsIntoRecordsIsDrawingEach) {
+  struct Record {
+    Sample2D a;
+    float single;
+    Sample2D b;
+    float untouched;
+  };
+  const SobolSampler sampler(0x5eed);
+  std::mt19937_64 rng(11);
+  for (const std::size_t count :
+       {std::size_t{0}, std::size_t{1}, std::size_t{7}, std::size_t{64}, std::size_t{65}, std::size_t{1000}}) {
+    std::vector<SampleKey> keys(count);
+    for (SampleKey& key : keys) {
+      key.pixel_key = rng() >> (rng() % 64);
+      key.sample_index = static_cast<int>(rng() % 4 == 0 ? rng() >> 33 : rng() % 256);
+    }
+    std::vector<Record> records(count, Record{{-1.0f, -1.0f}, -1.0f, {-1.0f, -1.0f}, -1.0f});
+    const SobolSampler::Draw<Sample2D> pairs[] = {{36, &records.data()->a, sizeof(Record)},
+                                                  {12, &records.data()->b, sizeof(Record)}};
+    const SobolSampler::Draw<float> singles[] = {{43, &records.data()->single, sizeof(Record)}};
+    sampler.sample(keys, pairs, singles);
+    const auto same = [](float a, float b) {
+      return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
+    };
+    for (std::size_t i = 0; i < count; ++i) {
+      const SampleKey& key = keys[i];
+      const Sample2D a = sampler.sample_2d(key.pixel_key, key.sample_index, 36);
+      const Sample2D b = sampler.sample_2d(key.pixel_key, key.sample_index, 12);
+      ASSERT_TRUE(same(records[i].a.x, a.x) && same(records[i].a.y, a.y)) << i << " of " << count;
+      ASSERT_TRUE(same(records[i].b.x, b.x) && same(records[i].b.y, b.y)) << i << " of " << count;
+      ASSERT_TRUE(same(records[i].single, sampler.sample_1d(key.pixel_key, key.sample_index, 43))) << i;
+      ASSERT_EQ(records[i].untouched, -1.0f);
+    }
+  }
+}
+
 }  // namespace sobol_sampler_test
 }  // namespace rtpro

@@ -11,6 +11,7 @@
 // dimension), with dimensions numbered as in render/sample_dimensions.h.
 #include "rtpro/render/sampler.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -33,6 +34,19 @@ class SobolSampler {
   float sample_1d(std::uint64_t pixel_key, int sample_index, int dimension) const;
   // sample_1d of each key into out[i], bit for bit, as the batch sample_2d.
   void sample_1d(std::span<const SampleKey> keys, int dimension, std::span<float> out) const;
+
+  // A dimension (pair, for T = Sample2D) that a batch draws, and where its values go: key i's at
+  // `first` advanced by i · `stride` bytes, so that one batch fills a field of an array of records.
+  template <class T>
+  struct Draw {
+    int dimension;
+    T* first;
+    std::size_t stride;
+  };
+  // sample_2d of each key for every pair and sample_1d for every single, bit for bit, into their
+  // Draw's elements: one pass over the keys, which hashes each key once for all the draws.
+  void sample(std::span<const SampleKey> keys, std::span<const Draw<Sample2D>> pairs,
+              std::span<const Draw<float>> singles) const;
 
  private:
   std::uint64_t seed_;
