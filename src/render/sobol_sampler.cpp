@@ -26,8 +26,8 @@ std::uint32_t nested_uniform_scramble(std::uint32_t x, std::uint32_t seed) {
 // Sobol's second dimension has the rows of Pascal's triangle mod 2 as direction numbers: index bit
 // i sets bit 31 − k of the value for every k with C(i, k) odd, i.e. (Lucas) every k whose bits are
 // a subset of i's. Read reversed, bit k of the value is thus the xor of the index bits at the
-// supersets of k, summed here one bit of the position at a time in five shift-and-xor steps, which
-// vectorise (the byte tables they replaced needed four loads a value).
+// supersets of k, summed here one bit of the position at a time: five shift-and-xor steps, which
+// vectorise where table lookups would need a load per byte and lane.
 std::uint32_t superset_sums(std::uint32_t index) {
   std::uint32_t x = index;
   x ^= (x >> 1) & 0x55555555u;
