@@ -216,6 +216,28 @@ void draw_vertex_samples(const Sampler& sampler, std::span<const SampleKey> keys
   for (std::size_t i = 0; i < n; ++i) ws.vertex_samples[i].roulette = ws.roulette_draws[i];
 }
 
+// The same for the Sobol sampler, which draws all of a vertex's dimensions in one pass over the
+// keys (hashing each key once) and writes them straight into the VertexSamples.
+void draw_vertex_samples(const SobolSampler& sampler, std::span<const SampleKey> keys, int bounce, PathWorkspace& ws) {
+  const std::size_t n = ws.paths.size();
+  ws.path_keys.resize(n);
+  for (std::size_t i = 0; i < n; ++i) ws.path_keys[i] = keys[ws.paths[i].sample];
+  ws.vertex_samples.resize(n);
+  VertexSamples* const first = ws.vertex_samples.data();
+  const auto pair = [&](int offset, Sample2D VertexSamples::*field) {
+    return SobolSampler::Draw<Sample2D>{sample_dimension::at_bounce(bounce, offset), &(first->*field),
+                                        sizeof(VertexSamples)};
+  };
+  // The light's pick and the BSDF's lobe choice as one 2D sample: one draw instead of two.
+  const SobolSampler::Draw<Sample2D> pairs[] = {pair(path_dimension::kChoices, &VertexSamples::choices),
+                                                pair(path_dimension::kLightPoint, &VertexSamples::light_point),
+                                                pair(path_dimension::kBsdfDirection, &VertexSamples::bsdf_direction)};
+  const SobolSampler::Draw<float> roulette[] = {
+      {sample_dimension::at_bounce(bounce, path_dimension::kRoulette), &first->roulette, sizeof(VertexSamples)}};
+  sampler.sample(ws.path_keys, pairs,
+                 bounce < kRouletteStart ? std::span<const SobolSampler::Draw<float>>() : roulette);
+}
+
 template <class Sampler>
 void trace(const RenderScene& scene, const Backend& backend, const LightSet& lights, const Sampler& sampler,
            std::span<const Ray> camera_rays, std::span<const SampleKey> keys, std::span<SampleResult> results,

@@ -4,8 +4,7 @@
 #include "rtpro/core/random.h"
 
 #include <algorithm>
-
-#include <array>
+#include <cstddef>
 
 namespace rtpro {
 
@@ -24,62 +23,22 @@ std::uint32_t nested_uniform_scramble(std::uint32_t x, std::uint32_t seed) {
   return reverse_bits(laine_karras_permutation(reverse_bits(x), seed));
 }
 
-namespace {
-
-// Direction numbers of the second Sobol dimension: the rows of Pascal's triangle mod 2 from the
-// top bit down, each row the one before xor itself shifted by one.
-constexpr std::array<std::uint32_t, 32> second_dimension_directions() {
-  std::array<std::uint32_t, 32> v{};
-  v[0] = 0x80000000u;
-  for (int i = 1; i < 32; ++i) v[i] = v[i - 1] ^ (v[i - 1] >> 1);
-  return v;
+// Sobol's second dimension has the rows of Pascal's triangle mod 2 as direction numbers: index bit
+// i sets bit 31 − k of the value for every k with C(i, k) odd, i.e. (Lucas) every k whose bits are
+// a subset of i's. Read reversed, bit k of the value is thus the xor of the index bits at the
+// supersets of k, summed here one bit of the position at a time: five shift-and-xor steps, which
+// vectorise where table lookups would need a load per byte and lane.
+std::uint32_t superset_sums(std::uint32_t index) {
+  std::uint32_t x = index;
+  x ^= (x >> 1) & 0x55555555u;
+  x ^= (x >> 2) & 0x33333333u;
+  x ^= (x >> 4) & 0x0f0f0f0fu;
+  x ^= (x >> 8) & 0x00ff00ffu;
+  x ^= x >> 16;
+  return x;
 }
 
-// A linear map over GF(2) applied a byte at a time: table[b][v] is the xor of the images of the
-// bits set in v, for byte b of the input. Four lookups instead of up to 32 conditional xors (the
-// scrambled indices have high bits set).
-using ByteTables = std::array<std::array<std::uint32_t, 256>, 4>;
-using BitImages = std::array<std::uint32_t, 32>;  // the image of each input bit
-constexpr ByteTables byte_tables(const BitImages& image_of_bit) {
-  ByteTables tables{};
-  for (std::size_t byte = 0; byte < 4; ++byte)
-    for (std::size_t value = 1; value < 256; ++value) {
-      // The value without its lowest set bit is already in the table.
-      const std::size_t lowest = static_cast<std::size_t>(__builtin_ctz(static_cast<unsigned>(value)));
-      tables[byte][value] = tables[byte][value & (value - 1)] ^ image_of_bit[byte * 8 + lowest];
-    }
-  return tables;
-}
-
-constexpr std::uint32_t apply(const ByteTables& t, std::uint32_t x) {
-  return t[0][x & 0xffu] ^ t[1][x >> 8 & 0xffu] ^ t[2][x >> 16 & 0xffu] ^ t[3][x >> 24];
-}
-
-constexpr std::uint32_t reversed(std::uint32_t x) {
-  std::uint32_t r = 0;
-  for (int i = 0; i < 32; ++i) r |= (x >> i & 1u) << (31 - i);
-  return r;
-}
-
-// The second dimension read and written bit-reversed: reverse ∘ sobol ∘ reverse, the form the
-// scrambles below take it in. Bit b of the input is bit 31 − b of the index.
-constexpr BitImages reversed_directions() {
-  const BitImages directions = second_dimension_directions();
-  BitImages images{};
-  for (std::size_t bit = 0; bit < 32; ++bit) images[bit] = reversed(directions[31 - bit]);
-  return images;
-}
-
-constexpr ByteTables kSecondDimension = byte_tables(second_dimension_directions());
-constexpr ByteTables kSecondDimensionReversed = byte_tables(reversed_directions());
-
-}  // namespace
-
-std::uint32_t sobol_second_dimension(std::uint32_t index) { return apply(kSecondDimension, index); }
-
-std::uint32_t reversed_sobol_second_dimension(std::uint32_t reversed_index) {
-  return apply(kSecondDimensionReversed, reversed_index);
-}
+std::uint32_t sobol_second_dimension(std::uint32_t index) { return reverse_bits(superset_sums(index)); }
 
 }  // namespace sobol_detail
 
@@ -90,93 +49,128 @@ constexpr float to_unit(std::uint32_t bits) {
 }
 
 // Per pixel and dimension: the scramble of the sample order and of each coordinate, from one
-// SplitMix finalisation of the three inputs.
+// SplitMix finalisation of the seed, the pixel and the dimension, each multiplied by a constant of
+// its own and xor-ed together. The pixel's and the dimension's parts are separate so that a batch
+// works a key's part out once for all the dimensions it draws.
 struct Scrambles {
   std::uint32_t order, x, y;
 };
 
-Scrambles scrambles(std::uint64_t seed, std::uint64_t pixel_key, int dimension) {
-  const std::uint64_t h = mix64(seed ^ (pixel_key * 0x9e3779b97f4a7c15ULL) ^
-                                (static_cast<std::uint64_t>(dimension) * 0xd1b54a32d192ed03ULL));
+std::uint64_t pixel_hash(std::uint64_t seed, std::uint64_t pixel_key) {
+  return seed ^ (pixel_key * 0x9e3779b97f4a7c15ULL);
+}
+
+std::uint64_t dimension_hash(int dimension) { return static_cast<std::uint64_t>(dimension) * 0xd1b54a32d192ed03ULL; }
+
+Scrambles scrambles(std::uint64_t pixel_hash, std::uint64_t dimension_hash) {
+  const std::uint64_t h = mix64(pixel_hash ^ dimension_hash);
   const std::uint64_t h2 = (h ^ (h >> 29)) * 0xbf58476d1ce4e5b9ULL;
   return {static_cast<std::uint32_t>(h), static_cast<std::uint32_t>(h >> 32), static_cast<std::uint32_t>(h2 >> 32)};
 }
 
-}  // namespace
-
 // With nus(v, s) = reverse(LK(reverse(v), s)) the nested uniform scramble, a sample is
 //   index = nus(sample, order),  x = nus(reverse(index), sx),  y = nus(sobol2(index), sy),
-// computed here with the reverses that cancel left out: r = LK(reverse(sample), order) is
-// reverse(index), x = reverse(LK(index, sx)), y = reverse(LK(reverse(sobol2(reverse(r))), sy)).
-Sample2D SobolSampler::sample_2d(std::uint64_t pixel_key, int sample_index, int dimension) const {
+// computed here with the reverses that cancel left out: index = reverse(LK(reverse(sample), order)),
+// x = reverse(LK(index, sx)), and as reverse(sobol2(index)) is the superset sums of index,
+// y = reverse(LK(superset_sums(index), sy)). A 1D value is the x of its dimension's scrambles.
+std::uint32_t scrambled_index(std::uint32_t reversed_sample, std::uint32_t order) {
   using namespace sobol_detail;
-  const Scrambles s = scrambles(seed_, pixel_key, dimension);
-  const std::uint32_t r = laine_karras_permutation(reverse_bits(static_cast<std::uint32_t>(sample_index)), s.order);
-  const std::uint32_t index = reverse_bits(r);
-  return {to_unit(reverse_bits(laine_karras_permutation(index, s.x))),
-          to_unit(reverse_bits(laine_karras_permutation(reversed_sobol_second_dimension(r), s.y)))};
+  return reverse_bits(laine_karras_permutation(reversed_sample, order));
+}
+
+float scrambled_x(std::uint32_t index, std::uint32_t scramble) {
+  using namespace sobol_detail;
+  return to_unit(reverse_bits(laine_karras_permutation(index, scramble)));
+}
+
+float scrambled_y(std::uint32_t index, std::uint32_t scramble) {
+  using namespace sobol_detail;
+  return to_unit(reverse_bits(laine_karras_permutation(superset_sums(index), scramble)));
+}
+
+std::uint32_t reversed_sample(int sample_index) {
+  return sobol_detail::reverse_bits(static_cast<std::uint32_t>(sample_index));
+}
+
+}  // namespace
+
+Sample2D SobolSampler::sample_2d(std::uint64_t pixel_key, int sample_index, int dimension) const {
+  const Scrambles s = scrambles(pixel_hash(seed_, pixel_key), dimension_hash(dimension));
+  const std::uint32_t index = scrambled_index(reversed_sample(sample_index), s.order);
+  return {scrambled_x(index, s.x), scrambled_y(index, s.y)};
+}
+
+float SobolSampler::sample_1d(std::uint64_t pixel_key, int sample_index, int dimension) const {
+  const Scrambles s = scrambles(pixel_hash(seed_, pixel_key), dimension_hash(dimension));
+  return scrambled_x(scrambled_index(reversed_sample(sample_index), s.order), s.x);
 }
 
 namespace {
 
-// SobolSampler::sample_2d over a run of keys. Written as plain loops over arrays, each step for
-// every key before the next step, so that the AVX2 clone vectorises the 32-bit hashes eight keys
-// at a time; integer operations give the same bits in any encoding, and to_unit's conversion is
-// exact, so both clones compute sample_2d's values.
+// SobolSampler::sample over a run of keys, keys[first, first + count). Written as plain loops over
+// arrays, each step for every key before the next step, so that the AVX2 clone vectorises the
+// hashes, four keys at a time in 64 bits and eight in 32; integer operations give the same bits in
+// any encoding, and to_unit's conversion is exact, so both clones compute sample_2d's and
+// sample_1d's values. The keys' own hashes are worked out once for all the draws.
 constexpr std::size_t kRun = 64;
 
-RTPRO_AVX2_CLONES
-void sample_2d_run(std::uint64_t seed, const SampleKey* keys, std::size_t count, int dimension, Sample2D* out) {
-  using namespace sobol_detail;
-  std::uint32_t order[kRun], sx[kRun], sy[kRun], r[kRun], second[kRun];
-  for (std::size_t i = 0; i < count; ++i) {
-    const Scrambles s = scrambles(seed, keys[i].pixel_key, dimension);
-    order[i] = s.order;
-    sx[i] = s.x;
-    sy[i] = s.y;
-  }
-  for (std::size_t i = 0; i < count; ++i)
-    r[i] = laine_karras_permutation(reverse_bits(static_cast<std::uint32_t>(keys[i].sample_index)), order[i]);
-  for (std::size_t i = 0; i < count; ++i) second[i] = reversed_sobol_second_dimension(r[i]);
-  for (std::size_t i = 0; i < count; ++i) {
-    out[i].x = to_unit(reverse_bits(laine_karras_permutation(reverse_bits(r[i]), sx[i])));
-    out[i].y = to_unit(reverse_bits(laine_karras_permutation(second[i], sy[i])));
-  }
+template <class T>
+T& element(const SobolSampler::Draw<T>& draw, std::size_t i) {
+  return *reinterpret_cast<T*>(reinterpret_cast<std::byte*>(draw.first) + i * draw.stride);
 }
 
 RTPRO_AVX2_CLONES
-void sample_1d_run(std::uint64_t seed, const SampleKey* keys, std::size_t count, int dimension, float* out) {
-  using namespace sobol_detail;
-  std::uint32_t order[kRun], sx[kRun];
+void sample_run(std::uint64_t seed, std::span<const SampleKey> keys, std::size_t first, std::size_t count,
+                std::span<const SobolSampler::Draw<Sample2D>> pairs,
+                std::span<const SobolSampler::Draw<float>> singles) {
+  std::uint64_t pixel[kRun];
+  std::uint32_t reversed[kRun];
   for (std::size_t i = 0; i < count; ++i) {
-    const Scrambles s = scrambles(seed, keys[i].pixel_key, dimension);
-    order[i] = s.order;
-    sx[i] = s.x;
+    pixel[i] = pixel_hash(seed, keys[first + i].pixel_key);
+    reversed[i] = reversed_sample(keys[first + i].sample_index);
   }
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::uint32_t r =
-        laine_karras_permutation(reverse_bits(static_cast<std::uint32_t>(keys[i].sample_index)), order[i]);
-    out[i] = to_unit(reverse_bits(laine_karras_permutation(reverse_bits(r), sx[i])));
+  std::uint32_t order[kRun], sx[kRun], sy[kRun];
+  for (const SobolSampler::Draw<Sample2D>& pair : pairs) {
+    const std::uint64_t dimension = dimension_hash(pair.dimension);
+    for (std::size_t i = 0; i < count; ++i) {
+      const Scrambles s = scrambles(pixel[i], dimension);
+      order[i] = s.order;
+      sx[i] = s.x;
+      sy[i] = s.y;
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::uint32_t index = scrambled_index(reversed[i], order[i]);
+      element(pair, first + i) = {scrambled_x(index, sx[i]), scrambled_y(index, sy[i])};
+    }
+  }
+  for (const SobolSampler::Draw<float>& single : singles) {
+    const std::uint64_t dimension = dimension_hash(single.dimension);
+    for (std::size_t i = 0; i < count; ++i) {
+      const Scrambles s = scrambles(pixel[i], dimension);
+      order[i] = s.order;
+      sx[i] = s.x;
+    }
+    for (std::size_t i = 0; i < count; ++i)
+      element(single, first + i) = scrambled_x(scrambled_index(reversed[i], order[i]), sx[i]);
   }
 }
 
 }  // namespace
 
-void SobolSampler::sample_1d(std::span<const SampleKey> keys, int dimension, std::span<float> out) const {
-  for (std::size_t start = 0; start < keys.size(); start += kRun)
-    sample_1d_run(seed_, keys.data() + start, std::min(kRun, keys.size() - start), dimension, out.data() + start);
+void SobolSampler::sample(std::span<const SampleKey> keys, std::span<const Draw<Sample2D>> pairs,
+                          std::span<const Draw<float>> singles) const {
+  for (std::size_t first = 0; first < keys.size(); first += kRun)
+    sample_run(seed_, keys, first, std::min(kRun, keys.size() - first), pairs, singles);
 }
 
 void SobolSampler::sample_2d(std::span<const SampleKey> keys, int dimension, std::span<Sample2D> out) const {
-  for (std::size_t start = 0; start < keys.size(); start += kRun)
-    sample_2d_run(seed_, keys.data() + start, std::min(kRun, keys.size() - start), dimension, out.data() + start);
+  const Draw<Sample2D> pair{dimension, out.data(), sizeof(Sample2D)};
+  sample(keys, {&pair, 1}, {});
 }
 
-float SobolSampler::sample_1d(std::uint64_t pixel_key, int sample_index, int dimension) const {
-  using namespace sobol_detail;
-  const Scrambles s = scrambles(seed_, pixel_key, dimension);
-  const std::uint32_t r = laine_karras_permutation(reverse_bits(static_cast<std::uint32_t>(sample_index)), s.order);
-  return to_unit(reverse_bits(laine_karras_permutation(reverse_bits(r), s.x)));
+void SobolSampler::sample_1d(std::span<const SampleKey> keys, int dimension, std::span<float> out) const {
+  const Draw<float> single{dimension, out.data(), sizeof(float)};
+  sample(keys, {}, {&single, 1});
 }
 
 }  // namespace rtpro

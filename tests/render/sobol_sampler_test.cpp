@@ -24,8 +24,24 @@ TEST(SobolSampler, FirstTwoDimensionsAreTheSobolMatrices) {
   EXPECT_EQ(sobol_second_dimension(2), 0xc0000000u);
   EXPECT_EQ(sobol_second_dimension(3), 0x40000000u);
   EXPECT_EQ(sobol_second_dimension(4), 0xa0000000u);
-  for (std::uint32_t r : {0u, 1u, 0x80000000u, 0x12345678u, 0xdeadbeefu, 0xffffffffu})
-    EXPECT_EQ(reversed_sobol_second_dimension(r), reverse_bits(sobol_second_dimension(reverse_bits(r)))) << r;
+  // Against the definition: the xor of the direction numbers (Pascal's triangle mod 2, one row per
+  // index bit) of the bits set in the index. Both maps are linear over GF(2), so agreeing on the
+  // 32 unit vectors they agree everywhere; the random indices check that linearity.
+  std::uint32_t directions[32];
+  directions[0] = 0x80000000u;
+  for (int i = 1; i < 32; ++i) directions[i] = directions[i - 1] ^ (directions[i - 1] >> 1);
+  const auto by_definition = [&](std::uint32_t index) {
+    std::uint32_t value = 0;
+    for (int i = 0; i < 32; ++i)
+      if (index >> i & 1u) value ^= directions[i];
+    return value;
+  };
+  std::mt19937 rng(3);
+  for (int i = 0; i < 1000; ++i) {
+    const std::uint32_t index = i < 32 ? 1u << i : static_cast<std::uint32_t>(rng());
+    EXPECT_EQ(sobol_second_dimension(index), by_definition(index)) << index;
+    EXPECT_EQ(superset_sums(index), reverse_bits(by_definition(index))) << index;
+  }
   // The Owen scramble is a bijection on bytes' worth of values (checked on the low 12 bits).
   std::set<std::uint32_t> seen;
   for (std::uint32_t x = 0; x < 4096; ++x) seen.insert(nested_uniform_scramble(x, 0x9e3779b9u) & 0xfffu);
@@ -114,6 +130,44 @@ TEST(SobolSampler, DrawingManyKeysAtOnceIsDrawingEachKey) {
         ASSERT_EQ(std::bit_cast<std::uint32_t>(many_1d[i]), std::bit_cast<std::uint32_t>(one_1d))
             << i << " of " << count;
       }
+    }
+  }
+}
+
+// The one-pass batch of several dimensions into fields of records (the path integrator's vertex
+// samples): every value the single draw's, bit for bit, and nothing outside its field written.
+TEST(SobolSampler, DrawingManyDimensionsIntoRecordsIsDrawingEach) {
+  struct Record {
+    Sample2D a;
+    float single;
+    Sample2D b;
+    float untouched;
+  };
+  const SobolSampler sampler(0x5eed);
+  std::mt19937_64 rng(11);
+  for (const std::size_t count :
+       {std::size_t{0}, std::size_t{1}, std::size_t{7}, std::size_t{64}, std::size_t{65}, std::size_t{1000}}) {
+    std::vector<SampleKey> keys(count);
+    for (SampleKey& key : keys) {
+      key.pixel_key = rng() >> (rng() % 64);
+      key.sample_index = static_cast<int>(rng() % 4 == 0 ? rng() >> 33 : rng() % 256);
+    }
+    std::vector<Record> records(count, Record{{-1.0f, -1.0f}, -1.0f, {-1.0f, -1.0f}, -1.0f});
+    const SobolSampler::Draw<Sample2D> pairs[] = {{36, &records.data()->a, sizeof(Record)},
+                                                  {12, &records.data()->b, sizeof(Record)}};
+    const SobolSampler::Draw<float> singles[] = {{43, &records.data()->single, sizeof(Record)}};
+    sampler.sample(keys, pairs, singles);
+    const auto same = [](float a, float b) {
+      return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
+    };
+    for (std::size_t i = 0; i < count; ++i) {
+      const SampleKey& key = keys[i];
+      const Sample2D a = sampler.sample_2d(key.pixel_key, key.sample_index, 36);
+      const Sample2D b = sampler.sample_2d(key.pixel_key, key.sample_index, 12);
+      ASSERT_TRUE(same(records[i].a.x, a.x) && same(records[i].a.y, a.y)) << i << " of " << count;
+      ASSERT_TRUE(same(records[i].b.x, b.x) && same(records[i].b.y, b.y)) << i << " of " << count;
+      ASSERT_TRUE(same(records[i].single, sampler.sample_1d(key.pixel_key, key.sample_index, 43))) << i;
+      ASSERT_EQ(records[i].untouched, -1.0f);
     }
   }
 }

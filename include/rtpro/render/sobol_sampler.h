@@ -11,6 +11,7 @@
 // dimension), with dimensions numbered as in render/sample_dimensions.h.
 #include "rtpro/render/sampler.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -34,6 +35,19 @@ class SobolSampler {
   // sample_1d of each key into out[i], bit for bit, as the batch sample_2d.
   void sample_1d(std::span<const SampleKey> keys, int dimension, std::span<float> out) const;
 
+  // A dimension (pair, for T = Sample2D) that a batch draws, and where its values go: key i's at
+  // `first` advanced by i · `stride` bytes, so that one batch fills a field of an array of records.
+  template <class T>
+  struct Draw {
+    int dimension;
+    T* first;
+    std::size_t stride;
+  };
+  // sample_2d of each key for every pair and sample_1d for every single, bit for bit, into their
+  // Draw's elements: one pass over the keys, which hashes each key once for all the draws.
+  void sample(std::span<const SampleKey> keys, std::span<const Draw<Sample2D>> pairs,
+              std::span<const Draw<float>> singles) const;
+
  private:
   std::uint64_t seed_;
 };
@@ -53,10 +67,12 @@ constexpr std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t 
 
 std::uint32_t reverse_bits(std::uint32_t x);
 std::uint32_t nested_uniform_scramble(std::uint32_t x, std::uint32_t seed);
-// The second Sobol dimension of `index` (the first is reverse_bits(index)), and the same map
-// read and written bit-reversed: reverse_bits(sobol_second_dimension(reverse_bits(r))).
+// The second Sobol dimension of `index` (the first is reverse_bits(index)), and the same value
+// bit-reversed, the form the scrambles take it in: superset_sums(index) ==
+// reverse_bits(sobol_second_dimension(index)). Bit k of it is the xor of the bits of `index` at the
+// positions whose bits are a superset of k's.
 std::uint32_t sobol_second_dimension(std::uint32_t index);
-std::uint32_t reversed_sobol_second_dimension(std::uint32_t reversed_index);
+std::uint32_t superset_sums(std::uint32_t index);
 
 }  // namespace sobol_detail
 
