@@ -253,8 +253,11 @@ TEST_F(EmbreeBackendTest, ConcurrentBuildsKeepTheirOwnFailuresAndBytes) {
   for (std::thread& t : threads) t.join();
   for (int i = 0; i < kThreads; ++i) {
     EXPECT_EQ(failures[i], i % 2) << i;
+    // Embree hands each thread that joins a build its own allocation blocks, so the count moves by
+    // a block or two with how many of TBB's workers a loaded machine lends the build (1.8% seen
+    // under load); another build's bytes counted in would double it.
     if (i % 2 == 0) {
-      EXPECT_EQ(bytes[i], alone) << i;
+      EXPECT_NEAR(static_cast<double>(bytes[i]), static_cast<double>(alone), 0.05 * static_cast<double>(alone)) << i;
     }
   }
 }
