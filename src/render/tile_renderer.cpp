@@ -52,16 +52,31 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
   ws.sample_keys.resize(ws.camera_rays.size());
   ws.pixel_offsets.resize(static_cast<std::size_t>(spp));
   PixelOffset* offsets = ws.pixel_offsets.data();
+  const auto key_of_pixel = [&](std::size_t i) {
+    const std::size_t p = pixels[i];
+    return static_cast<std::uint64_t>(tile.y0 + static_cast<int>(p / tile_width)) * image_width +
+           static_cast<std::uint64_t>(tile.x0 + static_cast<int>(p % tile_width));
+  };
+  if (scene_.render.sampler == SamplerKind::kSobol) {
+    // Every sample's pixel offset in one batch (the same values as pixel_offset, bit for bit),
+    // whose hashes run side by side.
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < pixel_count; ++i)
+      for (int s = range.begin; s < range.end; ++s) ws.sample_keys[k++] = {key_of_pixel(i), s};
+    ws.sobol_offsets.resize(ws.sample_keys.size());
+    sobol_.sample_2d(ws.sample_keys, sample_dimension::kPixel, ws.sobol_offsets);
+  }
   std::size_t next = 0;
   for (std::size_t i = 0; i < pixel_count; ++i) {
     const std::size_t p = pixels[i];
     const int x = tile.x0 + static_cast<int>(p % tile_width);
     const int y = tile.y0 + static_cast<int>(p / tile_width);
-    const std::uint64_t pixel_key = static_cast<std::uint64_t>(y) * image_width + static_cast<std::uint64_t>(x);
+    const std::uint64_t pixel_key = key_of_pixel(i);
     switch (scene_.render.sampler) {
       case SamplerKind::kStratified: sampler_.pixel_offsets(pixel_key, offsets); break;
       case SamplerKind::kSobol:
-        for (int s = range.begin; s < range.end; ++s) offsets[s] = sobol_.pixel_offset(pixel_key, s);
+        for (int s = range.begin; s < range.end; ++s)
+          offsets[s] = ws.sobol_offsets[next + static_cast<std::size_t>(s - range.begin)];
         break;
     }
     int s = range.begin;

@@ -26,6 +26,7 @@ class TileRenderer {
     std::vector<Ray> camera_rays;
     std::vector<SampleKey> sample_keys;
     std::vector<PixelOffset> pixel_offsets;  // one pixel's, spp of them
+    std::vector<PixelOffset> sobol_offsets;  // every camera sample's, drawn in one batch
     std::vector<SampleResult> samples;
     std::vector<std::uint32_t> pixels;  // the tile's pixels that take part in the pass
     ShadingWorkspace shading;
