@@ -221,6 +221,7 @@ void draw_vertex_samples(const Sampler& sampler, std::span<const SampleKey> keys
 // keys (hashing each key once) and writes them straight into the VertexSamples.
 void draw_vertex_samples(const SobolSampler& sampler, std::span<const SampleKey> keys, int bounce, PathWorkspace& ws) {
   const std::size_t n = ws.paths.size();
+  if (n == 0) return;  // the draws below point at the first record
   ws.path_keys.resize(n);
   for (std::size_t i = 0; i < n; ++i) ws.path_keys[i] = keys[ws.paths[i].sample];
   ws.vertex_samples.resize(n);

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <bit>
 #include <cstdint>
 #include <random>
@@ -152,7 +154,8 @@ TEST(SobolSampler, DrawingManyDimensionsIntoRecordsIsDrawingEach) {
       key.pixel_key = rng() >> (rng() % 64);
       key.sample_index = static_cast<int>(rng() % 4 == 0 ? rng() >> 33 : rng() % 256);
     }
-    std::vector<Record> records(count, Record{{-1.0f, -1.0f}, -1.0f, {-1.0f, -1.0f}, -1.0f});
+    // One record at least, so the draws point at one even for no keys (which must write nothing).
+    std::vector<Record> records(std::max<std::size_t>(count, 1), Record{{-1.0f, -1.0f}, -1.0f, {-1.0f, -1.0f}, -1.0f});
     const SobolSampler::Draw<Sample2D> pairs[] = {{36, &records.data()->a, sizeof(Record)},
                                                   {12, &records.data()->b, sizeof(Record)}};
     const SobolSampler::Draw<float> singles[] = {{43, &records.data()->single, sizeof(Record)}};
@@ -169,6 +172,7 @@ TEST(SobolSampler, DrawingManyDimensionsIntoRecordsIsDrawingEach) {
       ASSERT_TRUE(same(records[i].single, sampler.sample_1d(key.pixel_key, key.sample_index, 43))) << i;
       ASSERT_EQ(records[i].untouched, -1.0f);
     }
+    if (count == 0) EXPECT_EQ(records[0].a.x, -1.0f);
   }
 }
 
