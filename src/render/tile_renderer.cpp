@@ -57,12 +57,12 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
     return static_cast<std::uint64_t>(tile.y0 + static_cast<int>(p / tile_width)) * image_width +
            static_cast<std::uint64_t>(tile.x0 + static_cast<int>(p % tile_width));
   };
+  std::size_t key = 0;
+  for (std::size_t i = 0; i < pixel_count; ++i)
+    for (int s = range.begin; s < range.end; ++s) ws.sample_keys[key++] = {key_of_pixel(i), s};
   if (scene_.render.sampler == SamplerKind::kSobol) {
     // Every sample's pixel offset in one batch (the same values as pixel_offset, bit for bit),
     // whose hashes run side by side.
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < pixel_count; ++i)
-      for (int s = range.begin; s < range.end; ++s) ws.sample_keys[k++] = {key_of_pixel(i), s};
     ws.sobol_offsets.resize(ws.sample_keys.size());
     sobol_.sample_2d(ws.sample_keys, sample_dimension::kPixel, ws.sobol_offsets);
   }
@@ -86,7 +86,6 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
       for (int k = 0; k < 4; ++k) {
         px[k] = static_cast<float>(x) + offsets[s + k].x;
         py[k] = static_cast<float>(y) + offsets[s + k].y;
-        ws.sample_keys[next + static_cast<std::size_t>(k)] = {pixel_key, s + k};
       }
       pinhole_rays4(scene_.camera, px, py, &ws.camera_rays[next]);
     }
@@ -98,7 +97,6 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
                                 : sobol_.sample_2d(pixel_key, s, sample_dimension::kLens);
       copy_ray(camera_ray(scene_.camera, static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y, lens),
                ws.camera_rays[next]);
-      ws.sample_keys[next] = {pixel_key, s};
     }
   }
   ws.samples.resize(ws.camera_rays.size());
