@@ -15,7 +15,7 @@ namespace {
 
 class NativeBackend final : public Backend {
  public:
-  NativeBackend(const RenderScene& scene) : packets_(sphere_lanes_vectorised()), bvhs_(scene) {}
+  NativeBackend(const RenderScene& scene) : packets_(sphere_lanes_vectorised()), bvhs_(scene, packets_) {}
 
   std::string_view name() const override { return "native"; }
   using Backend::intersect;

@@ -1,6 +1,7 @@
 #include "native_traversal.h"
 
 #include "backend_shapes.h"
+#include "triangle_blocks.h"
 #include "rtpro/core/overloaded.h"
 
 #include <immintrin.h>
@@ -60,8 +61,8 @@ Ray to_object_space(const Instance& instance, const Ray& ray, float tfar) {
           tfar};
 }
 
-// Visits every leaf reference whose node box the ray enters, nearest child first;
-// `visit(ref)` returns false to stop early. `tmax` is re-read after each leaf.
+// Visits every leaf whose node box the ray enters, nearest child first: `visit(leaf, node_index)`
+// returns false to stop early. `tmax` is re-read after each leaf.
 template <typename Visit>
 void traverse(const Bvh& bvh, const Ray& ray, const float& tmax, Visit&& visit) {
   if (bvh.nodes.empty()) return;
@@ -75,8 +76,7 @@ void traverse(const Bvh& bvh, const Ray& ray, const float& tmax, Visit&& visit) 
     float entry;
     if (hits_box(node.bounds, box_data, ray.tnear, tmax, entry)) {
       if (node.is_leaf()) {
-        for (std::uint32_t i = 0; i < node.count; ++i)
-          if (!visit(bvh.refs[node.index + i])) return;
+        if (!visit(node, node_index)) return;
       } else {
         // Descend into the child on the ray's near side first.
         const std::uint32_t near_child = node.index + dir_negative[node.axis];
@@ -101,12 +101,42 @@ void offer_hit(float t, float u, float v, std::uint32_t inst, const PrimitiveRef
   best.prim_id = ref.prim;
 }
 
-// Visits every top-level leaf reference whose node box some active lane enters, with the mask
-// of those lanes; near child first by the first active lane's direction. `visit(ref, lanes)`
-// returns the lanes still active (occlusion retires the blocked ones).
-template <typename Visit>
-[[gnu::target("avx2")]] void traverse_packet(const Bvh& bvh, const RayPacket& packet, std::uint32_t active,
-                                             Visit&& visit) {
+// A leaf's triangle blocks against one ray: every slot the test accepts offered under the tie rule.
+[[gnu::target("avx2")]] void closest_in_blocks(const TriangleBlock* blocks, std::uint32_t count, const Ray& ray,
+                                               std::uint32_t inst, Hit& best, float& best_t) {
+  const BlockRay block_ray_data = block_ray(ray.org, ray.dir, ray.tnear);
+  for (std::uint32_t b = 0; b < count; ++b) {
+    BlockHits hits;
+    for (unsigned mask = intersect_block(blocks[b], block_ray_data, best_t, hits); mask != 0; mask &= mask - 1) {
+      const auto j = static_cast<unsigned>(std::countr_zero(mask));
+      offer_hit(hits.t[j], hits.u[j], hits.v[j], inst, {blocks[b].geom[j], blocks[b].prim[j]}, best, best_t);
+    }
+  }
+}
+
+// Whether a leaf's triangle blocks hold anything in (ray.tnear, tfar).
+[[gnu::target("avx2")]] bool any_in_blocks(const TriangleBlock* blocks, std::uint32_t count, const Ray& ray,
+                                           float tfar) {
+  const BlockRay block_ray_data = block_ray(ray.org, ray.dir, ray.tnear);
+  for (std::uint32_t b = 0; b < count; ++b) {
+    BlockHits hits;
+    for (unsigned mask = intersect_block(blocks[b], block_ray_data, tfar, hits); mask != 0; mask &= mask - 1)
+      if (hits.t[std::countr_zero(mask)] < tfar) return true;
+  }
+  return false;
+}
+
+std::uint32_t block_count(const BvhNode& leaf) { return (leaf.count + kBlockWidth - 1) / kBlockWidth; }
+
+// Visits every top-level leaf whose node box some active lane enters, near child first by the
+// first active lane's direction, and returns early when no lane is left active. A leaf with
+// triangle blocks is tested here, each entering lane against each block: `on_block_hits(lane,
+// block, mask, hits)` gets the slots the test accepts (against the lane's tmax). Any other leaf's
+// references go to `visit(ref, lanes)` one by one, with the mask of the entering lanes. Both
+// return the lanes still active (occlusion retires the blocked ones).
+template <typename Visit, typename OnBlockHits>
+[[gnu::target("avx2")]] void traverse_packet(const Bvh& bvh, const TriangleLeaves& leaves, const RayPacket& packet,
+                                             std::uint32_t active, Visit&& visit, OnBlockHits&& on_block_hits) {
   if (bvh.nodes.empty() || active == 0) return;
   const unsigned lead = static_cast<unsigned>(std::countr_zero(active));
   const int dir_negative[3] = {packet.dir_x[lead] < 0.0f, packet.dir_y[lead] < 0.0f, packet.dir_z[lead] < 0.0f};
@@ -118,9 +148,24 @@ template <typename Visit>
     const std::uint32_t entering = packet_hits_box(node.bounds, packet) & active;
     if (entering != 0) {
       if (node.is_leaf()) {
-        for (std::uint32_t i = 0; i < node.count; ++i) {
-          active = visit(bvh.refs[node.index + i], entering & active);
-          if (active == 0) return;
+        const std::uint32_t first = leaves.first_block[node_index];
+        if (first != TriangleLeaves::kNoBlocks) {
+          for (std::uint32_t b = first, end = first + block_count(node); b < end; ++b) {
+            for (std::uint32_t lanes = entering & active; lanes != 0; lanes &= lanes - 1) {
+              const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+              const BlockRay ray = block_ray({packet.org_x[k], packet.org_y[k], packet.org_z[k]},
+                                             {packet.dir_x[k], packet.dir_y[k], packet.dir_z[k]}, packet.tnear[k]);
+              BlockHits hits;
+              const unsigned mask = intersect_block(leaves.blocks[b], ray, packet.tmax[k], hits);
+              if (mask != 0) active = on_block_hits(k, leaves.blocks[b], mask, hits);
+            }
+            if (active == 0) return;
+          }
+        } else {
+          for (std::uint32_t i = 0; i < node.count; ++i) {
+            active = visit(bvh.refs[node.index + i], entering & active);
+            if (active == 0) return;
+          }
         }
       } else {
         const std::uint32_t near_child = node.index + dir_negative[node.axis];
@@ -136,52 +181,80 @@ template <typename Visit>
 
 }  // namespace
 
-NativeTraversal::NativeTraversal(const RenderScene& scene) : scene_(scene) {
+NativeTraversal::NativeTraversal(const RenderScene& scene, bool triangle_blocks) : scene_(scene) {
   const auto start = std::chrono::steady_clock::now();
+  const auto leaves_of = [&](const Group& group, const Bvh& bvh) {
+    if (triangle_blocks) return build_triangle_leaves(group, bvh);
+    TriangleLeaves none;
+    none.first_block.assign(bvh.nodes.size(), TriangleLeaves::kNoBlocks);
+    return none;
+  };
   top_bvh_ = build_bvh(scene.top, scene.prototype_bounds());
+  top_leaves_ = leaves_of(scene.top, top_bvh_);
   prototype_bvhs_.reserve(scene.prototypes.size());
-  for (const Group& prototype : scene.prototypes) prototype_bvhs_.push_back(build_bvh(prototype, {}));
+  prototype_leaves_.reserve(scene.prototypes.size());
+  for (const Group& prototype : scene.prototypes) {
+    prototype_bvhs_.push_back(build_bvh(prototype, {}));
+    prototype_leaves_.push_back(leaves_of(prototype, prototype_bvhs_.back()));
+  }
   build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 std::size_t NativeTraversal::memory_bytes() const {
-  std::size_t bytes = top_bvh_.memory_bytes();
+  std::size_t bytes = top_bvh_.memory_bytes() + top_leaves_.memory_bytes();
   for (const Bvh& bvh : prototype_bvhs_) bytes += bvh.memory_bytes();
+  for (const TriangleLeaves& leaves : prototype_leaves_) bytes += leaves.memory_bytes();
   return bytes;
 }
 
-void NativeTraversal::closest_in_group(const Group& group, const Bvh& bvh, const Ray& ray, std::uint32_t inst,
-                                       Hit& best, float& best_t) const {
-  traverse(bvh, ray, best_t, [&](const PrimitiveRef& ref) {
-    const auto in_instance = [&](const Instance& instance) {
-      const Ray local = to_object_space(instance, ray, best_t);
-      if (is_traceable(local))
-        closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local, ref.geom,
-                         best, best_t);
-    };
-    const auto in_shapes = [&](const auto& shapes) {
-      ShapeHit hit;
-      if (native_hit(shapes, ref.prim, ray, best_t, hit)) offer_hit(hit.t, hit.u, hit.v, inst, ref, best, best_t);
-    };
-    visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
+void NativeTraversal::closest_in_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves, const Ray& ray,
+                                       std::uint32_t inst, Hit& best, float& best_t) const {
+  traverse(bvh, ray, best_t, [&](const BvhNode& leaf, std::uint32_t node_index) {
+    if (const std::uint32_t first = leaves.first_block[node_index]; first != TriangleLeaves::kNoBlocks) {
+      closest_in_blocks(&leaves.blocks[first], block_count(leaf), ray, inst, best, best_t);
+      return true;
+    }
+    for (std::uint32_t i = 0; i < leaf.count; ++i) {
+      const PrimitiveRef& ref = bvh.refs[leaf.index + i];
+      const auto in_instance = [&](const Instance& instance) {
+        const Ray local = to_object_space(instance, ray, best_t);
+        if (is_traceable(local))
+          closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
+                           prototype_leaves_[instance.prototype], local, ref.geom, best, best_t);
+      };
+      const auto in_shapes = [&](const auto& shapes) {
+        ShapeHit hit;
+        if (native_hit(shapes, ref.prim, ray, best_t, hit)) offer_hit(hit.t, hit.u, hit.v, inst, ref, best, best_t);
+      };
+      visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
+    }
     return true;
   });
 }
 
-bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const Ray& ray) const {
+bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves,
+                                   const Ray& ray) const {
   bool found = false;
   const float tfar = ray.tfar;
-  traverse(bvh, ray, tfar, [&](const PrimitiveRef& ref) {
-    const auto in_instance = [&](const Instance& instance) {
-      const Ray local = to_object_space(instance, ray, tfar);
-      return is_traceable(local) &&
-             any_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local);
-    };
-    const auto in_shapes = [&](const auto& shapes) {
-      ShapeHit hit;
-      return native_hit(shapes, ref.prim, ray, tfar, hit) && hit.t < tfar;
-    };
-    found = visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
+  traverse(bvh, ray, tfar, [&](const BvhNode& leaf, std::uint32_t node_index) {
+    if (const std::uint32_t first = leaves.first_block[node_index]; first != TriangleLeaves::kNoBlocks) {
+      found = any_in_blocks(&leaves.blocks[first], block_count(leaf), ray, tfar);
+      return !found;
+    }
+    for (std::uint32_t i = 0; i < leaf.count && !found; ++i) {
+      const PrimitiveRef& ref = bvh.refs[leaf.index + i];
+      const auto in_instance = [&](const Instance& instance) {
+        const Ray local = to_object_space(instance, ray, tfar);
+        return is_traceable(local) &&
+               any_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
+                            prototype_leaves_[instance.prototype], local);
+      };
+      const auto in_shapes = [&](const auto& shapes) {
+        ShapeHit hit;
+        return native_hit(shapes, ref.prim, ray, tfar, hit) && hit.t < tfar;
+      };
+      found = visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
+    }
     return !found;
   });
   return found;
@@ -189,14 +262,21 @@ bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const Ray
 
 void NativeTraversal::closest_in_packet(RayPacket& packet, std::uint32_t active, Hit* best) const {
   const Group& group = scene_.top;
-  traverse_packet(top_bvh_, packet, active, [&](const PrimitiveRef& ref, std::uint32_t lanes) {
+  const auto on_block_hits = [&](unsigned k, const TriangleBlock& block, unsigned mask, const BlockHits& hits) {
+    for (; mask != 0; mask &= mask - 1) {
+      const auto j = static_cast<unsigned>(std::countr_zero(mask));
+      offer_hit(hits.t[j], hits.u[j], hits.v[j], kInvalidId, {block.geom[j], block.prim[j]}, best[k], packet.tmax[k]);
+    }
+    return active;
+  };
+  const auto visit = [&](const PrimitiveRef& ref, std::uint32_t lanes) {
     const auto in_instance = [&](const Instance& instance) {
       for (; lanes != 0; lanes &= lanes - 1) {
         const auto k = static_cast<unsigned>(std::countr_zero(lanes));
         const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
         if (is_traceable(local))
-          closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local, ref.geom,
-                           best[k], packet.tmax[k]);
+          closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
+                           prototype_leaves_[instance.prototype], local, ref.geom, best[k], packet.tmax[k]);
       }
     };
     const auto in_shapes = [&](const auto& shapes) {
@@ -206,20 +286,30 @@ void NativeTraversal::closest_in_packet(RayPacket& packet, std::uint32_t active,
     };
     visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     return active;
-  });
+  };
+  traverse_packet(top_bvh_, top_leaves_, packet, active, visit, on_block_hits);
 }
 
 // The lanes that something blocks in (tnear, tfar).
 std::uint32_t NativeTraversal::any_in_packet(const RayPacket& packet, std::uint32_t active) const {
   const Group& group = scene_.top;
   std::uint32_t blocked = 0;
-  traverse_packet(top_bvh_, packet, active, [&](const PrimitiveRef& ref, std::uint32_t lanes) {
+  const auto on_block_hits = [&](unsigned k, const TriangleBlock&, unsigned mask, const BlockHits& hits) {
+    for (; mask != 0; mask &= mask - 1)
+      if (hits.t[std::countr_zero(mask)] < packet.tmax[k]) {
+        blocked |= 1u << k;
+        break;
+      }
+    return active & ~blocked;
+  };
+  const auto visit = [&](const PrimitiveRef& ref, std::uint32_t lanes) {
     const auto in_instance = [&](const Instance& instance) {
       for (; lanes != 0; lanes &= lanes - 1) {
         const auto k = static_cast<unsigned>(std::countr_zero(lanes));
         const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
         if (is_traceable(local) &&
-            any_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype], local))
+            any_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
+                         prototype_leaves_[instance.prototype], local))
           blocked |= 1u << k;
       }
     };
@@ -230,7 +320,8 @@ std::uint32_t NativeTraversal::any_in_packet(const RayPacket& packet, std::uint3
     };
     visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     return active & ~blocked;
-  });
+  };
+  traverse_packet(top_bvh_, top_leaves_, packet, active, visit, on_block_hits);
   return blocked;
 }
 

@@ -4,6 +4,7 @@
 // through the top level (the same answers lane by lane).
 #include "bvh.h"
 #include "ray_packet.h"
+#include "triangle_blocks.h"
 #include "rtpro/backend/hit.h"
 #include "rtpro/core/ray.h"
 #include "rtpro/scene/render_scene.h"
@@ -16,14 +17,15 @@ namespace rtpro {
 
 class NativeTraversal {
  public:
-  // Builds the BVHs of the scene's top level and of each prototype.
-  explicit NativeTraversal(const RenderScene& scene);
+  // Builds the BVHs of the scene's top level and of each prototype, with their triangle leaves
+  // as blocks (triangle_blocks.h; the CPU must have AVX2) or without.
+  NativeTraversal(const RenderScene& scene, bool triangle_blocks);
 
   // The closest hit along `ray` closer than best_t, under the shared tie rule.
   void closest(const Ray& ray, Hit& best, float& best_t) const {
-    closest_in_group(scene_.top, top_bvh_, ray, kInvalidId, best, best_t);
+    closest_in_group(scene_.top, top_bvh_, top_leaves_, ray, kInvalidId, best, best_t);
   }
-  bool any(const Ray& ray) const { return any_in_group(scene_.top, top_bvh_, ray); }
+  bool any(const Ray& ray) const { return any_in_group(scene_.top, top_bvh_, top_leaves_, ray); }
   // The packet's `active` lanes: closest hits into best[lane] (distances in packet.tmax), or the
   // lanes that something blocks in (tnear, tfar).
   void closest_in_packet(RayPacket& packet, std::uint32_t active, Hit* best) const;
@@ -33,13 +35,15 @@ class NativeTraversal {
   std::size_t memory_bytes() const;
 
  private:
-  void closest_in_group(const Group& group, const Bvh& bvh, const Ray& ray, std::uint32_t inst, Hit& best,
-                        float& best_t) const;
-  bool any_in_group(const Group& group, const Bvh& bvh, const Ray& ray) const;
+  void closest_in_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves, const Ray& ray,
+                        std::uint32_t inst, Hit& best, float& best_t) const;
+  bool any_in_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves, const Ray& ray) const;
 
   const RenderScene& scene_;
   Bvh top_bvh_;
+  TriangleLeaves top_leaves_;
   std::vector<Bvh> prototype_bvhs_;
+  std::vector<TriangleLeaves> prototype_leaves_;
   double build_seconds_ = 0.0;
 };
 

@@ -1,0 +1,110 @@
+#pragma once
+// The native BVH's triangle leaves as blocks of four triangles, their vertices copied into lanes,
+// so that one ray meets a leaf's triangles four at a time (Embree's triangle4 layout): in the
+// packets of scattered rays one or two lanes enter a leaf, and the triangles rather than the rays
+// are what there are several of. The block test is intersect_triangle's own double-precision
+// arithmetic, operation for operation, in the four lanes of AVX2 registers: the same hits to the
+// bit, so images do not depend on whether a leaf has blocks.
+#include "bvh.h"
+#include "rtpro/core/ray.h"
+#include "rtpro/scene/render_scene.h"
+
+#include <immintrin.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace rtpro {
+
+inline constexpr unsigned kBlockWidth = 4;
+
+// Up to four triangles; a slot past the leaf's last triangle has all vertices at the origin (so a
+// zero determinant, which the test rejects) and kInvalidId ids.
+struct alignas(32) TriangleBlock {
+  float v0[3][kBlockWidth], v1[3][kBlockWidth], v2[3][kBlockWidth];  // [coordinate][slot]
+  std::uint32_t geom[kBlockWidth], prim[kBlockWidth];
+};
+
+// The blocks of one BVH: a leaf whose references are all triangles has its blocks at
+// first_block[node], in the leaf's reference order, (count + 3) / 4 of them; any other node has
+// kNoBlocks.
+struct TriangleLeaves {
+  static constexpr std::uint32_t kNoBlocks = ~0u;
+  std::vector<TriangleBlock> blocks;
+  std::vector<std::uint32_t> first_block;
+
+  std::size_t memory_bytes() const {
+    return blocks.capacity() * sizeof(TriangleBlock) + first_block.capacity() * sizeof(std::uint32_t);
+  }
+};
+
+TriangleLeaves build_triangle_leaves(const Group& group, const Bvh& bvh);
+
+// The slots' hits, where bit j of the returned mask is set.
+struct BlockHits {
+  alignas(16) float t[kBlockWidth], u[kBlockWidth], v[kBlockWidth];
+};
+
+// One ray's origin and direction widened to double and broadcast over the lanes once per ray.
+struct BlockRay {
+  __m256d org[3], dir[3];
+  float tnear;
+};
+
+[[gnu::target("avx2")]] inline BlockRay block_ray(const Vec3& org, const Vec3& dir, float tnear) {
+  return {{_mm256_set1_pd(org.x), _mm256_set1_pd(org.y), _mm256_set1_pd(org.z)},
+          {_mm256_set1_pd(dir.x), _mm256_set1_pd(dir.y), _mm256_set1_pd(dir.z)},
+          tnear};
+}
+
+// intersect_triangle for the block's four triangles at once, each within (ray.tnear, tfar]: the
+// mask of slots it accepts, their distances and barycentrics in `hits`.
+[[gnu::target("avx2"), gnu::always_inline]] inline unsigned intersect_block(const TriangleBlock& block,
+                                                                            const BlockRay& ray, float tfar,
+                                                                            BlockHits& hits) {
+  const auto sub = _mm256_sub_pd;
+  const auto mul = _mm256_mul_pd;
+  const auto add = _mm256_add_pd;
+  __m256d p0[3], e1[3], e2[3];
+  for (int c = 0; c < 3; ++c) {
+    p0[c] = _mm256_cvtps_pd(_mm_load_ps(block.v0[c]));
+    e1[c] = sub(_mm256_cvtps_pd(_mm_load_ps(block.v1[c])), p0[c]);
+    e2[c] = sub(_mm256_cvtps_pd(_mm_load_ps(block.v2[c])), p0[c]);
+  }
+  const __m256d* d = ray.dir;
+  const __m256d px = sub(mul(d[1], e2[2]), mul(d[2], e2[1]));
+  const __m256d py = sub(mul(d[2], e2[0]), mul(d[0], e2[2]));
+  const __m256d pz = sub(mul(d[0], e2[1]), mul(d[1], e2[0]));
+  const __m256d det = add(add(mul(e1[0], px), mul(e1[1], py)), mul(e1[2], pz));
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+  const __m256d inv_det = _mm256_div_pd(one, det);
+
+  const __m256d sx = sub(ray.org[0], p0[0]), sy = sub(ray.org[1], p0[1]), sz = sub(ray.org[2], p0[2]);
+  const __m256d u = mul(add(add(mul(sx, px), mul(sy, py)), mul(sz, pz)), inv_det);
+  const __m256d qx = sub(mul(sy, e1[2]), mul(sz, e1[1]));
+  const __m256d qy = sub(mul(sz, e1[0]), mul(sx, e1[2]));
+  const __m256d qz = sub(mul(sx, e1[1]), mul(sy, e1[0]));
+  const __m256d v = mul(add(add(mul(d[0], qx), mul(d[1], qy)), mul(d[2], qz)), inv_det);
+  const __m256d t = mul(add(add(mul(e2[0], qx), mul(e2[1], qy)), mul(e2[2], qz)), inv_det);
+
+  // The scalar test's rejections, each an ordered comparison (false for NaN) as there.
+  __m256d rejected = _mm256_cmp_pd(det, zero, _CMP_EQ_OQ);
+  rejected = _mm256_or_pd(rejected, _mm256_cmp_pd(u, zero, _CMP_LT_OQ));
+  rejected = _mm256_or_pd(rejected, _mm256_cmp_pd(u, one, _CMP_GT_OQ));
+  rejected = _mm256_or_pd(rejected, _mm256_cmp_pd(v, zero, _CMP_LT_OQ));
+  rejected = _mm256_or_pd(rejected, _mm256_cmp_pd(add(u, v), one, _CMP_GT_OQ));
+  const __m128 t_float = _mm256_cvtpd_ps(t);
+  const __m128 in_range =
+      _mm_and_ps(_mm_cmpgt_ps(t_float, _mm_set1_ps(ray.tnear)), _mm_cmple_ps(t_float, _mm_set1_ps(tfar)));
+  const unsigned mask =
+      static_cast<unsigned>(_mm_movemask_ps(in_range)) & ~static_cast<unsigned>(_mm256_movemask_pd(rejected));
+  if (mask != 0) {
+    _mm_store_ps(hits.t, t_float);
+    _mm_store_ps(hits.u, _mm256_cvtpd_ps(u));
+    _mm_store_ps(hits.v, _mm256_cvtpd_ps(v));
+  }
+  return mask;
+}
+
+}  // namespace rtpro

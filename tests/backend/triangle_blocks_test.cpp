@@ -1,0 +1,238 @@
+// A leaf's triangles tested four at a time must answer what intersect_triangle answers one at a
+// time, bit for bit: images must not depend on whether a leaf has blocks, nor on whether the CPU
+// has the AVX2 the blocks need.
+#include "triangle_blocks.h"
+
+#include "native_traversal.h"
+#include "sphere_lanes.h"
+#include "test_scenes.h"
+#include "rtpro/backend/hit.h"
+#include "rtpro/geometry/triangle_intersect.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace rtpro {
+namespace triangle_blocks_test {
+
+bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
+
+struct Triangle {
+  Vec3 p[3];
+};
+
+Vec3 grid_point(std::mt19937& rng) {
+  std::uniform_int_distribution<int> coordinate(-3, 3);
+  return {float(coordinate(rng)), float(coordinate(rng)), float(coordinate(rng))};
+}
+
+// Triangles of every shape the scenes hold and a few they should not: ordinary, slivers, a
+// repeated vertex, all three on one point, huge and tiny coordinates, and on an integer grid,
+// where rays through vertices and edges give barycentrics of exactly 0 and 1.
+Triangle random_triangle(std::mt19937& rng) {
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  std::uniform_int_distribution<int> kind(0, 9);
+  Triangle tri{
+      {{unit(rng), unit(rng), unit(rng)}, {unit(rng), unit(rng), unit(rng)}, {unit(rng), unit(rng), unit(rng)}}};
+  switch (kind(rng)) {
+    case 8:
+    case 9:
+      for (Vec3& p : tri.p) p = grid_point(rng);
+      break;
+    case 0: tri.p[2] = tri.p[0] + (tri.p[1] - tri.p[0]) * 0.5f; break;  // collinear
+    case 1: tri.p[1] = tri.p[0]; break;
+    case 2: tri.p[1] = tri.p[2] = tri.p[0]; break;
+    case 3:
+      for (Vec3& p : tri.p) p = p * 1e7f;
+      break;
+    case 4:
+      for (Vec3& p : tri.p) p = p * 1e-6f;
+      break;
+    default: break;
+  }
+  return tri;
+}
+
+// Rays aimed at the triangle's vertices and edges (where rounding decides), through its interior,
+// lying in its plane, starting on it, short segments, zero and NaN directions.
+Ray random_ray_at(std::mt19937& rng, const Triangle& tri) {
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f), positive(0.0f, 1.0f);
+  std::uniform_int_distribution<int> kind(0, 11), vertex(0, 2);
+  Ray ray{{unit(rng) * 3.0f, unit(rng) * 3.0f, unit(rng) * 3.0f}, 0.0f, {}, std::numeric_limits<float>::infinity()};
+  const float a = positive(rng), b = positive(rng) * (1.0f - a);
+  Vec3 target = tri.p[0] * (1.0f - a - b) + tri.p[1] * a + tri.p[2] * b;
+  switch (kind(rng)) {
+    case 10:
+    case 11: {  // from a grid point exactly through a vertex or an edge's midpoint
+      ray.org = grid_point(rng) * 2.0f + Vec3(0.0f, 0.0f, 9.0f);
+      const int i = vertex(rng);
+      target = kind(rng) % 2 ? tri.p[i] : (tri.p[i] + tri.p[(i + 1) % 3]) * 0.5f;
+      ray.dir = target - ray.org;
+      return ray;
+    }
+    case 0: target = tri.p[vertex(rng)]; break;
+    case 1: target = tri.p[0] + (tri.p[1] - tri.p[0]) * positive(rng); break;
+    case 2: target = tri.p[1] + (tri.p[2] - tri.p[1]) * positive(rng); break;
+    case 3: ray.org = tri.p[0] + (tri.p[1] - tri.p[0]) * unit(rng) + (tri.p[2] - tri.p[0]) * unit(rng); break;
+    case 4: ray.org = target; break;
+    case 5: ray.tfar = positive(rng) * 4.0f; break;
+    case 6: ray.tnear = -positive(rng); break;
+    case 7: ray.dir = {0.0f, 0.0f, 0.0f}; return ray;
+    case 8: ray.dir = {std::numeric_limits<float>::quiet_NaN(), 1.0f, 0.0f}; return ray;
+    default: break;
+  }
+  ray.dir = target - ray.org + Vec3(unit(rng), unit(rng), unit(rng)) * 1e-4f;
+  return ray;
+}
+
+TriangleBlock block_of(const std::vector<Triangle>& tris) {
+  TriangleBlock block{};
+  for (unsigned j = 0; j < tris.size(); ++j)
+    for (int c = 0; c < 3; ++c) {
+      block.v0[c][j] = tris[j].p[0][c];
+      block.v1[c][j] = tris[j].p[1][c];
+      block.v2[c][j] = tris[j].p[2][c];
+    }
+  return block;
+}
+
+[[gnu::target("avx2")]] unsigned test_block(const TriangleBlock& block, const Ray& ray, float tfar, BlockHits& hits) {
+  return intersect_block(block, block_ray(ray.org, ray.dir, ray.tnear), tfar, hits);
+}
+
+TEST(TriangleBlocks, EverySlotAnswersWhatTheScalarTestAnswersBitForBit) {
+  if (!sphere_lanes_vectorised()) GTEST_SKIP() << "the CPU has no AVX2";
+  std::mt19937 rng(26);
+  int hits_seen = 0;
+  for (int round = 0; round < 20000; ++round) {
+    std::vector<Triangle> tris;
+    for (int j = 0; j < 4; ++j) tris.push_back(random_triangle(rng));
+    const TriangleBlock block = block_of(tris);
+    const Ray ray = random_ray_at(rng, tris[round % 4]);
+    BlockHits hits;
+    const unsigned mask = test_block(block, ray, ray.tfar, hits);
+    for (unsigned j = 0; j < 4; ++j) {
+      TriangleHit expected;
+      const bool hit =
+          intersect_triangle(tris[j].p[0], tris[j].p[1], tris[j].p[2], ray.org, ray.dir, ray.tnear, ray.tfar, expected);
+      ASSERT_EQ(hit, ((mask >> j) & 1u) != 0) << "round " << round << " slot " << j;
+      if (!hit) continue;
+      ++hits_seen;
+      EXPECT_TRUE(same_bits(expected.t, hits.t[j]) && same_bits(expected.u, hits.u[j]) &&
+                  same_bits(expected.v, hits.v[j]))
+          << "round " << round << " slot " << j;
+    }
+  }
+  EXPECT_GT(hits_seen, 5000);  // the rays were aimed: most rounds hit something
+}
+
+TEST(TriangleBlocks, EmptySlotsAreNeverHit) {
+  if (!sphere_lanes_vectorised()) GTEST_SKIP() << "the CPU has no AVX2";
+  const TriangleBlock block = block_of({Triangle{{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}}});
+  // Through the triangle, and through the origin where the empty slots' vertices all sit.
+  for (const Vec3 org : {Vec3(0.0f, 0.0f, -1.0f), Vec3(0.0f, -0.5f, -1.0f)}) {
+    BlockHits hits;
+    const Ray ray{org, 0.0f, {0.0f, 0.0f, 1.0f}, std::numeric_limits<float>::infinity()};
+    EXPECT_EQ(test_block(block, ray, ray.tfar, hits), 1u);
+  }
+}
+
+// A scene of triangles only (every top-level leaf in blocks), one of spheres and triangles mixed
+// (leaves with blocks beside leaves without), and instances of both kinds of prototype.
+std::vector<RenderScene> scenes() {
+  std::vector<RenderScene> out;
+  std::mt19937 rng(7);
+  RenderScene triangles = test::empty_scene();
+  triangles.top.geometries.push_back(test::random_triangles(rng, 3000, 4.0f));
+  out.push_back(std::move(triangles));
+  out.push_back(test::random_mixed_scene(3, 200, 2000, 6));
+  out.push_back(test::random_mixed_scene(4, 0, 1500, 0));
+  return out;
+}
+
+TEST(TriangleBlocks, TraversalAnswersTheSameWithAndWithoutBlocks) {
+  if (!sphere_lanes_vectorised()) GTEST_SKIP() << "the CPU has no AVX2";
+  std::mt19937 rng(11);
+  for (const RenderScene& scene : scenes()) {
+    const NativeTraversal with(scene, true), without(scene, false);
+    EXPECT_GT(with.memory_bytes(), without.memory_bytes());
+    int hits_seen = 0;
+    for (int batch = 0; batch < 400; ++batch) {
+      std::vector<Ray> rays;
+      for (unsigned k = 0; k < kPacketSize; ++k) {
+        Ray ray = test::random_ray(rng, 5.0f);
+        if (k % 3 == 0) ray.tfar = 2.0f;
+        rays.push_back(ray);
+      }
+      RayPacket packet_with, packet_without;
+      for (unsigned k = 0; k < kPacketSize; ++k) {
+        packet_with.set(k, rays[k], rays[k].tfar);
+        packet_without.set(k, rays[k], rays[k].tfar);
+      }
+      packet_with.finish(kPacketSize);
+      packet_without.finish(kPacketSize);
+      Hit best_with[kPacketSize], best_without[kPacketSize];
+      with.closest_in_packet(packet_with, 0xFFu, best_with);
+      without.closest_in_packet(packet_without, 0xFFu, best_without);
+      EXPECT_EQ(with.any_in_packet(packet_with, 0xFFu), without.any_in_packet(packet_without, 0xFFu));
+      for (unsigned k = 0; k < kPacketSize; ++k) {
+        Hit single_with, single_without;
+        float t_with = rays[k].tfar, t_without = rays[k].tfar;
+        with.closest(rays[k], single_with, t_with);
+        without.closest(rays[k], single_without, t_without);
+        ASSERT_EQ(std::memcmp(&single_with, &single_without, sizeof(Hit)), 0) << "batch " << batch << " ray " << k;
+        ASSERT_TRUE(same_bits(t_with, t_without));
+        ASSERT_EQ(std::memcmp(&best_with[k], &single_with, sizeof(Hit)), 0) << "batch " << batch << " lane " << k;
+        ASSERT_EQ(std::memcmp(&best_without[k], &single_with, sizeof(Hit)), 0);
+        ASSERT_TRUE(same_bits(packet_with.tmax[k], t_with) && same_bits(packet_without.tmax[k], t_with));
+        EXPECT_EQ(with.any(rays[k]), without.any(rays[k]));
+        hits_seen += single_with.valid();
+      }
+    }
+    EXPECT_GT(hits_seen, 300);
+  }
+}
+
+TEST(TriangleBlocks, TriangleLeavesHaveTheirReferencesInOrderAndOthersNone) {
+  const RenderScene scene = test::random_mixed_scene(5, 300, 3000, 0);
+  const Bvh bvh = build_bvh(scene.top, scene.prototype_bounds());
+  const TriangleLeaves leaves = build_triangle_leaves(scene.top, bvh);
+  ASSERT_EQ(leaves.first_block.size(), bvh.nodes.size());
+  int with_blocks = 0, without = 0;
+  for (std::size_t n = 0; n < bvh.nodes.size(); ++n) {
+    const BvhNode& node = bvh.nodes[n];
+    bool triangles_only = node.is_leaf();
+    for (std::uint32_t i = 0; node.is_leaf() && i < node.count; ++i)
+      triangles_only &= kind_of(scene.top.geometries[bvh.refs[node.index + i].geom]) == GeometryKind::kTriangles;
+    if (!triangles_only) {
+      EXPECT_EQ(leaves.first_block[n], TriangleLeaves::kNoBlocks);
+      without += node.is_leaf();
+      continue;
+    }
+    ++with_blocks;
+    ASSERT_NE(leaves.first_block[n], TriangleLeaves::kNoBlocks);
+    for (std::uint32_t i = 0; i < (node.count + 3u) / 4u * 4u; ++i) {
+      const TriangleBlock& block = leaves.blocks[leaves.first_block[n] + i / 4];
+      const std::uint32_t expected_geom = i < node.count ? bvh.refs[node.index + i].geom : kInvalidId;
+      const std::uint32_t expected_prim = i < node.count ? bvh.refs[node.index + i].prim : kInvalidId;
+      EXPECT_EQ(block.geom[i % 4], expected_geom);
+      EXPECT_EQ(block.prim[i % 4], expected_prim);
+      if (i >= node.count) continue;
+      const TriangleMesh& mesh = *std::get_if<TriangleMesh>(&scene.top.geometries[expected_geom]);
+      const Vec3 v0 = mesh.vertex(mesh.triangles[expected_prim].v0);
+      EXPECT_TRUE(same_bits(block.v0[0][i % 4], v0.x) && same_bits(block.v0[2][i % 4], v0.z));
+    }
+  }
+  EXPECT_GT(with_blocks, 10);
+  EXPECT_GT(without, 10);
+}
+
+}  // namespace triangle_blocks_test
+}  // namespace rtpro
