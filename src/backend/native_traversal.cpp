@@ -101,39 +101,47 @@ void offer_hit(float t, float u, float v, std::uint32_t inst, const PrimitiveRef
   best.prim_id = ref.prim;
 }
 
-// A leaf's triangle blocks against one ray: every slot the test accepts offered under the tie rule.
-[[gnu::target("avx2")]] void closest_in_blocks(const TriangleBlock* blocks, std::uint32_t count, const Ray& ray,
-                                               std::uint32_t inst, Hit& best, float& best_t) {
-  const BlockRay block_ray_data = block_ray(ray.org, ray.dir, ray.tnear);
-  for (std::uint32_t b = 0; b < count; ++b) {
+// The slots of a leaf's four-column chunk starting at reference `i`.
+unsigned chunk_slots(const BvhNode& leaf, std::uint32_t i) {
+  const std::uint32_t left = leaf.index + leaf.count - i;
+  return left >= kBlockWidth ? (1u << kBlockWidth) - 1u : (1u << left) - 1u;
+}
+
+// A triangle leaf against one ray, four triangles at a time: every one the test accepts offered
+// under the tie rule.
+[[gnu::target("avx2")]] void closest_in_triangle_leaf(const Bvh& bvh, const TriangleLeaves& leaves, const BvhNode& leaf,
+                                                      const Ray& ray, std::uint32_t inst, Hit& best, float& best_t) {
+  const BlockRay block = block_ray(ray.org, ray.dir, ray.tnear);
+  for (std::uint32_t i = leaf.index; i < leaf.index + leaf.count; i += kBlockWidth) {
     BlockHits hits;
-    for (unsigned mask = intersect_block(blocks[b], block_ray_data, best_t, hits); mask != 0; mask &= mask - 1) {
+    for (unsigned mask = intersect_block(leaves.column(i), leaves.stride, chunk_slots(leaf, i), block, best_t, hits);
+         mask != 0; mask &= mask - 1) {
       const auto j = static_cast<unsigned>(std::countr_zero(mask));
-      offer_hit(hits.t[j], hits.u[j], hits.v[j], inst, {blocks[b].geom[j], blocks[b].prim[j]}, best, best_t);
+      offer_hit(hits.t[j], hits.u[j], hits.v[j], inst, bvh.refs[i + j], best, best_t);
     }
   }
 }
 
-// Whether a leaf's triangle blocks hold anything in (ray.tnear, tfar).
-[[gnu::target("avx2")]] bool any_in_blocks(const TriangleBlock* blocks, std::uint32_t count, const Ray& ray,
-                                           float tfar) {
-  const BlockRay block_ray_data = block_ray(ray.org, ray.dir, ray.tnear);
-  for (std::uint32_t b = 0; b < count; ++b) {
+// Whether a triangle leaf holds anything in (ray.tnear, tfar).
+[[gnu::target("avx2")]] bool any_in_triangle_leaf(const TriangleLeaves& leaves, const BvhNode& leaf, const Ray& ray,
+                                                  float tfar) {
+  const BlockRay block = block_ray(ray.org, ray.dir, ray.tnear);
+  for (std::uint32_t i = leaf.index; i < leaf.index + leaf.count; i += kBlockWidth) {
     BlockHits hits;
-    for (unsigned mask = intersect_block(blocks[b], block_ray_data, tfar, hits); mask != 0; mask &= mask - 1)
+    for (unsigned mask = intersect_block(leaves.column(i), leaves.stride, chunk_slots(leaf, i), block, tfar, hits);
+         mask != 0; mask &= mask - 1)
       if (hits.t[std::countr_zero(mask)] < tfar) return true;
   }
   return false;
 }
 
-std::uint32_t block_count(const BvhNode& leaf) { return (leaf.count + kBlockWidth - 1) / kBlockWidth; }
-
 // Visits every top-level leaf whose node box some active lane enters, near child first by the
-// first active lane's direction, and returns early when no lane is left active. A leaf with
-// triangle blocks is tested here, each entering lane against each block: `on_block_hits(lane,
-// block, mask, hits)` gets the slots the test accepts (against the lane's tmax). Any other leaf's
-// references go to `visit(ref, lanes)` one by one, with the mask of the entering lanes. Both
-// return the lanes still active (occlusion retires the blocked ones).
+// first active lane's direction, and returns early when no lane is left active. A triangle leaf
+// is tested here, each entering lane against four of its triangles at a time: `on_block_hits(lane,
+// first, mask, hits)` gets the slots the test accepts (against the lane's tmax; bit j is
+// reference first + j). Any other leaf's references go to `visit(ref, lanes)` one by one, with
+// the mask of the entering lanes. Both return the lanes still active (occlusion retires the
+// blocked ones).
 template <typename Visit, typename OnBlockHits>
 [[gnu::target("avx2")]] void traverse_packet(const Bvh& bvh, const TriangleLeaves& leaves, const RayPacket& packet,
                                              std::uint32_t active, Visit&& visit, OnBlockHits&& on_block_hits) {
@@ -148,16 +156,16 @@ template <typename Visit, typename OnBlockHits>
     const std::uint32_t entering = packet_hits_box(node.bounds, packet) & active;
     if (entering != 0) {
       if (node.is_leaf()) {
-        const std::uint32_t first = leaves.first_block[node_index];
-        if (first != TriangleLeaves::kNoBlocks) {
-          for (std::uint32_t b = first, end = first + block_count(node); b < end; ++b) {
+        if (leaves.triangle_leaf[node_index]) {
+          for (std::uint32_t i = node.index; i < node.index + node.count; i += kBlockWidth) {
+            const unsigned slots = chunk_slots(node, i);
             for (std::uint32_t lanes = entering & active; lanes != 0; lanes &= lanes - 1) {
               const auto k = static_cast<unsigned>(std::countr_zero(lanes));
               const BlockRay ray = block_ray({packet.org_x[k], packet.org_y[k], packet.org_z[k]},
                                              {packet.dir_x[k], packet.dir_y[k], packet.dir_z[k]}, packet.tnear[k]);
               BlockHits hits;
-              const unsigned mask = intersect_block(leaves.blocks[b], ray, packet.tmax[k], hits);
-              if (mask != 0) active = on_block_hits(k, leaves.blocks[b], mask, hits);
+              const unsigned mask = intersect_block(leaves.column(i), leaves.stride, slots, ray, packet.tmax[k], hits);
+              if (mask != 0) active = on_block_hits(k, i, mask, hits);
             }
             if (active == 0) return;
           }
@@ -183,19 +191,13 @@ template <typename Visit, typename OnBlockHits>
 
 NativeTraversal::NativeTraversal(const RenderScene& scene, bool triangle_blocks) : scene_(scene) {
   const auto start = std::chrono::steady_clock::now();
-  const auto leaves_of = [&](const Group& group, const Bvh& bvh) {
-    if (triangle_blocks) return build_triangle_leaves(group, bvh);
-    TriangleLeaves none;
-    none.first_block.assign(bvh.nodes.size(), TriangleLeaves::kNoBlocks);
-    return none;
-  };
   top_bvh_ = build_bvh(scene.top, scene.prototype_bounds());
-  top_leaves_ = leaves_of(scene.top, top_bvh_);
+  top_leaves_ = build_triangle_leaves(scene.top, top_bvh_, triangle_blocks);
   prototype_bvhs_.reserve(scene.prototypes.size());
   prototype_leaves_.reserve(scene.prototypes.size());
   for (const Group& prototype : scene.prototypes) {
     prototype_bvhs_.push_back(build_bvh(prototype, {}));
-    prototype_leaves_.push_back(leaves_of(prototype, prototype_bvhs_.back()));
+    prototype_leaves_.push_back(build_triangle_leaves(prototype, prototype_bvhs_.back(), triangle_blocks));
   }
   build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -210,8 +212,8 @@ std::size_t NativeTraversal::memory_bytes() const {
 void NativeTraversal::closest_in_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves, const Ray& ray,
                                        std::uint32_t inst, Hit& best, float& best_t) const {
   traverse(bvh, ray, best_t, [&](const BvhNode& leaf, std::uint32_t node_index) {
-    if (const std::uint32_t first = leaves.first_block[node_index]; first != TriangleLeaves::kNoBlocks) {
-      closest_in_blocks(&leaves.blocks[first], block_count(leaf), ray, inst, best, best_t);
+    if (leaves.triangle_leaf[node_index]) {
+      closest_in_triangle_leaf(bvh, leaves, leaf, ray, inst, best, best_t);
       return true;
     }
     for (std::uint32_t i = 0; i < leaf.count; ++i) {
@@ -237,8 +239,8 @@ bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const Tri
   bool found = false;
   const float tfar = ray.tfar;
   traverse(bvh, ray, tfar, [&](const BvhNode& leaf, std::uint32_t node_index) {
-    if (const std::uint32_t first = leaves.first_block[node_index]; first != TriangleLeaves::kNoBlocks) {
-      found = any_in_blocks(&leaves.blocks[first], block_count(leaf), ray, tfar);
+    if (leaves.triangle_leaf[node_index]) {
+      found = any_in_triangle_leaf(leaves, leaf, ray, tfar);
       return !found;
     }
     for (std::uint32_t i = 0; i < leaf.count && !found; ++i) {
@@ -262,10 +264,10 @@ bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const Tri
 
 void NativeTraversal::closest_in_packet(RayPacket& packet, std::uint32_t active, Hit* best) const {
   const Group& group = scene_.top;
-  const auto on_block_hits = [&](unsigned k, const TriangleBlock& block, unsigned mask, const BlockHits& hits) {
+  const auto on_block_hits = [&](unsigned k, std::uint32_t first, unsigned mask, const BlockHits& hits) {
     for (; mask != 0; mask &= mask - 1) {
       const auto j = static_cast<unsigned>(std::countr_zero(mask));
-      offer_hit(hits.t[j], hits.u[j], hits.v[j], kInvalidId, {block.geom[j], block.prim[j]}, best[k], packet.tmax[k]);
+      offer_hit(hits.t[j], hits.u[j], hits.v[j], kInvalidId, top_bvh_.refs[first + j], best[k], packet.tmax[k]);
     }
     return active;
   };
@@ -294,7 +296,7 @@ void NativeTraversal::closest_in_packet(RayPacket& packet, std::uint32_t active,
 std::uint32_t NativeTraversal::any_in_packet(const RayPacket& packet, std::uint32_t active) const {
   const Group& group = scene_.top;
   std::uint32_t blocked = 0;
-  const auto on_block_hits = [&](unsigned k, const TriangleBlock&, unsigned mask, const BlockHits& hits) {
+  const auto on_block_hits = [&](unsigned k, std::uint32_t, unsigned mask, const BlockHits& hits) {
     for (; mask != 0; mask &= mask - 1)
       if (hits.t[std::countr_zero(mask)] < packet.tmax[k]) {
         blocked |= 1u << k;

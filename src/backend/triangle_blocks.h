@@ -1,10 +1,10 @@
 #pragma once
-// The native BVH's triangle leaves as blocks of four triangles, their vertices copied into lanes,
-// so that one ray meets a leaf's triangles four at a time (Embree's triangle4 layout): in the
-// packets of scattered rays one or two lanes enter a leaf, and the triangles rather than the rays
-// are what there are several of. The block test is intersect_triangle's own double-precision
-// arithmetic, operation for operation, in the four lanes of AVX2 registers: the same hits to the
-// bit, so images do not depend on whether a leaf has blocks.
+// The native BVH's triangle leaves tested four triangles at a time, their vertices copied into
+// rows that load as lanes (Embree's triangle4 layout, without its empty slots): in the packets of
+// scattered rays one or two lanes enter a leaf, and the triangles rather than the rays are what
+// there are several of. The block test is intersect_triangle's own double-precision arithmetic,
+// operation for operation, in the four lanes of AVX2 registers: the same hits to the bit, so
+// images do not depend on whether a leaf is tested so.
 #include "bvh.h"
 #include "rtpro/core/ray.h"
 #include "rtpro/scene/render_scene.h"
@@ -19,27 +19,25 @@ namespace rtpro {
 
 inline constexpr unsigned kBlockWidth = 4;
 
-// Up to four triangles; a slot past the leaf's last triangle has all vertices at the origin (so a
-// zero determinant, which the test rejects) and kInvalidId ids.
-struct alignas(32) TriangleBlock {
-  float v0[3][kBlockWidth], v1[3][kBlockWidth], v2[3][kBlockWidth];  // [coordinate][slot]
-  std::uint32_t geom[kBlockWidth], prim[kBlockWidth];
-};
-
-// The blocks of one BVH: a leaf whose references are all triangles has its blocks at
-// first_block[node], in the leaf's reference order, (count + 3) / 4 of them; any other node has
-// kNoBlocks.
+// The vertices of every reference of one BVH, in the BVH's reference order, as nine rows of
+// floats (row 3·vertex + coordinate), each `stride` long: a leaf's references are consecutive
+// columns, so four of them load as four consecutive floats of each row (columns past the leaf's
+// end belong to the next leaves, or to the zero columns at the end, and are masked off). 36 bytes
+// a reference; one that is not a triangle has zeros. A leaf whose references are all triangles
+// is marked in triangle_leaf (per node).
 struct TriangleLeaves {
-  static constexpr std::uint32_t kNoBlocks = ~0u;
-  std::vector<TriangleBlock> blocks;
-  std::vector<std::uint32_t> first_block;
+  std::size_t stride = 0;
+  std::vector<float> vertices;
+  std::vector<std::uint8_t> triangle_leaf;
 
+  const float* column(std::uint32_t ref) const { return vertices.data() + ref; }
   std::size_t memory_bytes() const {
-    return blocks.capacity() * sizeof(TriangleBlock) + first_block.capacity() * sizeof(std::uint32_t);
+    return vertices.capacity() * sizeof(float) + triangle_leaf.capacity() * sizeof(std::uint8_t);
   }
 };
 
-TriangleLeaves build_triangle_leaves(const Group& group, const Bvh& bvh);
+// With `enabled` false (the CPU has no AVX2), no leaf is marked and no vertex copied.
+TriangleLeaves build_triangle_leaves(const Group& group, const Bvh& bvh, bool enabled = true);
 
 // The slots' hits, where bit j of the returned mask is set.
 struct BlockHits {
@@ -58,19 +56,20 @@ struct BlockRay {
           tnear};
 }
 
-// intersect_triangle for the block's four triangles at once, each within (ray.tnear, tfar]: the
-// mask of slots it accepts, their distances and barycentrics in `hits`.
-[[gnu::target("avx2"), gnu::always_inline]] inline unsigned intersect_block(const TriangleBlock& block,
-                                                                            const BlockRay& ray, float tfar,
-                                                                            BlockHits& hits) {
+// intersect_triangle for four consecutive references at once, those of `slots` (bit j: column
+// first + j), each within (ray.tnear, tfar]: the mask of slots it accepts, their distances and
+// barycentrics in `hits`.
+[[gnu::target("avx2"), gnu::always_inline]] inline unsigned intersect_block(const float* first, std::size_t stride,
+                                                                            unsigned slots, const BlockRay& ray,
+                                                                            float tfar, BlockHits& hits) {
   const auto sub = _mm256_sub_pd;
   const auto mul = _mm256_mul_pd;
   const auto add = _mm256_add_pd;
   __m256d p0[3], e1[3], e2[3];
   for (int c = 0; c < 3; ++c) {
-    p0[c] = _mm256_cvtps_pd(_mm_load_ps(block.v0[c]));
-    e1[c] = sub(_mm256_cvtps_pd(_mm_load_ps(block.v1[c])), p0[c]);
-    e2[c] = sub(_mm256_cvtps_pd(_mm_load_ps(block.v2[c])), p0[c]);
+    p0[c] = _mm256_cvtps_pd(_mm_loadu_ps(first + c * stride));
+    e1[c] = sub(_mm256_cvtps_pd(_mm_loadu_ps(first + (3 + c) * stride)), p0[c]);
+    e2[c] = sub(_mm256_cvtps_pd(_mm_loadu_ps(first + (6 + c) * stride)), p0[c]);
   }
   const __m256d* d = ray.dir;
   const __m256d px = sub(mul(d[1], e2[2]), mul(d[2], e2[1]));
@@ -98,7 +97,7 @@ struct BlockRay {
   const __m128 in_range =
       _mm_and_ps(_mm_cmpgt_ps(t_float, _mm_set1_ps(ray.tnear)), _mm_cmple_ps(t_float, _mm_set1_ps(tfar)));
   const unsigned mask =
-      static_cast<unsigned>(_mm_movemask_ps(in_range)) & ~static_cast<unsigned>(_mm256_movemask_pd(rejected));
+      static_cast<unsigned>(_mm_movemask_ps(in_range)) & ~static_cast<unsigned>(_mm256_movemask_pd(rejected)) & slots;
   if (mask != 0) {
     _mm_store_ps(hits.t, t_float);
     _mm_store_ps(hits.u, _mm256_cvtpd_ps(u));

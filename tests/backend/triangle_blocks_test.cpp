@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -92,19 +93,26 @@ Ray random_ray_at(std::mt19937& rng, const Triangle& tri) {
   return ray;
 }
 
-TriangleBlock block_of(const std::vector<Triangle>& tris) {
-  TriangleBlock block{};
-  for (unsigned j = 0; j < tris.size(); ++j)
-    for (int c = 0; c < 3; ++c) {
-      block.v0[c][j] = tris[j].p[0][c];
-      block.v1[c][j] = tris[j].p[1][c];
-      block.v2[c][j] = tris[j].p[2][c];
-    }
-  return block;
+// Four triangles as the rows of a TriangleLeaves hold them, with `gap` unrelated columns
+// between the rows.
+struct Rows {
+  std::size_t stride;
+  std::vector<float> values;
+};
+
+Rows rows_of(const std::vector<Triangle>& tris, std::size_t gap = 5) {
+  Rows rows{kBlockWidth + gap, {}};
+  rows.values.assign(9 * rows.stride, std::numeric_limits<float>::quiet_NaN());
+  for (unsigned j = 0; j < kBlockWidth; ++j)
+    for (int vertex = 0; vertex < 3; ++vertex)
+      for (int c = 0; c < 3; ++c)
+        rows.values[(3 * vertex + c) * rows.stride + j] = j < tris.size() ? tris[j].p[vertex][c] : 0.0f;
+  return rows;
 }
 
-[[gnu::target("avx2")]] unsigned test_block(const TriangleBlock& block, const Ray& ray, float tfar, BlockHits& hits) {
-  return intersect_block(block, block_ray(ray.org, ray.dir, ray.tnear), tfar, hits);
+[[gnu::target("avx2")]] unsigned test_block(const Rows& rows, unsigned slots, const Ray& ray, float tfar,
+                                            BlockHits& hits) {
+  return intersect_block(rows.values.data(), rows.stride, slots, block_ray(ray.org, ray.dir, ray.tnear), tfar, hits);
 }
 
 TEST(TriangleBlocks, EverySlotAnswersWhatTheScalarTestAnswersBitForBit) {
@@ -114,10 +122,9 @@ TEST(TriangleBlocks, EverySlotAnswersWhatTheScalarTestAnswersBitForBit) {
   for (int round = 0; round < 20000; ++round) {
     std::vector<Triangle> tris;
     for (int j = 0; j < 4; ++j) tris.push_back(random_triangle(rng));
-    const TriangleBlock block = block_of(tris);
     const Ray ray = random_ray_at(rng, tris[round % 4]);
     BlockHits hits;
-    const unsigned mask = test_block(block, ray, ray.tfar, hits);
+    const unsigned mask = test_block(rows_of(tris), 0xFu, ray, ray.tfar, hits);
     for (unsigned j = 0; j < 4; ++j) {
       TriangleHit expected;
       const bool hit =
@@ -133,14 +140,23 @@ TEST(TriangleBlocks, EverySlotAnswersWhatTheScalarTestAnswersBitForBit) {
   EXPECT_GT(hits_seen, 5000);  // the rays were aimed: most rounds hit something
 }
 
-TEST(TriangleBlocks, EmptySlotsAreNeverHit) {
+TEST(TriangleBlocks, SlotsOutsideTheLeafAreNeverHit) {
   if (!sphere_lanes_vectorised()) GTEST_SKIP() << "the CPU has no AVX2";
-  const TriangleBlock block = block_of({Triangle{{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}}});
-  // Through the triangle, and through the origin where the empty slots' vertices all sit.
+  // Four copies of one triangle, of which the leaf owns the first one, two or three.
+  const Triangle tri{{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}};
+  const Rows rows = rows_of({tri, tri, tri, tri});
+  const Ray ray{{0.0f, -0.5f, -1.0f}, 0.0f, {0.0f, 0.0f, 1.0f}, std::numeric_limits<float>::infinity()};
+  for (unsigned slots : {0x1u, 0x3u, 0x7u, 0xFu}) {
+    BlockHits hits;
+    EXPECT_EQ(test_block(rows, slots, ray, ray.tfar, hits), slots);
+  }
+  // Zero columns (the padding past the last reference, and references that are not triangles)
+  // are degenerate: never hit, even by a ray through the origin where their vertices sit.
+  const Rows padded = rows_of({tri});
   for (const Vec3 org : {Vec3(0.0f, 0.0f, -1.0f), Vec3(0.0f, -0.5f, -1.0f)}) {
     BlockHits hits;
-    const Ray ray{org, 0.0f, {0.0f, 0.0f, 1.0f}, std::numeric_limits<float>::infinity()};
-    EXPECT_EQ(test_block(block, ray, ray.tfar, hits), 1u);
+    const Ray through{org, 0.0f, {0.0f, 0.0f, 1.0f}, std::numeric_limits<float>::infinity()};
+    EXPECT_EQ(test_block(padded, 0xFu, through, through.tfar, hits), 1u);
   }
 }
 
@@ -200,38 +216,43 @@ TEST(TriangleBlocks, TraversalAnswersTheSameWithAndWithoutBlocks) {
   }
 }
 
-TEST(TriangleBlocks, TriangleLeavesHaveTheirReferencesInOrderAndOthersNone) {
+TEST(TriangleBlocks, RowsHoldEveryReferencesVerticesAndMarkTriangleLeaves) {
   const RenderScene scene = test::random_mixed_scene(5, 300, 3000, 0);
   const Bvh bvh = build_bvh(scene.top, scene.prototype_bounds());
   const TriangleLeaves leaves = build_triangle_leaves(scene.top, bvh);
-  ASSERT_EQ(leaves.first_block.size(), bvh.nodes.size());
-  int with_blocks = 0, without = 0;
+  ASSERT_EQ(leaves.triangle_leaf.size(), bvh.nodes.size());
+  ASSERT_EQ(leaves.stride, bvh.refs.size() + kBlockWidth - 1);
+  for (std::size_t r = 0; r < leaves.stride; ++r) {
+    Vec3 p[3] = {};
+    if (r < bvh.refs.size()) {
+      if (const auto* mesh = std::get_if<TriangleMesh>(&scene.top.geometries[bvh.refs[r].geom])) {
+        const TriangleIndices& tri = mesh->triangles[bvh.refs[r].prim];
+        p[0] = mesh->vertex(tri.v0);
+        p[1] = mesh->vertex(tri.v1);
+        p[2] = mesh->vertex(tri.v2);
+      }
+    }
+    for (int vertex = 0; vertex < 3; ++vertex)
+      for (int c = 0; c < 3; ++c)
+        ASSERT_TRUE(
+            same_bits(leaves.column(static_cast<std::uint32_t>(r))[(3 * vertex + c) * leaves.stride], p[vertex][c]))
+            << "reference " << r << " vertex " << vertex;
+  }
+  int marked = 0, unmarked = 0;
   for (std::size_t n = 0; n < bvh.nodes.size(); ++n) {
     const BvhNode& node = bvh.nodes[n];
     bool triangles_only = node.is_leaf();
     for (std::uint32_t i = 0; node.is_leaf() && i < node.count; ++i)
       triangles_only &= kind_of(scene.top.geometries[bvh.refs[node.index + i].geom]) == GeometryKind::kTriangles;
-    if (!triangles_only) {
-      EXPECT_EQ(leaves.first_block[n], TriangleLeaves::kNoBlocks);
-      without += node.is_leaf();
-      continue;
-    }
-    ++with_blocks;
-    ASSERT_NE(leaves.first_block[n], TriangleLeaves::kNoBlocks);
-    for (std::uint32_t i = 0; i < (node.count + 3u) / 4u * 4u; ++i) {
-      const TriangleBlock& block = leaves.blocks[leaves.first_block[n] + i / 4];
-      const std::uint32_t expected_geom = i < node.count ? bvh.refs[node.index + i].geom : kInvalidId;
-      const std::uint32_t expected_prim = i < node.count ? bvh.refs[node.index + i].prim : kInvalidId;
-      EXPECT_EQ(block.geom[i % 4], expected_geom);
-      EXPECT_EQ(block.prim[i % 4], expected_prim);
-      if (i >= node.count) continue;
-      const TriangleMesh& mesh = *std::get_if<TriangleMesh>(&scene.top.geometries[expected_geom]);
-      const Vec3 v0 = mesh.vertex(mesh.triangles[expected_prim].v0);
-      EXPECT_TRUE(same_bits(block.v0[0][i % 4], v0.x) && same_bits(block.v0[2][i % 4], v0.z));
-    }
+    EXPECT_EQ(leaves.triangle_leaf[n] != 0, triangles_only) << "node " << n;
+    marked += triangles_only;
+    unmarked += node.is_leaf() && !triangles_only;
   }
-  EXPECT_GT(with_blocks, 10);
-  EXPECT_GT(without, 10);
+  EXPECT_GT(marked, 10);
+  EXPECT_GT(unmarked, 10);
+  const TriangleLeaves disabled = build_triangle_leaves(scene.top, bvh, false);
+  EXPECT_TRUE(disabled.vertices.empty());
+  EXPECT_EQ(std::count(disabled.triangle_leaf.begin(), disabled.triangle_leaf.end(), 1), 0);
 }
 
 }  // namespace triangle_blocks_test
