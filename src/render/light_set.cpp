@@ -141,6 +141,12 @@ void LightSet::add_emitters(const RenderScene& scene, const Group& group, std::u
   }
 }
 
+bool LightSet::reads_pick_number() const {
+  return std::any_of(linked_.begin(), linked_.end(), [](const Linked& l) { return l.picker.picks_by_number(); });
+}
+
+bool LightSet::reads_point_numbers() const { return std::any_of(lights_.begin(), lights_.end(), samples_by_number); }
+
 std::uint32_t LightSet::light_of_hit(const Hit& hit) const {
   const auto found = light_of_primitive_.find(geometry_key(hit.inst_id, hit.geom_id));
   return found == light_of_primitive_.end() || hit.prim_id >= found->second.size() ? kInvalidId

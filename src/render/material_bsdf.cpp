@@ -1,5 +1,7 @@
 #include "rtpro/render/material_bsdf.h"
 
+#include "rtpro/core/overloaded.h"
+
 #include <variant>
 
 namespace rtpro {
@@ -15,6 +17,15 @@ void material_bsdf(const Material& material, const SurfacePoint& point, const Te
   // outside rather than the side the ray came from.
   const bool outward = std::visit([](const auto& b) { return b.needs_outward_frame(); }, out.bsdf);
   out.frame = ShadingFrame::from_normal(!outward || point.front_face ? normal : -normal);
+}
+
+bool reads_lobe_choice(const Material& material) {
+  // Each kind by name, so that a new one does not compile until it says.
+  return std::visit(
+      Overloaded{[&](const PhongSurface&) { return material.dielectric.has_value(); },
+                 [](const DiffuseSurface&) { return false; }, [](const ConductorSurface&) { return true; },
+                 [](const DielectricSurface&) { return true; }, [](const PrincipledSurface&) { return true; }},
+      material.model);
 }
 
 }  // namespace rtpro

@@ -193,11 +193,27 @@ class PathTracer {
   PathLightSample light_sample_;
 };
 
+// Which of a vertex's random numbers the scene reads: the choices when its lights need picking or
+// a material chooses among lobes, the light point when a light has an extent. Each value is a
+// function of its own dimension, so leaving out a draw nothing reads changes no other value.
+struct VertexDraws {
+  bool choices;
+  bool light_point;
+};
+
+VertexDraws vertex_draws(const RenderScene& scene, const LightSet& lights) {
+  const bool lobes = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                 [](const Material& m) { return reads_lobe_choice(m); });
+  return {lobes || lights.reads_pick_number(), lights.reads_point_numbers()};
+}
+
 // The random numbers of the vertices the generation's rays reach (all at bounce `bounce`), drawn
 // for every path together: the same values a draw per vertex gives, bit for bit, but a batch lets
-// the sampler hash many keys side by side. A path that reaches no surface leaves its draw unused.
+// the sampler hash many keys side by side. A path that reaches no surface leaves its draw unused,
+// and the fields `needed` leaves out keep whatever they held.
 template <class Sampler>
-void draw_vertex_samples(const Sampler& sampler, std::span<const SampleKey> keys, int bounce, PathWorkspace& ws) {
+void draw_vertex_samples(const Sampler& sampler, std::span<const SampleKey> keys, int bounce, VertexDraws needed,
+                         PathWorkspace& ws) {
   const std::size_t n = ws.paths.size();
   ws.path_keys.resize(n);
   for (std::size_t i = 0; i < n; ++i) ws.path_keys[i] = keys[ws.paths[i].sample];
@@ -208,8 +224,8 @@ void draw_vertex_samples(const Sampler& sampler, std::span<const SampleKey> keys
     for (std::size_t i = 0; i < n; ++i) ws.vertex_samples[i].*field = ws.draws[i];
   };
   // The light's pick and the BSDF's lobe choice as one 2D sample: one draw instead of two.
-  draw(path_dimension::kChoices, &VertexSamples::choices);
-  draw(path_dimension::kLightPoint, &VertexSamples::light_point);
+  if (needed.choices) draw(path_dimension::kChoices, &VertexSamples::choices);
+  if (needed.light_point) draw(path_dimension::kLightPoint, &VertexSamples::light_point);
   draw(path_dimension::kBsdfDirection, &VertexSamples::bsdf_direction);
   if (bounce < kRouletteStart) return;
   ws.roulette_draws.resize(n);
@@ -219,7 +235,8 @@ void draw_vertex_samples(const Sampler& sampler, std::span<const SampleKey> keys
 
 // The same for the Sobol sampler, which draws all of a vertex's dimensions in one pass over the
 // keys (hashing each key once) and writes them straight into the VertexSamples.
-void draw_vertex_samples(const SobolSampler& sampler, std::span<const SampleKey> keys, int bounce, PathWorkspace& ws) {
+void draw_vertex_samples(const SobolSampler& sampler, std::span<const SampleKey> keys, int bounce, VertexDraws needed,
+                         PathWorkspace& ws) {
   const std::size_t n = ws.paths.size();
   if (n == 0) return;  // the draws below point at the first record
   ws.path_keys.resize(n);
@@ -231,12 +248,14 @@ void draw_vertex_samples(const SobolSampler& sampler, std::span<const SampleKey>
                                         sizeof(VertexSamples)};
   };
   // The light's pick and the BSDF's lobe choice as one 2D sample: one draw instead of two.
-  const SobolSampler::Draw<Sample2D> pairs[] = {pair(path_dimension::kChoices, &VertexSamples::choices),
-                                                pair(path_dimension::kLightPoint, &VertexSamples::light_point),
-                                                pair(path_dimension::kBsdfDirection, &VertexSamples::bsdf_direction)};
+  SobolSampler::Draw<Sample2D> pairs[3];
+  std::size_t pair_count = 0;
+  if (needed.choices) pairs[pair_count++] = pair(path_dimension::kChoices, &VertexSamples::choices);
+  if (needed.light_point) pairs[pair_count++] = pair(path_dimension::kLightPoint, &VertexSamples::light_point);
+  pairs[pair_count++] = pair(path_dimension::kBsdfDirection, &VertexSamples::bsdf_direction);
   const SobolSampler::Draw<float> roulette[] = {
       {sample_dimension::at_bounce(bounce, path_dimension::kRoulette), &first->roulette, sizeof(VertexSamples)}};
-  sampler.sample(ws.path_keys, pairs,
+  sampler.sample(ws.path_keys, {pairs, pair_count},
                  bounce < kRouletteStart ? std::span<const SobolSampler::Draw<float>>() : roulette);
 }
 
@@ -262,6 +281,7 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
   }
   counts[RayKind::kCamera] += camera_rays.size();
   PathTracer tracer(scene, lights, results, ws, textures);
+  const VertexDraws needed = vertex_draws(scene, lights);
   for (int generation = 0; !ws.paths.empty(); ++generation) {
     ws.hits.resize(ws.rays.size());
     backend.intersect(ws.rays, ws.hits, generation == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
@@ -272,7 +292,7 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
     ws.shadow_lights.clear();
     ws.surfaces.resize(ws.rays.size());
     make_surfaces(scene, ws.rays, ws.hits, ws.surfaces);
-    if (generation < scene.render.max_depth) draw_vertex_samples(sampler, keys, generation, ws);
+    if (generation < scene.render.max_depth) draw_vertex_samples(sampler, keys, generation, needed, ws);
     for (std::size_t i = 0; i < ws.paths.size(); ++i)
       tracer.extend(ws.paths[i], ws.rays[i], ws.hits[i], ws.surfaces[i], ws.vertex_samples[i]);
 

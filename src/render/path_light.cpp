@@ -202,6 +202,18 @@ struct MetByRays {
   bool operator()(const EnvironmentRef&) const { return false; }
 };
 
+// The lights whose sample is a point chosen by the sample's numbers.
+struct SamplesByNumber {
+  bool operator()(const PointLight&) const { return false; }
+  bool operator()(const SpotLight&) const { return false; }
+  bool operator()(const DirectionalLight&) const { return false; }
+  bool operator()(const SphereLight&) const { return true; }
+  bool operator()(const QuadLight&) const { return true; }
+  bool operator()(const EmissiveTriangle&) const { return true; }
+  bool operator()(const EmissiveSphere&) const { return true; }
+  bool operator()(const EnvironmentRef&) const { return true; }
+};
+
 // Where `ray` meets one of those before t_max (`seen`: the radiance it shows there).
 struct Meeting {
   const Ray& ray;
@@ -242,6 +254,8 @@ float path_light_pdf(const PathLight& light, const Vec3& from, const Vec3& on_li
 }
 
 bool met_by_rays(const PathLight& light) { return std::visit(MetByRays{}, light); }
+
+bool samples_by_number(const PathLight& light) { return std::visit(SamplesByNumber{}, light); }
 
 std::optional<float> meet_path_light(const PathLight& light, const Ray& ray, float t_max, Color& seen) {
   return std::visit(Meeting{ray, t_max, seen}, light);

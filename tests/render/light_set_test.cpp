@@ -11,6 +11,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
 
 namespace rtpro {
 namespace light_set_test {
@@ -97,6 +98,59 @@ TEST(LightSet, PdfOfASphereLightIntegratesToOne) {
     }
     integral *= 2.0 * std::numbers::pi * (1.0 - cos_cone) / kDirections;
     EXPECT_NEAR(integral, 1.0, 0.01);
+  }
+}
+
+// reads_pick_number and reads_point_numbers may say "no" only when sample() does not depend on
+// that number: the path integrator then leaves it undrawn.
+RenderScene scene_with_lights(const std::string& lights) {
+  return build_render_scene(parse_scene_text(R"(
+rtpro: 1
+camera: {position: [0, 1, -5], look_at: [0, 1, 0]}
+lights:
+)" + lights + R"(
+world:
+  - {type: sphere, center: [0, 0, 0], radius: 0.5}
+)",
+                                             "lights.yaml"));
+}
+
+bool sample_depends_on(const LightSet& lights, bool vary_pick, bool vary_point) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  for (int i = 0; i < 2000; ++i) {
+    // Above and below the lights, on both sides of the one-sided quad.
+    const Vec3 from(unit(rng) * 12.0f - 6.0f, unit(rng) * 12.0f - 6.0f, unit(rng) * 12.0f - 6.0f);
+    const float pick = unit(rng);
+    const Sample2D u{unit(rng), unit(rng)};
+    const auto a = lights.sample(from, pick, u);
+    const auto b = lights.sample(from, vary_pick ? unit(rng) : pick, vary_point ? Sample2D{unit(rng), unit(rng)} : u);
+    if (a.has_value() != b.has_value()) return true;
+    if (a && (a->light != b->light || a->direction.x != b->direction.x || a->direction.y != b->direction.y ||
+              a->distance != b->distance || a->pdf != b->pdf))
+      return true;
+  }
+  return false;
+}
+
+TEST(LightSet, SaysWhichOfItsRandomNumbersASampleReads) {
+  const std::string point = "  - {type: point, position: [0, 3, 0], intensity: 5}\n";
+  const std::string spot = "  - {type: spot, position: [1, 3, 0], direction: [0, -1, 0], intensity: 5}\n";
+  const std::string sun = "  - {type: directional, direction: [0, -1, 0.2], intensity: 1}\n";
+  const std::string quad = "  - {type: quad, position: [0, 4, 0], edge1: [1, 0, 0], edge2: [0, 0, -1], intensity: 4}\n";
+  struct Case {
+    std::string lights;
+    bool pick, point;
+  };
+  for (const Case& c :
+       {Case{point, false, false}, Case{spot, false, false}, Case{sun, false, false},
+        Case{point + spot + sun, true, false}, Case{quad, false, true}, Case{point + quad, true, true}}) {
+    const RenderScene scene = scene_with_lights(c.lights);
+    const LightSet lights(scene);
+    EXPECT_EQ(lights.reads_pick_number(), c.pick) << c.lights;
+    EXPECT_EQ(lights.reads_point_numbers(), c.point) << c.lights;
+    EXPECT_EQ(sample_depends_on(lights, true, false), c.pick) << c.lights;
+    EXPECT_EQ(sample_depends_on(lights, false, true), c.point) << c.lights;
   }
 }
 

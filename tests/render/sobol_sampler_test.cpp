@@ -172,7 +172,9 @@ TEST(SobolSampler, DrawingManyDimensionsIntoRecordsIsDrawingEach) {
       ASSERT_TRUE(same(records[i].single, sampler.sample_1d(key.pixel_key, key.sample_index, 43))) << i;
       ASSERT_EQ(records[i].untouched, -1.0f);
     }
-    if (count == 0) EXPECT_EQ(records[0].a.x, -1.0f);
+    if (count == 0) {
+      EXPECT_EQ(records[0].a.x, -1.0f);
+    }
   }
 }
 

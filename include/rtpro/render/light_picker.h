@@ -48,6 +48,8 @@ class LightPicker {
     if (p) out = *p;
     return p.has_value();
   }
+  // Whether pick() reads its `u`: not for one member (nor none).
+  bool picks_by_number() const { return !single_ && !members_.empty(); }
   // The probability pick() chooses light `light` (the set's index) at `point`; 0 for lights it
   // does not hold.
   float probability(std::uint32_t light, const Vec3& point) const;

@@ -62,6 +62,11 @@ class LightSet {
     return true;
   }
 
+  // Whether sample() reads its u_pick (some group's lights are more than one), and its u (some
+  // light has an extent): a vertex's random numbers that nothing reads need not be drawn.
+  bool reads_pick_number() const;
+  bool reads_point_numbers() const;
+
   // The light that an emissive surface hit is (kInvalidId when it is not sampled).
   std::uint32_t light_of_hit(const Hit& hit) const;
   // The pdf sample() has of reaching `on_light` on light `index` from `from` (solid angle, pick

@@ -101,6 +101,9 @@ float path_light_pdf(const PathLight& light, const Vec3& from, const Vec3& on_li
 // Whether camera and BSDF rays can meet the light itself (sphere and quad lights; the backend
 // finds the emissive surfaces), and where `ray` meets it before t_max (`seen`: its radiance there).
 bool met_by_rays(const PathLight& light);
+// Whether sample_path_light reads its `u` (lights with an extent; a point, spot or directional
+// light has one direction to give, whatever `u`).
+bool samples_by_number(const PathLight& light);
 std::optional<float> meet_path_light(const PathLight& light, const Ray& ray, float t_max, Color& seen);
 
 }  // namespace rtpro
