@@ -17,16 +17,6 @@ float DiffuseBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
   return cosine_hemisphere_pdf(abs_cos_theta(wi));
 }
 
-std::optional<BsdfSample> DiffuseBsdf::sample(const Vec3& wo, float /*u_lobe*/, Sample2D u) const {
-  if (wo.z == 0.0f) return std::nullopt;
-  Vec3 wi = sample_cosine_hemisphere(u);
-  if (wo.z < 0.0f) wi.z = -wi.z;
-  const float pdf = cosine_hemisphere_pdf(abs_cos_theta(wi));
-  // The disk's rim maps to the horizon, where the direction carries nothing.
-  if (pdf == 0.0f) return std::nullopt;
-  return BsdfSample{reflectance * std::numbers::inv_pi_v<float>, wi, pdf, false, false};
-}
-
 Vec3 bsdf_from(const DiffuseSurface&, const Material& material, const SurfacePoint& point,
                const TextureLookup* textures, SurfaceBsdf& out) {
   return lambert_surface(evaluate(material.color, point, textures), point.shading_normal, out);

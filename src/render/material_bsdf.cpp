@@ -19,12 +19,12 @@ void material_bsdf(const Material& material, const SurfacePoint& point, const Te
   out.frame = ShadingFrame::from_normal(!outward || point.front_face ? normal : -normal);
 }
 
-bool reads_lobe_choice(const Material& material) {
+bool makes_lambert_bsdf(const Material& material) {
   // Each kind by name, so that a new one does not compile until it says.
   return std::visit(
-      Overloaded{[&](const PhongSurface&) { return material.dielectric.has_value(); },
-                 [](const DiffuseSurface&) { return false; }, [](const ConductorSurface&) { return true; },
-                 [](const DielectricSurface&) { return true; }, [](const PrincipledSurface&) { return true; }},
+      Overloaded{[&](const PhongSurface&) { return !material.dielectric.has_value(); },
+                 [](const DiffuseSurface&) { return true; }, [](const ConductorSurface&) { return false; },
+                 [](const DielectricSurface&) { return false; }, [](const PrincipledSurface&) { return false; }},
       material.model);
 }
 

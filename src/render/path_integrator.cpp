@@ -1,6 +1,7 @@
 #include "rtpro/render/path_integrator.h"
 
 #include "append_ray.h"
+#include "cosine_lanes.h"
 #include "rtpro/render/beer_lambert.h"
 #include "rtpro/render/light_linking.h"
 #include "rtpro/render/material_bsdf.h"
@@ -34,11 +35,21 @@ constexpr float kShadowEpsilon = 1e-4f;
 // No channel positive (NaN counts as nothing).
 bool carries_no_light(const Color& c) { return !(c.x > 0.0f || c.y > 0.0f || c.z > 0.0f); }
 
+// bsdf_sample, a Lambert surface's from its direction worked out beforehand.
+std::optional<BsdfSample> sample_bsdf(const Bsdf& bsdf, const Vec3& wo, const VertexSamples& u,
+                                      bool cosine_directions) {
+  if (const auto* lambert = std::get_if<DiffuseBsdf>(&bsdf); lambert && cosine_directions)
+    return lambert->sample_toward(wo, u.cosine_direction);
+  return bsdf_sample(bsdf, wo, u.choices.y, u.bsdf_direction);
+}
+
 class PathTracer {
  public:
+  // `cosine_directions`: the vertices' records hold their Lambert directions (VertexDraws).
   PathTracer(const RenderScene& scene, const LightSet& lights, std::span<SampleResult> results, PathWorkspace& ws,
-             const TextureLookup* textures)
-      : scene_(scene), lights_(lights), results_(results), ws_(ws), textures_(textures) {}
+             const TextureLookup* textures, bool cosine_directions)
+      : scene_(scene), lights_(lights), results_(results), ws_(ws), textures_(textures),
+        cosine_directions_(cosine_directions) {}
 
   // Everything a path does at the surface (or miss) its ray reached: emission, then the light
   // sample (queued as a shadow ray), then the BSDF sample (queued as the path's next ray).
@@ -88,7 +99,7 @@ class PathTracer {
         lights_.sample(sp.position, u.choices.x, u.light_point, textures_, group, light_sample_))
       queue_shadow_ray(path.sample, origins, surface, wo, light_sample_, beta);
 
-    const std::optional<BsdfSample> bs = bsdf_sample(surface.bsdf, wo, u.choices.y, u.bsdf_direction);
+    const std::optional<BsdfSample> bs = sample_bsdf(surface.bsdf, wo, u, cosine_directions_);
     if (!bs || !(bs->pdf > 0.0f) || carries_no_light(bs->f)) return;
     Color next_beta = beta * bs->f * (std::fabs(bs->wi.z) / bs->pdf);
     if (path.bounce >= kRouletteStart) {
@@ -188,6 +199,7 @@ class PathTracer {
   std::span<SampleResult> results_;
   PathWorkspace& ws_;
   const TextureLookup* textures_;
+  bool cosine_directions_;
   // The current vertex's BSDF and light sample, filled in place (material_bsdf, LightSet::sample).
   SurfaceBsdf surface_;
   PathLightSample light_sample_;
@@ -196,15 +208,27 @@ class PathTracer {
 // Which of a vertex's random numbers the scene reads: the choices when its lights need picking or
 // a material chooses among lobes, the light point when a light has an extent. Each value is a
 // function of its own dimension, so leaving out a draw nothing reads changes no other value.
+// The Lambert surfaces' cosine-weighted directions are worked out for every vertex at once
+// (cosine_lanes.h) when some material makes them.
 struct VertexDraws {
   bool choices;
   bool light_point;
+  bool cosine_directions;
 };
 
 VertexDraws vertex_draws(const RenderScene& scene, const LightSet& lights) {
-  const bool lobes = std::any_of(scene.materials.begin(), scene.materials.end(),
-                                 [](const Material& m) { return reads_lobe_choice(m); });
-  return {lobes || lights.reads_pick_number(), lights.reads_point_numbers()};
+  const auto any_material = [&](bool (*which)(const Material&)) {
+    return std::any_of(scene.materials.begin(), scene.materials.end(), which);
+  };
+  return {any_material(reads_lobe_choice) || lights.reads_pick_number(), lights.reads_point_numbers(),
+          any_material(makes_lambert_bsdf)};
+}
+
+// sample_cosine_hemisphere of every vertex's BSDF numbers, into its record.
+void draw_cosine_directions(std::vector<VertexSamples>& samples) {
+  if (samples.empty()) return;
+  sample_cosine_hemispheres(samples.size(), &samples.front().bsdf_direction, &samples.front().cosine_direction,
+                            sizeof(VertexSamples));
 }
 
 // The random numbers of the vertices the generation's rays reach (all at bounce `bounce`), drawn
@@ -227,6 +251,7 @@ void draw_vertex_samples(const Sampler& sampler, std::span<const SampleKey> keys
   if (needed.choices) draw(path_dimension::kChoices, &VertexSamples::choices);
   if (needed.light_point) draw(path_dimension::kLightPoint, &VertexSamples::light_point);
   draw(path_dimension::kBsdfDirection, &VertexSamples::bsdf_direction);
+  if (needed.cosine_directions) draw_cosine_directions(ws.vertex_samples);
   if (bounce < kRouletteStart) return;
   ws.roulette_draws.resize(n);
   sampler.sample_1d(ws.path_keys, sample_dimension::at_bounce(bounce, path_dimension::kRoulette), ws.roulette_draws);
@@ -257,6 +282,7 @@ void draw_vertex_samples(const SobolSampler& sampler, std::span<const SampleKey>
       {sample_dimension::at_bounce(bounce, path_dimension::kRoulette), &first->roulette, sizeof(VertexSamples)}};
   sampler.sample(ws.path_keys, {pairs, pair_count},
                  bounce < kRouletteStart ? std::span<const SobolSampler::Draw<float>>() : roulette);
+  if (needed.cosine_directions) draw_cosine_directions(ws.vertex_samples);
 }
 
 template <class Sampler>
@@ -280,8 +306,8 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
     path.group = 0;
   }
   counts[RayKind::kCamera] += camera_rays.size();
-  PathTracer tracer(scene, lights, results, ws, textures);
   const VertexDraws needed = vertex_draws(scene, lights);
+  PathTracer tracer(scene, lights, results, ws, textures, needed.cosine_directions);
   for (int generation = 0; !ws.paths.empty(); ++generation) {
     ws.hits.resize(ws.rays.size());
     backend.intersect(ws.rays, ws.hits, generation == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);

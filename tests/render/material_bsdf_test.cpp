@@ -79,5 +79,17 @@ TEST(MaterialBsdf, OnlyMaterialsWhoseSampleIgnoresTheLobeChoiceSayTheyDoNotReadI
   }
 }
 
+TEST(MaterialBsdf, SaysWhichMaterialsMakeLambertSurfaces) {
+  const RenderScene scene = material_scene();
+  SurfacePoint point{};
+  point.geometric_normal = point.shading_normal = {0.0f, 0.0f, 1.0f};
+  point.front_face = true;
+  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+    const SurfaceBsdf surface = material_bsdf(scene.materials[m], point, nullptr);
+    EXPECT_EQ(makes_lambert_bsdf(scene.materials[m]), std::holds_alternative<DiffuseBsdf>(surface.bsdf))
+        << scene.material_names[m];
+  }
+}
+
 }  // namespace material_bsdf_test
 }  // namespace rtpro

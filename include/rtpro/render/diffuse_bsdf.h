@@ -2,6 +2,7 @@
 // Lambertian reflection: the same radiance towards every direction on the side it is lit from.
 #include "rtpro/render/bsdf_sample.h"
 
+#include <numbers>
 #include <optional>
 
 namespace rtpro {
@@ -15,7 +16,19 @@ struct DiffuseBsdf {
   Color eval(const Vec3& wo, const Vec3& wi) const;
   float pdf(const Vec3& wo, const Vec3& wi) const;
   // Cosine-weighted on wo's side, so f·cos/pdf is the reflectance itself. u_lobe is unused.
-  std::optional<BsdfSample> sample(const Vec3& wo, float u_lobe, Sample2D u) const;
+  std::optional<BsdfSample> sample(const Vec3& wo, float /*u_lobe*/, Sample2D u) const {
+    return sample_toward(wo, sample_cosine_hemisphere(u));
+  }
+  // The same sample from its direction on the +z side, sample_cosine_hemisphere(u), worked out
+  // beforehand (the path integrator does so for a whole generation at once).
+  std::optional<BsdfSample> sample_toward(const Vec3& wo, Vec3 cosine_direction) const {
+    if (wo.z == 0.0f) return std::nullopt;
+    if (wo.z < 0.0f) cosine_direction.z = -cosine_direction.z;
+    const float pdf = cosine_hemisphere_pdf(abs_cos_theta(cosine_direction));
+    // The disk's rim maps to the horizon, where the direction carries nothing.
+    if (pdf == 0.0f) return std::nullopt;
+    return BsdfSample{reflectance * std::numbers::inv_pi_v<float>, cosine_direction, pdf, false, false};
+  }
 };
 
 struct DiffuseSurface;  // scene/diffuse_material.h

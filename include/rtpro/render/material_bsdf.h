@@ -27,9 +27,12 @@ inline Vec3 lambert_surface(const Color& reflectance, const Vec3& normal, Surfac
   return normal;
 }
 
-// Whether the BSDF the material makes reads bsdf_sample's u_lobe: not a Lambert surface's, whose
-// one lobe needs no choosing (a vertex's random numbers that nothing reads need not be drawn).
-bool reads_lobe_choice(const Material& material);
+// Whether the material's BSDF is a DiffuseBsdf (lambert_surface) wherever it is hit.
+bool makes_lambert_bsdf(const Material& material);
+// Whether the BSDF the material makes reads bsdf_sample's u_lobe: all but a Lambert surface's,
+// whose one lobe needs no choosing (a vertex's random numbers that nothing reads need not be
+// drawn).
+inline bool reads_lobe_choice(const Material& material) { return !makes_lambert_bsdf(material); }
 
 // `textures`: the scene's image textures, opened, for the colour textures the material reads.
 // Written into `out`, whose previous contents do not matter.

@@ -69,6 +69,8 @@ class PathWorkspace {
     Sample2D light_point;     // where on the light
     Sample2D bsdf_direction;  // the BSDF's direction within its lobe
     float roulette;           // from kRouletteStart on: whether the path goes on
+    // sample_cosine_hemisphere(bsdf_direction), drawn with it when the scene has Lambert surfaces.
+    Vec3 cosine_direction;
   };
   std::vector<SampleKey> path_keys;  // per path, its camera sample
   std::vector<Sample2D> draws;
