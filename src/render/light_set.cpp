@@ -1,5 +1,7 @@
 #include "rtpro/render/light_set.h"
 
+#include "point_light_batch.h"
+
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
@@ -138,6 +140,28 @@ void LightSet::add_emitters(const RenderScene& scene, const Group& group, std::u
       }
       case GeometryKind::kInstance: break;  // the top level's instances are visited by the constructor
     }
+  }
+}
+
+std::optional<LightSet::LonePointLight> LightSet::lone_point_light() const {
+  if (linked_.size() != 1 || linked_.front().picker.empty() || linked_.front().picker.picks_by_number())
+    return std::nullopt;
+  LightPicker::Pick pick;
+  // A picker that reads no number picks the same light from every point.
+  if (!linked_.front().picker.pick(Vec3(0.0f), 0.0f, pick)) return std::nullopt;
+  const auto* point = std::get_if<PointLight>(&lights_[pick.light]);
+  if (point == nullptr) return std::nullopt;
+  return LonePointLight{point, pick.light, pick.pmf};
+}
+
+void LightSet::sample_lone_point_light(std::span<const SurfacePoint> points, std::span<PathLightSample> out,
+                                       std::span<std::uint8_t> found) const {
+  const LonePointLight lone = *lone_point_light();
+  sample_point_light_batch(*lone.light, points, out, found);
+  // LightSet::sample's own finishing touches to a point light's sample.
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    out[i].pdf *= lone.pmf;
+    out[i].light = lone.index;
   }
 }
 

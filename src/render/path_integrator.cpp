@@ -45,17 +45,21 @@ std::optional<BsdfSample> sample_bsdf(const Bsdf& bsdf, const Vec3& wo, const Ve
 
 class PathTracer {
  public:
-  // `cosine_directions`: the vertices' records hold their Lambert directions (VertexDraws).
+  // `cosine_directions`: the vertices' records hold their Lambert directions (VertexDraws);
+  // `lone_point_light`: the workspace holds their light samples.
   PathTracer(const RenderScene& scene, const LightSet& lights, std::span<SampleResult> results, PathWorkspace& ws,
-             const TextureLookup* textures, bool cosine_directions)
+             const TextureLookup* textures, bool cosine_directions, bool lone_point_light)
       : scene_(scene), lights_(lights), results_(results), ws_(ws), textures_(textures),
-        cosine_directions_(cosine_directions) {}
+        cosine_directions_(cosine_directions), lone_point_light_(lone_point_light) {}
 
   // Everything a path does at the surface (or miss) its ray reached: emission, then the light
   // sample (queued as a shadow ray), then the BSDF sample (queued as the path's next ray).
   // `sp` is the surface of a valid hit (make_surfaces), unread otherwise.
   // `u` are the vertex's random numbers (draw_vertex_samples), read only below max_depth.
-  void extend(const Path& path, const Ray& ray, const Hit& hit, const SurfacePoint& sp, const VertexSamples& u) {
+  // `vertex`: the path's place in the generation, for the light samples made for all of it
+  // (PathWorkspace::light_samples).
+  void extend(std::size_t vertex, const Path& path, const Ray& ray, const Hit& hit, const SurfacePoint& sp,
+              const VertexSamples& u) {
     SampleResult& result = results_[path.sample];
     const float t_hit = hit.valid() ? hit.t : ray.tfar;
     if (const std::optional<LightSet::SeenLight> seen = lights_.seen_light(ray, t_hit, path.group)) {
@@ -95,9 +99,14 @@ class PathTracer {
     // The reciprocal length multiplied through: one division, not normalize's three.
     const Vec3 wo = surface.frame.to_local(ray.dir * (-1.0f / length(ray.dir)));
     SpawnOrigins origins(sp);
-    if (!delta && !lights_.empty(group) &&
-        lights_.sample(sp.position, u.choices.x, u.light_point, textures_, group, light_sample_))
-      queue_shadow_ray(path.sample, origins, surface, wo, light_sample_, beta);
+    if (!delta && !lights_.empty(group)) {
+      if (lone_point_light_) {
+        if (ws_.light_found[vertex])
+          queue_shadow_ray(path.sample, origins, surface, wo, ws_.light_samples[vertex], beta);
+      } else if (lights_.sample(sp.position, u.choices.x, u.light_point, textures_, group, light_sample_)) {
+        queue_shadow_ray(path.sample, origins, surface, wo, light_sample_, beta);
+      }
+    }
 
     const std::optional<BsdfSample> bs = sample_bsdf(surface.bsdf, wo, u, cosine_directions_);
     if (!bs || !(bs->pdf > 0.0f) || carries_no_light(bs->f)) return;
@@ -200,6 +209,7 @@ class PathTracer {
   PathWorkspace& ws_;
   const TextureLookup* textures_;
   bool cosine_directions_;
+  bool lone_point_light_;
   // The current vertex's BSDF and light sample, filled in place (material_bsdf, LightSet::sample).
   SurfaceBsdf surface_;
   PathLightSample light_sample_;
@@ -307,7 +317,8 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
   }
   counts[RayKind::kCamera] += camera_rays.size();
   const VertexDraws needed = vertex_draws(scene, lights);
-  PathTracer tracer(scene, lights, results, ws, textures, needed.cosine_directions);
+  const bool lone_point_light = lights.lone_point_light().has_value();
+  PathTracer tracer(scene, lights, results, ws, textures, needed.cosine_directions, lone_point_light);
   for (int generation = 0; !ws.paths.empty(); ++generation) {
     ws.hits.resize(ws.rays.size());
     backend.intersect(ws.rays, ws.hits, generation == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
@@ -318,9 +329,17 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
     ws.shadow_lights.clear();
     ws.surfaces.resize(ws.rays.size());
     make_surfaces(scene, ws.rays, ws.hits, ws.surfaces);
-    if (generation < scene.render.max_depth) draw_vertex_samples(sampler, keys, generation, needed, ws);
+    if (generation < scene.render.max_depth) {
+      draw_vertex_samples(sampler, keys, generation, needed, ws);
+      if (lone_point_light) {
+        // Made for every path, the ones that hit nothing included (their samples go unread).
+        ws.light_samples.resize(ws.paths.size());
+        ws.light_found.resize(ws.paths.size());
+        lights.sample_lone_point_light(ws.surfaces, ws.light_samples, ws.light_found);
+      }
+    }
     for (std::size_t i = 0; i < ws.paths.size(); ++i)
-      tracer.extend(ws.paths[i], ws.rays[i], ws.hits[i], ws.surfaces[i], ws.vertex_samples[i]);
+      tracer.extend(i, ws.paths[i], ws.rays[i], ws.hits[i], ws.surfaces[i], ws.vertex_samples[i]);
 
     ws.occluded.resize(ws.shadow_rays.size());
     occluded_with_shadow_linking(backend, scene.links, ws.shadow_rays, ws.shadow_lights, ws.occluded,

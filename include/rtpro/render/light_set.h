@@ -20,6 +20,7 @@
 #include "rtpro/render/light_picker.h"
 #include "rtpro/render/path_light.h"
 #include "rtpro/render/sampler.h"
+#include "rtpro/render/surface.h"
 #include "rtpro/scene/render_scene.h"
 
 #include <cstdint>
@@ -61,6 +62,21 @@ class LightSet {
     out.light = pick.light;
     return true;
   }
+
+  // The light sample() always picks when there is one and it is a point light (one light, or one
+  // set of them that gives all its power to one; no linking), its index and pick probability, or
+  // nothing: its samples then depend only on the points, and sample_lone_point_light makes them
+  // for many points at once.
+  struct LonePointLight {
+    const PointLight* light;
+    std::uint32_t index;
+    float pmf;
+  };
+  std::optional<LonePointLight> lone_point_light() const;
+  // sample(points[i].position, ...) into out[i] for every i, with found[i] whether there is one,
+  // the same bit for bit, four points at a time (point_light_batch.h). Requires lone_point_light().
+  void sample_lone_point_light(std::span<const SurfacePoint> points, std::span<PathLightSample> out,
+                               std::span<std::uint8_t> found) const;
 
   // Whether sample() reads its u_pick (some group's lights are more than one), and its u (some
   // light has an extent): a vertex's random numbers that nothing reads need not be drawn.

@@ -76,6 +76,10 @@ class PathWorkspace {
   std::vector<Sample2D> draws;
   std::vector<float> roulette_draws;
   std::vector<VertexSamples> vertex_samples;
+  // Per path, its vertex's light sample and whether there is one, made for the whole generation
+  // at once when the scene is lit by one point light (LightSet::lone_point_light).
+  std::vector<PathLightSample> light_samples;
+  std::vector<std::uint8_t> light_found;
   std::vector<ShadowQuery> shadow_queries;
   std::vector<Ray> shadow_rays;
   std::vector<std::uint32_t> shadow_lights;  // per shadow ray: the scene light it goes to, or kInvalidId
