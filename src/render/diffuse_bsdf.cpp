@@ -7,11 +7,6 @@
 
 namespace rtpro {
 
-Color DiffuseBsdf::eval(const Vec3& wo, const Vec3& wi) const {
-  if (!same_hemisphere(wo, wi)) return Color(0.0f);
-  return reflectance * std::numbers::inv_pi_v<float>;
-}
-
 float DiffuseBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
   if (!same_hemisphere(wo, wi)) return 0.0f;
   return cosine_hemisphere_pdf(abs_cos_theta(wi));

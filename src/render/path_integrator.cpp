@@ -35,6 +35,13 @@ constexpr float kShadowEpsilon = 1e-4f;
 // No channel positive (NaN counts as nothing).
 bool carries_no_light(const Color& c) { return !(c.x > 0.0f || c.y > 0.0f || c.z > 0.0f); }
 
+// bsdf_eval, a Lambert surface's inline: most vertices of most scenes are, and its f is a
+// comparison and a product, less than the call.
+Color eval_bsdf(const Bsdf& bsdf, const Vec3& wo, const Vec3& wi) {
+  if (const auto* lambert = std::get_if<DiffuseBsdf>(&bsdf)) return lambert->eval(wo, wi);
+  return bsdf_eval(bsdf, wo, wi);
+}
+
 // bsdf_sample, a Lambert surface's from its direction worked out beforehand.
 std::optional<BsdfSample> sample_bsdf(const Bsdf& bsdf, const Vec3& wo, const VertexSamples& u,
                                       bool cosine_directions) {
@@ -177,7 +184,7 @@ class PathTracer {
   void queue_shadow_ray(std::uint32_t sample, SpawnOrigins& origins, const SurfaceBsdf& surface, const Vec3& wo,
                         const PathLightSample& ls, const Color& beta) {
     const Vec3 wi = surface.frame.to_local(ls.direction);
-    const Color f = bsdf_eval(surface.bsdf, wo, wi) * std::fabs(wi.z);
+    const Color f = eval_bsdf(surface.bsdf, wo, wi) * std::fabs(wi.z);
     if (carries_no_light(f)) return;
     float weight = 1.0f;
     if (!ls.delta) {

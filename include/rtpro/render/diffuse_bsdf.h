@@ -13,7 +13,10 @@ struct DiffuseBsdf {
   bool is_delta() const { return false; }
   // It reflects on whichever side wo is: the frame's +z is the side the ray came from.
   bool needs_outward_frame() const { return false; }
-  Color eval(const Vec3& wo, const Vec3& wi) const;
+  Color eval(const Vec3& wo, const Vec3& wi) const {
+    if (!same_hemisphere(wo, wi)) return Color(0.0f);
+    return reflectance * std::numbers::inv_pi_v<float>;
+  }
   float pdf(const Vec3& wo, const Vec3& wi) const;
   // Cosine-weighted on wo's side, so f·cos/pdf is the reflectance itself. u_lobe is unused.
   std::optional<BsdfSample> sample(const Vec3& wo, float /*u_lobe*/, Sample2D u) const {
