@@ -2,11 +2,6 @@
 
 #include "rtpro/geometry/sphere_intersect.h"
 
-// GCC 12's AVX-512 conversion intrinsics start from _mm512_undefined_pd(), which its
-// -Wmaybe-uninitialized reports inside the intrinsics header (GCC bug 105593, fixed in GCC 13).
-#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ < 13
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
 #include <immintrin.h>
 
 namespace rtpro {
@@ -92,69 +87,6 @@ std::uint32_t scalar_lanes(const Vec3& center, float radius, const RayLanes& ray
   return static_cast<std::uint32_t>(hit_bits) << first;
 }
 
-// Eight lanes from `first` in AVX-512 registers: four_lanes's operations, in its order, twice as
-// wide. Float comparisons stay in AVX registers as in four_lanes.
-[[gnu::target("avx512f")]] std::uint32_t eight_lanes(const Vec3& center, float radius, const RayLanes& rays,
-                                                     std::uint32_t active, unsigned first, float* t_hit) {
-  const __m512d fx = _mm512_sub_pd(_mm512_cvtps_pd(_mm256_loadu_ps(rays.org_x + first)), _mm512_set1_pd(center.x));
-  const __m512d fy = _mm512_sub_pd(_mm512_cvtps_pd(_mm256_loadu_ps(rays.org_y + first)), _mm512_set1_pd(center.y));
-  const __m512d fz = _mm512_sub_pd(_mm512_cvtps_pd(_mm256_loadu_ps(rays.org_z + first)), _mm512_set1_pd(center.z));
-  const __m512d dx = _mm512_cvtps_pd(_mm256_loadu_ps(rays.dir_x + first));
-  const __m512d dy = _mm512_cvtps_pd(_mm256_loadu_ps(rays.dir_y + first));
-  const __m512d dz = _mm512_cvtps_pd(_mm256_loadu_ps(rays.dir_z + first));
-  const __m256 tnear = _mm256_loadu_ps(rays.tnear + first);
-  const __m256 tfar = _mm256_loadu_ps(rays.tfar + first);
-  const __m512d zero = _mm512_setzero_pd();
-
-  const __m512d a = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
-  const __m512d b = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(fx, dx), _mm512_mul_pd(fy, dy)), _mm512_mul_pd(fz, dz));
-  const __m512d r = _mm512_set1_pd(radius);
-  const __m512d r2 = _mm512_mul_pd(r, r);
-  const __m512d c = _mm512_sub_pd(
-      _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(fx, fx), _mm512_mul_pd(fy, fy)), _mm512_mul_pd(fz, fz)), r2);
-  const unsigned positive_a = _mm512_cmp_pd_mask(a, zero, _CMP_GT_OQ);
-  const unsigned leaving =
-      _mm512_cmp_pd_mask(c, zero, _CMP_GT_OQ) & _mm512_cmp_pd_mask(b, zero, _CMP_GT_OQ) &
-      static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(tnear, _mm256_setzero_ps(), _CMP_GE_OQ)));
-  unsigned live = positive_a & ~leaving & (active >> first & 0xFFu);
-  if (live == 0) return 0;
-  const __m512d s = _mm512_div_pd(b, a);
-  const __m512d lx = _mm512_sub_pd(fx, _mm512_mul_pd(s, dx));
-  const __m512d ly = _mm512_sub_pd(fy, _mm512_mul_pd(s, dy));
-  const __m512d lz = _mm512_sub_pd(fz, _mm512_mul_pd(s, dz));
-  const __m512d l2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(lx, lx), _mm512_mul_pd(ly, ly)), _mm512_mul_pd(lz, lz));
-  const __m512d disc = _mm512_mul_pd(a, _mm512_sub_pd(r2, l2));
-  live &= ~static_cast<unsigned>(_mm512_cmp_pd_mask(disc, zero, _CMP_LT_OQ));
-  if (live == 0) return 0;
-
-  const __m512i sign_bit = _mm512_set1_epi64(static_cast<long long>(0x8000000000000000ull));
-  const __m512d root = _mm512_sqrt_pd(disc);
-  const __m512d signed_root = _mm512_castsi512_pd(_mm512_or_si512(
-      _mm512_andnot_si512(sign_bit, _mm512_castpd_si512(root)), _mm512_and_si512(sign_bit, _mm512_castpd_si512(b))));
-  const __m512d q = _mm512_castsi512_pd(_mm512_xor_si512(_mm512_castpd_si512(_mm512_add_pd(b, signed_root)), sign_bit));
-  const __mmask8 q_zero = _mm512_cmp_pd_mask(q, zero, _CMP_EQ_OQ);
-  __m512d t0 = _mm512_mask_blend_pd(q_zero, _mm512_div_pd(q, a), zero);
-  __m512d t1 = _mm512_mask_blend_pd(q_zero, _mm512_div_pd(c, q), zero);
-  const __mmask8 swap = _mm512_cmp_pd_mask(t0, t1, _CMP_GT_OQ);
-  const __m512d lower = _mm512_mask_blend_pd(swap, t0, t1);
-  t1 = _mm512_mask_blend_pd(swap, t1, t0);
-  t0 = lower;
-
-  const __m256 near_root = _mm512_cvtpd_ps(t0);
-  const __m256 far_root = _mm512_cvtpd_ps(t1);
-  const __m256 near_ok =
-      _mm256_and_ps(_mm256_cmp_ps(near_root, tnear, _CMP_GT_OQ), _mm256_cmp_ps(near_root, tfar, _CMP_LE_OQ));
-  const __m256 far_ok =
-      _mm256_and_ps(_mm256_cmp_ps(far_root, tnear, _CMP_GT_OQ), _mm256_cmp_ps(far_root, tfar, _CMP_LE_OQ));
-  const __m256 t = _mm256_blendv_ps(far_root, near_root, near_ok);
-  const unsigned hit_bits = live & static_cast<unsigned>(_mm256_movemask_ps(_mm256_or_ps(near_ok, far_ok)));
-  alignas(32) float lanes[8];
-  _mm256_store_ps(lanes, t);
-  for (unsigned i = 0; i < 8; ++i)
-    if (hit_bits >> i & 1u) t_hit[first + i] = lanes[i];
-  return hit_bits << first;
-}
-
 [[gnu::target("avx2")]] std::uint32_t vector_lanes(const Vec3& center, float radius, const RayLanes& rays,
                                                    std::uint32_t active, float* t_hit) {
   std::uint32_t hits = 0;
@@ -163,29 +95,11 @@ std::uint32_t scalar_lanes(const Vec3& center, float radius, const RayLanes& ray
   return hits;
 }
 
-[[gnu::target("avx512f")]] std::uint32_t wide_vector_lanes(const Vec3& center, float radius, const RayLanes& rays,
-                                                           std::uint32_t active, float* t_hit) {
-  std::uint32_t hits = 0;
-  for (unsigned first = 0; first < rays.count; first += 8)
-    if ((active >> first) & 0xFFu) hits |= eight_lanes(center, radius, rays, active, first, t_hit);
-  return hits;
-}
-
 // __builtin_cpu_init first: the first call may come from a static initialiser, before the one of
 // the runtime that fills in the CPU model.
 bool cpu_has_avx2() {
   __builtin_cpu_init();
   return __builtin_cpu_supports("avx2");
-}
-
-bool cpu_has_avx512() {
-  __builtin_cpu_init();
-  return __builtin_cpu_supports("avx512f");
-}
-
-bool sphere_lanes_eight_wide() {
-  static const bool avx512 = sphere_lanes_vectorised() && cpu_has_avx512();
-  return avx512;
 }
 
 }  // namespace
@@ -199,7 +113,6 @@ bool sphere_lanes_vectorised() {
 
 std::uint32_t intersect_sphere_lanes(const Vec3& center, float radius, const RayLanes& rays, std::uint32_t active,
                                      float* t_hit) {
-  if (rays.count % 8 == 0 && sphere_lanes_eight_wide()) return wide_vector_lanes(center, radius, rays, active, t_hit);
   if (sphere_lanes_vectorised() && rays.count % 4 == 0) return vector_lanes(center, radius, rays, active, t_hit);
   return scalar_lanes(center, radius, rays, active, t_hit);
 }
