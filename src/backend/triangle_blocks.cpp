@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <variant>
 
 namespace rtpro {
@@ -11,6 +12,19 @@ TriangleLeaves build_triangle_leaves(const Group& group, const Bvh& bvh, bool en
   TriangleLeaves leaves;
   leaves.triangle_leaf.assign(bvh.nodes.size(), 0);
   if (!enabled || bvh.refs.empty()) return leaves;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bvh.nodes.size(), 4096), [&](const auto& range) {
+    for (std::size_t n = range.begin(); n < range.end(); ++n) {
+      const BvhNode& node = bvh.nodes[n];
+      if (!node.is_leaf()) continue;
+      bool triangles = true;
+      for (std::uint32_t i = 0; i < node.count; ++i)
+        triangles &= kind_of(group.geometries[bvh.refs[node.index + i].geom]) == GeometryKind::kTriangles;
+      leaves.triangle_leaf[n] = triangles;
+    }
+  });
+  // A tree without a triangle leaf (spheres and instances alone) needs no rows.
+  if (std::find(leaves.triangle_leaf.begin(), leaves.triangle_leaf.end(), 1) == leaves.triangle_leaf.end())
+    return leaves;
   // Three zero columns past the last reference: a leaf's last four-column load stays inside.
   leaves.stride = bvh.refs.size() + kBlockWidth - 1;
   leaves.vertices.assign(9 * leaves.stride, 0.0f);
@@ -22,16 +36,6 @@ TriangleLeaves build_triangle_leaves(const Group& group, const Bvh& bvh, bool en
       const Vec3 p[3] = {mesh->vertex(tri.v0), mesh->vertex(tri.v1), mesh->vertex(tri.v2)};
       for (int vertex = 0; vertex < 3; ++vertex)
         for (int c = 0; c < 3; ++c) leaves.vertices[(3 * vertex + c) * leaves.stride + r] = p[vertex][c];
-    }
-  });
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bvh.nodes.size(), 4096), [&](const auto& range) {
-    for (std::size_t n = range.begin(); n < range.end(); ++n) {
-      const BvhNode& node = bvh.nodes[n];
-      if (!node.is_leaf()) continue;
-      bool triangles = true;
-      for (std::uint32_t i = 0; i < node.count; ++i)
-        triangles &= kind_of(group.geometries[bvh.refs[node.index + i].geom]) == GeometryKind::kTriangles;
-      leaves.triangle_leaf[n] = triangles;
     }
   });
   return leaves;

@@ -24,7 +24,7 @@ inline constexpr unsigned kBlockWidth = 4;
 // columns, so four of them load as four consecutive floats of each row (columns past the leaf's
 // end belong to the next leaves, or to the zero columns at the end, and are masked off). 36 bytes
 // a reference; one that is not a triangle has zeros. A leaf whose references are all triangles
-// is marked in triangle_leaf (per node).
+// is marked in triangle_leaf (per node); a tree with no such leaf has no rows.
 struct TriangleLeaves {
   std::size_t stride = 0;
   std::vector<float> vertices;

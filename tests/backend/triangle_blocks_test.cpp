@@ -250,6 +250,15 @@ TEST(TriangleBlocks, RowsHoldEveryReferencesVerticesAndMarkTriangleLeaves) {
   }
   EXPECT_GT(marked, 10);
   EXPECT_GT(unmarked, 10);
+  // Spheres alone: no triangle leaf, no rows.
+  RenderScene spheres = test::empty_scene();
+  std::mt19937 rng(2);
+  spheres.top.geometries.push_back(test::random_spheres(rng, 500, 3.0f));
+  const Bvh sphere_bvh = build_bvh(spheres.top, spheres.prototype_bounds());
+  const TriangleLeaves sphere_leaves = build_triangle_leaves(spheres.top, sphere_bvh);
+  EXPECT_TRUE(sphere_leaves.vertices.empty());
+  EXPECT_EQ(sphere_leaves.triangle_leaf.size(), sphere_bvh.nodes.size());
+  EXPECT_EQ(std::count(sphere_leaves.triangle_leaf.begin(), sphere_leaves.triangle_leaf.end(), 1), 0);
   const TriangleLeaves disabled = build_triangle_leaves(scene.top, bvh, false);
   EXPECT_TRUE(disabled.vertices.empty());
   EXPECT_EQ(std::count(disabled.triangle_leaf.begin(), disabled.triangle_leaf.end(), 1), 0);
