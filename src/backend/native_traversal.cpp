@@ -1,7 +1,7 @@
 #include "native_traversal.h"
 
 #include "backend_shapes.h"
-#include "triangle_blocks.h"
+#include "triangle_leaves.h"
 #include "rtpro/core/overloaded.h"
 
 #include <immintrin.h>
@@ -189,15 +189,15 @@ template <typename Visit, typename OnBlockHits>
 
 }  // namespace
 
-NativeTraversal::NativeTraversal(const RenderScene& scene, bool triangle_blocks) : scene_(scene) {
+NativeTraversal::NativeTraversal(const RenderScene& scene, bool triangle_rows) : scene_(scene) {
   const auto start = std::chrono::steady_clock::now();
   top_bvh_ = build_bvh(scene.top, scene.prototype_bounds());
-  top_leaves_ = build_triangle_leaves(scene.top, top_bvh_, triangle_blocks);
+  top_leaves_ = build_triangle_leaves(scene.top, top_bvh_, triangle_rows);
   prototype_bvhs_.reserve(scene.prototypes.size());
   prototype_leaves_.reserve(scene.prototypes.size());
   for (const Group& prototype : scene.prototypes) {
     prototype_bvhs_.push_back(build_bvh(prototype, {}));
-    prototype_leaves_.push_back(build_triangle_leaves(prototype, prototype_bvhs_.back(), triangle_blocks));
+    prototype_leaves_.push_back(build_triangle_leaves(prototype, prototype_bvhs_.back(), triangle_rows));
   }
   build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

@@ -4,7 +4,7 @@
 // through the top level (the same answers lane by lane).
 #include "bvh.h"
 #include "ray_packet.h"
-#include "triangle_blocks.h"
+#include "triangle_leaves.h"
 #include "rtpro/backend/hit.h"
 #include "rtpro/core/ray.h"
 #include "rtpro/scene/render_scene.h"
@@ -17,9 +17,10 @@ namespace rtpro {
 
 class NativeTraversal {
  public:
-  // Builds the BVHs of the scene's top level and of each prototype, with their triangle leaves
-  // as blocks (triangle_blocks.h; the CPU must have AVX2) or without.
-  NativeTraversal(const RenderScene& scene, bool triangle_blocks);
+  // Builds the BVHs of the scene's top level and of each prototype, with or without their
+  // triangle leaves' vertex rows (triangle_leaves.h: leaves tested four triangles at a time; the
+  // CPU must have AVX2).
+  NativeTraversal(const RenderScene& scene, bool triangle_rows);
 
   // The closest hit along `ray` closer than best_t, under the shared tie rule.
   void closest(const Ray& ray, Hit& best, float& best_t) const {

@@ -48,7 +48,7 @@ SceneSummary summarize(const RenderScene& scene) {
   }
   s.bounds = scene.bounds();
   // The native BVH: one 8-byte reference per primitive and about one 32-byte node per two, and
-  // each triangle's vertices copied into its leaf rows (36 bytes; backend/triangle_blocks.h).
+  // each triangle's vertices copied into its leaf rows (36 bytes; backend/triangle_leaves.h).
   s.estimated_bvh_bytes = primitives * (8 + 16) + s.triangles_stored * 36;
   return s;
 }

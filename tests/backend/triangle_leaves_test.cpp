@@ -1,7 +1,7 @@
 // A leaf's triangles tested four at a time must answer what intersect_triangle answers one at a
-// time, bit for bit: images must not depend on whether a leaf has blocks, nor on whether the CPU
-// has the AVX2 the blocks need.
-#include "triangle_blocks.h"
+// time, bit for bit: images must not depend on whether a leaf is tested so, nor on whether the
+// CPU has the AVX2 the four-wide test needs.
+#include "triangle_leaves.h"
 
 #include "native_traversal.h"
 #include "sphere_lanes.h"
@@ -21,7 +21,7 @@
 #include <vector>
 
 namespace rtpro {
-namespace triangle_blocks_test {
+namespace triangle_leaves_test {
 
 bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
 
@@ -115,7 +115,7 @@ Rows rows_of(const std::vector<Triangle>& tris, std::size_t gap = 5) {
   return intersect_block(rows.values.data(), rows.stride, slots, block_ray(ray.org, ray.dir, ray.tnear), tfar, hits);
 }
 
-TEST(TriangleBlocks, EverySlotAnswersWhatTheScalarTestAnswersBitForBit) {
+TEST(TriangleLeaves, EverySlotAnswersWhatTheScalarTestAnswersBitForBit) {
   if (!sphere_lanes_vectorised()) GTEST_SKIP() << "the CPU has no AVX2";
   std::mt19937 rng(26);
   int hits_seen = 0;
@@ -140,7 +140,7 @@ TEST(TriangleBlocks, EverySlotAnswersWhatTheScalarTestAnswersBitForBit) {
   EXPECT_GT(hits_seen, 5000);  // the rays were aimed: most rounds hit something
 }
 
-TEST(TriangleBlocks, SlotsOutsideTheLeafAreNeverHit) {
+TEST(TriangleLeaves, SlotsOutsideTheLeafAreNeverHit) {
   if (!sphere_lanes_vectorised()) GTEST_SKIP() << "the CPU has no AVX2";
   // Four copies of one triangle, of which the leaf owns the first one, two or three.
   const Triangle tri{{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}};
@@ -160,8 +160,8 @@ TEST(TriangleBlocks, SlotsOutsideTheLeafAreNeverHit) {
   }
 }
 
-// A scene of triangles only (every top-level leaf in blocks), one of spheres and triangles mixed
-// (leaves with blocks beside leaves without), and instances of both kinds of prototype.
+// A scene of triangles only (every top-level leaf a triangle leaf), one of spheres and triangles
+// mixed (triangle leaves beside others), and instances of both kinds of prototype.
 std::vector<RenderScene> scenes() {
   std::vector<RenderScene> out;
   std::mt19937 rng(7);
@@ -173,7 +173,7 @@ std::vector<RenderScene> scenes() {
   return out;
 }
 
-TEST(TriangleBlocks, TraversalAnswersTheSameWithAndWithoutBlocks) {
+TEST(TriangleLeaves, TraversalAnswersTheSameWithAndWithoutRows) {
   if (!sphere_lanes_vectorised()) GTEST_SKIP() << "the CPU has no AVX2";
   std::mt19937 rng(11);
   for (const RenderScene& scene : scenes()) {
@@ -216,7 +216,7 @@ TEST(TriangleBlocks, TraversalAnswersTheSameWithAndWithoutBlocks) {
   }
 }
 
-TEST(TriangleBlocks, RowsHoldEveryReferencesVerticesAndMarkTriangleLeaves) {
+TEST(TriangleLeaves, RowsHoldEveryReferencesVerticesAndMarkTriangleLeaves) {
   const RenderScene scene = test::random_mixed_scene(5, 300, 3000, 0);
   const Bvh bvh = build_bvh(scene.top, scene.prototype_bounds());
   const TriangleLeaves leaves = build_triangle_leaves(scene.top, bvh);
@@ -264,5 +264,5 @@ TEST(TriangleBlocks, RowsHoldEveryReferencesVerticesAndMarkTriangleLeaves) {
   EXPECT_EQ(std::count(disabled.triangle_leaf.begin(), disabled.triangle_leaf.end(), 1), 0);
 }
 
-}  // namespace triangle_blocks_test
+}  // namespace triangle_leaves_test
 }  // namespace rtpro

@@ -1,4 +1,4 @@
-#include "triangle_blocks.h"
+#include "triangle_leaves.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
