@@ -154,9 +154,8 @@ std::optional<LightSet::LonePointLight> LightSet::lone_point_light() const {
   return LonePointLight{point, pick.light, pick.pmf};
 }
 
-void LightSet::sample_lone_point_light(std::span<const SurfacePoint> points, std::span<PathLightSample> out,
-                                       std::span<std::uint8_t> found) const {
-  const LonePointLight lone = *lone_point_light();
+void LightSet::sample_lone_point_light(const LonePointLight& lone, std::span<const SurfacePoint> points,
+                                       std::span<PathLightSample> out, std::span<std::uint8_t> found) {
   sample_point_light_batch(*lone.light, points, out, found);
   // LightSet::sample's own finishing touches to a point light's sample.
   for (std::size_t i = 0; i < points.size(); ++i) {

@@ -324,8 +324,8 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
   }
   counts[RayKind::kCamera] += camera_rays.size();
   const VertexDraws needed = vertex_draws(scene, lights);
-  const bool lone_point_light = lights.lone_point_light().has_value();
-  PathTracer tracer(scene, lights, results, ws, textures, needed.cosine_directions, lone_point_light);
+  const std::optional<LightSet::LonePointLight> lone_point_light = lights.lone_point_light();
+  PathTracer tracer(scene, lights, results, ws, textures, needed.cosine_directions, lone_point_light.has_value());
   for (int generation = 0; !ws.paths.empty(); ++generation) {
     ws.hits.resize(ws.rays.size());
     backend.intersect(ws.rays, ws.hits, generation == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
@@ -342,7 +342,7 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
         // Made for every path, the ones that hit nothing included (their samples go unread).
         ws.light_samples.resize(ws.paths.size());
         ws.light_found.resize(ws.paths.size());
-        lights.sample_lone_point_light(ws.surfaces, ws.light_samples, ws.light_found);
+        LightSet::sample_lone_point_light(*lone_point_light, ws.surfaces, ws.light_samples, ws.light_found);
       }
     }
     for (std::size_t i = 0; i < ws.paths.size(); ++i)

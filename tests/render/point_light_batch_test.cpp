@@ -77,7 +77,7 @@ TEST(PointLightBatch, LightSetOffersItsLonePointLightAndItsSamplesAreSamplesOnes
   const std::vector<SurfacePoint> points = points_around({0.0f, 3.0f, 0.0f}, 203);
   std::vector<PathLightSample> out(points.size());
   std::vector<std::uint8_t> found(points.size());
-  lights.sample_lone_point_light(points, out, found);
+  LightSet::sample_lone_point_light(*lights.lone_point_light(), points, out, found);
   for (std::size_t i = 0; i < points.size(); ++i) {
     const std::optional<PathLightSample> expected = lights.sample(points[i].position, 0.5f, {0.5f, 0.5f});
     ASSERT_EQ(found[i] != 0, expected.has_value()) << i;

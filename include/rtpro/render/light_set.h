@@ -63,10 +63,10 @@ class LightSet {
     return true;
   }
 
-  // The light sample() always picks when there is one and it is a point light (one light, or one
-  // set of them that gives all its power to one; no linking), its index and pick probability, or
-  // nothing: its samples then depend only on the points, and sample_lone_point_light makes them
-  // for many points at once.
+  // The light sample() picks from every point, when it picks without a number (one light, no
+  // linking) and that light is a point light: its index and pick probability, or nothing. Its
+  // samples then depend only on the points, and sample_lone_point_light makes them for many points
+  // at once.
   struct LonePointLight {
     const PointLight* light;
     std::uint32_t index;
@@ -74,9 +74,9 @@ class LightSet {
   };
   std::optional<LonePointLight> lone_point_light() const;
   // sample(points[i].position, ...) into out[i] for every i, with found[i] whether there is one,
-  // the same bit for bit, four points at a time (point_light_batch.h). Requires lone_point_light().
-  void sample_lone_point_light(std::span<const SurfacePoint> points, std::span<PathLightSample> out,
-                               std::span<std::uint8_t> found) const;
+  // the same bit for bit, four points at a time (point_light_batch.h); `lone` is lone_point_light().
+  static void sample_lone_point_light(const LonePointLight& lone, std::span<const SurfacePoint> points,
+                                      std::span<PathLightSample> out, std::span<std::uint8_t> found);
 
   // Whether sample() reads its u_pick (some group's lights are more than one), and its u (some
   // light has an extent): a vertex's random numbers that nothing reads need not be drawn.
