@@ -14,16 +14,12 @@ using lanes::dot;
 using lanes::gather;
 using lanes::Lanes3;
 
-RTPRO_AVX2_CLONES
-void point_light_lanes(const PointLight& light, const SurfacePoint* const surfaces[4], const Vec3* const mirrors[4],
-                       PointLightLanes& out) {
-  const Lanes3 p = gather([&](int i) { return surfaces[i]->position; });
-  const Lanes3 ns = gather([&](int i) { return surfaces[i]->shading_normal; });
-  const Lanes3 ng = gather([&](int i) { return surfaces[i]->geometric_normal; });
-  const Lanes3 mirror = gather([&](int i) { return *mirrors[i]; });
-  const __m128 error = _mm_setr_ps(surfaces[0]->position_error, surfaces[1]->position_error,
-                                   surfaces[2]->position_error, surfaces[3]->position_error);
+namespace {
 
+// One light's lanes for surfaces already in lanes.
+[[gnu::always_inline]] inline void one_light(const PointLight& light, const Lanes3& p, const Lanes3& ns,
+                                             const Lanes3& ng, const Lanes3& mirror, __m128 error,
+                                             PointLightLanes& out) {
   // sample_light: to_light = position − point, distance = |to_light|, direction = to_light / distance.
   const Lanes3 to_light{_mm_sub_ps(_mm_set1_ps(light.position.x), p.x), _mm_sub_ps(_mm_set1_ps(light.position.y), p.y),
                         _mm_sub_ps(_mm_set1_ps(light.position.z), p.z)};
@@ -74,6 +70,22 @@ void point_light_lanes(const PointLight& light, const SurfacePoint* const surfac
       _mm_movemask_ps(_mm_and_ps(_mm_cmpnle_ps(n_dot_l, zero), _mm_cmpnle_ps(g_dot_l, zero))));
   out.infinite = static_cast<std::uint32_t>(_mm_movemask_ps(
       _mm_cmpeq_ps(_mm_andnot_ps(sign_bit, distance), _mm_set1_ps(std::numeric_limits<float>::infinity()))));
+}
+
+}  // namespace
+
+RTPRO_AVX2_CLONES
+void point_light_lanes(std::span<const PointLight* const> lights, const SurfacePoint* const surfaces[4],
+                       const Vec3* const mirrors[4], PointLightLanes* out) {
+  const Lanes3 p = gather([&](int i) { return surfaces[i]->position; });
+  const Lanes3 ns = gather([&](int i) { return surfaces[i]->shading_normal; });
+  const Lanes3 ng = gather([&](int i) { return surfaces[i]->geometric_normal; });
+  const Lanes3 mirror = gather([&](int i) { return *mirrors[i]; });
+  const __m128 error = _mm_setr_ps(surfaces[0]->position_error, surfaces[1]->position_error,
+                                   surfaces[2]->position_error, surfaces[3]->position_error);
+
+  for (std::size_t l = 0; l < lights.size(); ++l)
+    if (lights[l]) one_light(*lights[l], p, ns, ng, mirror, error, out[l]);
 }
 
 }  // namespace rtpro

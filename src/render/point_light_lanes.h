@@ -11,6 +11,7 @@
 #include "rtpro/scene/light.h"
 
 #include <cstdint>
+#include <span>
 
 namespace rtpro {
 
@@ -26,8 +27,9 @@ struct PointLightLanes {
   std::uint32_t infinite = 0;
 };
 
-// surfaces[i] and mirrors[i] (unit mirror direction about surfaces[i]'s shading normal), i < 4.
-void point_light_lanes(const PointLight& light, const SurfacePoint* const surfaces[4], const Vec3* const mirrors[4],
-                       PointLightLanes& out);
+// surfaces[i] and mirrors[i] (unit mirror direction about surfaces[i]'s shading normal), i < 4;
+// out[l] for each lights[l] that is not null (the surfaces are read once for all the lights).
+void point_light_lanes(std::span<const PointLight* const> lights, const SurfacePoint* const surfaces[4],
+                       const Vec3* const mirrors[4], PointLightLanes* out);
 
 }  // namespace rtpro

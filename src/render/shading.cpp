@@ -104,6 +104,9 @@ void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sample
   for (std::size_t l = 0; l < light_count && laned; ++l) laned = ws.light_samples_per_axis[l] == 1 && !ws.is_emitter[l];
   std::size_t i = 0;
   PointLightLanes lanes[kMaxLanedLights];
+  const PointLight* point_lights[kMaxLanedLights] = {};
+  if (laned)
+    for (std::size_t l = 0; l < light_count; ++l) point_lights[l] = std::get_if<PointLight>(&scene.lights[l]);
   for (; laned && i + 4 <= ws.surfaces.size(); i += 4) {
     const SurfacePoint* points[4];
     const Vec3* mirrors[4];
@@ -111,14 +114,12 @@ void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sample
       points[k] = &ws.surfaces[i + k].point;
       mirrors[k] = &ws.surfaces[i + k].mirror;
     }
-    for (std::size_t l = 0; l < light_count; ++l)
-      if (const auto* point = std::get_if<PointLight>(&scene.lights[l]))
-        point_light_lanes(*point, points, mirrors, lanes[l]);
+    point_light_lanes(std::span(point_lights, light_count), points, mirrors, lanes);
     for (unsigned k = 0; k < 4; ++k) {
       Workspace::ShadedSurface& s = ws.surfaces[i + k];
       s.first_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
       for (std::uint32_t l = 0; l < light_count; ++l) {
-        const auto* point = std::get_if<PointLight>(&scene.lights[l]);
+        const PointLight* point = point_lights[l];
         if (!point || (lanes[l].infinite >> k & 1u)) {
           queue_light_shadow_rays(scene, sampler, keys[generation.tasks[s.task].sample], depth, s, l, ws);
           continue;

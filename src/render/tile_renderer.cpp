@@ -58,8 +58,12 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
            static_cast<std::uint64_t>(tile.x0 + static_cast<int>(p % tile_width));
   };
   std::size_t key = 0;
-  for (std::size_t i = 0; i < pixel_count; ++i)
-    for (int s = range.begin; s < range.end; ++s) ws.sample_keys[key++] = {key_of_pixel(i), s};
+  for (std::size_t i = 0; i < pixel_count; ++i) {
+    // Out of the loop by hand: the keys' int stores may alias the pixels' unsigned ones, so the
+    // compiler would divide again for every sample.
+    const std::uint64_t pixel_key = key_of_pixel(i);
+    for (int s = range.begin; s < range.end; ++s) ws.sample_keys[key++] = {pixel_key, s};
+  }
   if (scene_.render.sampler == SamplerKind::kSobol) {
     // Every sample's pixel offset in one batch (the same values as pixel_offset, bit for bit),
     // whose hashes run side by side.

@@ -76,13 +76,19 @@ void expect_lanes_are_the_scalar_chain() {
       surface_ptrs[k] = &surfaces[k];
       mirror_ptrs[k] = &mirrors[k];
     }
-    PointLightLanes lanes;
-    point_light_lanes(light, surface_ptrs, mirror_ptrs, lanes);
+    // Two lights read the surfaces once; a null light (one of another kind) is skipped.
+    const PointLight other{{coordinate(rng), coordinate(rng), coordinate(rng)}, {0.2f, 0.3f, 0.4f}};
+    const PointLight* lights[3] = {&light, nullptr, &other};
+    PointLightLanes lanes[3];
+    lanes[1].lit = 0xA5u;
+    point_light_lanes(lights, surface_ptrs, mirror_ptrs, lanes);
+    EXPECT_EQ(lanes[1].lit, 0xA5u);
     for (int k = 0; k < 4; ++k) {
-      expect_lane_is_the_scalar_chain(light, surfaces[k], mirrors[k], lanes, k);
+      expect_lane_is_the_scalar_chain(light, surfaces[k], mirrors[k], lanes[0], k);
+      expect_lane_is_the_scalar_chain(other, surfaces[k], mirrors[k], lanes[2], k);
       if (::testing::Test::HasFatalFailure()) return;
     }
-    lit += std::popcount(lanes.lit);
+    lit += std::popcount(lanes[0].lit);
   }
   EXPECT_GT(lit, 15000);  // both outcomes are exercised
   EXPECT_LT(lit, 65000);
