@@ -354,7 +354,11 @@ void trace(const RenderScene& scene, const Backend& backend, const LightSet& lig
     counts[RayKind::kShadow] += ws.shadow_rays.size();
     for (std::size_t i = 0; i < ws.shadow_queries.size(); ++i)
       if (!ws.occluded[i]) results[ws.shadow_queries[i].sample].radiance += ws.shadow_queries[i].contribution;
-    for (const Path& next : ws.next_paths) counts[next.transmitted ? RayKind::kRefraction : RayKind::kReflection] += 1;
+    // Summed in a local: a store to the counts in the loop would reload every path's field.
+    std::uint64_t transmitted = 0;
+    for (const Path& next : ws.next_paths) transmitted += next.transmitted;
+    counts[RayKind::kRefraction] += transmitted;
+    counts[RayKind::kReflection] += ws.next_paths.size() - transmitted;
     std::swap(ws.paths, ws.next_paths);
     std::swap(ws.rays, ws.next_rays);
   }

@@ -16,36 +16,62 @@ using lanes::Lanes3;
 
 namespace {
 
-// One light's lanes for surfaces already in lanes.
-[[gnu::always_inline]] inline void one_light(const PointLight& light, const Lanes3& p, const Lanes3& ns,
-                                             const Lanes3& ng, const Lanes3& mirror, __m128 error,
-                                             PointLightLanes& out) {
+using lanes::select;
+
+// offset_ray_origin_on_side for four surfaces: the origin pushed off by `offset` along `n` (the
+// geometric normal, or its negation for the back), then rounded away from the surface.
+[[gnu::always_inline]] inline Lanes3 offset_origins(const Lanes3& p, const Lanes3& n, __m128 offset) {
+  return {round_away_from_surface(_mm_add_ps(p.x, _mm_mul_ps(n.x, offset)), n.x),
+          round_away_from_surface(_mm_add_ps(p.y, _mm_mul_ps(n.y, offset)), n.y),
+          round_away_from_surface(_mm_add_ps(p.z, _mm_mul_ps(n.z, offset)), n.z)};
+}
+
+// The four surfaces in lanes, and their origins on each side: the front one made up front, the
+// back one when a shadow ray first needs it (rarely: a light the geometric normal faces is on its
+// side but for rounding).
+struct SurfaceLanes {
+  Lanes3 p, ns, ng, mirror;
+  __m128 offset;
+  Lanes3 front;
+  Lanes3 back;
+  bool back_known = false;
+};
+
+// One light's lanes.
+[[gnu::always_inline]] inline void one_light(const PointLight& light, SurfaceLanes& s, PointLightLanes& out) {
+  const Lanes3& p = s.p;
+  const Lanes3& ng = s.ng;
+  const __m128 zero = _mm_setzero_ps();
+  const __m128 sign_bit = _mm_set1_ps(-0.0f);
   // sample_light: to_light = position − point, distance = |to_light|, direction = to_light / distance.
   const Lanes3 to_light{_mm_sub_ps(_mm_set1_ps(light.position.x), p.x), _mm_sub_ps(_mm_set1_ps(light.position.y), p.y),
                         _mm_sub_ps(_mm_set1_ps(light.position.z), p.z)};
   const __m128 distance = _mm_sqrt_ps(dot(to_light, to_light));
   const Lanes3 direction{_mm_div_ps(to_light.x, distance), _mm_div_ps(to_light.y, distance),
                          _mm_div_ps(to_light.z, distance)};
-  const __m128 n_dot_l = dot(ns, direction);
+  const __m128 n_dot_l = dot(s.ns, direction);
   const __m128 g_dot_l = dot(ng, direction);
-  const __m128 r_dot_l = dot(mirror, direction);
+  const __m128 r_dot_l = dot(s.mirror, direction);
+  out.lit = static_cast<std::uint32_t>(
+      _mm_movemask_ps(_mm_and_ps(_mm_cmpnle_ps(n_dot_l, zero), _mm_cmpnle_ps(g_dot_l, zero))));
+  out.infinite = static_cast<std::uint32_t>(_mm_movemask_ps(
+      _mm_cmpeq_ps(_mm_andnot_ps(sign_bit, distance), _mm_set1_ps(std::numeric_limits<float>::infinity()))));
 
-  // spawn_ray_to(surface, point + direction·distance): the origin pushed off along the geometric
-  // normal on the side of the target, then rounded away from the surface.
+  // spawn_ray_to(surface, point + direction·distance): the origin on the side of the target.
   const Lanes3 target{_mm_add_ps(p.x, _mm_mul_ps(direction.x, distance)),
                       _mm_add_ps(p.y, _mm_mul_ps(direction.y, distance)),
                       _mm_add_ps(p.z, _mm_mul_ps(direction.z, distance))};
   const Lanes3 towards{_mm_sub_ps(target.x, p.x), _mm_sub_ps(target.y, p.y), _mm_sub_ps(target.z, p.z)};
-  const __m128 sign_bit = _mm_set1_ps(-0.0f);
-  const __m128 behind = _mm_andnot_ps(_mm_cmpge_ps(dot(towards, ng), _mm_setzero_ps()), sign_bit);
-  const Lanes3 n{_mm_xor_ps(ng.x, behind), _mm_xor_ps(ng.y, behind), _mm_xor_ps(ng.z, behind)};
-  // dot(|n|, (e, e, e)); |−g| is |g|.
-  const __m128 offset = _mm_add_ps(
-      _mm_add_ps(_mm_mul_ps(_mm_andnot_ps(sign_bit, ng.x), error), _mm_mul_ps(_mm_andnot_ps(sign_bit, ng.y), error)),
-      _mm_mul_ps(_mm_andnot_ps(sign_bit, ng.z), error));
-  const Lanes3 origin{round_away_from_surface(_mm_add_ps(p.x, _mm_mul_ps(n.x, offset)), n.x),
-                      round_away_from_surface(_mm_add_ps(p.y, _mm_mul_ps(n.y, offset)), n.y),
-                      round_away_from_surface(_mm_add_ps(p.z, _mm_mul_ps(n.z, offset)), n.z)};
+  const __m128 behind = _mm_cmpnge_ps(dot(towards, ng), zero);  // !(dot >= 0), NaN included
+  Lanes3 origin = s.front;
+  if (_mm_movemask_ps(behind) & out.lit & ~out.infinite) {
+    if (!s.back_known) {
+      s.back = offset_origins(p, {_mm_xor_ps(ng.x, sign_bit), _mm_xor_ps(ng.y, sign_bit), _mm_xor_ps(ng.z, sign_bit)},
+                              s.offset);
+      s.back_known = true;
+    }
+    origin = select(behind, s.back, s.front);
+  }
   const Lanes3 ray_direction{_mm_sub_ps(target.x, origin.x), _mm_sub_ps(target.y, origin.y),
                              _mm_sub_ps(target.z, origin.z)};
 
@@ -65,27 +91,31 @@ namespace {
     ray.dir.z = dz[i];
     ray.tfar = 1.0f - 0x1p-16f;
   }
-  const __m128 zero = _mm_setzero_ps();
-  out.lit = static_cast<std::uint32_t>(
-      _mm_movemask_ps(_mm_and_ps(_mm_cmpnle_ps(n_dot_l, zero), _mm_cmpnle_ps(g_dot_l, zero))));
-  out.infinite = static_cast<std::uint32_t>(_mm_movemask_ps(
-      _mm_cmpeq_ps(_mm_andnot_ps(sign_bit, distance), _mm_set1_ps(std::numeric_limits<float>::infinity()))));
 }
 
 }  // namespace
 
 RTPRO_AVX2_CLONES
 void point_light_lanes(std::span<const PointLight* const> lights, const SurfacePoint* const surfaces[4],
-                       const Vec3* const mirrors[4], PointLightLanes* out) {
-  const Lanes3 p = gather([&](int i) { return surfaces[i]->position; });
-  const Lanes3 ns = gather([&](int i) { return surfaces[i]->shading_normal; });
-  const Lanes3 ng = gather([&](int i) { return surfaces[i]->geometric_normal; });
-  const Lanes3 mirror = gather([&](int i) { return *mirrors[i]; });
+                       const Vec3* const mirrors[4], PointLightLanes* out, Vec3 front_origins[4]) {
+  SurfaceLanes s;
+  s.p = gather([&](int i) { return surfaces[i]->position; });
+  s.ns = gather([&](int i) { return surfaces[i]->shading_normal; });
+  s.ng = gather([&](int i) { return surfaces[i]->geometric_normal; });
+  s.mirror = gather([&](int i) { return *mirrors[i]; });
   const __m128 error = _mm_setr_ps(surfaces[0]->position_error, surfaces[1]->position_error,
                                    surfaces[2]->position_error, surfaces[3]->position_error);
-
+  // dot(|g|, (e, e, e)); |−g| is |g|.
+  const __m128 sign_bit = _mm_set1_ps(-0.0f);
+  s.offset = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_andnot_ps(sign_bit, s.ng.x), error),
+                                   _mm_mul_ps(_mm_andnot_ps(sign_bit, s.ng.y), error)),
+                        _mm_mul_ps(_mm_andnot_ps(sign_bit, s.ng.z), error));
+  s.front = offset_origins(s.p, s.ng, s.offset);
+  float fx[4], fy[4], fz[4];
+  lanes::store(s.front, fx, fy, fz);
+  for (int i = 0; i < 4; ++i) front_origins[i] = Vec3(fx[i], fy[i], fz[i]);
   for (std::size_t l = 0; l < lights.size(); ++l)
-    if (lights[l]) one_light(*lights[l], p, ns, ng, mirror, error, out[l]);
+    if (lights[l]) one_light(*lights[l], s, out[l]);
 }
 
 }  // namespace rtpro

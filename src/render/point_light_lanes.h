@@ -1,5 +1,5 @@
 #pragma once
-// One point light's shadow rays from four surfaces at once, in SSE2 registers: for every lane the
+// Point lights' shadow rays from four surfaces at once, in SSE2 registers: for every lane the
 // answer of the scalar chain shading uses for a point light — sample_light (the direction and
 // distance to the light), the three cosines, spawn_ray_to towards the light — bit for bit. IEEE
 // add, subtract, multiply, divide and square root are exact per lane, the operations are the scalar
@@ -16,7 +16,7 @@
 namespace rtpro {
 
 struct PointLightLanes {
-  Ray rays[4];       // spawn_ray_to(surface, light position), for lanes with a finite distance
+  Ray rays[4];       // spawn_ray_to(surface, light position), for lanes lit with a finite distance
   float n_dot_l[4];  // shading normal · direction to the light
   float r_dot_l[4];  // mirror direction · direction to the light
   // Bit i: lane i needs its shadow ray (neither normal faces away from the light: the scalar test
@@ -28,8 +28,11 @@ struct PointLightLanes {
 };
 
 // surfaces[i] and mirrors[i] (unit mirror direction about surfaces[i]'s shading normal), i < 4;
-// out[l] for each lights[l] that is not null (the surfaces are read once for all the lights).
+// out[l] for each lights[l] that is not null. The surfaces are read once for all the lights, and
+// their origins on the front, which the shadow rays mostly share, are made once:
+// front_origins[i] is offset_ray_origin_on_side(*surfaces[i], true), bit for bit, for the mirror
+// ray too.
 void point_light_lanes(std::span<const PointLight* const> lights, const SurfacePoint* const surfaces[4],
-                       const Vec3* const mirrors[4], PointLightLanes* out);
+                       const Vec3* const mirrors[4], PointLightLanes* out, Vec3 front_origins[4]);
 
 }  // namespace rtpro

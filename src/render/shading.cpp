@@ -114,9 +114,12 @@ void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sample
       points[k] = &ws.surfaces[i + k].point;
       mirrors[k] = &ws.surfaces[i + k].mirror;
     }
-    point_light_lanes(std::span(point_lights, light_count), points, mirrors, lanes);
+    Vec3 front_origins[4];
+    point_light_lanes(std::span(point_lights, light_count), points, mirrors, lanes, front_origins);
     for (unsigned k = 0; k < 4; ++k) {
       Workspace::ShadedSurface& s = ws.surfaces[i + k];
+      s.front_origin = front_origins[k];
+      s.front_origin_known = true;
       s.first_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
       for (std::uint32_t l = 0; l < light_count; ++l) {
         const PointLight* point = point_lights[l];
@@ -133,6 +136,7 @@ void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sample
   }
   for (; i < ws.surfaces.size(); ++i) {
     Workspace::ShadedSurface& s = ws.surfaces[i];
+    s.front_origin_known = false;
     s.first_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
     const std::uint32_t group = link_group_of(scene.links, ws.hits[s.task]);
     for (std::uint32_t l = 0; l < light_count; ++l)
@@ -287,7 +291,10 @@ void light_surfaces(const RenderScene& scene, const Workspace::Generation& gener
     // A shading normal can tilt the mirror direction below the surface: nothing to reflect then.
     if (m.reflectivity <= 0.0f || dot(s.mirror, s.point.geometric_normal) <= 0.0f) continue;
     ws.next.tasks.push_back({task.sample, s.weight * m.reflectivity, task.medium, false});
-    append_ray(ws.next.rays, spawn_ray(s.point, s.mirror));
+    // The mirror ray leaves by the front (checked above): spawn_ray's origin.
+    Ray& mirror = ws.next.rays.emplace_back();
+    mirror.org = s.front_origin_known ? s.front_origin : offset_ray_origin_on_side(s.point, true);
+    mirror.dir = s.mirror;
   }
 }
 
@@ -310,9 +317,10 @@ void shade_batch(const RenderScene& scene, const Backend& backend, const Stratif
     }
   }
   ws.current.clear();
+  ws.current.tasks.resize(camera_rays.size());
   for (std::uint32_t i = 0; i < camera_rays.size(); ++i) {
     results[i] = SampleResult{};
-    ws.current.tasks.push_back({i, Color(1.0f)});
+    ws.current.tasks[i] = {i, Color(1.0f)};
   }
   ws.current.rays.assign(camera_rays.begin(), camera_rays.end());
   counts[RayKind::kCamera] += camera_rays.size();
@@ -328,8 +336,11 @@ void shade_batch(const RenderScene& scene, const Backend& backend, const Stratif
     counts[RayKind::kShadow] += ws.shadow_rays.size();
 
     light_surfaces(scene, ws.current, depth, results, ws);
-    for (const Workspace::RayTask& task : ws.next.tasks)
-      counts[task.refracted ? RayKind::kRefraction : RayKind::kReflection] += 1;
+    // Summed in a local: a store to the counts in the loop would reload every task's field.
+    std::uint64_t refracted = 0;
+    for (const Workspace::RayTask& task : ws.next.tasks) refracted += task.refracted;
+    counts[RayKind::kRefraction] += refracted;
+    counts[RayKind::kReflection] += ws.next.tasks.size() - refracted;
     std::swap(ws.current, ws.next);
   }
 }

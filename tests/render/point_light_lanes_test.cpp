@@ -47,7 +47,7 @@ void expect_lane_is_the_scalar_chain(const PointLight& light, const SurfacePoint
   ASSERT_EQ(bits(lanes.n_dot_l[k]), bits(n_dot_l)) << "lane " << k;
   ASSERT_EQ(bits(lanes.r_dot_l[k]), bits(dot(mirror, ls.direction))) << "lane " << k;
   ASSERT_EQ(std::isinf(ls.distance), (lanes.infinite >> k & 1u) != 0) << "lane " << k;
-  if (std::isinf(ls.distance)) return;
+  if (std::isinf(ls.distance) || !lit) return;
   const Ray expected = spawn_ray_to(s, s.position + ls.direction * ls.distance);
   const Ray& actual = lanes.rays[k];
   for (int axis = 0; axis < 3; ++axis) {
@@ -81,9 +81,13 @@ void expect_lanes_are_the_scalar_chain() {
     const PointLight* lights[3] = {&light, nullptr, &other};
     PointLightLanes lanes[3];
     lanes[1].lit = 0xA5u;
-    point_light_lanes(lights, surface_ptrs, mirror_ptrs, lanes);
+    Vec3 front_origins[4];
+    point_light_lanes(lights, surface_ptrs, mirror_ptrs, lanes, front_origins);
     EXPECT_EQ(lanes[1].lit, 0xA5u);
     for (int k = 0; k < 4; ++k) {
+      const Vec3 front = offset_ray_origin_on_side(surfaces[k], true);
+      for (int axis = 0; axis < 3; ++axis)
+        ASSERT_EQ(bits(front_origins[k][axis]), bits(front[axis])) << "lane " << k << " front origin axis " << axis;
       expect_lane_is_the_scalar_chain(light, surfaces[k], mirrors[k], lanes[0], k);
       expect_lane_is_the_scalar_chain(other, surfaces[k], mirrors[k], lanes[2], k);
       if (::testing::Test::HasFatalFailure()) return;
@@ -95,6 +99,44 @@ void expect_lanes_are_the_scalar_chain() {
 }
 
 TEST(PointLightLanes, EveryLaneIsTheScalarChainBitForBit) { expect_lanes_are_the_scalar_chain(); }
+
+// Lights grazing the surfaces: a lit lane whose rounded target lies behind the geometric normal
+// leaves by the back, while the other lanes leave by the front.
+TEST(PointLightLanes, LitLanesWhoseTargetRoundsBehindLeaveByTheBack) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  int by_the_back = 0;
+  for (int round = 0; round < 20000; ++round) {
+    SurfacePoint surfaces[4];
+    Vec3 mirrors[4];
+    const SurfacePoint* surface_ptrs[4];
+    const Vec3* mirror_ptrs[4];
+    for (int k = 0; k < 4; ++k) {
+      surfaces[k] = random_surface(rng, round * 4 + k + 1);
+      surfaces[k].shading_normal = surfaces[k].geometric_normal;
+      mirrors[k] = random_unit(rng);
+      surface_ptrs[k] = &surfaces[k];
+      mirror_ptrs[k] = &mirrors[k];
+    }
+    // In the tangent plane of surface 1, lifted by a few ulps of the distance.
+    const SurfacePoint& s = surfaces[1];
+    const Vec3 tangent = normalize(cross(s.geometric_normal, random_unit(rng)));
+    const PointLight light{s.position + tangent * 30.0f + s.geometric_normal * (1e-5f * (1.0f + unit(rng))),
+                           {1.0f, 1.0f, 1.0f}};
+    const PointLight* lights[1] = {&light};
+    PointLightLanes lanes[1];
+    Vec3 front_origins[4];
+    point_light_lanes(lights, surface_ptrs, mirror_ptrs, lanes, front_origins);
+    for (int k = 0; k < 4; ++k) {
+      expect_lane_is_the_scalar_chain(light, surfaces[k], mirrors[k], lanes[0], k);
+      if (::testing::Test::HasFatalFailure()) return;
+      const LightSample ls = sample_light(Light{light}, surfaces[k].position, Sample2D{0.5f, 0.5f});
+      const Vec3 target = surfaces[k].position + ls.direction * ls.distance;
+      if ((lanes[0].lit >> k & 1u) && !leaves_front(surfaces[k], target - surfaces[k].position)) ++by_the_back;
+    }
+  }
+  EXPECT_GT(by_the_back, 10);  // the back origins are exercised
+}
 
 TEST(PointLightLanes, EveryLaneIsTheScalarChainUnderTheTracingFloatingPointMode) {
   test::in_tracing_fp_mode(expect_lanes_are_the_scalar_chain);

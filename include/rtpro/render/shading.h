@@ -62,9 +62,13 @@ class ShadingWorkspace {
     ShadedSurface() {}
     std::uint32_t task;
     SurfacePoint point;
-    Color albedo;                // the material's diffuse colour at the point
-    Color weight;                // the path weight reaching it (absorption inside glass applied)
-    Vec3 mirror;                 // unit mirror direction about the shading normal
+    Color albedo;  // the material's diffuse colour at the point
+    Color weight;  // the path weight reaching it (absorption inside glass applied)
+    Vec3 mirror;   // unit mirror direction about the shading normal
+    // offset_ray_origin_on_side(point, true) where front_origin_known: the shadow rays' batch
+    // makes it, and the mirror ray (which leaves by the front) takes it.
+    Vec3 front_origin;
+    bool front_origin_known;
     std::uint32_t first_shadow;  // its shadow queries are [first_shadow, end_shadow)
     std::uint32_t end_shadow;
   };
