@@ -75,22 +75,21 @@ struct SurfaceLanes {
   const Lanes3 ray_direction{_mm_sub_ps(target.x, origin.x), _mm_sub_ps(target.y, origin.y),
                              _mm_sub_ps(target.z, origin.z)};
 
-  float ox[4], oy[4], oz[4], dx[4], dy[4], dz[4];
-  lanes::store(origin, ox, oy, oz);
-  lanes::store(ray_direction, dx, dy, dz);
+  // The lanes turned into rays: 16-byte rows of origin and tnear, and of direction and tfar.
+  __m128 ox = origin.x, oy = origin.y, oz = origin.z, tnear = _mm_setzero_ps();
+  _MM_TRANSPOSE4_PS(ox, oy, oz, tnear);
+  out.origin_rows[0] = ox;
+  out.origin_rows[1] = oy;
+  out.origin_rows[2] = oz;
+  out.origin_rows[3] = tnear;
+  __m128 dx = ray_direction.x, dy = ray_direction.y, dz = ray_direction.z, tfar = _mm_set1_ps(1.0f - 0x1p-16f);
+  _MM_TRANSPOSE4_PS(dx, dy, dz, tfar);
+  out.direction_rows[0] = dx;
+  out.direction_rows[1] = dy;
+  out.direction_rows[2] = dz;
+  out.direction_rows[3] = tfar;
   _mm_storeu_ps(out.n_dot_l, n_dot_l);
   _mm_storeu_ps(out.r_dot_l, r_dot_l);
-  for (int i = 0; i < 4; ++i) {
-    Ray& ray = out.rays[i];
-    ray.org.x = ox[i];
-    ray.org.y = oy[i];
-    ray.org.z = oz[i];
-    ray.tnear = 0.0f;
-    ray.dir.x = dx[i];
-    ray.dir.y = dy[i];
-    ray.dir.z = dz[i];
-    ray.tfar = 1.0f - 0x1p-16f;
-  }
 }
 
 }  // namespace

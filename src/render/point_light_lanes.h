@@ -10,13 +10,19 @@
 #include "rtpro/render/surface.h"
 #include "rtpro/scene/light.h"
 
+#include <xmmintrin.h>
+
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
 namespace rtpro {
 
 struct PointLightLanes {
-  Ray rays[4];       // spawn_ray_to(surface, light position), for lanes lit with a finite distance
+  // Lane i's ray, spawn_ray_to(surface, light position), for lanes lit with a finite distance: its
+  // first 16 bytes (org, tnear) and its last (dir, tfar); store_ray writes it.
+  __m128 origin_rows[4];
+  __m128 direction_rows[4];
   float n_dot_l[4];  // shading normal · direction to the light
   float r_dot_l[4];  // mirror direction · direction to the light
   // Bit i: lane i needs its shadow ray (neither normal faces away from the light: the scalar test
@@ -26,6 +32,14 @@ struct PointLightLanes {
   // chain spawns a ray along the direction instead).
   std::uint32_t infinite = 0;
 };
+
+// Lane k's ray into `out`, two 16-byte stores (Ray is org, tnear, dir, tfar, packed).
+inline void store_ray(const PointLightLanes& lanes, unsigned k, Ray& out) {
+  static_assert(sizeof(Ray) == 32 && offsetof(Ray, tnear) == 12 && offsetof(Ray, dir) == 16 &&
+                offsetof(Ray, tfar) == 28);
+  _mm_storeu_ps(&out.org.x, lanes.origin_rows[k]);
+  _mm_storeu_ps(&out.dir.x, lanes.direction_rows[k]);
+}
 
 // surfaces[i] and mirrors[i] (unit mirror direction about surfaces[i]'s shading normal), i < 4;
 // out[l] for each lights[l] that is not null. The surfaces are read once for all the lights, and

@@ -49,7 +49,8 @@ void expect_lane_is_the_scalar_chain(const PointLight& light, const SurfacePoint
   ASSERT_EQ(std::isinf(ls.distance), (lanes.infinite >> k & 1u) != 0) << "lane " << k;
   if (std::isinf(ls.distance) || !lit) return;
   const Ray expected = spawn_ray_to(s, s.position + ls.direction * ls.distance);
-  const Ray& actual = lanes.rays[k];
+  Ray actual;
+  store_ray(lanes, static_cast<unsigned>(k), actual);
   for (int axis = 0; axis < 3; ++axis) {
     ASSERT_EQ(bits(actual.org[axis]), bits(expected.org[axis])) << "lane " << k << " origin axis " << axis;
     ASSERT_EQ(bits(actual.dir[axis]), bits(expected.dir[axis])) << "lane " << k << " direction axis " << axis;
