@@ -6,6 +6,7 @@
 #include "rtpro/core/vec3.h"
 
 #include <emmintrin.h>
+#include <xmmintrin.h>
 
 namespace rtpro::lanes {
 
@@ -18,6 +19,18 @@ template <typename Field>
 Lanes3 gather(const Field& field) {
   const Vec3 a = field(0), b = field(1), c = field(2), d = field(3);
   return {_mm_setr_ps(a.x, b.x, c.x, d.x), _mm_setr_ps(a.y, b.y, c.y, d.y), _mm_setr_ps(a.z, b.z, c.z, d.z)};
+}
+
+// Four rows of four floats (x, y, z, w), each at its own address, as lanes: one 16-byte load a
+// row and a transpose, where gathering a coordinate at a time takes a load and an insert each.
+struct Lanes4 {
+  Lanes3 xyz;
+  __m128 w;
+};
+inline Lanes4 transpose_rows(const float* a, const float* b, const float* c, const float* d) {
+  __m128 r0 = _mm_loadu_ps(a), r1 = _mm_loadu_ps(b), r2 = _mm_loadu_ps(c), r3 = _mm_loadu_ps(d);
+  _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+  return {{r0, r1, r2}, r3};
 }
 
 inline __m128 dot(const Lanes3& a, const Lanes3& b) {

@@ -6,6 +6,7 @@
 
 #include <emmintrin.h>
 
+#include <cstddef>
 #include <limits>
 
 namespace rtpro {
@@ -13,6 +14,8 @@ namespace rtpro {
 using lanes::dot;
 using lanes::gather;
 using lanes::Lanes3;
+using lanes::Lanes4;
+using lanes::transpose_rows;
 
 namespace {
 
@@ -98,12 +101,19 @@ RTPRO_AVX2_CLONES
 void point_light_lanes(std::span<const PointLight* const> lights, const SurfacePoint* const surfaces[4],
                        const Vec3* const mirrors[4], PointLightLanes* out, Vec3 front_origins[4]) {
   SurfaceLanes s;
-  s.p = gather([&](int i) { return surfaces[i]->position; });
-  s.ns = gather([&](int i) { return surfaces[i]->shading_normal; });
-  s.ng = gather([&](int i) { return surfaces[i]->geometric_normal; });
-  s.mirror = gather([&](int i) { return *mirrors[i]; });
-  const __m128 error = _mm_setr_ps(surfaces[0]->position_error, surfaces[1]->position_error,
-                                   surfaces[2]->position_error, surfaces[3]->position_error);
+  // Rows of 16 bytes, within the record: the shading normal's is followed by the position error;
+  // the other fourth floats are not read.
+  static_assert(offsetof(SurfacePoint, position_error) == offsetof(SurfacePoint, shading_normal) + 12);
+  const auto rows = [&](auto field) {
+    return transpose_rows(&(surfaces[0]->*field).x, &(surfaces[1]->*field).x, &(surfaces[2]->*field).x,
+                          &(surfaces[3]->*field).x);
+  };
+  s.p = rows(&SurfacePoint::position).xyz;
+  s.ng = rows(&SurfacePoint::geometric_normal).xyz;
+  const Lanes4 shading = rows(&SurfacePoint::shading_normal);
+  s.ns = shading.xyz;
+  const __m128 error = shading.w;
+  s.mirror = gather([&](int i) { return *mirrors[i]; });  // a bare Vec3: no fourth float to read
   // dot(|g|, (e, e, e)); |−g| is |g|.
   const __m128 sign_bit = _mm_set1_ps(-0.0f);
   s.offset = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_andnot_ps(sign_bit, s.ng.x), error),

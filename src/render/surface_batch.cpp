@@ -5,6 +5,7 @@
 
 #include <emmintrin.h>
 
+#include <cstddef>
 #include <initializer_list>
 #include <limits>
 
@@ -16,7 +17,9 @@ using lanes::divide;
 using lanes::dot;
 using lanes::gather;
 using lanes::Lanes3;
+using lanes::Lanes4;
 using lanes::select;
+using lanes::transpose_rows;
 
 // std::max(a, b) is (a < b) ? b : a, which maxps computes with its operands swapped (it returns its
 // second operand when they are equal or either is NaN).
@@ -133,10 +136,14 @@ template <bool kAllFlat>
 [[gnu::always_inline]] inline void sphere_surfaces4(const Sphere* const spheres[4], const Ray* const rays[4],
                                                     const Hit* const hits[4], SurfacePoint* const out[4],
                                                     Vec3* const mirrors[4]) {
-  const Lanes3 org = gather([&](int i) { return rays[i]->org; });
-  const Lanes3 dir = gather([&](int i) { return rays[i]->dir; });
-  const Lanes3 center = gather([&](int i) { return spheres[i]->center; });
-  const __m128 radius = _mm_setr_ps(spheres[0]->radius, spheres[1]->radius, spheres[2]->radius, spheres[3]->radius);
+  // Rows: a ray's origin and tnear, its direction and tfar; a sphere's centre and radius.
+  static_assert(offsetof(Ray, tnear) == 12 && offsetof(Ray, dir) == 16 && offsetof(Sphere, radius) == 12);
+  const Lanes3 org = transpose_rows(&rays[0]->org.x, &rays[1]->org.x, &rays[2]->org.x, &rays[3]->org.x).xyz;
+  const Lanes3 dir = transpose_rows(&rays[0]->dir.x, &rays[1]->dir.x, &rays[2]->dir.x, &rays[3]->dir.x).xyz;
+  const Lanes4 sphere =
+      transpose_rows(&spheres[0]->center.x, &spheres[1]->center.x, &spheres[2]->center.x, &spheres[3]->center.x);
+  const Lanes3& center = sphere.xyz;
+  const __m128 radius = sphere.w;
   const __m128 t = _mm_setr_ps(hits[0]->t, hits[1]->t, hits[2]->t, hits[3]->t);
   const __m128 zero = _mm_setzero_ps();
 
