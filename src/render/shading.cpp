@@ -178,11 +178,12 @@ void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sample
 
 // Reads the hits of one generation: misses see the background (or an area light), hits become
 // shaded surfaces with their shadow rays queued, one per light or samples² per area light (lights
-// behind the surface, by either normal, need none).
+// behind the surface, by either normal, need none); at depth 0 a hit is the sample's primary hit
+// where records_primary.
 RTPRO_AVX2_CLONES
 void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler, std::span<const SampleKey> keys,
-                     const Workspace::Generation& generation, int depth, std::span<SampleResult> results,
-                     Workspace& ws) {
+                     const Workspace::Generation& generation, int depth, bool records_primary,
+                     std::span<SampleResult> results, Workspace& ws) {
   ws.surfaces.clear();
   ws.shadow_queries.clear();
   ws.shadow_rays.clear();
@@ -193,7 +194,7 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
     const ColorTexture& color = scene.materials[s.point.material].color;
     const Color* plain = std::get_if<Color>(&color);
     s.albedo = plain ? *plain : evaluate(color, s.point, ws.textures);
-    if (depth == 0)
+    if (depth == 0 && records_primary)
       results[generation.tasks[s.task].sample].primary = {true, s.albedo, s.point.shading_normal,
                                                           ws.hits[s.task].t * length(ray.dir), s.point.object_id};
   };
@@ -333,7 +334,7 @@ void light_surfaces(const RenderScene& scene, const Workspace::Generation& gener
 void shade_batch(const RenderScene& scene, const Backend& backend, const StratifiedSampler& sampler,
                  std::span<const Ray> camera_rays, std::span<const SampleKey> keys, std::span<SampleResult> results,
                  RayCounts& counts, ShadingWorkspace& ws, const TextureLookup* textures,
-                 const EnvironmentLight* environment) {
+                 const EnvironmentLight* environment, bool records_primary) {
   ws.textures = textures;
   ws.environment = environment;
   ws.emitters.clear();
@@ -358,7 +359,7 @@ void shade_batch(const RenderScene& scene, const Backend& backend, const Stratif
   for (int depth = 0; !ws.current.rays.empty(); ++depth) {
     ws.hits.resize(ws.current.rays.size());
     backend.intersect(ws.current.rays, ws.hits, depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
-    gather_surfaces(scene, sampler, keys, ws.current, depth, results, ws);
+    gather_surfaces(scene, sampler, keys, ws.current, depth, records_primary, results, ws);
 
     ws.occluded.resize(ws.shadow_rays.size());
     occluded_with_shadow_linking(backend, scene.links, ws.shadow_rays, ws.shadow_lights, ws.occluded,

@@ -107,7 +107,7 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
   switch (scene_.render.integrator) {
     case Integrator::kWhitted:
       shade_batch(scene_, backend_, sampler_, ws.camera_rays, ws.sample_keys, ws.samples, out.rays, ws.shading,
-                  textures_, environment_);
+                  textures_, environment_, !sums_.keeps_color_only());
       break;
     case Integrator::kPath:
       switch (scene_.render.sampler) {

@@ -109,9 +109,10 @@ class ShadingWorkspace {
 // `sampler` with it). Ray counts are added to `counts`. `textures`: the scene's image textures,
 // opened (needed only when it has some). `environment`: what rays that escape see (needed only
 // when the scene has one); the Whitted integrator shows it but does not light with it.
+// `records_primary`: false when nothing reads the primary hits (they are left empty).
 void shade_batch(const RenderScene& scene, const Backend& backend, const StratifiedSampler& sampler,
                  std::span<const Ray> camera_rays, std::span<const SampleKey> keys, std::span<SampleResult> results,
                  RayCounts& counts, ShadingWorkspace& workspace, const TextureLookup* textures = nullptr,
-                 const EnvironmentLight* environment = nullptr);
+                 const EnvironmentLight* environment = nullptr, bool records_primary = true);
 
 }  // namespace rtpro
