@@ -4,6 +4,8 @@
 #include "rtpro/geometry/sphere_intersect.h"
 #include "sphere_lanes.h"
 
+#include <emmintrin.h>
+
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -34,7 +36,14 @@ RayLanes lanes_of(RTCRayN* rays, unsigned n) {
   return {base, base + n, base + 2 * n, base + 4 * n, base + 5 * n, base + 6 * n, base + 3 * n, base + 8 * n, n};
 }
 
-std::uint32_t valid_lanes(const int* valid, unsigned n) {
+RTPRO_AVX2_CLONES std::uint32_t valid_lanes(const int* valid, unsigned n) {
+  if (n == 8) {  // Embree's packets of eight: one compare
+    const __m128i minus_one = _mm_set1_epi32(-1);
+    const __m128i low = _mm_cmpeq_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(valid)), minus_one);
+    const __m128i high = _mm_cmpeq_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(valid + 4)), minus_one);
+    return static_cast<std::uint32_t>(_mm_movemask_ps(_mm_castsi128_ps(low)) | _mm_movemask_ps(_mm_castsi128_ps(high))
+                                                                                   << 4);
+  }
   std::uint32_t active = 0;
   for (unsigned i = 0; i < n; ++i)
     if (valid[i] == -1) active |= 1u << i;
@@ -71,12 +80,7 @@ void intersect_spheres(const RTCIntersectFunctionNArguments* args) {
     closest.prim_id = args->primID;
 
     tfar = t;
-    const Vec3 org{RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)};
-    const Vec3 dir{RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)};
-    const Vec3 normal = org + dir * t - sphere.center;
-    RTCHitN_Ng_x(hits, n, i) = normal.x;
-    RTCHitN_Ng_y(hits, n, i) = normal.y;
-    RTCHitN_Ng_z(hits, n, i) = normal.z;
+    // Ng is left unset: Embree does not read it, and neither does rtpro (hit_of_lane).
     RTCHitN_u(hits, n, i) = 0.0f;
     RTCHitN_v(hits, n, i) = 0.0f;
     RTCHitN_primID(hits, n, i) = args->primID;
