@@ -15,11 +15,10 @@ using lanes::dot;
 using lanes::gather;
 using lanes::Lanes3;
 using lanes::Lanes4;
+using lanes::select;
 using lanes::transpose_rows;
 
 namespace {
-
-using lanes::select;
 
 // offset_ray_origin_on_side for four surfaces: the origin pushed off by `offset` along `n` (the
 // geometric normal, or its negation for the back), then rounded away from the surface.
@@ -40,7 +39,7 @@ struct SurfaceLanes {
   bool back_known = false;
 };
 
-// One light's lanes.
+// One light's lanes for the four surfaces.
 [[gnu::always_inline]] inline void one_light(const PointLight& light, SurfaceLanes& s, PointLightLanes& out) {
   const Lanes3& p = s.p;
   const Lanes3& ng = s.ng;
