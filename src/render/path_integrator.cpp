@@ -207,7 +207,8 @@ class PathTracer {
     query.sample = sample;
     query.contribution = contribution;
     append_ray(ws_.shadow_rays, ray);
-    ws_.shadow_lights.push_back(ls.light < scene_.lights.size() ? ls.light : kInvalidId);
+    // Read only under light linking (occluded_with_shadow_linking).
+    if (scene_.links.linked()) ws_.shadow_lights.push_back(ls.light < scene_.lights.size() ? ls.light : kInvalidId);
   }
 
   const RenderScene& scene_;

@@ -82,7 +82,8 @@ class PathWorkspace {
   std::vector<std::uint8_t> light_found;
   std::vector<ShadowQuery> shadow_queries;
   std::vector<Ray> shadow_rays;
-  std::vector<std::uint32_t> shadow_lights;  // per shadow ray: the scene light it goes to, or kInvalidId
+  // Under light linking only: per shadow ray, the scene light it goes to, or kInvalidId.
+  std::vector<std::uint32_t> shadow_lights;
   std::vector<std::uint8_t> occluded;
 };
 
