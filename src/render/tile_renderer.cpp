@@ -59,8 +59,8 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
   };
   std::size_t key = 0;
   for (std::size_t i = 0; i < pixel_count; ++i) {
-    // Out of the loop by hand: the keys' int stores may alias the pixels' unsigned ones, so the
-    // compiler would divide again for every sample.
+    // Out of the loop by hand: the keys' int stores may alias the pixel indices (int and unsigned
+    // may alias), so the compiler would load and divide again for every sample.
     const std::uint64_t pixel_key = key_of_pixel(i);
     for (int s = range.begin; s < range.end; ++s) ws.sample_keys[key++] = {pixel_key, s};
   }
