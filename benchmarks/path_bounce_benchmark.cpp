@@ -15,9 +15,8 @@
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/fp_env.h"
 #include "rtpro/render/camera.h"
-#include "rtpro/render/light_set.h"
-#include "rtpro/render/path_integrator.h"
-#include "rtpro/render/sobol_sampler.h"
+#include "camera_samplers.h"
+#include "path_integrator.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
 
@@ -82,7 +81,8 @@ std::vector<std::filesystem::path> benchmark_scenes() {
 Frame record_frame(const std::string& name, std::shared_ptr<const RenderScene> scene, BackendKind kind) {
   Frame frame{name, kind, scene, make_backend(kind, *scene, {}), {}, {}};
   const RenderCamera& camera = scene->camera;
-  const SobolSampler sampler(scene->render.seed);
+  const CameraSamplers samplers(scene->render);
+  const SobolSampler& sampler = samplers.sobol();
   std::vector<Ray> camera_rays;
   std::vector<SampleKey> keys;
   for (int y = 0; y < camera.height; ++y)
@@ -95,11 +95,11 @@ Frame record_frame(const std::string& name, std::shared_ptr<const RenderScene> s
     }
   std::vector<SampleResult> results(camera_rays.size());
   RayCounts counts;
-  PathWorkspace workspace;
-  const LightSet lights(*scene);
+  PathIntegrator::Workspace workspace;
   const RecordingBackend recorder(*frame.backend);
+  const PathIntegrator integrator(*scene, recorder, samplers, nullptr, nullptr);
   set_tracing_fp_mode();
-  trace_paths(*scene, recorder, lights, sampler, camera_rays, keys, results, counts, workspace, nullptr);
+  integrator.trace({camera_rays, keys, results}, counts, workspace);
   frame.bounce_rays = std::move(recorder.bounce_rays);
   frame.shadow_rays = std::move(recorder.shadow_rays);
   return frame;

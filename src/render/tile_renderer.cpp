@@ -1,9 +1,11 @@
 #include "rtpro/render/tile_renderer.h"
 
-#include "append_ray.h"
+#include "camera_samplers.h"
+#include "integrator.h"
+#include "rtpro/core/append_ray.h"
 #include "rtpro/core/avx2_clones.h"
 #include "rtpro/render/camera.h"
-#include "rtpro/render/sample_dimensions.h"
+#include "sample_dimensions.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -19,6 +21,24 @@ constexpr std::size_t kSamplesPerBatch = 1024;
 
 }  // namespace
 
+struct TileRenderer::Integration {
+  Integration(const RenderScene& scene, const Backend& backend, const TextureLookup* textures,
+              const EnvironmentLight* environment, bool records_primary)
+      : samplers(scene.render),
+        integrator(make_integrator(scene, {backend, samplers, textures, environment, records_primary})) {}
+  CameraSamplers samplers;
+  SceneIntegrator integrator;
+};
+
+struct TileRenderer::Workspace::IntegratorBuffers {
+  IntegratorWorkspaces workspaces;
+};
+
+TileRenderer::Workspace::Workspace() : integrator(std::make_unique<IntegratorBuffers>()) {}
+TileRenderer::Workspace::~Workspace() = default;
+TileRenderer::Workspace::Workspace(Workspace&&) noexcept = default;
+TileRenderer::Workspace& TileRenderer::Workspace::operator=(Workspace&&) noexcept = default;
+
 PassSchedule render_passes(const RenderScene& scene) { return PassSchedule(scene.render.spp, scene.render.sampler); }
 
 TileGrid render_grid(const RenderScene& scene, const PixelRegion& region, int tile_size) {
@@ -27,22 +47,25 @@ TileGrid render_grid(const RenderScene& scene, const PixelRegion& region, int ti
 
 TileRenderer::TileRenderer(const RenderScene& scene, const Backend& backend, const TileGrid& grid,
                            const SumLayout& sums, const TextureLookup* textures, const EnvironmentLight* environment)
-    : scene_(scene), backend_(backend), grid_(grid), sums_(sums), schedule_(render_passes(scene)), textures_(textures),
-      environment_(environment), sampler_(scene.render.spp, scene.render.seed), sobol_(scene.render.seed) {
+    : scene_(scene), backend_(backend), grid_(grid), sums_(sums), schedule_(render_passes(scene)) {
   if (grid.passes() != schedule_.passes())
     throw std::logic_error("TileRenderer: the grid's passes are not the scene's pass schedule");
   if (scene.environment && !environment)
     throw std::logic_error("TileRenderer: the scene has an environment but none was built for it");
-  if (scene.render.integrator == Integrator::kPath) path_lights_.emplace(scene, environment);
   if (!scene.textures.empty() && !textures)
     throw std::logic_error("TileRenderer: the scene has image textures but none were opened for it");
+  integration_ = std::make_unique<const Integration>(scene, backend, textures, environment, !sums.keeps_color_only());
 }
+
+TileRenderer::~TileRenderer() = default;
 
 // The listed pixels of the tile (indices into it, row-major), samples `range` of each.
 RTPRO_AVX2_CLONES
 void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, const std::uint32_t* pixels,
                                  std::size_t pixel_count, TileResult& out, Workspace& ws) const {
-  const int spp = sampler_.samples_per_pixel();
+  const StratifiedSampler& sampler = integration_->samplers.stratified();
+  const SobolSampler& sobol = integration_->samplers.sobol();
+  const int spp = sampler.samples_per_pixel();
   const int per_pixel = range.count();
   const auto image_width = static_cast<std::uint64_t>(scene_.camera.width);
   const auto tile_width = static_cast<std::size_t>(tile.width());
@@ -68,7 +91,7 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
     // Every sample's pixel offset in one batch (the same values as pixel_offset, bit for bit),
     // whose hashes run side by side.
     ws.sobol_offsets.resize(ws.sample_keys.size());
-    sobol_.sample_2d(ws.sample_keys, sample_dimension::kPixel, ws.sobol_offsets);
+    sobol.sample_2d(ws.sample_keys, sample_dimension::kPixel, ws.sobol_offsets);
   }
   std::size_t next = 0;
   for (std::size_t i = 0; i < pixel_count; ++i) {
@@ -77,7 +100,7 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
     const int y = tile.y0 + static_cast<int>(p / tile_width);
     const std::uint64_t pixel_key = key_of_pixel(i);
     switch (scene_.render.sampler) {
-      case SamplerKind::kStratified: sampler_.pixel_offsets(pixel_key, offsets); break;
+      case SamplerKind::kStratified: sampler.pixel_offsets(pixel_key, offsets); break;
       case SamplerKind::kSobol:
         for (int s = range.begin; s < range.end; ++s)
           offsets[s] = ws.sobol_offsets[next + static_cast<std::size_t>(s - range.begin)];
@@ -97,31 +120,14 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
       const PixelOffset& offset = offsets[s];
       const Sample2D lens = pinhole ? Sample2D{0.5f, 0.5f}
                             : scene_.render.sampler == SamplerKind::kStratified
-                                ? sampler_.sample_2d(pixel_key, s, sample_dimension::kLens)
-                                : sobol_.sample_2d(pixel_key, s, sample_dimension::kLens);
+                                ? sampler.sample_2d(pixel_key, s, sample_dimension::kLens)
+                                : sobol.sample_2d(pixel_key, s, sample_dimension::kLens);
       copy_ray(camera_ray(scene_.camera, static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y, lens),
                ws.camera_rays[next]);
     }
   }
   ws.samples.resize(ws.camera_rays.size());
-  switch (scene_.render.integrator) {
-    case Integrator::kWhitted:
-      shade_batch(scene_, backend_, sampler_, ws.camera_rays, ws.sample_keys, ws.samples, out.rays, ws.shading,
-                  textures_, environment_, !sums_.keeps_color_only());
-      break;
-    case Integrator::kPath:
-      switch (scene_.render.sampler) {
-        case SamplerKind::kStratified:
-          trace_paths(scene_, backend_, *path_lights_, sampler_, ws.camera_rays, ws.sample_keys, ws.samples, out.rays,
-                      ws.paths, textures_);
-          break;
-        case SamplerKind::kSobol:
-          trace_paths(scene_, backend_, *path_lights_, sobol_, ws.camera_rays, ws.sample_keys, ws.samples, out.rays,
-                      ws.paths, textures_);
-          break;
-      }
-      break;
-  }
+  trace(integration_->integrator, {ws.camera_rays, ws.sample_keys, ws.samples}, out.rays, ws.integrator->workspaces);
 
   const bool color_only = sums_.keeps_color_only();
   for (std::size_t i = 0; i < pixel_count; ++i) {

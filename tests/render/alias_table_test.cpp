@@ -1,4 +1,4 @@
-#include "rtpro/render/alias_table.h"
+#include "alias_table.h"
 
 #include <gtest/gtest.h>
 

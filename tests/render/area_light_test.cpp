@@ -2,7 +2,7 @@
 // against the exactly integrated visible part of a sphere light, both backends.
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/error.h"
-#include "rtpro/render/light_sample.h"
+#include "light_sample.h"
 #include "rtpro/render/renderer.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"

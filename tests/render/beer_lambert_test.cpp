@@ -1,6 +1,6 @@
 // Beer–Lambert: the stated colour is reached at the stated distance, and transmittance over two
 // path pieces multiplies (exponential law), so splitting a path inside glass changes nothing.
-#include "rtpro/render/beer_lambert.h"
+#include "beer_lambert.h"
 
 #include <gtest/gtest.h>
 

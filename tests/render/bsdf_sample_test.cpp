@@ -1,7 +1,7 @@
 // The sampling helpers every BSDF kind shares: the quarter-turn sine and cosine against libm's in
 // double precision, and the concentric disk mapping built on them (on the disk, area-preserving
 // per stratum, and the same map as the libm-based form up to rounding).
-#include "rtpro/render/bsdf_sample.h"
+#include "bsdf_sample.h"
 
 #include <gtest/gtest.h>
 

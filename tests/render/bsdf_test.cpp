@@ -1,6 +1,6 @@
 // The Bsdf variant dispatches to its kind: the free functions agree with the member functions of
 // whichever kind is held, and only all-specular kinds are delta.
-#include "rtpro/render/bsdf.h"
+#include "bsdf.h"
 
 #include "bsdf_test_support.h"
 

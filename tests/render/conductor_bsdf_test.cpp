@@ -2,9 +2,9 @@
 // without multiple-scattering compensation; it is reciprocal and never creates energy; and with a
 // perfect reflector (F0 = 1) the compensation brings the albedo back to 1, where single
 // scattering alone loses up to 69% (α = 1, normal incidence).
-#include "rtpro/render/conductor_bsdf.h"
+#include "conductor_bsdf.h"
 
-#include "rtpro/render/dielectric.h"
+#include "dielectric.h"
 
 #include "bsdf_test_support.h"
 

@@ -2,9 +2,9 @@
 // total internal reflection beyond the critical angle and the (n_o/n_i)² radiance scale on
 // transmission; rough, its sampler matches its pdf (χ²) from both sides, it obeys the generalised
 // reciprocity of a radiance BTDF and never creates energy.
-#include "rtpro/render/dielectric_bsdf.h"
+#include "dielectric_bsdf.h"
 
-#include "rtpro/render/dielectric.h"
+#include "dielectric.h"
 
 #include "bsdf_test_support.h"
 

@@ -1,6 +1,6 @@
 // Fresnel and Snell against textbook values: normal incidence, Brewster angle, total internal
 // reflection, and a ray through a parallel slab leaving parallel to how it came in.
-#include "rtpro/render/dielectric.h"
+#include "dielectric.h"
 
 #include <gtest/gtest.h>
 

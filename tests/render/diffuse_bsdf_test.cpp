@@ -1,6 +1,6 @@
 // Lambert: f = R/π on the lit side only, reciprocal, cosine sampling matches its pdf (χ²), and the
 // sampled albedo is the reflectance.
-#include "rtpro/render/diffuse_bsdf.h"
+#include "diffuse_bsdf.h"
 
 #include "bsdf_test_support.h"
 

@@ -1,6 +1,7 @@
 // The film's layers resolved from known samples: the colour, the two half-buffers (even- and
 // odd-indexed samples) and the variance of the pixel's mean.
 #include "rtpro/render/film.h"
+#include "rtpro/core/error.h"
 
 #include <gtest/gtest.h>
 

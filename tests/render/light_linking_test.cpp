@@ -5,7 +5,7 @@
 // an object that casts no shadows from a light lets that light's shadow rays through, only its.
 #include "rtpro/backend/backend.h"
 #include "rtpro/render/environment_light.h"
-#include "rtpro/render/light_set.h"
+#include "light_set.h"
 #include "rtpro/render/renderer.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"

@@ -1,7 +1,7 @@
 // A picker of one light picks it, with probability 1, from every point and for every u (its pick
 // is made once), and a picker of two lights still picks by the point and u; a light left out of a
 // picker's members is never picked.
-#include "rtpro/render/light_picker.h"
+#include "light_picker.h"
 
 #include <gtest/gtest.h>
 

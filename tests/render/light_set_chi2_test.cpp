@@ -7,7 +7,7 @@
 // the point a direction reaches by intersecting it. Also: the pdf integrates to the pick share of
 // the lights that send light to the point (delta lights take their pick probability, emitters
 // turned away theirs), and lights are picked in proportion to their power.
-#include "rtpro/render/light_set.h"
+#include "light_set.h"
 
 #include "rtpro/core/transform.h"
 

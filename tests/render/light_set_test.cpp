@@ -1,7 +1,7 @@
 // The path integrator's lights: the pdf sample() reports is the one pdf() gives for the same
 // point, the pick probabilities sum to 1, and the solid-angle pdf of each area kind integrates to
 // the light's visible solid angle (checked by integrating over the sphere of directions).
-#include "rtpro/render/light_set.h"
+#include "light_set.h"
 
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"

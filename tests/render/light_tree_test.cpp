@@ -1,7 +1,7 @@
 // The light tree: its pmf is a distribution at every point (sums to 1 over the lights it holds),
 // sample() picks each light as often as pmf() says, lights that cannot reach a point are never
 // picked there, and it prefers the lights near the point.
-#include "rtpro/render/light_tree.h"
+#include "light_tree.h"
 
 #include "bsdf_test_support.h"
 

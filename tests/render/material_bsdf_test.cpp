@@ -1,7 +1,7 @@
 // reads_lobe_choice may say "no" only for materials whose BSDF sample does not depend on u_lobe:
 // the path integrator then leaves that random number undrawn, and a wrong "no" would feed such a
 // BSDF a stale number.
-#include "rtpro/render/material_bsdf.h"
+#include "material_bsdf.h"
 
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"

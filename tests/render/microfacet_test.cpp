@@ -1,7 +1,7 @@
 // GGX: D is normalised, Λ matches its closed form at α = 1, the visible-normal sampler matches
 // its pdf (χ²), and the single-scattering albedo table matches an independent Monte Carlo
 // estimate and the closed form 1 − ln 2 at α = 1, normal incidence.
-#include "rtpro/render/microfacet.h"
+#include "microfacet.h"
 
 #include "bsdf_test_support.h"
 

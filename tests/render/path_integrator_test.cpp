@@ -1,6 +1,6 @@
 // The path integrator against scenes with analytic answers (pbrt-v4's closed sphere, the white
 // furnace), its three estimators against each other, and its determinism, with both backends.
-#include "rtpro/render/path_integrator.h"
+#include "path_integrator.h"
 
 #include "rtpro/backend/backend.h"
 #include "rtpro/render/renderer.h"

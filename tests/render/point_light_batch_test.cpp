@@ -3,7 +3,7 @@
 // scene), and LightSet must offer them only when its sample() would pick that light everywhere.
 #include "point_light_batch.h"
 
-#include "rtpro/render/light_set.h"
+#include "light_set.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
 

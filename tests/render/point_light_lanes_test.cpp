@@ -1,8 +1,8 @@
 // Four surfaces' point-light shadow rays at once must be the scalar chain's, bit for bit.
 #include "point_light_lanes.h"
 
-#include "rtpro/render/light_sample.h"
-#include "rtpro/render/ray_offset.h"
+#include "light_sample.h"
+#include "ray_offset.h"
 #include "test_fixtures.h"
 
 #include <gtest/gtest.h>

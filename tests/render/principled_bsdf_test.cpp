@@ -3,11 +3,11 @@
 // a white dielectric, a white metal and a coat or fuzz over white near 1 at every roughness; its
 // limits are the simpler kinds (metalness 1 is ConductorBsdf, specular weight 0 is Lambert
 // exactly); the opaque model is reciprocal; smooth surfaces become delta lobes.
-#include "rtpro/render/principled_bsdf.h"
+#include "principled_bsdf.h"
 
-#include "rtpro/render/bsdf.h"
-#include "rtpro/render/conductor_bsdf.h"
-#include "rtpro/render/diffuse_bsdf.h"
+#include "bsdf.h"
+#include "conductor_bsdf.h"
+#include "diffuse_bsdf.h"
 
 #include "bsdf_test_support.h"
 

@@ -1,10 +1,10 @@
 // Spawned rays must never re-hit the surface they leave ("shadow acne"), at any scene scale and
 // distance from the origin, for spheres, triangles and instances alike.
-#include "rtpro/render/ray_offset.h"
+#include "ray_offset.h"
 
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/fp_env.h"
-#include "rtpro/render/surface.h"
+#include "surface.h"
 #include "test_fixtures.h"
 #include "test_scenes.h"
 

@@ -1,6 +1,6 @@
 // The shading frame: orthonormal and right-handed for every normal, including the poles where
 // naive constructions divide by zero, and to_world undoes to_local.
-#include "rtpro/render/shading_frame.h"
+#include "shading_frame.h"
 
 #include "bsdf_test_support.h"
 

@@ -1,7 +1,7 @@
 // The Charlie sheen: D is normalised, the lobe is symmetric, the albedo table agrees with a direct
 // integration, and the bounded lobe a material uses is the lobe itself where that conserves energy
 // and never reflects more than it receives where it does not (smooth sheens at grazing angles).
-#include "rtpro/render/sheen.h"
+#include "sheen.h"
 
 #include "bsdf_test_support.h"
 

@@ -1,7 +1,7 @@
 // The Owen-scrambled Sobol sampler: every power-of-two prefix of a pixel's samples is a (0, m, 2)
 // net in each dimension pair (one point in every elementary interval of area 1/N), 1D values are
 // stratified the same way, and values are a pure function of (seed, pixel, sample, dimension).
-#include "rtpro/render/sobol_sampler.h"
+#include "sobol_sampler.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // The GGX + Schlick albedo tables: their F0 = F90 = 1 sum is ggx_directional_albedo's E, they agree
 // with a direct integration of the lobe over the hemisphere between the nodes, a mirror has the
 // closed form, and the average is the cosine-weighted mean of what the lookup returns.
-#include "rtpro/render/specular_albedo.h"
+#include "specular_albedo.h"
 
 #include "bsdf_test_support.h"
-#include "rtpro/render/microfacet.h"
+#include "microfacet.h"
 
 #include <gtest/gtest.h>
 

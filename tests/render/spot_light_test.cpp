@@ -4,8 +4,8 @@
 // against the analytic answer, with both backends.
 #include "rtpro/backend/backend.h"
 #include "rtpro/render/camera.h"
-#include "rtpro/render/light_sample.h"
-#include "rtpro/render/light_set.h"
+#include "light_sample.h"
+#include "light_set.h"
 #include "rtpro/render/renderer.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"

@@ -1,6 +1,6 @@
 // make_surfaces groups plain triangle hits of flat meshes and of smooth ones apart (four flat ones
 // skip the normals): a batch mixing both, hit for hit in any order, must still be make_surface's.
-#include "rtpro/render/surface_batch.h"
+#include "surface_batch.h"
 
 #include "test_scenes.h"
 

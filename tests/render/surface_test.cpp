@@ -1,6 +1,6 @@
 // Surface reconstruction four sphere or triangle hits at a time must be make_surface's, bit for
 // bit, and its mirror directions the scalar reflect's.
-#include "rtpro/render/surface_batch.h"
+#include "surface_batch.h"
 
 #include "rtpro/backend/backend.h"
 #include "test_fixtures.h"

@@ -1,5 +1,5 @@
 // Material colour textures: a constant colour, and the world-space checkerboard.
-#include "rtpro/render/texture.h"
+#include "texture.h"
 
 #include <gtest/gtest.h>
 

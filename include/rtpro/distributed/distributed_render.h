@@ -8,7 +8,6 @@
 #include "rtpro/distributed/communicator.h"
 #include "rtpro/distributed/prestarted_thread.h"
 #include "rtpro/job/job_identity.h"
-#include "rtpro/render/shading.h"
 #include "rtpro/render/tile_renderer.h"
 #include "rtpro/render/tiles.h"
 

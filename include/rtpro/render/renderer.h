@@ -9,7 +9,6 @@
 #include "rtpro/render/adaptive_sampling.h"
 #include "rtpro/render/film.h"
 #include "rtpro/render/progressive_film.h"
-#include "rtpro/render/shading.h"
 #include "rtpro/render/tile_renderer.h"
 #include "rtpro/render/tiles.h"
 #include "rtpro/scene/render_scene.h"

@@ -1,7 +1,7 @@
 #pragma once
 // The one source of randomness in rendering. Every value is a pure function of
 // (seed, pixel, sample index, dimension), so images never depend on threads, tiles, regions,
-// ranks or resumes. Dimensions come in 2D pairs (render/sample_dimensions.h says who uses which).
+// ranks or resumes. Dimensions come in 2D pairs (render/sampling/sample_dimensions.h says who uses which).
 //
 // Stratified: the spp samples of a pixel fall one per stratum of a columns×rows grid over the
 // pixel (strata_grid: n×n for a square count, else the most nearly square factorisation, 8×6 for

@@ -1,20 +1,19 @@
 #pragma once
 // Renders one work item (a tile in a pass, tiles.h): generates the pass's camera samples of each
-// pixel that takes part, shades them in batches of whole pixels with the scene's integrator
-// (whitted: shading.h; path: path_integrator.h) and sums each pixel's samples, in sample order,
+// pixel that takes part, traces them in batches of whole pixels with the scene's integrator
+// (render/integrators/) and sums each pixel's samples, in sample order,
 // into the item's sums (pixel_sums.h).
 #include "rtpro/backend/backend.h"
+#include "rtpro/image/texture_lookup.h"
 #include "rtpro/render/environment_light.h"
 #include "rtpro/render/film.h"
-#include "rtpro/render/light_set.h"
 #include "rtpro/render/pass_schedule.h"
-#include "rtpro/render/path_integrator.h"
+#include "rtpro/render/sample_result.h"
 #include "rtpro/render/sampler.h"
-#include "rtpro/render/shading.h"
 #include "rtpro/render/tiles.h"
 #include "rtpro/scene/render_scene.h"
 
-#include <optional>
+#include <memory>
 #include <vector>
 
 namespace rtpro {
@@ -23,14 +22,18 @@ class TileRenderer {
  public:
   // The buffers one worker thread reuses from tile to tile.
   struct Workspace {
+    Workspace();
+    ~Workspace();
+    Workspace(Workspace&&) noexcept;
+    Workspace& operator=(Workspace&&) noexcept;
     std::vector<Ray> camera_rays;
     std::vector<SampleKey> sample_keys;
     std::vector<PixelOffset> pixel_offsets;  // one pixel's, spp of them
     std::vector<PixelOffset> sobol_offsets;  // every camera sample's, drawn in one batch
     std::vector<SampleResult> samples;
     std::vector<std::uint32_t> pixels;  // the tile's pixels that take part in the pass
-    ShadingWorkspace shading;
-    PathWorkspace paths;
+    struct IntegratorBuffers;           // the integrators' own (render/integrators/integrator.h)
+    std::unique_ptr<IntegratorBuffers> integrator;
   };
 
   // `grid`: the render's work items, with the passes of render_passes(scene).
@@ -39,6 +42,7 @@ class TileRenderer {
   // `environment`: the scene's environment, built from its image; required when it has one.
   TileRenderer(const RenderScene& scene, const Backend& backend, const TileGrid& grid, const SumLayout& sums,
                const TextureLookup* textures = nullptr, const EnvironmentLight* environment = nullptr);
+  ~TileRenderer();
 
   // Work item `index` of the grid, whose tile is `tile`.
   TileResult render(std::size_t index, const PixelRegion& tile, Workspace& workspace) const;
@@ -61,11 +65,8 @@ class TileRenderer {
   SumLayout sums_;
   PassSchedule schedule_;
   const std::vector<std::uint8_t>* active_ = nullptr;
-  const TextureLookup* textures_;
-  const EnvironmentLight* environment_;
-  StratifiedSampler sampler_;
-  SobolSampler sobol_;
-  std::optional<LightSet> path_lights_;  // built for the path integrator only
+  struct Integration;  // the samplers and the scene's integrator (tile_renderer.cpp)
+  std::unique_ptr<const Integration> integration_;
 };
 
 // The pass schedule of a scene's render settings, and the grid of its work items.

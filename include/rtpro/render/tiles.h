@@ -5,7 +5,7 @@
 // and a resume journal (skip tiles already done, record each as it finishes) are all a source and a
 // sink: the renderer itself only renders the tile it is given. A tile's pixels depend on nothing
 // but the scene, the settings, the seed and the tile's own region.
-#include "rtpro/render/shading.h"
+#include "rtpro/render/ray_counts.h"
 
 #include <algorithm>
 #include <atomic>

@@ -1,0 +1,43 @@
+# render: six wings (RtproWings.cmake), in the order the data flows: sampling (the samplers, every
+# random number's one source; alias tables) and surface (hit -> surface point, textures, normal
+# maps) <- bsdf (the BSDF kinds, microfacet tables) and lights (light kinds, sampling, the tree,
+# linking) <- film (pixel sums, passes, adaptive sampling, tiles) <- integrators (whitted, path).
+# rtpro_render itself is the renderer on top of them (src/render/*.cpp: camera, tile renderer,
+# passes over tiles) behind the public headers, which are all that other modules see.
+
+rtpro_module_include_root(render render_root)
+add_library(rtpro_render_headers INTERFACE)
+target_include_directories(rtpro_render_headers INTERFACE ${render_root})
+target_link_libraries(rtpro_render_headers INTERFACE rtpro_backend rtpro_image_headers)
+
+rtpro_add_wing(render sampling SHARES alias_table.h camera_samplers.h sample_dimensions.h sobol_sampler.h)
+rtpro_add_wing(render surface
+  SHARES normal_map.h ray_offset.h shading_frame.h surface.h surface_batch.h texture.h)
+rtpro_add_wing(render bsdf
+  SHARES beer_lambert.h bsdf.h bsdf_sample.h conductor_bsdf.h cosine_lanes.h dielectric.h dielectric_bsdf.h
+         diffuse_bsdf.h material_bsdf.h microfacet.h phong_bsdf.h principled_bsdf.h sheen.h
+  USES surface)
+rtpro_add_wing(render lights
+  SHARES directional_light_sample.h light_linking.h light_picker.h light_sample.h light_sample_value.h light_set.h
+         light_tree.h path_light.h point_light_lanes.h point_light_sample.h quad_light_sample.h
+         sphere_light_sample.h spot_light_sample.h
+  USES sampling surface
+  PRIVATE_DEPENDS TBB::tbb)
+rtpro_add_wing(render film PRIVATE_DEPENDS TBB::tbb)
+rtpro_add_wing(render integrators
+  SHARES camera_batch.h integrator.h path_integrator.h whitted_integrator.h
+  USES sampling surface bsdf lights film)
+
+file(GLOB render_sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/render/*.cpp)
+add_library(rtpro_render STATIC ${render_sources})
+target_link_libraries(rtpro_render PUBLIC rtpro_render_headers PRIVATE TBB::tbb)
+rtpro_module_wings(render render_wings)
+foreach(wing IN LISTS render_wings)
+  target_link_libraries(rtpro_render PRIVATE rtpro_render_${wing})
+endforeach()
+
+# Every wing's shared headers, for the tests and benchmarks that measure a wing from inside.
+add_library(rtpro_render_internals INTERFACE)
+foreach(wing IN LISTS render_wings)
+  target_link_libraries(rtpro_render_internals INTERFACE rtpro_render_${wing})
+endforeach()

@@ -1,0 +1,109 @@
+#include "dielectric_bsdf.h"
+
+#include "material_bsdf.h"
+#include "texture.h"
+#include "dielectric.h"
+
+#include <cmath>
+
+namespace rtpro {
+namespace {
+
+// Fresnel reflectance for a direction on either side of a facet with normal n pointing outside:
+// cos_theta < 0 means the light arrives from inside, where the index ratio is inverted.
+float fresnel_either_side(float cos_theta, float eta) {
+  return cos_theta >= 0.0f ? fresnel_dielectric(cos_theta, eta) : fresnel_dielectric(-cos_theta, 1.0f / eta);
+}
+
+struct Evaluation {
+  Color f;
+  float pdf;
+};
+
+Evaluation evaluate_rough(const Vec3& wo, const Vec3& wi, float eta, const GgxDistribution& ggx) {
+  const Evaluation nothing{Color(0.0f), 0.0f};
+  const float cos_o = cos_theta(wo);
+  const float cos_i = cos_theta(wi);
+  if (cos_o == 0.0f || cos_i == 0.0f) return nothing;
+  const bool reflected = cos_o * cos_i > 0.0f;
+  const float etap = reflected ? 1.0f : relative_eta(wo, eta);
+  // The generalized half vector: the facet normal that turns wo into wi, by reflection or by Snell.
+  const Vec3 half = wi * etap + wo;
+  const float half_length2 = dot(half, half);
+  if (half_length2 == 0.0f) return nothing;
+  Vec3 wm = half / std::sqrt(half_length2);
+  if (wm.z < 0.0f) wm = -wm;
+  // A facet seen from behind by either direction cannot connect them.
+  if (dot(wm, wi) * cos_i < 0.0f || dot(wm, wo) * cos_o < 0.0f) return nothing;
+
+  const float r = fresnel_either_side(dot(wo, wm), eta);
+  const float t = 1.0f - r;
+  const float d_g = ggx.d(wm) * ggx.g(wo, wi);
+  const float visible = ggx.visible_normal_pdf(wo, wm);
+  if (reflected) {
+    return {Color(d_g * r / std::fabs(4.0f * cos_i * cos_o)), visible / (4.0f * std::fabs(dot(wo, wm))) * r};
+  }
+  const float wi_dot_wm = dot(wi, wm);
+  const float wo_dot_wm = dot(wo, wm);
+  const float denom = (wi_dot_wm + wo_dot_wm / etap) * (wi_dot_wm + wo_dot_wm / etap);
+  if (denom == 0.0f) return nothing;
+  // Walter et al.'s transmission term, with the radiance scale 1/etap².
+  const float f = d_g * t * std::fabs(wi_dot_wm * wo_dot_wm / (cos_i * cos_o * denom)) / (etap * etap);
+  const float dwm_dwi = std::fabs(wi_dot_wm) / denom;
+  return {Color(f), visible * dwm_dwi * t};
+}
+
+std::optional<BsdfSample> sample_smooth(const Vec3& wo, float eta, float u_lobe) {
+  // η = 1 exactly: Fresnel's formula leaves a rounding residue, and u_lobe = 0 would reflect.
+  const float r = eta == 1.0f ? 0.0f : fresnel_either_side(cos_theta(wo), eta);
+  if (u_lobe < r) {
+    const Vec3 wi{-wo.x, -wo.y, wo.z};
+    return BsdfSample{Color(r / abs_cos_theta(wi)), wi, r, true, false};
+  }
+  const std::optional<Vec3> wi = refract_through(wo, Vec3{0.0f, 0.0f, 1.0f}, eta);
+  if (!wi || wi->z == 0.0f) return std::nullopt;
+  const float t = 1.0f - r;
+  const float etap = relative_eta(wo, eta);
+  return BsdfSample{Color(t / abs_cos_theta(*wi) / (etap * etap)), *wi, t, true, true};
+}
+
+}  // namespace
+
+Color DielectricBsdf::eval(const Vec3& wo, const Vec3& wi) const {
+  if (is_delta()) return Color(0.0f);
+  return evaluate_rough(wo, wi, eta, GgxDistribution{alpha}).f;
+}
+
+float DielectricBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
+  if (is_delta()) return 0.0f;
+  return evaluate_rough(wo, wi, eta, GgxDistribution{alpha}).pdf;
+}
+
+std::optional<BsdfSample> DielectricBsdf::sample(const Vec3& wo, float u_lobe, Sample2D u) const {
+  if (wo.z == 0.0f) return std::nullopt;
+  if (is_delta()) return sample_smooth(wo, eta, u_lobe);
+  const GgxDistribution ggx{alpha};
+  const Vec3 wm = ggx.sample_visible_normal(wo, u);
+  Vec3 wi;
+  if (u_lobe < fresnel_either_side(dot(wo, wm), eta)) {
+    wi = -reflect(wo, wm);
+    if (!same_hemisphere(wo, wi)) return std::nullopt;
+  } else {
+    const std::optional<Vec3> refracted = refract_through(wo, wm, eta);
+    if (!refracted || refracted->z * wo.z >= 0.0f) return std::nullopt;
+    wi = *refracted;
+  }
+  // f and pdf from wi alone, as eval() and pdf() compute them, so MIS weights match exactly.
+  const Evaluation e = evaluate_rough(wo, wi, eta, ggx);
+  if (e.pdf == 0.0f) return std::nullopt;
+  return BsdfSample{e.f, wi, e.pdf, false, wi.z * wo.z < 0.0f};
+}
+
+Vec3 bsdf_from(const DielectricSurface& d, const Material& material, const SurfacePoint& point,
+               const TextureLookup* textures, SurfaceBsdf& out) {
+  out.bsdf = DielectricBsdf{material.dielectric ? material.dielectric->ior : 1.5f, roughness_to_alpha(d.roughness)};
+  out.albedo = evaluate(material.color, point, textures);
+  return point.shading_normal;
+}
+
+}  // namespace rtpro

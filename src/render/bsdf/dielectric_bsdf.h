@@ -1,0 +1,42 @@
+#pragma once
+// Glass, water, any interface between two dielectrics: reflection and refraction, smooth (delta
+// lobes) or rough (GGX microfacets, Walter et al. 2007, as pbrt-v4's DielectricBxDF). The local
+// +z points to the outside; wo.z < 0 means the surface is seen from inside.
+//
+// Transmitted radiance is scaled by (n_wo / n_wi)², the change of radiance across an interface
+// (pbrt's TransportMode::Radiance): a path entering glass takes 1/η², leaving it η², so a closed
+// glass object in a uniform furnace neither brightens nor darkens it.
+#include "bsdf_sample.h"
+#include "microfacet.h"
+
+#include <optional>
+
+namespace rtpro {
+
+struct DielectricBsdf {
+  float eta;    // n_inside / n_outside
+  float alpha;  // GGX α; below kSmoothAlpha the interface is smooth
+
+  // η = 1 separates nothing: light passes straight through, whatever α says.
+  bool is_delta() const { return eta == 1.0f || GgxDistribution{alpha}.effectively_smooth(); }
+  // It tells the inside (eta) from the outside: the frame's +z must point outwards.
+  bool needs_outward_frame() const { return true; }
+  Color eval(const Vec3& wo, const Vec3& wi) const;
+  float pdf(const Vec3& wo, const Vec3& wi) const;
+  // Reflection when u_lobe < F (of wo to the sampled facet), transmission otherwise, so every
+  // sample carries the weight of its lobe's share and none is split.
+  std::optional<BsdfSample> sample(const Vec3& wo, float u_lobe, Sample2D u) const;
+};
+
+struct DielectricSurface;  // scene/dielectric_material.h
+struct Material;           // scene/render_scene.h
+struct SurfacePoint;       // render/surface/surface.h
+class TextureLookup;       // image/texture_lookup.h
+struct SurfaceBsdf;        // render/bsdf/material_bsdf.h
+
+// A dielectric's BSDF at `point`, as render/bsdf/material_bsdf.h asks of every kind: written into `out`
+// (its frame left to the caller), the shading normal returned.
+Vec3 bsdf_from(const DielectricSurface& model, const Material& material, const SurfacePoint& point,
+               const TextureLookup* textures, SurfaceBsdf& out);
+
+}  // namespace rtpro

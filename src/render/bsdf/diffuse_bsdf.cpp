@@ -1,0 +1,20 @@
+#include "diffuse_bsdf.h"
+
+#include "material_bsdf.h"
+#include "texture.h"
+
+#include <numbers>
+
+namespace rtpro {
+
+float DiffuseBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
+  if (!same_hemisphere(wo, wi)) return 0.0f;
+  return cosine_hemisphere_pdf(abs_cos_theta(wi));
+}
+
+Vec3 bsdf_from(const DiffuseSurface&, const Material& material, const SurfacePoint& point,
+               const TextureLookup* textures, SurfaceBsdf& out) {
+  return lambert_surface(evaluate(material.color, point, textures), point.shading_normal, out);
+}
+
+}  // namespace rtpro

@@ -1,0 +1,389 @@
+#include "principled_bsdf.h"
+
+#include "material_bsdf.h"
+#include "normal_map.h"
+#include "texture.h"
+#include "rtpro/core/math_constants.h"
+#include "dielectric.h"
+#include "specular_albedo.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rtpro {
+namespace {
+
+constexpr float kCoatF0 = 0.04f;  // KHR_materials_clearcoat: ior 1.5
+// Every lobe that can contribute keeps at least this share of the samples: the albedo estimates
+// behind the choice can be near zero where f is not (a rough transmission beyond the critical
+// angle, a smooth sheen seen from above), and a lobe never sampled would leave its light to the
+// light sampler alone.
+constexpr float kMinLobeShare = 0.02f;
+constexpr float kOneMinusEpsilon = 1.0f - 0x1p-24f;
+
+float clamp01(float x) { return std::clamp(x, 0.0f, 1.0f); }
+Color clamp01(const Color& c) { return {clamp01(c.x), clamp01(c.y), clamp01(c.z)}; }
+float mean(const Color& c) { return (c.x + c.y + c.z) / 3.0f; }
+
+// The facet normal that reflects wo into wi, facing +z, or nothing for wi = −wo.
+std::optional<Vec3> reflection_normal(const Vec3& wo, const Vec3& wi) {
+  const Vec3 half = wo + wi;
+  const float half_length2 = dot(half, half);
+  if (half_length2 == 0.0f) return std::nullopt;
+  const Vec3 wm = half / std::sqrt(half_length2);
+  return wm.z < 0.0f ? -wm : wm;
+}
+
+// D G / (4 |cos θo| |cos θi|): a GGX reflection without its Fresnel term.
+float microfacet_reflection(const GgxDistribution& ggx, const Vec3& wo, const Vec3& wi, const Vec3& wm) {
+  return ggx.d(wm) * ggx.g(wo, wi) / (4.0f * abs_cos_theta(wo) * abs_cos_theta(wi));
+}
+
+// Visible normals reflected: dωm/dωi = 1 / (4 |wo·wm|).
+float reflection_density(const GgxDistribution& ggx, const Vec3& wo, const Vec3& wm) {
+  const float wo_dot_wm = std::fabs(dot(wo, wm));
+  return wo_dot_wm == 0.0f ? 0.0f : ggx.visible_normal_pdf(wo, wm) / (4.0f * wo_dot_wm);
+}
+
+std::optional<Vec3> sample_reflection(const GgxDistribution& ggx, const Vec3& wo, Sample2D u) {
+  const Vec3 wi = -reflect(wo, ggx.sample_visible_normal(wo, u));
+  // Facets near the horizon reflect some directions into the surface: that light is lost to
+  // single scattering (the albedo scaling hands it to the layers below).
+  if (!same_hemisphere(wo, wi)) return std::nullopt;
+  return wi;
+}
+
+struct TransmissionGeometry {
+  Vec3 wm;  // the generalised half vector, facing +z
+  float etap, wo_dot_wm, wi_dot_wm, denom;
+};
+
+// Walter et al.'s refraction geometry, as DielectricBsdf has it: nothing where no facet facing both
+// directions refracts one into the other.
+std::optional<TransmissionGeometry> transmission_geometry(const Vec3& wo, const Vec3& wi, float eta) {
+  if (wo.z * wi.z >= 0.0f) return std::nullopt;
+  const float etap = relative_eta(wo, eta);
+  const Vec3 half = wi * etap + wo;
+  const float half_length2 = dot(half, half);
+  if (half_length2 == 0.0f) return std::nullopt;
+  Vec3 wm = half / std::sqrt(half_length2);
+  if (wm.z < 0.0f) wm = -wm;
+  const float wo_dot_wm = dot(wo, wm), wi_dot_wm = dot(wi, wm);
+  if (wi_dot_wm * wi.z < 0.0f || wo_dot_wm * wo.z < 0.0f) return std::nullopt;
+  const float sum = wi_dot_wm + wo_dot_wm / etap;
+  if (sum == 0.0f) return std::nullopt;
+  return TransmissionGeometry{wm, etap, wo_dot_wm, wi_dot_wm, sum * sum};
+}
+
+}  // namespace
+
+PrincipledBsdf::PrincipledBsdf(const PrincipledParameters& p)
+    : base_color_(clamp01(p.base_color)), metalness_(clamp01(p.metalness)),
+      transmission_(clamp01(p.transmission_weight)),
+      eta_(std::max(1.0f, p.ior)), ggx_{roughness_to_alpha(clamp01(p.roughness))},
+      specular_f90_(clamp01(p.specular_weight)),
+      coat_weight_(clamp01(p.coat_weight)), coat_ggx_{roughness_to_alpha(clamp01(p.coat_roughness))},
+      fuzz_color_(clamp01(p.fuzz_color)), fuzz_max_(max_component(fuzz_color_)), fuzz_(p.fuzz_roughness),
+      metal_(ConductorBsdf::from_f0(base_color_, ggx_.alpha)) {
+  // KHR_materials_specular clamps the tinted F0 before applying the weight.
+  const float reflectance = ((eta_ - 1.0f) / (eta_ + 1.0f)) * ((eta_ - 1.0f) / (eta_ + 1.0f));
+  specular_f0_ = min(max(p.specular_color, Color(0.0f)) * reflectance, Color(1.0f)) * specular_f90_;
+  const Color average = ggx_schlick_average_albedo(ggx_.alpha)(specular_f0_, specular_f90_);
+  for (int c = 0; c < 3; ++c) diffuse_normalization_[c] = average[c] < 1.0f ? 1.0f / (1.0f - average[c]) : 0.0f;
+
+  const bool dielectric = metalness_ < 1.0f;
+  const bool reflects = max_component(specular_f0_) > 0.0f || specular_f90_ > 0.0f;
+  const bool tinted = max_component(base_color_) > 0.0f;
+  active_[kCoat] = coat_weight_ > 0.0f;
+  active_[kFuzz] = fuzz_max_ > 0.0f;
+  // From inside, total internal reflection happens whatever the specular weight.
+  active_[kSpecular] = dielectric && (reflects || transmission_ > 0.0f);
+  active_[kDiffuse] = dielectric && transmission_ < 1.0f && tinted;
+  active_[kTransmission] = dielectric && transmission_ > 0.0f && tinted;
+  active_[kMetal] = metalness_ > 0.0f;
+  for (int k = 0; k < kLobeCount; ++k) sampled_with_density_[k] = active_[k] && !lobe_is_delta(static_cast<Lobe>(k));
+}
+
+bool PrincipledBsdf::lobe_is_delta(Lobe lobe) const {
+  switch (lobe) {
+    case kCoat: return coat_ggx_.effectively_smooth();
+    case kFuzz:
+    case kDiffuse: return false;
+    case kSpecular:
+    case kMetal: return ggx_.effectively_smooth();
+    // η = 1 bends nothing: the refraction is straight through, whatever α says.
+    case kTransmission: return ggx_.effectively_smooth() || eta_ == 1.0f;
+    case kLobeCount: break;
+  }
+  return false;  // unreachable: the switch covers every lobe
+}
+
+bool PrincipledBsdf::is_delta() const {
+  bool any = false;
+  for (int k = 0; k < kLobeCount; ++k) {
+    if (!active_[k]) continue;
+    if (!lobe_is_delta(static_cast<Lobe>(k))) return false;
+    any = true;
+  }
+  return any;
+}
+
+Color PrincipledBsdf::specular_fresnel(float cos_theta) const {
+  return specular_f0_ + (Color(specular_f90_) - specular_f0_) * schlick_weight(cos_theta);
+}
+
+// Schlick's approximation depends on the angle on the outside: seen from inside, the cosine is
+// that of the refracted direction, and beyond the critical angle everything reflects. So a facet
+// reflects as much from either side, and nothing leaks out where no light can.
+Color PrincipledBsdf::glass_fresnel(float wo_dot_wm) const {
+  if (wo_dot_wm >= 0.0f) return specular_fresnel(wo_dot_wm);
+  const float sin2_t = (1.0f - wo_dot_wm * wo_dot_wm) * eta_ * eta_;
+  if (sin2_t >= 1.0f) return Color(1.0f);
+  return specular_fresnel(std::sqrt(1.0f - sin2_t));
+}
+
+// The opaque part reflects alike on either side; the transmissive part as glass does.
+Color PrincipledBsdf::reflection_fresnel(float wo_dot_wm) const {
+  const Color opaque = specular_fresnel(std::fabs(wo_dot_wm));
+  if (transmission_ == 0.0f) return opaque;
+  return opaque * (1.0f - transmission_) + glass_fresnel(wo_dot_wm) * transmission_;
+}
+
+float PrincipledBsdf::coat_fresnel(float cos_theta) const {
+  return kCoatF0 + (1.0f - kCoatF0) * schlick_weight(cos_theta);
+}
+
+PrincipledBsdf::Outgoing PrincipledBsdf::outgoing(const Vec3& wo) const {
+  Outgoing o{};
+  o.cos_o = abs_cos_theta(wo);
+  if (active_[kSpecular] || active_[kDiffuse])
+    o.specular_albedo = ggx_schlick_albedo(o.cos_o, ggx_.alpha)(specular_f0_, specular_f90_);
+  const float coat_albedo = active_[kCoat] ? ggx_schlick_albedo(o.cos_o, coat_ggx_.alpha)(kCoatF0, 1.0f) : 0.0f;
+  const float fuzz_albedo = active_[kFuzz] ? fuzz_.albedo(o.cos_o) : 0.0f;
+  o.below_coat = 1.0f - coat_weight_ * coat_albedo;
+  o.below_fuzz = o.below_coat * std::max(0.0f, 1.0f - fuzz_max_ * fuzz_albedo);
+
+  // Estimates of each lobe's albedo at wo; exact for the delta lobes, whose weight is a Fresnel
+  // factor at wo.
+  const float dielectric = o.below_fuzz * (1.0f - metalness_);
+  // Seen from inside, the glass part reflects by its own Fresnel (total internal reflection).
+  const Color glass_reflectance = wo.z > 0.0f || !active_[kTransmission] ? o.specular_albedo : glass_fresnel(wo.z);
+  std::array<float, kLobeCount> estimate{};
+  if (active_[kCoat]) estimate[kCoat] = coat_weight_ * coat_albedo;
+  if (active_[kFuzz]) estimate[kFuzz] = o.below_coat * mean(fuzz_color_) * fuzz_albedo;
+  if (active_[kSpecular]) {
+    estimate[kSpecular] =
+        dielectric * ((1.0f - transmission_) * mean(o.specular_albedo) + transmission_ * mean(glass_reflectance));
+  }
+  if (active_[kDiffuse]) {
+    estimate[kDiffuse] = dielectric * (1.0f - transmission_) * mean(base_color_ * (Color(1.0f) - o.specular_albedo));
+  }
+  if (active_[kTransmission]) {
+    estimate[kTransmission] = dielectric * transmission_ * mean(base_color_ * (Color(1.0f) - glass_fresnel(wo.z)));
+  }
+  if (active_[kMetal]) estimate[kMetal] = o.below_fuzz * metalness_ * mean(metal_.fresnel(o.cos_o));
+
+  float total = 0.0f;
+  for (float e : estimate) total += e;
+  if (total <= 0.0f) return o;  // nothing reflects or transmits: every probability stays 0
+  float floored_total = 0.0f;
+  for (int k = 0; k < kLobeCount; ++k) {
+    if (sampled_with_density_[k]) estimate[k] = std::max(estimate[k], kMinLobeShare * total);
+    floored_total += estimate[k];
+  }
+  for (int k = 0; k < kLobeCount; ++k) o.probability[k] = estimate[k] / floored_total;
+  return o;
+}
+
+Color PrincipledBsdf::evaluate_transmission(const Vec3& wo, const Vec3& wi) const {
+  const std::optional<TransmissionGeometry> t = transmission_geometry(wo, wi, eta_);
+  if (!t) return Color(0.0f);
+  const Color passed = Color(1.0f) - glass_fresnel(t->wo_dot_wm);
+  // Walter et al.'s transmission term with the radiance scale 1/etap², as in DielectricBsdf.
+  const float walter = ggx_.d(t->wm) * ggx_.g(wo, wi) *
+                       std::fabs(t->wi_dot_wm * t->wo_dot_wm / (wi.z * wo.z * t->denom)) / (t->etap * t->etap);
+  return base_color_ * passed * (transmission_ * walter);
+}
+
+float PrincipledBsdf::transmission_density(const Vec3& wo, const Vec3& wi) const {
+  const std::optional<TransmissionGeometry> t = transmission_geometry(wo, wi, eta_);
+  if (!t) return 0.0f;
+  return ggx_.visible_normal_pdf(wo, t->wm) * std::fabs(t->wi_dot_wm) / t->denom;
+}
+
+Color PrincipledBsdf::evaluate(const Vec3& wo, const Vec3& wi, const Outgoing& o) const {
+  if (wo.z == 0.0f || wi.z == 0.0f) return Color(0.0f);
+  if (!same_hemisphere(wo, wi)) {
+    if (!sampled_with_density_[kTransmission]) return Color(0.0f);
+    return evaluate_transmission(wo, wi) * (o.below_fuzz * (1.0f - metalness_));
+  }
+  const std::optional<Vec3> wm = reflection_normal(wo, wi);
+  if (!wm) return Color(0.0f);
+  Color f(0.0f);
+  if (sampled_with_density_[kCoat]) {
+    f += Color(coat_weight_ * microfacet_reflection(coat_ggx_, wo, wi, *wm) * coat_fresnel(std::fabs(dot(wo, *wm))));
+  }
+  if (active_[kFuzz]) f += fuzz_color_ * (o.below_coat * fuzz_.eval(wo, wi));
+
+  Color material(0.0f);
+  if (metalness_ < 1.0f) {
+    Color dielectric(0.0f);
+    if (sampled_with_density_[kSpecular]) {
+      dielectric += reflection_fresnel(dot(wo, *wm)) * microfacet_reflection(ggx_, wo, wi, *wm);
+    }
+    if (active_[kDiffuse]) {
+      const Color albedo_i = ggx_schlick_albedo(abs_cos_theta(wi), ggx_.alpha)(specular_f0_, specular_f90_);
+      Color lambert;
+      for (int c = 0; c < 3; ++c) {
+        const float passed = (1.0f - o.specular_albedo[c]) * (1.0f - albedo_i[c]);
+        lambert[c] = base_color_[c] * (std::max(0.0f, passed) * diffuse_normalization_[c] * kInvPi);
+      }
+      dielectric += lambert * (1.0f - transmission_);
+    }
+    material += dielectric * (1.0f - metalness_);
+  }
+  if (sampled_with_density_[kMetal]) material += metal_.eval(wo, wi) * metalness_;
+  return f + material * o.below_fuzz;
+}
+
+float PrincipledBsdf::density(const Vec3& wo, const Vec3& wi, const Outgoing& o) const {
+  if (wo.z == 0.0f || wi.z == 0.0f) return 0.0f;
+  const auto weight = [&](Lobe lobe) { return sampled_with_density_[lobe] ? o.probability[lobe] : 0.0f; };
+  if (!same_hemisphere(wo, wi)) {
+    const float p = weight(kTransmission);
+    return p > 0.0f ? p * transmission_density(wo, wi) : 0.0f;
+  }
+  const std::optional<Vec3> wm = reflection_normal(wo, wi);
+  if (!wm) return 0.0f;
+  float pdf = 0.0f;
+  if (const float p = weight(kCoat); p > 0.0f) pdf += p * reflection_density(coat_ggx_, wo, *wm);
+  if (const float p = weight(kFuzz); p > 0.0f) pdf += p * (0.5f * kInvPi);  // uniform over the hemisphere
+  if (const float p = weight(kSpecular); p > 0.0f) pdf += p * reflection_density(ggx_, wo, *wm);
+  if (const float p = weight(kDiffuse); p > 0.0f) pdf += p * cosine_hemisphere_pdf(abs_cos_theta(wi));
+  if (const float p = weight(kMetal); p > 0.0f) pdf += p * metal_.pdf(wo, wi);
+  return pdf;
+}
+
+Color PrincipledBsdf::eval(const Vec3& wo, const Vec3& wi) const { return evaluate(wo, wi, outgoing(wo)); }
+
+float PrincipledBsdf::pdf(const Vec3& wo, const Vec3& wi) const { return density(wo, wi, outgoing(wo)); }
+
+std::optional<Vec3> PrincipledBsdf::sample_direction(Lobe lobe, const Vec3& wo, float u_lobe, Sample2D u) const {
+  switch (lobe) {
+    case kCoat: return sample_reflection(coat_ggx_, wo, u);
+    case kSpecular: return sample_reflection(ggx_, wo, u);
+    case kFuzz: {
+      // Uniform over the hemisphere: the sheen lives at grazing angles, where cosine sampling is
+      // thinnest (Estevez and Kulla's advice).
+      const float z = u.x;
+      const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+      const float phi = 2.0f * kPi * u.y;
+      return Vec3{r * std::cos(phi), r * std::sin(phi), wo.z < 0.0f ? -z : z};
+    }
+    case kDiffuse: {
+      Vec3 wi = sample_cosine_hemisphere(u);
+      if (wo.z < 0.0f) wi.z = -wi.z;
+      return wi;
+    }
+    case kTransmission: {
+      const std::optional<Vec3> wi = refract_through(wo, ggx_.sample_visible_normal(wo, u), eta_);
+      if (!wi || wi->z * wo.z >= 0.0f) return std::nullopt;
+      return wi;
+    }
+    case kMetal: {
+      const std::optional<BsdfSample> s = metal_.sample(wo, u_lobe, u);
+      if (!s) return std::nullopt;
+      return s->wi;
+    }
+    case kLobeCount: break;
+  }
+  return std::nullopt;  // unreachable: the switch covers every lobe
+}
+
+// A mirror direction gathers every smooth reflecting lobe (coat, specular, metal) at once: one
+// sample carries their summed weight with their summed probability, rather than one lobe's weight
+// over its own share.
+std::optional<BsdfSample> PrincipledBsdf::sample_delta(Lobe lobe, const Vec3& wo, const Outgoing& o) const {
+  if (lobe == kTransmission) {
+    const std::optional<Vec3> wi = refract_through(wo, Vec3{0.0f, 0.0f, 1.0f}, eta_);
+    if (!wi || wi->z * wo.z >= 0.0f) return std::nullopt;
+    const float etap = relative_eta(wo, eta_);
+    const Color weight = base_color_ * (Color(1.0f) - glass_fresnel(wo.z)) *
+                         (o.below_fuzz * (1.0f - metalness_) * transmission_ / (etap * etap));
+    return BsdfSample{weight / abs_cos_theta(*wi), *wi, o.probability[kTransmission], true, true};
+  }
+  Color weight(0.0f);
+  float probability = 0.0f;
+  if (active_[kCoat] && lobe_is_delta(kCoat)) {
+    weight += Color(coat_weight_ * coat_fresnel(o.cos_o));
+    probability += o.probability[kCoat];
+  }
+  if (active_[kSpecular] && lobe_is_delta(kSpecular)) {
+    weight += reflection_fresnel(wo.z) * (o.below_fuzz * (1.0f - metalness_));
+    probability += o.probability[kSpecular];
+  }
+  if (active_[kMetal] && lobe_is_delta(kMetal)) {
+    weight += metal_.fresnel(o.cos_o) * (o.below_fuzz * metalness_);
+    probability += o.probability[kMetal];
+  }
+  const Vec3 wi{-wo.x, -wo.y, wo.z};
+  return BsdfSample{weight / o.cos_o, wi, probability, true, false};
+}
+
+std::optional<BsdfSample> PrincipledBsdf::sample(const Vec3& wo, float u_lobe, Sample2D u) const {
+  if (wo.z == 0.0f) return std::nullopt;
+  const Outgoing o = outgoing(wo);
+  // The lobe whose share of [0, 1) holds u_lobe; u_lobe rescaled within that share is fresh again.
+  int chosen = -1;
+  float share_start = 0.0f, next_start = 0.0f;
+  for (int k = 0; k < kLobeCount && (chosen < 0 || u_lobe >= next_start); ++k) {
+    if (o.probability[k] <= 0.0f) continue;
+    chosen = k;
+    share_start = next_start;
+    next_start += o.probability[k];
+  }
+  if (chosen < 0) return std::nullopt;
+  const Lobe lobe = static_cast<Lobe>(chosen);
+  const float u_within = std::clamp((u_lobe - share_start) / o.probability[lobe], 0.0f, kOneMinusEpsilon);
+  if (lobe_is_delta(lobe)) return sample_delta(lobe, wo, o);
+
+  const std::optional<Vec3> wi = sample_direction(lobe, wo, u_within, u);
+  if (!wi || wi->z == 0.0f) return std::nullopt;
+  // f and pdf of the whole mixture, as eval() and pdf() compute them, so MIS weights match.
+  const float pdf = density(wo, *wi, o);
+  if (pdf == 0.0f) return std::nullopt;
+  return BsdfSample{evaluate(wo, *wi, o), *wi, pdf, false, !same_hemisphere(wo, *wi)};
+}
+
+// Material::color is the Whitted view's; the model's base colour is its own texture.
+Vec3 bsdf_from(const PrincipledSurface& p, const Material&, const SurfacePoint& point, const TextureLookup* textures,
+               SurfaceBsdf& out) {
+  PrincipledParameters parameters;
+  parameters.base_color = evaluate(p.base_color, point, textures);
+  parameters.metalness = p.metalness;
+  parameters.roughness = p.roughness;
+  parameters.ior = p.ior;
+  parameters.specular_weight = p.specular_weight;
+  parameters.specular_color = p.specular_color;
+  parameters.transmission_weight = p.transmission_weight;
+  parameters.coat_weight = p.coat_weight;
+  parameters.coat_roughness = p.coat_roughness;
+  parameters.fuzz_color = p.fuzz_color;
+  parameters.fuzz_roughness = p.fuzz_roughness;
+  if (p.metallic_roughness) {
+    const Color texel = evaluate(*p.metallic_roughness, point.tex_u, point.tex_v, textures);
+    parameters.roughness = texel.y;
+    parameters.metalness = texel.z;
+  }
+  const Vec3 normal = p.normal_map ? mapped_normal(*p.normal_map, point, textures) : point.shading_normal;
+  // KHR_materials_specular's specularFactor 0 on a non-metal without other layers is the pure
+  // Lambert base, by the extension's definition: the same f and pdf from the cheaper kind.
+  if (p.specular_weight == 0.0f && parameters.metalness == 0.0f && p.transmission_weight == 0.0f &&
+      p.coat_weight == 0.0f && max_component(p.fuzz_color) == 0.0f)
+    return lambert_surface(parameters.base_color, normal, out);
+  out.bsdf = PrincipledBsdf(parameters);
+  out.albedo = parameters.base_color;
+  return normal;
+}
+
+}  // namespace rtpro

@@ -1,0 +1,119 @@
+#pragma once
+// Unidirectional path tracing with multiple importance sampling (the `path` integrator). At every
+// vertex whose BSDF is not purely specular, one light sample (LightSet: every light kind and every
+// emissive surface) and one BSDF sample, each weighted by the power heuristic against the other's
+// pdf; emission reached by a BSDF sample after a specular vertex (or by the camera ray) counts in
+// full. Russian roulette after kRouletteStart bounces, its number from the sampler.
+//
+// Light linking (scene/light_links.h): a vertex samples among the lights that illuminate its
+// object, and emission a ray from it reaches is weighted by that vertex's pdfs; its shadow rays
+// pass the objects that do not cast their light's shadows.
+//
+// Paths are traced in generations, as the Whitted integrator traces its rays: every path's next ray of a
+// batch together, then every shadow ray of that generation together. Each sample's radiance sums
+// its contributions in the order its own path made them, so it never depends on what else shares
+// its batch; every random decision is a pure function of (pixel, sample, dimension, seed).
+#include "camera_batch.h"
+#include "camera_samplers.h"
+#include "rtpro/backend/backend.h"
+#include "rtpro/image/texture_lookup.h"
+#include "rtpro/render/ray_counts.h"
+#include "light_set.h"
+#include "rtpro/render/sampler.h"
+#include "sobol_sampler.h"
+#include "surface.h"
+#include "rtpro/scene/render_scene.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace rtpro {
+
+namespace path_dimension {
+// Offsets within a bounce's dimensions (sample_dimension::at_bounce).
+inline constexpr int kLightPoint = 0;     // and 1
+inline constexpr int kBsdfDirection = 2;  // and 3
+inline constexpr int kChoices = 4;        // and 5: which light (x) and which BSDF lobe (y)
+inline constexpr int kRoulette = 6;
+}  // namespace path_dimension
+
+inline constexpr int kRouletteStart = 3;
+
+// The buffers one worker reuses from batch to batch.
+class PathWorkspace {
+ public:
+  struct Path {
+    std::uint32_t sample;
+    int bounce;
+    Color beta;            // throughput from the camera to this ray's origin
+    Vec3 origin;           // the vertex the ray leaves (for the pdf of light sampling)
+    float bsdf_pdf;        // solid-angle pdf of the ray's direction
+    bool specular;         // the ray left a specular vertex or the camera: emission counts in full
+    bool aov_pending;      // albedo and normal AOVs wait for the first non-specular vertex
+    bool transmitted;      // the ray was refracted into or out of a surface (counted as refraction)
+    std::uint32_t medium;  // the dielectric material whose inside the ray crosses, or kOutside
+    std::uint32_t group;   // the light-link group of the vertex the ray leaves (0 for the camera)
+  };
+  static constexpr std::uint32_t kOutside = ~0u;
+  struct ShadowQuery {
+    std::uint32_t sample;
+    Color contribution;  // added when the shadow ray is unoccluded
+  };
+
+  std::vector<Path> paths, next_paths;
+  std::vector<Ray> rays, next_rays;
+  std::vector<Hit> hits;
+  std::vector<SurfacePoint> surfaces;  // of the hits, for the hits that are valid
+  // The random numbers of a vertex, drawn for the whole generation at once.
+  struct VertexSamples {
+    Sample2D choices;         // which light (x) and which BSDF lobe (y)
+    Sample2D light_point;     // where on the light
+    Sample2D bsdf_direction;  // the BSDF's direction within its lobe
+    float roulette;           // from kRouletteStart on: whether the path goes on
+    // sample_cosine_hemisphere(bsdf_direction), drawn with it when the scene has Lambert surfaces.
+    Vec3 cosine_direction;
+  };
+  std::vector<SampleKey> path_keys;  // per path, its camera sample
+  std::vector<Sample2D> draws;
+  std::vector<float> roulette_draws;
+  std::vector<VertexSamples> vertex_samples;
+  // Per path, its vertex's light sample and whether there is one, made for the whole generation
+  // at once when the scene is lit by one point light (LightSet::lone_point_light).
+  std::vector<PathLightSample> light_samples;
+  std::vector<std::uint8_t> light_found;
+  std::vector<ShadowQuery> shadow_queries;
+  std::vector<Ray> shadow_rays;
+  // Under light linking only: per shadow ray, the scene light it goes to, or kInvalidId.
+  std::vector<std::uint32_t> shadow_lights;
+  std::vector<std::uint8_t> occluded;
+};
+
+// The path integrator with its scene, settings and lights (every light and emissive surface of the
+// scene, and its environment when it has one: required then, built from its image). `textures`:
+// the scene's image textures, opened (needed only when it has some).
+class PathIntegrator {
+ public:
+  using Workspace = PathWorkspace;
+  PathIntegrator(const RenderScene& scene, const Backend& backend, const CameraSamplers& samplers,
+                 const TextureLookup* textures, const EnvironmentLight* environment)
+      : scene_(scene), backend_(backend), samplers_(samplers), textures_(textures), lights_(scene, environment) {}
+
+  // Traces the batch's paths; each sample's random numbers come from the sampler render.sampler
+  // chooses. Ray counts are added to `counts` (bounces as reflection or refraction rays).
+  void trace(const CameraBatch& batch, RayCounts& counts, Workspace& workspace) const;
+
+  const LightSet& lights() const { return lights_; }
+
+ private:
+  template <class Sampler>
+  void trace_with(const Sampler& sampler, const CameraBatch& batch, RayCounts& counts, Workspace& ws) const;
+
+  const RenderScene& scene_;
+  const Backend& backend_;
+  const CameraSamplers& samplers_;
+  const TextureLookup* textures_;
+  LightSet lights_;
+};
+
+}  // namespace rtpro

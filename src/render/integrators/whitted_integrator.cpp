@@ -1,0 +1,380 @@
+#include "whitted_integrator.h"
+
+#include "rtpro/core/append_ray.h"
+#include "point_light_lanes.h"
+#include "rtpro/core/avx2_clones.h"
+#include "beer_lambert.h"
+#include "dielectric.h"
+#include "light_linking.h"
+#include "light_sample.h"
+#include "ray_offset.h"
+#include "surface_batch.h"
+#include "texture.h"
+
+#include <cmath>
+#include <optional>
+#include <variant>
+
+namespace rtpro {
+
+namespace {
+
+using Workspace = ShadingWorkspace;
+
+// Branches of the ray tree carrying less than this (largest channel of the path weight) are not
+// traced: below what an 8-bit output resolves even at full exposure, and it bounds the tree that
+// glass (two children per hit) would otherwise double at every depth.
+constexpr float kMinThroughput = 1.0f / 4096.0f;
+
+float max_channel(const Color& c) { return std::max(c.x, std::max(c.y, c.z)); }
+
+bool is_black(const Color& c) { return c.x == 0.0f && c.y == 0.0f && c.z == 0.0f; }
+
+// The emission of the nearest area light `ray` sees before t_max, if any, and where along the ray.
+struct SeenEmitter {
+  Color emission;
+  float t;
+};
+std::optional<SeenEmitter> seen_emitter(const RenderScene& scene, const Workspace& ws, const Ray& ray, float t_max) {
+  std::optional<SeenEmitter> seen;
+  for (const std::uint32_t l : ws.emitters)
+    if (const std::optional<float> t = hit_light(scene.lights[l], ray, t_max)) {
+      t_max = *t;
+      seen = SeenEmitter{light_emission(scene.lights[l]), *t};
+    }
+  return seen;
+}
+
+// The path weight after the ray's length inside glass (absorption), for a segment of parameter t.
+Color through_medium(const RenderScene& scene, const Workspace::RayTask& task, const Ray& ray, float t) {
+  if (task.medium == Workspace::kOutside) return task.weight;
+  const Dielectric& glass = *scene.materials[task.medium].dielectric;
+  return task.weight *
+         beer_lambert_transmittance(glass.transmittance, glass.transmittance_distance, t * length(ray.dir));
+}
+
+// The shadow ray and query of a one-sample light (point, spot or directional) for surface `s`,
+// written to `ray` and `query`; false (both left unspecified) when there is none: the light is
+// behind the surface by either normal, or a spot light's cone leaves it dark.
+bool one_sample_shadow_ray(const Light& light, const Workspace::ShadedSurface& s, Ray& ray,
+                           Workspace::ShadowQuery& query) {
+  const LightSample ls = sample_light(light, s.point.position, Sample2D{0.5f, 0.5f});
+  if (is_black(ls.radiance)) return false;  // outside a spot light's cone
+  const float n_dot_l = dot(s.point.shading_normal, ls.direction);
+  if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) return false;
+  copy_ray(std::isinf(ls.distance) ? spawn_ray(s.point, ls.direction)
+                                   : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance),
+           ray);
+  query = {ls.radiance, n_dot_l, dot(s.mirror, ls.direction)};
+  return true;
+}
+
+// The shadow rays of light `l` for surface `s`: one for a point, spot or directional light, samples²
+// for an area light (none for a light behind the surface, by either normal, or sending nothing).
+void queue_light_shadow_rays(const RenderScene& scene, const StratifiedSampler& sampler, const SampleKey& key,
+                             int depth, const Workspace::ShadedSurface& s, std::uint32_t l, Workspace& ws) {
+  const Light& light = scene.lights[l];
+  const int per_axis = ws.light_samples_per_axis[l];
+  if (per_axis == 1 && !ws.is_emitter[l]) {
+    if (!one_sample_shadow_ray(light, s, ws.shadow_rays.emplace_back(), ws.shadow_queries.emplace_back())) {
+      ws.shadow_rays.pop_back();
+      ws.shadow_queries.pop_back();
+      return;
+    }
+    if (scene.links.linked()) ws.shadow_lights.push_back(l);
+    return;
+  }
+  const int count = per_axis * per_axis;
+  const float share = 1.0f / static_cast<float>(count);
+  for (int j = 0; j < count; ++j) {
+    const Sample2D u = sampler.light_sample(key.pixel_key, key.sample_index, depth, int(l), j, per_axis);
+    const LightSample ls = sample_light(light, s.point.position, u);
+    if (is_black(ls.radiance)) continue;
+    const float n_dot_l = dot(s.point.shading_normal, ls.direction);
+    if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) continue;
+    append_ray(ws.shadow_rays, std::isinf(ls.distance)
+                                   ? spawn_ray(s.point, ls.direction)
+                                   : spawn_ray_to(s.point, s.point.position + ls.direction * ls.distance));
+    ws.shadow_queries.push_back({ls.radiance * share, n_dot_l, dot(s.mirror, ls.direction)});
+    if (scene.links.linked()) ws.shadow_lights.push_back(l);
+  }
+}
+
+// Lights a batch of four surfaces takes through point_light_lanes at most (a scene with more
+// takes the one-by-one path).
+constexpr std::size_t kMaxLanedLights = 8;
+
+// The shadow rays of every surface of the generation: surface by surface, lights in scene order.
+// Where every light is a point, spot or directional light (one ray a surface at most), the rays
+// and queries are written in place at a cursor, an unneeded slot taken by the next one, and four
+// surfaces at a time take each point light through point_light_lanes (the same rays, bit for bit;
+// the other lights one surface at a time). Under light linking a surface takes only the lights
+// that illuminate its object, one surface at a time.
+RTPRO_AVX2_CLONES
+void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sampler, std::span<const SampleKey> keys,
+                       const Workspace::Generation& generation, int depth, Workspace& ws) {
+  const std::size_t light_count = scene.lights.size();
+  bool laned = light_count <= kMaxLanedLights && !scene.links.linked();
+  for (std::size_t l = 0; l < light_count && laned; ++l) laned = ws.light_samples_per_axis[l] == 1 && !ws.is_emitter[l];
+  if (!laned) {
+    for (Workspace::ShadedSurface& s : ws.surfaces) {
+      s.front_origin_known = false;
+      s.first_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
+      const std::uint32_t group = link_group_of(scene.links, ws.hits[s.task]);
+      for (std::uint32_t l = 0; l < light_count; ++l)
+        if (scene.links.illuminates(group, l))
+          queue_light_shadow_rays(scene, sampler, keys[generation.tasks[s.task].sample], depth, s, l, ws);
+      s.end_shadow = static_cast<std::uint32_t>(ws.shadow_queries.size());
+    }
+    return;
+  }
+  ws.shadow_rays.resize(ws.surfaces.size() * light_count);
+  ws.shadow_queries.resize(ws.shadow_rays.size());
+  Ray* const rays = ws.shadow_rays.data();
+  Workspace::ShadowQuery* const queries = ws.shadow_queries.data();
+  std::uint32_t cursor = 0;
+  PointLightLanes lanes[kMaxLanedLights];
+  const PointLight* point_lights[kMaxLanedLights] = {};
+  for (std::size_t l = 0; l < light_count; ++l) point_lights[l] = std::get_if<PointLight>(&scene.lights[l]);
+  std::size_t i = 0;
+  for (; i + 4 <= ws.surfaces.size(); i += 4) {
+    const SurfacePoint* points[4];
+    const Vec3* mirrors[4];
+    for (int k = 0; k < 4; ++k) {
+      points[k] = &ws.surfaces[i + k].point;
+      mirrors[k] = &ws.surfaces[i + k].mirror;
+    }
+    Vec3 front_origins[4];
+    point_light_lanes(std::span(point_lights, light_count), points, mirrors, lanes, front_origins);
+    for (unsigned k = 0; k < 4; ++k) {
+      Workspace::ShadedSurface& s = ws.surfaces[i + k];
+      s.front_origin = front_origins[k];
+      s.front_origin_known = true;
+      s.first_shadow = cursor;
+      for (std::uint32_t l = 0; l < light_count; ++l) {
+        const PointLight* point = point_lights[l];
+        if (!point || (lanes[l].infinite >> k & 1u)) {
+          cursor += one_sample_shadow_ray(scene.lights[l], s, rays[cursor], queries[cursor]);
+          continue;
+        }
+        store_ray(lanes[l], k, rays[cursor]);
+        queries[cursor] = {point->radiance, lanes[l].n_dot_l[k], lanes[l].r_dot_l[k]};
+        cursor += lanes[l].lit >> k & 1u;
+      }
+      s.end_shadow = cursor;
+    }
+  }
+  for (; i < ws.surfaces.size(); ++i) {
+    Workspace::ShadedSurface& s = ws.surfaces[i];
+    s.front_origin_known = false;
+    s.first_shadow = cursor;
+    for (std::uint32_t l = 0; l < light_count; ++l)
+      cursor += one_sample_shadow_ray(scene.lights[l], s, rays[cursor], queries[cursor]);
+    s.end_shadow = cursor;
+  }
+  ws.shadow_rays.resize(cursor);
+  ws.shadow_queries.resize(cursor);
+}
+
+// Reads the hits of one generation: misses see the background (or an area light), hits become
+// shaded surfaces with their shadow rays queued, one per light or samples² per area light (lights
+// behind the surface, by either normal, need none); at depth 0 a hit is the sample's primary hit
+// where records_primary.
+RTPRO_AVX2_CLONES
+void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler, std::span<const SampleKey> keys,
+                     const Workspace::Generation& generation, int depth, bool records_primary,
+                     std::span<SampleResult> results, Workspace& ws) {
+  ws.surfaces.clear();
+  ws.shadow_queries.clear();
+  ws.shadow_rays.clear();
+  ws.shadow_lights.clear();
+  // What follows the surface point and its mirror direction: the albedo and the camera hit's AOVs.
+  auto complete = [&](Workspace::ShadedSurface& s) {
+    const Ray& ray = generation.rays[s.task];
+    const ColorTexture& color = scene.materials[s.point.material].color;
+    const Color* plain = std::get_if<Color>(&color);
+    s.albedo = plain ? *plain : evaluate(color, s.point, ws.textures);
+    if (depth == 0 && records_primary)
+      results[generation.tasks[s.task].sample].primary = {true, s.albedo, s.point.shading_normal,
+                                                          ws.hits[s.task].t * length(ray.dir), s.point.object_id};
+  };
+  // Plain sphere hits and plain triangle hits wait in fours for make_sphere_surfaces4 and
+  // make_triangle_surfaces4 (the same surfaces, bit for bit).
+  struct Waiting {
+    std::uint32_t surfaces[4];
+    unsigned count = 0;
+  };
+  Waiting spheres, triangles;
+  auto make_waiting_surfaces = [&](Waiting& waiting, auto make_four) {
+    const Ray* rays[4];
+    const Hit* hits[4];
+    SurfacePoint* points[4];
+    Vec3* mirrors[4];
+    for (unsigned k = 0; k < 4; ++k) {
+      Workspace::ShadedSurface& s = ws.surfaces[waiting.surfaces[k]];
+      rays[k] = &generation.rays[s.task];
+      hits[k] = &ws.hits[s.task];
+      points[k] = &s.point;
+      mirrors[k] = &s.mirror;
+    }
+    make_four(scene, rays, hits, points, mirrors);
+    for (unsigned k = 0; k < 4; ++k) complete(ws.surfaces[waiting.surfaces[k]]);
+    waiting.count = 0;
+  };
+  // Any other hit, and plain hits left over from the last four: one at a time.
+  auto make_one_surface = [&](Workspace::ShadedSurface& s) {
+    const Ray& ray = generation.rays[s.task];
+    make_surface(scene, ray, ws.hits[s.task], s.point);
+    s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
+    complete(s);
+  };
+  for (std::uint32_t i = 0; i < generation.tasks.size(); ++i) {
+    const Workspace::RayTask& task = generation.tasks[i];
+    const Hit& hit = ws.hits[i];
+    const Ray& ray = generation.rays[i];
+    if (!ws.emitters.empty())
+      if (const std::optional<SeenEmitter> seen = seen_emitter(scene, ws, ray, hit.valid() ? hit.t : ray.tfar)) {
+        results[task.sample].radiance += through_medium(scene, task, ray, seen->t) * seen->emission;
+        continue;
+      }
+    if (!hit.valid()) {
+      const bool shows_environment = ws.environment && (depth > 0 || ws.environment->visible());
+      results[task.sample].radiance +=
+          task.weight * (shows_environment ? ws.environment->radiance(ray.dir) : scene.render.background);
+      continue;
+    }
+    Workspace::ShadedSurface& s = ws.surfaces.emplace_back();
+    s.task = i;
+    // Absorbed over the path inside glass (t is in units of the ray's direction length).
+    s.weight = through_medium(scene, task, ray, hit.t);
+    const std::uint32_t index = static_cast<std::uint32_t>(ws.surfaces.size() - 1);
+    if (is_plain_sphere_hit(scene, hit)) {
+      spheres.surfaces[spheres.count++] = index;
+      if (spheres.count == 4) make_waiting_surfaces(spheres, [](auto&&... four) { make_sphere_surfaces4(four...); });
+      continue;
+    }
+    if (is_plain_triangle_hit(scene, hit)) {
+      triangles.surfaces[triangles.count++] = index;
+      if (triangles.count == 4)
+        make_waiting_surfaces(triangles, [](auto&&... four) { make_triangle_surfaces4(four...); });
+      continue;
+    }
+    make_one_surface(s);
+  }
+  for (const Waiting* waiting : {&spheres, &triangles})
+    for (unsigned k = 0; k < waiting->count; ++k) make_one_surface(ws.surfaces[waiting->surfaces[k]]);
+  queue_shadow_rays(scene, sampler, keys, generation, depth, ws);
+}
+
+// Queues a child ray of the ray tree unless its weight is negligible.
+void queue_child(Workspace& ws, const Workspace::RayTask& child, const Ray& ray) {
+  if (!(max_channel(child.weight) >= kMinThroughput)) return;
+  ws.next.tasks.push_back(child);
+  append_ray(ws.next.rays, ray);
+}
+
+// Glass: Fresnel-weighted reflection and refraction (total internal reflection included), the side
+// told by the geometric normal; the refracted ray travels in the glass when it entered.
+void queue_dielectric_children(const Material& m, const Workspace::ShadedSurface& s, const Workspace::RayTask& task,
+                               const Ray& ray, Workspace& ws) {
+  const Dielectric& glass = *m.dielectric;
+  const Vec3 incident = normalize(ray.dir);
+  const Vec3& normal = s.point.geometric_normal;  // on the incident side
+  const float cos_incident = std::max(0.0f, -dot(incident, normal));
+  const float eta = s.point.front_face ? glass.ior : 1.0f / glass.ior;
+  const float reflectance = fresnel_dielectric(cos_incident, eta);
+  const std::uint32_t inside = s.point.material, outside = Workspace::kOutside;
+  // A reflected ray stays on the side it came from.
+  if (dot(s.mirror, normal) > 0.0f)
+    queue_child(ws, {task.sample, s.weight * reflectance, s.point.front_face ? outside : inside, false},
+                spawn_ray(s.point, s.mirror));
+  if (const auto refracted = refract(incident, normal, eta))
+    queue_child(ws, {task.sample, s.weight * (1.0f - reflectance), s.point.front_face ? inside : outside, true},
+                spawn_ray(s.point, *refracted));
+}
+
+// Adds each surface's direct light (ambient, then each unshadowed light in scene order) to its
+// sample and queues the reflection and refraction rays of the next generation. Glass has no
+// diffuse part: only highlights, then its two children.
+RTPRO_AVX2_CLONES
+void light_surfaces(const RenderScene& scene, const Workspace::Generation& generation, int depth,
+                    std::span<SampleResult> results, Workspace& ws) {
+  ws.next.clear();
+  for (const Workspace::ShadedSurface& s : ws.surfaces) {
+    const Workspace::RayTask& task = generation.tasks[s.task];
+    const Material& m = scene.materials[s.point.material];
+    const bool diffuse = !m.dielectric;
+    Color direct = diffuse ? s.albedo * scene.render.ambient : Color(0.0f);
+    for (std::uint32_t q = s.first_shadow; q < s.end_shadow; ++q) {
+      if (ws.occluded[q]) continue;
+      const Workspace::ShadowQuery& light = ws.shadow_queries[q];
+      if (diffuse) direct += s.albedo * light.radiance * light.n_dot_l;
+      if (light.r_dot_l > 0.0f && m.specular > 0.0f)
+        direct += light.radiance * (m.specular * std::pow(light.r_dot_l, m.shininess));
+    }
+    results[task.sample].radiance += s.weight * direct;
+
+    if (depth >= scene.render.max_depth) continue;
+    if (m.dielectric) {
+      queue_dielectric_children(m, s, task, generation.rays[s.task], ws);
+      continue;
+    }
+    // A shading normal can tilt the mirror direction below the surface: nothing to reflect then.
+    if (m.reflectivity <= 0.0f || dot(s.mirror, s.point.geometric_normal) <= 0.0f) continue;
+    ws.next.tasks.push_back({task.sample, s.weight * m.reflectivity, task.medium, false});
+    // The mirror ray leaves by the front (checked above): spawn_ray's origin.
+    Ray& mirror = ws.next.rays.emplace_back();
+    mirror.org = s.front_origin_known ? s.front_origin : offset_ray_origin_on_side(s.point, true);
+    mirror.dir = s.mirror;
+  }
+}
+
+}  // namespace
+
+void WhittedIntegrator::trace(const CameraBatch& batch, RayCounts& counts, Workspace& ws) const {
+  const RenderScene& scene = scene_;
+  const std::span<const Ray> camera_rays = batch.rays;
+  const std::span<const SampleKey> keys = batch.keys;
+  const std::span<SampleResult> results = batch.results;
+  ws.textures = textures_;
+  ws.environment = environment_;
+  ws.emitters.clear();
+  ws.is_emitter.assign(scene.lights.size(), 0);
+  ws.light_samples_per_axis.resize(scene.lights.size());
+  for (std::uint32_t l = 0; l < scene.lights.size(); ++l) {
+    ws.light_samples_per_axis[l] = light_samples_per_axis(scene.lights[l]);
+    if (!is_black(light_emission(scene.lights[l]))) {
+      ws.emitters.push_back(l);
+      ws.is_emitter[l] = 1;
+    }
+  }
+  ws.current.clear();
+  ws.current.tasks.resize(camera_rays.size());
+  for (std::uint32_t i = 0; i < camera_rays.size(); ++i) {
+    results[i] = SampleResult{};
+    ws.current.tasks[i] = {i, Color(1.0f)};
+  }
+  ws.current.rays.assign(camera_rays.begin(), camera_rays.end());
+  counts[RayKind::kCamera] += camera_rays.size();
+
+  for (int depth = 0; !ws.current.rays.empty(); ++depth) {
+    ws.hits.resize(ws.current.rays.size());
+    backend_.intersect(ws.current.rays, ws.hits, depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
+    gather_surfaces(scene, sampler_, keys, ws.current, depth, records_primary_, results, ws);
+
+    ws.occluded.resize(ws.shadow_rays.size());
+    occluded_with_shadow_linking(backend_, scene.links, ws.shadow_rays, ws.shadow_lights, ws.occluded,
+                                 depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
+    counts[RayKind::kShadow] += ws.shadow_rays.size();
+
+    light_surfaces(scene, ws.current, depth, results, ws);
+    // Summed in a local: a store to the counts in the loop would reload every task's field.
+    std::uint64_t refracted = 0;
+    for (const Workspace::RayTask& task : ws.next.tasks) refracted += task.refracted;
+    counts[RayKind::kRefraction] += refracted;
+    counts[RayKind::kReflection] += ws.next.tasks.size() - refracted;
+    std::swap(ws.current, ws.next);
+  }
+}
+
+}  // namespace rtpro

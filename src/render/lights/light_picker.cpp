@@ -1,0 +1,75 @@
+#include "light_picker.h"
+
+#include <algorithm>
+
+namespace rtpro {
+
+LightPicker::LightPicker(LightSamplerKind kind, std::span<const std::uint32_t> members, std::span<const float> power,
+                         std::span<const std::optional<LightBounds>> bounds)
+    : kind_(kind), members_(members.begin(), members.end()), member_of_(power.size(), kNone) {
+  std::vector<float> member_power;
+  std::vector<std::optional<LightBounds>> member_bounds;
+  member_power.reserve(members_.size());
+  member_bounds.reserve(members_.size());
+  for (std::uint32_t m = 0; m < members_.size(); ++m) {
+    member_of_[members_[m]] = m;
+    member_power.push_back(power[members_[m]]);
+    member_bounds.push_back(bounds[members_[m]]);
+  }
+  pick_ = AliasTable(member_power);
+
+  tree_ = LightTree(member_bounds);
+  infinite_slot_.assign(members_.size(), kNone);
+  std::vector<float> infinite_power;
+  double infinite_total = 0.0;
+  for (std::uint32_t m = 0; m < members_.size(); ++m)
+    if (!member_bounds[m] && member_power[m] > 0.0f) {
+      infinite_slot_[m] = static_cast<std::uint32_t>(infinite_.size());
+      infinite_.push_back(m);
+      infinite_power.push_back(member_power[m]);
+      infinite_total += member_power[m];
+    }
+  infinite_pick_ = AliasTable(infinite_power);
+  const double total = infinite_total + static_cast<double>(tree_.power());
+  infinite_probability_ = total > 0.0 ? static_cast<float>(infinite_total / total) : 0.0f;
+  if (members_.size() == 1 && !empty()) {
+    if (const std::optional<Pick> pick = pick_among(Vec3(0.0f), 0.0f)) {
+      single_pick_ = *pick;
+      single_ = true;
+    }
+  }
+}
+
+float LightPicker::probability(std::uint32_t light, const Vec3& point) const {
+  if (!holds(light)) return 0.0f;
+  const std::uint32_t member = member_of_[light];
+  switch (kind_) {
+    case LightSamplerKind::kPower: return pick_.pmf(member);
+    case LightSamplerKind::kTree:
+      if (infinite_slot_[member] != kNone) return infinite_probability_ * infinite_pick_.pmf(infinite_slot_[member]);
+      return (1.0f - infinite_probability_) * tree_.pmf(point, member);
+  }
+  return 0.0f;
+}
+
+std::optional<LightPicker::Pick> LightPicker::pick_among(const Vec3& point, float u) const {
+  switch (kind_) {
+    case LightSamplerKind::kPower: {
+      const AliasTable::Pick pick = pick_.sample(u);
+      return Pick{members_[pick.index], pick.pmf};
+    }
+    case LightSamplerKind::kTree:
+      if (u < infinite_probability_) {
+        const AliasTable::Pick pick = infinite_pick_.sample(std::min(u / infinite_probability_, 0x1.fffffep-1f));
+        return Pick{members_[infinite_[pick.index]], infinite_probability_ * pick.pmf};
+      } else {
+        const float u_tree = std::min((u - infinite_probability_) / (1.0f - infinite_probability_), 0x1.fffffep-1f);
+        const std::optional<LightTree::Pick> pick = tree_.sample(point, u_tree);
+        if (!pick) return std::nullopt;
+        return Pick{members_[pick->light], (1.0f - infinite_probability_) * pick->pmf};
+      }
+  }
+  return std::nullopt;
+}
+
+}  // namespace rtpro
