@@ -24,13 +24,12 @@ Prints one line: "cycles_render_seconds S".
 import math
 import sys
 import os
-import time
 
 import bpy
 import numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cycles_settings import configure_cycles  # noqa: E402
+from cycles_settings import configure_cycles, render_timed_exr  # noqa: E402
 from mathutils import Vector
 
 args = sys.argv[sys.argv.index("--") + 1:]
@@ -144,19 +143,4 @@ nodes["Background"].inputs["Strength"].default_value = 1.0
 world.cycles.sampling_method = "AUTOMATIC"
 
 configure_cycles(scene, spp, max_depth, threads)
-scene.render.resolution_x = width
-scene.render.resolution_y = height
-scene.render.resolution_percentage = 100
-scene.render.use_persistent_data = False
-scene.view_settings.view_transform = "Standard"
-scene.view_settings.look = "None"
-scene.view_settings.exposure = 0.0
-scene.view_settings.gamma = 1.0
-scene.render.image_settings.file_format = "OPEN_EXR"
-scene.render.image_settings.color_depth = "32"
-scene.render.image_settings.exr_codec = "ZIP"
-scene.render.filepath = out_file
-
-start = time.perf_counter()
-bpy.ops.render.render(write_still=True)
-print("cycles_render_seconds %.3f" % (time.perf_counter() - start))
+render_timed_exr(scene, width, height, out_file)

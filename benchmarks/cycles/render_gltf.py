@@ -24,13 +24,12 @@ Prints one line: "cycles_render_seconds S" (the render call: scene sync, BVH and
 import json
 import sys
 import os
-import time
 
 import bpy
 import numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cycles_settings import configure_cycles  # noqa: E402
+from cycles_settings import configure_cycles, render_timed_exr  # noqa: E402
 
 numpy.bool = bool  # Blender 3.4's glTF importer still uses numpy.bool, removed in Debian's numpy 1.24
 
@@ -100,18 +99,4 @@ scene.world.use_nodes = True
 scene.world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
 
 configure_cycles(scene, spp, max_depth, threads)
-scene.render.resolution_x = scene.render.resolution_y = size
-scene.render.resolution_percentage = 100
-scene.render.use_persistent_data = False
-scene.view_settings.view_transform = "Standard"
-scene.view_settings.look = "None"
-scene.view_settings.exposure = 0.0
-scene.view_settings.gamma = 1.0
-scene.render.image_settings.file_format = "OPEN_EXR"
-scene.render.image_settings.color_depth = "32"
-scene.render.image_settings.exr_codec = "ZIP"
-scene.render.filepath = out_file
-
-start = time.perf_counter()
-bpy.ops.render.render(write_still=True)
-print("cycles_render_seconds %.3f" % (time.perf_counter() - start))
+render_timed_exr(scene, size, size, out_file)
