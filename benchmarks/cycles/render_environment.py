@@ -3,7 +3,7 @@ benchmarks/cycles_environment_benchmark.sh. Run by Debian's Blender 3.4:
 
   blender -b --factory-startup --python render_environment.py -- HDRI.exr OUT.exr WIDTH HEIGHT SPP MAX_DEPTH THREADS
 
-The scene is the one the script writes for rtpro (positions in rtpro's +Y-up axes, turned to
+The scene is benchmarks/scenes/sunset_spheres.yaml (positions in rtpro's +Y-up axes, turned to
 Blender's +Z-up ones: (x, y, z) -> (x, -z, y)): a ground sphere of radius 1000 under a Lambertian
 clay sphere and a white rough metal sphere, lit only by the HDRI as the world (an Environment
 Texture, rotated as rtpro's `rotation: [0, 160, 0]`, which FORMAT.md states is a Mapping node
