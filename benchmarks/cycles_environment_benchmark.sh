@@ -12,7 +12,7 @@
 #   Release tree.
 set -euo pipefail
 source "$(dirname "$0")/options.sh"
-command -v blender >/dev/null || { echo "blender not found: apt-get install blender (Debian package, 3.4)" >&2; exit 2; }
+source "$root/benchmarks/cycles/blender.sh"
 size=${SIZE:-160}
 spp=${SPP:-64}
 max_depth=${MAX_DEPTH:-6}
@@ -21,14 +21,11 @@ t=${threads##* }
 height=$((size * 5 / 8))
 hdri=$root/scenes/environments/sunset.exr
 spheres=("$root/benchmarks/scenes/sunset_spheres.yaml" --size "${size}x$height" --max-depth "$max_depth")
-build_release_rtpro
+build_release rtpro
 out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-cycles-env.XXXXXX")
 
-cycles() {  # NAME SPP LOG
-  (cd "$out" && blender -b --factory-startup --python "$root/benchmarks/cycles/render_environment.py" -- \
-    "$hdri" "$out/$1.rgba.exr" "$size" "$height" "$2" "$max_depth" "$t" >"$3" 2>&1) ||
-    { echo "blender failed, see $3" >&2; exit 1; }
-  oiiotool "$out/$1.rgba.exr" --ch R,G,B -o "$out/$1.exr"  # rtpro writes R,G,B
+cycles() {  # NAME SPP LOG: $out/NAME.exr
+  render_with_cycles render_environment.py "$hdri" "$1" "$3" "$size" "$height" "$2" "$max_depth" "$t"
 }
 
 echo "long Cycles reference: ${size}x$height, $ref_spp spp ..." >&2
@@ -40,9 +37,7 @@ for r in $(seq "$runs"); do
   /usr/bin/time -f "%e" -o "$out/rtpro-r$r.seconds" "$build/rtpro" render "${spheres[@]}" -o "$out/rtpro-r$r.exr" \
     --spp "$spp" --threads "$t" --quiet --no-journal --set render.seed="$r"
 done
-for f in "$out"/cycles-r*.exr "$out"/rtpro-r*.exr "$out"/rtpro-reference.exr; do
-  "$build/rtpro" compare "$out/reference.exr" "$f" --json >"${f%.exr}.compare.json" || true
-done
+compare_each "$out/reference.exr" "$out"/cycles-r*.exr "$out"/rtpro-r*.exr "$out"/rtpro-reference.exr
 
 python3 - "$out" "$runs" "$size" "$height" "$spp" "$max_depth" "$ref_spp" "$t" <<'PY'
 import json, re, statistics, sys

@@ -18,7 +18,7 @@ env_spp=${ENV_SPP:-16}
 lights_spp=${LIGHTS_SPP:-16}
 ref_spp=${REF_SPP:-4096}
 t=${threads##* }
-build_release_rtpro
+build_release rtpro
 out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-lights.XXXXXX")
 height=$((size * 5 / 8))
 
@@ -75,12 +75,8 @@ for r in $(seq "$runs"); do
   render "lights-tree-r$r" "$lights_spp" "$many_lights" --set render.seed="$r"
   render "lights-power-r$r" "$power_spp" "$many_lights" --set render.seed="$r" --set render.light_sampler=power
 done
-for f in "$out"/env-*-r*.exr "$out"/env-reference-bsdf.exr; do
-  "$build/rtpro" compare "$out/env-reference.exr" "$f" --json >"${f%.exr}.compare.json" || true
-done
-for f in "$out"/lights-*-r*.exr; do
-  "$build/rtpro" compare "$out/lights-reference.exr" "$f" --json >"${f%.exr}.compare.json" || true
-done
+compare_each "$out/env-reference.exr" "$out"/env-*-r*.exr "$out"/env-reference-bsdf.exr
+compare_each "$out/lights-reference.exr" "$out"/lights-*-r*.exr
 
 python3 - "$out" "$runs" "$size" "$height" "$env_spp" "$lights_spp" "$power_spp" "$ref_spp" "$t" <<'PY'
 import json, statistics, sys
