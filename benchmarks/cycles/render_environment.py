@@ -29,6 +29,7 @@ import bpy
 import numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cycles_materials import bsdf_node, empty_node_tree  # noqa: E402
 from cycles_settings import configure_cycles, render_timed_exr  # noqa: E402
 from mathutils import Vector
 
@@ -47,19 +48,8 @@ def blender_axes(p):
 
 def material(name, kind, color):
     m = bpy.data.materials.new(name)
-    m.use_nodes = True
-    nodes, links = m.node_tree.nodes, m.node_tree.links
-    nodes.clear()
-    output = nodes.new("ShaderNodeOutputMaterial")
-    if kind == "lambert":
-        bsdf = nodes.new("ShaderNodeBsdfDiffuse")
-        bsdf.inputs["Roughness"].default_value = 0.0
-    else:
-        bsdf = nodes.new("ShaderNodeBsdfGlossy")
-        bsdf.distribution = "MULTI_GGX"
-        bsdf.inputs["Roughness"].default_value = 0.3
-    bsdf.inputs["Color"].default_value = (color[0], color[1], color[2], 1.0)
-    links.new(bsdf.outputs["BSDF"], output.inputs["Surface"])
+    nodes, links, output = empty_node_tree(m)
+    links.new(bsdf_node(nodes, kind, color, roughness=0.3).outputs["BSDF"], output.inputs["Surface"])
     return m
 
 
@@ -114,7 +104,7 @@ def ground_cap(name, radius, mat, half_width=190.0, cells=600):
 
 ground_cap("ground", 1000.0, material("ground", "lambert", (0.4, 0.4, 0.4)))
 uv_sphere("clay", (-0.6, 0.5, 0), 0.5, material("clay", "lambert", (0.8, 0.6, 0.5)))
-uv_sphere("metal", (0.6, 0.5, 0), 0.5, material("metal", "glossy", (1.0, 1.0, 1.0)))
+uv_sphere("metal", (0.6, 0.5, 0), 0.5, material("metal", "metal", (1.0, 1.0, 1.0)))
 
 camera_data = bpy.data.cameras.new("camera")
 camera_data.sensor_fit = "VERTICAL"

@@ -29,6 +29,7 @@ import bpy
 import numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cycles_materials import bsdf_node, empty_node_tree  # noqa: E402
 from cycles_settings import configure_cycles, render_timed_exr  # noqa: E402
 
 numpy.bool = bool  # Blender 3.4's glTF importer still uses numpy.bool, removed in Debian's numpy 1.24
@@ -65,22 +66,8 @@ for spec in gltf.get("materials", []):
         sys.exit("render_gltf.py: material %s is none of Lambert, white metal or clear glass" % spec.get("name"))
     emission = spec.get("emissiveFactor", [0, 0, 0])
     strength = spec.get("extensions", {}).get("KHR_materials_emissive_strength", {}).get("emissiveStrength", 1.0)
-    material.use_nodes = True
-    nodes, links = material.node_tree.nodes, material.node_tree.links
-    nodes.clear()
-    output = nodes.new("ShaderNodeOutputMaterial")
-    if kind == "lambert":
-        bsdf = nodes.new("ShaderNodeBsdfDiffuse")
-        bsdf.inputs["Roughness"].default_value = 0.0
-    elif kind == "metal":
-        bsdf = nodes.new("ShaderNodeBsdfGlossy")
-        bsdf.distribution = "MULTI_GGX"
-        bsdf.inputs["Roughness"].default_value = roughness
-    else:
-        bsdf = nodes.new("ShaderNodeBsdfGlass")
-        bsdf.distribution = "SHARP"
-        bsdf.inputs["IOR"].default_value = ior
-    bsdf.inputs["Color"].default_value = (base[0], base[1], base[2], 1.0)
+    nodes, links, output = empty_node_tree(material)
+    bsdf = bsdf_node(nodes, kind, base, roughness, ior)
     shader = bsdf.outputs["BSDF"]
     if max(emission) > 0.0:
         emit = nodes.new("ShaderNodeEmission")
