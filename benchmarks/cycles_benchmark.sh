@@ -11,21 +11,18 @@
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
 source "$(dirname "$0")/options.sh"
-command -v blender >/dev/null || { echo "blender not found: apt-get install blender (Debian package, 3.4)" >&2; exit 2; }
+source "$root/benchmarks/cycles/blender.sh"
 scene=${SCENE:-scenes/cornell_box.gltf}
 size=${SIZE:-256}
 spp=${SPP:-64}
 max_depth=${MAX_DEPTH:-8}
 ref_spp=${REF_SPP:-1024}
 
-build_release_rtpro
+build_release rtpro
 
 out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-cycles.XXXXXX")
-cycles() {  # OUT.exr SPP THREADS LOG
-  (cd "$out" && blender -b --factory-startup --python "$root/benchmarks/cycles/render_gltf.py" -- \
-    "$root/$scene" "$out/$1.rgba.exr" "$size" "$2" "$max_depth" "$3" >"$4" 2>&1) ||
-    { echo "blender failed, see $4" >&2; exit 1; }
-  oiiotool "$out/$1.rgba.exr" --ch R,G,B -o "$out/$1.exr"  # rtpro writes R,G,B
+cycles() {  # NAME SPP THREADS LOG: $out/NAME.exr
+  render_with_cycles render_gltf.py "$root/$scene" "$1" "$4" "$size" "$2" "$max_depth" "$3"
 }
 
 echo "long Cycles reference: $size x $size, $ref_spp spp ..." >&2
@@ -38,9 +35,7 @@ for t in $threads; do
       --quiet --no-journal --stats-json "$out/rtpro-t$t-r$r.json"
   done
 done
-for f in "$out"/cycles-t*-r*.exr "$out"/rtpro-t*-r*.exr; do
-  "$build/rtpro" compare "$out/reference.exr" "$f" --json >"${f%.exr}.compare.json" || true
-done
+compare_each "$out/reference.exr" "$out"/cycles-t*-r*.exr "$out"/rtpro-t*-r*.exr
 
 python3 - "$out" "$runs" "$threads" "$scene" "$size" "$spp" "$max_depth" "$ref_spp" <<'PY'
 import json, re, statistics, sys

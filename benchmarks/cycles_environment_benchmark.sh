@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # rtpro's environment light against Cycles' (Debian's Blender 3.4) on the same scene: a clay and a
 # white rough metal sphere on a ground sphere lit only by scenes/environments/sunset.exr (its sun
-# turned as in scenes/lookdev.yaml), rendered by both at the same size, samples per pixel and path
-# length; benchmarks/cycles/render_environment.py builds Cycles' scene and states its settings.
+# turned as in scenes/lookdev.yaml: benchmarks/scenes/sunset_spheres.yaml), rendered by both at the
+# same size, samples per pixel and path length; benchmarks/cycles/render_environment.py builds
+# Cycles' scene and states its settings.
 # Reported: the means per channel of a long render by each (REF_SPP samples: issue 29's goal is
 # rtpro's within 1% of Cycles'), and at SPP samples (interleaved runs) each renderer's median mean,
 # relMSE against the long Cycles render and time (rtpro: the whole process; Cycles: its render call).
@@ -11,7 +12,7 @@
 #   Release tree.
 set -euo pipefail
 source "$(dirname "$0")/options.sh"
-command -v blender >/dev/null || { echo "blender not found: apt-get install blender (Debian package, 3.4)" >&2; exit 2; }
+source "$root/benchmarks/cycles/blender.sh"
 size=${SIZE:-160}
 spp=${SPP:-64}
 max_depth=${MAX_DEPTH:-6}
@@ -19,43 +20,24 @@ ref_spp=${REF_SPP:-1024}
 t=${threads##* }
 height=$((size * 5 / 8))
 hdri=$root/scenes/environments/sunset.exr
-build_release_rtpro
+spheres=("$root/benchmarks/scenes/sunset_spheres.yaml" --size "${size}x$height" --max-depth "$max_depth")
+build_release rtpro
 out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-cycles-env.XXXXXX")
 
-cat >"$out/spheres.yaml" <<YAML
-rtpro: 1
-camera: {position: [0, 0.7, -4], look_at: [0, 0.35, 0], fov: 35, resolution: [$size, $height]}
-render: {integrator: path, spp: $spp, max_depth: $max_depth}
-environment: {file: $hdri, rotation: [0, 160, 0]}
-materials:
-  ground: {type: diffuse, color: [0.4, 0.4, 0.4]}
-  clay: {type: diffuse, color: [0.8, 0.6, 0.5]}
-  metal: {type: conductor, color: [1, 1, 1], roughness: 0.3}
-world:
-  - {type: sphere, center: [0, -1000, 0], radius: 1000, material: ground}
-  - {type: sphere, center: [-0.6, 0.5, 0], radius: 0.5, material: clay}
-  - {type: sphere, center: [0.6, 0.5, 0], radius: 0.5, material: metal}
-YAML
-
-cycles() {  # NAME SPP LOG
-  (cd "$out" && blender -b --factory-startup --python "$root/benchmarks/cycles/render_environment.py" -- \
-    "$hdri" "$out/$1.rgba.exr" "$size" "$height" "$2" "$max_depth" "$t" >"$3" 2>&1) ||
-    { echo "blender failed, see $3" >&2; exit 1; }
-  oiiotool "$out/$1.rgba.exr" --ch R,G,B -o "$out/$1.exr"  # rtpro writes R,G,B
+cycles() {  # NAME SPP LOG: $out/NAME.exr
+  render_with_cycles render_environment.py "$hdri" "$1" "$3" "$size" "$height" "$2" "$max_depth" "$t"
 }
 
 echo "long Cycles reference: ${size}x$height, $ref_spp spp ..." >&2
 cycles reference "$ref_spp" "$out/reference.log"
 echo "long rtpro render: $ref_spp spp ..." >&2
-"$build/rtpro" render "$out/spheres.yaml" -o "$out/rtpro-reference.exr" --spp "$ref_spp" --threads "$t" --quiet --no-journal
+"$build/rtpro" render "${spheres[@]}" -o "$out/rtpro-reference.exr" --spp "$ref_spp" --threads "$t" --quiet --no-journal
 for r in $(seq "$runs"); do
   cycles "cycles-r$r" "$spp" "$out/cycles-r$r.log"
-  /usr/bin/time -f "%e" -o "$out/rtpro-r$r.seconds" "$build/rtpro" render "$out/spheres.yaml" -o "$out/rtpro-r$r.exr" \
-    --threads "$t" --quiet --no-journal --set render.seed="$r"
+  /usr/bin/time -f "%e" -o "$out/rtpro-r$r.seconds" "$build/rtpro" render "${spheres[@]}" -o "$out/rtpro-r$r.exr" \
+    --spp "$spp" --threads "$t" --quiet --no-journal --set render.seed="$r"
 done
-for f in "$out"/cycles-r*.exr "$out"/rtpro-r*.exr "$out"/rtpro-reference.exr; do
-  "$build/rtpro" compare "$out/reference.exr" "$f" --json >"${f%.exr}.compare.json" || true
-done
+compare_each "$out/reference.exr" "$out"/cycles-r*.exr "$out"/rtpro-r*.exr "$out"/rtpro-reference.exr
 
 python3 - "$out" "$runs" "$size" "$height" "$spp" "$max_depth" "$ref_spp" "$t" <<'PY'
 import json, re, statistics, sys

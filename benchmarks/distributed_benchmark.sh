@@ -11,8 +11,7 @@
 # Usage: benchmarks/distributed_benchmark.sh [--runs N]
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-build=${RTPRO_BUILD_DIR:-$root/build-release}
+source "$(dirname "$0")/release_tree.sh"
 runs=5
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -21,11 +20,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 command -v mpirun >/dev/null || { echo "mpirun not found: apt-get install openmpi-bin libopenmpi-dev" >&2; exit 2; }
-if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTPRO_BUILD_TESTS=OFF >/dev/null
-fi
-grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$build/CMakeCache.txt" || { echo "$build is not a Release tree" >&2; exit 2; }
-cmake --build "$build" --target rtpro rtpro_mpi >/dev/null
+build_release rtpro rtpro_mpi
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 mpi=(mpirun --bind-to none)
 out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-distributed.XXXXXX")

@@ -7,18 +7,13 @@
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/;
 #   RTPRO_BENCH_RUNS=N repeats the whole-process runs N times, interleaved (default 3).
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-build=${RTPRO_BUILD_DIR:-$root/build-release}
+source "$(dirname "$0")/release_tree.sh"
 out="$build/benchmark-results/dragon"
 threads=${RTPRO_BENCH_THREADS:-$(nproc)}
 runs=${RTPRO_BENCH_RUNS:-3}
 
 "$root/scripts/fetch-dragon.sh" >/dev/null
-if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTPRO_BUILD_TESTS=OFF >/dev/null
-fi
-grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$build/CMakeCache.txt" || { echo "$build is not a Release tree" >&2; exit 2; }
-cmake --build "$build" --target rtpro rtpro_backend_benchmark rtpro_mesh_load_benchmark >/dev/null
+build_release rtpro rtpro_backend_benchmark rtpro_mesh_load_benchmark
 mkdir -p "$out"
 
 "$build/benchmarks/rtpro_mesh_load_benchmark" --benchmark_min_time=2 \

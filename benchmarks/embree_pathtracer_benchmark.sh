@@ -16,7 +16,7 @@ source "$(dirname "$0")/options.sh"
 command -v pathtracer >/dev/null || { echo "pathtracer not found: apt-get install embree-tools" >&2; exit 2; }
 models=/usr/share/doc/embree3/models
 frames=${FRAMES:-10}
-build_release_rtpro
+build_release rtpro
 
 out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-embree-pt.XXXXXX")
 for t in $threads; do

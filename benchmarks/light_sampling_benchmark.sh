@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # How much the light samplers of the path integrator buy, each against the strategy it replaces,
 # as relMSE against a long reference of the same scene (rtpro compare --json), interleaved runs:
-#   environment: a clay and a rough metal sphere on a ground under scenes/environments/sunset.exr
-#     (its sun ~2,100 in luminance, 3 degrees up) at ENV_SPP spp, MIS (environment importance
-#     sampling + BSDF sampling) against BSDF sampling alone; reference REF_SPP spp with MIS, and
-#     the REF_SPP-spp means of the two strategies;
+#   environment: a clay and a rough metal sphere (0.9 grey) on a ground under
+#     scenes/environments/sunset.exr (benchmarks/scenes/sunset_spheres.yaml) at ENV_SPP spp, MIS
+#     (environment importance sampling + BSDF sampling) against BSDF sampling alone; reference
+#     REF_SPP spp with MIS, and the REF_SPP-spp means of the two strategies;
 #   many lights: 10,000 small emissive spheres (powers over three decades) over a ground with a
 #     few objects, the light tree against picking by power, at equal time: the tree at LIGHTS_SPP
 #     spp, power at the spp that takes the same time (its time per spp measured first).
@@ -18,24 +18,11 @@ env_spp=${ENV_SPP:-16}
 lights_spp=${LIGHTS_SPP:-16}
 ref_spp=${REF_SPP:-4096}
 t=${threads##* }
-build_release_rtpro
+build_release rtpro
 out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-lights.XXXXXX")
 height=$((size * 5 / 8))
 
-cat >"$out/environment.yaml" <<YAML
-rtpro: 1
-camera: {position: [0, 0.7, -4], look_at: [0, 0.35, 0], fov: 35, resolution: [$size, $height]}
-render: {integrator: path, spp: 16, max_depth: 6}
-environment: {file: $root/scenes/environments/sunset.exr, rotation: [0, 160, 0]}
-materials:
-  ground: {type: diffuse, color: [0.4, 0.4, 0.4]}
-  clay: {type: diffuse, color: [0.8, 0.6, 0.5]}
-  metal: {type: conductor, color: [0.9, 0.9, 0.9], roughness: 0.3}
-world:
-  - {type: sphere, center: [0, -1000, 0], radius: 1000, material: ground}
-  - {type: sphere, center: [-0.6, 0.5, 0], radius: 0.5, material: clay}
-  - {type: sphere, center: [0.6, 0.5, 0], radius: 0.5, material: metal}
-YAML
+environment=("$root/benchmarks/scenes/sunset_spheres.yaml" --size "${size}x$height" -D "metal=[0.9, 0.9, 0.9]")
 
 python3 - "$out/many_lights.yaml" "$size" "$height" <<'PY'
 import random, sys
@@ -63,36 +50,33 @@ for i in range(10000):
 open(path, "w").write("\n".join(lines) + "\n")
 PY
 
-render() {  # SCENE OUT SPP [--set ...]
-  local scene=$1 name=$2 spp=$3
-  shift 3
-  /usr/bin/time -f "%e" -o "$out/$name.seconds" "$build/rtpro" render "$out/$scene.yaml" -o "$out/$name.exr" \
-    --spp "$spp" --threads "$t" --quiet --no-journal "$@"
+render() {  # OUT SPP SCENE [ARG...]: rtpro renders SCENE with the ARGs into $out/OUT.exr, timed
+  local name=$1 spp=$2
+  shift 2
+  /usr/bin/time -f "%e" -o "$out/$name.seconds" "$build/rtpro" render "$@" -o "$out/$name.exr" \
+    --spp "$spp" --threads "$t" --quiet --no-journal
 }
+many_lights=$out/many_lights.yaml
 
 echo "references: $ref_spp spp ..." >&2
-render environment env-reference "$ref_spp"
-render environment env-reference-bsdf "$ref_spp" --set render.sampling=bsdf
-render many_lights lights-reference "$((ref_spp / 4))"
+render env-reference "$ref_spp" "${environment[@]}"
+render env-reference-bsdf "$ref_spp" "${environment[@]}" --set render.sampling=bsdf
+render lights-reference "$((ref_spp / 4))" "$many_lights"
 
 # The spp at which picking by power takes the tree's time.
-render many_lights lights-probe-tree "$lights_spp"
-render many_lights lights-probe-power "$lights_spp" --set render.light_sampler=power
+render lights-probe-tree "$lights_spp" "$many_lights"
+render lights-probe-power "$lights_spp" "$many_lights" --set render.light_sampler=power
 power_spp=$(python3 -c "import sys; t=float(open('$out/lights-probe-tree.seconds').read().split()[-1]); \
 p=float(open('$out/lights-probe-power.seconds').read().split()[-1]); print(max(1, round($lights_spp * t / p)))")
 
 for r in $(seq "$runs"); do
-  render environment "env-mis-r$r" "$env_spp" --set render.seed="$r"
-  render environment "env-bsdf-r$r" "$env_spp" --set render.seed="$r" --set render.sampling=bsdf
-  render many_lights "lights-tree-r$r" "$lights_spp" --set render.seed="$r"
-  render many_lights "lights-power-r$r" "$power_spp" --set render.seed="$r" --set render.light_sampler=power
+  render "env-mis-r$r" "$env_spp" "${environment[@]}" --set render.seed="$r"
+  render "env-bsdf-r$r" "$env_spp" "${environment[@]}" --set render.seed="$r" --set render.sampling=bsdf
+  render "lights-tree-r$r" "$lights_spp" "$many_lights" --set render.seed="$r"
+  render "lights-power-r$r" "$power_spp" "$many_lights" --set render.seed="$r" --set render.light_sampler=power
 done
-for f in "$out"/env-*-r*.exr "$out"/env-reference-bsdf.exr; do
-  "$build/rtpro" compare "$out/env-reference.exr" "$f" --json >"${f%.exr}.compare.json" || true
-done
-for f in "$out"/lights-*-r*.exr; do
-  "$build/rtpro" compare "$out/lights-reference.exr" "$f" --json >"${f%.exr}.compare.json" || true
-done
+compare_each "$out/env-reference.exr" "$out"/env-*-r*.exr "$out"/env-reference-bsdf.exr
+compare_each "$out/lights-reference.exr" "$out"/lights-*-r*.exr
 
 python3 - "$out" "$runs" "$size" "$height" "$env_spp" "$lights_spp" "$power_spp" "$ref_spp" "$t" <<'PY'
 import json, statistics, sys

@@ -9,12 +9,8 @@
 #   benchmarks/embree/cornell_box.yaml and scenes/cornell_box.gltf)
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-build=${RTPRO_BUILD_DIR:-$root/build-release}
-if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTPRO_BUILD_TESTS=OFF >/dev/null
-fi
-cmake --build "$build" --target rtpro_path_bounce_benchmark >/dev/null
+source "$(dirname "$0")/release_tree.sh"
+build_release rtpro_path_bounce_benchmark
 out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-bounces.XXXXXX")
 scenes=$(IFS=:; echo "$*")
 RTPRO_BENCH_SCENES=$scenes RTPRO_BENCH_SIZE=${SIZE:-512x512} "$build/benchmarks/rtpro_path_bounce_benchmark" \

@@ -12,7 +12,7 @@ set -euo pipefail
 source "$(dirname "$0")/options.sh"
 command -v povray >/dev/null || { echo "povray not found: apt-get install povray (Debian package, 3.7)" >&2; exit 2; }
 
-build_release_rtpro
+build_release rtpro
 
 out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-povray.XXXXXX")
 # name | rtpro scene | size | spp | max depth: the values the committed .pov/.ini were made with

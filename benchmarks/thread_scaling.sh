@@ -10,11 +10,7 @@ set -euo pipefail
 source "$(dirname "$0")/options.sh"
 
 "$root/scripts/fetch-dragon.sh" >/dev/null
-if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTPRO_BUILD_TESTS=OFF >/dev/null
-fi
-grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$build/CMakeCache.txt" || { echo "$build is not a Release tree" >&2; exit 2; }
-cmake --build "$build" --target rtpro >/dev/null
+build_release rtpro
 out=$(mktemp -d /tmp/rtpro-scaling.XXXXXX)
 
 scenes=()

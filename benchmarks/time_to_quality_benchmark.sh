@@ -14,7 +14,7 @@
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
 source "$(dirname "$0")/options.sh"
-command -v blender >/dev/null || { echo "blender not found: apt-get install blender (Debian package, 3.4)" >&2; exit 2; }
+source "$root/benchmarks/cycles/blender.sh"
 scene=${SCENE:-scenes/cornell_box.gltf}
 size=${SIZE:-256}
 cycles_spp=${CYCLES_SPP:-1024}
@@ -24,13 +24,10 @@ fractions=${FRACTIONS:-0.05 0.1 0.15 0.2 0.25}
 threshold=${THRESHOLD:-0.0015}
 out=${WORKDIR:-$(mktemp -d "${TMPDIR:-/tmp}/rtpro-ttq.XXXXXX")}
 mkdir -p "$out"
-build_release_rtpro
+build_release rtpro
 
-cycles() {  # NAME SPP
-  (cd "$out" && blender -b --factory-startup --python "$root/benchmarks/cycles/render_gltf.py" -- \
-    "$root/$scene" "$out/$1.rgba.exr" "$size" "$2" "$max_depth" 2 >"$out/$1.log" 2>&1) ||
-    { echo "blender failed, see $out/$1.log" >&2; exit 1; }
-  oiiotool "$out/$1.rgba.exr" --ch R,G,B -o "$out/$1.exr"
+cycles() {  # NAME SPP: $out/NAME.exr, on 2 threads
+  render_with_cycles render_gltf.py "$root/$scene" "$1" "$out/$1.log" "$size" "$2" "$max_depth" 2
 }
 rel_mse() {  # IMAGE: relMSE of its R,G,B against the reference
   oiiotool "$1" --ch R,G,B -o "$out/rgb.exr"

@@ -1,7 +1,10 @@
 """Cycles' render settings for rtpro's benchmarks, shared by render_gltf.py and render_environment.py:
 the same estimator as rtpro's path integrator (no adaptive sampling, no denoising, no clamping, a
 one-pixel box filter, caustics on, no glossy blur) with max_depth rtpro vertices = max_depth - 1
-bounces, on `threads` fixed threads."""
+bounces, on `threads` fixed threads; and the render itself, to a float EXR, timed."""
+import time
+
+import bpy
 
 
 def configure_cycles(scene, spp, max_depth, threads):
@@ -23,3 +26,25 @@ def configure_cycles(scene, spp, max_depth, threads):
     cycles.seed = 0
     scene.render.threads_mode = "FIXED"
     scene.render.threads = threads
+
+
+def render_timed_exr(scene, width, height, out_file):
+    """Renders `scene` at width x height into `out_file` as rtpro writes it (32-bit float EXR, the
+    Standard view: no look, exposure 0, gamma 1) and prints "cycles_render_seconds S", the time of
+    the render call alone (scene sync, BVH and sampling), which the benchmark scripts read."""
+    scene.render.resolution_x = width
+    scene.render.resolution_y = height
+    scene.render.resolution_percentage = 100
+    scene.render.use_persistent_data = False
+    scene.view_settings.view_transform = "Standard"
+    scene.view_settings.look = "None"
+    scene.view_settings.exposure = 0.0
+    scene.view_settings.gamma = 1.0
+    scene.render.image_settings.file_format = "OPEN_EXR"
+    scene.render.image_settings.color_depth = "32"
+    scene.render.image_settings.exr_codec = "ZIP"
+    scene.render.filepath = out_file
+
+    start = time.perf_counter()
+    bpy.ops.render.render(write_still=True)
+    print("cycles_render_seconds %.3f" % (time.perf_counter() - start))

@@ -3,7 +3,7 @@ benchmarks/cycles_environment_benchmark.sh. Run by Debian's Blender 3.4:
 
   blender -b --factory-startup --python render_environment.py -- HDRI.exr OUT.exr WIDTH HEIGHT SPP MAX_DEPTH THREADS
 
-The scene is the one the script writes for rtpro (positions in rtpro's +Y-up axes, turned to
+The scene is benchmarks/scenes/sunset_spheres.yaml (positions in rtpro's +Y-up axes, turned to
 Blender's +Z-up ones: (x, y, z) -> (x, -z, y)): a ground sphere of radius 1000 under a Lambertian
 clay sphere and a white rough metal sphere, lit only by the HDRI as the world (an Environment
 Texture, rotated as rtpro's `rotation: [0, 160, 0]`, which FORMAT.md states is a Mapping node
@@ -24,13 +24,13 @@ Prints one line: "cycles_render_seconds S".
 import math
 import sys
 import os
-import time
 
 import bpy
 import numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cycles_settings import configure_cycles  # noqa: E402
+from cycles_materials import bsdf_node, empty_node_tree  # noqa: E402
+from cycles_settings import configure_cycles, render_timed_exr  # noqa: E402
 from mathutils import Vector
 
 args = sys.argv[sys.argv.index("--") + 1:]
@@ -48,19 +48,8 @@ def blender_axes(p):
 
 def material(name, kind, color):
     m = bpy.data.materials.new(name)
-    m.use_nodes = True
-    nodes, links = m.node_tree.nodes, m.node_tree.links
-    nodes.clear()
-    output = nodes.new("ShaderNodeOutputMaterial")
-    if kind == "lambert":
-        bsdf = nodes.new("ShaderNodeBsdfDiffuse")
-        bsdf.inputs["Roughness"].default_value = 0.0
-    else:
-        bsdf = nodes.new("ShaderNodeBsdfGlossy")
-        bsdf.distribution = "MULTI_GGX"
-        bsdf.inputs["Roughness"].default_value = 0.3
-    bsdf.inputs["Color"].default_value = (color[0], color[1], color[2], 1.0)
-    links.new(bsdf.outputs["BSDF"], output.inputs["Surface"])
+    nodes, links, output = empty_node_tree(m)
+    links.new(bsdf_node(nodes, kind, color, roughness=0.3).outputs["BSDF"], output.inputs["Surface"])
     return m
 
 
@@ -115,7 +104,7 @@ def ground_cap(name, radius, mat, half_width=190.0, cells=600):
 
 ground_cap("ground", 1000.0, material("ground", "lambert", (0.4, 0.4, 0.4)))
 uv_sphere("clay", (-0.6, 0.5, 0), 0.5, material("clay", "lambert", (0.8, 0.6, 0.5)))
-uv_sphere("metal", (0.6, 0.5, 0), 0.5, material("metal", "glossy", (1.0, 1.0, 1.0)))
+uv_sphere("metal", (0.6, 0.5, 0), 0.5, material("metal", "metal", (1.0, 1.0, 1.0)))
 
 camera_data = bpy.data.cameras.new("camera")
 camera_data.sensor_fit = "VERTICAL"
@@ -144,19 +133,4 @@ nodes["Background"].inputs["Strength"].default_value = 1.0
 world.cycles.sampling_method = "AUTOMATIC"
 
 configure_cycles(scene, spp, max_depth, threads)
-scene.render.resolution_x = width
-scene.render.resolution_y = height
-scene.render.resolution_percentage = 100
-scene.render.use_persistent_data = False
-scene.view_settings.view_transform = "Standard"
-scene.view_settings.look = "None"
-scene.view_settings.exposure = 0.0
-scene.view_settings.gamma = 1.0
-scene.render.image_settings.file_format = "OPEN_EXR"
-scene.render.image_settings.color_depth = "32"
-scene.render.image_settings.exr_codec = "ZIP"
-scene.render.filepath = out_file
-
-start = time.perf_counter()
-bpy.ops.render.render(write_still=True)
-print("cycles_render_seconds %.3f" % (time.perf_counter() - start))
+render_timed_exr(scene, width, height, out_file)

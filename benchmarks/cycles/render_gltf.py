@@ -24,13 +24,13 @@ Prints one line: "cycles_render_seconds S" (the render call: scene sync, BVH and
 import json
 import sys
 import os
-import time
 
 import bpy
 import numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cycles_settings import configure_cycles  # noqa: E402
+from cycles_materials import bsdf_node, empty_node_tree  # noqa: E402
+from cycles_settings import configure_cycles, render_timed_exr  # noqa: E402
 
 numpy.bool = bool  # Blender 3.4's glTF importer still uses numpy.bool, removed in Debian's numpy 1.24
 
@@ -66,22 +66,8 @@ for spec in gltf.get("materials", []):
         sys.exit("render_gltf.py: material %s is none of Lambert, white metal or clear glass" % spec.get("name"))
     emission = spec.get("emissiveFactor", [0, 0, 0])
     strength = spec.get("extensions", {}).get("KHR_materials_emissive_strength", {}).get("emissiveStrength", 1.0)
-    material.use_nodes = True
-    nodes, links = material.node_tree.nodes, material.node_tree.links
-    nodes.clear()
-    output = nodes.new("ShaderNodeOutputMaterial")
-    if kind == "lambert":
-        bsdf = nodes.new("ShaderNodeBsdfDiffuse")
-        bsdf.inputs["Roughness"].default_value = 0.0
-    elif kind == "metal":
-        bsdf = nodes.new("ShaderNodeBsdfGlossy")
-        bsdf.distribution = "MULTI_GGX"
-        bsdf.inputs["Roughness"].default_value = roughness
-    else:
-        bsdf = nodes.new("ShaderNodeBsdfGlass")
-        bsdf.distribution = "SHARP"
-        bsdf.inputs["IOR"].default_value = ior
-    bsdf.inputs["Color"].default_value = (base[0], base[1], base[2], 1.0)
+    nodes, links, output = empty_node_tree(material)
+    bsdf = bsdf_node(nodes, kind, base, roughness, ior)
     shader = bsdf.outputs["BSDF"]
     if max(emission) > 0.0:
         emit = nodes.new("ShaderNodeEmission")
@@ -100,18 +86,4 @@ scene.world.use_nodes = True
 scene.world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
 
 configure_cycles(scene, spp, max_depth, threads)
-scene.render.resolution_x = scene.render.resolution_y = size
-scene.render.resolution_percentage = 100
-scene.render.use_persistent_data = False
-scene.view_settings.view_transform = "Standard"
-scene.view_settings.look = "None"
-scene.view_settings.exposure = 0.0
-scene.view_settings.gamma = 1.0
-scene.render.image_settings.file_format = "OPEN_EXR"
-scene.render.image_settings.color_depth = "32"
-scene.render.image_settings.exr_codec = "ZIP"
-scene.render.filepath = out_file
-
-start = time.perf_counter()
-bpy.ops.render.render(write_still=True)
-print("cycles_render_seconds %.3f" % (time.perf_counter() - start))
+render_timed_exr(scene, size, size, out_file)
