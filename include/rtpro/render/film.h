@@ -3,6 +3,7 @@
 // samples become its stored values. Pixels are resolved into a tile's own buffer and copied into
 // the image once, so a tile can travel (to another rank, to a journal) before it lands.
 #include "rtpro/image/image.h"
+#include "rtpro/render/aov.h"
 #include "rtpro/render/pixel_sums.h"
 
 #include <span>
@@ -11,12 +12,6 @@
 #include <vector>
 
 namespace rtpro {
-
-// kHalves: the mean of the pixel's even-indexed samples and of its odd-indexed ones (two
-// independent estimates, half the samples each: from their difference the denoiser bounds its
-// noise estimate); kVariance: the sample variance of the pixel's mean colour; kSpp: the samples
-// the pixel got (adaptive sampling stops converged pixels early).
-enum class Aov { kAlbedo, kNormal, kDepth, kObjectId, kHalves, kVariance, kSpp };
 
 // "albedo", "normal", "depth", "object-id", "halves", "variance", "spp"; throws InputError listing
 // the valid names.

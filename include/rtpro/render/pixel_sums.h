@@ -2,6 +2,7 @@
 // A pixel's sums over its samples, and which of them a render keeps. A pass's work item carries,
 // and the film holds, only the sums the requested layers and adaptive sampling read, as floats:
 // at 1024×1024 a colour-only pass moves 16 MB rather than the 96 MB of every sum.
+#include "rtpro/render/aov.h"
 #include "rtpro/render/sample_result.h"
 
 #include <bit>
@@ -10,8 +11,6 @@
 #include <span>
 
 namespace rtpro {
-
-enum class Aov;
 
 // Per-pixel sums of the samples, in sample order.
 struct PixelAccumulator {

@@ -1,7 +1,5 @@
 #include "rtpro/render/pixel_sums.h"
 
-#include "rtpro/render/film.h"
-
 namespace rtpro {
 
 SumLayout::SumLayout(std::span<const Aov> aovs, ExtraSums extra) {

@@ -1,7 +1,7 @@
 #include "surface.h"
 
 #include "rtpro/core/error.h"
-#include "texture.h"
+#include "rtpro/core/math_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -127,6 +127,10 @@ Vec3 safe_normalize(const Vec3& v, Fallback&& fallback) {
 }
 
 }  // namespace
+
+TexCoord sphere_texture_coordinates(const Vec3& n) {
+  return {0.5f + std::atan2(n.x, n.z) * (0.5f / kPi), 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) * (1.0f / kPi)};
+}
 
 void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfacePoint& sp) {
   sp.tex_u = 0.0f;

@@ -46,6 +46,11 @@ inline bool has_image_texture(const RenderScene& scene, std::uint32_t material) 
   return std::visit([](const auto& model) { return reads_images(model); }, m.model);
 }
 
+// A sphere's texture coordinates at the unit normal `n` (in the sphere's own frame): longitude u,
+// 0.5 facing +z and growing towards +x, and latitude v, 0 at the bottom and 1 at the top. Where a
+// ray hits a sphere and where light sampling picks a point on one alike.
+TexCoord sphere_texture_coordinates(const Vec3& n);
+
 inline SurfacePoint make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit) {
   SurfacePoint sp;
   make_surface(scene, ray, hit, sp);

@@ -51,10 +51,6 @@ Color evaluate(const ColorTexture& texture, const SurfacePoint& point, const Tex
   return evaluate_any_kind(texture, point, images);
 }
 
-TexCoord sphere_texture_coordinates(const Vec3& n) {
-  return {0.5f + std::atan2(n.x, n.z) * (0.5f / kPi), 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) * (1.0f / kPi)};
-}
-
 Color evaluate(const ImageTexture& texture, float u, float v, const TextureLookup* images) {
   // Texture coordinates have v up; the lookup's t runs down the image.
   return texture.tint * images->lookup(texture.image, u, 1.0f - v, texture.wrap);

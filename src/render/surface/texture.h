@@ -12,11 +12,6 @@ namespace rtpro {
 // when the scene has image textures).
 Color evaluate(const ColorTexture& texture, const SurfacePoint& point, const TextureLookup* images);
 
-// A sphere's texture coordinates at the unit normal `n` (in the sphere's own frame): longitude u,
-// 0.5 facing +z and growing towards +x, and latitude v, 0 at the bottom and 1 at the top. Where a
-// ray hits a sphere and where light sampling picks a point on one alike.
-TexCoord sphere_texture_coordinates(const Vec3& n);
-
 // An image texture at texture coordinates (u, v), v up.
 Color evaluate(const ImageTexture& texture, float u, float v, const TextureLookup* images);
 
