@@ -8,6 +8,7 @@
 #include "yaml_materials.h"
 #include "yaml_reader.h"
 #include "yaml_scene_objects.h"
+#include "rtpro/core/special_file_kind.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -188,16 +189,6 @@ SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& f
   desc.environment = read_environment(scene.optional("environment"), file.parent_path());
   read_scene_objects(scene.optional("objects"), scene.optional("world"), file.parent_path(), desc);
   return desc;
-}
-
-// What a path names when it is not a regular file, for the refusal message.
-const char* special_file_kind(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
 }
 
 [[noreturn]] void refuse_special_file(const SourceLocation& where, mode_t mode) {
