@@ -2,6 +2,7 @@
 
 #include "rtpro/core/error.h"
 #include "ascii_scan.h"
+#include "rtpro/core/printable_text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -154,7 +155,7 @@ class TypeCheck {
     if (!all) return;
     const std::string prefix = path == "extensions" ? path : path + ".extensions";
     for (const auto& [name, value] : all->items())
-      if (!value.is_object()) fail(prefix + "." + ascii::printable(name, 100), value, JsonKind::kObject);
+      if (!value.is_object()) fail(prefix + "." + printable_text(name, 100), value, JsonKind::kObject);
   }
 
   void node(const Json& node, const std::string& path) {
@@ -176,7 +177,7 @@ class TypeCheck {
                   member(primitive, "attributes", JsonKind::kObject, primitive_path + ".attributes"))
             for (const auto& [name, value] : attributes->items())
               if (!is_kind(value, JsonKind::kIndex))
-                fail(primitive_path + ".attributes." + ascii::printable(name, 100), value, JsonKind::kIndex);
+                fail(primitive_path + ".attributes." + printable_text(name, 100), value, JsonKind::kIndex);
           for (const char* key : {"indices", "material", "mode"})
             member(primitive, key, JsonKind::kIndex, primitive_path + "." + key);
           member(primitive, "targets", JsonKind::kArray, primitive_path + ".targets");
@@ -223,7 +224,7 @@ class TypeCheck {
     std::string shown = found_name(found);
     if (shown.size() > 80) shown = shown.substr(0, 77) + "...";
     throw InputError(SourceLocation{file_},
-                     path + ": " + expected_name(expected) + " expected, found " + ascii::printable(shown, 100));
+                     path + ": " + expected_name(expected) + " expected, found " + printable_text(shown, 100));
   }
 
   const std::string& file_;
