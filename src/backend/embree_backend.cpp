@@ -6,7 +6,7 @@
 #include "embree_device.h"
 #include "embree_ray_batches.h"
 #include "embree_scene_builder.h"
-#include "embree_spheres.h"
+#include "embree_user_geometry.h"
 #include "ray_gate.h"
 #include "sphere_lanes.h"
 #include "rtpro/core/overloaded.h"
@@ -103,10 +103,10 @@ class EmbreeBackend final : public Backend {
 
   bool intersect(const Ray& ray, Hit& hit) const override {
     if (!gate_.admit(ray)) return false;
-    Hit closest_sphere = no_sphere_yet(ray);
+    Hit closest_user_hit = no_user_hit_yet(ray);
     EmbreeIntersectContext context;
     rtcInitIntersectContext(&context.base);
-    context.closest_spheres = &closest_sphere;
+    context.closest_user_hits = &closest_user_hit;
     alignas(16) RTCRayHit query;
     to_embree(ray, 0, query);
     rtcIntersect1(scenes_.top.get(), &context.base, &query);

@@ -1,6 +1,6 @@
 #include "embree_ray_batches.h"
 
-#include "embree_spheres.h"
+#include "embree_user_geometry.h"
 #include "ray_packet.h"
 #include "rtpro/core/avx2_clones.h"
 
@@ -97,14 +97,14 @@ unsigned load_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, s
 
 RTPRO_AVX2_CLONES void intersect_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<Hit> hits) {
   alignas(32) RTCRayHit8 packets[kStreamPackets];
-  Hit closest_spheres[kStreamPackets * kPacket];
+  Hit closest_user_hits[kStreamPackets * kPacket];
   for (std::size_t first = 0; first < rays.size(); first += kStreamPackets * kPacket) {
     const unsigned count = load_stream(target, rays, first, packets, [](float tfar, float) { return tfar; });
     for (unsigned k = 0; k < kStreamPackets * kPacket; ++k) {
       RTCRayHit8& packet = packets[k / kPacket];
       const unsigned lane = k % kPacket;
-      closest_spheres[k] = Hit{};
-      closest_spheres[k].t = packet.ray.tfar[lane];
+      closest_user_hits[k] = Hit{};
+      closest_user_hits[k].t = packet.ray.tfar[lane];
       packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
       packet.hit.primID[lane] = RTC_INVALID_GEOMETRY_ID;
       packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
@@ -112,7 +112,7 @@ RTPRO_AVX2_CLONES void intersect_stream(const EmbreeRayTarget& target, std::span
     EmbreeIntersectContext context;
     rtcInitIntersectContext(&context.base);
     context.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-    context.closest_spheres = closest_spheres;
+    context.closest_user_hits = closest_user_hits;
     rtcIntersectNM(target.scene, &context.base, reinterpret_cast<RTCRayHitN*>(packets), kPacket, kStreamPackets,
                    sizeof(RTCRayHit8));
     for (unsigned k = 0; k < count; ++k) {
@@ -152,7 +152,7 @@ RTPRO_AVX2_CLONES void intersect_packets(const EmbreeRayTarget& target, std::spa
                                          std::span<Hit> hits) {
   alignas(32) RTCRayHit8 packet;
   alignas(32) int valid[kPacket];
-  Hit closest_spheres[kPacket];
+  Hit closest_user_hits[kPacket];
   std::size_t slots[kPacket];
   std::size_t i = 0;
   while (i < rays.size()) {
@@ -162,7 +162,7 @@ RTPRO_AVX2_CLONES void intersect_packets(const EmbreeRayTarget& target, std::spa
                                         packet.ray.dir_x, packet.ray.dir_y, packet.ray.dir_z, packet.ray.tfar})) {
       for (; count < kPacket; ++count, ++i) {
         hits[i] = Hit{};
-        closest_spheres[count] = no_sphere_yet(rays[i]);
+        closest_user_hits[count] = no_user_hit_yet(rays[i]);
         start_packet_lane(packet.ray, count);
         packet.hit.geomID[count] = RTC_INVALID_GEOMETRY_ID;
         packet.hit.primID[count] = RTC_INVALID_GEOMETRY_ID;
@@ -175,7 +175,7 @@ RTPRO_AVX2_CLONES void intersect_packets(const EmbreeRayTarget& target, std::spa
       hits[i] = Hit{};
       if (!target.gate.admit(rays[i])) continue;
       const Ray& ray = rays[i];
-      closest_spheres[count] = no_sphere_yet(ray);
+      closest_user_hits[count] = no_user_hit_yet(ray);
       packet.ray.org_x[count] = ray.org.x;
       packet.ray.org_y[count] = ray.org.y;
       packet.ray.org_z[count] = ray.org.z;
@@ -195,7 +195,7 @@ RTPRO_AVX2_CLONES void intersect_packets(const EmbreeRayTarget& target, std::spa
     for (unsigned k = count; k < kPacket; ++k) valid[k] = 0;
     EmbreeIntersectContext context;
     rtcInitIntersectContext(&context.base);
-    context.closest_spheres = closest_spheres;
+    context.closest_user_hits = closest_user_hits;
     rtcIntersect8(valid, target.scene, &context.base, &packet);
     for (unsigned k = 0; k < count; ++k) hit_of_lane(packet, k, hits[slots[k]]);
   }

@@ -29,8 +29,8 @@ inline float one_step_towards_zero(float t) {
   return t == 0.0f ? t : std::bit_cast<float>(std::bit_cast<std::uint32_t>(t) - 1u);
 }
 
-// The closest sphere so far of a ray that has met none: its tfar.
-inline Hit no_sphere_yet(const Ray& ray) {
+// The closest user-geometry hit so far of a ray that has met none: its tfar.
+inline Hit no_user_hit_yet(const Ray& ray) {
   Hit closest;
   closest.t = ray.tfar;
   return closest;

@@ -8,10 +8,37 @@
 #include "sphere_lanes.h"
 
 #include <bit>
+#include <span>
 
 namespace rtpro {
 
 namespace {
+
+// Loads the next rays of the batch, from `i` on, into `packet`: eight at once when the next eight
+// are all traceable, else one by one up to eight that the gate admits. `answer_none(i)` runs for
+// every ray it passes, loaded or refused, and slots[k] is lane k's ray. Returns the lanes filled,
+// 0 only at the end of the batch.
+template <typename AnswerNone>
+[[gnu::always_inline]] inline unsigned next_packet(std::span<const Ray> rays, std::size_t& i, const RayGate& gate,
+                                                   RayPacket& packet, std::size_t (&slots)[kPacketSize],
+                                                   AnswerNone&& answer_none) {
+  unsigned count = 0;
+  if (rays.size() - i >= kPacketSize && packet.load_traceable(&rays[i])) {
+    for (; count < kPacketSize; ++count, ++i) {
+      answer_none(i);
+      slots[count] = i;
+    }
+    return count;
+  }
+  for (; i < rays.size() && count < kPacketSize; ++i) {
+    answer_none(i);
+    if (!gate.admit(rays[i])) continue;
+    packet.set(count, rays[i], rays[i].tfar);
+    slots[count++] = i;
+  }
+  if (count != 0) packet.finish(count);
+  return count;
+}
 
 class NativeBackend final : public Backend {
  public:
@@ -48,24 +75,9 @@ class NativeBackend final : public Backend {
     std::size_t slots[kPacketSize];
     std::size_t i = 0;
     while (i < rays.size()) {
-      unsigned count = 0;
-      if (rays.size() - i >= kPacketSize && packet.load_traceable(&rays[i])) {
-        for (; count < kPacketSize; ++count, ++i) {
-          hits[i] = Hit{};
-          best[count] = Hit{};
-          slots[count] = i;
-        }
-      } else {
-        for (; i < rays.size() && count < kPacketSize; ++i) {
-          hits[i] = Hit{};
-          if (!gate_.admit(rays[i])) continue;
-          packet.set(count, rays[i], rays[i].tfar);
-          best[count] = Hit{};
-          slots[count++] = i;
-        }
-        if (count == 0) continue;
-        packet.finish(count);
-      }
+      const unsigned count = next_packet(rays, i, gate_, packet, slots, [&](std::size_t r) { hits[r] = Hit{}; });
+      if (count == 0) continue;
+      for (Hit& lane_best : best) lane_best = Hit{};
       bvhs_.closest_in_packet(packet, (1u << count) - 1u, best);
       // The record is copied first and its distance stored after: setting best[k].t and then
       // copying the record read the fresh 4-byte store back with a 16-byte load, a
@@ -85,22 +97,8 @@ class NativeBackend final : public Backend {
     std::size_t slots[kPacketSize];
     std::size_t i = 0;
     while (i < rays.size()) {
-      unsigned count = 0;
-      if (rays.size() - i >= kPacketSize && packet.load_traceable(&rays[i])) {
-        for (; count < kPacketSize; ++count, ++i) {
-          result[i] = 0;
-          slots[count] = i;
-        }
-      } else {
-        for (; i < rays.size() && count < kPacketSize; ++i) {
-          result[i] = 0;
-          if (!gate_.admit(rays[i])) continue;
-          packet.set(count, rays[i], rays[i].tfar);
-          slots[count++] = i;
-        }
-        if (count == 0) continue;
-        packet.finish(count);
-      }
+      const unsigned count = next_packet(rays, i, gate_, packet, slots, [&](std::size_t r) { result[r] = 0; });
+      if (count == 0) continue;
       std::uint32_t blocked = bvhs_.any_in_packet(packet, (1u << count) - 1u);
       for (; blocked != 0; blocked &= blocked - 1) result[slots[std::countr_zero(blocked)]] = 1;
     }

@@ -61,6 +61,27 @@ Ray to_object_space(const Instance& instance, const Ray& ray, float tfar) {
           tfar};
 }
 
+// The far children still to visit, the last kept on top: a ray, or a packet by its first active
+// lane, enters an inner node's child on its near side first (by the sign of its direction along
+// the node's split axis) and comes back for the other.
+struct NodeStack {
+  std::uint32_t far_children[kBvhMaxDepth + 1];
+  int top = 0;
+
+  // The child of inner `node` to visit now; its sibling is kept for later.
+  std::uint32_t descend(const BvhNode& node, const int (&dir_negative)[3]) {
+    far_children[top++] = node.index + 1 - dir_negative[node.axis];
+    return node.index + dir_negative[node.axis];
+  }
+
+  // The next node kept for later into `node_index`, or false when none is left.
+  bool pop(std::uint32_t& node_index) {
+    if (top == 0) return false;
+    node_index = far_children[--top];
+    return true;
+  }
+};
+
 // Visits every leaf whose node box the ray enters, nearest child first: `visit(leaf, node_index)`
 // returns false to stop early. `tmax` is re-read after each leaf.
 template <typename Visit>
@@ -68,8 +89,7 @@ void traverse(const Bvh& bvh, const Ray& ray, const float& tmax, Visit&& visit) 
   if (bvh.nodes.empty()) return;
   const RayBoxData box_data = prepare(ray);
   const int dir_negative[3] = {ray.dir.x < 0.0f, ray.dir.y < 0.0f, ray.dir.z < 0.0f};
-  std::uint32_t stack[kBvhMaxDepth + 1];
-  int top = 0;
+  NodeStack stack;
   std::uint32_t node_index = 0;
   for (;;) {
     const BvhNode& node = bvh.nodes[node_index];
@@ -78,15 +98,11 @@ void traverse(const Bvh& bvh, const Ray& ray, const float& tmax, Visit&& visit) 
       if (node.is_leaf()) {
         if (!visit(node, node_index)) return;
       } else {
-        // Descend into the child on the ray's near side first.
-        const std::uint32_t near_child = node.index + dir_negative[node.axis];
-        stack[top++] = node.index + 1 - dir_negative[node.axis];
-        node_index = near_child;
+        node_index = stack.descend(node, dir_negative);
         continue;
       }
     }
-    if (top == 0) return;
-    node_index = stack[--top];
+    if (!stack.pop(node_index)) return;
   }
 }
 
@@ -148,8 +164,7 @@ template <typename Visit, typename OnBlockHits>
   if (bvh.nodes.empty() || active == 0) return;
   const unsigned lead = static_cast<unsigned>(std::countr_zero(active));
   const int dir_negative[3] = {packet.dir_x[lead] < 0.0f, packet.dir_y[lead] < 0.0f, packet.dir_z[lead] < 0.0f};
-  std::uint32_t stack[kBvhMaxDepth + 1];
-  int top = 0;
+  NodeStack stack;
   std::uint32_t node_index = 0;
   for (;;) {
     const BvhNode& node = bvh.nodes[node_index];
@@ -176,14 +191,11 @@ template <typename Visit, typename OnBlockHits>
           }
         }
       } else {
-        const std::uint32_t near_child = node.index + dir_negative[node.axis];
-        stack[top++] = node.index + 1 - dir_negative[node.axis];
-        node_index = near_child;
+        node_index = stack.descend(node, dir_negative);
         continue;
       }
     }
-    if (top == 0) return;
-    node_index = stack[--top];
+    if (!stack.pop(node_index)) return;
   }
 }
 

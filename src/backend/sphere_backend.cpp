@@ -1,6 +1,7 @@
 #include "sphere_backend.h"
 
-#include "embree_spheres.h"
+#include "embree_user_geometry.h"
+#include "rtpro/core/avx2_clones.h"
 
 #include <cmath>
 #include <string>
@@ -21,8 +22,20 @@ std::optional<std::string> embree_refusal(const SphereSet& set) {
   return std::nullopt;
 }
 
+namespace {
+
+RTPRO_AVX2_CLONES void intersect_spheres(const RTCIntersectFunctionNArguments* args) {
+  intersect_user_primitive<SphereSet>(args);
+}
+
+RTPRO_AVX2_CLONES void occlude_spheres(const RTCOccludedFunctionNArguments* args) {
+  occlude_user_primitive<SphereSet>(args);
+}
+
+}  // namespace
+
 EmbreeGeometry new_embree_geometry(RTCDevice device, const SphereSet& set, RTCBuildQuality quality) {
-  return new_embree_sphere_geometry(device, set, quality);
+  return new_embree_user_geometry(device, set, quality, &intersect_spheres, &occlude_spheres);
 }
 
 }  // namespace rtpro

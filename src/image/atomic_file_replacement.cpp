@@ -1,6 +1,7 @@
 #include "rtpro/image/atomic_file_replacement.h"
 
 #include "rtpro/core/error.h"
+#include "rtpro/core/special_file_kind.h"
 #include "rtpro/core/stale_temporaries.h"
 
 #include <fcntl.h>
@@ -28,16 +29,6 @@ std::filesystem::path folder_of(const std::filesystem::path& file) {
 
 [[noreturn]] void fail_errno(const std::filesystem::path& file, const char* step, int error) {
   fail(file, std::string(step) + ": " + std::strerror(error));
-}
-
-const char* kind_of_special_file(mode_t mode) {
-  if (S_ISLNK(mode)) return "a symbolic link";
-  if (S_ISDIR(mode)) return "a folder";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISFIFO(mode)) return "a FIFO";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
 }
 
 std::filesystem::path temporary_name_for(const std::filesystem::path& target) {
@@ -69,7 +60,7 @@ void check_replaceable(const std::filesystem::path& target) {
   if (::access(folder.c_str(), W_OK | X_OK) != 0) fail(target, "folder '" + folder.string() + "' is not writable");
   struct stat status {};
   if (::lstat(target.c_str(), &status) == 0 && !S_ISREG(status.st_mode)) {
-    fail(target, std::string("it is ") + kind_of_special_file(status.st_mode) +
+    fail(target, std::string("it is ") + special_file_kind(status.st_mode) +
                      "; rtpro replaces only regular files (remove it or choose another name)");
   }
   // A full file system is known before anything is rendered; a nearly full one shows up as a

@@ -1,6 +1,7 @@
 #include "rtpro/job/tile_journal.h"
 
 #include "rtpro/core/error.h"
+#include "rtpro/core/special_file_kind.h"
 #include "rtpro/core/stale_temporaries.h"
 #include "rtpro/job/tile_codec.h"
 
@@ -87,15 +88,6 @@ int open_journal_for_reading(const std::filesystem::path& file) {
   return descriptor;
 }
 
-std::string kind_of_file(mode_t mode) {
-  if (S_ISLNK(mode)) return "a symbolic link";
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISFIFO(mode)) return "a FIFO";
-  if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
-}
-
 }  // namespace
 
 std::filesystem::path journal_path(const std::filesystem::path& output) {
@@ -111,7 +103,7 @@ void check_journal_file(const std::filesystem::path& file) {
     throw InputError(file.string() + ": cannot look at the resume journal: " + std::strerror(errno));
   }
   if (!S_ISREG(status.st_mode))
-    throw InputError(file.string() + " is " + kind_of_file(status.st_mode) +
+    throw InputError(file.string() + " is " + special_file_kind(status.st_mode) +
                      ", not a resume journal: rtpro neither reads, replaces nor deletes it; move it away or "
                      "choose another output");
 }

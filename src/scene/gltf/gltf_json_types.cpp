@@ -2,10 +2,13 @@
 
 #include "rtpro/core/error.h"
 #include "ascii_scan.h"
+#include "rtpro/core/printable_text.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <initializer_list>
+#include <utility>
 
 namespace rtpro::gltf {
 
@@ -76,36 +79,24 @@ class TypeCheck {
     });
     each_object(root, "nodes", [&](const Json& node, const std::string& path) { this->node(node, path); });
     each_object(root, "meshes", [&](const Json& mesh, const std::string& path) { this->mesh(mesh, path); });
-    each_object(root, "accessors", [&](const Json& accessor, const std::string& path) {
-      for (const char* key : {"bufferView", "byteOffset", "componentType", "count"})
-        member(accessor, key, JsonKind::kIndex, path + "." + key);
-      member(accessor, "type", JsonKind::kString, path + ".type");
-      member(accessor, "normalized", JsonKind::kBool, path + ".normalized");
-      member(accessor, "sparse", JsonKind::kObject, path + ".sparse");
-    });
-    each_object(root, "bufferViews", [&](const Json& view, const std::string& path) {
-      for (const char* key : {"buffer", "byteOffset", "byteLength", "byteStride"})
-        member(view, key, JsonKind::kIndex, path + "." + key);
-    });
-    each_object(root, "buffers", [&](const Json& buffer, const std::string& path) {
-      member(buffer, "uri", JsonKind::kString, path + ".uri");
-      member(buffer, "byteLength", JsonKind::kIndex, path + ".byteLength");
-    });
+    using enum JsonKind;
+    flat_objects(root, "accessors",
+                 {{"bufferView", kIndex},
+                  {"byteOffset", kIndex},
+                  {"componentType", kIndex},
+                  {"count", kIndex},
+                  {"type", kString},
+                  {"normalized", kBool},
+                  {"sparse", kObject}});
+    flat_objects(root, "bufferViews",
+                 {{"buffer", kIndex}, {"byteOffset", kIndex}, {"byteLength", kIndex}, {"byteStride", kIndex}});
+    flat_objects(root, "buffers", {{"uri", kString}, {"byteLength", kIndex}});
     each_object(root, "materials",
                 [&](const Json& material, const std::string& path) { this->material(material, path); });
-    each_object(root, "textures", [&](const Json& texture, const std::string& path) {
-      member(texture, "source", JsonKind::kIndex, path + ".source");
-      member(texture, "sampler", JsonKind::kIndex, path + ".sampler");
-    });
-    each_object(root, "images", [&](const Json& image, const std::string& path) {
-      member(image, "uri", JsonKind::kString, path + ".uri");
-      member(image, "mimeType", JsonKind::kString, path + ".mimeType");
-      member(image, "bufferView", JsonKind::kIndex, path + ".bufferView");
-    });
-    each_object(root, "samplers", [&](const Json& sampler, const std::string& path) {
-      for (const char* key : {"magFilter", "minFilter", "wrapS", "wrapT"})
-        member(sampler, key, JsonKind::kIndex, path + "." + key);
-    });
+    flat_objects(root, "textures", {{"source", kIndex}, {"sampler", kIndex}});
+    flat_objects(root, "images", {{"uri", kString}, {"mimeType", kString}, {"bufferView", kIndex}});
+    flat_objects(root, "samplers",
+                 {{"magFilter", kIndex}, {"minFilter", kIndex}, {"wrapS", kIndex}, {"wrapT", kIndex}});
     each_object(root, "cameras", [&](const Json& camera, const std::string& path) {
       member(camera, "type", JsonKind::kString, path + ".type");
       for (const char* kind : {"perspective", "orthographic"})
@@ -135,6 +126,14 @@ class TypeCheck {
       if (!is_kind((*array)[i], kind)) fail(path + "[" + std::to_string(i) + "]", (*array)[i], kind);
   }
 
+  // The array `key` of `root`, of objects whose members named in `kinds` are of their kind where
+  // present (the arrays of the glTF schema without nested objects to check).
+  void flat_objects(const Json& root, const char* key, std::initializer_list<std::pair<const char*, JsonKind>> kinds) {
+    each_object(root, key, [&](const Json& object, const std::string& path) {
+      for (const auto& [name, kind] : kinds) member(object, name, kind, path + "." + name);
+    });
+  }
+
   template <typename Visit>
   void each_object(const Json& object, const char* key, Visit visit, const std::string& prefix = "") {
     const std::string path = prefix.empty() ? std::string(key) : prefix + "." + key;
@@ -154,7 +153,7 @@ class TypeCheck {
     if (!all) return;
     const std::string prefix = path == "extensions" ? path : path + ".extensions";
     for (const auto& [name, value] : all->items())
-      if (!value.is_object()) fail(prefix + "." + ascii::printable(name, 100), value, JsonKind::kObject);
+      if (!value.is_object()) fail(prefix + "." + printable_text(name, 100), value, JsonKind::kObject);
   }
 
   void node(const Json& node, const std::string& path) {
@@ -176,7 +175,7 @@ class TypeCheck {
                   member(primitive, "attributes", JsonKind::kObject, primitive_path + ".attributes"))
             for (const auto& [name, value] : attributes->items())
               if (!is_kind(value, JsonKind::kIndex))
-                fail(primitive_path + ".attributes." + ascii::printable(name, 100), value, JsonKind::kIndex);
+                fail(primitive_path + ".attributes." + printable_text(name, 100), value, JsonKind::kIndex);
           for (const char* key : {"indices", "material", "mode"})
             member(primitive, key, JsonKind::kIndex, primitive_path + "." + key);
           member(primitive, "targets", JsonKind::kArray, primitive_path + ".targets");
@@ -223,7 +222,7 @@ class TypeCheck {
     std::string shown = found_name(found);
     if (shown.size() > 80) shown = shown.substr(0, 77) + "...";
     throw InputError(SourceLocation{file_},
-                     path + ": " + expected_name(expected) + " expected, found " + ascii::printable(shown, 100));
+                     path + ": " + expected_name(expected) + " expected, found " + printable_text(shown, 100));
   }
 
   const std::string& file_;

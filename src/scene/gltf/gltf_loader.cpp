@@ -2,6 +2,7 @@
 
 #include "rtpro/core/error.h"
 #include "ascii_scan.h"
+#include "rtpro/core/printable_text.h"
 #include "gltf_accessor.h"
 #include "gltf_json_types.h"
 #include "gltf_material.h"
@@ -236,7 +237,7 @@ tinygltf::Model parse(const fs::path& file, std::vector<std::string>& warnings, 
     while (begin < text.size()) {
       const std::size_t end = std::min(text.find('\n', begin), text.size());
       if (end > begin)
-        out.push_back(ascii::printable(std::string_view(text).substr(begin, end - begin), kMaxTinygltfLine));
+        out.push_back(printable_text(std::string_view(text).substr(begin, end - begin), kMaxTinygltfLine));
       begin = end + 1;
     }
     return out;

@@ -2,6 +2,8 @@
 // Scanning words and numbers in ASCII mesh files (OBJ, MTL, ASCII PLY) without allocating:
 // callers walk a [p, end) range. Inline because these run once per number; the digit and
 // newline searches look at 8 bytes at a time (SWAR), which is what makes the OBJ loader fast.
+#include "rtpro/core/printable_text.h"
+
 #include <fast_float/fast_float.h>
 
 #include <algorithm>
@@ -45,46 +47,9 @@ inline std::string_view word_at(const char* p, const char* end) { return {p, std
 // warning.
 inline constexpr std::size_t kMaxQuotedBytes = 64;
 
-// The length of the well-formed UTF-8 sequence starting text[0] (1 for printable ASCII), or 0.
-inline std::size_t utf8_sequence_length(std::string_view text) {
-  const auto lead = static_cast<unsigned char>(text[0]);
-  if (lead >= 0x20 && lead < 0x7f) return 1;
-  const std::size_t length = lead >= 0xc2 && lead <= 0xdf   ? 2
-                             : lead >= 0xe0 && lead <= 0xef ? 3
-                             : lead >= 0xf0 && lead <= 0xf4 ? 4
-                                                            : 0;
-  if (length == 0 || text.size() < length) return 0;
-  for (std::size_t k = 1; k < length; ++k)
-    if ((static_cast<unsigned char>(text[k]) & 0xc0) != 0x80) return 0;
-  return length;
-}
-
-// `text` for messages: control bytes and bytes that are not well-formed UTF-8 shown as \xNN (a
-// binary or UTF-16 file must not print raw NUL or escape bytes to a terminal), cut after
-// `max_bytes`.
-inline std::string printable(std::string_view text, std::size_t max_bytes) {
-  static constexpr char kHex[] = "0123456789abcdef";
-  const std::string_view shown = text.substr(0, max_bytes);
-  std::string out;
-  out.reserve(shown.size());
-  for (std::size_t i = 0; i < shown.size();) {
-    const std::size_t length = shown[i] == '\\' ? 0 : utf8_sequence_length(shown.substr(i));
-    if (length > 0) {
-      out += shown.substr(i, length);
-      i += length;
-      continue;
-    }
-    const auto byte = static_cast<unsigned char>(shown[i++]);
-    out += "\\x";
-    out += kHex[byte >> 4];
-    out += kHex[byte & 15];
-  }
-  return out;
-}
-
-// 'word', for messages: printable() within quotes, and a long word cut with its length given.
+// 'word', for messages: printable_text() within quotes, and a long word cut with its length given.
 inline std::string quoted(std::string_view word) {
-  std::string text = "'" + printable(word, kMaxQuotedBytes) + "'";
+  std::string text = "'" + printable_text(word, kMaxQuotedBytes) + "'";
   if (word.size() > kMaxQuotedBytes) text += " (cut: " + std::to_string(word.size()) + " bytes)";
   return text;
 }

@@ -1,6 +1,7 @@
 #include "mapped_file.h"
 
 #include "rtpro/core/error.h"
+#include "rtpro/core/special_file_kind.h"
 
 #include <cerrno>
 #include <cstring>
@@ -31,16 +32,6 @@ class FileDescriptor {
   throw InputError(SourceLocation{file.string()}, what);
 }
 
-// What a path names when it is not a regular file, for the refusal message.
-const char* kind_of_special_file(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "a special file";
-}
-
 }  // namespace
 
 // O_NONBLOCK: opening a FIFO with no writer would otherwise wait forever before the type check
@@ -51,7 +42,7 @@ MappedFile::MappedFile(const std::filesystem::path& file) {
   struct stat info {};
   if (::fstat(fd.get(), &info) != 0) fail(file, std::string("cannot stat: ") + std::strerror(errno));
   if (!S_ISREG(info.st_mode))
-    fail(file, std::string("not a regular file: it is ") + kind_of_special_file(info.st_mode) +
+    fail(file, std::string("not a regular file: it is ") + special_file_kind(info.st_mode) +
                    " (an endless or blocking source is never read)");
   size_ = static_cast<std::size_t>(info.st_size);
   if (size_ == 0) return;  // mmap rejects empty mappings; an empty view is all we need

@@ -1,6 +1,6 @@
 #include "gltf_scene.h"
 
-#include "ascii_scan.h"
+#include "rtpro/core/printable_text.h"
 
 #include "rtpro/scene/scene_parser.h"
 #include "gltf_asset.h"
@@ -139,12 +139,7 @@ void add_render_settings(const GltfAsset& asset, GltfSceneText& text) {
 // Whether YAML can hold the name: a YAML document is UTF-8 (control characters are escaped).
 bool writable_in_yaml(std::string_view name) {
   for (std::size_t i = 0; i < name.size();) {
-    const auto byte = static_cast<unsigned char>(name[i]);
-    if (byte < 0x20 || byte == 0x7f) {
-      ++i;
-      continue;
-    }
-    const std::size_t length = ascii::utf8_sequence_length(name.substr(i));
+    const std::size_t length = utf8_sequence_length(name.substr(i));
     if (length == 0) return false;
     i += length;
   }
@@ -166,7 +161,7 @@ const std::string& GltfSceneText::origin(int line) const {
 GltfSceneText gltf_scene_text(const GltfAsset& asset) {
   GltfSceneText text;
   const std::string name = asset.file.filename().string();
-  text.add("# " + ascii::printable(name, 200) + " as a scene", kWholeScene);
+  text.add("# " + printable_text(name, 200) + " as a scene", kWholeScene);
   text.add("rtpro: 1", kWholeScene);
   add_camera(asset, asset.bounds(), text);
   add_render_settings(asset, text);

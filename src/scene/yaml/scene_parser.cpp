@@ -8,6 +8,7 @@
 #include "yaml_materials.h"
 #include "yaml_reader.h"
 #include "yaml_scene_objects.h"
+#include "rtpro/core/special_file_kind.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -123,32 +124,21 @@ RenderSettings read_render(const YamlNode* node) {
       *node, "render",
       {"spp", "max_depth", "seed", "ambient", "background", "integrator", "sampling", "sampler", "light_sampler"});
   if (const YamlNode* spp = render.optional("spp")) settings.spp = read_spp(*spp);
-  if (const YamlNode* integrator = render.optional("integrator")) {
-    const std::string text = read_string(*integrator, "render.integrator");
-    if (text == "whitted") settings.integrator = Integrator::kWhitted;
-    else if (text == "path") settings.integrator = Integrator::kPath;
-    else fail_at(*integrator, "render.integrator must be path or whitted, got '" + text + "'");
-  }
-  if (const YamlNode* sampling = render.optional("sampling")) {
-    const std::string text = read_string(*sampling, "render.sampling");
-    if (text == "mis") settings.path_sampling = PathSampling::kMis;
-    else if (text == "light") settings.path_sampling = PathSampling::kLight;
-    else if (text == "bsdf") settings.path_sampling = PathSampling::kBsdf;
-    else fail_at(*sampling, "render.sampling must be mis, light or bsdf, got '" + text + "'");
-  }
+  if (const YamlNode* integrator = render.optional("integrator"))
+    settings.integrator = read_keyword<Integrator>(*integrator, "render.integrator",
+                                                   {{"path", Integrator::kPath}, {"whitted", Integrator::kWhitted}});
+  if (const YamlNode* sampling = render.optional("sampling"))
+    settings.path_sampling = read_keyword<PathSampling>(
+        *sampling, "render.sampling",
+        {{"mis", PathSampling::kMis}, {"light", PathSampling::kLight}, {"bsdf", PathSampling::kBsdf}});
   settings.sampler = settings.integrator == Integrator::kPath ? SamplerKind::kSobol : SamplerKind::kStratified;
-  if (const YamlNode* sampler = render.optional("sampler")) {
-    const std::string text = read_string(*sampler, "render.sampler");
-    if (text == "sobol") settings.sampler = SamplerKind::kSobol;
-    else if (text == "stratified") settings.sampler = SamplerKind::kStratified;
-    else fail_at(*sampler, "render.sampler must be sobol or stratified, got '" + text + "'");
-  }
-  if (const YamlNode* light_sampler = render.optional("light_sampler")) {
-    const std::string text = read_string(*light_sampler, "render.light_sampler");
-    if (text == "tree") settings.light_sampler = LightSamplerKind::kTree;
-    else if (text == "power") settings.light_sampler = LightSamplerKind::kPower;
-    else fail_at(*light_sampler, "render.light_sampler must be tree or power, got '" + text + "'");
-  }
+  if (const YamlNode* sampler = render.optional("sampler"))
+    settings.sampler = read_keyword<SamplerKind>(
+        *sampler, "render.sampler", {{"sobol", SamplerKind::kSobol}, {"stratified", SamplerKind::kStratified}});
+  if (const YamlNode* light_sampler = render.optional("light_sampler"))
+    settings.light_sampler =
+        read_keyword<LightSamplerKind>(*light_sampler, "render.light_sampler",
+                                       {{"tree", LightSamplerKind::kTree}, {"power", LightSamplerKind::kPower}});
   if (const YamlNode* depth = render.optional("max_depth")) {
     const std::int64_t value = read_integer(*depth, "render.max_depth");
     if (value < 0 || value > kMaxDepth)
@@ -188,16 +178,6 @@ SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& f
   desc.environment = read_environment(scene.optional("environment"), file.parent_path());
   read_scene_objects(scene.optional("objects"), scene.optional("world"), file.parent_path(), desc);
   return desc;
-}
-
-// What a path names when it is not a regular file, for the refusal message.
-const char* special_file_kind(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
 }
 
 [[noreturn]] void refuse_special_file(const SourceLocation& where, mode_t mode) {

@@ -21,10 +21,7 @@ bool is_scene_linear_format(const std::filesystem::path& file) {
 }
 
 bool read_bool(const YamlNode& node, const std::string& name) {
-  const std::string text = read_string(node, name);
-  if (text == "true") return true;
-  if (text == "false") return false;
-  fail_at(node, name + " must be true or false, got '" + text + "'");
+  return read_keyword<bool>(node, name, {{"true", true}, {"false", false}});
 }
 
 }  // namespace

@@ -31,14 +31,10 @@ CheckerDesc read_checker(const YamlNode& node, const std::string& name) {
     desc.even = read_color(*items[0], checker.field("colors") + "[0]");
     desc.odd = read_color(*items[1], checker.field("colors") + "[1]");
   }
-  if (const YamlNode* axes = checker.optional("axes")) {
-    const std::string text = read_string(*axes, checker.field("axes"));
-    if (text == "xz") desc.axes = CheckerAxes::kXZ;
-    else if (text == "xy") desc.axes = CheckerAxes::kXY;
-    else if (text == "yz") desc.axes = CheckerAxes::kYZ;
-    else if (text == "xyz") desc.axes = CheckerAxes::kXYZ;
-    else fail_at(*axes, checker.field("axes") + " must be xz, xy, yz or xyz, got '" + text + "'");
-  }
+  if (const YamlNode* axes = checker.optional("axes"))
+    desc.axes = read_keyword<CheckerAxes>(
+        *axes, checker.field("axes"),
+        {{"xz", CheckerAxes::kXZ}, {"xy", CheckerAxes::kXY}, {"yz", CheckerAxes::kYZ}, {"xyz", CheckerAxes::kXYZ}});
   return desc;
 }
 
@@ -59,14 +55,12 @@ void read_image_texture(const YamlNode& node, const std::string& name, const std
     const std::string text = read_string(*colorspace, texture.field("colorspace"));
     desc.texture_colorspace = text == "srgb" ? "sRGB - Texture" : text == "linear" ? "Linear Rec.709 (sRGB)" : text;
   }
-  if (const YamlNode* wrap = texture.optional("wrap")) {
-    const std::string text = read_string(*wrap, texture.field("wrap"));
-    if (text == "repeat") desc.texture_wrap = TextureWrap::kRepeat;
-    else if (text == "clamp") desc.texture_wrap = TextureWrap::kClamp;
-    else if (text == "mirror") desc.texture_wrap = TextureWrap::kMirror;
-    else if (text == "black") desc.texture_wrap = TextureWrap::kBlack;
-    else fail_at(*wrap, texture.field("wrap") + " must be repeat, clamp, mirror or black, got '" + text + "'");
-  }
+  if (const YamlNode* wrap = texture.optional("wrap"))
+    desc.texture_wrap = read_keyword<TextureWrap>(*wrap, texture.field("wrap"),
+                                                  {{"repeat", TextureWrap::kRepeat},
+                                                   {"clamp", TextureWrap::kClamp},
+                                                   {"mirror", TextureWrap::kMirror},
+                                                   {"black", TextureWrap::kBlack}});
   desc.color = Color(1.0f);
   if (const YamlNode* tint = texture.optional("tint")) desc.color = read_color(*tint, texture.field("tint"));
 }
@@ -88,12 +82,12 @@ MaterialParams read_material_kind(const YamlNode& node, const std::string& name)
   static const std::vector<MaterialParams> kinds =
       every_material_kind(std::make_index_sequence<std::variant_size_v<MaterialParams>>());
   const std::string text = read_string(node, name);
-  std::string listed;
-  for (std::size_t k = 0; k < kinds.size(); ++k) {
-    if (text == material_type(kinds[k])) return kinds[k];
-    listed += (k == 0 ? "" : (k + 1 == kinds.size() ? " or " : ", ")) + std::string(material_type(kinds[k]));
+  std::vector<std::string_view> types;
+  for (const MaterialParams& kind : kinds) {
+    if (text == material_type(kind)) return kind;
+    types.push_back(material_type(kind));
   }
-  fail_at(node, name + " must be " + listed + ", got '" + text + "'");
+  fail_not_one_of(node, name, text, types);
 }
 
 // The keys a material may have: type, colour and emission, and its kind's own, so that a key of
@@ -124,12 +118,9 @@ void read_emission(const MappingReader& material, MaterialDesc& desc) {
     if (!is_finite(desc.emission))
       fail_at(*strength, material.field("emission_strength") + " makes the emission overflow");
   }
-  if (sides) {
-    const std::string text = read_string(*sides, material.field("emission_sides"));
-    if (text == "front") desc.emission_two_sided = false;
-    else if (text == "both") desc.emission_two_sided = true;
-    else fail_at(*sides, material.field("emission_sides") + " must be front or both, got '" + text + "'");
-  }
+  if (sides)
+    desc.emission_two_sided =
+        read_keyword<bool>(*sides, material.field("emission_sides"), {{"front", false}, {"both", true}});
 }
 
 MaterialDesc read_material(const std::string& name, const YamlNode& node, const std::filesystem::path& folder) {

@@ -119,6 +119,14 @@ std::string read_string(const YamlNode& node, const std::string& name) {
   return std::string(node.scalar());
 }
 
+void fail_not_one_of(const YamlNode& node, const std::string& name, const std::string& text,
+                     std::span<const std::string_view> keywords) {
+  std::string listed;
+  for (std::size_t k = 0; k < keywords.size(); ++k)
+    listed += (k == 0 ? "" : (k + 1 == keywords.size() ? " or " : ", ")) + std::string(keywords[k]);
+  fail_at(node, name + " must be " + listed + ", got '" + text + "'");
+}
+
 YamlNodeList read_list(const YamlNode& node, const std::string& name, std::size_t count, std::string_view shape) {
   if (!node.is_sequence() || node.items().size() != count)
     fail_at(node, name + ": expected " + std::string(shape) + ", got " + node.describe());

@@ -11,6 +11,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace rtpro {
@@ -56,5 +57,23 @@ Vec3 read_vec3(const YamlNode& node, const std::string& name);
 Color read_color(const YamlNode& node, const std::string& name);
 // A list of exactly `count` items, or a failure naming the expected shape.
 YamlNodeList read_list(const YamlNode& node, const std::string& name, std::size_t count, std::string_view shape);
+
+// "`name` must be a, b or c, got 'text'": the keywords in the order given.
+[[noreturn]] void fail_not_one_of(const YamlNode& node, const std::string& name, const std::string& text,
+                                  std::span<const std::string_view> keywords);
+
+// The value that the keyword at `node` stands for, one of `choices`, which its failure lists in
+// their order: read_keyword<Integrator>(node, "render.integrator", {{"path", Integrator::kPath}, ...}).
+template <typename Value>
+Value read_keyword(const YamlNode& node, const std::string& name,
+                   std::initializer_list<std::pair<std::string_view, Value>> choices) {
+  const std::string text = read_string(node, name);
+  std::vector<std::string_view> keywords;
+  for (const auto& [keyword, value] : choices) {
+    if (text == keyword) return value;
+    keywords.push_back(keyword);
+  }
+  fail_not_one_of(node, name, text, keywords);
+}
 
 }  // namespace rtpro
