@@ -1,7 +1,7 @@
 #pragma once
 // A directional light, the scene's side of the kind in one place (as scene/point_light.h
 // explains): reading in src/scene/yaml/yaml_directional_light.cpp, the rest in
-// src/scene/build/directional_light.cpp, its shading side in render/directional_light_sample.h.
+// src/scene/build/directional_light.cpp, its shading side in render/lights/directional_light_sample.h.
 #include "rtpro/core/vec3.h"
 
 namespace rtpro {

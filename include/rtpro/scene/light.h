@@ -1,7 +1,7 @@
 #pragma once
 // The kinds of light, registered: each kind's scene side is one header (its scene-file
 // description, the light the renderer uses, and its operations: see scene/point_light.h) and its
-// shading side another (render/point_light_sample.h, registered in render/light_sample.h). A new
+// shading side another (render/lights/point_light_sample.h, registered in render/lights/light_sample.h). A new
 // kind is a header here, an alternative in each variant below and its include; every std::visit
 // over LightDesc or Light then names the operations it still lacks.
 #include "rtpro/scene/directional_light.h"

@@ -2,7 +2,7 @@
 // A point light, the scene's side of the kind in one place: what a scene file says (`type: point`),
 // the light the renderer uses, and the kind's operations, each defined where its machinery lives
 // (reading in src/scene/yaml/yaml_point_light.cpp, the rest in src/scene/build/point_light.cpp).
-// Its shading side is render/point_light_sample.h; the kind is registered in scene/light.h.
+// Its shading side is render/lights/point_light_sample.h; the kind is registered in scene/light.h.
 #include "rtpro/core/vec3.h"
 
 namespace rtpro {

@@ -1,7 +1,7 @@
 #pragma once
 // A quad light, the scene's side of the kind in one place (as scene/point_light.h explains):
 // reading in src/scene/yaml/yaml_quad_light.cpp, the rest in src/scene/build/quad_light.cpp, its
-// shading side in render/quad_light_sample.h.
+// shading side in render/lights/quad_light_sample.h.
 #include "rtpro/core/vec3.h"
 
 namespace rtpro {

@@ -8,8 +8,8 @@
 namespace rtpro {
 
 // How light is carried to the camera. `whitted` is the Phong model with mirrors, glass and hard or
-// soft shadows (render/shading.h); `path` is physically based unidirectional path tracing with
-// multiple importance sampling (render/path_integrator.h).
+// soft shadows (render/integrators/whitted_integrator.h); `path` is physically based unidirectional path tracing with
+// multiple importance sampling (render/integrators/path_integrator.h).
 enum class Integrator : std::uint8_t { kWhitted, kPath };
 
 // How the path integrator finds light arriving at a non-specular vertex: both strategies,
@@ -28,7 +28,7 @@ constexpr const char* path_sampling_name(PathSampling sampling) {
 }
 
 // Where a pixel's samples fall in every dimension: `stratified` (render/sampler.h: a jittered grid
-// per dimension pair, the Whitted references' sampler) or `sobol` (render/sobol_sampler.h:
+// per dimension pair, the Whitted references' sampler) or `sobol` (render/sampling/sobol_sampler.h:
 // Owen-scrambled Sobol points, the path integrator's default, lower error at equal spp).
 enum class SamplerKind : std::uint8_t { kStratified, kSobol };
 
@@ -40,7 +40,7 @@ constexpr const char* sampler_name(SamplerKind sampler) {
   return "?";
 }
 
-// How the path integrator picks the light it samples at a vertex: `tree` (render/light_tree.h:
+// How the path integrator picks the light it samples at a vertex: `tree` (render/lights/light_tree.h:
 // by an estimate of what each light sends to the point) or `power` (by power alone, anywhere).
 enum class LightSamplerKind : std::uint8_t { kTree, kPower };
 

@@ -1,7 +1,7 @@
 #pragma once
 // A sphere light, the scene's side of the kind in one place (as scene/point_light.h explains):
 // reading in src/scene/yaml/yaml_sphere_light.cpp, the rest in src/scene/build/sphere_light.cpp,
-// its shading side in render/sphere_light_sample.h.
+// its shading side in render/lights/sphere_light_sample.h.
 #include "rtpro/core/vec3.h"
 
 namespace rtpro {

@@ -1,7 +1,7 @@
 #pragma once
 // A spot light, the scene's side of the kind in one place (as scene/point_light.h explains):
 // reading in src/scene/yaml/yaml_spot_light.cpp, the rest in src/scene/build/spot_light.cpp, its
-// shading side in render/spot_light_sample.h.
+// shading side in render/lights/spot_light_sample.h.
 #include "rtpro/core/vec3.h"
 
 namespace rtpro {
