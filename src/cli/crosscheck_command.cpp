@@ -5,18 +5,17 @@
 #include "rtpro/backend/backend.h"
 #include "backend_options.h"
 #include "command.h"
+#include "thread_count.h"
 #include "rtpro/core/error.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
 
 #include <tbb/global_control.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
-#include <thread>
 
 namespace rtpro::cli {
 
@@ -79,7 +78,7 @@ void print_report(const CrosscheckReport& r) {
 }
 
 int run_crosscheck(const CrosscheckCommandOptions& o) {
-  const int threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = worker_thread_count(o.threads);
   // Must exist before any TBB or Embree work so the cap really holds.
   tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 

@@ -5,6 +5,7 @@
 // the channels the denoiser needs, or bad options; 1 when OUT cannot be written (an existing OUT
 // is then left as it was).
 #include "command.h"
+#include "thread_count.h"
 #include "rtpro/core/error.h"
 #include "rtpro/denoise/denoise.h"
 #include "rtpro/image/image_io.h"
@@ -12,7 +13,6 @@
 
 #include <tbb/global_control.h>
 
-#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cstdio>
@@ -20,7 +20,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <thread>
 
 namespace rtpro::cli {
 
@@ -57,11 +56,9 @@ std::string seconds_text(double seconds) {
 }
 
 int run_denoise(const DenoiseCommandOptions& o) {
-  if (o.threads && *o.threads < 0) throw InputError("--threads must be >= 0 (0: all cores)");
+  const int threads = worker_thread_count(o.threads);
   const std::filesystem::path input = o.input, output = o.output;
   check_image_output(output);  // a typo in -o fails now, not after the denoise
-  const int threads =
-      o.threads.value_or(0) > 0 ? *o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
   const auto start = std::chrono::steady_clock::now();

@@ -17,6 +17,7 @@
 #include "scene_overrides.h"
 #include "tbb_workers.h"
 #include "tev_client.h"
+#include "thread_count.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
 #include "rtpro/denoise/denoise.h"
@@ -44,7 +45,6 @@
 #include <memory>
 #include <optional>
 #include <sstream>
-#include <thread>
 
 namespace rtpro::cli {
 
@@ -60,9 +60,7 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   const bool leader = !job || job->rank() == 0;
   Log log(o.quiet || !leader ? LogLevel::kQuiet : (o.verbose > 0 ? LogLevel::kVerbose : LogLevel::kNormal));
   const BackendKind kind = parse_backend_kind(o.backend);
-  if (o.threads && *o.threads < 0) throw InputError("--threads must be >= 0 (0: all cores)");
-  const int threads =
-      o.threads.value_or(0) > 0 ? *o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = worker_thread_count(o.threads);
   RenderOptions render_options;
   render_options.region = parse_region(o.region);
   if (o.tile_size < 1) throw InputError("--tile-size must be at least 1 pixel, got " + std::to_string(o.tile_size));
