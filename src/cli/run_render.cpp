@@ -4,6 +4,7 @@
 #include "rtpro/backend/backend.h"
 #include "backend_options.h"
 #include "interrupt.h"
+#include "load_scene.h"
 #include "log.h"
 #include "memory_option.h"
 #include "output_target.h"
@@ -14,7 +15,6 @@
 #include "render_output.h"
 #include "scene_images.h"
 #include "render_stats.h"
-#include "scene_overrides.h"
 #include "tbb_workers.h"
 #include "tev_client.h"
 #include "thread_count.h"
@@ -31,9 +31,6 @@
 #include "rtpro/image/texture_lookup.h"
 #include "rtpro/render/environment_light.h"
 #include "rtpro/render/renderer.h"
-#include "rtpro/scene/build_render_scene.h"
-#include "rtpro/scene/render_cost.h"
-#include "rtpro/scene/scene_parser.h"
 
 #include <tbb/global_control.h>
 
@@ -138,16 +135,13 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   // Must exist before any TBB or Embree work so the cap really holds.
   tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
-  const SceneDescription description = parse_with_overrides(o.scene, o.scene_overrides);
-  check_region_fits(render_options.region, o.region, description.camera.width, description.camera.height);
-  // Refused before anything large is allocated: image buffers, flattened instances, meshes.
   int extra_channels = 0;
   for (Aov aov : render_options.aovs) extra_channels += static_cast<int>(aov_channel_names(aov).size());
-  const RenderCost cost = estimate_render_cost(description, extra_channels);
-  check_render_cost(cost, memory.bytes, memory.source, o.scene);
-  log.verbose("estimated memory: " + format_bytes(cost.total_bytes) + " of a budget of " + format_bytes(memory.bytes));
-  SceneBuildReport report;
-  const RenderScene scene = build_render_scene(description, &report);
+  const LoadedScene loaded =
+      load_scene({o.scene, o.scene_overrides, memory, extra_channels, render_options.region, o.region}, &log);
+  const SceneDescription& description = loaded.description;
+  const SceneBuildReport& report = loaded.report;
+  const RenderScene& scene = loaded.scene;
   if (render_passes(scene).passes() == 1 && (o.noise_threshold > 0.0 || o.time_limit > 0.0))
     throw InputError(std::string(o.noise_threshold > 0.0 ? "--noise-threshold" : "--time-limit") +
                      " works between passes, and this render is one pass: the stratified sampler fills its strata "
