@@ -23,12 +23,14 @@
 #include "rtpro/denoise/denoise.h"
 #include "rtpro/distributed/communicator.h"
 #include "rtpro/distributed/distributed_render.h"
+#include "rtpro/distributed/distributed_tile_executor.h"
 #include "rtpro/image/atomic_file_replacement.h"
 #include "rtpro/image/color_config.h"
 #include "rtpro/image/image_io.h"
 #include "rtpro/image/image_layer.h"
 #include "rtpro/image/output_check.h"
 #include "rtpro/image/texture_lookup.h"
+#include "rtpro/job/tile_journal.h"
 #include "rtpro/render/environment_light.h"
 #include "rtpro/render/renderer.h"
 
@@ -192,9 +194,7 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   if (display_server && leader) {
     preview = std::make_unique<TevClient>(*display_server, std::filesystem::path(output.name()).filename().string(),
                                           scene.camera.width, scene.camera.height, log);
-    render_options.on_pass_image = [&preview](const Image& image, const PixelRegion& region) {
-      preview->send_tile(image, region);
-    };
+    render_options.observers.push_back(preview.get());
   }
   // The journal beside the output: what --resume continues after a kill or an interrupt.
   // The ranks of a job check they render the same thing before any of them renders.
@@ -214,16 +214,12 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
     const JobIdentity identity = render_job_identity(description, report, scene, settings);
     if (job) agree_on_job(*job, identity);
     if (journaled)
-      opened = open_render_journal(output.file(), identity, grid, render_sums(render_options).floats(), o.resume, log);
+      opened = open_render_journal(journal_path(output.file()), identity, grid, render_sums(render_options).floats(),
+                                   o.resume, log);
   }
   if (opened.journal) {
     render_options.journal_items = opened.finished;
-    render_options.on_tile_result = [journal = opened.journal.get()](const TileResult& tile) { journal->append(tile); };
-    // Every pass's records would make the journal spp/step times the film: once it holds twice the
-    // film, the sums so far replace the records they sum.
-    render_options.on_pass_merged = [journal = opened.journal.get()](int, const ProgressiveFilm& film) {
-      if (journal->bytes() > 2 * film.bytes()) journal->rewrite(film.journal_items());
-    };
+    render_options.observers.push_back(&opened);
   }
   if (!leader) {
     const TileRenderer renderer(scene, *backend, grid, render_sums(render_options), render_options.textures,
@@ -235,17 +231,17 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
     follow_distributed_render(*job, renderer, grid, threads, &InterruptGuard::requested(), rank_timeout);
     return kExitOk;
   }
-  if (job)
-    render_options.tile_executor = [&job, &stats, &render_thread, rank_timeout](const TileRenderer& renderer,
-                                                                                const TileGrid& tiles,
-                                                                                TileSource& source, TileSink& sink) {
-      stats.ranks = lead_distributed_render(*job, renderer, tiles, source, sink, &*render_thread, rank_timeout);
-    };
+  std::optional<DistributedTileExecutor> executor;
+  if (job) {
+    executor.emplace(*job, &*render_thread, rank_timeout);
+    render_options.tile_executor = &*executor;
+  }
   const InterruptGuard interrupt;
   ProgressReporter progress(progress_mode, isatty(STDERR_FILENO) == 1, o.frame);
   render_options.cancel = &InterruptGuard::requested();
-  render_options.on_tile_done = [&progress](std::size_t done, std::size_t total) { progress.tile_done(done, total); };
+  render_options.observers.push_back(&progress);
   RenderResult result = render_image(scene, *backend, render_options);
+  if (executor) stats.ranks = executor->ranks();
   progress.finish(result.tiles_done, result.tiles_total);
   switch (result.stop) {
     case RenderStop::kAllPasses: break;
