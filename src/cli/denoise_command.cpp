@@ -5,6 +5,7 @@
 // the channels the denoiser needs, or bad options; 1 when OUT cannot be written (an existing OUT
 // is then left as it was).
 #include "command.h"
+#include "render_output.h"
 #include "thread_count.h"
 #include "rtpro/core/error.h"
 #include "rtpro/denoise/denoise.h"
@@ -13,7 +14,6 @@
 
 #include <tbb/global_control.h>
 
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -32,13 +32,6 @@ struct DenoiseCommandOptions {
   DenoiseSettings settings;
   bool quiet = false;
 };
-
-// Only EXR keeps the layers; other formats get the denoised colour alone.
-bool keeps_layers(const std::filesystem::path& file) {
-  std::string extension = file.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == ".exr" || extension == ".sxr" || extension == ".mxr";
-}
 
 std::string what_was_used(const DenoiseReport& report) {
   std::string text = "guided by ";
@@ -74,7 +67,8 @@ int run_denoise(const DenoiseCommandOptions& o) {
     std::cerr << "rtpro: warning: " << input.string()
               << " lacks some of the albedo, N and depth layers (render --aov albedo,normal,depth): the denoiser "
                  "tells less detail from noise without them\n";
-  if (keeps_layers(output)) {
+  // Only EXR keeps the layers; other formats get the denoised colour alone.
+  if (holds_layers(output)) {
     denoised = with_denoised_colour(noisy, denoised);
   }
   noisy = Image();
