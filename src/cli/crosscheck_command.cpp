@@ -5,18 +5,19 @@
 #include "rtpro/backend/backend.h"
 #include "backend_options.h"
 #include "command.h"
+#include "load_scene.h"
+#include "memory_option.h"
+#include "scene_overrides.h"
+#include "thread_count.h"
 #include "rtpro/core/error.h"
-#include "rtpro/scene/build_render_scene.h"
-#include "rtpro/scene/scene_parser.h"
 
 #include <tbb/global_control.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
-#include <thread>
+#include <vector>
 
 namespace rtpro::cli {
 
@@ -24,9 +25,12 @@ namespace {
 
 struct CrosscheckCommandOptions {
   std::string scene;
+  std::vector<std::string> overrides, defines;
+  std::vector<SceneOverride> scene_overrides;  // both, in command-line order
   CrosscheckOptions check;
   int threads = 0;
   BackendOptions backend;  // Embree settings from the command line
+  std::string max_memory_mb;
 };
 
 std::string describe(const Hit& hit, bool found) {
@@ -79,13 +83,16 @@ void print_report(const CrosscheckReport& r) {
 }
 
 int run_crosscheck(const CrosscheckCommandOptions& o) {
-  const int threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = worker_thread_count(o.threads);
+  const MemoryBudget memory = parse_memory_budget(o.max_memory_mb);
   // Must exist before any TBB or Embree work so the cap really holds.
-  tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  const tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
-  const RenderScene scene = build_render_scene(parse_scene_file(o.scene));
+  const LoadedScene loaded = load_scene({.file = o.scene, .overrides = o.scene_overrides, .memory = memory});
+  const RenderScene& scene = loaded.scene;
   BackendOptions backend_options = o.backend;
   backend_options.threads = threads;
+  backend_options.max_memory_bytes = memory.explicit_limit ? memory.bytes : 0;
   const auto native = make_backend(BackendKind::kNative, scene, backend_options);
   const auto embree = make_backend(BackendKind::kEmbree, scene, backend_options);
 
@@ -101,6 +108,7 @@ void add_crosscheck_command(CLI::App& app, Action& action) {
   auto o = std::make_shared<CrosscheckCommandOptions>();
   CLI::App* cmd = app.add_subcommand("crosscheck", "Compare the native and Embree backends ray by ray");
   cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
+  add_scene_override_options(*cmd, o->overrides, o->defines);
   cmd->add_option("--rays", o->check.rays, "Number of rays: half camera rays, half random rays")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}))
       ->capture_default_str();
@@ -110,7 +118,13 @@ void add_crosscheck_command(CLI::App& app, Action& action) {
       ->capture_default_str();
   cmd->add_option("--threads", o->threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 4096));
   add_embree_options(*cmd, o->backend);
-  cmd->callback([o, &action] { action = [o] { return run_crosscheck(*o); }; });
+  cmd->add_option("--max-memory", o->max_memory_mb,
+                  "Memory budget in MiB the scene's estimate is checked against before it is built, and Embree's "
+                  "limit (0: no limit; default: the smaller of 4096 and the available memory)");
+  cmd->callback([o, cmd, &action] {
+    o->scene_overrides = command_line_overrides(*cmd);
+    action = [o] { return run_crosscheck(*o); };
+  });
 }
 
 }  // namespace rtpro::cli

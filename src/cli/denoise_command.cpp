@@ -5,6 +5,8 @@
 // the channels the denoiser needs, or bad options; 1 when OUT cannot be written (an existing OUT
 // is then left as it was).
 #include "command.h"
+#include "render_output.h"
+#include "thread_count.h"
 #include "rtpro/core/error.h"
 #include "rtpro/denoise/denoise.h"
 #include "rtpro/image/image_io.h"
@@ -12,15 +14,12 @@
 
 #include <tbb/global_control.h>
 
-#include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
-#include <thread>
 
 namespace rtpro::cli {
 
@@ -33,13 +32,6 @@ struct DenoiseCommandOptions {
   DenoiseSettings settings;
   bool quiet = false;
 };
-
-// Only EXR keeps the layers; other formats get the denoised colour alone.
-bool keeps_layers(const std::filesystem::path& file) {
-  std::string extension = file.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == ".exr" || extension == ".sxr" || extension == ".mxr";
-}
 
 std::string what_was_used(const DenoiseReport& report) {
   std::string text = "guided by ";
@@ -57,11 +49,9 @@ std::string seconds_text(double seconds) {
 }
 
 int run_denoise(const DenoiseCommandOptions& o) {
-  if (o.threads && *o.threads < 0) throw InputError("--threads must be >= 0 (0: all cores)");
+  const int threads = worker_thread_count(o.threads);
   const std::filesystem::path input = o.input, output = o.output;
   check_image_output(output);  // a typo in -o fails now, not after the denoise
-  const int threads =
-      o.threads.value_or(0) > 0 ? *o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
   const auto start = std::chrono::steady_clock::now();
@@ -77,7 +67,8 @@ int run_denoise(const DenoiseCommandOptions& o) {
     std::cerr << "rtpro: warning: " << input.string()
               << " lacks some of the albedo, N and depth layers (render --aov albedo,normal,depth): the denoiser "
                  "tells less detail from noise without them\n";
-  if (keeps_layers(output)) {
+  // Only EXR keeps the layers; other formats get the denoised colour alone.
+  if (holds_layers(output)) {
     denoised = with_denoised_colour(noisy, denoised);
   }
   noisy = Image();

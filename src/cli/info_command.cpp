@@ -1,13 +1,11 @@
 // `rtpro info SCENE`: what a scene holds, without rendering it.
 #include "command.h"
+#include "load_scene.h"
 #include "memory_option.h"
+#include "scene_overrides.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
-#include "rtpro/scene/build_render_scene.h"
-#include "rtpro/scene/render_cost.h"
-#include "rtpro/scene/scene_parser.h"
 #include "rtpro/scene/scene_summary.h"
-#include "scene_overrides.h"
 
 #include <nlohmann/json.hpp>
 
@@ -135,20 +133,16 @@ void print_cost(const RenderCost& cost, const MemoryBudget& budget) {
 }
 
 int run_info(const InfoOptions& o) {
-  const SceneDescription description = parse_with_overrides(o.scene, o.scene_overrides);
   const MemoryBudget budget = parse_memory_budget(o.max_memory_mb);
-  const RenderCost cost = estimate_render_cost(description);
-  check_render_cost(cost, budget.bytes, budget.source, o.scene);
-  SceneBuildReport report;
-  const RenderScene scene = build_render_scene(description, &report);
-  const SceneSummary summary = summarize(scene);
+  const LoadedScene loaded = load_scene({.file = o.scene, .overrides = o.scene_overrides, .memory = budget});
+  const SceneSummary summary = summarize(loaded.scene);
   if (o.json) {
-    nlohmann::json json = info_json(o.scene, scene, summary, report);
-    json["estimate"] = cost_json(cost, budget);
+    nlohmann::json json = info_json(o.scene, loaded.scene, summary, loaded.report);
+    json["estimate"] = cost_json(loaded.cost, budget);
     std::cout << json.dump(2) << "\n";
   } else {
-    print_text(o.scene, scene, summary, report);
-    print_cost(cost, budget);
+    print_text(o.scene, loaded.scene, summary, loaded.report);
+    print_cost(loaded.cost, budget);
   }
   return kExitOk;
 }

@@ -1,5 +1,6 @@
 #include "output_target.h"
 
+#include "render_output.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/stale_temporaries.h"
 
@@ -12,6 +13,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <utility>
 
 namespace rtpro::cli {
 
@@ -63,6 +65,9 @@ OutputTarget::OutputTarget(const std::string& output, const std::string& format)
                      ": a file's format comes from its extension (--format is for -o -)");
 }
 
+OutputTarget::OutputTarget(OutputTarget&& other) noexcept
+    : file_(std::move(other.file_)), to_stdout_(std::exchange(other.to_stdout_, false)) {}
+
 OutputTarget::~OutputTarget() {
   if (!to_stdout_) return;
   std::error_code ignored;
@@ -70,6 +75,13 @@ OutputTarget::~OutputTarget() {
 }
 
 std::string OutputTarget::name() const { return to_stdout_ ? "standard output" : file_.string(); }
+
+std::filesystem::path OutputTarget::write(const Image& image, bool complete, const ImageWriteOptions& options) const {
+  const std::filesystem::path written = complete || to_stdout_ ? file_ : partial_path(file_);
+  write_image(written, image, options);
+  deliver();
+  return written;
+}
 
 void OutputTarget::deliver() const {
   if (!to_stdout_) return;

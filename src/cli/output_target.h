@@ -2,6 +2,7 @@
 // Where `rtpro render` writes its image: a file named by -o (the extension picks the format), or
 // standard output for `-o -` (the format from --format), and what --exposure does to it.
 #include "rtpro/image/image.h"
+#include "rtpro/image/image_io.h"
 
 #include <filesystem>
 #include <string>
@@ -16,6 +17,8 @@ class OutputTarget {
  public:
   // Throws InputError for `-o -` without --format, or a --format that contradicts the extension.
   OutputTarget(const std::string& output, const std::string& format);
+  // Moving hands over the temporary file of a stdout target: only one of them removes it.
+  OutputTarget(OutputTarget&& other) noexcept;
   OutputTarget(const OutputTarget&) = delete;
   OutputTarget& operator=(const OutputTarget&) = delete;
   ~OutputTarget();  // removes the temporary file of a stdout target
@@ -23,12 +26,17 @@ class OutputTarget {
   // What the image writer writes: the -o file, or a temporary file with the format's extension.
   const std::filesystem::path& file() const { return file_; }
   bool to_stdout() const { return to_stdout_; }
-  // For a stdout target, copies the written file to standard output; otherwise nothing.
-  void deliver() const;
   // How messages name the target: the file, or "standard output".
   std::string name() const;
+  // Writes the image of a render: to file() when `complete` or for standard output (copied there
+  // then), else beside the -o file as NAME.partial.EXT, so an interrupted render never replaces a
+  // finished image. Returns the file written.
+  std::filesystem::path write(const Image& image, bool complete, const ImageWriteOptions& options) const;
 
  private:
+  // For a stdout target, copies the written file to standard output; otherwise nothing.
+  void deliver() const;
+
   std::filesystem::path file_;
   bool to_stdout_ = false;
 };

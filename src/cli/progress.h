@@ -2,6 +2,8 @@
 // Render progress on stderr: a redrawn bar with percent, elapsed time and ETA on a terminal
 // (a few updates a second), plain periodic lines otherwise. Called from worker threads after each
 // tile; the cost per call is one atomic load unless an update is due.
+#include "rtpro/render/render_observer.h"
+
 #include <atomic>
 #include <chrono>
 #include <cstddef>
@@ -21,12 +23,12 @@ ProgressMode parse_progress_mode(const std::string& text);  // never | auto | al
 // comes first: {"frame":12,"tiles_done":...}.
 std::string json_progress_line(std::size_t done, std::size_t total, double elapsed, bool final, long frame = -1);
 
-class ProgressReporter {
+class ProgressReporter final : public RenderObserver {
  public:
   // kAuto draws a bar on a terminal and prints lines otherwise; kAlways forces the bar.
   ProgressReporter(ProgressMode mode, bool stderr_is_terminal, long frame = -1);
 
-  void tile_done(std::size_t done, std::size_t total);
+  void tile_done(std::size_t done, std::size_t total) override;
   void finish(std::size_t done, std::size_t total);  // final state, ends the bar's line
 
  private:

@@ -51,9 +51,14 @@ JobIdentity render_job_identity(const SceneDescription& description, const Scene
   return identity;
 }
 
-OpenedJournal open_render_journal(const std::filesystem::path& output, const JobIdentity& identity,
-                                  const TileGrid& grid, int channel_count, bool resume, Log& log) {
-  const std::filesystem::path file = journal_path(output);
+void OpenedJournal::tile_result(const TileResult& item) { journal->append(item); }
+
+void OpenedJournal::pass_merged(int, const ProgressiveFilm& film) {
+  if (journal->bytes() > 2 * film.bytes()) journal->rewrite(film.journal_items());
+}
+
+OpenedJournal open_render_journal(const std::filesystem::path& file, const JobIdentity& identity, const TileGrid& grid,
+                                  int channel_count, bool resume, Log& log) {
   OpenedJournal opened;
   opened.owner = std::make_unique<JournalOwner>(file);  // refuses a FIFO, device, directory or link there too
   std::error_code error;

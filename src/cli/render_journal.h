@@ -8,6 +8,7 @@
 #include "rtpro/job/tile_journal.h"
 #include "rtpro/render/adaptive_sampling.h"
 #include "rtpro/render/film.h"
+#include "rtpro/render/render_observer.h"
 #include "rtpro/render/tiles.h"
 #include "rtpro/scene/render_scene.h"
 
@@ -32,18 +33,24 @@ struct RenderJobSettings {
 JobIdentity render_job_identity(const SceneDescription& description, const SceneBuildReport& report,
                                 const RenderScene& scene, const RenderJobSettings& settings);
 
-struct OpenedJournal {
+// The journal of a render, kept as it goes: each newly rendered work item is appended, and once
+// the journal holds twice the film, the sums so far replace the records they sum (every pass's
+// records would make the journal spp/step times the film).
+struct OpenedJournal final : RenderObserver {
   std::unique_ptr<JournalOwner> owner;  // held until the render ends (declared first: released last)
   std::unique_ptr<TileJournal> journal;
   std::vector<TileResult> finished;  // work items read back with --resume
+
+  void tile_result(const TileResult& item) override;
+  void pass_merged(int pass, const ProgressiveFilm& film) override;
 };
 
-// Takes the journal beside `output` for this render (an InputError when another render owns it,
-// or when something other than a regular file is at its name). With `resume`, reads the journal
-// (none: every tile is rendered, with a warning) and refuses one of another job with an
+// Takes the journal `file` (beside the output) for this render (an InputError when another render
+// owns it, or when something other than a regular file is at its name). With `resume`, reads the
+// journal (none: every tile is rendered, with a warning) and refuses one of another job with an
 // InputError listing what differs. Then starts the journal afresh with the tiles kept, so torn or
 // corrupt records are gone from it.
-OpenedJournal open_render_journal(const std::filesystem::path& output, const JobIdentity& identity,
-                                  const TileGrid& grid, int channel_count, bool resume, Log& log);
+OpenedJournal open_render_journal(const std::filesystem::path& file, const JobIdentity& identity, const TileGrid& grid,
+                                  int channel_count, bool resume, Log& log);
 
 }  // namespace rtpro::cli

@@ -134,7 +134,7 @@ bool TevClient::connected() const {
   return connected_;
 }
 
-void TevClient::send_tile(const Image& image, const PixelRegion& region) {
+void TevClient::pass_image(const Image& image, const PixelRegion& region) {
   {
     const std::lock_guard lock(mutex_);
     if (!connected_) return;

@@ -9,6 +9,7 @@
 // progress before it is dropped.
 #include "log.h"
 #include "rtpro/image/image.h"
+#include "rtpro/render/render_observer.h"
 #include "rtpro/render/tiles.h"
 
 #include <atomic>
@@ -28,7 +29,7 @@ struct DisplayServerAddress {
 };
 DisplayServerAddress parse_display_server(const std::string& text);
 
-class TevClient {
+class TevClient final : public RenderObserver {
  public:
   static constexpr int kConnectTimeoutSeconds = 2;
   static constexpr int kSendTimeoutSeconds = 5;
@@ -39,13 +40,14 @@ class TevClient {
   // Connects and creates the image `name` (R, G, B; width × height); warns through `log` and
   // stays disconnected when that fails.
   TevClient(const DisplayServerAddress& address, const std::string& name, int width, int height, Log& log);
-  ~TevClient();
+  ~TevClient() override;
   TevClient(const TevClient&) = delete;
   TevClient& operator=(const TevClient&) = delete;
 
+  bool wants_images() const override { return true; }
   // Queues the R, G, B pixels of `region` of `image` for the viewer, or drops them when the queue
   // is full; never waits for the viewer. Safe to call from several threads.
-  void send_tile(const Image& image, const PixelRegion& region);
+  void pass_image(const Image& image, const PixelRegion& region) override;
   bool connected() const;
 
  private:

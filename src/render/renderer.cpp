@@ -60,26 +60,67 @@ class PassItemSource final : public TileSource {
   std::atomic<std::size_t> next_{0};
 };
 
-// Finished work items go to the journal (on_tile_result), then into the film. Tiles of the first
-// pass go to the preview as they come, too (a one-pass render shows its progress).
+// The image the observers that want one are shown: after each tile of the first pass, and after
+// each merged pass. Calls come one at a time.
+class PreviewImage {
+ public:
+  PreviewImage(const RenderScene& scene, const FilmLayout& layout, const SumLayout& sums,
+               const std::vector<RenderObserver*>& observers)
+      : layout_(layout), sums_(sums) {
+    for (RenderObserver* observer : observers)
+      if (observer->wants_images()) viewers_.push_back(observer);
+    if (!viewers_.empty()) image_ = Image(scene.camera.width, scene.camera.height, layout.channels());
+  }
+  bool wanted() const { return !viewers_.empty(); }
+
+  // A first-pass tile alone: the film holds nothing before it.
+  void show_tile(const TileResult& item) {
+    const std::lock_guard lock(mutex_);
+    const auto channels = static_cast<std::size_t>(layout_.channel_count());
+    const float* pixel_sums = item.pixels.data();
+    for (int y = item.region.y0; y < item.region.y1; ++y)
+      for (int x = item.region.x0; x < item.region.x1; ++x, pixel_sums += sums_.floats())
+        layout_.resolve(sums_.load(pixel_sums), std::span<float>(&image_.at(x, y, 0), channels));
+    show(item.region);
+  }
+  void show_film(const ProgressiveFilm& film) {
+    const std::lock_guard lock(mutex_);
+    film.resolve(layout_, image_);
+    show(film.grid().region());
+  }
+
+ private:
+  void show(const PixelRegion& changed) {
+    for (RenderObserver* viewer : viewers_) viewer->pass_image(image_, changed);
+  }
+
+  const FilmLayout& layout_;
+  const SumLayout& sums_;
+  std::vector<RenderObserver*> viewers_;
+  Image image_;
+  std::mutex mutex_;
+};
+
+// Finished work items go to the observers (a journal keeps them), then into the film. Tiles of the
+// first pass go to the preview as they come, too (a one-pass render shows its progress).
 class FilmSink final : public TileSink {
  public:
-  FilmSink(ProgressiveFilm& film, const RenderOptions& options, const std::function<void(const TileResult&)>& preview)
-      : film_(film), options_(options), preview_(preview) {}
+  FilmSink(ProgressiveFilm& film, const std::vector<RenderObserver*>& observers, PreviewImage& preview)
+      : film_(film), observers_(observers), preview_(preview) {}
   void put(TileResult&& item) override {
-    if (options_.on_tile_result) options_.on_tile_result(item);
-    if (preview_ && item.index < film_.grid().tiles_per_pass() && !item.cumulative) preview_(item);
+    for (RenderObserver* observer : observers_) observer->tile_result(item);
+    if (preview_.wanted() && item.index < film_.grid().tiles_per_pass() && !item.cumulative) preview_.show_tile(item);
     film_.add(std::move(item));
     const std::size_t done = done_.fetch_add(1) + 1;
-    if (options_.on_tile_done) options_.on_tile_done(done, film_.grid().count());
+    for (RenderObserver* observer : observers_) observer->tile_done(done, film_.grid().count());
   }
   void count_journal_items(std::size_t items) { done_ += items; }
   std::size_t done() const { return done_.load(); }
 
  private:
   ProgressiveFilm& film_;
-  const RenderOptions& options_;
-  const std::function<void(const TileResult&)>& preview_;
+  const std::vector<RenderObserver*>& observers_;
+  PreviewImage& preview_;
   std::atomic<std::size_t> done_{0};
 };
 
@@ -140,35 +181,17 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
     throw std::logic_error("render_image: adaptive sampling decides in this process; a tile executor cannot follow it");
 
   ProgressiveFilm film(grid, sums);
-  Image preview;
-  std::mutex preview_mutex;
-  if (options.on_pass_image) preview = Image(scene.camera.width, scene.camera.height, layout.channels());
+  PreviewImage preview(scene, layout, sums, options.observers);
   RenderResult result;
   Clock::time_point last_merge = start;
   film.on_pass_merged = [&](int pass) {
     const Clock::time_point now = Clock::now();
     result.pass_seconds.push_back(std::chrono::duration<double>(now - last_merge).count());
     last_merge = now;
-    if (options.on_pass_merged) options.on_pass_merged(pass, film);
-    if (options.on_pass_image) {
-      const std::lock_guard lock(preview_mutex);
-      film.resolve(layout, preview);
-      options.on_pass_image(preview, grid.region());
-    }
+    for (RenderObserver* observer : options.observers) observer->pass_merged(pass, film);
+    if (preview.wanted()) preview.show_film(film);
   };
-  // A first-pass tile alone: the film holds nothing before it.
-  std::function<void(const TileResult&)> preview_tile;
-  if (options.on_pass_image)
-    preview_tile = [&](const TileResult& item) {
-      const std::lock_guard lock(preview_mutex);
-      const auto channels = static_cast<std::size_t>(layout.channel_count());
-      const float* pixel_sums = item.pixels.data();
-      for (int y = item.region.y0; y < item.region.y1; ++y)
-        for (int x = item.region.x0; x < item.region.x1; ++x, pixel_sums += sums.floats())
-          layout.resolve(sums.load(pixel_sums), std::span<float>(&preview.at(x, y, 0), channels));
-      options.on_pass_image(preview, item.region);
-    };
-  FilmSink sink(film, options, preview_tile);
+  FilmSink sink(film, options.observers, preview);
   const std::vector<const TileResult*> journal = usable_journal_items(options.journal_items, grid);
   for (const TileResult* item : journal) film.add(TileResult(*item));
   sink.count_journal_items(journal.size());
@@ -186,7 +209,7 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
     return items;
   };
   const auto execute = [&](TileSource& source) {
-    if (options.tile_executor) options.tile_executor(renderer, grid, source, sink);
+    if (options.tile_executor) options.tile_executor->execute(renderer, grid, source, sink);
     else render_tiles(renderer, grid, source, sink);
   };
 

@@ -4,6 +4,7 @@
 
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/error.h"
+#include "rtpro/distributed/distributed_tile_executor.h"
 #include "rtpro/render/renderer.h"
 #include "test_scenes.h"
 
@@ -80,10 +81,10 @@ JobResult render_as_job(const RenderScene& scene, const Backend& backend, int ra
       follow_distributed_render(communicator, renderer, grid, 1);
     });
   ThreadCommunicator leader(mail, 0);
-  options.tile_executor = [&](const TileRenderer& renderer, const TileGrid& tiles, TileSource& source, TileSink& sink) {
-    result.ranks = lead_distributed_render(leader, renderer, tiles, source, sink);
-  };
+  DistributedTileExecutor executor(leader);
+  options.tile_executor = &executor;
   result.image = render_image(scene, backend, options);
+  result.ranks = executor.ranks();
   for (auto& follower : followers) follower.join();
   return result;
 }
@@ -215,9 +216,8 @@ TEST(DistributedRender, FramesFollowEachOtherWhenOneRankIsLate) {
       }
     });
   ThreadCommunicator leader(mail, 0);
-  options.tile_executor = [&](const TileRenderer& renderer, const TileGrid& tiles, TileSource& source, TileSink& sink) {
-    lead_distributed_render(leader, renderer, tiles, source, sink);
-  };
+  DistributedTileExecutor executor(leader);
+  options.tile_executor = &executor;
   for (int frame = 0; frame < kFrames; ++frame) {
     SCOPED_TRACE("frame " + std::to_string(frame));
     agree_on_job(leader, identity);
@@ -250,9 +250,8 @@ TEST(DistributedRender, SilentRankEndsTheRenderAfterTheRankTimeout) {
     }
   });
   ThreadCommunicator leader(mail, 0);
-  options.tile_executor = [&](const TileRenderer& renderer, const TileGrid& tiles, TileSource& source, TileSink& sink) {
-    lead_distributed_render(leader, renderer, tiles, source, sink, nullptr, std::chrono::milliseconds(1000));
-  };
+  DistributedTileExecutor executor(leader, nullptr, std::chrono::milliseconds(1000));
+  options.tile_executor = &executor;
   const auto start = std::chrono::steady_clock::now();
   try {
     render_image(scene, *backend, options);

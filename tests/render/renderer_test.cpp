@@ -106,9 +106,14 @@ TEST(Renderer, CancellationStopsBeforeTheRemainingTiles) {
   RenderOptions options;
   options.tile_size = 8;
   options.cancel = &cancel;
-  options.on_tile_done = [&](std::size_t done, std::size_t) {
-    if (done >= 3) cancel = true;
-  };
+  struct CancelAfterThreeTiles final : RenderObserver {
+    std::atomic<bool>& cancel;
+    explicit CancelAfterThreeTiles(std::atomic<bool>& flag) : cancel(flag) {}
+    void tile_done(std::size_t done, std::size_t) override {
+      if (done >= 3) cancel = true;
+    }
+  } canceller(cancel);
+  options.observers = {&canceller};
   tbb::global_control cap(tbb::global_control::max_allowed_parallelism, 1);
   const RenderResult result = render_image(scene, *backend, options);
   EXPECT_FALSE(result.complete());

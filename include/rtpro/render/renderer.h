@@ -9,6 +9,8 @@
 #include "rtpro/render/adaptive_sampling.h"
 #include "rtpro/render/film.h"
 #include "rtpro/render/progressive_film.h"
+#include "rtpro/render/render_observer.h"
+#include "rtpro/render/tile_executor.h"
 #include "rtpro/render/tile_renderer.h"
 #include "rtpro/render/tiles.h"
 #include "rtpro/scene/render_scene.h"
@@ -16,7 +18,6 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -37,25 +38,15 @@ struct RenderOptions {
   // Threshold 0: every pixel takes every pass. Else passes stop for pixels that converged, and the
   // render when all have. Not with a tile_executor (another process has no film to decide from).
   AdaptiveSampling adaptive;
-  // Called after each finished work item (from worker threads) with items done and the grid's total.
-  std::function<void(std::size_t, std::size_t)> on_tile_done;
-  // Live previews: called with the image (full camera size) and the region that changed in it,
-  // after each tile of the first pass (its pixels so far) and after each merged pass (the whole
-  // region: the passes so far). Resolving the image costs a pass over the film.
-  std::function<void(const Image&, const PixelRegion&)> on_pass_image;
-  // Called after each merged pass with its number and the film (a journal compacts itself).
-  std::function<void(int, const ProgressiveFilm&)> on_pass_merged;
+  // Told of each finished work item, merged pass and preview image (render_observer.h), in order.
+  std::vector<RenderObserver*> observers;
   // Work items of this grid rendered before (read back from a resume journal, cumulative ones
   // first): they go into the film as they are and only the other items are rendered. Items that
   // do not fit together (cumulative items of different passes, or not of every tile) are all
   // ignored.
   std::span<const TileResult> journal_items;
-  // Called (from worker threads) with each newly rendered work item before it goes into the film.
-  std::function<void(const TileResult&)> on_tile_result;
-  // Renders the work items `source` hands out into `sink`; unset, this process's workers do
-  // (render_tiles), one pass at a time. A distributed render shares them with other processes, all
-  // passes in one go.
-  std::function<void(const TileRenderer&, const TileGrid&, TileSource&, TileSink&)> tile_executor;
+  // Renders the work items (tile_executor.h); none: this process's workers, one pass at a time.
+  TileExecutor* tile_executor = nullptr;
   // The scene's image textures, opened (open_textures); required when it has any.
   const TextureLookup* textures = nullptr;
   // The scene's environment, built from its image; required when it has one.

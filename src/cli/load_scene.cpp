@@ -1,0 +1,23 @@
+#include "load_scene.h"
+
+#include "pixel_region_option.h"
+#include "rtpro/core/memory_budget.h"
+
+namespace rtpro::cli {
+
+LoadedScene load_scene(const SceneLoad& load, Log* log) {
+  LoadedScene loaded;
+  loaded.description = parse_with_overrides(load.file, load.overrides);
+  const CameraDesc& camera = loaded.description.camera;
+  check_region_fits(load.region, load.region_text, camera.width, camera.height);
+  // Refused before anything large is allocated: image buffers, flattened instances, meshes.
+  loaded.cost = estimate_render_cost(loaded.description, load.extra_channels);
+  check_render_cost(loaded.cost, load.memory.bytes, load.memory.source, load.file);
+  if (log)
+    log->verbose("estimated memory: " + format_bytes(loaded.cost.total_bytes) + " of a budget of " +
+                 format_bytes(load.memory.bytes));
+  loaded.scene = build_render_scene(loaded.description, &loaded.report);
+  return loaded;
+}
+
+}  // namespace rtpro::cli
