@@ -14,7 +14,6 @@ namespace rtpro {
 namespace image_layer_test {
 
 using test::render_args;
-using test::rtpro_command;
 using test::rtpro_executable;
 using test::run_command;
 
@@ -48,12 +47,7 @@ TEST(ImageLayer, OnlyReadingOrWritingAnImageLoadsOpenImageIo) {
 // in the scene must still be reported in full, and not wait for that load.
 TEST(ImageLayer, SceneErrorsDuringABackgroundLoadAreReportedInFull) {
   const auto scene = test::write_file("scene.yaml", kTinyScene + "  - {type: mesh, file: missing_mesh.obj}\n");
-  std::string out;
-  EXPECT_EQ(run_command(rtpro_executable().string() + " render " + scene.string() + " -o " +
-                            (scene.parent_path() / "x.tif").string(),
-                        &out),
-            2);
-  EXPECT_NE(out.find("missing_mesh.obj"), std::string::npos) << out;
+  test::expect_rtpro_answer(render_args(scene, scene.parent_path() / "x.tif"), 2, "missing_mesh.obj");
   EXPECT_FALSE(std::filesystem::exists(scene.parent_path() / "x.tif"));
 }
 

@@ -10,8 +10,6 @@ namespace rtpro {
 namespace scene_variables_test {
 
 using test::expect_rtpro_answer;
-using test::rtpro_command;
-using test::run_command;
 using test::run_rtpro;
 
 nlohmann::json info(const std::string& args) { return nlohmann::json::parse(run_rtpro("info --json " + args, 0)); }

@@ -13,8 +13,6 @@ namespace texture_memory_test {
 
 using test::expect_rtpro_answer;
 using test::render_args;
-using test::rtpro_command;
-using test::run_command;
 using test::run_rtpro;
 
 TEST(TextureMemory, ATextureOverMaxMemoryIsRefusedBeforeItIsDecoded) {

@@ -15,8 +15,6 @@ namespace usage_test {
 
 using test::expect_rtpro_answer;
 using test::render_args;
-using test::rtpro_command;
-using test::run_command;
 using test::run_rtpro;
 
 const std::string kScene = test::sphere_on_floor_scene();
