@@ -12,12 +12,24 @@
 
 namespace rtpro::test {
 
+Image uniform_image(int width, int height, float value) {
+  Image image(width, height);
+  std::fill(image.data.begin(), image.data.end(), value);
+  return image;
+}
+
 Image gradient_image(int width, int height) {
   Image image(width, height);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
       for (int c = 0; c < 3; ++c) image.at(x, y, c) = 0.1f * x + 0.01f * y + 0.3f * c;
   return image;
+}
+
+double image_sum(const Image& image) {
+  double sum = 0.0;
+  for (const float value : image.data) sum += value;
+  return sum;
 }
 
 InputError mesh_load_error(const std::filesystem::path& file) {

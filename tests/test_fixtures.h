@@ -4,11 +4,19 @@
 #include "rtpro/core/fp_env.h"
 #include "rtpro/image/image.h"
 
+#include <gtest/gtest.h>
 #include <xmmintrin.h>
 
 #include <filesystem>
+#include <string>
 
 namespace rtpro::test {
+
+// The sum of every value of every pixel of `image`: positive for a render that is not black.
+double image_sum(const Image& image);
+
+// An RGB image whose every value is `value`.
+Image uniform_image(int width, int height, float value);
 
 // An RGB image whose every pixel and channel differs: 0.1·x + 0.01·y + 0.3·c.
 Image gradient_image(int width, int height);
@@ -23,6 +31,18 @@ void expect_same_pixels(const std::filesystem::path& reference, const std::files
 // Records a test failure unless `actual` has `expected`'s size and each of its channels, found by
 // name (EXR stores channels sorted by name), with the same floats, bit for bit.
 void expect_same_channels(const Image& expected, const Image& actual);
+
+// The what() of the `Error` that `action` throws; records a test failure when it throws none.
+template <typename Error, typename Action>
+std::string error_message_of(Action&& action) {
+  try {
+    action();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "the expected error was not thrown";
+  return {};
+}
 
 // Runs `check` in the floating-point mode of tracing threads (set_tracing_fp_mode: denormals flush
 // to zero), then restores this thread's own mode.

@@ -2,6 +2,7 @@
 // keeps the mean of what it renders, and says in the spp layer what each pixel took; a time limit
 // ends the render with whole passes.
 #include "rtpro/image/image_io.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,7 @@
 namespace rtpro {
 namespace adaptive_render_test {
 
+using test::render_args;
 using test::rtpro_command;
 using test::run_command;
 
@@ -43,8 +45,8 @@ Rendered render(const std::string& name, const std::string& options) {
   const auto out = scene.parent_path() / (name + ".exr");
   const auto stats = scene.parent_path() / (name + ".json");
   std::string output;
-  const int code = run_command(rtpro_command("render " + scene.string() + " -o " + out.string() + " --stats-json " +
-                                             stats.string() + " --aov spp,variance --progress never " + options),
+  const int code = run_command(rtpro_command(render_args(scene, out) + " --stats-json " + stats.string() +
+                                             " --aov spp,variance --progress never " + options),
                                &output);
   EXPECT_EQ(code, 0) << output;
   Rendered r;
@@ -160,7 +162,7 @@ TEST(AdaptiveRender, TimeLimitEndsWithTheFinishedPasses) {
 TEST(AdaptiveRender, RefusesAThresholdForAOnePassRender) {
   const auto scene = test::write_file("scene.yaml", kScene);
   std::string output;
-  EXPECT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + (scene.parent_path() / "x.exr").string() +
+  EXPECT_EQ(run_command(rtpro_command(render_args(scene, scene.parent_path() / "x.exr") +
                                       " --integrator whitted --noise-threshold 0.01"),
                         &output),
             2);

@@ -1,5 +1,6 @@
 // Runs the real `rtpro compare` binary: exit codes, report and JSON.
 #include "rtpro/image/image_io.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>

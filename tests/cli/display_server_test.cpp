@@ -1,6 +1,8 @@
 // --display-server against a small server in the suite that speaks tev's IPC protocol (as tev's
 // src/Ipc.cpp reads it) and reassembles the image from the tiles it receives.
 #include "rtpro/image/image_io.h"
+#include "sphere_on_floor.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -19,16 +21,11 @@
 namespace rtpro {
 namespace display_server_test {
 
+using test::expect_rtpro_answer;
+using test::render_args;
 using test::rtpro_command;
 using test::run_command;
-
-std::string scene_text(int width, int height) {
-  return "rtpro: 1\ncamera: {position: [0, 1, 6], look_at: [0, 0.5, 0], fov: 40, resolution: [" +
-         std::to_string(width) + ", " + std::to_string(height) +
-         "]}\nrender: {spp: 4, seed: 3}\nlights:\n  - {type: point, position: [4, 6, 5], intensity: 1}\n"
-         "world:\n  - {type: sphere, center: [0, -1000, 0], radius: 1000}\n"
-         "  - {type: sphere, center: [0, 0.7, 0], radius: 0.7}\n";
-}
+using test::run_rtpro;
 
 // Reads fields the way tev's IpcPacket::IStream does.
 class PacketReader {
@@ -181,16 +178,13 @@ class TevTestServer {
 // whole image after each pass: one pass for Whitted's stratified samples, four (1, 1, 2 and 4
 // samples) for the path integrator's Sobol samples at 8 spp; the last is the image written.
 void expect_every_pass_and_the_written_image(const std::string& options, int passes) {
-  const auto scene = test::write_file("scene.yaml", scene_text(30, 20));
+  const auto scene = test::write_file("scene.yaml", test::sphere_on_floor_scene(30, 20));
   const auto output = scene.parent_path() / "preview.exr";
   TevTestServer server;
-  std::string out;
-  ASSERT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + output.string() + " " + options +
-                                      " --tile-size 8 --progress never --display-server 127.0.0.1:" +
-                                      std::to_string(server.port())),
-                        &out),
-            0)
-      << out;
+  std::string out =
+      run_rtpro(render_args(scene, output) + " " + options +
+                    " --tile-size 8 --progress never --display-server 127.0.0.1:" + std::to_string(server.port()),
+                0);
   EXPECT_EQ(out.find("warning"), std::string::npos) << out;
   const ReceivedImage& received = server.image();
   EXPECT_EQ(received.creates, 1);
@@ -219,29 +213,22 @@ TEST(DisplayServer, AbsentViewerWarnsAndTheRenderGoesOn) {
     TevTestServer probe;  // a port that was free a moment ago, and is closed again
     port = probe.port();
   }
-  const auto scene = test::write_file("scene.yaml", scene_text(16, 12));
+  const auto scene = test::write_file("scene.yaml", test::sphere_on_floor_scene(16, 12));
   const auto output = scene.parent_path() / "alone.exr";
-  std::string out;
-  ASSERT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + output.string() + " --progress never" +
-                                      " --display-server 127.0.0.1:" + std::to_string(port)),
-                        &out),
-            0)
-      << out;
-  EXPECT_NE(out.find("no live preview: cannot reach the display server at 127.0.0.1:"), std::string::npos) << out;
+  expect_rtpro_answer(
+      render_args(scene, output) + " --progress never" + " --display-server 127.0.0.1:" + std::to_string(port), 0,
+      "no live preview: cannot reach the display server at 127.0.0.1:");
   EXPECT_TRUE(std::filesystem::exists(output));
 }
 
 TEST(DisplayServer, ViewerThatGoesAwayWarnsOnceAndTheRenderGoesOn) {
-  const auto scene = test::write_file("scene.yaml", scene_text(160, 120));
+  const auto scene = test::write_file("scene.yaml", test::sphere_on_floor_scene(160, 120));
   const auto output = scene.parent_path() / "gone.exr";
   TevTestServer server(true);
-  std::string out;
-  ASSERT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + output.string() +
-                                      " --tile-size 4 --progress never --display-server 127.0.0.1:" +
-                                      std::to_string(server.port())),
-                        &out),
-            0)
-      << out;
+  std::string out =
+      run_rtpro(render_args(scene, output) +
+                    " --tile-size 4 --progress never --display-server 127.0.0.1:" + std::to_string(server.port()),
+                0);
   const std::string warning = "live preview stopped: the display server at 127.0.0.1:";
   EXPECT_NE(out.find(warning), std::string::npos) << out;
   EXPECT_EQ(out.find(warning), out.rfind(warning)) << out;
@@ -276,22 +263,20 @@ class SilentTevServer {
 // preview must cost tiles of the preview, not render time: 1.5 MB of tiles and 1.5 MB for each of
 // the 4 passes' images fill the socket's buffers, and the render still ends near its time alone.
 TEST(DisplayServer, ViewerThatNeverReadsDoesNotHoldTheRender) {
-  const auto scene = test::write_file("scene.yaml", scene_text(360, 360));
+  const auto scene = test::write_file("scene.yaml", test::sphere_on_floor_scene(360, 360));
   const auto dir = scene.parent_path();
   const std::string args = " --integrator path --spp 8 --tile-size 16 --progress never";
   using Clock = std::chrono::steady_clock;
   auto start = Clock::now();
-  ASSERT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + (dir / "alone.exr").string() + args)), 0);
+  ASSERT_EQ(run_command(rtpro_command(render_args(scene, dir / "alone.exr") + args)), 0);
   const double alone = std::chrono::duration<double>(Clock::now() - start).count();
 
   SilentTevServer server;
   std::string out;
   start = Clock::now();
-  ASSERT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + (dir / "previewed.exr").string() + args +
-                                      " --display-server 127.0.0.1:" + std::to_string(server.port())),
-                        &out),
-            0)
-      << out;
+  out = run_rtpro(
+      render_args(scene, dir / "previewed.exr") + args + " --display-server 127.0.0.1:" + std::to_string(server.port()),
+      0);
   const double previewed = std::chrono::duration<double>(Clock::now() - start).count();
   EXPECT_LT(previewed, alone + 2.0) << "alone " << alone << " s, with a viewer that never reads " << previewed << " s";
   const std::string warning = "live preview stopped: the display server at 127.0.0.1:";

@@ -1,5 +1,6 @@
 // Keyframed scene values and --frames / --skip-existing, through the real binary (issue 14).
 #include "rtpro/image/image_io.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -12,6 +13,8 @@
 namespace rtpro {
 namespace frame_sequence_test {
 
+using test::expect_rtpro_answer;
+using test::render_args;
 using test::rtpro_command;
 using test::run_command;
 using test::run_rtpro;
@@ -49,25 +52,23 @@ TEST(Keyframes, InterpolateBetweenKeysAndHoldOutside) {
 TEST(Keyframes, MistakesAreErrorsAtTheirPlace) {
   const auto bad_shape = test::write_file(
       "a.yaml", std::string(kAnimated).replace(std::string(kAnimated).find("5: [2, 1, 5]"), 12, "5: [2, 1]"));
-  std::string out = run_rtpro("info " + bad_shape.string(), 2);
-  EXPECT_NE(out.find("a.yaml:3:"), std::string::npos) << out;
+  std::string out = expect_rtpro_answer("info " + bad_shape.string(), 2, "a.yaml:3:");
   EXPECT_NE(out.find("the same shape as the first"), std::string::npos) << out;
   const auto bad_mode =
       test::write_file("b.yaml", std::string(kAnimated).replace(std::string(kAnimated).find("smooth"), 6, "smoth"));
-  out = run_rtpro("info " + bad_mode.string(), 2);
-  EXPECT_NE(out.find("b.yaml:5:"), std::string::npos) << out;
+  out = expect_rtpro_answer("info " + bad_mode.string(), 2, "b.yaml:5:");
   EXPECT_NE(out.find("did you mean 'smooth'?"), std::string::npos) << out;
 }
 
 TEST(FrameSequence, EachFrameIsTheImageItRendersAlone) {
   const auto scene = test::write_file("anim.yaml", kAnimated);
   const auto dir = scene.parent_path();
-  run_rtpro("render " + scene.string() + " -o " + (dir / "seq_##.exr").string() + " --frames 1-5:2 -q", 0);
+  run_rtpro(render_args(scene, dir / "seq_##.exr", "--frames 1-5:2 -q"), 0);
   EXPECT_FALSE(std::filesystem::exists(dir / "seq_02.exr"));
   std::vector<float> previous;
   for (int frame : {1, 3, 5}) {
     const auto alone = dir / ("alone_" + std::to_string(frame) + ".exr");
-    run_rtpro("render " + scene.string() + " -o " + alone.string() + " -D frame=" + std::to_string(frame) + " -q", 0);
+    run_rtpro(render_args(scene, alone) + " -D frame=" + std::to_string(frame) + " -q", 0);
     const Image in_sequence = read_image(dir / ("seq_0" + std::to_string(frame) + ".exr"));
     const Image single = read_image(alone);
     EXPECT_EQ(in_sequence.data, single.data) << "frame " << frame;
@@ -80,8 +81,7 @@ TEST(FrameSequence, SkipExistingLeavesWrittenFramesAlone) {
   const auto scene = test::write_file("anim.yaml", kAnimated);
   const auto dir = scene.parent_path();
   std::ofstream(dir / "f_0002.exr") << "rendered by another machine";
-  run_rtpro("render " + scene.string() + " -o " + (dir / "f_####.exr").string() + " --frames 1-3 --skip-existing -q",
-            0);
+  run_rtpro(render_args(scene, dir / "f_####.exr", "--frames 1-3 --skip-existing -q"), 0);
   std::ifstream kept(dir / "f_0002.exr");
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "rendered by another machine");
   EXPECT_TRUE(std::filesystem::exists(dir / "f_0001.exr"));
@@ -94,7 +94,7 @@ TEST(FrameSequence, ProgressAndStatsNameTheFrame) {
   std::string out;
   ASSERT_EQ(run_command(
                 "{ " +
-                    rtpro_command("render " + scene.string() + " -o " + (dir / "p_#.exr").string() +
+                    rtpro_command(render_args(scene, dir / "p_#.exr") +
                                   " --frames 2-3 -q --progress json --stats-json " + (dir / "stats_#.json").string()) +
                     " > /dev/null; }",
                 &out),
@@ -109,29 +109,21 @@ TEST(FrameSequence, ProgressAndStatsNameTheFrame) {
   EXPECT_EQ(finals, (std::vector<int>{2, 3})) << out;
   EXPECT_TRUE(std::filesystem::exists(dir / "stats_2.json"));
   EXPECT_TRUE(std::filesystem::exists(dir / "stats_3.json"));
-  out = run_rtpro("render " + scene.string() + " -o " + (dir / "q_#.exr").string() + " --frames 2-3 --stats-json " +
-                      (dir / "stats.json").string(),
-                  2);
+  out =
+      run_rtpro(render_args(scene, dir / "q_#.exr") + " --frames 2-3 --stats-json " + (dir / "stats.json").string(), 2);
   EXPECT_NE(out.find("--stats-json with --frames needs a frame number pattern"), std::string::npos) << out;
 }
 
 TEST(FrameSequence, PatternAndRangeMistakesAreRefused) {
   const auto scene = test::write_file("anim.yaml", kAnimated);
   const auto dir = scene.parent_path();
-  std::string out = run_rtpro("render " + scene.string() + " -o " + (dir / "x.exr").string() + " --frames 1-3", 2);
-  EXPECT_NE(out.find("--frames needs a frame number pattern"), std::string::npos) << out;
-  out = run_rtpro("render " + scene.string() + " -o " + (dir / "x_##.exr").string(), 2);
-  EXPECT_NE(out.find("give --frames"), std::string::npos) << out;
-  out = run_rtpro("render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 5-1", 2);
-  EXPECT_NE(out.find("the first frame is after the last"), std::string::npos) << out;
-  out = run_rtpro("render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 1-3:0", 2);
-  EXPECT_NE(out.find("the step must be at least 1"), std::string::npos) << out;
-  out = run_rtpro(
-      "render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 5-5:9223372036854775807", 2);
-  EXPECT_NE(out.find("--frames '5-5:9223372036854775807': the step must be at most 99999999"), std::string::npos)
-      << out;
-  out = run_rtpro("render " + scene.string() + " -o " + (dir / "x_##.exr").string() + " --frames 1-3 -D frame=2", 2);
-  EXPECT_NE(out.find("--frames sets the frame"), std::string::npos) << out;
+  expect_rtpro_answer(render_args(scene, dir / "x.exr", "--frames 1-3"), 2, "--frames needs a frame number pattern");
+  expect_rtpro_answer(render_args(scene, dir / "x_##.exr"), 2, "give --frames");
+  expect_rtpro_answer(render_args(scene, dir / "x_##.exr", "--frames 5-1"), 2, "the first frame is after the last");
+  expect_rtpro_answer(render_args(scene, dir / "x_##.exr", "--frames 1-3:0"), 2, "the step must be at least 1");
+  expect_rtpro_answer(render_args(scene, dir / "x_##.exr", "--frames 5-5:9223372036854775807"), 2,
+                      "--frames '5-5:9223372036854775807': the step must be at most 99999999");
+  expect_rtpro_answer(render_args(scene, dir / "x_##.exr", "--frames 1-3 -D frame=2"), 2, "--frames sets the frame");
   EXPECT_FALSE(std::filesystem::exists(dir / "x_01.exr"));
 }
 
@@ -140,7 +132,7 @@ TEST(FrameSequence, ALongPatternGivesEachFrameItsOwnFile) {
   const auto scene = test::write_file("anim.yaml", kAnimated);
   const auto dir = scene.parent_path();
   const std::string hashes(40, '#');
-  run_rtpro("render " + scene.string() + " -o " + (dir / ("long_" + hashes + ".exr")).string() + " --frames 1-2 -q", 0);
+  run_rtpro(render_args(scene, dir / ("long_" + hashes + ".exr"), "--frames 1-2 -q"), 0);
   for (const char* frame : {"1", "2"})
     EXPECT_TRUE(std::filesystem::exists(dir / ("long_" + std::string(39, '0') + frame + ".exr"))) << "frame " << frame;
 }

@@ -4,6 +4,7 @@
 // it and where light sampling picks a point on it.
 #include "rtpro/image/image_io.h"
 #include "scene/gltf_test_files.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,8 @@
 
 namespace rtpro {
 namespace gltf_texture_slots_test {
+
+using test::render_args;
 
 // An 8×8 float image of one colour in the test's scratch folder (EXR: written as it is, where a
 // PNG would be encoded for display; the data slots decode their images as "Raw").
@@ -85,7 +88,7 @@ double centre_mean(const Image& image, int c) {
 
 Image render(const std::filesystem::path& scene, const std::string& options = "--spp 16") {
   const auto out = scene.parent_path() / (scene.stem().string() + ".exr");
-  test::run_rtpro("render " + scene.string() + " -o " + out.string() + " --size 24x24 -q " + options, 0);
+  test::run_rtpro(render_args(scene, out) + " --size 24x24 -q " + options, 0);
   return read_image(out);
 }
 
@@ -208,7 +211,7 @@ world:
   - {type: instance, object: emitter, transform: {translate: [0, 1, 0], rotate: {axis: [1, 0, 0], angle: 90}}}
 )");
     const auto out = dir / (std::string("floor_") + sampling + ".exr");
-    test::run_rtpro("render " + scene.string() + " -o " + out.string() + " -q", 0);
+    test::run_rtpro(render_args(scene, out, "-q"), 0);
     const Image image = read_image(out);
     // The floor only: the bottom third of the picture.
     std::array<double, 3> mean{};

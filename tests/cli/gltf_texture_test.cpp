@@ -3,6 +3,7 @@
 // as a data: URI give the same picture, and it is the textured one. Hand-made quads are in
 // gltf_texture_slots_test.cpp.
 #include "rtpro/image/image_io.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,7 @@
 // The rtpro executable loads OpenImageIO (through librtpro_image_oiio.so) only to read or write an
 // image: see rtpro/image/image_layer.h.
+#include "sphere_on_floor.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -11,17 +13,11 @@
 namespace rtpro {
 namespace image_layer_test {
 
+using test::render_args;
 using test::rtpro_executable;
 using test::run_command;
 
-const char* kTinyScene = R"(rtpro: 1
-camera: {position: [0, 1, 5], look_at: [0, 0, 0], fov: 40, resolution: [16, 12]}
-render: {spp: 1, max_depth: 2, seed: 1}
-lights:
-  - {type: point, position: [4, 6, 5], color: [1, 1, 1], intensity: 1}
-world:
-  - {type: sphere, center: [0, 0, 0], radius: 1}
-)";
+const std::string kTinyScene = test::sphere_on_floor_scene();
 
 // The dynamic loader's own report of what it loads: proof, not a timing.
 bool loads_openimageio(const std::string& arguments, int expected_exit_code) {
@@ -37,9 +33,8 @@ TEST(ImageLayer, OnlyReadingOrWritingAnImageLoadsOpenImageIo) {
   EXPECT_FALSE(loads_openimageio("--version", 0));
   EXPECT_FALSE(loads_openimageio("--help", 0));
   EXPECT_FALSE(loads_openimageio("info " + scene.string(), 0));
-  EXPECT_FALSE(loads_openimageio("render " + scene.string() + " -o " + (folder / "x.unknownformat").string(), 2));
-  EXPECT_FALSE(
-      loads_openimageio("render " + scene.string() + " -o " + (folder / "x.tif").string() + " --view nope", 2));
+  EXPECT_FALSE(loads_openimageio(render_args(scene, folder / "x.unknownformat"), 2));
+  EXPECT_FALSE(loads_openimageio(render_args(scene, folder / "x.tif", "--view nope"), 2));
   EXPECT_FALSE(loads_openimageio("render " + scene.string() + " --no-such-flag", 2));
   // An EXR is written through OpenEXR alone, a PNG through libpng alone.
   EXPECT_FALSE(loads_openimageio("render -q " + scene.string() + " -o " + (folder / "x.exr").string(), 0));
@@ -51,14 +46,8 @@ TEST(ImageLayer, OnlyReadingOrWritingAnImageLoadsOpenImageIo) {
 // The render starts loading the image layer in the background before it reads the scene; an error
 // in the scene must still be reported in full, and not wait for that load.
 TEST(ImageLayer, SceneErrorsDuringABackgroundLoadAreReportedInFull) {
-  const auto scene =
-      test::write_file("scene.yaml", std::string(kTinyScene) + "  - {type: mesh, file: missing_mesh.obj}\n");
-  std::string out;
-  EXPECT_EQ(run_command(rtpro_executable().string() + " render " + scene.string() + " -o " +
-                            (scene.parent_path() / "x.tif").string(),
-                        &out),
-            2);
-  EXPECT_NE(out.find("missing_mesh.obj"), std::string::npos) << out;
+  const auto scene = test::write_file("scene.yaml", kTinyScene + "  - {type: mesh, file: missing_mesh.obj}\n");
+  test::expect_rtpro_answer(render_args(scene, scene.parent_path() / "x.tif"), 2, "missing_mesh.obj");
   EXPECT_FALSE(std::filesystem::exists(scene.parent_path() / "x.tif"));
 }
 

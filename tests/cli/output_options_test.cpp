@@ -1,6 +1,9 @@
 // -o - with --format, --exposure, --progress json and the --ocio-display rename, through the
 // real binary (issue 14).
 #include "rtpro/image/image_io.h"
+#include "sphere_on_floor.h"
+#include "test_commands.h"
+#include "test_fixtures.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -17,19 +20,13 @@
 namespace rtpro {
 namespace output_options_test {
 
+using test::expect_rtpro_answer;
+using test::render_args;
 using test::rtpro_command;
 using test::run_command;
 using test::run_rtpro;
 
-const char* kScene = R"(rtpro: 1
-camera: {position: [0, 1, 6], look_at: [0, 0.5, 0], fov: 40, resolution: [24, 16]}
-render: {spp: 4, max_depth: 2, seed: 3}
-lights:
-  - {type: point, position: [4, 6, 5], intensity: 1}
-world:
-  - {type: sphere, center: [0, -1000, 0], radius: 1000}
-  - {type: sphere, center: [0, 0.7, 0], radius: 0.7}
-)";
+const std::string kScene = test::sphere_on_floor_scene();
 
 // Standard output to `file`, standard error to the output run_rtpro() returns.
 std::string run_to(const std::string& args, const std::filesystem::path& file, int code) {
@@ -38,21 +35,14 @@ std::string run_to(const std::string& args, const std::filesystem::path& file, i
   return out;
 }
 
-std::string file_bytes(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
 TEST(OutputOptions, StandardOutputHoldsTheSameImageAsAFile) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto dir = scene.parent_path();
-  run_rtpro("render " + scene.string() + " -o " + (dir / "file.exr").string() + " -q", 0);
+  run_rtpro(render_args(scene, dir / "file.exr", "-q"), 0);
   run_to("render " + scene.string() + " -o - --format exr -q", dir / "piped.exr", 0);
-  const Image a = read_image(dir / "file.exr"), b = read_image(dir / "piped.exr");
-  ASSERT_EQ(a.data.size(), b.data.size());
-  EXPECT_EQ(a.data, b.data);
+  test::expect_same_pixels(dir / "file.exr", dir / "piped.exr");
   run_to("render " + scene.string() + " -o - --format png -q", dir / "piped.png", 0);
-  EXPECT_EQ(file_bytes(dir / "piped.png").substr(1, 3), "PNG");
+  EXPECT_EQ(test::read_file(dir / "piped.png").substr(1, 3), "PNG");
 }
 
 TEST(OutputOptions, FormatMistakesAreRefused) {
@@ -60,16 +50,15 @@ TEST(OutputOptions, FormatMistakesAreRefused) {
   const auto dir = scene.parent_path();
   std::string out = run_to("render " + scene.string() + " -o -", dir / "x", 2);
   EXPECT_NE(out.find("needs --format"), std::string::npos) << out;
-  out = run_rtpro("render " + scene.string() + " -o " + (dir / "x.exr").string() + " --format png", 2);
-  EXPECT_NE(out.find("--format png contradicts"), std::string::npos) << out;
+  expect_rtpro_answer(render_args(scene, dir / "x.exr", "--format png"), 2, "--format png contradicts");
   EXPECT_FALSE(std::filesystem::exists(dir / "x.exr"));
 }
 
 TEST(OutputOptions, ExposureScalesTheColourByPowersOfTwo) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto dir = scene.parent_path();
-  run_rtpro("render " + scene.string() + " -o " + (dir / "e0.exr").string() + " -q --aov depth", 0);
-  run_rtpro("render " + scene.string() + " -o " + (dir / "e2.exr").string() + " -q --aov depth --exposure 2", 0);
+  run_rtpro(render_args(scene, dir / "e0.exr", "-q --aov depth"), 0);
+  run_rtpro(render_args(scene, dir / "e2.exr", "-q --aov depth --exposure 2"), 0);
   const Image base = read_image(dir / "e0.exr"), bright = read_image(dir / "e2.exr");
   ASSERT_EQ(base.channels, bright.channels);
   double sum = 0;
@@ -80,17 +69,13 @@ TEST(OutputOptions, ExposureScalesTheColourByPowersOfTwo) {
     sum += base.data[i];
   }
   EXPECT_GT(sum, 1.0);
-  const std::string out =
-      run_rtpro("render " + scene.string() + " -o " + (dir / "x.exr").string() + " --exposure 100", 2);
-  EXPECT_NE(out.find("--exposure must be"), std::string::npos) << out;
+  expect_rtpro_answer(render_args(scene, dir / "x.exr", "--exposure 100"), 2, "--exposure must be");
 }
 
 TEST(OutputOptions, JsonProgressIsOneObjectPerLine) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto dir = scene.parent_path();
-  const std::string out =
-      run_to("render " + scene.string() + " -o " + (dir / "p.exr").string() + " --tile-size 8 -q --progress json",
-             "/dev/null", 0);
+  const std::string out = run_to(render_args(scene, dir / "p.exr", "--tile-size 8 -q --progress json"), "/dev/null", 0);
   std::istringstream lines(out);
   std::string line;
   int objects = 0;
@@ -110,13 +95,11 @@ TEST(OutputOptions, JsonProgressIsOneObjectPerLine) {
 TEST(OutputOptions, OldDisplaySpellingWarns) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto dir = scene.parent_path();
-  const std::string render = "render " + scene.string() + " -o " + (dir / "d.png").string();
-  std::string out = run_rtpro(render + " --display sRGB --progress never", 0);
-  EXPECT_NE(out.find("--display is deprecated"), std::string::npos) << out;
+  const std::string render = render_args(scene, dir / "d.png");
+  std::string out = expect_rtpro_answer(render + " --display sRGB --progress never", 0, "--display is deprecated");
   out = run_rtpro(render + " --ocio-display sRGB --progress never", 0);
   EXPECT_EQ(out.find("deprecated"), std::string::npos) << out;
-  out = run_rtpro(render + " --ocio-display sRGB --display sRGB", 2);
-  EXPECT_NE(out.find("give only --ocio-display"), std::string::npos) << out;
+  expect_rtpro_answer(render + " --ocio-display sRGB --display sRGB", 2, "give only --ocio-display");
 }
 
 TEST(OutputOptions, HelpListsFormatsAndTheirEncodings) {
@@ -155,9 +138,7 @@ TEST(OutputOptions, WhatKilledRendersLeftInTmpdirIsRemovedByTheNextOne) {
   const auto dir = test::scratch_dir();
   const auto tmp = dir / "tmp";
   std::filesystem::create_directories(tmp);
-  Image texture(2, 2);
-  std::fill(texture.data.begin(), texture.data.end(), 0.5f);
-  write_image(dir / "tex.png", texture, {});
+  write_image(dir / "tex.png", test::uniform_image(2, 2, 0.5f), {});
   const auto scene =
       test::write_file("textured.yaml",
                        "rtpro: 1\ncamera: {position: [0, 1, 6], look_at: [0, 0.5, 0], resolution: [24, 16]}\n"

@@ -1,15 +1,14 @@
 // End-to-end tests of `rtpro render` and `rtpro info`, running the real binary.
 #include "rtpro/image/image_io.h"
 #include "test_fixtures.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <csignal>
-#include <cstring>
 #include <fstream>
-#include <sstream>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -17,8 +16,12 @@
 namespace rtpro {
 namespace render_command_test {
 
+using test::expect_rtpro_answer;
+using test::render_args;
+using test::rtpro_command;
 using test::rtpro_executable;
 using test::run_command;
+using test::run_rtpro;
 
 const char* kSmallScene = R"(rtpro: 1
 camera: {position: [0, 1.5, 6], look_at: [0, 0.5, 0], fov: 40, resolution: [64, 48]}
@@ -41,52 +44,35 @@ world:
   - {type: instance, object: pair, transform: {translate: [-1, 0.3, 2], rotate: {axis: [0, 1, 0], angle: 90}}}
 )";
 
-std::string rtpro_cmd(const std::string& args) { return rtpro_executable().string() + " " + args; }
-
 nlohmann::json read_json(const std::filesystem::path& file) {
   std::ifstream in(file);
   return nlohmann::json::parse(in);
 }
 
-TEST(RenderCommand, SameImageAtOneAndTwoThreads) {
+// Renders kSmallScene quietly with `options` and again with `other_options`, expects the same
+// pixels, bit for bit, and returns the first image's file.
+std::filesystem::path expect_same_image(const std::string& options, const std::string& other_options) {
   const auto scene = test::write_file("scene.yaml", kSmallScene);
-  const auto dir = scene.parent_path();
-  std::string out;
-  ASSERT_EQ(
-      run_command(rtpro_cmd("render " + scene.string() + " -o " + (dir / "t1.exr").string() + " --threads 1 -q"), &out),
-      0)
-      << out;
-  ASSERT_EQ(
-      run_command(rtpro_cmd("render " + scene.string() + " -o " + (dir / "t2.exr").string() + " --threads 2 -q"), &out),
-      0)
-      << out;
-  const Image one = read_image(dir / "t1.exr"), two = read_image(dir / "t2.exr");
-  ASSERT_EQ(one.data.size(), two.data.size());
-  EXPECT_EQ(std::memcmp(one.data.data(), two.data.data(), one.data.size() * sizeof(float)), 0);
-  float sum = 0;
-  for (float v : one.data) sum += v;
-  EXPECT_GT(sum, 10.0f);
+  const auto first = scene.parent_path() / "first.exr", second = scene.parent_path() / "second.exr";
+  run_rtpro(render_args(scene, first, "-q " + options), 0);
+  run_rtpro(render_args(scene, second, "-q " + other_options), 0);
+  test::expect_same_pixels(first, second);
+  return first;
 }
 
-TEST(RenderCommand, SameImageWithATileLargerThanTheImage) {
-  const auto scene = test::write_file("scene.yaml", kSmallScene);
-  const auto dir = scene.parent_path();
-  const std::string base = rtpro_cmd("render " + scene.string() + " -q -o ");
-  std::string out;
-  ASSERT_EQ(run_command(base + (dir / "default.exr").string(), &out), 0) << out;
-  ASSERT_EQ(run_command(base + (dir / "one_tile.exr").string() + " --tile-size 2147483647", &out), 0) << out;
-  test::expect_same_pixels(dir / "default.exr", dir / "one_tile.exr");
+TEST(RenderCommand, SameImageAtOneAndTwoThreads) {
+  const auto image = expect_same_image("--threads 1", "--threads 2");
+  EXPECT_GT(test::image_sum(read_image(image)), 10.0);
 }
+
+TEST(RenderCommand, SameImageWithATileLargerThanTheImage) { expect_same_image("", "--tile-size 2147483647"); }
 
 TEST(RenderCommand, StatsJsonParsesAndCountsAddUp) {
   const auto scene = test::write_file("scene.yaml", kSmallScene);
   const auto dir = scene.parent_path();
-  std::string out;
-  ASSERT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o " + (dir / "s.exr").string() +
-                                  " --stats --stats-json " + (dir / "stats.json").string() + " --progress never"),
-                        &out),
-            0)
-      << out;
+  const std::string out = run_rtpro(
+      render_args(scene, dir / "s.exr", "--stats --stats-json " + (dir / "stats.json").string() + " --progress never"),
+      0);
   EXPECT_NE(out.find("Mrays/s"), std::string::npos) << out;
   const nlohmann::json stats = read_json(dir / "stats.json");
   const auto& rays = stats["rays"];
@@ -105,10 +91,9 @@ TEST(RenderCommand, StatsJsonParsesAndCountsAddUp) {
 TEST(RenderCommand, RegionAndCropMatchTheFullRender) {
   const auto scene = test::write_file("scene.yaml", kSmallScene);
   const auto dir = scene.parent_path();
-  const std::string base = rtpro_cmd("render " + scene.string() + " -q -o ");
-  ASSERT_EQ(run_command(base + (dir / "full.exr").string()), 0);
-  ASSERT_EQ(run_command(base + (dir / "region.exr").string() + " --region 10,5,40,30"), 0);
-  ASSERT_EQ(run_command(base + (dir / "crop.exr").string() + " --region 10,5,40,30 --crop"), 0);
+  run_rtpro(render_args(scene, dir / "full.exr", "-q"), 0);
+  run_rtpro(render_args(scene, dir / "region.exr", "-q --region 10,5,40,30"), 0);
+  run_rtpro(render_args(scene, dir / "crop.exr", "-q --region 10,5,40,30 --crop"), 0);
   const Image full = read_image(dir / "full.exr"), region = read_image(dir / "region.exr"),
               crop = read_image(dir / "crop.exr");
   ASSERT_EQ(region.width, 64);
@@ -123,32 +108,22 @@ TEST(RenderCommand, RegionAndCropMatchTheFullRender) {
           ASSERT_EQ(crop.at(x - 10, y - 5, c), full.at(x, y, c));
         }
       }
-  std::string out;
-  EXPECT_EQ(run_command(base + (dir / "bad.exr").string() + " --region 10,5,400,30", &out), 2) << out;
-  EXPECT_EQ(run_command(base + (dir / "bad.exr").string() + " --region 1,2,3", &out), 2) << out;
+  run_rtpro(render_args(scene, dir / "bad.exr", "-q --region 10,5,400,30"), 2);
+  run_rtpro(render_args(scene, dir / "bad.exr", "-q --region 1,2,3"), 2);
 }
 
 TEST(RenderCommand, AovLayersAreWrittenWithCompositorNames) {
   const auto scene = test::write_file("scene.yaml", kSmallScene);
   const auto file = scene.parent_path() / "aov.exr";
-  std::string out;
-  ASSERT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -q -o " + file.string() +
-                                  " --aov albedo,normal,depth,object-id"),
-                        &out),
-            0)
-      << out;
+  run_rtpro(render_args(scene, file, "-q --aov albedo,normal,depth,object-id"), 0);
   const Image image = read_image(file);
   for (const char* name :
        {"R", "G", "B", "albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z", "depth.Z", "object_id.id"})
     EXPECT_NE(std::find(image.channels.begin(), image.channels.end(), name), image.channels.end()) << name;
-  EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -q -o " + file.string() + " --aov bogus"), &out), 2);
+  run_rtpro(render_args(scene, file, "-q --aov bogus"), 2);
   // A layer asked for twice is refused before the render, not when the image is written.
   const auto twice = scene.parent_path() / "twice.exr";
-  EXPECT_EQ(run_command(
-                rtpro_cmd("render " + scene.string() + " -q -o " + twice.string() + " --aov depth,albedo,depth"), &out),
-            2)
-      << out;
-  EXPECT_NE(out.find("--aov depth"), std::string::npos) << out;
+  expect_rtpro_answer(render_args(scene, twice, "-q --aov depth,albedo,depth"), 2, "--aov depth");
   EXPECT_FALSE(std::filesystem::exists(twice));
 }
 
@@ -157,19 +132,15 @@ TEST(RenderCommand, BadInputsFailCleanlyAndLeaveNoFile) {
   const auto bad_scene = test::write_file("bad.yaml",
                                           "rtpro: 1\ncamera: {position: [0, 0, 5], look_at: [0, 0, 0]}\n"
                                           "world:\n  - {type: sphere, center: [0, 0, 0], radius: -1}\n");
-  std::string out;
   const auto target = bad_scene.parent_path() / "never.png";
-  EXPECT_EQ(run_command(rtpro_cmd("render " + bad_scene.string() + " -o " + target.string()), &out), 2);
-  EXPECT_NE(out.find("bad.yaml:4:"), std::string::npos) << out;
+  expect_rtpro_answer(render_args(bad_scene, target), 2, "bad.yaml:4:");
   EXPECT_FALSE(std::filesystem::exists(target));
-  EXPECT_EQ(run_command(rtpro_cmd("render " + (dir / "missing.yaml").string() + " -o " + target.string()), &out), 2);
-  EXPECT_NE(out.find("missing.yaml"), std::string::npos) << out;
+  expect_rtpro_answer(render_args(dir / "missing.yaml", target), 2, "missing.yaml");
   const auto scene = test::write_file("scene.yaml", kSmallScene);
-  EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o " + (dir / "x.unknownformat").string()), &out), 2);
-  EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o /nonexistent-folder/x.png"), &out), 1) << out;
-  EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o " + target.string() + " --spp 0"), &out), 2);
-  EXPECT_NE(out.find("--spp 0: render.spp must be from 1 to 65536"), std::string::npos) << out;
-  EXPECT_EQ(run_command(rtpro_cmd("render " + scene.string() + " -o " + target.string() + " --no-such-flag"), &out), 2);
+  run_rtpro(render_args(scene, dir / "x.unknownformat"), 2);
+  run_rtpro(render_args(scene, "/nonexistent-folder/x.png"), 1);
+  expect_rtpro_answer(render_args(scene, target, "--spp 0"), 2, "--spp 0: render.spp must be from 1 to 65536");
+  run_rtpro(render_args(scene, target, "--no-such-flag"), 2);
   EXPECT_FALSE(std::filesystem::exists(target));
 }
 
@@ -216,15 +187,11 @@ TEST(RenderCommand, InterruptWritesPartialImageAndKeepsExistingOutput) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 130);
   EXPECT_LT(seconds, 5.0);  // generous for a loaded CI machine; the tiles in flight take well under a second
-  std::ifstream previous(output);
-  std::string text((std::istreambuf_iterator<char>(previous)), std::istreambuf_iterator<char>());
-  EXPECT_EQ(text, "a previous good image");
+  EXPECT_EQ(test::read_file(output), "a previous good image");
   const Image partial = read_image(dir / "out.partial.exr");
   EXPECT_EQ(partial.width, 1600);
   // Finished tiles hold the picture (every pixel at least the sky colour); unfinished ones are 0.
-  float sum = 0;
-  for (float v : partial.data) sum += v;
-  EXPECT_GT(sum, 0.0f);
+  EXPECT_GT(test::image_sum(partial), 0.0);
   float last_row = 0;
   for (int x = 0; x < partial.width; ++x) last_row += partial.at(x, partial.height - 1, 0);
   EXPECT_EQ(last_row, 0.0f);
@@ -233,7 +200,7 @@ TEST(RenderCommand, InterruptWritesPartialImageAndKeepsExistingOutput) {
 TEST(InfoCommand, CountsMatchTheScene) {
   const auto scene = test::write_file("scene.yaml", kSmallScene);
   std::string out;
-  ASSERT_EQ(run_command(rtpro_cmd("info " + scene.string() + " --json") + " 2>/dev/null", &out), 0) << out;
+  ASSERT_EQ(run_command(rtpro_command("info " + scene.string() + " --json") + " 2>/dev/null", &out), 0) << out;
   const nlohmann::json info = nlohmann::json::parse(out);
   EXPECT_EQ(info["spheres"]["stored"].get<int>(), 3 + 2);
   EXPECT_EQ(info["spheres"]["rendered"].get<int>(), 3 + 2 * 2);
@@ -242,7 +209,7 @@ TEST(InfoCommand, CountsMatchTheScene) {
   EXPECT_EQ(info["lights"]["point"].get<int>(), 1);
   EXPECT_EQ(info["lights"]["directional"].get<int>(), 1);
   EXPECT_EQ(info["triangles"]["rendered"].get<int>(), 0);
-  ASSERT_EQ(run_command(rtpro_cmd("info " + scene.string()), &out), 0);
+  out = run_rtpro("info " + scene.string(), 0);
   EXPECT_NE(out.find("after instancing"), std::string::npos);
 }
 

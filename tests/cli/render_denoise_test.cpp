@@ -1,6 +1,7 @@
 // `rtpro render --denoise` through the real binary: the denoised colour, the noisy one kept as a
 // layer and equal to the render without --denoise, the layers the denoiser read, and PNG output.
 #include "rtpro/image/image_io.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,8 @@
 
 namespace rtpro {
 namespace render_denoise_test {
+
+using test::render_args;
 
 const char* kScene = R"(rtpro: 1
 camera: {position: [0, 1, 4], look_at: [0, 0.4, 0], fov: 40, resolution: [48, 32]}
@@ -33,9 +36,8 @@ int channel(const Image& image, const std::string& name) {
 TEST(RenderDenoise, KeepsTheNoisyColourAndTheLayersAndSmoothsTheColour) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto dir = scene.parent_path();
-  test::run_rtpro("render " + scene.string() + " -o " + (dir / "noisy.exr").string() + " -q --no-journal", 0);
-  test::run_rtpro("render " + scene.string() + " -o " + (dir / "denoised.exr").string() + " -q --no-journal --denoise",
-                  0);
+  test::run_rtpro(render_args(scene, dir / "noisy.exr", "-q --no-journal"), 0);
+  test::run_rtpro(render_args(scene, dir / "denoised.exr", "-q --no-journal --denoise"), 0);
   const Image noisy = read_image(dir / "noisy.exr"), denoised = read_image(dir / "denoised.exr");
   for (const char* name :
        {"R", "G", "B", "noisy.R", "noisy.G", "noisy.B", "albedo.R", "N.X", "depth.Z", "half_a.R", "half_b.B"})
@@ -61,7 +63,7 @@ TEST(RenderDenoise, KeepsTheNoisyColourAndTheLayersAndSmoothsTheColour) {
 TEST(RenderDenoise, WritesADisplayImageToo) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto png = scene.parent_path() / "denoised.png";
-  test::run_rtpro("render " + scene.string() + " -o " + png.string() + " -q --no-journal --denoise", 0);
+  test::run_rtpro(render_args(scene, png, "-q --no-journal --denoise"), 0);
   const Image image = read_image(png);
   EXPECT_EQ(image.width, 48);
   EXPECT_EQ(image.channel_count(), 3);

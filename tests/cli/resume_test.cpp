@@ -2,6 +2,7 @@
 // the image of an uninterrupted render, bit for bit; a journal of another job is refused.
 #include "rtpro/image/image_io.h"
 #include "test_fixtures.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -18,9 +19,13 @@
 namespace rtpro {
 namespace resume_test {
 
+using test::expect_rtpro_answer;
 using test::expect_same_pixels;
+using test::render_args;
+using test::rtpro_command;
 using test::rtpro_executable;
 using test::run_command;
+using test::run_rtpro;
 
 const char* kScene = R"(rtpro: 1
 camera: {position: [0, 1.5, 6], look_at: [0, 0.5, 0], fov: 40, resolution: [96, 64]}
@@ -38,19 +43,28 @@ world:
 
 // 6 × 4 tiles of 16 × 16 pixels; beauty plus the albedo AOV, so AOVs are journaled too. A record
 // (tile_codec.h) is an 80-byte header, a pass's sums of each pixel (7 floats: colour, sample count
-// and albedo, pixel_sums.h) and a checksum. Whitted's stratified samples render in one pass; the path integrator's Sobol samples
-// in 20 (1, 1, 2, 4, 8, then 16 at a time), and the journal is compacted every few passes.
-const std::string kArgs = " --tile-size 16 --aov albedo --spp 256";
+// and albedo, pixel_sums.h) and a checksum. Whitted's stratified samples render in one pass; the
+// path integrator's Sobol samples in 20 (1, 1, 2, 4, 8, then 16 at a time), and the journal is
+// compacted every few passes.
+const std::vector<std::string> kOptions = {"--tile-size", "16", "--aov", "albedo", "--spp", "256"};
 constexpr std::size_t kTiles = 24;
 constexpr std::size_t kRecordBytes = 80 + 16 * 16 * 7 * 4 + 8;
 
-std::string render_cmd(const std::filesystem::path& scene, const std::filesystem::path& out, const std::string& extra) {
-  return rtpro_executable().string() + " render " + scene.string() + " -o " + out.string() + kArgs + " " + extra;
+// The arguments of this test's render of `scene` into `out`, with `extra` options after kOptions.
+std::string render_of(const std::filesystem::path& scene, const std::filesystem::path& out,
+                      const std::string& extra = "") {
+  std::string options;
+  for (const std::string& option : kOptions) options += option + " ";
+  return render_args(scene, out, options + extra);
 }
 
-std::string quiet_render_cmd(const std::filesystem::path& scene, const std::filesystem::path& out,
-                             const std::string& extra) {
-  return render_cmd(scene, out, extra + " -q");
+// Starts a single-threaded, quiet render of `scene` into `out` (`path`: with --integrator path).
+pid_t start_render(const std::filesystem::path& scene, const std::filesystem::path& out, bool path = false) {
+  std::vector<std::string> argv = {
+      rtpro_executable().string(), "render", scene.string(), "-o", out.string(), "--threads", "1", "-q"};
+  argv.insert(argv.end(), kOptions.begin(), kOptions.end());
+  if (path) argv.insert(argv.end(), {"--integrator", "path"});
+  return test::start_program(argv);
 }
 
 std::uintmax_t file_size_or_zero(const std::filesystem::path& file) {
@@ -75,18 +89,8 @@ std::size_t recorded_tiles(const std::filesystem::path& journal) {
 void kill_after(const std::filesystem::path& scene, const std::filesystem::path& out, std::size_t tiles,
                 bool path = false, int compactions = 0) {
   const std::filesystem::path journal = out.string() + ".rtpro-journal";
-  const pid_t pid = fork();
+  const pid_t pid = start_render(scene, out, path);
   ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    const std::string exe = rtpro_executable().string();
-    if (path)
-      execl(exe.c_str(), exe.c_str(), "render", scene.c_str(), "-o", out.c_str(), "--threads", "1", "--tile-size", "16",
-            "--aov", "albedo", "-q", "--spp", "256", "--integrator", "path", static_cast<char*>(nullptr));
-    else
-      execl(exe.c_str(), exe.c_str(), "render", scene.c_str(), "-o", out.c_str(), "--threads", "1", "--tile-size", "16",
-            "--aov", "albedo", "-q", "--spp", "256", static_cast<char*>(nullptr));
-    _exit(127);
-  }
   int status = 0;
   std::size_t last = 0;
   int shrank = 0;
@@ -108,7 +112,7 @@ TEST(Resume, KilledRenderResumesBitIdenticallyAtEveryMoment) {
   const auto dir = test::scratch_dir();
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto whole = dir / "whole.exr";
-  ASSERT_EQ(run_command(quiet_render_cmd(scene, whole, "")), 0);
+  run_rtpro(render_of(scene, whole, "-q"), 0);
   EXPECT_FALSE(std::filesystem::exists(whole.string() + ".rtpro-journal")) << "a finished render keeps no journal";
 
   for (std::size_t tiles : {std::size_t(0), std::size_t(5), kTiles - 3}) {
@@ -116,13 +120,11 @@ TEST(Resume, KilledRenderResumesBitIdenticallyAtEveryMoment) {
     const auto out = dir / ("resumed" + std::to_string(tiles) + ".exr");
     std::ofstream(out) << "a previous good image";
     kill_after(scene, out, tiles);
-    std::ifstream previous(out);
-    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(previous), {}), "a previous good image");
+    EXPECT_EQ(test::read_file(out), "a previous good image");
     ASSERT_TRUE(std::filesystem::exists(out.string() + ".rtpro-journal"));
 
     // Resumed with another thread count: only the pixels' own inputs matter.
-    std::string output;
-    ASSERT_EQ(run_command(quiet_render_cmd(scene, out, "--resume --threads 2"), &output), 0) << output;
+    run_rtpro(render_of(scene, out, "--resume --threads 2 -q"), 0);
     expect_same_pixels(whole, out);
     EXPECT_FALSE(std::filesystem::exists(out.string() + ".rtpro-journal"));
   }
@@ -134,7 +136,7 @@ TEST(Resume, KilledProgressiveRenderResumesBitIdenticallyBetweenAndWithinPasses)
   const auto dir = test::scratch_dir();
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto whole = dir / "whole.exr";
-  ASSERT_EQ(run_command(quiet_render_cmd(scene, whole, "--integrator path")), 0);
+  run_rtpro(render_of(scene, whole, "--integrator path -q"), 0);
   // A compaction leaves one cumulative record per tile (24) and comes once a journal holds about 48.
   for (const auto& [records, compactions] : {std::pair{10, 0}, std::pair{30, 0}, std::pair{30, 1}, std::pair{40, 3}}) {
     SCOPED_TRACE("killed when the journal held " + std::to_string(records) + " records after " +
@@ -142,9 +144,7 @@ TEST(Resume, KilledProgressiveRenderResumesBitIdenticallyBetweenAndWithinPasses)
     const auto out = dir / ("resumed" + std::to_string(records) + "_" + std::to_string(compactions) + ".exr");
     kill_after(scene, out, static_cast<std::size_t>(records), true, compactions);
     ASSERT_TRUE(std::filesystem::exists(out.string() + ".rtpro-journal"));
-    std::string output;
-    ASSERT_EQ(run_command(quiet_render_cmd(scene, out, "--integrator path --resume --threads 2"), &output), 0)
-        << output;
+    run_rtpro(render_of(scene, out, "--integrator path --resume --threads 2 -q"), 0);
     expect_same_pixels(whole, out);
   }
 }
@@ -153,7 +153,7 @@ TEST(Resume, CorruptRecordIsRenderedAgainAndTheImageStaysExact) {
   const auto dir = test::scratch_dir();
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto whole = dir / "whole.exr", out = dir / "out.exr";
-  ASSERT_EQ(run_command(quiet_render_cmd(scene, whole, "")), 0);
+  run_rtpro(render_of(scene, whole, "-q"), 0);
   kill_after(scene, out, 8);
   const std::filesystem::path journal = out.string() + ".rtpro-journal";
   {
@@ -168,9 +168,7 @@ TEST(Resume, CorruptRecordIsRenderedAgainAndTheImageStaysExact) {
     f.seekp(size - static_cast<long>(kRecordBytes) * 2 + 200);
     f.write(&byte, 1);
   }
-  std::string output;
-  ASSERT_EQ(run_command(render_cmd(scene, out, "--resume"), &output), 0) << output;
-  EXPECT_NE(output.find("1 damaged records dropped"), std::string::npos) << output;
+  expect_rtpro_answer(render_of(scene, out, "--resume"), 0, "1 damaged records dropped");
   expect_same_pixels(whole, out);
 }
 
@@ -181,32 +179,25 @@ TEST(Resume, JournalOfAnotherJobIsRefusedWithWhatDiffers) {
   kill_after(scene, out, 2);
   const std::filesystem::path journal = out.string() + ".rtpro-journal";
 
-  std::string output;
-  EXPECT_EQ(run_command(render_cmd(scene, out, "--set render.spp=64 --resume"), &output), 2);
-  EXPECT_NE(output.find(journal.string()), std::string::npos) << output;
+  std::string output = expect_rtpro_answer(render_of(scene, out, "--set render.spp=64 --resume"), 2, journal.string());
   EXPECT_NE(output.find("spp: 64 here, 256 in the journal"), std::string::npos) << output;
 
   std::string changed = kScene;
   changed.replace(changed.find("intensity: 1"), 12, "intensity: 2");
   test::write_file("scene.yaml", changed);
-  EXPECT_EQ(run_command(render_cmd(scene, out, "--resume"), &output), 2);
-  EXPECT_NE(output.find("scene " + scene.string() + ": "), std::string::npos) << output;
+  expect_rtpro_answer(render_of(scene, out, "--resume"), 2, "scene " + scene.string() + ": ");
   EXPECT_FALSE(std::filesystem::exists(out)) << "a refused resume writes no image";
   EXPECT_TRUE(std::filesystem::exists(journal)) << "and keeps the journal";
 
   std::ofstream(journal, std::ios::trunc) << "not a journal";
-  EXPECT_EQ(run_command(render_cmd(scene, out, "--resume"), &output), 2);
-  EXPECT_NE(output.find("not an intact rtpro resume journal"), std::string::npos) << output;
+  expect_rtpro_answer(render_of(scene, out, "--resume"), 2, "not an intact rtpro resume journal");
 }
 
 TEST(Resume, WithoutAJournalRendersEverythingAndNoJournalKeepsNone) {
   const auto dir = test::scratch_dir();
   const auto scene = test::write_file("scene.yaml", kScene);
-  std::string output;
-  EXPECT_EQ(run_command(render_cmd(scene, dir / "a.exr", "--resume"), &output), 0) << output;
-  EXPECT_NE(output.find("no journal"), std::string::npos) << output;
-  EXPECT_EQ(run_command(render_cmd(scene, dir / "b.exr", "--no-journal --resume"), &output), 2);
-  EXPECT_NE(output.find("--no-journal"), std::string::npos) << output;
+  expect_rtpro_answer(render_of(scene, dir / "a.exr", "--resume"), 0, "no journal");
+  expect_rtpro_answer(render_of(scene, dir / "b.exr", "--no-journal --resume"), 2, "--no-journal");
 }
 
 // Issue 28: a FIFO, device, directory or link at OUT.rtpro-journal is refused with exit 2 and a
@@ -221,19 +212,16 @@ TEST(Resume, FifoOrLinkAtTheJournalIsRefusedWithoutBlockingAndLeftInPlace) {
     SCOPED_TRACE(extra);
     std::string output;
     // `timeout`: a render blocked on the FIFO fails the test instead of hanging it.
-    EXPECT_EQ(run_command("timeout 60 " + render_cmd(scene, out, extra), &output), 2) << output;
+    EXPECT_EQ(run_command("timeout 60 " + rtpro_command(render_of(scene, out, extra)), &output), 2) << output;
     EXPECT_NE(output.find(journal.string() + " is a FIFO"), std::string::npos) << output;
     EXPECT_EQ(std::filesystem::symlink_status(journal).type(), std::filesystem::file_type::fifo);
   }
   std::filesystem::remove(journal);
   const auto target = test::write_file("precious.txt", "precious");
   std::filesystem::create_symlink(target, journal);
-  std::string output;
-  EXPECT_EQ(run_command(render_cmd(scene, out, ""), &output), 2) << output;
-  EXPECT_NE(output.find(journal.string() + " is a symbolic link"), std::string::npos) << output;
+  expect_rtpro_answer(render_of(scene, out), 2, journal.string() + " is a symbolic link");
   EXPECT_TRUE(std::filesystem::is_symlink(journal));
-  std::ifstream kept(target);
-  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "precious");
+  EXPECT_EQ(test::read_file(target), "precious");
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
@@ -244,29 +232,21 @@ TEST(Resume, SecondRenderOfTheSameOutputIsRefusedWhileTheFirstRuns) {
   const auto dir = test::scratch_dir();
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto whole = dir / "whole.exr", out = dir / "out.exr";
-  ASSERT_EQ(run_command(quiet_render_cmd(scene, whole, "")), 0);
+  run_rtpro(render_of(scene, whole, "-q"), 0);
   const std::filesystem::path journal = out.string() + ".rtpro-journal";
-  const pid_t first = fork();
+  const pid_t first = start_render(scene, out);
   ASSERT_GE(first, 0);
-  if (first == 0) {
-    const std::string exe = rtpro_executable().string();
-    execl(exe.c_str(), exe.c_str(), "render", scene.c_str(), "-o", out.c_str(), "--threads", "1", "--tile-size", "16",
-          "--aov", "albedo", "-q", "--spp", "256", static_cast<char*>(nullptr));
-    _exit(127);
-  }
   int status = 0;
   while (waitpid(first, &status, WNOHANG) == 0 && recorded_tiles(journal) < 2)
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   ASSERT_EQ(waitpid(first, &status, WNOHANG), 0) << "the first render ended before the second started";
-  std::string output;
-  EXPECT_EQ(run_command(render_cmd(scene, out, ""), &output), 2) << output;
-  EXPECT_NE(output.find("another render of the same output owns this resume journal"), std::string::npos) << output;
-  EXPECT_EQ(run_command(render_cmd(scene, out, "--resume"), &output), 2) << output;
+  expect_rtpro_answer(render_of(scene, out), 2, "another render of the same output owns this resume journal");
+  run_rtpro(render_of(scene, out, "--resume"), 2);
   kill(first, SIGKILL);
   waitpid(first, &status, 0);
   ASSERT_TRUE(WIFSIGNALED(status)) << "the first render finished before it could be killed";
   ASSERT_GE(recorded_tiles(journal), 2u) << "the first render's journal was lost";
-  ASSERT_EQ(run_command(quiet_render_cmd(scene, out, "--resume --threads 2"), &output), 0) << output;
+  run_rtpro(render_of(scene, out, "--resume --threads 2 -q"), 0);
   expect_same_pixels(whole, out);
   EXPECT_FALSE(std::filesystem::exists(journal));
   EXPECT_FALSE(std::filesystem::exists(journal.string() + ".lock"));

@@ -1,4 +1,5 @@
 // Scene variables (-D NAME=VALUE, `variables:`, $name) and includes, through the real binary.
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -8,8 +9,7 @@
 namespace rtpro {
 namespace scene_variables_test {
 
-using test::rtpro_command;
-using test::run_command;
+using test::expect_rtpro_answer;
 using test::run_rtpro;
 
 nlohmann::json info(const std::string& args) { return nlohmann::json::parse(run_rtpro("info --json " + args, 0)); }
@@ -42,8 +42,7 @@ TEST(SceneVariables, MistakesAreErrorsAtTheirPlace) {
   const auto scene = test::write_file("v.yaml", std::string("rtpro: 1\n") + kCamera +
                                                     "variables: {radius: 1}\n"
                                                     "world: [{type: sphere, center: [0, 0, 0], radius: $raduis}]\n");
-  std::string out = run_rtpro("info " + scene.string(), 2);
-  EXPECT_NE(out.find("v.yaml:4:"), std::string::npos) << out;
+  std::string out = expect_rtpro_answer("info " + scene.string(), 2, "v.yaml:4:");
   EXPECT_NE(out.find("undefined variable '$raduis'; did you mean '$radius'?"), std::string::npos) << out;
   const auto good = test::write_file("g.yaml", std::string("rtpro: 1\n") + kCamera +
                                                    "variables: {radius: 1}\n"
@@ -51,10 +50,8 @@ TEST(SceneVariables, MistakesAreErrorsAtTheirPlace) {
   out = run_rtpro("info " + good.string() + " -D radiu=2", 2);
   EXPECT_NE(out.find("-D radiu=2: the scene uses no variable '$radiu'; did you mean 'radius'?"), std::string::npos)
       << out;
-  out = run_rtpro("info " + good.string() + " -D radius=big", 2);
-  EXPECT_NE(out.find("-D radius=big: sphere.radius: expected a number"), std::string::npos) << out;
-  out = run_rtpro("info " + good.string() + " -D 2x=1", 2);
-  EXPECT_NE(out.find("-D 2x=1: variables: '2x' is not a name"), std::string::npos) << out;
+  expect_rtpro_answer("info " + good.string() + " -D radius=big", 2, "-D radius=big: sphere.radius: expected a number");
+  expect_rtpro_answer("info " + good.string() + " -D 2x=1", 2, "-D 2x=1: variables: '2x' is not a name");
 }
 
 TEST(SceneIncludes, MergeMappingsAndSpliceLists) {
@@ -88,21 +85,17 @@ TEST(SceneIncludes, CyclesMissingFilesAndErrorsNameTheFile) {
   const auto dir = test::scratch_dir();
   test::write_file("a.yaml", std::string("rtpro: 1\n") + kCamera + "world: [{include: b.yaml}]\n");
   test::write_file("b.yaml", "- {include: a.yaml}\n");
-  std::string out = run_rtpro("info " + (dir / "a.yaml").string(), 2);
-  EXPECT_NE(out.find("b.yaml:1:13: include cycle: a.yaml -> b.yaml -> a.yaml"), std::string::npos) << out;
+  expect_rtpro_answer("info " + (dir / "a.yaml").string(), 2, "b.yaml:1:13: include cycle: a.yaml -> b.yaml -> a.yaml");
 
   test::write_file("c.yaml", std::string("rtpro: 1\n") + kCamera + "world: [{include: missing.yaml}]\n");
-  out = run_rtpro("info " + (dir / "c.yaml").string(), 2);
-  EXPECT_NE(out.find("c.yaml:3:19: cannot include 'missing.yaml'"), std::string::npos) << out;
+  expect_rtpro_answer("info " + (dir / "c.yaml").string(), 2, "c.yaml:3:19: cannot include 'missing.yaml'");
 
   test::write_file("bad.yaml", "- {type: sphere, center: [0, 0, 0], radius: -1}\n");
   test::write_file("d.yaml", std::string("rtpro: 1\n") + kCamera + "world: [{include: bad.yaml}]\n");
-  out = run_rtpro("info " + (dir / "d.yaml").string(), 2);
-  EXPECT_NE(out.find("bad.yaml:1:"), std::string::npos) << out;
+  expect_rtpro_answer("info " + (dir / "d.yaml").string(), 2, "bad.yaml:1:");
 
   test::write_file("self.yaml", "include: self.yaml\n");
-  out = run_rtpro("info " + (dir / "self.yaml").string(), 2);
-  EXPECT_NE(out.find("include cycle: self.yaml -> self.yaml"), std::string::npos) << out;
+  expect_rtpro_answer("info " + (dir / "self.yaml").string(), 2, "include cycle: self.yaml -> self.yaml");
 }
 
 TEST(SceneIncludes, DepthIsLimited) {
@@ -110,8 +103,7 @@ TEST(SceneIncludes, DepthIsLimited) {
   for (int i = 0; i < 20; ++i)
     test::write_file("d" + std::to_string(i) + ".yaml", "include: d" + std::to_string(i + 1) + ".yaml\n");
   test::write_file("d20.yaml", std::string("rtpro: 1\n") + kCamera);
-  const std::string out = run_rtpro("info " + (dir / "d0.yaml").string(), 2);
-  EXPECT_NE(out.find("includes nested deeper than 16 files"), std::string::npos) << out;
+  expect_rtpro_answer("info " + (dir / "d0.yaml").string(), 2, "includes nested deeper than 16 files");
 }
 
 }  // namespace scene_variables_test

@@ -1,5 +1,6 @@
 // `rtpro completion bash` and `rtpro manpage`: generated from the option definitions, so each
 // lists every option `--help` does, and the completion really completes in bash.
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>

@@ -3,6 +3,7 @@
 // the refusal names the image and where the scene named it.
 #include "rtpro/image/image_io.h"
 #include "test_fixtures.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -10,8 +11,9 @@
 namespace rtpro {
 namespace texture_memory_test {
 
-using test::rtpro_command;
-using test::run_command;
+using test::expect_rtpro_answer;
+using test::render_args;
+using test::run_rtpro;
 
 TEST(TextureMemory, ATextureOverMaxMemoryIsRefusedBeforeItIsDecoded) {
   const auto dir = test::scratch_dir();
@@ -24,22 +26,13 @@ materials:
 lights: [{type: point, position: [2, 2, 4], intensity: 1}]
 world: [{type: sphere, material: textured}]
 )");
-  std::string out;
-  EXPECT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + (dir / "a.png").string() +
-                                      " --progress never --max-memory 128"),
-                        &out),
-            2)
-      << out;
-  EXPECT_NE(out.find("big.png"), std::string::npos) << out;
+  std::string out =
+      expect_rtpro_answer(render_args(scene, dir / "a.png") + " --progress never --max-memory 128", 2, "big.png");
   EXPECT_NE(out.find("with its linear and mip-mapped texture copies"), std::string::npos) << out;
   // And where the scene named it: line 4, the material's texture key.
   EXPECT_NE(out.find("(the texture named at " + scene.string() + ":4:"), std::string::npos) << out;
   EXPECT_FALSE(std::filesystem::exists(dir / "a.png"));
-  ASSERT_EQ(run_command(rtpro_command("render " + scene.string() + " -o " + (dir / "b.png").string() +
-                                      " --progress never --max-memory 512"),
-                        &out),
-            0)
-      << out;
+  out = run_rtpro(render_args(scene, dir / "b.png") + " --progress never --max-memory 512", 0);
 }
 
 }  // namespace texture_memory_test

@@ -1,29 +1,23 @@
 // The command line's usage errors and precedence, through the real binary (issue 14): every
 // mistake is one line naming the flag, with the nearest valid spelling, and exit code 2.
 #include "rtpro/image/image_io.h"
+#include "sphere_on_floor.h"
+#include "test_commands.h"
+#include "test_fixtures.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <fstream>
 
 namespace rtpro {
 namespace usage_test {
 
-using test::rtpro_command;
-using test::run_command;
+using test::expect_rtpro_answer;
+using test::render_args;
 using test::run_rtpro;
 
-const char* kScene = R"(rtpro: 1
-camera: {position: [0, 1, 6], look_at: [0, 0.5, 0], fov: 40, resolution: [24, 16]}
-render: {spp: 4, max_depth: 2, seed: 3}
-lights:
-  - {type: point, position: [4, 6, 5], intensity: 1}
-world:
-  - {type: sphere, center: [0, -1000, 0], radius: 1000}
-  - {type: sphere, center: [0, 0.7, 0], radius: 0.7}
-)";
+const std::string kScene = test::sphere_on_floor_scene();
 
 std::size_t line_count(const std::string& text) {
   std::size_t lines = 0;
@@ -46,16 +40,17 @@ TEST(Usage, UnknownCommandSuggestsTheNearest) {
 
 TEST(Usage, UnknownOptionSuggestsTheNearest) {
   const auto scene = test::write_file("scene.yaml", kScene);
-  const std::string out = (scene.parent_path() / "out.exr").string();
-  expect_one_line_error("render " + scene.string() + " -o " + out + " --sp 4",
+  const auto out = scene.parent_path() / "out.exr";
+  expect_one_line_error(render_args(scene, out, "--sp 4"),
                         "unknown option '--sp' for 'rtpro render'; did you mean '--spp'?");
-  expect_one_line_error("render " + scene.string() + " -o " + out + " --max-dept=3", "did you mean '--max-depth'?");
+  expect_one_line_error(render_args(scene, out, "--max-dept=3"), "did you mean '--max-depth'?");
   expect_one_line_error("info " + scene.string() + " --jsn", "did you mean '--json'?");
-  expect_one_line_error("render " + scene.string() + " --outfile " + out, "rtpro's is -o/--output (pbrt's --outfile)");
-  expect_one_line_error("render " + scene.string() + " -o " + out + " --render-anim", "rtpro's is --frames FIRST-LAST");
-  expect_one_line_error("render " + scene.string() + " -o " + out + " -qx", "unknown option '-x'");
+  expect_one_line_error("render " + scene.string() + " --outfile " + out.string(),
+                        "rtpro's is -o/--output (pbrt's --outfile)");
+  expect_one_line_error(render_args(scene, out, "--render-anim"), "rtpro's is --frames FIRST-LAST");
+  expect_one_line_error(render_args(scene, out, "-qx"), "unknown option '-x'");
   // Mitsuba's -x once suggested -h; docs/usage.md names rtpro's spelling.
-  expect_one_line_error("render " + scene.string() + " -o " + out + " -x",
+  expect_one_line_error(render_args(scene, out, "-x"),
                         "unknown option '-x' for 'rtpro render'; rtpro's is --skip-existing (Mitsuba's -x)");
   expect_one_line_error("info " + scene.string() + " second.yaml third.yaml",
                         "unexpected arguments: 'second.yaml' 'third.yaml'");
@@ -65,9 +60,7 @@ TEST(Usage, UnknownOptionSuggestsTheNearest) {
 TEST(Usage, SingleValueOptionsGivenTwiceAreRefused) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto dir = scene.parent_path();
-  expect_one_line_error(
-      "render " + scene.string() + " -o " + (dir / "a.exr").string() + " -o " + (dir / "b.exr").string(),
-      "-o given twice");
+  expect_one_line_error(render_args(scene, dir / "a.exr") + " -o " + (dir / "b.exr").string(), "-o given twice");
   expect_one_line_error("render " + scene.string() + " -o a.exr --spp=4 --spp 16", "--spp given twice ('4' and '16')");
   EXPECT_FALSE(std::filesystem::exists(dir / "a.exr"));
   EXPECT_FALSE(std::filesystem::exists(dir / "b.exr"));
@@ -75,24 +68,22 @@ TEST(Usage, SingleValueOptionsGivenTwiceAreRefused) {
 
 TEST(Usage, ValuesAreCheckedByTheSceneFilesRules) {
   const auto scene = test::write_file("scene.yaml", kScene);
-  const std::string out = (scene.parent_path() / "out.exr").string();
-  expect_one_line_error("render " + scene.string() + " -o " + out + " --seed -1",
+  const auto out = scene.parent_path() / "out.exr";
+  expect_one_line_error(render_args(scene, out, "--seed -1"),
                         "--seed -1: render.seed: expected a non-negative integer");
-  expect_one_line_error("render " + scene.string() + " -o " + out + " --size 64", "--size '64': expected WIDTHxHEIGHT");
-  expect_one_line_error("render " + scene.string() + " -o " + out + " --set render.background=[255,0,0]",
-                        "looks like 8-bit sRGB values");
-  expect_one_line_error("render " + scene.string() + " -o " + out + " --region 0,0,30,10",
+  expect_one_line_error(render_args(scene, out, "--size 64"), "--size '64': expected WIDTHxHEIGHT");
+  expect_one_line_error(render_args(scene, out, "--set render.background=[255,0,0]"), "looks like 8-bit sRGB values");
+  expect_one_line_error(render_args(scene, out, "--region 0,0,30,10"),
                         "--region 0,0,30,10: not a non-empty window inside the 24x16 image");
-  expect_one_line_error("render " + scene.string() + " -o " + out + " --tile-size 0", "--tile-size must be at least 1");
-  expect_one_line_error("render " + scene.string() + " -o " + out + " -q --progress sometimes",
+  expect_one_line_error(render_args(scene, out, "--tile-size 0"), "--tile-size must be at least 1");
+  expect_one_line_error(render_args(scene, out, "-q --progress sometimes"),
                         "--progress 'sometimes': expected never, auto, always or json");
 }
 
 TEST(Usage, AovsNeedAnExrOutput) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto png = scene.parent_path() / "out.png";
-  expect_one_line_error("render " + scene.string() + " -o " + png.string() + " --aov albedo",
-                        "--aov needs an EXR output");
+  expect_one_line_error(render_args(scene, png, "--aov albedo"), "--aov needs an EXR output");
   EXPECT_FALSE(std::filesystem::exists(png));
   // A list option takes one value per occurrence: the scene after it stays the scene.
   const auto exr = scene.parent_path() / "out.exr";
@@ -103,8 +94,7 @@ TEST(Usage, AovsNeedAnExrOutput) {
 // --set and its shorthands apply in the order typed: the last one to set a key wins.
 TEST(Usage, OverridesApplyInCommandLineOrder) {
   const auto scene = test::write_file("scene.yaml", kScene);
-  const std::string base =
-      "render " + scene.string() + " -o " + (scene.parent_path() / "o.exr").string() + " --stats --progress never";
+  const std::string base = render_args(scene, scene.parent_path() / "o.exr") + " --stats --progress never";
   EXPECT_NE(run_rtpro(base + " --set render.spp=9 --spp 16", 0).find(", 16 spp"), std::string::npos);
   EXPECT_NE(run_rtpro(base + " --spp 16 --set render.spp=9", 0).find(", 9 spp"), std::string::npos);
   EXPECT_NE(run_rtpro(base + " --size 8x8 --set camera.resolution=[10,6]", 0).find("10x6"), std::string::npos);
@@ -114,24 +104,17 @@ TEST(Usage, OverridesApplyInCommandLineOrder) {
 TEST(Usage, AnySampleCountRenders) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto out = scene.parent_path() / "six.exr";
-  const std::string text = run_rtpro("render " + scene.string() + " -o " + out.string() + " --spp 6", 0);
-  EXPECT_NE(text.find("6 spp"), std::string::npos) << text;
-  const Image image = read_image(out);
-  float sum = 0;
-  for (float v : image.data) sum += v;
-  EXPECT_GT(sum, 1.0f);
+  expect_rtpro_answer(render_args(scene, out, "--spp 6"), 0, "6 spp");
+  EXPECT_GT(test::image_sum(read_image(out)), 1.0);
 }
 
 TEST(Usage, SceneFromStandardInput) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto dir = scene.parent_path();
-  run_rtpro("render " + scene.string() + " -o " + (dir / "file.exr").string() + " -q", 0);
+  run_rtpro(render_args(scene, dir / "file.exr", "-q"), 0);
   run_rtpro("render - -o " + (dir / "stdin.exr").string() + " -q < " + scene.string(), 0);
-  const Image a = read_image(dir / "file.exr"), b = read_image(dir / "stdin.exr");
-  ASSERT_EQ(a.data.size(), b.data.size());
-  EXPECT_EQ(std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)), 0);
-  const std::string out = run_rtpro("info - < /dev/null", 2);
-  EXPECT_NE(out.find("<stdin>"), std::string::npos) << out;
+  test::expect_same_pixels(dir / "file.exr", dir / "stdin.exr");
+  expect_rtpro_answer("info - < /dev/null", 2, "<stdin>");
 }
 
 }  // namespace usage_test

@@ -1,5 +1,6 @@
 #include "rtpro/core/stale_temporaries.h"
 
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>

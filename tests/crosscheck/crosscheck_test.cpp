@@ -7,6 +7,7 @@
 #include "rtpro/core/fp_env.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
+#include "test_commands.h"
 #include "test_paths.h"
 #include "test_scenes.h"
 

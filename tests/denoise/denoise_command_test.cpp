@@ -4,6 +4,7 @@
 #include "rtpro/image/image_io.h"
 #include "noisy_fixture.h"
 #include "test_fixtures.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <OpenEXR/ImfChannelList.h>
@@ -45,11 +46,6 @@ std::string quoted(const fs::path& path) {
   std::string text = "'";
   text.append(path.string()).append("'");
   return text;
-}
-
-std::string file_bytes(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 int channel_of(const Image& image, std::string_view name) {
@@ -146,7 +142,7 @@ TEST(DenoiseCommand, RefusesBadInputsAndKeepsAnExistingOutput) {
   const fs::path good = dir / "good.exr", output = dir / "out.exr";
   write_image(good, noisy_image(), {});
   test::run_rtpro("denoise " + quoted(good) + " -o " + quoted(output), 0);
-  const std::string output_before = file_bytes(output);
+  const std::string output_before = test::read_file(output);
   ASSERT_FALSE(output_before.empty());
 
   const Image noisy = noisy_image();
@@ -170,7 +166,7 @@ TEST(DenoiseCommand, RefusesBadInputsAndKeepsAnExistingOutput) {
     EXPECT_NE(out.find(bad.says), std::string::npos) << out;
     EXPECT_EQ(out.rfind("rtpro: error: ", 0), 0u) << out;
     EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 1) << out;
-    EXPECT_EQ(file_bytes(output), output_before) << bad.file;
+    EXPECT_EQ(test::read_file(output), output_before) << bad.file;
   }
 }
 

@@ -38,21 +38,23 @@ void expect_answer(const CappedRun& run, int expected, const std::vector<std::st
       << run.output;
 }
 
-// Ten levels of ten instances: 10^10 after flattening, from about 1 KB of YAML.
-std::filesystem::path instance_bomb() {
-  std::string text = "rtpro: 1\n" + kCamera + "objects:\n  l0: [{type: sphere}]\n";
+// A scene's objects: l0 holds `leaf`, and ten levels of ten instances above it make l10 stand for
+// 10^10 of them after flattening, from about 1 KB of YAML.
+std::string instance_bomb_objects(const std::string& leaf) {
+  std::string text = "rtpro: 1\n" + kCamera + "objects:\n  l0: " + leaf + "\n";
   for (int level = 1; level <= 10; ++level) {
     text += "  l" + std::to_string(level) + ": [";
     for (int i = 0; i < 10; ++i)
       text += std::string(i ? ", " : "") + "{type: instance, object: l" + std::to_string(level - 1) + "}";
     text += "]\n";
   }
-  return write_file("bomb.yaml", text + "world: [{type: instance, object: l10}]\n");
+  return text;
 }
 
 TEST(HostileInput, NestedInstancesThatMultiplyAreRefusedBeforeFlattening) {
   scratch_dir();
-  const auto scene = instance_bomb();
+  const auto scene =
+      write_file("bomb.yaml", instance_bomb_objects("[{type: sphere}]") + "world: [{type: instance, object: l10}]\n");
   // The memory budget notices first; without one (--max-memory 0) the structural limit does, at
   // the world instance whose subtree crosses it.
   expect_answer(run_capped({rtpro(), "info", scene.string()}), 2,
@@ -68,14 +70,8 @@ TEST(HostileInput, NestedInstancesThatMultiplyAreRefusedBeforeFlattening) {
 // and `info` and `render` hung visiting 10^10 empty instances.
 TEST(HostileInput, NestedInstancesOfAnEmptyObjectAreRefusedBeforeFlattening) {
   scratch_dir();
-  std::string text = "rtpro: 1\n" + kCamera + "objects:\n  l0: []\n";
-  for (int level = 1; level <= 10; ++level) {
-    text += "  l" + std::to_string(level) + ": [";
-    for (int i = 0; i < 10; ++i)
-      text += std::string(i ? ", " : "") + "{type: instance, object: l" + std::to_string(level - 1) + "}";
-    text += "]\n";
-  }
-  const auto scene = write_file("empty_bomb.yaml", text + "world: [{type: sphere}, {type: instance, object: l10}]\n");
+  const auto scene = write_file(
+      "empty_bomb.yaml", instance_bomb_objects("[]") + "world: [{type: sphere}, {type: instance, object: l10}]\n");
   expect_answer(run_capped({rtpro(), "info", scene.string()}), 2, {"empty_bomb.yaml:", "10000000000 after flattening"});
   expect_answer(run_capped({rtpro(), "render", scene.string(), "-o", (scene.parent_path() / "x.png").string(),
                             "--max-memory", "0"}),
@@ -252,9 +248,8 @@ TEST(HostileInput, AVertexAtTheCoordinateLimitIsTheSameInputErrorForBothBackends
 TEST(HostileInput, ImagesWhoseHeadersDeclareGigabytesAreRefusedFromTheHeader) {
   const auto dir = scratch_dir();
   const auto regression = source_dir() / "tests/fuzz/regressions/image/exr-attribute-claims-2gb";
-  std::ifstream in(regression, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto exr = write_file("bad.exr", bytes.substr(1));  // the fuzz input's first byte picks the extension
+  const auto exr =
+      write_file("bad.exr", read_file(regression).substr(1));  // the fuzz input's first byte picks the extension
   const auto good = dir / "good.exr";
   ASSERT_EQ(run_capped({rtpro(), "render", (scenes_dir() / "demo.yaml").string(), "-o", good.string(), "--size", "8x8",
                         "--spp", "1", "-q"})

@@ -5,6 +5,7 @@
 #include "rtpro/core/error.h"
 #include "rtpro/image/atomic_file_replacement.h"
 #include "rtpro/image/image_io.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -24,9 +25,18 @@
 namespace rtpro::test {
 namespace output_faults_test {
 
-std::string read_all(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+// rtpro rendering the shipped demo scene into `target` at one sample a pixel, then `options`: the
+// arguments for run_capped.
+std::vector<std::string> demo_render(const std::filesystem::path& target, const std::vector<std::string>& options) {
+  std::vector<std::string> argv = {rtpro_executable().string(),
+                                   "render",
+                                   (scenes_dir() / "demo.yaml").string(),
+                                   "-o",
+                                   target.string(),
+                                   "--spp",
+                                   "1"};
+  argv.insert(argv.end(), options.begin(), options.end());
+  return argv;
 }
 
 std::vector<std::string> temporaries_in(const std::filesystem::path& dir) {
@@ -44,7 +54,7 @@ TEST(AtomicWrite, RefusesToReplaceSymlinksAndDevices) {
   std::filesystem::create_symlink(victim, link);
   EXPECT_THROW(write_file_atomically(link, "new"), RuntimeError);
   EXPECT_TRUE(std::filesystem::is_symlink(link));
-  EXPECT_EQ(read_all(victim), "precious");
+  EXPECT_EQ(read_file(victim), "precious");
   EXPECT_THROW(write_file_atomically("/dev/null", "new"), RuntimeError);
   struct stat status {};
   ASSERT_EQ(::stat("/dev/null", &status), 0);
@@ -60,7 +70,7 @@ TEST(AtomicWrite, RemovesStaleTemporariesOfDeadProcessesOnly) {
   const auto live = write_file(".out.json.rtpro-tmp-" + std::to_string(::getppid()) + "-3", "in progress");
   const auto other = write_file(".other.json.rtpro-tmp-" + std::to_string(dead_pid()) + "-0", "not ours");
   write_file_atomically(target, "done");
-  EXPECT_EQ(read_all(target), "done");
+  EXPECT_EQ(read_file(target), "done");
   EXPECT_FALSE(std::filesystem::exists(stale));
   EXPECT_TRUE(std::filesystem::exists(live));   // its process may still be writing
   EXPECT_TRUE(std::filesystem::exists(other));  // another target's business
@@ -91,10 +101,10 @@ TEST(AtomicWrite, AFullDiskKeepsTheOldFileAndLeavesNoTemporary) {
   const auto dir = scratch_dir();
   const auto target = write_file("stats.json", "old and good");
   EXPECT_EQ(write_in_child_with_size_limit(target, 1 << 20, 64 << 10), 1);
-  EXPECT_EQ(read_all(target), "old and good");
+  EXPECT_EQ(read_file(target), "old and good");
   EXPECT_TRUE(temporaries_in(dir).empty());
   EXPECT_EQ(write_in_child_with_size_limit(target, 1000, 64 << 10), 0);
-  EXPECT_EQ(read_all(target), std::string(1000, 'x'));
+  EXPECT_EQ(read_file(target), std::string(1000, 'x'));
 }
 
 // A real full file system where the test may mount one (root, outside most containers).
@@ -107,16 +117,14 @@ TEST(AtomicWrite, ARealFullTmpfsKeepsTheOldImage) {
     ~Unmount() { ::umount(dir.c_str()); }
   } unmount{dir};
   const auto good = dir / "render.exr";
-  const CappedRun first = run_capped({rtpro_executable().string(), "render", (scenes_dir() / "demo.yaml").string(),
-                                      "-o", good.string(), "--size", "32x32", "--spp", "1", "-q"});
+  const CappedRun first = run_capped(demo_render(good, {"--size", "32x32", "-q"}));
   ASSERT_EQ(first.exit_code, 0) << first.output;
-  const std::string before = read_all(good);
+  const std::string before = read_file(good);
   // Fill what is left, then ask for an image that cannot fit.
   std::ofstream(dir / "filler", std::ios::binary) << std::string(256 << 10, 'f');
-  const CappedRun full = run_capped({rtpro_executable().string(), "render", (scenes_dir() / "demo.yaml").string(), "-o",
-                                     good.string(), "--size", "256x256", "--spp", "1", "-q"});
+  const CappedRun full = run_capped(demo_render(good, {"--size", "256x256", "-q"}));
   EXPECT_EQ(full.exit_code, 1) << full.output;
-  EXPECT_EQ(read_all(good), before);
+  EXPECT_EQ(read_file(good), before);
   EXPECT_TRUE(temporaries_in(dir).empty());
 }
 
@@ -124,23 +132,14 @@ TEST(OutputFaults, AFullDiskDuringAnImageWriteIsExitOneAndKeepsTheOldImage) {
   const auto dir = scratch_dir();
   for (const char* name : {"out.exr", "out.png", "out.tif"}) {
     const auto target = dir / name;
-    const std::vector<std::string> render = {rtpro_executable().string(),
-                                             "render",
-                                             (scenes_dir() / "demo.yaml").string(),
-                                             "-o",
-                                             target.string(),
-                                             "--spp",
-                                             "1",
-                                             "-q"};
-    std::vector<std::string> small = render;
-    small.insert(small.end(), {"--size", "16x16"});
-    ASSERT_EQ(run_capped(small).exit_code, 0);
-    const std::string before = read_all(target);
+    const std::vector<std::string> render = demo_render(target, {"-q"});
+    ASSERT_EQ(run_capped(demo_render(target, {"-q", "--size", "16x16"})).exit_code, 0);
+    const std::string before = read_file(target);
     // 64 KiB of file size allowed: the 640x480 image does not fit.
     const CappedRun full = run_capped(render, 60, "trap '' XFSZ; ulimit -f 64;");
     EXPECT_EQ(full.exit_code, 1) << name << ": " << full.output;
     EXPECT_NE(full.output.find("cannot write"), std::string::npos) << full.output;
-    EXPECT_EQ(read_all(target), before) << name;
+    EXPECT_EQ(read_file(target), before) << name;
     EXPECT_TRUE(temporaries_in(dir).empty()) << name;
   }
 }
@@ -151,22 +150,20 @@ TEST(OutputFaults, StatsJsonNeverReplacesADeviceOrASymlink) {
   const auto link = dir / "stats.json";
   std::filesystem::create_symlink(victim, link);
   for (const std::string& target : {link.string(), std::string("/dev/null")}) {
-    const CappedRun run =
-        run_capped({rtpro_executable().string(), "render", (scenes_dir() / "demo.yaml").string(), "-o",
-                    (dir / "x.png").string(), "--size", "8x8", "--spp", "1", "--stats-json", target});
+    const CappedRun run = run_capped(demo_render(dir / "x.png", {"--size", "8x8", "--stats-json", target}));
     EXPECT_EQ(run.exit_code, 1) << run.output;
     EXPECT_NE(run.output.find("rtpro replaces only regular files"), std::string::npos) << run.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "x.png")) << "refused before rendering";
   }
   EXPECT_TRUE(std::filesystem::is_symlink(link));
-  EXPECT_EQ(read_all(victim), "precious");
+  EXPECT_EQ(read_file(victim), "precious");
 }
 
 // --stats-json naming the image (under another spelling) or the scene: refused before rendering,
 // both names in the message, every file as it was.
 TEST(OutputFaults, AnOutputThatIsTheImageOrTheSceneIsRefusedBeforeRendering) {
   const auto dir = scratch_dir();
-  const auto scene = write_file("scene.yaml", read_all(scenes_dir() / "demo.yaml"));
+  const auto scene = write_file("scene.yaml", read_file(scenes_dir() / "demo.yaml"));
   const auto image = dir / "x.png";
   std::ofstream(image) << "a previous good image";
   const std::string same_image = (dir / "." / "x.png").string();
@@ -178,8 +175,8 @@ TEST(OutputFaults, AnOutputThatIsTheImageOrTheSceneIsRefusedBeforeRendering) {
     EXPECT_NE(run.output.find("--stats-json"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find(other), std::string::npos) << run.output;
   }
-  EXPECT_EQ(read_all(image), "a previous good image");
-  EXPECT_EQ(read_all(scene), read_all(scenes_dir() / "demo.yaml"));
+  EXPECT_EQ(read_file(image), "a previous good image");
+  EXPECT_EQ(read_file(scene), read_file(scenes_dir() / "demo.yaml"));
 }
 
 // SIGKILL at random moments of a render that replaces a good image: the target is always the
@@ -188,34 +185,17 @@ TEST(OutputFaults, AnOutputThatIsTheImageOrTheSceneIsRefusedBeforeRendering) {
 TEST(OutputFaults, SigkillDuringARenderNeverLeavesABrokenImage) {
   const auto dir = scratch_dir();
   const auto target = dir / "out.exr";
-  const std::vector<std::string> render = {rtpro_executable().string(),
-                                           "render",
-                                           (scenes_dir() / "demo.yaml").string(),
-                                           "-o",
-                                           target.string(),
-                                           "--size",
-                                           "512x384",
-                                           "--spp",
-                                           "1",
-                                           "-q"};
+  const std::vector<std::string> render = demo_render(target, {"--size", "512x384", "-q"});
   const CappedRun reference = run_capped(render, 120);
   ASSERT_EQ(reference.exit_code, 0) << reference.output;
-  const std::string good = read_all(target);
+  const std::string good = read_file(target);
   std::mt19937 rng(12);
   std::uniform_real_distribution<double> moment(0.0, reference.seconds * 1.1);
   int killed = 0;
   for (int trial = 0; trial < 30; ++trial) {
     std::filesystem::remove(target);
     std::ofstream(target, std::ios::binary) << good;
-    const pid_t child = ::fork();
-    if (child == 0) {
-      std::vector<char*> args;
-      std::vector<std::string> copy = render;
-      for (auto& arg : copy) args.push_back(arg.data());
-      args.push_back(nullptr);
-      ::execv(args[0], args.data());
-      ::_exit(127);
-    }
+    const pid_t child = start_program(render);
     std::this_thread::sleep_for(std::chrono::duration<double>(moment(rng)));
     if (::kill(child, SIGKILL) == 0) ++killed;
     int status = 0;
@@ -233,20 +213,8 @@ TEST(OutputFaults, SigkillDuringARenderNeverLeavesABrokenImage) {
 TEST(OutputFaults, TwoRendersWritingOneFileEndWithOneCompleteImageOrTheSecondRefused) {
   const auto dir = scratch_dir();
   const auto target = dir / "out.png";
-  std::vector<std::string> a = {rtpro_executable().string(),
-                                "render",
-                                (scenes_dir() / "demo.yaml").string(),
-                                "-o",
-                                target.string(),
-                                "--size",
-                                "320x240",
-                                "--spp",
-                                "1",
-                                "-q",
-                                "--threads",
-                                "1"};
-  std::vector<std::string> b = a;
-  b.insert(b.end(), {"--seed", "7"});
+  const std::vector<std::string> a = demo_render(target, {"--size", "320x240", "-q", "--threads", "1"});
+  const std::vector<std::string> b = demo_render(target, {"--size", "320x240", "-q", "--threads", "1", "--seed", "7"});
   CappedRun first, second;
   std::thread one([&] { first = run_capped(a, 120); });
   std::thread two([&] { second = run_capped(b, 120); });

@@ -6,6 +6,7 @@
 #include "rtpro/image/atomic_file_replacement.h"
 #include "rtpro/image/image_io.h"
 
+#include "test_fixtures.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -19,11 +20,6 @@ namespace rtpro {
 namespace atomic_temporary_test {
 
 namespace fs = std::filesystem;
-
-std::string contents(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 // Links at the next `count` temporary names of `target` in this process, all to `victim`.
 std::vector<fs::path> plant_links(const fs::path& target, const fs::path& victim, int count) {
@@ -41,7 +37,7 @@ std::vector<fs::path> plant_links(const fs::path& target, const fs::path& victim
 }
 
 void expect_untouched(const fs::path& victim, const fs::path& output, const std::vector<fs::path>& links) {
-  EXPECT_EQ(contents(victim), "precious") << "the planted link was followed";
+  EXPECT_EQ(test::read_file(victim), "precious") << "the planted link was followed";
   EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(output))) << output << " is not a regular file of its own";
   for (const fs::path& link : links)
     EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link))) << link << " was replaced or removed";
@@ -51,9 +47,7 @@ TEST(AtomicTemporary, LinksPlantedAtTheTemporaryNamesOfATiffAreNotFollowed) {
   const fs::path output = test::scratch_dir() / "out.tif";  // emptied: victim.txt comes after
   const fs::path victim = test::write_file("victim.txt", "precious");
   const std::vector<fs::path> links = plant_links(output, victim, 3);
-  Image image(4, 4);
-  std::fill(image.data.begin(), image.data.end(), 0.5f);
-  write_image(output, image, ImageWriteOptions{});
+  write_image(output, test::uniform_image(4, 4, 0.5f), ImageWriteOptions{});
   expect_untouched(victim, output, links);
   EXPECT_EQ(read_image(output).width, 4);
 }
@@ -64,7 +58,7 @@ TEST(AtomicTemporary, LinksPlantedAtTheTemporaryNamesOfABufferedWriteAreNotFollo
   const std::vector<fs::path> links = plant_links(output, victim, 2);
   write_file_atomically(output, "{}\n");
   expect_untouched(victim, output, links);
-  EXPECT_EQ(contents(output), "{}\n");
+  EXPECT_EQ(test::read_file(output), "{}\n");
 }
 
 TEST(AtomicTemporary, AReplacedTemporaryIsNotRenamedOverTheTarget) {
@@ -76,8 +70,8 @@ TEST(AtomicTemporary, AReplacedTemporaryIsNotRenamedOverTheTarget) {
     fs::create_symlink(victim, replacement.temporary_path());
     EXPECT_THROW(replacement.commit(), RuntimeError);
   }
-  EXPECT_EQ(contents(output), "old");
-  EXPECT_EQ(contents(victim), "precious");
+  EXPECT_EQ(test::read_file(output), "old");
+  EXPECT_EQ(test::read_file(victim), "precious");
 }
 
 }  // namespace atomic_temporary_test

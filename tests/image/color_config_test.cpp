@@ -1,6 +1,7 @@
 #include "rtpro/image/color_config.h"
 
 #include "rtpro/core/error.h"
+#include "test_fixtures.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -14,6 +15,8 @@
 
 namespace rtpro {
 namespace color_config_test {
+
+using test::error_message_of;
 
 // A config whose only view doubles the values, so a test can tell it was really used.
 constexpr const char* kDoublingConfig = R"(ocio_profile_version: 2
@@ -53,16 +56,6 @@ float encode_grey(const DisplayTransform& transform, float value) {
   EXPECT_NEAR(rgb[0], rgb[1], 1e-5f) << "grey stays grey";
   EXPECT_NEAR(rgb[1], rgb[2], 1e-5f) << "grey stays grey";
   return rgb[0];
-}
-
-std::string error_message_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return {};
 }
 
 TEST(ColorConfig, BundledConfigHasTheSrgbDisplayWithThreeViews) {
@@ -108,14 +101,15 @@ TEST(ColorConfig, RawViewLeavesValuesAlone) {
 }
 
 TEST(ColorConfig, UnknownViewListsTheAvailableOnes) {
-  const std::string message = error_message_of([] { ColorConfig::bundled().display_transform("sRGB", "Filmic"); });
+  const std::string message =
+      error_message_of<InputError>([] { ColorConfig::bundled().display_transform("sRGB", "Filmic"); });
   EXPECT_NE(message.find("\"Filmic\""), std::string::npos) << message;
   for (const char* view : {"Standard", "ACES 1.0 SDR-video", "Raw"})
     EXPECT_NE(message.find(view), std::string::npos) << message;
 }
 
 TEST(ColorConfig, UnknownDisplayListsTheAvailableOnes) {
-  const std::string message = error_message_of([] { ColorConfig::bundled().display_transform("P3", ""); });
+  const std::string message = error_message_of<InputError>([] { ColorConfig::bundled().display_transform("P3", ""); });
   EXPECT_NE(message.find("\"P3\""), std::string::npos) << message;
   EXPECT_NE(message.find("\"sRGB\""), std::string::npos) << message;
 }
@@ -164,14 +158,14 @@ TEST(ColorConfig, EmptyOcioVariableMeansBundled) {
 TEST(ColorConfig, MissingConfigFileIsAnInputErrorNamingIt) {
   const auto missing = test::scratch_dir() / "missing.ocio";
   ScopedOcioVariable ocio(missing.string());
-  const std::string message = error_message_of([] { ColorConfig::load(std::nullopt); });
+  const std::string message = error_message_of<InputError>([] { ColorConfig::load(std::nullopt); });
   EXPECT_NE(message.find(missing.string()), std::string::npos) << message;
   EXPECT_NE(message.find("$OCIO"), std::string::npos) << message;
 }
 
 TEST(ColorConfig, MalformedConfigFileIsAnInputErrorNamingIt) {
   const auto broken = test::write_file("broken.ocio", "ocio_profile_version: 2\ncolorspaces: [\n");
-  const std::string message = error_message_of([&] { ColorConfig::load(broken); });
+  const std::string message = error_message_of<InputError>([&] { ColorConfig::load(broken); });
   EXPECT_NE(message.find(broken.string()), std::string::npos) << message;
   EXPECT_NE(message.find("--ocio-config"), std::string::npos) << message;
 }

@@ -32,11 +32,6 @@ Image ramp_image(int width, int height, std::vector<std::string> channels) {
   return image;
 }
 
-std::string file_bytes(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 struct Chunk {
   std::string type, data;
   bool operator==(const Chunk&) const = default;
@@ -44,7 +39,7 @@ struct Chunk {
 
 // The file's chunks in order, the IDAT chunks' data joined and inflated into one "pixels" chunk.
 std::vector<Chunk> chunks_of(const fs::path& file) {
-  const std::string bytes = file_bytes(file);
+  const std::string bytes = test::read_file(file);
   EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
   std::vector<Chunk> chunks;
   std::string compressed;
@@ -169,7 +164,7 @@ TEST(PngOutput, RefusalsNameTheFileAndKeepTheOldOne) {
   ImageWriteOptions unknown_view;
   unknown_view.view = "no such view";
   EXPECT_THROW(write_png(file, ramp_image(4, 3, {"R", "G", "B"}), unknown_view), InputError);
-  EXPECT_EQ(file_bytes(file), "the old contents");
+  EXPECT_EQ(test::read_file(file), "the old contents");
   EXPECT_EQ(std::distance(fs::directory_iterator(file.parent_path()), fs::directory_iterator()), 1);
 }
 

@@ -2,6 +2,7 @@
 #include "rtpro/core/error.h"
 #include "rtpro/job/tile_codec.h"
 #include "rtpro/job/tile_journal.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -14,6 +15,8 @@
 #include <atomic>
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
+#include <string>
 #include <thread>
 
 namespace rtpro {
@@ -37,17 +40,19 @@ JobIdentity identity_of(const std::string& spp) {
   return identity;
 }
 
-std::vector<char> bytes_of(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+// Writes a journal of a 4-spp job at `file` holding the tiles `indices` of `grid`, and closes it.
+void write_journal(const std::filesystem::path& file, const TileGrid& grid,
+                   std::initializer_list<std::size_t> indices) {
+  TileJournal journal(file, identity_of("4"), kChannels, {});
+  for (const std::size_t index : indices) journal.append(tile_of(grid, index));
 }
 
 std::ptrdiff_t entries_in(const std::filesystem::path& folder) {
   return std::distance(std::filesystem::directory_iterator(folder), std::filesystem::directory_iterator());
 }
 
-void write_bytes(const std::filesystem::path& file, const std::vector<char>& bytes) {
-  std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
+void write_bytes(const std::filesystem::path& file, const std::string& bytes) {
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
 }
 
 TEST(TileJournal, AppendedTilesFromSeveralThreadsAreReadBack) {
@@ -82,22 +87,19 @@ TEST(TileJournal, AppendedTilesFromSeveralThreadsAreReadBack) {
 TEST(TileJournal, TornTailAndCorruptRecordLoseOnlyTheirTiles) {
   const TileGrid grid({0, 0, 16, 16}, 8);
   const auto file = test::scratch_dir() / "j";
-  {
-    TileJournal journal(file, identity_of("4"), kChannels, {});
-    for (std::size_t i = 0; i < 4; ++i) journal.append(tile_of(grid, i));
-  }
-  const std::vector<char> whole = bytes_of(file);
+  write_journal(file, grid, {0, 1, 2, 3});
+  const std::string whole = test::read_file(file);
   const std::size_t record = tile_record_size(grid.tile(0), kChannels);
   const std::size_t header = whole.size() - 4 * record;
 
   // Cut inside the last record, as a kill during its write would.
-  write_bytes(file, std::vector<char>(whole.begin(), whole.end() - 10));
+  write_bytes(file, whole.substr(0, whole.size() - 10));
   JournalContents torn = read_journal(file, grid, kChannels);
   EXPECT_EQ(torn.tiles.size(), 3u);
   EXPECT_EQ(torn.dropped_records, 1u);
 
   // A flipped pixel byte in record 1: that tile alone is dropped.
-  std::vector<char> flipped = whole;
+  std::string flipped = whole;
   flipped[header + record + kTileRecordHeaderBytes + 5] ^= 0x40;
   write_bytes(file, flipped);
   JournalContents corrupt = read_journal(file, grid, kChannels);
@@ -106,7 +108,7 @@ TEST(TileJournal, TornTailAndCorruptRecordLoseOnlyTheirTiles) {
   for (const TileResult& tile : corrupt.tiles) EXPECT_NE(tile.index, 1u);
 
   // A damaged record header gives no length to skip by: the records after it are lost too.
-  std::vector<char> bad_header = whole;
+  std::string bad_header = whole;
   bad_header[header + 2 * record] ^= 0x01;
   write_bytes(file, bad_header);
   EXPECT_EQ(read_journal(file, grid, kChannels).tiles.size(), 2u);
@@ -115,8 +117,8 @@ TEST(TileJournal, TornTailAndCorruptRecordLoseOnlyTheirTiles) {
 TEST(TileJournal, DamagedHeaderOrForeignFileIsAnInputError) {
   const TileGrid grid({0, 0, 16, 16}, 8);
   const auto file = test::scratch_dir() / "j";
-  { TileJournal journal(file, identity_of("4"), kChannels, {}); }
-  std::vector<char> bytes = bytes_of(file);
+  write_journal(file, grid, {});
+  std::string bytes = test::read_file(file);
   bytes[30] ^= 0x01;  // inside the identity text: its checksum no longer matches
   write_bytes(file, bytes);
   try {
@@ -136,11 +138,7 @@ TEST(TileJournal, DamagedHeaderOrForeignFileIsAnInputError) {
 TEST(TileJournal, NewJournalReplacesTheOldOneWholeAndRemoveDeletesIt) {
   const TileGrid grid({0, 0, 16, 16}, 8);
   const auto file = test::scratch_dir() / "j";
-  {
-    TileJournal journal(file, identity_of("4"), kChannels, {});
-    journal.append(tile_of(grid, 0));
-    journal.append(tile_of(grid, 1));
-  }
+  write_journal(file, grid, {0, 1});
   const std::vector<TileResult> kept{tile_of(grid, 1)};
   TileJournal replaced(file, identity_of("4"), kChannels, kept);
   const JournalContents contents = read_journal(file, grid, kChannels);
@@ -242,11 +240,7 @@ TEST(TileJournal, FifoDeviceDirectoryOrLinkAtTheJournalIsRefusedAndLeftInPlace) 
 TEST(TileJournal, SparseHugeJournalIsReadAsAStream) {
   const TileGrid grid({0, 0, 16, 16}, 8);
   const auto file = test::scratch_dir() / "j";
-  {
-    TileJournal journal(file, identity_of("4"), kChannels, {});
-    journal.append(tile_of(grid, 0));
-    journal.append(tile_of(grid, 2));
-  }
+  write_journal(file, grid, {0, 2});
   std::filesystem::resize_file(file, std::uintmax_t(20) << 30);
   const auto start = std::chrono::steady_clock::now();
   const JournalContents contents = read_journal(file, grid, kChannels);

@@ -6,13 +6,13 @@
 //
 // The scene's YAML is scanned here, before parse_scene_file, because the parser rejects a missing
 // mesh file as an input error like any other: this only tells the two kinds of missing apart.
+#include "test_paths.h"
+
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -36,13 +36,6 @@ inline void collect_mesh_files(const YAML::Node& node, std::vector<std::string>&
   }
 }
 
-inline std::string file_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // The first fetch script (by name) whose text mentions the file's name.
 inline std::optional<std::filesystem::path> fetch_script_for(const std::filesystem::path& mesh,
                                                              const std::filesystem::path& scripts_dir) {
@@ -54,7 +47,7 @@ inline std::optional<std::filesystem::path> fetch_script_for(const std::filesyst
   }
   std::sort(scripts.begin(), scripts.end());
   for (const auto& script : scripts)
-    if (file_text(script).find(mesh.filename().string()) != std::string::npos) return script;
+    if (test::read_file(script).find(mesh.filename().string()) != std::string::npos) return script;
   return std::nullopt;
 }
 

@@ -6,6 +6,7 @@
 #include "fetched_meshes.h"
 #include "regression_paths.h"
 #include "scene_textures.h"
+#include "test_fixtures.h"
 #include "test_paths.h"
 
 #include "rtpro/backend/backend.h"
@@ -38,12 +39,6 @@ RenderScene unlit_scene(const std::filesystem::path& file) {
   return scene;
 }
 
-double image_sum(const Image& image) {
-  double sum = 0.0;
-  for (const float value : image.data) sum += value;
-  return sum;
-}
-
 TEST(ShippedLights, EveryLightOfEveryShippedSceneReachesTheImage) {
   int lights_checked = 0;
   for (const std::filesystem::path& file : regression::scene_files()) {
@@ -58,7 +53,7 @@ TEST(ShippedLights, EveryLightOfEveryShippedSceneReachesTheImage) {
       RenderOptions options;
       options.textures = textures.get();
       const Image image = render_image(alone, *backend, options).image;
-      EXPECT_GT(image_sum(image), 0.0) << "this light reaches nothing the camera sees";
+      EXPECT_GT(test::image_sum(image), 0.0) << "this light reaches nothing the camera sees";
       ++lights_checked;
     }
   }

@@ -5,6 +5,7 @@
 #include "rtpro/scene/scene_parser.h"
 #include "gltf_asset.h"
 #include "gltf_test_files.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>

@@ -2,6 +2,7 @@
 // what each reads, and the errors that name the key and its position.
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
+#include "scene_text_error.h"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +11,7 @@
 namespace rtpro {
 namespace material_kinds_test {
 
-const std::string kHeader =
-    "rtpro: 1\n"
-    "camera: {position: [0, 1, -5], look_at: [0, 0, 0]}\n";
+using test::kHeader;
 
 SceneDescription parse(const std::string& body, const std::vector<std::string>& overrides = {}) {
   return parse_scene_text(kHeader + body, "test.yaml", overrides);

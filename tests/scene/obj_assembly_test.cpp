@@ -1,5 +1,6 @@
 // How OBJ files get their normals, texture coordinates and colours (obj_assembly.h, obj_parser.h).
 #include "rtpro/scene/mesh_loader.h"
+#include "obj_fixtures.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -11,28 +12,14 @@
 namespace rtpro {
 namespace obj_assembly_test {
 
+using test::corner_normal;
+using test::kCubeFaces;
+using test::kCubePositions;
 using test::write_file;
-
-constexpr const char* kCubePositions = R"(v 0 0 0
-v 1 0 0
-v 1 1 0
-v 0 1 0
-v 0 0 1
-v 1 0 1
-v 1 1 1
-v 0 1 1
-)";
-// Outward-facing quads: -z, +z, -y, +x, +y, -x.
-constexpr const char* kCubeFaces = "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
 
 Vec3 face_normal(const TriangleMesh& mesh, std::uint32_t t) {
   const TriangleIndices& tri = mesh.triangles[t];
   return normalize(cross(mesh.vertex(tri.v1) - mesh.vertex(tri.v0), mesh.vertex(tri.v2) - mesh.vertex(tri.v0)));
-}
-
-Vec3 corner_normal(const TriangleMesh& mesh, std::uint32_t t, int corner) {
-  const TriangleIndices& tri = mesh.triangles[t];
-  return mesh.normals[corner == 0 ? tri.v0 : corner == 1 ? tri.v1 : tri.v2];
 }
 
 bool is_axis(const Vec3& n) {

@@ -1,8 +1,10 @@
-// MTL mapping and the lenient and hardened edges of OBJ reading (obj_materials.h, mtl_parser.h).
+// OBJ materials from MTL libraries, and the lenient and hardened edges of OBJ reading
+// (obj_materials.h, mtl_parser.h).
 #include "rtpro/core/error.h"
 #include "rtpro/scene/mesh_loader.h"
 #include "ascii_scan.h"
 #include "mtl_parser.h"
+#include "obj_fixtures.h"
 #include "test_fixtures.h"
 #include "test_paths.h"
 
@@ -14,16 +16,11 @@
 namespace rtpro {
 namespace obj_materials_test {
 
+using test::has_warning_containing;
 using test::mesh_load_error;
 using test::write_file;
 
 constexpr const char* kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-
-bool has_warning_containing(const MeshLoadStats& stats, const std::string& text) {
-  for (const std::string& w : stats.warnings)
-    if (w.find(text) != std::string::npos) return true;
-  return false;
-}
 
 MaterialDesc only_material(const std::string& mtl) {
   const MaterialLibrary library = parse_mtl_file(write_file("one.mtl", mtl));
@@ -180,6 +177,93 @@ TEST(ObjHardening, MaterialLibraryBehindASymlinkMustStayInsideTheFolder) {
   write_file("model/real.mtl", "newmtl r\n");
   std::filesystem::create_symlink(model / "real.mtl", model / "inside.mtl");
   EXPECT_NO_THROW(load_mesh_file(write_file("model/c.obj", std::string("mtllib inside.mtl\n") + kTriangle)));
+}
+
+TEST(ObjLoader, MaterialsComeFromTheLibraryPerTriangle) {
+  write_file("two.mtl",
+             "# colours\nnewmtl red\nKd 1 0 0\nKs 0.3 0.6 0.9\nNs 50\nillum 2\n"
+             "newmtl grey\nKd 0.25\nKa 0 0 0\n");
+  const LoadedMesh loaded = load_mesh_file(write_file("two.obj", R"(mtllib two.mtl
+v 0 0 0
+v 1 0 0
+v 0 1 0
+v 1 1 0
+usemtl grey
+f 1 2 3
+usemtl red
+f 2 4 3
+f 1 2 4
+usemtl grey
+f 1 4 3
+)"));
+  ASSERT_EQ(loaded.materials.size(), 2u);
+  EXPECT_EQ(loaded.materials[0].name, "grey");
+  EXPECT_EQ(loaded.materials[0].color, Color(0.25f, 0.25f, 0.25f));
+  EXPECT_EQ(loaded.materials[1].name, "red");
+  EXPECT_EQ(loaded.materials[1].color, Color(1, 0, 0));
+  EXPECT_NEAR(std::get<PhongParams>(loaded.materials[1].params).specular, 0.6f, 1e-6f);
+  EXPECT_EQ(std::get<PhongParams>(loaded.materials[1].params).shininess, 50.0f);
+  EXPECT_EQ(loaded.mesh.triangle_materials, (std::vector<std::uint32_t>{0, 1, 1, 0}));
+  EXPECT_EQ(loaded.stats.materials, 2u);
+  // Unused MTL statements are reported once per keyword, with their count.
+  EXPECT_TRUE(has_warning_containing(loaded.stats, "two.mtl:6: ignored 'illum' (1 in total)"));
+  EXPECT_TRUE(has_warning_containing(loaded.stats, "two.mtl:9: ignored 'Ka' (1 in total)"));
+}
+
+TEST(ObjLoader, OneMaterialNeedsNoPerTriangleList) {
+  write_file("one.mtl", "newmtl blue\nKd 0 0 1\n");
+  const LoadedMesh loaded = load_mesh_file(write_file("one.obj",
+                                                      "mtllib one.mtl\nusemtl blue\n"
+                                                      "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  ASSERT_EQ(loaded.materials.size(), 1u);
+  EXPECT_EQ(loaded.materials[0].color, Color(0, 0, 1));
+  EXPECT_EQ(loaded.mesh.material, 0u);
+  EXPECT_TRUE(loaded.mesh.triangle_materials.empty());
+}
+
+TEST(ObjLoader, FacesBeforeAnyUsemtlShareADefaultMaterial) {
+  write_file("one.mtl", "newmtl blue\nKd 0 0 1\n");
+  const LoadedMesh loaded = load_mesh_file(write_file("mixed.obj",
+                                                      "mtllib one.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                                      "f 1 2 3\nusemtl blue\nf 1 3 2\n"));
+  ASSERT_EQ(loaded.materials.size(), 2u);
+  EXPECT_EQ(loaded.materials[0].name, "default");
+  EXPECT_EQ(loaded.mesh.triangle_materials, (std::vector<std::uint32_t>{0, 1}));
+}
+
+TEST(ObjLoader, MissingMaterialLibraryIsAWarningAndMaterialsFallBack) {
+  const LoadedMesh loaded = load_mesh_file(write_file("nolib.obj",
+                                                      "mtllib absent.mtl\nusemtl shiny\n"
+                                                      "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  EXPECT_TRUE(has_warning_containing(loaded.stats, "nolib.obj:1: material library 'absent.mtl' not found"));
+  EXPECT_TRUE(has_warning_containing(loaded.stats, "nolib.obj:2: material 'shiny' is not defined"));
+  ASSERT_EQ(loaded.materials.size(), 1u);
+  EXPECT_EQ(loaded.materials[0].name, "shiny");
+  EXPECT_EQ(loaded.materials[0].color, MaterialDesc{}.color);
+}
+
+TEST(ObjLoader, MaterialLibrariesOutsideTheObjFolderAreRejected) {
+  write_file("x.mtl", "newmtl x\n");
+  const InputError up = mesh_load_error(write_file("sub/escape.obj", "v 0 0 0\nmtllib ../x.mtl\n"));
+  EXPECT_EQ(up.where().line, 2);
+  EXPECT_NE(up.message().find("leaves the OBJ's folder"), std::string::npos) << up.message();
+  const InputError sneaky = mesh_load_error(write_file("sub/sneaky.obj", "mtllib a/../../x.mtl\n"));
+  EXPECT_NE(sneaky.message().find("leaves the OBJ's folder"), std::string::npos) << sneaky.message();
+  const InputError absolute = mesh_load_error(write_file("absolute.obj", "mtllib /etc/passwd\n"));
+  EXPECT_NE(absolute.message().find("must be relative"), std::string::npos) << absolute.message();
+  // Going down and back up inside the folder is fine.
+  write_file("sub/inner/y.mtl", "newmtl y\n");
+  EXPECT_NO_THROW(load_mesh_file(write_file("sub/fine.obj", "mtllib inner/../inner/y.mtl\n")));
+}
+
+TEST(ObjLoader, MalformedMaterialLibraryNamesItsOwnLine) {
+  write_file("bad.mtl", "newmtl a\nKd 1 abc 0\n");
+  const InputError e = mesh_load_error(write_file("uses_bad.obj", "mtllib bad.mtl\n"));
+  EXPECT_NE(std::string(e.what()).find("bad.mtl:2:6"), std::string::npos) << e.what();
+  write_file("early.mtl", "Kd 1 1 1\n");
+  EXPECT_NE(
+      std::string(mesh_load_error(write_file("uses_early.obj", "mtllib early.mtl\n")).what()).find("before any newmtl"),
+      std::string::npos);
 }
 
 }  // namespace obj_materials_test

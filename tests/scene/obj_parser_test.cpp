@@ -1,5 +1,7 @@
+// Reading OBJ statements: indices, numbers, faces and their errors, and the chunked parallel parse.
 #include "rtpro/core/error.h"
 #include "rtpro/scene/mesh_loader.h"
+#include "obj_fixtures.h"
 #include "obj_parser.h"
 #include "test_fixtures.h"
 #include "test_paths.h"
@@ -9,7 +11,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -21,41 +22,9 @@ using test::write_file;
 
 std::string ErrorOf(const std::string& obj_text) { return mesh_load_error(write_file("bad.obj", obj_text)).what(); }
 
-bool has_warning_containing(const MeshLoadStats& stats, const std::string& text) {
-  for (const std::string& w : stats.warnings)
-    if (w.find(text) != std::string::npos) return true;
-  return false;
-}
-
-void expect_unit_normals(const TriangleMesh& mesh) {
-  ASSERT_EQ(mesh.normals.size(), mesh.vertices.size());
-  for (const Vec3& n : mesh.normals) EXPECT_NEAR(length(n), 1.0f, 1e-6f);
-}
-
-Vec3 normal_of_vertex_at(const TriangleMesh& mesh, std::uint32_t triangle, int corner) {
-  const TriangleIndices& t = mesh.triangles[triangle];
-  return mesh.normals[corner == 0 ? t.v0 : corner == 1 ? t.v1 : t.v2];
-}
-
-constexpr const char* kCube = R"(# a unit cube made of quads
-v 0 0 0
-v 1 0 0
-v 1 1 0
-v 0 1 0
-v 0 0 1
-v 1 0 1
-v 1 1 1
-v 0 1 1
-f 1 4 3 2
-f 5 6 7 8
-f 1 2 6 5
-f 2 3 7 6
-f 3 4 8 7
-f 4 1 5 8
-)";
-
 TEST(ObjLoader, CubeOfQuadsWithoutSmoothingGroupsIsFlat) {
-  const LoadedMesh loaded = load_mesh_file(write_file("cube.obj", kCube));
+  const LoadedMesh loaded =
+      load_mesh_file(write_file("cube.obj", std::string(test::kCubePositions) + test::kCubeFaces));
   EXPECT_EQ(loaded.mesh.vertices.size(), 8u);
   EXPECT_EQ(loaded.mesh.triangles.size(), 12u);
   EXPECT_EQ(loaded.stats.faces, 6u);
@@ -158,39 +127,6 @@ TEST(ObjLoader, MalformedFacesAreErrors) {
   EXPECT_NE(ErrorOf(vertices + "f 1 2 99999999999999999999\n").find("expected a vertex index"), std::string::npos);
 }
 
-TEST(ObjLoader, FileNormalsAreUsedAndSplitVerticesWhereCornersDiffer) {
-  // Two triangles sharing the edge 2-3 but with different normals there: 4 positions, 6 vertices.
-  const LoadedMesh loaded = load_mesh_file(write_file("normals.obj", R"(v 0 0 0
-v 1 0 0
-v 0 1 0
-v 1 1 0
-vt 0 0
-vn 0 0 2
-vn 0 1 1
-f 1//1 2//1 3//1
-f 2/1/2 4/1/2 3/1/2
-)"));
-  EXPECT_FALSE(loaded.stats.normals_generated);
-  EXPECT_EQ(loaded.mesh.vertices.size(), 6u);
-  ASSERT_EQ(loaded.mesh.triangles.size(), 2u);
-  expect_unit_normals(loaded.mesh);
-  EXPECT_EQ(normal_of_vertex_at(loaded.mesh, 0, 1), Vec3(0, 0, 1));
-  const float s = 1.0f / std::sqrt(2.0f);
-  EXPECT_NEAR(normal_of_vertex_at(loaded.mesh, 1, 0).y, s, 1e-6f);
-  EXPECT_NEAR(normal_of_vertex_at(loaded.mesh, 1, 0).z, s, 1e-6f);
-  EXPECT_EQ(loaded.mesh.vertex(loaded.mesh.triangles[1].v0), loaded.mesh.vertex(loaded.mesh.triangles[0].v1));
-}
-
-TEST(ObjLoader, NormalsMissingOnSomeCornersAreSetAsideWithAWarning) {
-  const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 2 4 3\n";
-  const LoadedMesh loaded = load_mesh_file(write_file("partial.obj", text));
-  EXPECT_TRUE(has_warning_containing(loaded.stats, "the file's normals are not used"));
-  EXPECT_TRUE(loaded.mesh.normals.empty());  // no smoothing group: flat
-  const LoadedMesh smooth = load_mesh_file(write_file("partial.obj", "s 1\n" + text));
-  EXPECT_TRUE(smooth.stats.normals_generated);
-  expect_unit_normals(smooth.mesh);
-}
-
 TEST(ObjLoader, DegenerateTrianglesAreDroppedAndCounted) {
   const LoadedMesh loaded = load_mesh_file(write_file("degenerate.obj",
                                                       "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
@@ -198,150 +134,6 @@ TEST(ObjLoader, DegenerateTrianglesAreDroppedAndCounted) {
   EXPECT_EQ(loaded.stats.faces, 3u);
   EXPECT_EQ(loaded.mesh.triangles.size(), 2u);
   EXPECT_EQ(loaded.stats.dropped_degenerate, 2u);
-}
-
-TEST(ObjLoader, MaterialsComeFromTheLibraryPerTriangle) {
-  write_file("two.mtl",
-             "# colours\nnewmtl red\nKd 1 0 0\nKs 0.3 0.6 0.9\nNs 50\nillum 2\n"
-             "newmtl grey\nKd 0.25\nKa 0 0 0\n");
-  const LoadedMesh loaded = load_mesh_file(write_file("two.obj", R"(mtllib two.mtl
-v 0 0 0
-v 1 0 0
-v 0 1 0
-v 1 1 0
-usemtl grey
-f 1 2 3
-usemtl red
-f 2 4 3
-f 1 2 4
-usemtl grey
-f 1 4 3
-)"));
-  ASSERT_EQ(loaded.materials.size(), 2u);
-  EXPECT_EQ(loaded.materials[0].name, "grey");
-  EXPECT_EQ(loaded.materials[0].color, Color(0.25f, 0.25f, 0.25f));
-  EXPECT_EQ(loaded.materials[1].name, "red");
-  EXPECT_EQ(loaded.materials[1].color, Color(1, 0, 0));
-  EXPECT_NEAR(std::get<PhongParams>(loaded.materials[1].params).specular, 0.6f, 1e-6f);
-  EXPECT_EQ(std::get<PhongParams>(loaded.materials[1].params).shininess, 50.0f);
-  EXPECT_EQ(loaded.mesh.triangle_materials, (std::vector<std::uint32_t>{0, 1, 1, 0}));
-  EXPECT_EQ(loaded.stats.materials, 2u);
-  // Unused MTL statements are reported once per keyword, with their count.
-  EXPECT_TRUE(has_warning_containing(loaded.stats, "two.mtl:6: ignored 'illum' (1 in total)"));
-  EXPECT_TRUE(has_warning_containing(loaded.stats, "two.mtl:9: ignored 'Ka' (1 in total)"));
-}
-
-TEST(ObjLoader, OneMaterialNeedsNoPerTriangleList) {
-  write_file("one.mtl", "newmtl blue\nKd 0 0 1\n");
-  const LoadedMesh loaded = load_mesh_file(write_file("one.obj",
-                                                      "mtllib one.mtl\nusemtl blue\n"
-                                                      "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
-  ASSERT_EQ(loaded.materials.size(), 1u);
-  EXPECT_EQ(loaded.materials[0].color, Color(0, 0, 1));
-  EXPECT_EQ(loaded.mesh.material, 0u);
-  EXPECT_TRUE(loaded.mesh.triangle_materials.empty());
-}
-
-TEST(ObjLoader, FacesBeforeAnyUsemtlShareADefaultMaterial) {
-  write_file("one.mtl", "newmtl blue\nKd 0 0 1\n");
-  const LoadedMesh loaded = load_mesh_file(write_file("mixed.obj",
-                                                      "mtllib one.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
-                                                      "f 1 2 3\nusemtl blue\nf 1 3 2\n"));
-  ASSERT_EQ(loaded.materials.size(), 2u);
-  EXPECT_EQ(loaded.materials[0].name, "default");
-  EXPECT_EQ(loaded.mesh.triangle_materials, (std::vector<std::uint32_t>{0, 1}));
-}
-
-TEST(ObjLoader, MissingMaterialLibraryIsAWarningAndMaterialsFallBack) {
-  const LoadedMesh loaded = load_mesh_file(write_file("nolib.obj",
-                                                      "mtllib absent.mtl\nusemtl shiny\n"
-                                                      "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
-  EXPECT_TRUE(has_warning_containing(loaded.stats, "nolib.obj:1: material library 'absent.mtl' not found"));
-  EXPECT_TRUE(has_warning_containing(loaded.stats, "nolib.obj:2: material 'shiny' is not defined"));
-  ASSERT_EQ(loaded.materials.size(), 1u);
-  EXPECT_EQ(loaded.materials[0].name, "shiny");
-  EXPECT_EQ(loaded.materials[0].color, MaterialDesc{}.color);
-}
-
-TEST(ObjLoader, MaterialLibrariesOutsideTheObjFolderAreRejected) {
-  write_file("x.mtl", "newmtl x\n");
-  const InputError up = mesh_load_error(write_file("sub/escape.obj", "v 0 0 0\nmtllib ../x.mtl\n"));
-  EXPECT_EQ(up.where().line, 2);
-  EXPECT_NE(up.message().find("leaves the OBJ's folder"), std::string::npos) << up.message();
-  const InputError sneaky = mesh_load_error(write_file("sub/sneaky.obj", "mtllib a/../../x.mtl\n"));
-  EXPECT_NE(sneaky.message().find("leaves the OBJ's folder"), std::string::npos) << sneaky.message();
-  const InputError absolute = mesh_load_error(write_file("absolute.obj", "mtllib /etc/passwd\n"));
-  EXPECT_NE(absolute.message().find("must be relative"), std::string::npos) << absolute.message();
-  // Going down and back up inside the folder is fine.
-  write_file("sub/inner/y.mtl", "newmtl y\n");
-  EXPECT_NO_THROW(load_mesh_file(write_file("sub/fine.obj", "mtllib inner/../inner/y.mtl\n")));
-}
-
-TEST(ObjLoader, MalformedMaterialLibraryNamesItsOwnLine) {
-  write_file("bad.mtl", "newmtl a\nKd 1 abc 0\n");
-  const InputError e = mesh_load_error(write_file("uses_bad.obj", "mtllib bad.mtl\n"));
-  EXPECT_NE(std::string(e.what()).find("bad.mtl:2:6"), std::string::npos) << e.what();
-  write_file("early.mtl", "Kd 1 1 1\n");
-  EXPECT_NE(
-      std::string(mesh_load_error(write_file("uses_early.obj", "mtllib early.mtl\n")).what()).find("before any newmtl"),
-      std::string::npos);
-}
-
-// Two triangles sharing the edge (1,0,0)-(0,1,0), folded along it.
-constexpr const char* kFold = R"(v 0 0 0
-v 1 0 0
-v 0 1 0
-v 1 1 1
-)";
-
-TEST(ObjLoader, OneSmoothingGroupSharesAndAveragesNormalsAlongTheEdge) {
-  const LoadedMesh loaded = load_mesh_file(write_file("smooth.obj", std::string(kFold) + "s 1\nf 1 2 3\nf 2 4 3\n"));
-  EXPECT_EQ(loaded.mesh.vertices.size(), 4u);
-  expect_unit_normals(loaded.mesh);
-  const Vec3 shared_in_first = normal_of_vertex_at(loaded.mesh, 0, 1);
-  const Vec3 shared_in_second = normal_of_vertex_at(loaded.mesh, 1, 0);
-  EXPECT_EQ(shared_in_first, shared_in_second);
-  // The average of the two face normals, (0,0,1) and (-1,-1,1)/sqrt(3), weighted by area.
-  const Vec3 face_a(0, 0, 1), face_b = normalize(Vec3(-1, -1, 1));
-  EXPECT_GT(dot(shared_in_first, face_a), 0.5f);
-  EXPECT_GT(dot(shared_in_first, face_b), 0.5f);
-  EXPECT_LT(dot(shared_in_first, face_a), 0.999f);
-}
-
-TEST(ObjLoader, FlatFacesKeepTheirFaceNormals) {
-  const LoadedMesh loaded =
-      load_mesh_file(write_file("flat.obj", std::string(kFold) + "s 1\nf 1 2 3\ns off\nf 2 4 3\n"));
-  EXPECT_EQ(loaded.mesh.vertices.size(), 6u);
-  expect_unit_normals(loaded.mesh);
-  EXPECT_EQ(normal_of_vertex_at(loaded.mesh, 0, 1), Vec3(0, 0, 1));
-  for (int corner = 0; corner < 3; ++corner) {
-    const Vec3 n = normal_of_vertex_at(loaded.mesh, 1, corner);
-    EXPECT_NEAR(dot(n, normalize(Vec3(-1, -1, 1))), 1.0f, 1e-6f);
-  }
-}
-
-TEST(ObjLoader, DifferentSmoothingGroupsDoNotShareVertices) {
-  const LoadedMesh loaded =
-      load_mesh_file(write_file("groups.obj", std::string(kFold) + "s 1\nf 1 2 3\ns 2\nf 2 4 3\n"));
-  EXPECT_EQ(loaded.mesh.vertices.size(), 6u);
-  EXPECT_EQ(normal_of_vertex_at(loaded.mesh, 0, 1), Vec3(0, 0, 1));
-}
-
-TEST(ObjLoader, AnAllFlatMeshHasNoNormals) {
-  const LoadedMesh loaded = load_mesh_file(write_file("allflat.obj", std::string(kFold) + "s off\nf 1 2 3\nf 2 4 3\n"));
-  EXPECT_TRUE(loaded.mesh.normals.empty());
-  EXPECT_FALSE(loaded.stats.normals_generated);
-  EXPECT_EQ(loaded.mesh.vertices.size(), 4u);
-}
-
-TEST(ObjLoader, HugeAndTinyTrianglesStillGetUnitNormals) {
-  // Cross products of 1e15 and 1e-19 coordinates square beyond and below float range.
-  const LoadedMesh huge = load_mesh_file(write_file("huge.obj", "s 1\nv 0 0 0\nv 1e15 0 0\nv 0 1e15 0\nf 1 2 3\n"));
-  const LoadedMesh tiny = load_mesh_file(write_file("tiny.obj", "s 1\nv 0 0 0\nv 1e-19 0 0\nv 0 1e-19 0\nf 1 2 3\n"));
-  for (const LoadedMesh* loaded : {&huge, &tiny}) {
-    ASSERT_EQ(loaded->mesh.normals.size(), 3u);
-    for (const Vec3& n : loaded->mesh.normals) EXPECT_EQ(n, Vec3(0, 0, 1));
-  }
 }
 
 TEST(ObjLoader, UnknownStatementsWarnOncePerKeyword) {

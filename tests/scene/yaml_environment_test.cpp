@@ -3,6 +3,7 @@
 #include "rtpro/scene/scene_parser.h"
 
 #include "test_paths.h"
+#include "scene_text_error.h"
 
 #include <gtest/gtest.h>
 
@@ -11,21 +12,10 @@
 namespace rtpro {
 namespace yaml_environment_test {
 
-const std::string kHeader =
-    "rtpro: 1\n"
-    "camera: {position: [0, 1, -5], look_at: [0, 0, 0]}\n";
+using test::kHeader;
+using test::parse_error;
 
 std::string sunset() { return (test::scenes_dir() / "environments" / "sunset.exr").string(); }
-
-InputError parse_error(const std::string& text) {
-  try {
-    parse_scene_text(text, "test.yaml");
-  } catch (const InputError& error) {
-    return error;
-  }
-  ADD_FAILURE() << "no InputError for:\n" << text;
-  return InputError("(none)");
-}
 
 // The error is on line 3 (the environment's) and says each fragment.
 void expect_error_on_line_3(const std::string& environment, const std::vector<std::string>& fragments) {

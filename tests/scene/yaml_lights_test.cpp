@@ -3,6 +3,7 @@
 #include "rtpro/core/error.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
+#include "scene_text_error.h"
 
 #include <gtest/gtest.h>
 
@@ -15,11 +16,9 @@
 namespace rtpro {
 namespace yaml_lights_test {
 
-// Two lines; the light is on line 3.
-const std::string kHeader =
-    "rtpro: 1\n"
-    "camera: {position: [0, 1, -5], look_at: [0, 0, 0]}\n";
+using test::kHeader;
 
+// kHeader is two lines: the light is on line 3.
 std::string with_light(const std::string& light) { return kHeader + "lights:\n  - " + light + "\n"; }
 
 SpotLightDesc spot_of(const std::string& light) {

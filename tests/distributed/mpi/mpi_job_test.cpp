@@ -4,6 +4,7 @@
 // without touching the output, and --resume finishes it exactly.
 #include "rtpro/image/image_io.h"
 #include "test_fixtures.h"
+#include "test_commands.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -14,13 +15,17 @@
 #include <cstring>
 #include <fstream>
 #include <sys/wait.h>
+#include <string>
 #include <thread>
 #include <unistd.h>
+#include <vector>
 
 namespace rtpro {
 namespace mpi_job_test {
 
 using test::expect_same_pixels;
+using test::render_args;
+using test::rtpro_command;
 using test::rtpro_executable;
 using test::run_command;
 
@@ -41,7 +46,7 @@ world:
   - {type: sphere, center: [0, 0.3, 1.5], radius: 0.3}
 )";
 
-const std::string kAovs = " --aov albedo,normal,depth,object-id";
+const std::string kAovs = "albedo,normal,depth,object-id";
 
 // Open MPI refuses root without these, and more ranks than cores without oversubscription;
 // --bind-to none lets each rank's threads run on any core. In the sanitizer build, leak checking
@@ -57,8 +62,9 @@ std::string mpirun(int ranks) {
   return kMpiEnvironment + std::string(RTPRO_MPIEXEC " --bind-to none -n ") + std::to_string(ranks) + " ";
 }
 
-std::string render_args(const std::filesystem::path& scene, const std::filesystem::path& out) {
-  return rtpro_executable().string() + " render " + scene.string() + " -o " + out.string() + kAovs + " -q";
+// The command line of a quiet render of `scene` into `out` with every AOV.
+std::string render_command(const std::filesystem::path& scene, const std::filesystem::path& out) {
+  return rtpro_command(render_args(scene, out, "--aov " + kAovs + " -q"));
 }
 
 TEST(MpiJob, ImageIsBitIdenticalToOneProcessForAnyRanksThreadsAndTiles) {
@@ -69,7 +75,7 @@ TEST(MpiJob, ImageIsBitIdenticalToOneProcessForAnyRanksThreadsAndTiles) {
   };
   for (const std::string backend : {"native", "embree"}) {
     const auto reference = dir / (backend + ".exr");
-    ASSERT_EQ(run_command(render_args(scene, reference) + " --backend " + backend), 0);
+    ASSERT_EQ(run_command(render_command(scene, reference) + " --backend " + backend), 0);
     for (const Run run : {Run{1, 2, 16}, Run{2, 1, 7}, Run{3, 2, 16}, Run{4, 1, 5}}) {
       const std::string name =
           backend + std::to_string(run.ranks) + "x" + std::to_string(run.threads) + "t" + std::to_string(run.tile_size);
@@ -77,7 +83,7 @@ TEST(MpiJob, ImageIsBitIdenticalToOneProcessForAnyRanksThreadsAndTiles) {
       const auto out = dir / (name + ".exr");
       const auto stats = dir / (name + ".json");
       std::string output;
-      ASSERT_EQ(run_command(mpirun(run.ranks) + render_args(scene, out) + " --backend " + backend + " --threads " +
+      ASSERT_EQ(run_command(mpirun(run.ranks) + render_command(scene, out) + " --backend " + backend + " --threads " +
                                 std::to_string(run.threads) + " --tile-size " + std::to_string(run.tile_size) +
                                 " --stats-json " + stats.string(),
                             &output),
@@ -85,8 +91,7 @@ TEST(MpiJob, ImageIsBitIdenticalToOneProcessForAnyRanksThreadsAndTiles) {
           << output;
       expect_same_pixels(reference, out);
       EXPECT_FALSE(std::filesystem::exists(out.string() + ".rtpro-journal"));
-      std::ifstream json(stats);
-      const std::string text((std::istreambuf_iterator<char>(json)), {});
+      const std::string text = test::read_file(stats);
       if (run.ranks > 1) {
         EXPECT_NE(text.find("\"load_imbalance\""), std::string::npos) << text;
         EXPECT_NE(text.find("\"rank\": " + std::to_string(run.ranks - 1)), std::string::npos) << text;
@@ -102,7 +107,8 @@ TEST(MpiJob, RanksThatWouldRenderSomethingElseAreRefused) {
   // Open MPI's MPMD form: rank 0 and rank 1 run different command lines.
   std::string output;
   const int code = run_command(
-      mpirun(1) + render_args(scene, out) + " : -n 1 " + render_args(scene, out) + " --set render.seed=10", &output);
+      mpirun(1) + render_command(scene, out) + " : -n 1 " + render_command(scene, out) + " --set render.seed=10",
+      &output);
   EXPECT_EQ(code, 2) << output;
   EXPECT_NE(output.find("rank 1 would render another job than rank 0"), std::string::npos) << output;
   EXPECT_NE(output.find("seed: 9 here, 10 in rank 1"), std::string::npos) << output;
@@ -127,13 +133,43 @@ pid_t rank_process(pid_t mpirun_pid, int rank) {
   return 0;
 }
 
-// In a forked child about to exec mpiexec: Open MPI allowed to run as root (CI) and to place more
-// ranks than cores; leak checks off (a rank killed or ended by MPI_Abort leaks by design).
-void set_mpiexec_environment() {
+// Starts mpiexec with `ranks` ranks of a single-threaded render of `scene` into `out`, in tiles of
+// 8, `extra` added to its arguments, and its standard error to `log` if one is named; returns
+// mpiexec's PID.
+// Open MPI is allowed to run as root (CI) and to place more ranks than cores; leak checks are off
+// (a rank killed or ended by MPI_Abort leaks by design).
+pid_t start_job(int ranks, const std::filesystem::path& scene, const std::filesystem::path& out,
+                const std::vector<std::string>& extra, const std::filesystem::path& log = {}) {
+  const pid_t job = fork();
+  if (job != 0) return job;
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
   setenv("OMPI_MCA_rmaps_base_oversubscribe", "1", 1);
   setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
+  if (!log.empty() && !std::freopen(log.c_str(), "w", stderr)) _exit(127);
+  std::vector<std::string> argv = {RTPRO_MPIEXEC,
+                                   "--bind-to",
+                                   "none",
+                                   "-n",
+                                   std::to_string(ranks),
+                                   rtpro_executable().string(),
+                                   "render",
+                                   scene.string(),
+                                   "-o",
+                                   out.string(),
+                                   "--aov",
+                                   kAovs,
+                                   "-q",
+                                   "--threads",
+                                   "1",
+                                   "--tile-size",
+                                   "8"};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  std::vector<char*> args;
+  for (std::string& arg : argv) args.push_back(arg.data());
+  args.push_back(nullptr);
+  execv(args[0], args.data());
+  _exit(127);
 }
 
 TEST(MpiJob, KilledRankEndsTheJobAndResumeFinishesItExactly) {
@@ -141,19 +177,11 @@ TEST(MpiJob, KilledRankEndsTheJobAndResumeFinishesItExactly) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto reference = dir / "reference.exr", out = dir / "out.exr";
   const std::filesystem::path journal = out.string() + ".rtpro-journal";
-  ASSERT_EQ(run_command(render_args(scene, reference) + " --spp 1024"), 0);
+  ASSERT_EQ(run_command(render_command(scene, reference) + " --spp 1024"), 0);
   std::ofstream(out) << "a previous good image";
 
-  const pid_t job = fork();
+  const pid_t job = start_job(3, scene, out, {"--spp", "1024"});
   ASSERT_GE(job, 0);
-  if (job == 0) {
-    set_mpiexec_environment();
-    const std::string exe = rtpro_executable().string();
-    execl(RTPRO_MPIEXEC, RTPRO_MPIEXEC, "--bind-to", "none", "-n", "3", exe.c_str(), "render", scene.c_str(), "-o",
-          out.c_str(), "--aov", "albedo,normal,depth,object-id", "-q", "--spp", "1024", "--threads", "1", "--tile-size",
-          "8", static_cast<char*>(nullptr));
-    _exit(127);
-  }
   // Kill rank 1 once the journal holds about ten of the 70 tiles (8 x 8 pixels, 14 channels: 3.7 KB
   // a record).
   int status = 0;
@@ -177,13 +205,12 @@ TEST(MpiJob, KilledRankEndsTheJobAndResumeFinishesItExactly) {
   EXPECT_LT(seconds, 10.0) << "the job did not end soon after a rank died";
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_NE(WEXITSTATUS(status), 0);
-  std::ifstream previous(out);
-  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(previous), {}), "a previous good image");
+  EXPECT_EQ(test::read_file(out), "a previous good image");
   ASSERT_TRUE(std::filesystem::exists(journal));
 
   // Resumed by a job of another size; then the image is the uninterrupted one, bit for bit.
   std::string output;
-  ASSERT_EQ(run_command(mpirun(2) + render_args(scene, out) + " --spp 1024 --tile-size 8 --resume", &output), 0)
+  ASSERT_EQ(run_command(mpirun(2) + render_command(scene, out) + " --spp 1024 --tile-size 8 --resume", &output), 0)
       << output;
   expect_same_pixels(reference, out);
   EXPECT_FALSE(std::filesystem::exists(journal));
@@ -196,14 +223,15 @@ TEST(MpiJob, FramesOverThreeRanksFinishEveryTime) {
   const auto dir = test::scratch_dir();
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto reference = dir / "reference.exr";
-  ASSERT_EQ(run_command(render_args(scene, reference) + " --spp 4"), 0);
+  ASSERT_EQ(run_command(render_command(scene, reference) + " --spp 4"), 0);
   for (int run = 0; run < 4; ++run) {
     SCOPED_TRACE("run " + std::to_string(run));
     const auto pattern = dir / ("run" + std::to_string(run) + "_#.exr");
     std::string output;
-    ASSERT_EQ(run_command(mpirun(3) + render_args(scene, pattern) + " --spp 4 --frames 1-3 --threads 1 --tile-size 8",
-                          &output),
-              0)
+    ASSERT_EQ(
+        run_command(mpirun(3) + render_command(scene, pattern) + " --spp 4 --frames 1-3 --threads 1 --tile-size 8",
+                    &output),
+        0)
         << output;
     for (int frame = 1; frame <= 3; ++frame)
       expect_same_pixels(reference, dir / ("run" + std::to_string(run) + "_" + std::to_string(frame) + ".exr"));
@@ -218,20 +246,11 @@ TEST(MpiJob, StoppedRankEndsTheJobAfterTheRankTimeoutAndResumeFinishesIt) {
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto reference = dir / "reference.exr", out = dir / "out.exr", log = dir / "job.log";
   const std::filesystem::path journal = out.string() + ".rtpro-journal";
-  ASSERT_EQ(run_command(render_args(scene, reference) + " --spp 256"), 0);
+  ASSERT_EQ(run_command(render_command(scene, reference) + " --spp 256"), 0);
   std::ofstream(out) << "a previous good image";
 
-  const pid_t job = fork();
+  const pid_t job = start_job(2, scene, out, {"--spp", "256", "--rank-timeout", "2"}, log);
   ASSERT_GE(job, 0);
-  if (job == 0) {
-    set_mpiexec_environment();
-    std::freopen(log.c_str(), "w", stderr);
-    const std::string exe = rtpro_executable().string();
-    execl(RTPRO_MPIEXEC, RTPRO_MPIEXEC, "--bind-to", "none", "-n", "2", exe.c_str(), "render", scene.c_str(), "-o",
-          out.c_str(), "--aov", "albedo,normal,depth,object-id", "-q", "--spp", "256", "--threads", "1", "--tile-size",
-          "8", "--rank-timeout", "2", static_cast<char*>(nullptr));
-    _exit(127);
-  }
   // Stop rank 1 once the journal holds a few of the 70 tiles (3.7 KB a record).
   int status = 0;
   pid_t victim = 0;
@@ -258,15 +277,13 @@ TEST(MpiJob, StoppedRankEndsTheJobAfterTheRankTimeoutAndResumeFinishesIt) {
   ASSERT_LT(seconds, 10.0) << "the job did not end soon after the rank timeout";
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_NE(WEXITSTATUS(status), 0);
-  std::ifstream text(log);
-  const std::string messages(std::istreambuf_iterator<char>(text), {});
+  const std::string messages = test::read_file(log);
   EXPECT_NE(messages.find("rank 1 sent nothing for"), std::string::npos) << messages;
-  std::ifstream previous(out);
-  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(previous), {}), "a previous good image");
+  EXPECT_EQ(test::read_file(out), "a previous good image");
   ASSERT_TRUE(std::filesystem::exists(journal));
 
   std::string output;
-  ASSERT_EQ(run_command(render_args(scene, out) + " --spp 256 --tile-size 8 --resume", &output), 0) << output;
+  ASSERT_EQ(run_command(render_command(scene, out) + " --spp 256 --tile-size 8 --resume", &output), 0) << output;
   expect_same_pixels(reference, out);
 }
 
