@@ -14,13 +14,13 @@ rtpro_add_wing(render sampling SHARES alias_table.h camera_samplers.h sample_dim
 rtpro_add_wing(render surface
   SHARES normal_map.h ray_offset.h shading_frame.h surface.h surface_batch.h texture.h)
 rtpro_add_wing(render bsdf
-  SHARES beer_lambert.h bsdf.h bsdf_sample.h conductor_bsdf.h cosine_lanes.h dielectric.h dielectric_bsdf.h
-         diffuse_bsdf.h material_bsdf.h microfacet.h phong_bsdf.h principled_bsdf.h sheen.h
+  SHARES beer_lambert.h bsdf.h bsdf_sample.h cosine_lanes.h dielectric.h microfacet.h sheen.h
+  SHARES_MATCHING *_bsdf.h
   USES surface)
 rtpro_add_wing(render lights
-  SHARES directional_light_sample.h light_linking.h light_picker.h light_sample.h light_sample_value.h light_set.h
-         light_tree.h path_light.h point_light_lanes.h point_light_sample.h quad_light_sample.h
-         sphere_light_sample.h spot_light_sample.h
+  SHARES light_linking.h light_picker.h light_sample.h light_sample_value.h light_set.h light_tree.h path_light.h
+         point_light_lanes.h
+  SHARES_MATCHING *_light_sample.h
   USES sampling surface
   PRIVATE_DEPENDS TBB::tbb)
 rtpro_add_wing(render film PRIVATE_DEPENDS TBB::tbb)

@@ -4,13 +4,20 @@
 # wing below it SHARES; it may use only wings declared before it, so the arrows point one way.
 # Other modules see only the public headers.
 
-# rtpro_add_wing(MODULE WING [SHARES header...] [USES wing...] [PRIVATE_DEPENDS target...])
+# rtpro_add_wing(MODULE WING [SHARES header...] [SHARES_MATCHING pattern...] [USES wing...]
+#                [PRIVATE_DEPENDS target...])
 # SHARES are the wing's headers the wings above may include: each is linked into an include root
 # of the wing's own, so its other headers stay private to it. A shared header may include only
-# public headers and other shared ones.
+# public headers and other shared ones. SHARES_MATCHING shares every header whose name matches a
+# pattern: each kind's header (`*_light_sample.h`), which a shared registry includes, so that a new
+# kind's header is shared as it appears (the build re-runs CMake) and adding a kind edits no list.
 function(rtpro_add_wing module wing)
-  cmake_parse_arguments(ARG "" "" "SHARES;USES;PRIVATE_DEPENDS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SHARES;SHARES_MATCHING;USES;PRIVATE_DEPENDS" ${ARGN})
   set(folder ${CMAKE_SOURCE_DIR}/src/${module}/${wing})
+  foreach(pattern IN LISTS ARG_SHARES_MATCHING)
+    file(GLOB matching RELATIVE ${folder} CONFIGURE_DEPENDS ${folder}/${pattern})
+    list(APPEND ARG_SHARES ${matching})
+  endforeach()
   set(shared_root ${CMAKE_BINARY_DIR}/wing_include/${module}/${wing})
   file(REMOVE_RECURSE ${shared_root})
   file(MAKE_DIRECTORY ${shared_root})

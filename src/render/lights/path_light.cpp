@@ -9,6 +9,8 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <type_traits>
+#include <variant>
 
 namespace rtpro {
 
@@ -235,6 +237,32 @@ struct Meeting {
   std::optional<float> operator()(const EmissiveSphere&) const { return std::nullopt; }
   std::optional<float> operator()(const EnvironmentRef&) const { return std::nullopt; }
 };
+
+// Each visitor above has an overload for every kind of PathLight: a kind without one stops the
+// build here, the kind and the visitor named, rather than deep inside std::visit.
+template <typename Kind>
+constexpr bool has_path_light_overloads() {
+  static_assert(std::is_invocable_v<const Power&, const Kind&>,
+                "a kind of light needs its Power: what it is picked by");
+  static_assert(std::is_invocable_v<const Bounds&, const Kind&>,
+                "a kind of light needs its Bounds: its box and cone in the light tree, or nothing");
+  static_assert(std::is_invocable_v<const Sampler&, const Kind&>,
+                "a kind of light needs its Sampler: a sample of it seen from a point");
+  static_assert(std::is_invocable_v<const Pdf&, const Kind&>, "a kind of light needs its Pdf: that sample's pdf");
+  static_assert(std::is_invocable_v<const MetByRays&, const Kind&>,
+                "a kind of light needs its MetByRays: whether camera and BSDF rays meet it here");
+  static_assert(std::is_invocable_v<const SamplesByNumber&, const Kind&>,
+                "a kind of light needs its SamplesByNumber: whether its sample is a point the numbers choose");
+  static_assert(std::is_invocable_v<const Meeting&, const Kind&>,
+                "a kind of light needs its Meeting: where a ray meets it, for one MetByRays says rays meet");
+  return true;
+}
+
+template <typename... Kinds>
+constexpr bool has_path_light_overloads(const std::variant<Kinds...>*) {
+  return (has_path_light_overloads<Kinds>() && ...);
+}
+static_assert(has_path_light_overloads(static_cast<const PathLight*>(nullptr)));
 
 }  // namespace
 
