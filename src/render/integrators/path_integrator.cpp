@@ -143,14 +143,14 @@ class PathVertexStep {
     return 1.0f;
   }
 
-  // L += β·Le·w_b for emission at `on_light` (of light `light`, kInvalidId for an emitter light
-  // sampling never picks: that counts in full).
-  void add_emission(const Path& path, SampleResult& result, const Color& Le, std::uint32_t light, const Vec3& on_light,
-                    const Color& beta) {
+  // L += β·Le·w_b for the radiance Le emitted at `on_light` (of light `light`, kInvalidId for an
+  // emitter light sampling never picks: that counts in full).
+  void add_emission(const Path& path, SampleResult& result, const Color& radiance, std::uint32_t light,
+                    const Vec3& on_light, const Color& beta) {
     const float w_b = light == kInvalidId ? 1.0f : bsdf_sample_weight(path, [&] {
       return lights_.pdf(light, path.origin, on_light, path.group);
     });
-    result.radiance += beta * Le * w_b;
+    result.radiance += beta * radiance * w_b;
   }
 
   // A ray that leaves the scene: the environment, weighted as emission is, or the background.
@@ -161,9 +161,9 @@ class PathVertexStep {
       result.radiance += path.beta * scene_.render.background;
       return;
     }
-    const Color Le = environment->radiance(ray.dir);
+    const Color radiance = environment->radiance(ray.dir);
     const float w_b = bsdf_sample_weight(path, [&] { return lights_.environment_pdf(ray.dir, path.group); });
-    result.radiance += path.beta * Le * w_b;
+    result.radiance += path.beta * radiance * w_b;
   }
 
   // A point on a light for next-event estimation: the lone point light's sample, made for the
