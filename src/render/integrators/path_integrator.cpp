@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace rtpro {
 
@@ -257,8 +258,10 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
   const RenderScene& scene = scene_;
   start_camera_paths(batch, ws);
   counts[RayKind::kCamera] += batch.rays.size();
+  // Asked per batch, not kept: it points into lights_, which a copy of the integrator would not share.
+  const std::optional<LightSet::LonePointLight> lone_point_light = lights_.lone_point_light();
   PathVertexStep step(scene, lights_, batch.results, ws, textures_, draws_.cosine_directions,
-                      lone_point_light_.has_value());
+                      lone_point_light.has_value());
   for (int generation = 0; !ws.paths.empty(); ++generation) {
     ws.hits.resize(ws.rays.size());
     backend_.intersect(ws.rays, ws.hits, generation == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
@@ -271,7 +274,7 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
     make_surfaces(scene, ws.rays, ws.hits, ws.surfaces);
     if (generation < scene.render.max_depth) {
       ws.samples.draw(sampler, path_keys(batch.keys, ws), generation, draws_);
-      if (lone_point_light_) ws.samples.sample_lone_point_light(*lone_point_light_, ws.surfaces);
+      if (lone_point_light) ws.samples.sample_lone_point_light(*lone_point_light, ws.surfaces);
     }
     for (std::size_t i = 0; i < ws.paths.size(); ++i)
       step.extend(i, ws.paths[i], ws.rays[i], ws.hits[i], ws.surfaces[i], ws.samples[i]);

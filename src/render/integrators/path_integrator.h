@@ -26,7 +26,6 @@
 #include "vertex_samples.h"
 
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 namespace rtpro {
@@ -74,7 +73,7 @@ class PathIntegrator {
   PathIntegrator(const RenderScene& scene, const Backend& backend, const CameraSamplers& samplers,
                  const TextureLookup* textures, const EnvironmentLight* environment)
       : scene_(scene), backend_(backend), samplers_(samplers), textures_(textures), lights_(scene, environment),
-        draws_(vertex_draws(scene, lights_)), lone_point_light_(lights_.lone_point_light()) {}
+        draws_(vertex_draws(scene, lights_)) {}
 
   // Traces the batch's paths; each sample's random numbers come from the sampler render.sampler
   // chooses. Ray counts are added to `counts` (bounces as reflection or refraction rays).
@@ -92,7 +91,6 @@ class PathIntegrator {
   const TextureLookup* textures_;
   LightSet lights_;
   VertexDraws draws_;  // which of a vertex's random numbers the scene reads
-  std::optional<LightSet::LonePointLight> lone_point_light_;
 };
 
 }  // namespace rtpro
