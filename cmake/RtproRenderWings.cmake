@@ -25,7 +25,7 @@ rtpro_add_wing(render lights
   PRIVATE_DEPENDS TBB::tbb)
 rtpro_add_wing(render film PRIVATE_DEPENDS TBB::tbb)
 rtpro_add_wing(render integrators
-  SHARES camera_batch.h integrator.h path_integrator.h whitted_integrator.h
+  SHARES camera_batch.h integrator.h path_integrator.h vertex_samples.h whitted_integrator.h
   USES sampling surface bsdf lights film)
 
 file(GLOB render_sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/render/*.cpp)

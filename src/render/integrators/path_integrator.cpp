@@ -1,25 +1,23 @@
 #include "path_integrator.h"
 
 #include "rtpro/core/append_ray.h"
-#include "cosine_lanes.h"
 #include "beer_lambert.h"
+#include "lambert_fast_paths.h"
 #include "light_linking.h"
 #include "material_bsdf.h"
 #include "texture.h"
 #include "ray_offset.h"
-#include "sample_dimensions.h"
 #include "surface_batch.h"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+#include <optional>
 
 namespace rtpro {
 
 namespace {
 
 using Path = PathWorkspace::Path;
-using VertexSamples = PathWorkspace::VertexSamples;
 
 // The power heuristic (β = 2) for a sample of pdf `a` against the other strategy's pdf `b`.
 float power_heuristic(float a, float b) {
@@ -35,47 +33,45 @@ constexpr float kShadowEpsilon = 1e-4f;
 // No channel positive (NaN counts as nothing).
 bool carries_no_light(const Color& c) { return !(c.x > 0.0f || c.y > 0.0f || c.z > 0.0f); }
 
-// bsdf_eval, a Lambert surface's inline: most vertices of most scenes are, and its f is a
-// comparison and a product, less than the call.
-Color eval_bsdf(const Bsdf& bsdf, const Vec3& wo, const Vec3& wi) {
-  if (const auto* lambert = std::get_if<DiffuseBsdf>(&bsdf)) return lambert->eval(wo, wi);
-  return bsdf_eval(bsdf, wo, wi);
+// The primary hit's AOVs: the camera ray's hit, with the albedo and normal of the path's first
+// vertex that is not purely specular. Returns whether those still wait after this vertex.
+bool record_aovs(const Path& path, const Ray& ray, const Hit& hit, const SurfacePoint& sp, const SurfaceBsdf& surface,
+                 bool delta, PrimaryHit& primary) {
+  if (path.bounce == 0) primary = {true, surface.albedo, sp.shading_normal, hit.t * length(ray.dir), sp.object_id};
+  if (!path.aov_pending || delta) return path.aov_pending;
+  primary.albedo = surface.albedo;
+  primary.normal = sp.shading_normal;
+  return false;
 }
 
-// bsdf_sample, a Lambert surface's from its direction worked out beforehand.
-std::optional<BsdfSample> sample_bsdf(const Bsdf& bsdf, const Vec3& wo, const VertexSamples& u,
-                                      bool cosine_directions) {
-  if (const auto* lambert = std::get_if<DiffuseBsdf>(&bsdf); lambert && cosine_directions)
-    return lambert->sample_toward(wo, u.cosine_direction);
-  return bsdf_sample(bsdf, wo, u.choices.y, u.bsdf_direction);
-}
-
-class PathTracer {
+// One step of the estimator, at the point a path's ray reaches (pbrt-v4's PathIntegrator::Li
+// loop body, for a generation's paths side by side):
+//   L += β·Le·w_b                the emission the ray found, MIS-weighted against light sampling
+//   L += β·f·|cos θ|·Le·w_l/p_l  next-event estimation: a light sample, added if its shadow ray passes
+//   β *= f·|cos θ|/p_b           the BSDF sample, the path's next ray if it survives Russian roulette
+class PathVertexStep {
  public:
-  // `cosine_directions`: the vertices' records hold their Lambert directions (VertexDraws);
-  // `lone_point_light`: the workspace holds their light samples.
-  PathTracer(const RenderScene& scene, const LightSet& lights, std::span<SampleResult> results, PathWorkspace& ws,
-             const TextureLookup* textures, bool cosine_directions, bool lone_point_light)
+  // `cosine_directions`: the vertices' samples hold their Lambert directions (VertexDraws);
+  // `lone_point_light`: they hold their light samples (GenerationSamples::lone_light_sample).
+  PathVertexStep(const RenderScene& scene, const LightSet& lights, std::span<SampleResult> results, PathWorkspace& ws,
+                 const TextureLookup* textures, bool cosine_directions, bool lone_point_light)
       : scene_(scene), lights_(lights), results_(results), ws_(ws), textures_(textures),
         cosine_directions_(cosine_directions), lone_point_light_(lone_point_light) {}
 
-  // Everything a path does at the surface (or miss) its ray reached: emission, then the light
-  // sample (queued as a shadow ray), then the BSDF sample (queued as the path's next ray).
-  // `sp` is the surface of a valid hit (make_surfaces), unread otherwise.
-  // `u` are the vertex's random numbers (draw_vertex_samples), read only below max_depth.
-  // `vertex`: the path's place in the generation, for the light samples made for all of it
-  // (PathWorkspace::light_samples).
+  // `vertex`: the path's place in the generation; `sp` the surface of a valid hit (make_surfaces),
+  // unread otherwise; `u` the vertex's random numbers, read only below max_depth.
   void extend(std::size_t vertex, const Path& path, const Ray& ray, const Hit& hit, const SurfacePoint& sp,
               const VertexSamples& u) {
     SampleResult& result = results_[path.sample];
+    // Le the ray reaches: a light without geometry before the surface, the environment, or the
+    // surface's own emission (seen through the medium the ray crossed).
     const float t_hit = hit.valid() ? hit.t : ray.tfar;
     if (const std::optional<LightSet::SeenLight> seen = lights_.seen_light(ray, t_hit, path.group)) {
-      const Vec3 on_light = ray.at(seen->t);
-      add_emission(path, result, seen->radiance, seen->index, on_light, path.beta);
+      add_emission(path, result, seen->radiance, seen->index, ray.at(seen->t), path.beta);
       return;  // lights without geometry absorb what reaches them
     }
     if (!hit.valid()) {
-      escape(path, ray, result);
+      add_escaped_light(path, ray, result);
       return;
     }
     const Material& material = scene_.materials[sp.material];
@@ -89,32 +85,24 @@ class PathTracer {
       add_emission(path, result, emitted_radiance(material.emission, sp.tex_u, sp.tex_v, textures_),
                    lights_.light_of_hit(hit), sp.position, beta);
 
+    // The vertex's BSDF; a path ends after max_depth vertices, having added their emission.
     const std::uint32_t group = link_group_of(scene_.links, hit);
     SurfaceBsdf& surface = surface_;
     material_bsdf(material, sp, textures_, surface);
     const bool delta = bsdf_is_delta(surface.bsdf);
-    if (path.bounce == 0)
-      result.primary = {true, surface.albedo, sp.shading_normal, hit.t * length(ray.dir), sp.object_id};
-    bool aov_pending = path.aov_pending;
-    if (aov_pending && !delta) {
-      result.primary.albedo = surface.albedo;
-      result.primary.normal = sp.shading_normal;
-      aov_pending = false;
-    }
+    const bool aov_pending = record_aovs(path, ray, hit, sp, surface, delta, result.primary);
     if (path.bounce >= scene_.render.max_depth) return;
 
     // The reciprocal length multiplied through: one division, not normalize's three.
     const Vec3 wo = surface.frame.to_local(ray.dir * (-1.0f / length(ray.dir)));
     SpawnOrigins origins(sp);
-    if (!delta && !lights_.empty(group)) {
-      if (lone_point_light_) {
-        if (ws_.light_found[vertex])
-          queue_shadow_ray(path.sample, origins, surface, wo, ws_.light_samples[vertex], beta);
-      } else if (lights_.sample(sp.position, u.choices.x, u.light_point, textures_, group, light_sample_)) {
-        queue_shadow_ray(path.sample, origins, surface, wo, light_sample_, beta);
-      }
-    }
+    // Next-event estimation, where the BSDF is not purely specular.
+    if (!delta && !lights_.empty(group))
+      if (const PathLightSample* light = sample_light(vertex, sp.position, u, group))
+        queue_light_sample(path.sample, origins, surface, wo, *light, beta);
 
+    // The BSDF sample: β·f·|cos θ|/p_b, then Russian roulette from kRouletteStart on, by the
+    // throughput (q the probability of ending, survivors weighted by 1/(1 − q)).
     const std::optional<BsdfSample> bs = sample_bsdf(surface.bsdf, wo, u, cosine_directions_);
     if (!bs || !(bs->pdf > 0.0f) || carries_no_light(bs->f)) return;
     Color next_beta = beta * bs->f * (std::fabs(bs->wi.z) / bs->pdf);
@@ -124,77 +112,88 @@ class PathTracer {
       next_beta = next_beta * (1.0f / (1.0f - q));
     }
     if (!is_finite(next_beta) || carries_no_light(next_beta)) return;
+    // The path's next ray, inside the dielectric it was refracted into, or outside again.
     const Vec3 direction = surface.frame.to_world(bs->wi);
     std::uint32_t medium = path.medium;
     if (bs->transmitted && material.dielectric) medium = sp.front_face ? sp.material : PathWorkspace::kOutside;
-    Path& next = ws_.next_paths.emplace_back();
-    next.sample = path.sample;
-    next.bounce = path.bounce + 1;
-    next.beta = next_beta;
-    next.origin = sp.position;
-    next.bsdf_pdf = bs->pdf;
-    next.specular = bs->delta;
-    next.aov_pending = aov_pending;
-    next.transmitted = bs->transmitted;
-    next.medium = medium;
-    next.group = group;
+    ws_.next_paths.push_back({.sample = path.sample,
+                              .bounce = path.bounce + 1,
+                              .beta = next_beta,
+                              .origin = sp.position,
+                              .bsdf_pdf = bs->pdf,
+                              .specular = bs->delta,
+                              .aov_pending = aov_pending,
+                              .transmitted = bs->transmitted,
+                              .medium = medium,
+                              .group = group});
     append_ray(ws_.next_rays, spawn_ray(origins, direction));
   }
 
  private:
-  // Emission reaching the path: in full after the camera or a specular vertex, else weighted
-  // against the light sampling that could have found the same point.
-  void add_emission(const Path& path, SampleResult& result, const Color& radiance, std::uint32_t light,
-                    const Vec3& on_light, const Color& beta) {
-    float weight = 1.0f;
-    if (!path.specular && light != kInvalidId) {
-      switch (scene_.render.path_sampling) {
-        case PathSampling::kMis:
-          weight = power_heuristic(path.bsdf_pdf, lights_.pdf(light, path.origin, on_light, path.group));
-          break;
-        case PathSampling::kLight: weight = 0.0f; break;  // light sampling found it already
-        case PathSampling::kBsdf: break;
-      }
+  // w_b, the weight of emission a BSDF sample found: in full after the camera or a specular
+  // vertex, else against the light sampling that could have found the same point, whose pdf
+  // `light_pdf()` gives (asked only under MIS).
+  template <class LightPdf>
+  float bsdf_sample_weight(const Path& path, const LightPdf& light_pdf) const {
+    if (path.specular) return 1.0f;
+    switch (scene_.render.path_sampling) {
+      case PathSampling::kMis: return power_heuristic(path.bsdf_pdf, light_pdf());
+      case PathSampling::kLight: return 0.0f;  // light sampling found it already
+      case PathSampling::kBsdf: return 1.0f;
     }
-    result.radiance += beta * radiance * weight;
+    return 1.0f;
   }
 
-  // A ray that leaves the scene: the environment, weighted against light sampling as emission
-  // is, or the background. Camera rays see the background where the environment is not visible.
-  void escape(const Path& path, const Ray& ray, SampleResult& result) {
+  // L += β·Le·w_b for the radiance Le emitted at `on_light` (of light `light`, kInvalidId for an
+  // emitter light sampling never picks: that counts in full).
+  void add_emission(const Path& path, SampleResult& result, const Color& radiance, std::uint32_t light,
+                    const Vec3& on_light, const Color& beta) {
+    const float w_b = light == kInvalidId ? 1.0f : bsdf_sample_weight(path, [&] {
+      return lights_.pdf(light, path.origin, on_light, path.group);
+    });
+    result.radiance += beta * radiance * w_b;
+  }
+
+  // A ray that leaves the scene: the environment, weighted as emission is, or the background.
+  // Camera rays see the background where the environment is not visible.
+  void add_escaped_light(const Path& path, const Ray& ray, SampleResult& result) {
     const EnvironmentLight* environment = lights_.environment();
     if (!environment || (path.bounce == 0 && !environment->visible())) {
       result.radiance += path.beta * scene_.render.background;
       return;
     }
     const Color radiance = environment->radiance(ray.dir);
-    float weight = 1.0f;
-    if (!path.specular) {
-      switch (scene_.render.path_sampling) {
-        case PathSampling::kMis:
-          weight = power_heuristic(path.bsdf_pdf, lights_.environment_pdf(ray.dir, path.group));
-          break;
-        case PathSampling::kLight: weight = 0.0f; break;
-        case PathSampling::kBsdf: break;
-      }
-    }
-    result.radiance += path.beta * radiance * weight;
+    const float w_b = bsdf_sample_weight(path, [&] { return lights_.environment_pdf(ray.dir, path.group); });
+    result.radiance += path.beta * radiance * w_b;
   }
 
-  void queue_shadow_ray(std::uint32_t sample, SpawnOrigins& origins, const SurfaceBsdf& surface, const Vec3& wo,
-                        const PathLightSample& ls, const Color& beta) {
+  // A point on a light for next-event estimation: the lone point light's sample, made for the
+  // whole generation, or the light set's pick and sample with the vertex's numbers. Null when
+  // the light sends nothing there.
+  const PathLightSample* sample_light(std::size_t vertex, const Vec3& position, const VertexSamples& u,
+                                      std::uint32_t group) {
+    if (lone_point_light_) return ws_.samples.lone_light_sample(vertex);
+    return lights_.sample(position, u.choices.x, u.light_point, textures_, group, light_sample_) ? &light_sample_
+                                                                                                 : nullptr;
+  }
+
+  // β·f·|cos θ|·Le·w_l/p_l of a light sample, queued with its shadow ray: added when that passes.
+  // w_l weighs it against the BSDF sampling that could have found the same direction; only light
+  // sampling finds a delta light.
+  void queue_light_sample(std::uint32_t sample, SpawnOrigins& origins, const SurfaceBsdf& surface, const Vec3& wo,
+                          const PathLightSample& ls, const Color& beta) {
     const Vec3 wi = surface.frame.to_local(ls.direction);
     const Color f = eval_bsdf(surface.bsdf, wo, wi) * std::fabs(wi.z);
     if (carries_no_light(f)) return;
-    float weight = 1.0f;
+    float w_l = 1.0f;
     if (!ls.delta) {
       switch (scene_.render.path_sampling) {
-        case PathSampling::kMis: weight = power_heuristic(ls.pdf, bsdf_pdf(surface.bsdf, wo, wi)); break;
+        case PathSampling::kMis: w_l = power_heuristic(ls.pdf, bsdf_pdf(surface.bsdf, wo, wi)); break;
         case PathSampling::kLight: break;
         case PathSampling::kBsdf: return;  // BSDF samples find it
       }
     }
-    const Color contribution = beta * f * ls.radiance * (weight / ls.pdf);
+    const Color contribution = beta * f * ls.radiance * (w_l / ls.pdf);
     if (!is_finite(contribution) || carries_no_light(contribution)) return;
     Ray ray;
     if (std::isinf(ls.distance)) {
@@ -203,9 +202,7 @@ class PathTracer {
       ray = spawn_ray_to(origins, origins.surface().position + ls.direction * ls.distance);
       ray.tfar = 1.0f - kShadowEpsilon;
     }
-    PathWorkspace::ShadowQuery& query = ws_.shadow_queries.emplace_back();
-    query.sample = sample;
-    query.contribution = contribution;
+    ws_.shadow_queries.push_back({sample, contribution});
     append_ray(ws_.shadow_rays, ray);
     // Read only under light linking (occluded_with_shadow_linking).
     if (scene_.links.linked()) ws_.shadow_lights.push_back(ls.light < scene_.lights.size() ? ls.light : kInvalidId);
@@ -223,84 +220,30 @@ class PathTracer {
   PathLightSample light_sample_;
 };
 
-// Which of a vertex's random numbers the scene reads: the choices when its lights need picking or
-// a material chooses among lobes, the light point when a light has an extent. Each value is a
-// function of its own dimension, so leaving out a draw nothing reads changes no other value.
-// The Lambert surfaces' cosine-weighted directions are worked out for every vertex at once
-// (cosine_lanes.h) when some material makes them.
-struct VertexDraws {
-  bool choices;
-  bool light_point;
-  bool cosine_directions;
-};
-
-VertexDraws vertex_draws(const RenderScene& scene, const LightSet& lights) {
-  const auto any_material = [&](bool (*which)(const Material&)) {
-    return std::any_of(scene.materials.begin(), scene.materials.end(), which);
-  };
-  return {any_material(reads_lobe_choice) || lights.reads_pick_number(), lights.reads_point_numbers(),
-          any_material(makes_lambert_bsdf)};
+// Every camera ray as the first ray of its sample's path, every result cleared.
+void start_camera_paths(const CameraBatch& batch, PathWorkspace& ws) {
+  ws.paths.clear();
+  ws.rays.assign(batch.rays.begin(), batch.rays.end());
+  for (std::uint32_t i = 0; i < batch.rays.size(); ++i) {
+    batch.results[i] = SampleResult{};
+    ws.paths.push_back({.sample = i,
+                        .bounce = 0,
+                        .beta = Color(1.0f),
+                        .origin = batch.rays[i].org,
+                        .bsdf_pdf = 0.0f,
+                        .specular = true,
+                        .aov_pending = true,
+                        .transmitted = false,
+                        .medium = PathWorkspace::kOutside,
+                        .group = 0});
+  }
 }
 
-// sample_cosine_hemisphere of every vertex's BSDF numbers, into its record.
-void draw_cosine_directions(std::vector<VertexSamples>& samples) {
-  if (samples.empty()) return;
-  sample_cosine_hemispheres(samples.size(), &samples.front().bsdf_direction, &samples.front().cosine_direction,
-                            sizeof(VertexSamples));
-}
-
-// The random numbers of the vertices the generation's rays reach (all at bounce `bounce`), drawn
-// for every path together: the same values a draw per vertex gives, bit for bit, but a batch lets
-// the sampler hash many keys side by side. A path that reaches no surface leaves its draw unused,
-// and the fields `needed` leaves out keep whatever they held.
-template <class Sampler>
-void draw_vertex_samples(const Sampler& sampler, std::span<const SampleKey> keys, int bounce, VertexDraws needed,
-                         PathWorkspace& ws) {
-  const std::size_t n = ws.paths.size();
-  ws.path_keys.resize(n);
-  for (std::size_t i = 0; i < n; ++i) ws.path_keys[i] = keys[ws.paths[i].sample];
-  ws.draws.resize(n);
-  ws.vertex_samples.resize(n);
-  const auto draw = [&](int offset, Sample2D VertexSamples::*field) {
-    sampler.sample_2d(ws.path_keys, sample_dimension::at_bounce(bounce, offset), ws.draws);
-    for (std::size_t i = 0; i < n; ++i) ws.vertex_samples[i].*field = ws.draws[i];
-  };
-  // The light's pick and the BSDF's lobe choice as one 2D sample: one draw instead of two.
-  if (needed.choices) draw(path_dimension::kChoices, &VertexSamples::choices);
-  if (needed.light_point) draw(path_dimension::kLightPoint, &VertexSamples::light_point);
-  draw(path_dimension::kBsdfDirection, &VertexSamples::bsdf_direction);
-  if (needed.cosine_directions) draw_cosine_directions(ws.vertex_samples);
-  if (bounce < kRouletteStart) return;
-  ws.roulette_draws.resize(n);
-  sampler.sample_1d(ws.path_keys, sample_dimension::at_bounce(bounce, path_dimension::kRoulette), ws.roulette_draws);
-  for (std::size_t i = 0; i < n; ++i) ws.vertex_samples[i].roulette = ws.roulette_draws[i];
-}
-
-// The same for the Sobol sampler, which draws all of a vertex's dimensions in one pass over the
-// keys (hashing each key once) and writes them straight into the VertexSamples.
-void draw_vertex_samples(const SobolSampler& sampler, std::span<const SampleKey> keys, int bounce, VertexDraws needed,
-                         PathWorkspace& ws) {
-  const std::size_t n = ws.paths.size();
-  if (n == 0) return;  // the draws below point at the first record
-  ws.path_keys.resize(n);
-  for (std::size_t i = 0; i < n; ++i) ws.path_keys[i] = keys[ws.paths[i].sample];
-  ws.vertex_samples.resize(n);
-  VertexSamples* const first = ws.vertex_samples.data();
-  const auto pair = [&](int offset, Sample2D VertexSamples::*field) {
-    return SobolSampler::Draw<Sample2D>{sample_dimension::at_bounce(bounce, offset), &(first->*field),
-                                        sizeof(VertexSamples)};
-  };
-  // The light's pick and the BSDF's lobe choice as one 2D sample: one draw instead of two.
-  SobolSampler::Draw<Sample2D> pairs[3];
-  std::size_t pair_count = 0;
-  if (needed.choices) pairs[pair_count++] = pair(path_dimension::kChoices, &VertexSamples::choices);
-  if (needed.light_point) pairs[pair_count++] = pair(path_dimension::kLightPoint, &VertexSamples::light_point);
-  pairs[pair_count++] = pair(path_dimension::kBsdfDirection, &VertexSamples::bsdf_direction);
-  const SobolSampler::Draw<float> roulette[] = {
-      {sample_dimension::at_bounce(bounce, path_dimension::kRoulette), &first->roulette, sizeof(VertexSamples)}};
-  sampler.sample(ws.path_keys, {pairs, pair_count},
-                 bounce < kRouletteStart ? std::span<const SobolSampler::Draw<float>>() : roulette);
-  if (needed.cosine_directions) draw_cosine_directions(ws.vertex_samples);
+// Each path's camera sample key, for its vertex's draws.
+std::span<const SampleKey> path_keys(std::span<const SampleKey> keys, PathWorkspace& ws) {
+  ws.path_keys.resize(ws.paths.size());
+  for (std::size_t i = 0; i < ws.paths.size(); ++i) ws.path_keys[i] = keys[ws.paths[i].sample];
+  return ws.path_keys;
 }
 
 }  // namespace
@@ -313,30 +256,12 @@ template <class Sampler>
 void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch, RayCounts& counts,
                                 Workspace& ws) const {
   const RenderScene& scene = scene_;
-  const LightSet& lights = lights_;
-  const std::span<const Ray> camera_rays = batch.rays;
-  const std::span<const SampleKey> keys = batch.keys;
-  const std::span<SampleResult> results = batch.results;
-  ws.paths.clear();
-  ws.rays.assign(camera_rays.begin(), camera_rays.end());
-  for (std::uint32_t i = 0; i < camera_rays.size(); ++i) {
-    results[i] = SampleResult{};
-    Path& path = ws.paths.emplace_back();
-    path.sample = i;
-    path.bounce = 0;
-    path.beta = Color(1.0f);
-    path.origin = camera_rays[i].org;
-    path.bsdf_pdf = 0.0f;
-    path.specular = true;
-    path.aov_pending = true;
-    path.transmitted = false;
-    path.medium = PathWorkspace::kOutside;
-    path.group = 0;
-  }
-  counts[RayKind::kCamera] += camera_rays.size();
-  const VertexDraws needed = vertex_draws(scene, lights);
-  const std::optional<LightSet::LonePointLight> lone_point_light = lights.lone_point_light();
-  PathTracer tracer(scene, lights, results, ws, textures_, needed.cosine_directions, lone_point_light.has_value());
+  start_camera_paths(batch, ws);
+  counts[RayKind::kCamera] += batch.rays.size();
+  // Asked per batch, not kept: it points into lights_, which a copy of the integrator would not share.
+  const std::optional<LightSet::LonePointLight> lone_point_light = lights_.lone_point_light();
+  PathVertexStep step(scene, lights_, batch.results, ws, textures_, draws_.cosine_directions,
+                      lone_point_light.has_value());
   for (int generation = 0; !ws.paths.empty(); ++generation) {
     ws.hits.resize(ws.rays.size());
     backend_.intersect(ws.rays, ws.hits, generation == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
@@ -348,23 +273,18 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
     ws.surfaces.resize(ws.rays.size());
     make_surfaces(scene, ws.rays, ws.hits, ws.surfaces);
     if (generation < scene.render.max_depth) {
-      draw_vertex_samples(sampler, keys, generation, needed, ws);
-      if (lone_point_light) {
-        // Made for every path, the ones that hit nothing included (their samples go unread).
-        ws.light_samples.resize(ws.paths.size());
-        ws.light_found.resize(ws.paths.size());
-        LightSet::sample_lone_point_light(*lone_point_light, ws.surfaces, ws.light_samples, ws.light_found);
-      }
+      ws.samples.draw(sampler, path_keys(batch.keys, ws), generation, draws_);
+      if (lone_point_light) ws.samples.sample_lone_point_light(*lone_point_light, ws.surfaces);
     }
     for (std::size_t i = 0; i < ws.paths.size(); ++i)
-      tracer.extend(i, ws.paths[i], ws.rays[i], ws.hits[i], ws.surfaces[i], ws.vertex_samples[i]);
+      step.extend(i, ws.paths[i], ws.rays[i], ws.hits[i], ws.surfaces[i], ws.samples[i]);
 
     ws.occluded.resize(ws.shadow_rays.size());
     occluded_with_shadow_linking(backend_, scene.links, ws.shadow_rays, ws.shadow_lights, ws.occluded,
                                  RayCoherence::kIncoherent);
     counts[RayKind::kShadow] += ws.shadow_rays.size();
     for (std::size_t i = 0; i < ws.shadow_queries.size(); ++i)
-      if (!ws.occluded[i]) results[ws.shadow_queries[i].sample].radiance += ws.shadow_queries[i].contribution;
+      if (!ws.occluded[i]) batch.results[ws.shadow_queries[i].sample].radiance += ws.shadow_queries[i].contribution;
     // Summed in a local: a store to the counts in the loop would reload every path's field.
     std::uint64_t transmitted = 0;
     for (const Path& next : ws.next_paths) transmitted += next.transmitted;

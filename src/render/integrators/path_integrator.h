@@ -12,7 +12,8 @@
 // Paths are traced in generations, as the Whitted integrator traces its rays: every path's next ray of a
 // batch together, then every shadow ray of that generation together. Each sample's radiance sums
 // its contributions in the order its own path made them, so it never depends on what else shares
-// its batch; every random decision is a pure function of (pixel, sample, dimension, seed).
+// its batch; every random decision is a pure function of (pixel, sample, dimension, seed). The
+// random numbers of a generation's vertices are drawn for all of them at once (vertex_samples.h).
 #include "camera_batch.h"
 #include "camera_samplers.h"
 #include "rtpro/backend/backend.h"
@@ -20,25 +21,14 @@
 #include "rtpro/render/ray_counts.h"
 #include "light_set.h"
 #include "rtpro/render/sampler.h"
-#include "sobol_sampler.h"
 #include "surface.h"
 #include "rtpro/scene/render_scene.h"
+#include "vertex_samples.h"
 
 #include <cstdint>
-#include <span>
 #include <vector>
 
 namespace rtpro {
-
-namespace path_dimension {
-// Offsets within a bounce's dimensions (sample_dimension::at_bounce).
-inline constexpr int kLightPoint = 0;     // and 1
-inline constexpr int kBsdfDirection = 2;  // and 3
-inline constexpr int kChoices = 4;        // and 5: which light (x) and which BSDF lobe (y)
-inline constexpr int kRoulette = 6;
-}  // namespace path_dimension
-
-inline constexpr int kRouletteStart = 3;
 
 // The buffers one worker reuses from batch to batch.
 class PathWorkspace {
@@ -65,23 +55,8 @@ class PathWorkspace {
   std::vector<Ray> rays, next_rays;
   std::vector<Hit> hits;
   std::vector<SurfacePoint> surfaces;  // of the hits, for the hits that are valid
-  // The random numbers of a vertex, drawn for the whole generation at once.
-  struct VertexSamples {
-    Sample2D choices;         // which light (x) and which BSDF lobe (y)
-    Sample2D light_point;     // where on the light
-    Sample2D bsdf_direction;  // the BSDF's direction within its lobe
-    float roulette;           // from kRouletteStart on: whether the path goes on
-    // sample_cosine_hemisphere(bsdf_direction), drawn with it when the scene has Lambert surfaces.
-    Vec3 cosine_direction;
-  };
-  std::vector<SampleKey> path_keys;  // per path, its camera sample
-  std::vector<Sample2D> draws;
-  std::vector<float> roulette_draws;
-  std::vector<VertexSamples> vertex_samples;
-  // Per path, its vertex's light sample and whether there is one, made for the whole generation
-  // at once when the scene is lit by one point light (LightSet::lone_point_light).
-  std::vector<PathLightSample> light_samples;
-  std::vector<std::uint8_t> light_found;
+  std::vector<SampleKey> path_keys;    // per path, its camera sample's key
+  GenerationSamples samples;           // per path, the samples of the vertex its ray reaches
   std::vector<ShadowQuery> shadow_queries;
   std::vector<Ray> shadow_rays;
   // Under light linking only: per shadow ray, the scene light it goes to, or kInvalidId.
@@ -97,7 +72,8 @@ class PathIntegrator {
   using Workspace = PathWorkspace;
   PathIntegrator(const RenderScene& scene, const Backend& backend, const CameraSamplers& samplers,
                  const TextureLookup* textures, const EnvironmentLight* environment)
-      : scene_(scene), backend_(backend), samplers_(samplers), textures_(textures), lights_(scene, environment) {}
+      : scene_(scene), backend_(backend), samplers_(samplers), textures_(textures), lights_(scene, environment),
+        draws_(vertex_draws(scene, lights_)) {}
 
   // Traces the batch's paths; each sample's random numbers come from the sampler render.sampler
   // chooses. Ray counts are added to `counts` (bounces as reflection or refraction rays).
@@ -114,6 +90,7 @@ class PathIntegrator {
   const CameraSamplers& samplers_;
   const TextureLookup* textures_;
   LightSet lights_;
+  VertexDraws draws_;  // which of a vertex's random numbers the scene reads
 };
 
 }  // namespace rtpro

@@ -1,0 +1,80 @@
+#include "vertex_samples.h"
+
+#include "cosine_lanes.h"
+#include "material_bsdf.h"
+#include "sample_dimensions.h"
+
+#include <algorithm>
+
+namespace rtpro {
+
+VertexDraws vertex_draws(const RenderScene& scene, const LightSet& lights) {
+  const auto any_material = [&](bool (*which)(const Material&)) {
+    return std::any_of(scene.materials.begin(), scene.materials.end(), which);
+  };
+  return {any_material(reads_lobe_choice) || lights.reads_pick_number(), lights.reads_point_numbers(),
+          any_material(makes_lambert_bsdf)};
+}
+
+namespace {
+
+// sample_cosine_hemisphere of every vertex's BSDF numbers, into its record.
+void draw_cosine_directions(std::vector<VertexSamples>& samples) {
+  if (samples.empty()) return;
+  sample_cosine_hemispheres(samples.size(), &samples.front().bsdf_direction, &samples.front().cosine_direction,
+                            sizeof(VertexSamples));
+}
+
+}  // namespace
+
+void GenerationSamples::draw(const StratifiedSampler& sampler, std::span<const SampleKey> path_keys, int bounce,
+                             VertexDraws needed) {
+  const std::size_t n = path_keys.size();
+  draws_.resize(n);
+  vertices_.resize(n);
+  const auto draw = [&](int offset, Sample2D VertexSamples::*field) {
+    sampler.sample_2d(path_keys, sample_dimension::at_bounce(bounce, offset), draws_);
+    for (std::size_t i = 0; i < n; ++i) vertices_[i].*field = draws_[i];
+  };
+  // The light's pick and the BSDF's lobe choice as one 2D sample: one draw instead of two.
+  if (needed.choices) draw(path_dimension::kChoices, &VertexSamples::choices);
+  if (needed.light_point) draw(path_dimension::kLightPoint, &VertexSamples::light_point);
+  draw(path_dimension::kBsdfDirection, &VertexSamples::bsdf_direction);
+  if (needed.cosine_directions) draw_cosine_directions(vertices_);
+  if (bounce < kRouletteStart) return;
+  roulette_draws_.resize(n);
+  sampler.sample_1d(path_keys, sample_dimension::at_bounce(bounce, path_dimension::kRoulette), roulette_draws_);
+  for (std::size_t i = 0; i < n; ++i) vertices_[i].roulette = roulette_draws_[i];
+}
+
+void GenerationSamples::draw(const SobolSampler& sampler, std::span<const SampleKey> path_keys, int bounce,
+                             VertexDraws needed) {
+  const std::size_t n = path_keys.size();
+  if (n == 0) return;  // the draws below point at the first record
+  vertices_.resize(n);
+  VertexSamples* const first = vertices_.data();
+  const auto pair = [&](int offset, Sample2D VertexSamples::*field) {
+    return SobolSampler::Draw<Sample2D>{sample_dimension::at_bounce(bounce, offset), &(first->*field),
+                                        sizeof(VertexSamples)};
+  };
+  // The light's pick and the BSDF's lobe choice as one 2D sample: one draw instead of two.
+  SobolSampler::Draw<Sample2D> pairs[3];
+  std::size_t pair_count = 0;
+  if (needed.choices) pairs[pair_count++] = pair(path_dimension::kChoices, &VertexSamples::choices);
+  if (needed.light_point) pairs[pair_count++] = pair(path_dimension::kLightPoint, &VertexSamples::light_point);
+  pairs[pair_count++] = pair(path_dimension::kBsdfDirection, &VertexSamples::bsdf_direction);
+  const SobolSampler::Draw<float> roulette[] = {
+      {sample_dimension::at_bounce(bounce, path_dimension::kRoulette), &first->roulette, sizeof(VertexSamples)}};
+  sampler.sample(path_keys, {pairs, pair_count},
+                 bounce < kRouletteStart ? std::span<const SobolSampler::Draw<float>>() : roulette);
+  if (needed.cosine_directions) draw_cosine_directions(vertices_);
+}
+
+void GenerationSamples::sample_lone_point_light(const LightSet::LonePointLight& lone,
+                                                std::span<const SurfacePoint> surfaces) {
+  light_samples_.resize(surfaces.size());
+  light_found_.resize(surfaces.size());
+  LightSet::sample_lone_point_light(lone, surfaces, light_samples_, light_found_);
+}
+
+}  // namespace rtpro
