@@ -81,7 +81,7 @@ class PathTracer {
     const Material& material = scene_.materials[sp.material];
     Color beta = path.beta;
     if (path.medium != PathWorkspace::kOutside) {
-      const Dielectric& medium = *scene_.materials[path.medium].dielectric;
+      const Dielectric& medium = *interior_of(scene_.materials[path.medium]);
       beta = beta *
              beer_lambert_transmittance(medium.transmittance, medium.transmittance_distance, hit.t * length(ray.dir));
     }
@@ -126,7 +126,7 @@ class PathTracer {
     if (!is_finite(next_beta) || carries_no_light(next_beta)) return;
     const Vec3 direction = surface.frame.to_world(bs->wi);
     std::uint32_t medium = path.medium;
-    if (bs->transmitted && material.dielectric) medium = sp.front_face ? sp.material : PathWorkspace::kOutside;
+    if (bs->transmitted && interior_of(material)) medium = sp.front_face ? sp.material : PathWorkspace::kOutside;
     Path& next = ws_.next_paths.emplace_back();
     next.sample = path.sample;
     next.bounce = path.bounce + 1;
