@@ -14,8 +14,7 @@ rtpro_add_wing(render sampling SHARES alias_table.h camera_samplers.h sample_dim
 rtpro_add_wing(render surface
   SHARES normal_map.h ray_offset.h shading_frame.h surface.h surface_batch.h texture.h)
 rtpro_add_wing(render bsdf
-  SHARES beer_lambert.h bsdf.h bsdf_from.h bsdf_sample.h conductor_bsdf.h cosine_lanes.h dielectric.h dielectric_bsdf.h
-         diffuse_bsdf.h material_bsdf.h microfacet.h phong_bsdf.h principled_bsdf.h sheen.h surface_bsdf.h
+  SHARES *_bsdf.h beer_lambert.h bsdf.h bsdf_from.h bsdf_sample.h cosine_lanes.h dielectric.h microfacet.h sheen.h
   USES surface)
 rtpro_add_wing(render lights
   SHARES directional_light_sample.h light_linking.h light_picker.h light_sample.h light_sample_value.h light_set.h

@@ -5,20 +5,24 @@
 # Other modules see only the public headers.
 
 # rtpro_add_wing(MODULE WING [SHARES header...] [USES wing...] [PRIVATE_DEPENDS target...])
-# SHARES are the wing's headers the wings above may include: each is linked into an include root
-# of the wing's own, so its other headers stay private to it. A shared header may include only
-# public headers and other shared ones.
+# SHARES are the wing's headers the wings above may include (names, or patterns such as *_bsdf.h
+# for a family of kinds whose registry is shared, so a new kind's header needs no entry): each is
+# linked into an include root of the wing's own, so its other headers stay private to it. A shared
+# header may include only public headers and other shared ones.
 function(rtpro_add_wing module wing)
   cmake_parse_arguments(ARG "" "" "SHARES;USES;PRIVATE_DEPENDS" ${ARGN})
   set(folder ${CMAKE_SOURCE_DIR}/src/${module}/${wing})
   set(shared_root ${CMAKE_BINARY_DIR}/wing_include/${module}/${wing})
   file(REMOVE_RECURSE ${shared_root})
   file(MAKE_DIRECTORY ${shared_root})
-  foreach(header IN LISTS ARG_SHARES)
-    if(NOT EXISTS ${folder}/${header})
-      message(FATAL_ERROR "${module} wing ${wing} shares ${header}, which is not in src/${module}/${wing}/")
+  foreach(pattern IN LISTS ARG_SHARES)
+    file(GLOB headers CONFIGURE_DEPENDS RELATIVE ${folder} ${folder}/${pattern})
+    if(NOT headers)
+      message(FATAL_ERROR "${module} wing ${wing} shares ${pattern}, which is not in src/${module}/${wing}/")
     endif()
-    file(CREATE_LINK ${folder}/${header} ${shared_root}/${header} SYMBOLIC)
+    foreach(header IN LISTS headers)
+      file(CREATE_LINK ${folder}/${header} ${shared_root}/${header} SYMBOLIC)
+    endforeach()
   endforeach()
 
   set(target rtpro_${module}_${wing})
