@@ -21,6 +21,10 @@ Vec3 uniform_direction(std::mt19937& rng) {
 }
 }  // namespace
 
+Material phong_material(const Color& color, float specular, float shininess, float reflectivity) {
+  return {.base_color = color, .model = PhongSurface{}, .whitted = {color, specular, shininess, reflectivity, {}}};
+}
+
 void set_camera(RenderScene& scene, int width, int height) {
   CameraDesc camera;
   camera.position = {0.0f, 0.0f, 10.0f};
@@ -35,8 +39,8 @@ RenderScene empty_scene(int width, int height) {
   set_camera(scene, width, height);
   scene.render.spp = 4;
   scene.render.max_depth = 3;
-  scene.materials.push_back({Color{0.8f, 0.8f, 0.8f}, 0.5f, 10.0f, 0.0f, std::nullopt});
-  scene.materials.push_back({Color{0.9f, 0.2f, 0.2f}, 0.8f, 20.0f, 0.5f, std::nullopt});
+  scene.materials.push_back(phong_material(Color{0.8f, 0.8f, 0.8f}, 0.5f, 10.0f, 0.0f));
+  scene.materials.push_back(phong_material(Color{0.9f, 0.2f, 0.2f}, 0.8f, 20.0f, 0.5f));
   scene.material_names = {"default", "mirror-red"};
   scene.lights.push_back(make_light(PointLightDesc{{5.0f, 8.0f, 10.0f}, {1.0f, 1.0f, 1.0f}, 1.0f}));
   scene.lights.push_back(make_light(DirectionalLightDesc{{-1.0f, -1.0f, -0.5f}, {0.4f, 0.4f, 0.5f}, 1.0f}));

@@ -11,6 +11,10 @@ namespace rtpro::test {
 // A camera at (0, 0, 10) looking at the origin, `width`×`height` pixels.
 void set_camera(RenderScene& scene, int width, int height);
 
+// A Phong material (scene/phong_material.h) of colour `color`, as the builder makes it of a scene
+// file's.
+Material phong_material(const Color& color, float specular, float shininess, float reflectivity);
+
 // A render scene with one default material, one point light and a camera looking at the origin.
 RenderScene empty_scene(int width = 32, int height = 24);
 

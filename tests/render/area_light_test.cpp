@@ -6,6 +6,7 @@
 #include "rtpro/render/renderer.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
+#include "test_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -32,7 +33,7 @@ RenderScene irradiance_probe(const Light& light, int spp) {
   scene.render.max_depth = 0;
   scene.render.ambient = 0.0f;
   scene.render.background = Color(0.0f);
-  scene.materials.push_back({Color(1.0f), 0.0f, 1.0f, 0.0f, std::nullopt});
+  scene.materials.push_back(test::phong_material(Color(1.0f), 0.0f, 1.0f, 0.0f));
   scene.material_names = {"default"};
   scene.lights.push_back(light);
   SphereSet ground;

@@ -143,7 +143,10 @@ class TestScene {
   std::vector<TestLight> lights_;
 
   std::uint32_t add_material(const Emission& emission) {
-    scene_.materials.push_back({Color(0.0f), 0.0f, 1.0f, 0.0f, std::nullopt, DiffuseSurface{}, emission});
+    scene_.materials.push_back({.base_color = Color(0.0f),
+                                .emission = emission,
+                                .model = DiffuseSurface{},
+                                .whitted = {Color(0.0f), 0.0f, 1.0f, 0.0f, {}}});
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);
   }
 

@@ -159,13 +159,16 @@ TEST(GltfLoader, MaterialsAreThePrincipledModelWithAPhongAndMirrorViewForWhitted
     ADD_FAILURE() << "no material " << name;
     return scene.materials[0];
   };
-  EXPECT_NEAR(material("chrome").reflectivity, 0.9f, 1e-6f);
-  EXPECT_NEAR(std::get<Color>(material("chrome").color).x, 0.09f, 1e-6f);
-  EXPECT_EQ(material("chrome").shininess, 10000.0f);
-  EXPECT_EQ(material("clay").reflectivity, 0.0f);  // rough: no mirror
-  EXPECT_EQ(std::get<ImageTexture>(material("clay").color).tint, Color(0.8f, 0.4f, 0.2f));
-  EXPECT_EQ(material("clay").shininess, 1.0f);
-  EXPECT_EQ(material("clay").specular, 0.04f * 1.5f / kFullHighlightNs);
+  EXPECT_NEAR(material("chrome").whitted.reflectivity, 0.9f, 1e-6f);
+  EXPECT_NEAR(std::get<Color>(material("chrome").whitted.color).x, 0.09f, 1e-6f);
+  EXPECT_EQ(material("chrome").whitted.shininess, 10000.0f);
+  // The mirror darkens the Whitted colour alone: the model's base colour is the file's.
+  EXPECT_EQ(std::get<Color>(material("chrome").base_color), Color(0.9f, 0.9f, 0.9f));
+  EXPECT_EQ(material("clay").whitted.reflectivity, 0.0f);  // rough: no mirror
+  EXPECT_EQ(std::get<ImageTexture>(material("clay").whitted.color).tint, Color(0.8f, 0.4f, 0.2f));
+  EXPECT_EQ(std::get<ImageTexture>(material("clay").base_color).tint, Color(0.8f, 0.4f, 0.2f));
+  EXPECT_EQ(material("clay").whitted.shininess, 1.0f);
+  EXPECT_EQ(material("clay").whitted.specular, 0.04f * 1.5f / kFullHighlightNs);
   EXPECT_TRUE(std::holds_alternative<PrincipledSurface>(material("clay").model));
 }
 

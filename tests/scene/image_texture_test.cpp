@@ -30,8 +30,8 @@ TEST(ImageTexture, SceneTextureIsRegisteredOnceWithItsColourSpaceAndWrap) {
   EXPECT_EQ(scene.textures[0].file, image);
   EXPECT_EQ(scene.textures[0].colorspace, "sRGB - Texture");
   EXPECT_EQ(scene.textures[1].colorspace, "Linear Rec.709 (sRGB)");
-  const auto& a = std::get<ImageTexture>(scene.materials[1].color);
-  const auto& b = std::get<ImageTexture>(scene.materials[2].color);
+  const auto& a = std::get<ImageTexture>(scene.materials[1].base_color);
+  const auto& b = std::get<ImageTexture>(scene.materials[2].base_color);
   EXPECT_EQ(a.image, 0u);
   EXPECT_EQ(a.wrap, TextureWrap::kRepeat);
   EXPECT_EQ(a.tint.x, 1.0f);

@@ -60,12 +60,34 @@ TEST(MaterialKinds, TheRenderSceneCarriesTheModelAndAWhittedApproximation) {
   ASSERT_EQ(scene.materials.size(), 4u);
   EXPECT_TRUE(std::holds_alternative<PhongSurface>(scene.materials[0].model));
   EXPECT_TRUE(std::holds_alternative<DiffuseSurface>(scene.materials[1].model));
-  EXPECT_EQ(scene.materials[1].specular, 0.0f);
+  EXPECT_EQ(scene.materials[1].whitted.specular, 0.0f);
+  EXPECT_EQ(std::get<Color>(scene.materials[1].base_color), Color(0.5f, 0.4f, 0.3f));
   ASSERT_TRUE(std::holds_alternative<ConductorSurface>(scene.materials[2].model));
-  EXPECT_EQ(scene.materials[2].reflectivity, 1.0f);  // a smooth conductor is a mirror under whitted
+  EXPECT_EQ(scene.materials[2].whitted.reflectivity, 1.0f);  // a smooth conductor is a mirror under whitted
   EXPECT_TRUE(scene.materials[3].emission.emits());
   EXPECT_FALSE(scene.materials[3].emission.two_sided);
   EXPECT_FALSE(scene.materials[0].emission.emits());
+}
+
+// The medium a path inside the surface travels through is the kind's own, not its Whitted glass.
+TEST(MaterialKinds, EachKindSaysWhatItsInsideAbsorbs) {
+  const RenderScene scene = build_render_scene(parse(R"(materials:
+  water: {type: dielectric, ior: 1.33, transmittance: [0.5, 0.8, 0.9], transmittance_distance: 2}
+  crystal: {ior: 1.6}
+  wall: {type: diffuse}
+  glass: {type: principled, transmission_weight: 1}
+)"));
+  ASSERT_EQ(scene.materials.size(), 5u);
+  const Dielectric* water = interior_of(scene.materials[1]);
+  ASSERT_NE(water, nullptr);
+  EXPECT_FLOAT_EQ(water->ior, 1.33f);
+  EXPECT_EQ(water->transmittance, Color(0.5f, 0.8f, 0.9f));
+  EXPECT_FLOAT_EQ(water->transmittance_distance, 2.0f);
+  ASSERT_NE(interior_of(scene.materials[2]), nullptr);  // a Phong material with an index is glass
+  EXPECT_FLOAT_EQ(interior_of(scene.materials[2])->ior, 1.6f);
+  EXPECT_EQ(interior_of(scene.materials[0]), nullptr);  // the default material
+  EXPECT_EQ(interior_of(scene.materials[3]), nullptr);
+  EXPECT_EQ(interior_of(scene.materials[4]), nullptr);
 }
 
 TEST(MaterialKinds, PrincipledReadsTheGltfModelsParameters) {
@@ -89,7 +111,7 @@ TEST(MaterialKinds, PrincipledReadsTheGltfModelsParameters) {
   const RenderScene scene = build_render_scene(d);
   const auto& model = std::get<PrincipledSurface>(scene.materials[3].model);
   EXPECT_FLOAT_EQ(model.ior, 1.45f);
-  EXPECT_FALSE(scene.materials[3].dielectric);  // no Whitted glass: its transmission is the model's own
+  EXPECT_FALSE(scene.materials[3].whitted.glass);  // no Whitted glass: its transmission is the model's own
   EXPECT_NE(error_of("materials:\n  m: {type: principled, metalness: 2}\n").find("from 0 to 1"), std::string::npos);
   EXPECT_NE(error_of("materials:\n  m: {type: principled, eta: [1, 1, 1], k: [1, 1, 1]}\n").find("unknown key 'eta'"),
             std::string::npos);

@@ -2,10 +2,11 @@
 // The Phong material (`type: phong`, a material without a type), the scene's side of a material
 // kind in one place: its parameters, its keys in a scene file (read in
 // src/scene/yaml/yaml_phong_material.cpp), the surface model the path integrator shades and what
-// the whitted integrator shades. Its shading side is render/phong_bsdf.h; the kind is registered in
+// the whitted integrator shades. Its shading side is render/bsdf/phong_bsdf.h; the kind is registered in
 // scene/material_kinds.h.
 #include "rtpro/scene/material_textures.h"
-#include "rtpro/scene/whitted_fields.h"
+#include "rtpro/scene/dielectric.h"
+#include "rtpro/scene/whitted_material.h"
 
 #include <optional>
 #include <string_view>
@@ -27,18 +28,23 @@ struct PhongParams {
 };
 
 // Under the path integrator: a Lambert surface of the material's colour or, with glass, smooth glass.
-struct PhongSurface {};
+struct PhongSurface {
+  std::optional<Dielectric> glass;
+};
 
 inline const char* material_type_name(const PhongParams&) { return "phong"; }
 // The keys it reads besides type, colour and emission.
 std::vector<std::string_view> material_keys(const PhongParams&);
 void read_material_params(const MappingReader& material, PhongParams& params);
-inline PhongSurface surface_model_from(const PhongParams&, const MaterialDesc&, std::vector<TextureImage>&) {
-  return {};
+inline PhongSurface surface_model_from(const PhongParams& params, const MaterialDesc&, std::vector<TextureImage>&) {
+  return {params.glass};
 }
-inline WhittedFields whitted_approximation_of(const PhongParams& params, const MaterialDesc&) {
-  return {params.specular, params.shininess, params.reflectivity, params.glass};
+// It is the Whitted model: `color` is the material's colour.
+inline WhittedMaterial whitted_approximation_of(const PhongParams& params, const MaterialDesc&,
+                                                const ColorTexture& color) {
+  return {color, params.specular, params.shininess, params.reflectivity, params.glass};
 }
 inline bool reads_images(const PhongSurface&) { return false; }
+inline const Dielectric* interior_of(const PhongSurface& surface) { return surface.glass ? &*surface.glass : nullptr; }
 
 }  // namespace rtpro

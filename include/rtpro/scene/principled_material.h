@@ -3,10 +3,11 @@
 // metallic-roughness model and its extensions, with OpenPBR's names where one exists. The scene's
 // side of the kind in one place (as scene/phong_material.h explains): its reader is
 // src/scene/yaml/yaml_principled_material.cpp, the rest src/scene/build/principled_material.cpp,
-// its shading side render/principled_bsdf.h.
+// its shading side render/bsdf/principled_bsdf.h.
 #include "rtpro/core/vec3.h"
 #include "rtpro/scene/material_textures.h"
-#include "rtpro/scene/whitted_fields.h"
+#include "rtpro/scene/dielectric.h"
+#include "rtpro/scene/whitted_material.h"
 
 #include <optional>
 #include <string_view>
@@ -38,10 +39,8 @@ struct PrincipledParams {
   float normal_scale = 1.0f;
 };
 
-// The model as render/principled_bsdf.h shades it. Its base colour is its own (Material::color
-// holds the Whitted approximation's diffuse colour).
+// The model as render/bsdf/principled_bsdf.h shades it; its base colour is Material::base_color.
 struct PrincipledSurface {
-  ColorTexture base_color;
   float metalness, roughness, ior;
   float specular_weight;
   Color specular_color;
@@ -60,8 +59,12 @@ void read_material_params(const MappingReader& material, PrincipledParams& param
 // Its images are registered in `textures`.
 PrincipledSurface surface_model_from(const PrincipledParams& params, const MaterialDesc& material,
                                      std::vector<TextureImage>& textures);
-// The Phong highlight and mirror of the metallic-roughness model (FORMAT.md, "glTF files").
-WhittedFields whitted_approximation_of(const PrincipledParams& params, const MaterialDesc& material);
+// The Phong highlight and mirror of the metallic-roughness model (FORMAT.md, "glTF files"), and a
+// diffuse colour darkened by what the mirror takes.
+WhittedMaterial whitted_approximation_of(const PrincipledParams& params, const MaterialDesc& material,
+                                         const ColorTexture& color);
 inline bool reads_images(const PrincipledSurface& surface) { return surface.metallic_roughness || surface.normal_map; }
+// It has no absorption of its own: a path through its transmission stays in the medium it was in.
+inline const Dielectric* interior_of(const PrincipledSurface&) { return nullptr; }
 
 }  // namespace rtpro

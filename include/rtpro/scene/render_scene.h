@@ -14,7 +14,7 @@
 #include "rtpro/scene/render_settings.h"
 #include "rtpro/scene/sphere_geometry.h"
 #include "rtpro/scene/triangle_geometry.h"
-#include "rtpro/scene/whitted_fields.h"
+#include "rtpro/scene/whitted_material.h"
 
 #include <cstdint>
 #include <memory>
@@ -65,19 +65,23 @@ struct Emission {
   bool emits() const { return radiance.x > 0.0f || radiance.y > 0.0f || radiance.z > 0.0f; }
 };
 
-// A material as both integrators see it. The Whitted fields (colour, Phong highlight, mirror
-// reflectivity, glass) are set for every kind (whitted_approximation_of, in the kind's header),
-// physically based kinds approximated there, so the whitted integrator renders any scene; the path
-// integrator reads `model`, and `dielectric` for paths inside glass.
+// A material as both integrators see it. What every kind has is Material's own: the base colour
+// (the Lambert reflectance, a conductor's reflectance at normal incidence, principled's base
+// colour: what the kind's bsdf_from reads) and the emission. The kind itself is `model`, which
+// the path integrator shades; `whitted` is the kind's Whitted approximation
+// (whitted_approximation_of, in the kind's header), which the whitted integrator alone reads.
 struct Material {
-  ColorTexture color;
-  float specular;
-  float shininess;
-  float reflectivity;
-  std::optional<Dielectric> dielectric;  // glass: no diffuse part, Fresnel reflection and refraction
-  SurfaceModel model = PhongSurface{};
+  ColorTexture base_color;
   Emission emission{};
+  SurfaceModel model = PhongSurface{};
+  WhittedMaterial whitted;
 };
+
+// The medium inside the material's surface, whose absorption a path through it takes: its kind's
+// (interior_of, in the kind's header); nullptr when it has none.
+inline const Dielectric* interior_of(const Material& material) {
+  return std::visit([](const auto& surface) { return interior_of(surface); }, material.model);
+}
 
 // Light from infinitely far away in every direction a ray escapes along: a latitude-longitude
 // image (read by the caller, see render/environment_light.h) or, without a file, a constant.

@@ -4,7 +4,7 @@
 
 namespace rtpro {
 
-// Each kind's own members, no fallback: a kind added to Bsdf without one of them does not compile.
+// Each kind's own members, no fallback (bsdf.h asks each kind for them).
 Color bsdf_eval(const Bsdf& bsdf, const Vec3& wo, const Vec3& wi) {
   return std::visit([&](const auto& b) { return b.eval(wo, wi); }, bsdf);
 }

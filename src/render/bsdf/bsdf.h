@@ -1,10 +1,11 @@
 #pragma once
 // The closed set of BSDF kinds the path tracer shades with, each a file pair of its own with the
-// members eval, pdf, sample, is_delta and needs_outward_frame, and beside them the bsdf_from of the
-// material kind that makes it (a kind without a BSDF of its own, phong, has a file pair for its
-// bsdf_from alone). Registering a kind is its include and, for a BSDF, its alternative below; the
-// dispatch (bsdf.cpp, material_bsdf.cpp) names a member or a bsdf_from it lacks. All directions
-// are in the local shading frame (render/surface/shading_frame.h), conventions in render/bsdf/bsdf_sample.h.
+// members eval, pdf, sample, is_delta and needs_outward_frame, and beside them what the material
+// kind that makes it declares (render/bsdf/bsdf_from.h; a kind without a BSDF of its own, phong,
+// has a file pair for that alone). Registering a kind is its include and, for a BSDF, its
+// alternative below; the static_asserts here and in render/bsdf/material_bsdf.h name what it
+// lacks. All directions are in the local shading frame (render/surface/shading_frame.h),
+// conventions in render/bsdf/bsdf_sample.h.
 #include "bsdf_sample.h"
 #include "conductor_bsdf.h"
 #include "dielectric_bsdf.h"
@@ -12,12 +13,53 @@
 #include "phong_bsdf.h"
 #include "principled_bsdf.h"
 
+#include <concepts>
+#include <cstddef>
 #include <optional>
+#include <utility>
 #include <variant>
 
 namespace rtpro {
 
 using Bsdf = std::variant<DiffuseBsdf, ConductorBsdf, DielectricBsdf, PrincipledBsdf>;
+
+// Every member the dispatch below calls, each by name, so that a BSDF missing one stops the build
+// with what it lacks rather than in the visits that call it.
+template <typename B>
+constexpr bool has_bsdf_members() {
+  static_assert(
+      requires(const B& b, const Vec3& w) {
+        { b.eval(w, w) } -> std::same_as<Color>;
+      },
+      "a BSDF needs `Color eval(const Vec3& wo, const Vec3& wi) const`");
+  static_assert(
+      requires(const B& b, const Vec3& w) {
+        { b.pdf(w, w) } -> std::same_as<float>;
+      },
+      "a BSDF needs `float pdf(const Vec3& wo, const Vec3& wi) const`");
+  static_assert(
+      requires(const B& b, const Vec3& w, float u_lobe, Sample2D u) {
+        { b.sample(w, u_lobe, u) } -> std::same_as<std::optional<BsdfSample>>;
+      },
+      "a BSDF needs `std::optional<BsdfSample> sample(const Vec3& wo, float u_lobe, Sample2D u) const`");
+  static_assert(
+      requires(const B& b) {
+        { b.is_delta() } -> std::same_as<bool>;
+      },
+      "a BSDF needs `bool is_delta() const`");
+  static_assert(
+      requires(const B& b) {
+        { b.needs_outward_frame() } -> std::same_as<bool>;
+      },
+      "a BSDF needs `bool needs_outward_frame() const`: whether +z of its frame must be the outside");
+  return true;
+}
+
+template <std::size_t... Kind>
+constexpr bool every_bsdf_has_members(std::index_sequence<Kind...>) {
+  return (has_bsdf_members<std::variant_alternative_t<Kind, Bsdf>>() && ...);
+}
+static_assert(every_bsdf_has_members(std::make_index_sequence<std::variant_size_v<Bsdf>>{}));
 
 // f(wo, wi) without the cosine; 0 for delta BSDFs, whose lobes only sampling can find.
 Color bsdf_eval(const Bsdf& bsdf, const Vec3& wo, const Vec3& wi);

@@ -1,6 +1,7 @@
 #include "conductor_bsdf.h"
 
-#include "material_bsdf.h"
+#include "rtpro/scene/conductor_material.h"
+#include "surface_bsdf.h"
 #include "texture.h"
 #include "rtpro/core/math_constants.h"
 
@@ -165,10 +166,10 @@ std::optional<BsdfSample> ConductorBsdf::sample(const Vec3& wo, float u_lobe, Sa
   return BsdfSample{value(wo, wi, o, *g), wi, pdf, false, false};
 }
 
-Vec3 bsdf_from(const ConductorSurface& conductor, const Material& material, const SurfacePoint& point,
+Vec3 bsdf_from(const ConductorSurface& conductor, const ColorTexture& base_color, const SurfacePoint& point,
                const TextureLookup* textures, SurfaceBsdf& out) {
   const float alpha = roughness_to_alpha(conductor.roughness);
-  const Color c = evaluate(material.color, point, textures);
+  const Color c = evaluate(base_color, point, textures);
   out.bsdf = conductor.has_complex_ior ? ConductorBsdf::from_complex_ior(conductor.eta, conductor.k, alpha)
                                        : ConductorBsdf::from_f0(c, alpha);
   out.albedo = c;

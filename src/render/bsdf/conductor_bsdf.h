@@ -7,6 +7,7 @@
 // (at α = 1 a perfect reflector returns as little as 31%, at normal incidence), so rough metals
 // render too dark; Kulla and Conty's compensation (2017) adds a diffuse-like lobe carrying exactly
 // that energy, tinted by the Fresnel term's average.
+#include "bsdf_from.h"
 #include "bsdf_sample.h"
 #include "microfacet.h"
 
@@ -75,14 +76,10 @@ class ConductorBsdf {
 float fresnel_complex(float cos_theta, float eta, float k);
 
 struct ConductorSurface;  // scene/conductor_material.h
-struct Material;          // scene/render_scene.h
-struct SurfacePoint;      // render/surface/surface.h
-class TextureLookup;      // image/texture_lookup.h
-struct SurfaceBsdf;       // render/bsdf/material_bsdf.h
 
-// A conductor's BSDF at `point`, as render/bsdf/material_bsdf.h asks of every kind: written into `out`
-// (its frame left to the caller), the shading normal returned.
-Vec3 bsdf_from(const ConductorSurface& model, const Material& material, const SurfacePoint& point,
+// As render/bsdf/bsdf_from.h asks of every kind.
+Vec3 bsdf_from(const ConductorSurface& model, const ColorTexture& base_color, const SurfacePoint& point,
                const TextureLookup* textures, SurfaceBsdf& out);
+inline bool makes_lambert_bsdf(const ConductorSurface&) { return false; }
 
 }  // namespace rtpro

@@ -1,6 +1,7 @@
 #include "dielectric_bsdf.h"
 
-#include "material_bsdf.h"
+#include "rtpro/scene/dielectric_material.h"
+#include "surface_bsdf.h"
 #include "texture.h"
 #include "dielectric.h"
 
@@ -99,10 +100,10 @@ std::optional<BsdfSample> DielectricBsdf::sample(const Vec3& wo, float u_lobe, S
   return BsdfSample{e.f, wi, e.pdf, false, wi.z * wo.z < 0.0f};
 }
 
-Vec3 bsdf_from(const DielectricSurface& d, const Material& material, const SurfacePoint& point,
+Vec3 bsdf_from(const DielectricSurface& d, const ColorTexture& base_color, const SurfacePoint& point,
                const TextureLookup* textures, SurfaceBsdf& out) {
-  out.bsdf = DielectricBsdf{material.dielectric ? material.dielectric->ior : 1.5f, roughness_to_alpha(d.roughness)};
-  out.albedo = evaluate(material.color, point, textures);
+  out.bsdf = DielectricBsdf{d.glass.ior, roughness_to_alpha(d.roughness)};
+  out.albedo = evaluate(base_color, point, textures);
   return point.shading_normal;
 }
 

@@ -6,6 +6,7 @@
 // Transmitted radiance is scaled by (n_wo / n_wi)², the change of radiance across an interface
 // (pbrt's TransportMode::Radiance): a path entering glass takes 1/η², leaving it η², so a closed
 // glass object in a uniform furnace neither brightens nor darkens it.
+#include "bsdf_from.h"
 #include "bsdf_sample.h"
 #include "microfacet.h"
 
@@ -29,14 +30,10 @@ struct DielectricBsdf {
 };
 
 struct DielectricSurface;  // scene/dielectric_material.h
-struct Material;           // scene/render_scene.h
-struct SurfacePoint;       // render/surface/surface.h
-class TextureLookup;       // image/texture_lookup.h
-struct SurfaceBsdf;        // render/bsdf/material_bsdf.h
 
-// A dielectric's BSDF at `point`, as render/bsdf/material_bsdf.h asks of every kind: written into `out`
-// (its frame left to the caller), the shading normal returned.
-Vec3 bsdf_from(const DielectricSurface& model, const Material& material, const SurfacePoint& point,
+// As render/bsdf/bsdf_from.h asks of every kind.
+Vec3 bsdf_from(const DielectricSurface& model, const ColorTexture& base_color, const SurfacePoint& point,
                const TextureLookup* textures, SurfaceBsdf& out);
+inline bool makes_lambert_bsdf(const DielectricSurface&) { return false; }
 
 }  // namespace rtpro

@@ -1,6 +1,7 @@
 #include "diffuse_bsdf.h"
 
-#include "material_bsdf.h"
+#include "rtpro/scene/diffuse_material.h"
+#include "surface_bsdf.h"
 #include "texture.h"
 
 #include <numbers>
@@ -12,9 +13,9 @@ float DiffuseBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
   return cosine_hemisphere_pdf(abs_cos_theta(wi));
 }
 
-Vec3 bsdf_from(const DiffuseSurface&, const Material& material, const SurfacePoint& point,
+Vec3 bsdf_from(const DiffuseSurface&, const ColorTexture& base_color, const SurfacePoint& point,
                const TextureLookup* textures, SurfaceBsdf& out) {
-  return lambert_surface(evaluate(material.color, point, textures), point.shading_normal, out);
+  return lambert_surface(evaluate(base_color, point, textures), point.shading_normal, out);
 }
 
 }  // namespace rtpro

@@ -1,5 +1,6 @@
 #pragma once
 // Lambertian reflection: the same radiance towards every direction on the side it is lit from.
+#include "bsdf_from.h"
 #include "bsdf_sample.h"
 
 #include <numbers>
@@ -35,14 +36,10 @@ struct DiffuseBsdf {
 };
 
 struct DiffuseSurface;  // scene/diffuse_material.h
-struct Material;        // scene/render_scene.h
-struct SurfacePoint;    // render/surface/surface.h
-class TextureLookup;    // image/texture_lookup.h
-struct SurfaceBsdf;     // render/bsdf/material_bsdf.h
 
-// A diffuse material's BSDF at `point`, as render/bsdf/material_bsdf.h asks of every kind: written into
-// `out` (its frame left to the caller), the shading normal returned.
-Vec3 bsdf_from(const DiffuseSurface& model, const Material& material, const SurfacePoint& point,
+// As render/bsdf/bsdf_from.h asks of every kind.
+Vec3 bsdf_from(const DiffuseSurface& model, const ColorTexture& base_color, const SurfacePoint& point,
                const TextureLookup* textures, SurfaceBsdf& out);
+inline bool makes_lambert_bsdf(const DiffuseSurface&) { return true; }
 
 }  // namespace rtpro

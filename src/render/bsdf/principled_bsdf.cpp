@@ -1,6 +1,7 @@
 #include "principled_bsdf.h"
 
-#include "material_bsdf.h"
+#include "rtpro/scene/principled_material.h"
+#include "surface_bsdf.h"
 #include "normal_map.h"
 #include "texture.h"
 #include "rtpro/core/math_constants.h"
@@ -355,11 +356,10 @@ std::optional<BsdfSample> PrincipledBsdf::sample(const Vec3& wo, float u_lobe, S
   return BsdfSample{evaluate(wo, *wi, o), *wi, pdf, false, !same_hemisphere(wo, *wi)};
 }
 
-// Material::color is the Whitted view's; the model's base colour is its own texture.
-Vec3 bsdf_from(const PrincipledSurface& p, const Material&, const SurfacePoint& point, const TextureLookup* textures,
-               SurfaceBsdf& out) {
+Vec3 bsdf_from(const PrincipledSurface& p, const ColorTexture& base_color, const SurfacePoint& point,
+               const TextureLookup* textures, SurfaceBsdf& out) {
   PrincipledParameters parameters;
-  parameters.base_color = evaluate(p.base_color, point, textures);
+  parameters.base_color = evaluate(base_color, point, textures);
   parameters.metalness = p.metalness;
   parameters.roughness = p.roughness;
   parameters.ior = p.ior;

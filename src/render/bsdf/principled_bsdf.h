@@ -32,6 +32,7 @@
 // The frame: the opaque part (no transmission) reflects on whichever side wo is, like DiffuseBsdf
 // and ConductorBsdf. With transmission_weight > 0, +z must be the outside, as for DielectricBsdf:
 // needs_outward_frame() says when the caller must build the frame from the outward normal.
+#include "bsdf_from.h"
 #include "bsdf_sample.h"
 #include "conductor_bsdf.h"
 #include "microfacet.h"
@@ -123,14 +124,12 @@ class PrincipledBsdf {
 };
 
 struct PrincipledSurface;  // scene/principled_material.h
-struct Material;           // scene/render_scene.h
-struct SurfacePoint;       // render/surface/surface.h
-class TextureLookup;       // image/texture_lookup.h
-struct SurfaceBsdf;        // render/bsdf/material_bsdf.h
 
-// A principled material's BSDF at `point`, as render/bsdf/material_bsdf.h asks of every kind: written
-// into `out` (its frame left to the caller), the shading normal returned (its normal map's).
-Vec3 bsdf_from(const PrincipledSurface& model, const Material& material, const SurfacePoint& point,
+// As render/bsdf/bsdf_from.h asks of every kind.
+Vec3 bsdf_from(const PrincipledSurface& model, const ColorTexture& base_color, const SurfacePoint& point,
                const TextureLookup* textures, SurfaceBsdf& out);
+// Only where its parameters (a metallic-roughness texture's included) leave the Lambert base
+// alone, not wherever it is hit.
+inline bool makes_lambert_bsdf(const PrincipledSurface&) { return false; }
 
 }  // namespace rtpro

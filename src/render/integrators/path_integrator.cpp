@@ -77,7 +77,7 @@ class PathVertexStep {
     const Material& material = scene_.materials[sp.material];
     Color beta = path.beta;
     if (path.medium != PathWorkspace::kOutside) {
-      const Dielectric& medium = *scene_.materials[path.medium].dielectric;
+      const Dielectric& medium = *interior_of(scene_.materials[path.medium]);
       beta = beta *
              beer_lambert_transmittance(medium.transmittance, medium.transmittance_distance, hit.t * length(ray.dir));
     }
@@ -115,7 +115,7 @@ class PathVertexStep {
     // The path's next ray, inside the dielectric it was refracted into, or outside again.
     const Vec3 direction = surface.frame.to_world(bs->wi);
     std::uint32_t medium = path.medium;
-    if (bs->transmitted && material.dielectric) medium = sp.front_face ? sp.material : PathWorkspace::kOutside;
+    if (bs->transmitted && interior_of(material)) medium = sp.front_face ? sp.material : PathWorkspace::kOutside;
     ws_.next_paths.push_back({.sample = path.sample,
                               .bounce = path.bounce + 1,
                               .beta = next_beta,

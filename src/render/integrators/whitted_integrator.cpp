@@ -48,7 +48,7 @@ std::optional<SeenEmitter> seen_emitter(const RenderScene& scene, const Workspac
 // The path weight after the ray's length inside glass (absorption), for a segment of parameter t.
 Color through_medium(const RenderScene& scene, const Workspace::RayTask& task, const Ray& ray, float t) {
   if (task.medium == Workspace::kOutside) return task.weight;
-  const Dielectric& glass = *scene.materials[task.medium].dielectric;
+  const Dielectric& glass = *scene.materials[task.medium].whitted.glass;
   return task.weight *
          beer_lambert_transmittance(glass.transmittance, glass.transmittance_distance, t * length(ray.dir));
 }
@@ -191,7 +191,7 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
   // What follows the surface point and its mirror direction: the albedo and the camera hit's AOVs.
   auto complete = [&](Workspace::ShadedSurface& s) {
     const Ray& ray = generation.rays[s.task];
-    const ColorTexture& color = scene.materials[s.point.material].color;
+    const ColorTexture& color = scene.materials[s.point.material].whitted.color;
     const Color* plain = std::get_if<Color>(&color);
     s.albedo = plain ? *plain : evaluate(color, s.point, ws.textures);
     if (depth == 0 && records_primary)
@@ -275,9 +275,8 @@ void queue_child(Workspace& ws, const Workspace::RayTask& child, const Ray& ray)
 
 // Glass: Fresnel-weighted reflection and refraction (total internal reflection included), the side
 // told by the geometric normal; the refracted ray travels in the glass when it entered.
-void queue_dielectric_children(const Material& m, const Workspace::ShadedSurface& s, const Workspace::RayTask& task,
-                               const Ray& ray, Workspace& ws) {
-  const Dielectric& glass = *m.dielectric;
+void queue_dielectric_children(const Dielectric& glass, const Workspace::ShadedSurface& s,
+                               const Workspace::RayTask& task, const Ray& ray, Workspace& ws) {
   const Vec3 incident = normalize(ray.dir);
   const Vec3& normal = s.point.geometric_normal;  // on the incident side
   const float cos_incident = std::max(0.0f, -dot(incident, normal));
@@ -302,8 +301,8 @@ void light_surfaces(const RenderScene& scene, const Workspace::Generation& gener
   ws.next.clear();
   for (const Workspace::ShadedSurface& s : ws.surfaces) {
     const Workspace::RayTask& task = generation.tasks[s.task];
-    const Material& m = scene.materials[s.point.material];
-    const bool diffuse = !m.dielectric;
+    const WhittedMaterial& m = scene.materials[s.point.material].whitted;
+    const bool diffuse = !m.glass;
     Color direct = diffuse ? s.albedo * scene.render.ambient : Color(0.0f);
     for (std::uint32_t q = s.first_shadow; q < s.end_shadow; ++q) {
       if (ws.occluded[q]) continue;
@@ -315,8 +314,8 @@ void light_surfaces(const RenderScene& scene, const Workspace::Generation& gener
     results[task.sample].radiance += s.weight * direct;
 
     if (depth >= scene.render.max_depth) continue;
-    if (m.dielectric) {
-      queue_dielectric_children(m, s, task, generation.rays[s.task], ws);
+    if (m.glass) {
+      queue_dielectric_children(*m.glass, s, task, generation.rays[s.task], ws);
       continue;
     }
     // A shading normal can tilt the mirror direction below the surface: nothing to reflect then.

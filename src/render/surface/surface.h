@@ -37,12 +37,14 @@ struct SurfacePoint {
 // caller's record in place spares the copy of a returned one, which stalled on store forwarding.
 void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfacePoint& out);
 
-// Whether `material` reads an image (and so needs texture coordinates): its colour, its emission,
-// or one of its model's own (reads_images, in the kind's header: a principled surface's
-// metallic-roughness or normal map; a principled base colour image is its Whitted colour's too).
+// Whether `material` reads an image (and so needs texture coordinates): its base colour, its
+// emission, its Whitted colour (the whitted integrator's albedo) or one of its model's own
+// (reads_images, in the kind's header: a principled surface's metallic-roughness or normal map).
 inline bool has_image_texture(const RenderScene& scene, std::uint32_t material) {
   const Material& m = scene.materials[material];
-  if (std::holds_alternative<ImageTexture>(m.color) || m.emission.texture) return true;
+  if (std::holds_alternative<ImageTexture>(m.base_color) || std::holds_alternative<ImageTexture>(m.whitted.color) ||
+      m.emission.texture)
+    return true;
   return std::visit([](const auto& model) { return reads_images(model); }, m.model);
 }
 

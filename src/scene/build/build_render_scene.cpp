@@ -22,15 +22,15 @@ namespace rtpro {
 
 namespace {
 
-// The Whitted fields and the surface model of a material, each its kind's own
-// (scene/phong_material.h and its neighbours): a kind without them does not compile here.
-WhittedFields whitted_fields(const MaterialDesc& m) {
-  return std::visit([&](const auto& params) { return whitted_approximation_of(params, m); }, m.params);
-}
-
+// The surface model and the Whitted approximation of a material, each its kind's own
+// (scene/phong_material.h and its neighbours; scene/material_kinds.h asks each kind for them).
 SurfaceModel surface_model(const MaterialDesc& m, std::vector<TextureImage>& textures) {
   return std::visit([&](const auto& params) -> SurfaceModel { return surface_model_from(params, m, textures); },
                     m.params);
+}
+
+WhittedMaterial whitted_material(const MaterialDesc& m, const ColorTexture& base_color) {
+  return std::visit([&](const auto& params) { return whitted_approximation_of(params, m, base_color); }, m.params);
 }
 
 class RenderSceneBuilder {
@@ -66,12 +66,12 @@ class RenderSceneBuilder {
  private:
   // Images are registered as they are met: the colour's, the model's own, the emission's.
   std::uint32_t add_material(const MaterialDesc& m, const std::string& name) {
-    const WhittedFields whitted = whitted_fields(m);
-    Material material{color_texture(m, m.color * whitted.color_scale, scene_.textures), whitted.specular,
-                      whitted.shininess, whitted.reflectivity, whitted.glass};
+    Material material;
+    material.base_color = color_texture(m, m.color, scene_.textures);
     material.model = surface_model(m, scene_.textures);
     material.emission =
         Emission{m.emission, m.emission_two_sided, slot_texture(m.emission_texture, Color(1.0f), scene_.textures)};
+    material.whitted = whitted_material(m, material.base_color);
     scene_.materials.push_back(std::move(material));
     scene_.material_names.push_back(name);
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);

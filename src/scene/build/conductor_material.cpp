@@ -6,9 +6,10 @@ ConductorSurface surface_model_from(const ConductorParams& params, const Materia
   return {params.roughness, params.eta.has_value(), params.eta.value_or(Color(0.0f)), params.k.value_or(Color(0.0f))};
 }
 
-WhittedFields whitted_approximation_of(const ConductorParams& params, const MaterialDesc&) {
+WhittedMaterial whitted_approximation_of(const ConductorParams& params, const MaterialDesc&,
+                                         const ColorTexture& color) {
   const float r = params.roughness;
-  return {1.0f - r, phong_exponent_of_roughness(r), r < 0.1f ? 1.0f - r * 10.0f : 0.0f, std::nullopt};
+  return {color, 1.0f - r, phong_exponent_of_roughness(r), r < 0.1f ? 1.0f - r * 10.0f : 0.0f, std::nullopt};
 }
 
 }  // namespace rtpro

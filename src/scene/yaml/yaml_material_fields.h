@@ -1,7 +1,7 @@
 #pragma once
 // The keys several kinds of material share in a scene file, read the same way for each (each
 // kind's reader is its own file: yaml_phong_material.cpp and its neighbours).
-#include "rtpro/scene/whitted_fields.h"
+#include "rtpro/scene/dielectric.h"
 #include "yaml_reader.h"
 
 namespace rtpro {
