@@ -8,9 +8,10 @@
 namespace rtpro::test {
 
 struct CappedRun {
-  int exit_code = -1;   // 128 + signal when killed by one
-  bool killed = false;  // by the kill_after limit
-  double seconds = 0.0;
+  int exit_code = -1;        // 128 + signal when killed by one
+  bool killed = false;       // by the kill_after limit
+  double seconds = 0.0;      // wall time
+  double cpu_seconds = 0.0;  // user + system time of the child: what it did, whatever else ran
   double peak_rss_mb = 0.0;
   std::string output;  // stdout and stderr together
 };
