@@ -13,23 +13,33 @@ cd "$(dirname "$0")/.."
 stages=",${RTPRO_TEST_STAGES:-1,2,3},"
 fuzz_seconds="${RTPRO_FUZZ_SECONDS:-30}"
 
-stage() { printf '\n==== rtpro test stage %s (%s) ====\n' "$1" "$(date +%T)"; }
+# Each stage's start, and at the end the seconds each took: CI's budget is 30 minutes in all.
+timings=""
+stage_started=$SECONDS
+stage() {
+  [[ -z ${stage_name:-} ]] || timings+="  ${stage_name}: $((SECONDS - stage_started)) s"$'\n'
+  stage_name="$1"
+  stage_started=$SECONDS
+  printf '\n==== rtpro test stage %s (%s) ====\n' "$1" "$(date +%T)"
+}
 
 if [[ $stages == *,1,* ]]; then
-  stage "1: gcc Release build and tests"
+  stage "1: format check and gcc Release build"
   scripts/check-format.sh
   cmake -S . -B build -G Ninja
   cmake --build build
+  stage "1: Release tests"
   ctest --test-dir build -j2 --output-on-failure
 fi
 
 if [[ $stages == *,2,* || $stages == *,3,* ]]; then
-  stage "2: clang ASan+UBSan build and tests"
+  stage "2: clang ASan+UBSan build"
   CC=clang CXX=clang++ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DRTPRO_SANITIZE=address,undefined -DRTPRO_FUZZ=ON -DRTPRO_BUILD_BENCHMARKS=OFF
   cmake --build build-asan
   # Two at a time: under the sanitizers most tests use one core; tests/CMakeLists.txt runs the
   # ones that kill, cap or start ranks alone (SERIAL).
+  [[ $stages != *,2,* ]] || stage "2: ASan+UBSan tests"
   [[ $stages != *,2,* ]] || ctest --test-dir build-asan -j2 --output-on-failure
 fi
 
@@ -41,3 +51,4 @@ if [[ $stages == *,3,* ]]; then
   done
 fi
 stage "done"
+printf 'seconds per stage:\n%s  in all: %s s\n' "$timings" "$SECONDS"
