@@ -16,7 +16,8 @@ rtpro_add_wing(render surface
 rtpro_add_wing(render bsdf
   SHARES beer_lambert.h bsdf.h bsdf_from.h bsdf_sample.h cosine_lanes.h dielectric.h microfacet.h sheen.h
   SHARES_MATCHING *_bsdf.h
-  USES surface)
+  USES surface
+  PRIVATE_DEPENDS TBB::tbb)
 rtpro_add_wing(render lights
   SHARES light_linking.h light_picker.h light_sample.h light_sample_value.h light_set.h light_tree.h path_light.h
          point_light_lanes.h

@@ -1,6 +1,7 @@
 // The glTF metallic-roughness material: its sampler matches its pdf (χ²) for each kind of layer
 // stack; sampled f and pdf are eval's and pdf's; it never creates energy, and albedo scaling keeps
-// a white dielectric, a white metal and a coat or fuzz over white near 1 at every roughness; its
+// a white dielectric, a white metal and a coat or fuzz over white near 1 at every roughness, and
+// energy compensation white rough glass at 1 from either side; its
 // limits are the simpler kinds (metalness 1 is ConductorBsdf, specular weight 0 is Lambert
 // exactly); the opaque model is reciprocal; smooth surfaces become delta lobes.
 #include "principled_bsdf.h"
@@ -328,6 +329,18 @@ TEST(PrincipledBsdf, DeltaOnlyWhenEveryLobeIsSmooth) {
   EXPECT_FALSE(PrincipledBsdf(metal(kCopper, 0.3f)).is_delta());
   EXPECT_FALSE(PrincipledBsdf(fuzzy(metal(kCopper, 0.0f), Color(0.5f), 0.5f)).is_delta());
   EXPECT_FALSE(PrincipledBsdf(glass(0.2f)).is_delta());
+}
+
+// glTF's KHR_materials_transmission glass in the white furnace of the interface alone: the rough
+// glass lobe's compensation (DielectricBsdf's table) keeps its energy from either side at every
+// roughness, though its Fresnel term is Schlick's.
+TEST(PrincipledBsdf, WhiteRoughGlassKeepsAllTheEnergyFromEitherSide) {
+  for (float roughness : {0.1f, 0.3f, 0.5f, 0.7f, 1.0f})
+    for (float c : {1.0f, 0.6f, 0.2f, -1.0f, -0.6f, -0.2f}) {
+      const float energy = energy_albedo(glass(roughness), c, 16384).x;
+      print_energy("white glass, roughness", roughness, c, energy);
+      EXPECT_NEAR(energy, 1.0f, 0.01f) << "roughness " << roughness << ", cos " << c;
+    }
 }
 
 TEST(PrincipledBsdf, SmoothGlassSplitsEnergyByFresnel) {

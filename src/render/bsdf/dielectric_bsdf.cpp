@@ -4,6 +4,7 @@
 #include "surface_bsdf.h"
 #include "texture.h"
 #include "dielectric.h"
+#include "dielectric_albedo.h"
 
 #include <cmath>
 
@@ -21,7 +22,8 @@ struct Evaluation {
   float pdf;
 };
 
-Evaluation evaluate_rough(const Vec3& wo, const Vec3& wi, float eta, const GgxDistribution& ggx) {
+// f of single scattering; `compensation` scales it (1/E(μo), or 1 without compensation).
+Evaluation evaluate_rough(const Vec3& wo, const Vec3& wi, float eta, const GgxDistribution& ggx, float compensation) {
   const Evaluation nothing{Color(0.0f), 0.0f};
   const float cos_o = cos_theta(wo);
   const float cos_i = cos_theta(wi);
@@ -39,7 +41,7 @@ Evaluation evaluate_rough(const Vec3& wo, const Vec3& wi, float eta, const GgxDi
 
   const float r = fresnel_either_side(dot(wo, wm), eta);
   const float t = 1.0f - r;
-  const float d_g = ggx.d(wm) * ggx.g(wo, wi);
+  const float d_g = ggx.d(wm) * ggx.g(wo, wi) * compensation;
   const float visible = ggx.visible_normal_pdf(wo, wm);
   if (reflected) {
     return {Color(d_g * r / std::fabs(4.0f * cos_i * cos_o)), visible / (4.0f * std::fabs(dot(wo, wm))) * r};
@@ -70,14 +72,20 @@ std::optional<BsdfSample> sample_smooth(const Vec3& wo, float eta, float u_lobe)
 
 }  // namespace
 
+float DielectricBsdf::compensation(const Vec3& wo) const {
+  if (!energy_compensation) return 1.0f;
+  const float albedo = rough_dielectric_albedo(abs_cos_theta(wo), alpha, relative_eta(wo, eta));
+  return albedo > 0.0f ? 1.0f / albedo : 1.0f;
+}
+
 Color DielectricBsdf::eval(const Vec3& wo, const Vec3& wi) const {
   if (is_delta()) return Color(0.0f);
-  return evaluate_rough(wo, wi, eta, GgxDistribution{alpha}).f;
+  return evaluate_rough(wo, wi, eta, GgxDistribution{alpha}, compensation(wo)).f;
 }
 
 float DielectricBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
   if (is_delta()) return 0.0f;
-  return evaluate_rough(wo, wi, eta, GgxDistribution{alpha}).pdf;
+  return evaluate_rough(wo, wi, eta, GgxDistribution{alpha}, 1.0f).pdf;
 }
 
 std::optional<BsdfSample> DielectricBsdf::sample(const Vec3& wo, float u_lobe, Sample2D u) const {
@@ -95,7 +103,7 @@ std::optional<BsdfSample> DielectricBsdf::sample(const Vec3& wo, float u_lobe, S
     wi = *refracted;
   }
   // f and pdf from wi alone, as eval() and pdf() compute them, so MIS weights match exactly.
-  const Evaluation e = evaluate_rough(wo, wi, eta, ggx);
+  const Evaluation e = evaluate_rough(wo, wi, eta, ggx, compensation(wo));
   if (e.pdf == 0.0f) return std::nullopt;
   return BsdfSample{e.f, wi, e.pdf, false, wi.z * wo.z < 0.0f};
 }

@@ -6,6 +6,23 @@
 // Transmitted radiance is scaled by (n_wo / n_wi)², the change of radiance across an interface
 // (pbrt's TransportMode::Radiance): a path entering glass takes 1/η², leaving it η², so a closed
 // glass object in a uniform furnace neither brightens nor darkens it.
+//
+// Single scattering loses the light that bounces between facets more than once (a third of it at
+// α = 1, grazing), and every interface a path crosses loses it again: without compensation a
+// rough glass sphere in a white furnace reads 0.62 at roughness 0.7. The compensation is
+// Turquin's (2019), as Cycles 4 has it for glass: reflection and transmission alike are divided by
+// E(μo), the interface's single-scattering energy albedo seen from wo's side
+// (render/bsdf/dielectric_albedo.h; one table for each side, since from inside total internal
+// reflection changes the split, not the sum). So the energy albedo is 1 at every roughness and
+// from either side; the lobes keep their shape, so pdf() and sample() are those of single
+// scattering, and a sample's weight is G(wo, wi)/G1(wo)/E(μo), near 1 (visible normals, the lobe
+// chosen by the facet's Fresnel term): no fireflies. Unlike Kulla and Conty's added diffuse-like
+// lobe it spreads the missing light along the lobes it belongs to, and a rough glass does not
+// turn milky.
+//
+// What that costs is reciprocity: the scale follows wo alone, so f(wo, wi) n_wi² E(wo) =
+// f(wi, wo) n_wo² E(wi) rather than without the E's. The path tracer traces radiance only, wo
+// towards the camera, where this is the right adjoint; a light tracer would need the scale on wi.
 #include "bsdf_from.h"
 #include "bsdf_sample.h"
 #include "microfacet.h"
@@ -17,6 +34,8 @@ namespace rtpro {
 struct DielectricBsdf {
   float eta;    // n_inside / n_outside
   float alpha;  // GGX α; below kSmoothAlpha the interface is smooth
+  // Off: the bare single-scattering model (Walter et al.'s, reciprocal), for tests and comparisons.
+  bool energy_compensation = true;
 
   // η = 1 separates nothing: light passes straight through, whatever α says.
   bool is_delta() const { return eta == 1.0f || GgxDistribution{alpha}.effectively_smooth(); }
@@ -27,6 +46,9 @@ struct DielectricBsdf {
   // Reflection when u_lobe < F (of wo to the sampled facet), transmission otherwise, so every
   // sample carries the weight of its lobe's share and none is split.
   std::optional<BsdfSample> sample(const Vec3& wo, float u_lobe, Sample2D u) const;
+
+  // The factor f carries for energy compensation at wo: 1/E(μo), or 1 with it off.
+  float compensation(const Vec3& wo) const;
 };
 
 struct DielectricSurface;  // scene/dielectric_material.h

@@ -6,6 +6,8 @@
 #include "texture.h"
 #include "rtpro/core/math_constants.h"
 #include "dielectric.h"
+#include "dielectric_albedo.h"
+#include "transmission_geometry.h"
 #include "specular_albedo.h"
 
 #include <algorithm>
@@ -54,28 +56,6 @@ std::optional<Vec3> sample_reflection(const GgxDistribution& ggx, const Vec3& wo
   return wi;
 }
 
-struct TransmissionGeometry {
-  Vec3 wm;  // the generalised half vector, facing +z
-  float etap, wo_dot_wm, wi_dot_wm, denom;
-};
-
-// Walter et al.'s refraction geometry, as DielectricBsdf has it: nothing where no facet facing both
-// directions refracts one into the other.
-std::optional<TransmissionGeometry> transmission_geometry(const Vec3& wo, const Vec3& wi, float eta) {
-  if (wo.z * wi.z >= 0.0f) return std::nullopt;
-  const float etap = relative_eta(wo, eta);
-  const Vec3 half = wi * etap + wo;
-  const float half_length2 = dot(half, half);
-  if (half_length2 == 0.0f) return std::nullopt;
-  Vec3 wm = half / std::sqrt(half_length2);
-  if (wm.z < 0.0f) wm = -wm;
-  const float wo_dot_wm = dot(wo, wm), wi_dot_wm = dot(wi, wm);
-  if (wi_dot_wm * wi.z < 0.0f || wo_dot_wm * wo.z < 0.0f) return std::nullopt;
-  const float sum = wi_dot_wm + wo_dot_wm / etap;
-  if (sum == 0.0f) return std::nullopt;
-  return TransmissionGeometry{wm, etap, wo_dot_wm, wi_dot_wm, sum * sum};
-}
-
 }  // namespace
 
 PrincipledBsdf::PrincipledBsdf(const PrincipledParameters& p)
@@ -95,12 +75,15 @@ PrincipledBsdf::PrincipledBsdf(const PrincipledParameters& p)
   const bool dielectric = metalness_ < 1.0f;
   const bool reflects = max_component(specular_f0_) > 0.0f || specular_f90_ > 0.0f;
   const bool tinted = max_component(base_color_) > 0.0f;
+  rough_glass_ = dielectric && transmission_ > 0.0f && !lobe_is_delta(kTransmission);
   active_[kCoat] = coat_weight_ > 0.0f;
   active_[kFuzz] = fuzz_max_ > 0.0f;
-  // From inside, total internal reflection happens whatever the specular weight.
-  active_[kSpecular] = dielectric && (reflects || transmission_ > 0.0f);
+  // The opaque part's reflection, and the glass part's where the glass lobe does not sample its
+  // own: from inside, total internal reflection happens whatever the specular weight.
+  active_[kSpecular] = dielectric && ((reflects && transmission_ < 1.0f) || (transmission_ > 0.0f && !rough_glass_));
   active_[kDiffuse] = dielectric && transmission_ < 1.0f && tinted;
-  active_[kTransmission] = dielectric && transmission_ > 0.0f && tinted;
+  // Rough glass reflects even when black (total internal reflection); smooth glass only refracts here.
+  active_[kTransmission] = dielectric && transmission_ > 0.0f && (tinted || rough_glass_);
   active_[kMetal] = metalness_ > 0.0f;
   for (int k = 0; k < kLobeCount; ++k) sampled_with_density_[k] = active_[k] && !lobe_is_delta(static_cast<Lobe>(k));
 }
@@ -143,11 +126,21 @@ Color PrincipledBsdf::glass_fresnel(float wo_dot_wm) const {
   return specular_fresnel(std::sqrt(1.0f - sin2_t));
 }
 
-// The opaque part reflects alike on either side; the transmissive part as glass does.
-Color PrincipledBsdf::reflection_fresnel(float wo_dot_wm) const {
+// The opaque part reflects alike on either side; the transmissive part as glass does, times its
+// energy compensation.
+Color PrincipledBsdf::reflection_fresnel(float wo_dot_wm, float glass_compensation) const {
   const Color opaque = specular_fresnel(std::fabs(wo_dot_wm));
   if (transmission_ == 0.0f) return opaque;
-  return opaque * (1.0f - transmission_) + glass_fresnel(wo_dot_wm) * transmission_;
+  return opaque * (1.0f - transmission_) + glass_fresnel(wo_dot_wm) * (transmission_ * glass_compensation);
+}
+
+// The rough glass lobe reflects at a facet with this probability and refracts otherwise: each
+// branch in proportion to what it carries, F against base_color·(1 − F), so that a sample's
+// weight stays near 1 (and black glass never refracts).
+float PrincipledBsdf::glass_reflection_probability(float wo_dot_wm) const {
+  const float reflected = mean(glass_fresnel(wo_dot_wm));
+  const float total = reflected + mean(base_color_) * (1.0f - reflected);
+  return total > 0.0f ? reflected / total : 1.0f;
 }
 
 float PrincipledBsdf::coat_fresnel(float cos_theta) const {
@@ -163,24 +156,32 @@ PrincipledBsdf::Outgoing PrincipledBsdf::outgoing(const Vec3& wo) const {
   const float fuzz_albedo = active_[kFuzz] ? fuzz_.albedo(o.cos_o) : 0.0f;
   o.below_coat = 1.0f - coat_weight_ * coat_albedo;
   o.below_fuzz = o.below_coat * std::max(0.0f, 1.0f - fuzz_max_ * fuzz_albedo);
+  if (rough_glass_) {
+    // DielectricBsdf's compensation, for this glass's Schlick F with F0 from the ior: exact for
+    // the default specular colour and weight, approximate for others.
+    const float albedo = rough_dielectric_albedo(o.cos_o, ggx_.alpha, relative_eta(wo, eta_), GlassFresnel::kSchlick);
+    o.glass_compensation = albedo > 0.0f ? 1.0f / albedo : 1.0f;
+  }
 
   // Estimates of each lobe's albedo at wo; exact for the delta lobes, whose weight is a Fresnel
   // factor at wo.
   const float dielectric = o.below_fuzz * (1.0f - metalness_);
   // Seen from inside, the glass part reflects by its own Fresnel (total internal reflection).
   const Color glass_reflectance = wo.z > 0.0f || !active_[kTransmission] ? o.specular_albedo : glass_fresnel(wo.z);
+  const Color glass_passed = base_color_ * (Color(1.0f) - glass_fresnel(wo.z));
   std::array<float, kLobeCount> estimate{};
   if (active_[kCoat]) estimate[kCoat] = coat_weight_ * coat_albedo;
   if (active_[kFuzz]) estimate[kFuzz] = o.below_coat * mean(fuzz_color_) * fuzz_albedo;
   if (active_[kSpecular]) {
-    estimate[kSpecular] =
-        dielectric * ((1.0f - transmission_) * mean(o.specular_albedo) + transmission_ * mean(glass_reflectance));
+    const float glass = rough_glass_ ? 0.0f : transmission_ * mean(glass_reflectance);
+    estimate[kSpecular] = dielectric * ((1.0f - transmission_) * mean(o.specular_albedo) + glass);
   }
   if (active_[kDiffuse]) {
     estimate[kDiffuse] = dielectric * (1.0f - transmission_) * mean(base_color_ * (Color(1.0f) - o.specular_albedo));
   }
   if (active_[kTransmission]) {
-    estimate[kTransmission] = dielectric * transmission_ * mean(base_color_ * (Color(1.0f) - glass_fresnel(wo.z)));
+    const float reflected = rough_glass_ ? mean(glass_reflectance) : 0.0f;
+    estimate[kTransmission] = dielectric * transmission_ * (reflected + mean(glass_passed));
   }
   if (active_[kMetal]) estimate[kMetal] = o.below_fuzz * metalness_ * mean(metal_.fresnel(o.cos_o));
 
@@ -209,14 +210,15 @@ Color PrincipledBsdf::evaluate_transmission(const Vec3& wo, const Vec3& wi) cons
 float PrincipledBsdf::transmission_density(const Vec3& wo, const Vec3& wi) const {
   const std::optional<TransmissionGeometry> t = transmission_geometry(wo, wi, eta_);
   if (!t) return 0.0f;
-  return ggx_.visible_normal_pdf(wo, t->wm) * std::fabs(t->wi_dot_wm) / t->denom;
+  const float refracted = 1.0f - glass_reflection_probability(t->wo_dot_wm);
+  return ggx_.visible_normal_pdf(wo, t->wm) * std::fabs(t->wi_dot_wm) / t->denom * refracted;
 }
 
 Color PrincipledBsdf::evaluate(const Vec3& wo, const Vec3& wi, const Outgoing& o) const {
   if (wo.z == 0.0f || wi.z == 0.0f) return Color(0.0f);
   if (!same_hemisphere(wo, wi)) {
     if (!sampled_with_density_[kTransmission]) return Color(0.0f);
-    return evaluate_transmission(wo, wi) * (o.below_fuzz * (1.0f - metalness_));
+    return evaluate_transmission(wo, wi) * (o.below_fuzz * (1.0f - metalness_) * o.glass_compensation);
   }
   const std::optional<Vec3> wm = reflection_normal(wo, wi);
   if (!wm) return Color(0.0f);
@@ -229,8 +231,8 @@ Color PrincipledBsdf::evaluate(const Vec3& wo, const Vec3& wi, const Outgoing& o
   Color material(0.0f);
   if (metalness_ < 1.0f) {
     Color dielectric(0.0f);
-    if (sampled_with_density_[kSpecular]) {
-      dielectric += reflection_fresnel(dot(wo, *wm)) * microfacet_reflection(ggx_, wo, wi, *wm);
+    if (sampled_with_density_[kSpecular] || rough_glass_) {
+      dielectric += reflection_fresnel(dot(wo, *wm), o.glass_compensation) * microfacet_reflection(ggx_, wo, wi, *wm);
     }
     if (active_[kDiffuse]) {
       const Color albedo_i = ggx_schlick_albedo(abs_cos_theta(wi), ggx_.alpha)(specular_f0_, specular_f90_);
@@ -260,6 +262,8 @@ float PrincipledBsdf::density(const Vec3& wo, const Vec3& wi, const Outgoing& o)
   if (const float p = weight(kCoat); p > 0.0f) pdf += p * reflection_density(coat_ggx_, wo, *wm);
   if (const float p = weight(kFuzz); p > 0.0f) pdf += p * (0.5f * kInvPi);  // uniform over the hemisphere
   if (const float p = weight(kSpecular); p > 0.0f) pdf += p * reflection_density(ggx_, wo, *wm);
+  if (const float p = rough_glass_ ? weight(kTransmission) : 0.0f; p > 0.0f)
+    pdf += p * reflection_density(ggx_, wo, *wm) * glass_reflection_probability(dot(wo, *wm));
   if (const float p = weight(kDiffuse); p > 0.0f) pdf += p * cosine_hemisphere_pdf(abs_cos_theta(wi));
   if (const float p = weight(kMetal); p > 0.0f) pdf += p * metal_.pdf(wo, wi);
   return pdf;
@@ -287,7 +291,14 @@ std::optional<Vec3> PrincipledBsdf::sample_direction(Lobe lobe, const Vec3& wo, 
       return wi;
     }
     case kTransmission: {
-      const std::optional<Vec3> wi = refract_through(wo, ggx_.sample_visible_normal(wo, u), eta_);
+      // Rough glass: one visible normal, reflected or refracted as glass_reflection_probability says.
+      const Vec3 wm = ggx_.sample_visible_normal(wo, u);
+      if (u_lobe < glass_reflection_probability(dot(wo, wm))) {
+        const Vec3 wi = -reflect(wo, wm);
+        if (!same_hemisphere(wo, wi)) return std::nullopt;
+        return wi;
+      }
+      const std::optional<Vec3> wi = refract_through(wo, wm, eta_);
       if (!wi || wi->z * wo.z >= 0.0f) return std::nullopt;
       return wi;
     }

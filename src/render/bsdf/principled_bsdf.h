@@ -86,10 +86,11 @@ class PrincipledBsdf {
 
   // What eval, pdf and sample need of wo alone.
   struct Outgoing {
-    float cos_o;            // |cos θo|
-    Color specular_albedo;  // E(μo) of the dielectric's specular layer, per channel
-    float below_coat;       // 1 − coat_weight·E_coat(μo)
-    float below_fuzz;       // below_coat·(1 − max(fuzz_color)·E_fuzz(μo)): what the material receives
+    float cos_o;                      // |cos θo|
+    Color specular_albedo;            // E(μo) of the dielectric's specular layer, per channel
+    float below_coat;                 // 1 − coat_weight·E_coat(μo)
+    float below_fuzz;                 // below_coat·(1 − max(fuzz_color)·E_fuzz(μo)): what the material receives
+    float glass_compensation = 1.0f;  // 1/E(μo) of the rough glass (render/bsdf/dielectric_albedo.h)
     std::array<float, kLobeCount> probability;
   };
 
@@ -97,7 +98,8 @@ class PrincipledBsdf {
   Outgoing outgoing(const Vec3& wo) const;
   Color specular_fresnel(float cos_theta) const;
   Color glass_fresnel(float wo_dot_wm) const;
-  Color reflection_fresnel(float wo_dot_wm) const;
+  Color reflection_fresnel(float wo_dot_wm, float glass_compensation = 1.0f) const;
+  float glass_reflection_probability(float wo_dot_wm) const;
   float coat_fresnel(float cos_theta) const;
   Color evaluate(const Vec3& wo, const Vec3& wi, const Outgoing& o) const;
   Color evaluate_transmission(const Vec3& wo, const Vec3& wi) const;
@@ -109,6 +111,8 @@ class PrincipledBsdf {
   Color base_color_;
   float metalness_, transmission_;
   float eta_;  // n_inside / n_outside
+  // The transmissive part is rough glass: one lobe samples its reflection and refraction both.
+  bool rough_glass_ = false;
   GgxDistribution ggx_;
   Color specular_f0_;
   float specular_f90_;
