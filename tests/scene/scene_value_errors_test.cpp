@@ -84,12 +84,43 @@ TEST(SceneParser, AcceptsAnySppFromOneTo65536) {
     EXPECT_EQ(parse_scene_text(kHeader + "render: {spp: " + std::to_string(spp) + "}\n", "t.yaml").render.spp, spp);
 }
 
-TEST(SceneParser, RejectsMaxDepthOutsideZeroTo64) {
-  for (const std::string depth : {"-1", "65"}) {
+TEST(SceneParser, RejectsMaxDepthOutsideZeroTo1024) {
+  for (const std::string depth : {"-1", "1025"}) {
     const std::string text = kHeader + "render: {max_depth: " + depth + "}\n";
-    EXPECT_SCENE_ERROR(text, at(text, 3, depth), {"render.max_depth", "from 0 to 64"});
+    EXPECT_SCENE_ERROR(text, at(text, 3, depth), {"render.max_depth", "from 0 to 1024"});
   }
   EXPECT_EQ(parse_scene_text(kHeader + "render: {max_depth: 0}\n", "t.yaml").render.max_depth, 0);
+  EXPECT_EQ(parse_scene_text(kHeader + "render: {max_depth: 1024}\n", "t.yaml").render.max_depth, 1024);
+}
+
+TEST(SceneParser, ReadsThePathControlsAndRejectsBadOnes) {
+  const RenderSettings unset = parse_scene_text(kHeader + "render: {max_depth: 7}\n", "t.yaml").render;
+  EXPECT_FALSE(unset.path.max_diffuse_depth || unset.path.max_glossy_depth || unset.path.max_transmission_depth);
+  EXPECT_EQ(lobe_depths(unset).diffuse, 7);
+  EXPECT_EQ(unset.path.clamp_direct, 0.0f);
+  EXPECT_EQ(unset.path.filter_glossy, 0.0f);
+  const RenderSettings set =
+      parse_scene_text(kHeader +
+                           "render: {max_depth: 300, max_diffuse_depth: 4, max_glossy_depth: 1, "
+                           "max_transmission_depth: 1024, clamp_direct: 2.5, clamp_indirect: 10, filter_glossy: 1}\n",
+                       "t.yaml")
+          .render;
+  EXPECT_EQ(lobe_depths(set).diffuse, 4);
+  EXPECT_EQ(lobe_depths(set).glossy, 1);
+  EXPECT_EQ(lobe_depths(set).transmission, 1024);
+  EXPECT_EQ(set.path.clamp_direct, 2.5f);
+  EXPECT_EQ(set.path.clamp_indirect, 10.0f);
+  EXPECT_EQ(set.path.filter_glossy, 1.0f);
+  for (const std::string key : {"max_diffuse_depth", "max_glossy_depth", "max_transmission_depth"})
+    for (const std::string depth : {"0", "1025"}) {
+      const std::string text = kHeader + "render: {" + key + ": " + depth + "}\n";
+      EXPECT_SCENE_ERROR(text, at(text, 3, depth + "}"), {"render." + key, "from 1 to 1024"});
+    }
+  for (const std::string key : {"clamp_direct", "clamp_indirect", "filter_glossy"})
+    for (const std::string value : {"-1", ".inf", ".nan", "bright"}) {
+      const std::string text = kHeader + "render: {" + key + ": " + value + "}\n";
+      EXPECT_SCENE_ERROR(text, at(text, 3, value), {"render." + key});
+    }
 }
 
 TEST(SceneParser, RejectsNegativeAmbientColourAndIntensity) {

@@ -4,6 +4,7 @@
 #include "rtpro/core/vec3.h"
 
 #include <cstdint>
+#include <optional>
 
 namespace rtpro {
 
@@ -60,9 +61,27 @@ constexpr const char* integrator_name(Integrator integrator) {
   return "?";
 }
 
+// The path integrator's controls as Cycles has them (its Light Paths panel), each off by default.
+struct PathControls {
+  // Per-lobe bounce limits: how many of a path's BSDF samples may take a diffuse, glossy
+  // (reflection off a microfacet or mirror lobe) or transmission lobe; unset is max_depth, which
+  // never binds. The vertex a path reaches when one count reaches its limit adds its emission
+  // and ends, as at max_depth.
+  std::optional<int> max_diffuse_depth, max_glossy_depth, max_transmission_depth;
+  // Cycles' Clamp Direct / Indirect: each contribution to a sample whose channel mean is above
+  // the limit is scaled down to it (the colour's hue kept); 0 is off. Direct: light reaching the
+  // camera after at most one scattering; indirect: the rest.
+  float clamp_direct = 0.0f, clamp_indirect = 0.0f;
+  // Cycles' Filter Glossy: after a BSDF sample of pdf p (per unit solid angle), later microfacet
+  // lobes get GGX α >= 0.5·sqrt(1 − p_min / filter_glossy), p_min the smallest such pdf on the path
+  // so far; 0 is off.
+  float filter_glossy = 0.0f;
+};
+
 struct RenderSettings {
   int spp = 16;       // samples per pixel, 1..65536 (stratified over the most nearly square grid)
   int max_depth = 5;  // bounces after the camera ray: mirror bounces (whitted), path vertices (path)
+  PathControls path;  // path integrator only
   Integrator integrator = Integrator::kWhitted;
   PathSampling path_sampling = PathSampling::kMis;
   SamplerKind sampler = SamplerKind::kStratified;  // the scene parser makes `path` default to sobol
@@ -71,5 +90,15 @@ struct RenderSettings {
   float ambient = 0.2f;
   Color background{0.0f, 0.0f, 0.0f};
 };
+
+// The per-lobe bounce limits, each unset one resolved to max_depth.
+struct LobeDepths {
+  int diffuse, glossy, transmission;
+};
+inline LobeDepths lobe_depths(const RenderSettings& settings) {
+  const int all = settings.max_depth;
+  return {settings.path.max_diffuse_depth.value_or(all), settings.path.max_glossy_depth.value_or(all),
+          settings.path.max_transmission_depth.value_or(all)};
+}
 
 }  // namespace rtpro

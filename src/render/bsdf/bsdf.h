@@ -48,6 +48,11 @@ constexpr bool has_bsdf_members() {
       },
       "a BSDF needs `bool is_delta() const`");
   static_assert(
+      requires(B & b, float min_alpha) {
+        { b.roughen_to(min_alpha) } -> std::same_as<void>;
+      },
+      "a BSDF needs `void roughen_to(float min_alpha)`: its microfacet lobes' α raised to at least min_alpha");
+  static_assert(
       requires(const B& b) {
         { b.needs_outward_frame() } -> std::same_as<bool>;
       },
@@ -67,6 +72,11 @@ Color bsdf_eval(const Bsdf& bsdf, const Vec3& wo, const Vec3& wi);
 float bsdf_pdf(const Bsdf& bsdf, const Vec3& wo, const Vec3& wi);
 // A direction wi for wo: u_lobe chooses among lobes, u places the direction within one.
 std::optional<BsdfSample> bsdf_sample(const Bsdf& bsdf, const Vec3& wo, float u_lobe, Sample2D u);
+// Every microfacet lobe's GGX α raised to at least min_alpha, a smooth lobe's from 0 (Cycles'
+// Filter Glossy: render/integrators/path_integrator.cpp says when and by how much).
+inline void roughen_bsdf(Bsdf& bsdf, float min_alpha) {
+  std::visit([&](auto& b) { b.roughen_to(min_alpha); }, bsdf);
+}
 // True when every lobe is specular: sampling a light there can never be weighted in. Inline: every
 // path vertex asks, and for most kinds the answer is a comparison or a constant.
 inline bool bsdf_is_delta(const Bsdf& bsdf) {

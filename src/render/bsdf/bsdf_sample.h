@@ -7,9 +7,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 namespace rtpro {
+
+// The kind of lobe a sample took, as Cycles counts a path's bounces against its per-kind limits:
+// diffuse (Lambert, sheen), glossy (reflection off a microfacet or mirror lobe, a rough metal's
+// multiple-scattering lobe included) and transmission (refraction, rough or smooth).
+enum class BsdfLobe : std::uint8_t { kDiffuse, kGlossy, kTransmission };
 
 struct BsdfSample {
   // The BSDF value without the cosine. For a delta lobe it is (lobe weight) / |cos θi|, so that
@@ -20,6 +26,7 @@ struct BsdfSample {
   float pdf;
   bool delta;
   bool transmitted;  // wi is on the other side of the surface from wo
+  BsdfLobe lobe;
 };
 
 inline float cos_theta(const Vec3& w) { return w.z; }

@@ -147,7 +147,7 @@ std::optional<BsdfSample> ConductorBsdf::sample(const Vec3& wo, float u_lobe, Sa
   if (wo.z == 0.0f) return std::nullopt;
   if (ggx_.effectively_smooth()) {
     const Vec3 wi{-wo.x, -wo.y, wo.z};
-    return BsdfSample{fresnel(abs_cos_theta(wi)) / abs_cos_theta(wi), wi, 1.0f, true, false};
+    return BsdfSample{fresnel(abs_cos_theta(wi)) / abs_cos_theta(wi), wi, 1.0f, true, false, BsdfLobe::kGlossy};
   }
   const Outgoing o = outgoing(wo);
   Vec3 wi;
@@ -163,7 +163,11 @@ std::optional<BsdfSample> ConductorBsdf::sample(const Vec3& wo, float u_lobe, Sa
   if (!g) return std::nullopt;
   const float pdf = density(wo, o, *g);
   if (pdf == 0.0f) return std::nullopt;
-  return BsdfSample{value(wo, wi, o, *g), wi, pdf, false, false};
+  return BsdfSample{value(wo, wi, o, *g), wi, pdf, false, false, BsdfLobe::kGlossy};
+}
+
+void ConductorBsdf::roughen_to(float min_alpha) {
+  if (ggx_.alpha < min_alpha) *this = ConductorBsdf(model_, f0_, eta_, k_, min_alpha, energy_compensation_);
 }
 
 Vec3 bsdf_from(const ConductorSurface& conductor, const ColorTexture& base_color, const SurfacePoint& point,

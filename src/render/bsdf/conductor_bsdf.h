@@ -25,6 +25,8 @@ class ConductorBsdf {
   float alpha() const { return ggx_.alpha; }
   bool energy_compensation() const { return energy_compensation_; }
   bool is_delta() const { return ggx_.effectively_smooth(); }
+  // α raised to at least min_alpha, the compensation lobe with it (render/bsdf/bsdf.h, roughen_bsdf).
+  void roughen_to(float min_alpha);
   // It reflects on whichever side wo is: the frame's +z is the side the ray came from.
   bool needs_outward_frame() const { return false; }
 

@@ -61,13 +61,13 @@ std::optional<BsdfSample> sample_smooth(const Vec3& wo, float eta, float u_lobe)
   const float r = eta == 1.0f ? 0.0f : fresnel_either_side(cos_theta(wo), eta);
   if (u_lobe < r) {
     const Vec3 wi{-wo.x, -wo.y, wo.z};
-    return BsdfSample{Color(r / abs_cos_theta(wi)), wi, r, true, false};
+    return BsdfSample{Color(r / abs_cos_theta(wi)), wi, r, true, false, BsdfLobe::kGlossy};
   }
   const std::optional<Vec3> wi = refract_through(wo, Vec3{0.0f, 0.0f, 1.0f}, eta);
   if (!wi || wi->z == 0.0f) return std::nullopt;
   const float t = 1.0f - r;
   const float etap = relative_eta(wo, eta);
-  return BsdfSample{Color(t / abs_cos_theta(*wi) / (etap * etap)), *wi, t, true, true};
+  return BsdfSample{Color(t / abs_cos_theta(*wi) / (etap * etap)), *wi, t, true, true, BsdfLobe::kTransmission};
 }
 
 }  // namespace
@@ -105,7 +105,8 @@ std::optional<BsdfSample> DielectricBsdf::sample(const Vec3& wo, float u_lobe, S
   // f and pdf from wi alone, as eval() and pdf() compute them, so MIS weights match exactly.
   const Evaluation e = evaluate_rough(wo, wi, eta, ggx, compensation(wo));
   if (e.pdf == 0.0f) return std::nullopt;
-  return BsdfSample{e.f, wi, e.pdf, false, wi.z * wo.z < 0.0f};
+  const bool transmitted = wi.z * wo.z < 0.0f;
+  return BsdfSample{e.f, wi, e.pdf, false, transmitted, transmitted ? BsdfLobe::kTransmission : BsdfLobe::kGlossy};
 }
 
 Vec3 bsdf_from(const DielectricSurface& d, const ColorTexture& base_color, const SurfacePoint& point,

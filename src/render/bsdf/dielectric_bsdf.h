@@ -27,6 +27,7 @@
 #include "bsdf_sample.h"
 #include "microfacet.h"
 
+#include <algorithm>
 #include <optional>
 
 namespace rtpro {
@@ -41,6 +42,8 @@ struct DielectricBsdf {
   bool is_delta() const { return eta == 1.0f || GgxDistribution{alpha}.effectively_smooth(); }
   // It tells the inside (eta) from the outside: the frame's +z must point outwards.
   bool needs_outward_frame() const { return true; }
+  // α raised to at least min_alpha (render/bsdf/bsdf.h, roughen_bsdf).
+  void roughen_to(float min_alpha) { alpha = std::max(alpha, min_alpha); }
   Color eval(const Vec3& wo, const Vec3& wi) const;
   float pdf(const Vec3& wo, const Vec3& wi) const;
   // Reflection when u_lobe < F (of wo to the sampled facet), transmission otherwise, so every

@@ -12,6 +12,8 @@ struct DiffuseBsdf {
   Color reflectance;  // the albedo, each channel in [0, 1]
 
   bool is_delta() const { return false; }
+  // No microfacet lobe to roughen (render/bsdf/bsdf.h, roughen_bsdf).
+  void roughen_to(float /*min_alpha*/) {}
   // It reflects on whichever side wo is: the frame's +z is the side the ray came from.
   bool needs_outward_frame() const { return false; }
   Color eval(const Vec3& wo, const Vec3& wi) const {
@@ -31,7 +33,8 @@ struct DiffuseBsdf {
     const float pdf = cosine_hemisphere_pdf(abs_cos_theta(cosine_direction));
     // The disk's rim maps to the horizon, where the direction carries nothing.
     if (pdf == 0.0f) return std::nullopt;
-    return BsdfSample{reflectance * std::numbers::inv_pi_v<float>, cosine_direction, pdf, false, false};
+    return BsdfSample{
+        reflectance * std::numbers::inv_pi_v<float>, cosine_direction, pdf, false, false, BsdfLobe::kDiffuse};
   }
 };
 

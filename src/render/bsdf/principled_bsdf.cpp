@@ -69,8 +69,7 @@ PrincipledBsdf::PrincipledBsdf(const PrincipledParameters& p)
   // KHR_materials_specular clamps the tinted F0 before applying the weight.
   const float reflectance = ((eta_ - 1.0f) / (eta_ + 1.0f)) * ((eta_ - 1.0f) / (eta_ + 1.0f));
   specular_f0_ = min(max(p.specular_color, Color(0.0f)) * reflectance, Color(1.0f)) * specular_f90_;
-  const Color average = ggx_schlick_average_albedo(ggx_.alpha)(specular_f0_, specular_f90_);
-  for (int c = 0; c < 3; ++c) diffuse_normalization_[c] = average[c] < 1.0f ? 1.0f / (1.0f - average[c]) : 0.0f;
+  normalize_diffuse();
 
   const bool dielectric = metalness_ < 1.0f;
   const bool reflects = max_component(specular_f0_) > 0.0f || specular_f90_ > 0.0f;
@@ -85,7 +84,12 @@ PrincipledBsdf::PrincipledBsdf(const PrincipledParameters& p)
   // Rough glass reflects even when black (total internal reflection); smooth glass only refracts here.
   active_[kTransmission] = dielectric && transmission_ > 0.0f && (tinted || rough_glass_);
   active_[kMetal] = metalness_ > 0.0f;
-  for (int k = 0; k < kLobeCount; ++k) sampled_with_density_[k] = active_[k] && !lobe_is_delta(static_cast<Lobe>(k));
+  find_sampled_with_density();
+}
+
+void PrincipledBsdf::normalize_diffuse() {
+  const Color average = ggx_schlick_average_albedo(ggx_.alpha)(specular_f0_, specular_f90_);
+  for (int c = 0; c < 3; ++c) diffuse_normalization_[c] = average[c] < 1.0f ? 1.0f / (1.0f - average[c]) : 0.0f;
 }
 
 bool PrincipledBsdf::lobe_is_delta(Lobe lobe) const {
@@ -322,7 +326,8 @@ std::optional<BsdfSample> PrincipledBsdf::sample_delta(Lobe lobe, const Vec3& wo
     const float etap = relative_eta(wo, eta_);
     const Color weight = base_color_ * (Color(1.0f) - glass_fresnel(wo.z)) *
                          (o.below_fuzz * (1.0f - metalness_) * transmission_ / (etap * etap));
-    return BsdfSample{weight / abs_cos_theta(*wi), *wi, o.probability[kTransmission], true, true};
+    return BsdfSample{weight / abs_cos_theta(*wi), *wi, o.probability[kTransmission], true, true,
+                      BsdfLobe::kTransmission};
   }
   Color weight(0.0f);
   float probability = 0.0f;
@@ -339,7 +344,7 @@ std::optional<BsdfSample> PrincipledBsdf::sample_delta(Lobe lobe, const Vec3& wo
     probability += o.probability[kMetal];
   }
   const Vec3 wi{-wo.x, -wo.y, wo.z};
-  return BsdfSample{weight / o.cos_o, wi, probability, true, false};
+  return BsdfSample{weight / o.cos_o, wi, probability, true, false, BsdfLobe::kGlossy};
 }
 
 std::optional<BsdfSample> PrincipledBsdf::sample(const Vec3& wo, float u_lobe, Sample2D u) const {
@@ -364,7 +369,7 @@ std::optional<BsdfSample> PrincipledBsdf::sample(const Vec3& wo, float u_lobe, S
   // f and pdf of the whole mixture, as eval() and pdf() compute them, so MIS weights match.
   const float pdf = density(wo, *wi, o);
   if (pdf == 0.0f) return std::nullopt;
-  return BsdfSample{evaluate(wo, *wi, o), *wi, pdf, false, !same_hemisphere(wo, *wi)};
+  return BsdfSample{evaluate(wo, *wi, o), *wi, pdf, false, !same_hemisphere(wo, *wi), lobe_kind(lobe)};
 }
 
 Vec3 bsdf_from(const PrincipledSurface& p, const ColorTexture& base_color, const SurfacePoint& point,

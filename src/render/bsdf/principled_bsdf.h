@@ -38,6 +38,7 @@
 #include "microfacet.h"
 #include "sheen.h"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 
@@ -69,6 +70,17 @@ class PrincipledBsdf {
   bool is_delta() const;
   // With transmission the surface has an inside: +z of the shading frame must point outwards.
   bool needs_outward_frame() const { return transmission_ > 0.0f; }
+  // The specular, metal, transmission and coat lobes' α raised to at least min_alpha; the sheen
+  // keeps its own (render/bsdf/bsdf.h, roughen_bsdf).
+  void roughen_to(float min_alpha) {
+    if (ggx_.alpha < min_alpha) {
+      ggx_.alpha = min_alpha;
+      metal_ = ConductorBsdf::from_f0(base_color_, min_alpha);
+      normalize_diffuse();
+    }
+    coat_ggx_.alpha = std::max(coat_ggx_.alpha, min_alpha);
+    find_sampled_with_density();
+  }
 
   // f without the cosine, summed over the non-delta lobes.
   Color eval(const Vec3& wo, const Vec3& wi) const;
@@ -95,6 +107,24 @@ class PrincipledBsdf {
   };
 
   bool lobe_is_delta(Lobe lobe) const;
+  static BsdfLobe lobe_kind(Lobe lobe) {
+    switch (lobe) {
+      case kFuzz:
+      case kDiffuse: return BsdfLobe::kDiffuse;
+      case kTransmission: return BsdfLobe::kTransmission;
+      case kCoat:
+      case kSpecular:
+      case kMetal:
+      case kLobeCount: break;
+    }
+    return BsdfLobe::kGlossy;
+  }
+  // What follows from the specular layer's α: the Lambert base's normalisation, and which lobes
+  // are sampled with a density.
+  void normalize_diffuse();
+  void find_sampled_with_density() {
+    for (int k = 0; k < kLobeCount; ++k) sampled_with_density_[k] = active_[k] && !lobe_is_delta(static_cast<Lobe>(k));
+  }
   Outgoing outgoing(const Vec3& wo) const;
   Color specular_fresnel(float cos_theta) const;
   Color glass_fresnel(float wo_dot_wm) const;

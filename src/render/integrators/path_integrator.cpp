@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace rtpro {
@@ -32,6 +33,25 @@ constexpr float kShadowEpsilon = 1e-4f;
 
 // No channel positive (NaN counts as nothing).
 bool carries_no_light(const Color& c) { return !(c.x > 0.0f || c.y > 0.0f || c.z > 0.0f); }
+
+// The path's bounce counts after one more of kind `lobe`.
+void count_bounce(BsdfLobe lobe, Path& next) {
+  switch (lobe) {
+    case BsdfLobe::kDiffuse: ++next.diffuse_bounces; return;
+    case BsdfLobe::kGlossy: ++next.glossy_bounces; return;
+    case BsdfLobe::kTransmission: ++next.transmission_bounces; return;
+  }
+}
+
+// Cycles' sample clamp: a contribution whose channels sum to more than `sum_limit` (3 × the
+// clamp, so that the channel mean is capped) is scaled down to it, its hue kept. An infinite
+// limit, clamping off, leaves every contribution as it was.
+Color clamped(const Color& contribution, float sum_limit) {
+  const float sum = std::fabs(contribution.x) + std::fabs(contribution.y) + std::fabs(contribution.z);
+  return sum > sum_limit ? contribution * (sum_limit / sum) : contribution;
+}
+
+float clamp_sum_limit(float clamp) { return clamp > 0.0f ? 3.0f * clamp : std::numeric_limits<float>::infinity(); }
 
 // The primary hit's AOVs: the camera ray's hit, with the albedo and normal of the path's first
 // vertex that is not purely specular. Returns whether those still wait after this vertex.
@@ -56,7 +76,10 @@ class PathVertexStep {
   PathVertexStep(const RenderScene& scene, const LightSet& lights, std::span<SampleResult> results, PathWorkspace& ws,
                  const TextureLookup* textures, bool cosine_directions, bool lone_point_light)
       : scene_(scene), lights_(lights), results_(results), ws_(ws), textures_(textures),
-        cosine_directions_(cosine_directions), lone_point_light_(lone_point_light) {}
+        cosine_directions_(cosine_directions), lone_point_light_(lone_point_light), depths_(lobe_depths(scene.render)),
+        direct_limit_(clamp_sum_limit(scene.render.path.clamp_direct)),
+        indirect_limit_(clamp_sum_limit(scene.render.path.clamp_indirect)),
+        filter_glossy_(scene.render.path.filter_glossy) {}
 
   // `vertex`: the path's place in the generation; `sp` the surface of a valid hit (make_surfaces),
   // unread otherwise; `u` the vertex's random numbers, read only below max_depth.
@@ -85,13 +108,15 @@ class PathVertexStep {
       add_emission(path, result, emitted_radiance(material.emission, sp.tex_u, sp.tex_v, textures_),
                    lights_.light_of_hit(hit), sp.position, beta);
 
-    // The vertex's BSDF; a path ends after max_depth vertices, having added their emission.
+    // The vertex's BSDF, roughened by Filter Glossy; a path ends after max_depth vertices, or when
+    // its bounces of one lobe kind reach their limit, having added their emission.
     const std::uint32_t group = link_group_of(scene_.links, hit);
     SurfaceBsdf& surface = surface_;
     material_bsdf(material, sp, textures_, surface);
+    filter_glossy(path, surface.bsdf);
     const bool delta = bsdf_is_delta(surface.bsdf);
     const bool aov_pending = record_aovs(path, ray, hit, sp, surface, delta, result.primary);
-    if (path.bounce >= scene_.render.max_depth) return;
+    if (ends_here(path)) return;
 
     // The reciprocal length multiplied through: one division, not normalize's three.
     const Vec3 wo = surface.frame.to_local(ray.dir * (-1.0f / length(ray.dir)));
@@ -99,7 +124,8 @@ class PathVertexStep {
     // Next-event estimation, where the BSDF is not purely specular.
     if (!delta && !lights_.empty(group))
       if (const PathLightSample* light = sample_light(vertex, sp.position, u, group))
-        queue_light_sample(path.sample, origins, surface, wo, *light, beta);
+        queue_light_sample(path.sample, origins, surface, wo, *light, beta,
+                           path.bounce == 0 ? direct_limit_ : indirect_limit_);
 
     // The BSDF sample: β·f·|cos θ|/p_b, then Russian roulette from kRouletteStart on, by the
     // throughput (q the probability of ending, survivors weighted by 1/(1 − q)).
@@ -116,20 +142,43 @@ class PathVertexStep {
     const Vec3 direction = surface.frame.to_world(bs->wi);
     std::uint32_t medium = path.medium;
     if (bs->transmitted && interior_of(material)) medium = sp.front_face ? sp.material : PathWorkspace::kOutside;
-    ws_.next_paths.push_back({.sample = path.sample,
-                              .bounce = path.bounce + 1,
-                              .beta = next_beta,
-                              .origin = sp.position,
-                              .bsdf_pdf = bs->pdf,
-                              .specular = bs->delta,
-                              .aov_pending = aov_pending,
-                              .transmitted = bs->transmitted,
-                              .medium = medium,
-                              .group = group});
+    Path& next = ws_.next_paths.emplace_back(path);
+    next.bounce = path.bounce + 1;
+    next.beta = next_beta;
+    next.origin = sp.position;
+    next.bsdf_pdf = bs->pdf;
+    next.specular = bs->delta;
+    next.aov_pending = aov_pending;
+    next.transmitted = bs->transmitted;
+    next.medium = medium;
+    next.group = group;
+    // A delta sample's pdf is the lobe's probability, not a density: it roughens nothing.
+    if (!bs->delta) next.min_pdf = std::min(path.min_pdf, bs->pdf);
+    count_bounce(bs->lobe, next);
     append_ray(ws_.next_rays, spawn_ray(origins, direction));
   }
 
  private:
+  // Whether the vertex adds its emission and nothing more: the path has made max_depth bounces,
+  // or as many of one lobe kind as that kind's limit (Cycles' per-kind bounce limits, which end a
+  // path at the surface after the bounce that reached one).
+  bool ends_here(const Path& path) const {
+    return path.bounce >= scene_.render.max_depth || path.diffuse_bounces >= depths_.diffuse ||
+           path.glossy_bounces >= depths_.glossy || path.transmission_bounces >= depths_.transmission;
+  }
+
+  // Cycles' Filter Glossy: after BSDF samples of small pdf (diffuse or rough bounces), the
+  // vertex's microfacet lobes are given GGX α >= 0.5·sqrt(1 − p_min / filter_glossy), so a sharp
+  // highlight seen through a diffuse bounce becomes a blur the BSDF samples find, not a caustic
+  // only rare samples do. Off (0), or after the camera and delta bounces only, nothing changes.
+  void filter_glossy(const Path& path, Bsdf& bsdf) const {
+    if (path.min_pdf < filter_glossy_) roughen_bsdf(bsdf, 0.5f * std::sqrt(1.0f - path.min_pdf / filter_glossy_));
+  }
+
+  // The clamp of light reaching the camera through the ray that found it: direct for the camera
+  // ray and the first vertex's rays (at most one scattering), indirect after.
+  float emission_limit(const Path& path) const { return path.bounce <= 1 ? direct_limit_ : indirect_limit_; }
+
   // w_b, the weight of emission a BSDF sample found: in full after the camera or a specular
   // vertex, else against the light sampling that could have found the same point, whose pdf
   // `light_pdf()` gives (asked only under MIS).
@@ -151,7 +200,7 @@ class PathVertexStep {
     const float w_b = light == kInvalidId ? 1.0f : bsdf_sample_weight(path, [&] {
       return lights_.pdf(light, path.origin, on_light, path.group);
     });
-    result.radiance += beta * radiance * w_b;
+    result.radiance += clamped(beta * radiance * w_b, emission_limit(path));
   }
 
   // A ray that leaves the scene: the environment, weighted as emission is, or the background.
@@ -159,12 +208,12 @@ class PathVertexStep {
   void add_escaped_light(const Path& path, const Ray& ray, SampleResult& result) {
     const EnvironmentLight* environment = lights_.environment();
     if (!environment || (path.bounce == 0 && !environment->visible())) {
-      result.radiance += path.beta * scene_.render.background;
+      result.radiance += clamped(path.beta * scene_.render.background, emission_limit(path));
       return;
     }
     const Color radiance = environment->radiance(ray.dir);
     const float w_b = bsdf_sample_weight(path, [&] { return lights_.environment_pdf(ray.dir, path.group); });
-    result.radiance += path.beta * radiance * w_b;
+    result.radiance += clamped(path.beta * radiance * w_b, emission_limit(path));
   }
 
   // A point on a light for next-event estimation: the lone point light's sample, made for the
@@ -179,9 +228,9 @@ class PathVertexStep {
 
   // β·f·|cos θ|·Le·w_l/p_l of a light sample, queued with its shadow ray: added when that passes.
   // w_l weighs it against the BSDF sampling that could have found the same direction; only light
-  // sampling finds a delta light.
+  // sampling finds a delta light. `clamp_limit`: the vertex's (clamped).
   void queue_light_sample(std::uint32_t sample, SpawnOrigins& origins, const SurfaceBsdf& surface, const Vec3& wo,
-                          const PathLightSample& ls, const Color& beta) {
+                          const PathLightSample& ls, const Color& beta, float clamp_limit) {
     const Vec3 wi = surface.frame.to_local(ls.direction);
     const Color f = eval_bsdf(surface.bsdf, wo, wi) * std::fabs(wi.z);
     if (carries_no_light(f)) return;
@@ -193,7 +242,7 @@ class PathVertexStep {
         case PathSampling::kBsdf: return;  // BSDF samples find it
       }
     }
-    const Color contribution = beta * f * ls.radiance * (w_l / ls.pdf);
+    const Color contribution = clamped(beta * f * ls.radiance * (w_l / ls.pdf), clamp_limit);
     if (!is_finite(contribution) || carries_no_light(contribution)) return;
     Ray ray;
     if (std::isinf(ls.distance)) {
@@ -218,6 +267,9 @@ class PathVertexStep {
   // The current vertex's BSDF and light sample, filled in place (material_bsdf, LightSet::sample).
   SurfaceBsdf surface_;
   PathLightSample light_sample_;
+  LobeDepths depths_;
+  float direct_limit_, indirect_limit_;  // clamp_sum_limit of the clamps
+  float filter_glossy_;                  // 0: off
 };
 
 // Every camera ray as the first ray of its sample's path, every result cleared.
@@ -235,7 +287,11 @@ void start_camera_paths(const CameraBatch& batch, PathWorkspace& ws) {
                         .aov_pending = true,
                         .transmitted = false,
                         .medium = PathWorkspace::kOutside,
-                        .group = 0});
+                        .group = 0,
+                        .min_pdf = std::numeric_limits<float>::infinity(),
+                        .diffuse_bounces = 0,
+                        .glossy_bounces = 0,
+                        .transmission_bounces = 0});
   }
 }
 

@@ -44,6 +44,9 @@ class PathWorkspace {
     bool transmitted;      // the ray was refracted into or out of a surface (counted as refraction)
     std::uint32_t medium;  // the dielectric material whose inside the ray crosses, or kOutside
     std::uint32_t group;   // the light-link group of the vertex the ray leaves (0 for the camera)
+    float min_pdf;         // the least pdf of the path's non-delta BSDF samples so far (Filter Glossy)
+    // How many of the path's BSDF samples took each kind of lobe (BsdfLobe), for its limits.
+    std::uint16_t diffuse_bounces, glossy_bounces, transmission_bounces;
   };
   static constexpr std::uint32_t kOutside = ~0u;
   struct ShadowQuery {

@@ -26,7 +26,9 @@ namespace {
 constexpr std::int64_t kMaxImageSide = 65536;
 constexpr std::int64_t kMaxImagePixels = std::int64_t{1} << 28;
 constexpr std::int64_t kMaxSpp = 65536;
-constexpr std::int64_t kMaxDepth = 64;
+// Cycles' limit: pbrt-v4's Transparent Machines and scenes of many stacked glass layers need
+// paths longer than 64.
+constexpr std::int64_t kMaxDepth = 1024;
 constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{256} << 20;
 // Below this sine of the angle between them, up and the view direction give no usable basis.
 constexpr float kMinUpViewSine = 1e-3f;
@@ -117,12 +119,40 @@ int read_spp(const YamlNode& node) {
   return static_cast<int>(spp);
 }
 
+int read_depth(const YamlNode& node, const std::string& name, std::int64_t least = 0, const std::string& why = "") {
+  const std::int64_t value = read_integer(node, name);
+  if (value < least || value > kMaxDepth)
+    fail_at(node, name + " must be from " + std::to_string(least) + " to " + std::to_string(kMaxDepth) + why +
+                      ", got " + std::string(node.scalar()));
+  return static_cast<int>(value);
+}
+
+// Cycles' Light Paths controls (scene/render_settings.h, PathControls). A per-lobe limit of 0 would
+// end every path at its first surface, whatever lobes it has: at least 1, Cycles' 0.
+void read_path_controls(const MappingReader& render, PathControls& path) {
+  const auto depth = [&](const char* key, std::optional<int>& out) {
+    if (const YamlNode* node = render.optional(key))
+      out = read_depth(*node, std::string("render.") + key, 1,
+                       " (1 lets light scatter once off that kind of lobe: Cycles' 0)");
+  };
+  depth("max_diffuse_depth", path.max_diffuse_depth);
+  depth("max_glossy_depth", path.max_glossy_depth);
+  depth("max_transmission_depth", path.max_transmission_depth);
+  const auto non_negative = [&](const char* key, float& out) {
+    if (const YamlNode* node = render.optional(key)) out = read_non_negative(*node, std::string("render.") + key);
+  };
+  non_negative("clamp_direct", path.clamp_direct);
+  non_negative("clamp_indirect", path.clamp_indirect);
+  non_negative("filter_glossy", path.filter_glossy);
+}
+
 RenderSettings read_render(const YamlNode* node) {
   RenderSettings settings;
   if (absent(node)) return settings;
-  const MappingReader render(
-      *node, "render",
-      {"spp", "max_depth", "seed", "ambient", "background", "integrator", "sampling", "sampler", "light_sampler"});
+  const MappingReader render(*node, "render",
+                             {"spp", "max_depth", "seed", "ambient", "background", "integrator", "sampling", "sampler",
+                              "light_sampler", "max_diffuse_depth", "max_glossy_depth", "max_transmission_depth",
+                              "clamp_direct", "clamp_indirect", "filter_glossy"});
   if (const YamlNode* spp = render.optional("spp")) settings.spp = read_spp(*spp);
   if (const YamlNode* integrator = render.optional("integrator"))
     settings.integrator = read_keyword<Integrator>(*integrator, "render.integrator",
@@ -139,13 +169,8 @@ RenderSettings read_render(const YamlNode* node) {
     settings.light_sampler =
         read_keyword<LightSamplerKind>(*light_sampler, "render.light_sampler",
                                        {{"tree", LightSamplerKind::kTree}, {"power", LightSamplerKind::kPower}});
-  if (const YamlNode* depth = render.optional("max_depth")) {
-    const std::int64_t value = read_integer(*depth, "render.max_depth");
-    if (value < 0 || value > kMaxDepth)
-      fail_at(*depth, "render.max_depth must be from 0 to " + std::to_string(kMaxDepth) + ", got " +
-                          std::string(depth->scalar()));
-    settings.max_depth = static_cast<int>(value);
-  }
+  if (const YamlNode* depth = render.optional("max_depth")) settings.max_depth = read_depth(*depth, "render.max_depth");
+  read_path_controls(render, settings.path);
   if (const YamlNode* seed = render.optional("seed")) settings.seed = read_unsigned(*seed, "render.seed");
   if (const YamlNode* ambient = render.optional("ambient"))
     settings.ambient = read_non_negative(*ambient, "render.ambient");
