@@ -14,9 +14,13 @@
 // E(μo), the interface's single-scattering energy albedo seen from wo's side
 // (render/bsdf/dielectric_albedo.h; one table for each side, since from inside total internal
 // reflection changes the split, not the sum). So the energy albedo is 1 at every roughness and
-// from either side; the lobes keep their shape, so pdf() and sample() are those of single
-// scattering, and a sample's weight is G(wo, wi)/G1(wo)/E(μo), near 1 (visible normals, the lobe
-// chosen by the facet's Fresnel term): no fireflies. Unlike Kulla and Conty's added diffuse-like
+// from either side. Sampling: a visible normal (Heitz 2018), reflection or refraction by the
+// facet's F, and the direction kept with probability G(wo, wi)/G1(wo), else drawn again: what is
+// kept is distributed exactly as the compensated f·|cos θi| (of energy), so every sample weighs
+// exactly what a smooth interface's does (1, times the radiance scale), where weighting the
+// single-scattering sample by G/G1/E instead compounds along the chains of internal reflections
+// in a glass object (max pixel 1.7 at 256 spp in the furnace; 1.0 this way). The pdf is that of
+// single scattering times G/G1/E(μo). Unlike Kulla and Conty's added diffuse-like
 // lobe it spreads the missing light along the lobes it belongs to, and a rough glass does not
 // turn milky.
 //
@@ -47,8 +51,8 @@ struct DielectricBsdf {
   // sample carries the weight of its lobe's share and none is split.
   std::optional<BsdfSample> sample(const Vec3& wo, float u_lobe, Sample2D u) const;
 
-  // The factor f carries for energy compensation at wo: 1/E(μo), or 1 with it off.
-  float compensation(const Vec3& wo) const;
+  // The factor f carries for energy compensation at wo: 1/E(μo), or nothing with it off.
+  std::optional<float> compensation(const Vec3& wo) const;
 };
 
 struct DielectricSurface;  // scene/dielectric_material.h
