@@ -5,6 +5,7 @@
 #include "texture.h"
 #include "dielectric.h"
 #include "dielectric_albedo.h"
+#include "rough_glass_sampling.h"
 
 #include <cmath>
 
@@ -22,8 +23,11 @@ struct Evaluation {
   float pdf;
 };
 
-// f of single scattering; `compensation` scales it (1/E(μo), or 1 without compensation).
-Evaluation evaluate_rough(const Vec3& wo, const Vec3& wi, float eta, const GgxDistribution& ggx, float compensation) {
+// f of single scattering and the density of choosing a visible normal and then reflection or
+// refraction by the facet's F; with `compensation` = 1/E(μo), f times it and the density that of
+// keeping only the attempts accepted with probability G(wo, wi)/G1(wo): pdf·G/G1/E.
+Evaluation evaluate_rough(const Vec3& wo, const Vec3& wi, float eta, const GgxDistribution& ggx,
+                          std::optional<float> compensation) {
   const Evaluation nothing{Color(0.0f), 0.0f};
   const float cos_o = cos_theta(wo);
   const float cos_i = cos_theta(wi);
@@ -41,8 +45,11 @@ Evaluation evaluate_rough(const Vec3& wo, const Vec3& wi, float eta, const GgxDi
 
   const float r = fresnel_either_side(dot(wo, wm), eta);
   const float t = 1.0f - r;
-  const float d_g = ggx.d(wm) * ggx.g(wo, wi) * compensation;
-  const float visible = ggx.visible_normal_pdf(wo, wm);
+  const float g = ggx.g(wo, wi);
+  const float scale = compensation.value_or(1.0f);
+  const float d_g = ggx.d(wm) * g * scale;
+  const float visible = compensation ? ggx.visible_normal_pdf(wo, wm) * kept_fraction(ggx, wo, wi) * scale
+                                     : ggx.visible_normal_pdf(wo, wm);
   if (reflected) {
     return {Color(d_g * r / std::fabs(4.0f * cos_i * cos_o)), visible / (4.0f * std::fabs(dot(wo, wm))) * r};
   }
@@ -72,8 +79,8 @@ std::optional<BsdfSample> sample_smooth(const Vec3& wo, float eta, float u_lobe)
 
 }  // namespace
 
-float DielectricBsdf::compensation(const Vec3& wo) const {
-  if (!energy_compensation) return 1.0f;
+std::optional<float> DielectricBsdf::compensation(const Vec3& wo) const {
+  if (!energy_compensation) return std::nullopt;
   const float albedo = rough_dielectric_albedo(abs_cos_theta(wo), alpha, relative_eta(wo, eta));
   return albedo > 0.0f ? 1.0f / albedo : 1.0f;
 }
@@ -85,28 +92,22 @@ Color DielectricBsdf::eval(const Vec3& wo, const Vec3& wi) const {
 
 float DielectricBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
   if (is_delta()) return 0.0f;
-  return evaluate_rough(wo, wi, eta, GgxDistribution{alpha}, 1.0f).pdf;
+  return evaluate_rough(wo, wi, eta, GgxDistribution{alpha}, compensation(wo)).pdf;
 }
 
 std::optional<BsdfSample> DielectricBsdf::sample(const Vec3& wo, float u_lobe, Sample2D u) const {
   if (wo.z == 0.0f) return std::nullopt;
   if (is_delta()) return sample_smooth(wo, eta, u_lobe);
   const GgxDistribution ggx{alpha};
-  const Vec3 wm = ggx.sample_visible_normal(wo, u);
-  Vec3 wi;
-  if (u_lobe < fresnel_either_side(dot(wo, wm), eta)) {
-    wi = -reflect(wo, wm);
-    if (!same_hemisphere(wo, wi)) return std::nullopt;
-  } else {
-    const std::optional<Vec3> refracted = refract_through(wo, wm, eta);
-    if (!refracted || refracted->z * wo.z >= 0.0f) return std::nullopt;
-    wi = *refracted;
-  }
+  const std::optional<float> scale = compensation(wo);
+  const std::optional<Vec3> wi = sample_rough_glass(
+      ggx, wo, eta, u_lobe, u, scale.has_value(), [&](float wo_dot_wm) { return fresnel_either_side(wo_dot_wm, eta); });
+  if (!wi) return std::nullopt;
   // f and pdf from wi alone, as eval() and pdf() compute them, so MIS weights match exactly.
-  const Evaluation e = evaluate_rough(wo, wi, eta, ggx, compensation(wo));
+  const Evaluation e = evaluate_rough(wo, *wi, eta, ggx, scale);
   if (e.pdf == 0.0f) return std::nullopt;
-  const bool transmitted = wi.z * wo.z < 0.0f;
-  return BsdfSample{e.f, wi, e.pdf, false, transmitted, transmitted ? BsdfLobe::kTransmission : BsdfLobe::kGlossy};
+  const bool transmitted = wi->z * wo.z < 0.0f;
+  return BsdfSample{e.f, *wi, e.pdf, false, transmitted, transmitted ? BsdfLobe::kTransmission : BsdfLobe::kGlossy};
 }
 
 Vec3 bsdf_from(const DielectricSurface& d, const ColorTexture& base_color, const SurfacePoint& point,

@@ -14,11 +14,15 @@
 // E(μo), the interface's single-scattering energy albedo seen from wo's side
 // (render/bsdf/dielectric_albedo.h; one table for each side, since from inside total internal
 // reflection changes the split, not the sum). So the energy albedo is 1 at every roughness and
-// from either side; the lobes keep their shape, so pdf() and sample() are those of single
-// scattering, and a sample's weight is G(wo, wi)/G1(wo)/E(μo), near 1 (visible normals, the lobe
-// chosen by the facet's Fresnel term): no fireflies. Unlike Kulla and Conty's added diffuse-like
-// lobe it spreads the missing light along the lobes it belongs to, and a rough glass does not
-// turn milky.
+// from either side. Sampling: a visible normal (Heitz 2018), reflection or refraction by the
+// facet's F, and the direction kept with probability G(wo, wi)/G1(wo), else drawn again: what is
+// kept is distributed exactly as the compensated f·|cos θi| (of energy), so every sample weighs
+// exactly what a smooth interface's does (1, times the radiance scale), where weighting the
+// single-scattering sample by G/G1/E instead compounds along the chains of internal reflections
+// in a glass object (a 64×64 furnace at 256 spp, roughness 0.3: max pixel 1.69 that way, 1.17
+// this way). The pdf is that of single scattering times G/G1/E(μo). Unlike Kulla and Conty's
+// added diffuse-like lobe it spreads the missing light along the lobes it belongs to, and a rough
+// glass does not turn milky.
 //
 // What that costs is reciprocity: the scale follows wo alone, so f(wo, wi) n_wi² E(wo) =
 // f(wi, wo) n_wo² E(wi) rather than without the E's. The path tracer traces radiance only, wo
@@ -50,8 +54,8 @@ struct DielectricBsdf {
   // sample carries the weight of its lobe's share and none is split.
   std::optional<BsdfSample> sample(const Vec3& wo, float u_lobe, Sample2D u) const;
 
-  // The factor f carries for energy compensation at wo: 1/E(μo), or 1 with it off.
-  float compensation(const Vec3& wo) const;
+  // The factor f carries for energy compensation at wo: 1/E(μo), or nothing with it off.
+  std::optional<float> compensation(const Vec3& wo) const;
 };
 
 struct DielectricSurface;  // scene/dielectric_material.h

@@ -7,6 +7,7 @@
 #include "rtpro/core/math_constants.h"
 #include "dielectric.h"
 #include "dielectric_albedo.h"
+#include "rough_glass_sampling.h"
 #include "transmission_geometry.h"
 #include "specular_albedo.h"
 
@@ -138,13 +139,11 @@ Color PrincipledBsdf::reflection_fresnel(float wo_dot_wm, float glass_compensati
   return opaque * (1.0f - transmission_) + glass_fresnel(wo_dot_wm) * (transmission_ * glass_compensation);
 }
 
-// The rough glass lobe reflects at a facet with this probability and refracts otherwise: each
-// branch in proportion to what it carries, F against base_color·(1 − F), so that a sample's
-// weight stays near 1 (and black glass never refracts).
+// The rough glass lobe reflects at a facet with this probability and refracts otherwise: the
+// untinted Schlick F its compensation table integrates, so what the lobe keeps is distributed as
+// its compensated f·|cos θi| for the default specular colour and weight.
 float PrincipledBsdf::glass_reflection_probability(float wo_dot_wm) const {
-  const float reflected = mean(glass_fresnel(wo_dot_wm));
-  const float total = reflected + mean(base_color_) * (1.0f - reflected);
-  return total > 0.0f ? reflected / total : 1.0f;
+  return schlick_glass_fresnel(std::fabs(wo_dot_wm), wo_dot_wm >= 0.0f ? eta_ : 1.0f / eta_);
 }
 
 float PrincipledBsdf::coat_fresnel(float cos_theta) const {
@@ -211,11 +210,12 @@ Color PrincipledBsdf::evaluate_transmission(const Vec3& wo, const Vec3& wi) cons
   return base_color_ * passed * (transmission_ * walter);
 }
 
-float PrincipledBsdf::transmission_density(const Vec3& wo, const Vec3& wi) const {
+float PrincipledBsdf::transmission_density(const Vec3& wo, const Vec3& wi, float compensation) const {
   const std::optional<TransmissionGeometry> t = transmission_geometry(wo, wi, eta_);
   if (!t) return 0.0f;
   const float refracted = 1.0f - glass_reflection_probability(t->wo_dot_wm);
-  return ggx_.visible_normal_pdf(wo, t->wm) * std::fabs(t->wi_dot_wm) / t->denom * refracted;
+  return ggx_.visible_normal_pdf(wo, t->wm) * std::fabs(t->wi_dot_wm) / t->denom * refracted *
+         kept_fraction(ggx_, wo, wi) * compensation;
 }
 
 Color PrincipledBsdf::evaluate(const Vec3& wo, const Vec3& wi, const Outgoing& o) const {
@@ -258,7 +258,7 @@ float PrincipledBsdf::density(const Vec3& wo, const Vec3& wi, const Outgoing& o)
   const auto weight = [&](Lobe lobe) { return sampled_with_density_[lobe] ? o.probability[lobe] : 0.0f; };
   if (!same_hemisphere(wo, wi)) {
     const float p = weight(kTransmission);
-    return p > 0.0f ? p * transmission_density(wo, wi) : 0.0f;
+    return p > 0.0f ? p * transmission_density(wo, wi, o.glass_compensation) : 0.0f;
   }
   const std::optional<Vec3> wm = reflection_normal(wo, wi);
   if (!wm) return 0.0f;
@@ -267,7 +267,8 @@ float PrincipledBsdf::density(const Vec3& wo, const Vec3& wi, const Outgoing& o)
   if (const float p = weight(kFuzz); p > 0.0f) pdf += p * (0.5f * kInvPi);  // uniform over the hemisphere
   if (const float p = weight(kSpecular); p > 0.0f) pdf += p * reflection_density(ggx_, wo, *wm);
   if (const float p = rough_glass_ ? weight(kTransmission) : 0.0f; p > 0.0f)
-    pdf += p * reflection_density(ggx_, wo, *wm) * glass_reflection_probability(dot(wo, *wm));
+    pdf += p * reflection_density(ggx_, wo, *wm) * glass_reflection_probability(dot(wo, *wm)) *
+           kept_fraction(ggx_, wo, wi) * o.glass_compensation;
   if (const float p = weight(kDiffuse); p > 0.0f) pdf += p * cosine_hemisphere_pdf(abs_cos_theta(wi));
   if (const float p = weight(kMetal); p > 0.0f) pdf += p * metal_.pdf(wo, wi);
   return pdf;
@@ -294,18 +295,9 @@ std::optional<Vec3> PrincipledBsdf::sample_direction(Lobe lobe, const Vec3& wo, 
       if (wo.z < 0.0f) wi.z = -wi.z;
       return wi;
     }
-    case kTransmission: {
-      // Rough glass: one visible normal, reflected or refracted as glass_reflection_probability says.
-      const Vec3 wm = ggx_.sample_visible_normal(wo, u);
-      if (u_lobe < glass_reflection_probability(dot(wo, wm))) {
-        const Vec3 wi = -reflect(wo, wm);
-        if (!same_hemisphere(wo, wi)) return std::nullopt;
-        return wi;
-      }
-      const std::optional<Vec3> wi = refract_through(wo, wm, eta_);
-      if (!wi || wi->z * wo.z >= 0.0f) return std::nullopt;
-      return wi;
-    }
+    case kTransmission:
+      return sample_rough_glass(ggx_, wo, eta_, u_lobe, u, true,
+                                [&](float wo_dot_wm) { return glass_reflection_probability(wo_dot_wm); });
     case kMetal: {
       const std::optional<BsdfSample> s = metal_.sample(wo, u_lobe, u);
       if (!s) return std::nullopt;

@@ -134,7 +134,7 @@ class PrincipledBsdf {
   Color evaluate(const Vec3& wo, const Vec3& wi, const Outgoing& o) const;
   Color evaluate_transmission(const Vec3& wo, const Vec3& wi) const;
   float density(const Vec3& wo, const Vec3& wi, const Outgoing& o) const;
-  float transmission_density(const Vec3& wo, const Vec3& wi) const;
+  float transmission_density(const Vec3& wo, const Vec3& wi, float compensation) const;
   std::optional<Vec3> sample_direction(Lobe lobe, const Vec3& wo, float u_lobe, Sample2D u) const;
   std::optional<BsdfSample> sample_delta(Lobe lobe, const Vec3& wo, const Outgoing& o) const;
 
