@@ -1,6 +1,7 @@
 #include "deliver_render.h"
 
 #include "output_target.h"
+#include "path_controls.h"
 #include "progress.h"
 #include "render_output.h"
 #include "render_stats.h"
@@ -70,6 +71,9 @@ std::vector<std::pair<std::string, std::string>> image_metadata(const RenderRequ
       {"rtpro:render_seconds", std::to_string(result.seconds)},
       {"rtpro:scene", request.scene.file},
   };
+  if (scene.render.integrator == Integrator::kPath)
+    for (const PathControlValue& control : path_control_values(scene.render))
+      metadata.push_back({"rtpro:" + control.key, control.text()});
   if (request.render.region) metadata.push_back({"rtpro:region", request.scene.region_text});
   if (request.frame >= 0) metadata.push_back({"rtpro:frame", std::to_string(request.frame)});
   if (result.passes_done < result.passes_total)

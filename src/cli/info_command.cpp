@@ -2,6 +2,7 @@
 #include "command.h"
 #include "load_scene.h"
 #include "memory_option.h"
+#include "path_controls.h"
 #include "scene_overrides.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
@@ -58,17 +59,18 @@ nlohmann::json info_json(const std::string& file, const RenderScene& scene, cons
   const nlohmann::json bounds =
       s.bounds.empty() ? nlohmann::json(nullptr)
                        : nlohmann::json{{"lower", vec_json(s.bounds.lower)}, {"upper", vec_json(s.bounds.upper)}};
+  nlohmann::json render = {{"spp", scene.render.spp},
+                           {"max_depth", scene.render.max_depth},
+                           {"seed", scene.render.seed},
+                           {"integrator", integrator_name(scene.render.integrator)}};
+  for (const PathControlValue& control : path_control_values(scene.render)) render[control.key] = control.value;
   return {{"scene", file},
           {"camera",
            {{"position", vec_json(scene.camera.position)},
             {"look_at", vec_json(scene.camera.look_at)},
             {"fov", scene.camera.fov_degrees},
             {"resolution", {scene.camera.width, scene.camera.height}}}},
-          {"render",
-           {{"spp", scene.render.spp},
-            {"max_depth", scene.render.max_depth},
-            {"seed", scene.render.seed},
-            {"integrator", integrator_name(scene.render.integrator)}}},
+          {"render", render},
           {"materials", s.materials},
           {"lights",
            {{"point", s.point_lights},
@@ -96,6 +98,9 @@ void print_text(const std::string& file, const RenderScene& scene, const SceneSu
             << "image        " << scene.camera.width << "x" << scene.camera.height << ", " << scene.render.spp
             << " spp, max depth " << scene.render.max_depth << ", seed " << scene.render.seed << ", "
             << integrator_name(scene.render.integrator) << " integrator\n"
+            << (scene.render.integrator == Integrator::kPath
+                    ? "path         " + path_controls_summary(scene.render) + "\n"
+                    : std::string())
             << "materials    " << s.materials << "\n"
             << "lights       " << s.point_lights << " point, " << s.spot_lights << " spot, " << s.directional_lights
             << " directional, " << s.area_lights << " area\n"

@@ -8,9 +8,9 @@ namespace rtpro::cli {
 void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
   cmd.add_option("scene", o.scene, "Scene file (YAML or glTF), or '-' for a YAML scene on standard input")->required();
   cmd.footer(
-      "Scene values: the file, then --set, -D, --spp, --size, --seed, --max-depth and --integrator in the order typed "
-      "(the "
-      "last to set a key wins); every value is checked by the scene file's own rules.");
+      "Scene values: the file, then --set, -D and the flags that set a render value (--spp, --size, --seed, "
+      "--max-depth, --integrator, the path controls) in the order typed (the last to set a key wins); every value "
+      "is checked by the scene file's own rules.");
   cmd.add_option("-o,--output", o.output, kOutputFormatsHelp)->required();
   cmd.add_option("--format", o.format, "Image format for -o - (standard output): exr, png, tif, hdr, ...");
   cmd.add_option("--exposure", o.exposure,
@@ -26,6 +26,20 @@ void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
   cmd.add_option("--seed", o.seed, "Seed of the pixel sampler");
   cmd.add_option("--max-depth", o.max_depth,
                  "Most bounces after the camera ray: mirror bounces (whitted), path vertices (path)");
+  cmd.add_option("--max-diffuse-depth", o.max_diffuse_depth,
+                 "path: most diffuse bounces of a path (default: --max-depth); Cycles' Diffuse bounces + 1");
+  cmd.add_option("--max-glossy-depth", o.max_glossy_depth,
+                 "path: most glossy (microfacet or mirror reflection) bounces of a path (default: --max-depth)");
+  cmd.add_option("--max-transmission-depth", o.max_transmission_depth,
+                 "path: most transmission (refraction) bounces of a path (default: --max-depth)");
+  cmd.add_option("--clamp-direct", o.clamp_direct,
+                 "path: scale down each direct-light contribution whose channel mean is above this (Cycles' Clamp "
+                 "Direct; 0: off)");
+  cmd.add_option("--clamp-indirect", o.clamp_indirect,
+                 "path: the same for light that scattered more than once (Cycles' Clamp Indirect; 0: off)");
+  cmd.add_option("--filter-glossy", o.filter_glossy,
+                 "path: roughen glossy lobes seen after diffuse or rough bounces, against caustic noise (Cycles' "
+                 "Filter Glossy; 0: off)");
   cmd.add_option("--integrator", o.integrator,
                  "Light transport: path (physically based path tracing with MIS) or whitted (Phong, mirrors, "
                  "glass); default: the scene's render.integrator, else whitted")

@@ -18,6 +18,8 @@ struct RenderCommandOptions {
   // Kept as the user's text: they become scene overrides checked by the scene file's rules, so
   // "--seed -1" or "--size 4294967297x1" is an error instead of wrapping to another number.
   std::string spp, max_depth, seed, size, integrator;
+  // Cycles' Light Paths controls (scene/render_settings.h, PathControls), kept as text likewise.
+  std::string max_diffuse_depth, max_glossy_depth, max_transmission_depth, clamp_direct, clamp_indirect, filter_glossy;
   std::optional<int> threads;
   std::string ocio_config, display, deprecated_display, view;
   std::string format;     // for -o -

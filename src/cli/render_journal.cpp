@@ -1,5 +1,6 @@
 #include "render_journal.h"
 
+#include "path_controls.h"
 #include "rtpro/core/error.h"
 
 #include <filesystem>
@@ -32,6 +33,8 @@ JobIdentity render_job_identity(const SceneDescription& description, const Scene
                                  path_sampling_name(scene.render.path_sampling) + " sampling, " +
                                  sampler_name(scene.render.sampler) + " sampler, " +
                                  light_sampler_name(scene.render.light_sampler) + " light sampler");
+  // Only when they change the image: journals of renders without them keep their identity.
+  if (path_controls_in_effect(scene.render)) identity.set("path controls", path_controls_summary(scene.render));
   identity.set("backend", settings.backend);
   if (settings.backend == "embree")
     identity.set("embree", "quality " + quality_name(settings.backend_options.embree_quality) +

@@ -47,20 +47,45 @@ SceneOverride variable_override(const std::string& value) {
   return {"variables." + value, "-D " + value};
 }
 
+// The flags that set one key of the scene's `render:` block. An integer's text is checked for
+// digits here; the other values (numbers, keywords) are judged by the scene file's rules alone.
+struct RenderKeyFlag {
+  std::string_view flag, key;
+  bool integer;
+};
+constexpr RenderKeyFlag kRenderKeyFlags[] = {
+    {"--spp", "render.spp", true},
+    {"--max-depth", "render.max_depth", true},
+    {"--max-diffuse-depth", "render.max_diffuse_depth", true},
+    {"--max-glossy-depth", "render.max_glossy_depth", true},
+    {"--max-transmission-depth", "render.max_transmission_depth", true},
+    {"--seed", "render.seed", true},
+    {"--integrator", "render.integrator", false},
+    {"--clamp-direct", "render.clamp_direct", false},
+    {"--clamp-indirect", "render.clamp_indirect", false},
+    {"--filter-glossy", "render.filter_glossy", false},
+};
+
+const RenderKeyFlag* render_key_flag(std::string_view name) {
+  for (const RenderKeyFlag& f : kRenderKeyFlags)
+    if (f.flag == name) return &f;
+  return nullptr;
+}
+
 SceneOverride override_of(const std::string& option_name, const std::string& value) {
   if (option_name == "--set") return {value, "--set " + value};
   if (option_name == "--define") return variable_override(value);
-  if (option_name == "--spp") return integer_override("render.spp", "--spp", value);
-  if (option_name == "--max-depth") return integer_override("render.max_depth", "--max-depth", value);
-  if (option_name == "--seed") return integer_override("render.seed", "--seed", value);
-  if (option_name == "--integrator") return {"render.integrator=" + value, "--integrator " + value};
   if (option_name == "--size") return size_override(value);
+  if (const RenderKeyFlag* f = render_key_flag(option_name)) {
+    const std::string flag(f->flag), key(f->key);
+    if (f->integer) return integer_override(key, flag, value);
+    return {key + "=" + value, flag + " " + value};
+  }
   throw std::logic_error("not a scene override option: " + option_name);
 }
 
 bool is_override_option(const std::string& name) {
-  return name == "--set" || name == "--define" || name == "--spp" || name == "--max-depth" || name == "--seed" ||
-         name == "--size" || name == "--integrator";
+  return name == "--set" || name == "--define" || name == "--size" || render_key_flag(name) != nullptr;
 }
 
 constexpr std::size_t kMaxStdinSceneBytes = std::size_t{256} << 20;

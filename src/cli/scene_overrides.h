@@ -1,6 +1,6 @@
 #pragma once
-// Command-line values that change the scene: --set KEY=VALUE, -D NAME=VALUE and the shorthands
-// --spp, --size, --seed, --max-depth. Each becomes a scene override ("render.spp=16"), so it is
+// Command-line values that change the scene: --set KEY=VALUE, -D NAME=VALUE, --size and the
+// flags that set one render key (--spp, --seed, --max-depth, the path controls...). Each becomes a scene override ("render.spp=16"), so it is
 // validated by the scene file's own rules, and they apply in the order they were typed: the last
 // one that sets a key wins, whichever spelling it used.
 #include "rtpro/scene/description.h"
