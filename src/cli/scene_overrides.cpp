@@ -79,21 +79,11 @@ SceneOverride environment_override(const std::string& value) {
     return {"environment={color: [" + (*rgb)[0] + ", " + (*rgb)[1] + ", " + (*rgb)[2] + "]}", flag};
   if (value.empty()) throw InputError("--environment: expected an image file (.exr, .hdr, .pfm) or a colour R,G,B");
   const std::string file = std::filesystem::absolute(value).lexically_normal().string();
-  bool utf8 = true;
-  for (std::size_t i = 0, length = 0; utf8 && i < file.size(); i += length)
-    utf8 = (length = utf8_sequence_length(std::string_view(file).substr(i))) > 0;
-  if (!utf8)
+  const std::optional<std::string> quoted = yaml_string_literal(file);
+  if (!quoted)
     throw InputError("--environment '" + printable_text(value, 200) +
                      "': the file's path is not UTF-8, which a scene cannot hold; rename the file");
-  std::string quoted = "\"";
-  for (const char c : file) {
-    if (c == '"' || c == '\\') quoted += '\\';
-    if (c == '$') quoted += '$';  // read back by variable substitution as one '$'
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
-      throw InputError("--environment '" + printable_text(value, 200) + "': the path holds a control character");
-    quoted += c;
-  }
-  return {"environment={file: " + quoted + "\"}", flag};
+  return {"environment={file: " + *quoted + "}", flag};
 }
 
 SceneOverride override_of(const std::string& option_name, const std::string& value) {

@@ -4,6 +4,7 @@
 #include "rtpro/scene/description.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,6 +24,11 @@ SceneDescription parse_scene_file(const std::filesystem::path& file, const std::
 SceneDescription parse_scene_text(std::string_view text, const std::filesystem::path& file,
                                   const std::vector<std::string>& overrides = {},
                                   std::vector<MaterialDesc>* model_materials = nullptr);
+
+// `text` as a YAML string for an override's value that reads back exactly (quotes, backslashes and
+// control characters escaped, `$` doubled against variable substitution); none when it is not
+// UTF-8, which a YAML document cannot hold.
+std::optional<std::string> yaml_string_literal(std::string_view text);
 
 // The source an override's errors are located in ("--set KEY=VALUE"): an InputError about an
 // override has it as where().file, so a caller can tell which override it is about and name it

@@ -3,6 +3,7 @@
 #include "gltf_loader.h"
 #include "gltf_scene.h"
 #include "mesh_scene.h"
+#include "model_scene.h"
 #include "yaml_document.h"
 #include "yaml_environment.h"
 #include "yaml_lights.h"
@@ -253,6 +254,11 @@ std::string read_scene_file_text(const std::filesystem::path& file) {
 }
 
 }  // namespace
+
+std::optional<std::string> yaml_string_literal(std::string_view text) {
+  if (!writable_in_yaml(text)) return std::nullopt;
+  return quoted_yaml(std::string(text));
+}
 
 std::string override_source(std::string_view override_text) { return "--set " + std::string(override_text); }
 
