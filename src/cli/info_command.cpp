@@ -6,6 +6,8 @@
 #include "scene_overrides.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
+#include "rtpro/core/printable_text.h"
+#include "rtpro/scene/scene_lighting.h"
 #include "rtpro/scene/scene_summary.h"
 
 #include <nlohmann/json.hpp>
@@ -13,6 +15,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <variant>
 
 namespace rtpro::cli {
 
@@ -20,7 +23,7 @@ namespace {
 
 struct InfoOptions {
   std::string scene;
-  std::vector<std::string> overrides, defines;
+  std::vector<std::string> overrides, defines, environments;
   std::vector<SceneOverride> scene_overrides;  // both, in command-line order
   bool json = false;
   std::string max_memory_mb;
@@ -39,6 +42,58 @@ nlohmann::json cost_json(const RenderCost& cost, const MemoryBudget& budget) {
           {"total_bytes", cost.total_bytes},
           {"budget_bytes", budget.bytes},
           {"budget", budget.source}};
+}
+
+// Each light as it is rendered: its kind, the colour and intensity it is given (a model file's
+// converted to rtpro's radiometric units) and what they make, in the units the path integrator
+// reads them in; where a model file's light came from.
+struct LightLine {
+  std::string type, name, unit, source;
+  Color color;
+  float intensity;
+};
+
+std::vector<LightLine> light_lines(const SceneDescription& description) {
+  std::vector<LightLine> lines;
+  for (std::size_t i = 0; i < description.lights.size(); ++i) {
+    LightLine line = std::visit(
+        [](const auto& light) { return LightLine{light_type_name(light), "", "", "", light.color, light.intensity}; },
+        description.lights[i]);
+    line.unit = line.type == "directional"                    ? "W/m^2 (irradiance)"
+                : line.type == "point" || line.type == "spot" ? "W/sr (radiant intensity)"
+                                                              : "W/(m^2 sr) (radiance)";
+    line.name = description.light_names[i];
+    line.source = description.light_sources[i];
+    lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
+nlohmann::json lights_json(const std::vector<LightLine>& lines) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const LightLine& l : lines) {
+    nlohmann::json light = {{"type", l.type},
+                            {"color", vec_json(l.color)},
+                            {"intensity", l.intensity},
+                            {"rendered", vec_json(l.color * l.intensity)},
+                            {"unit", l.unit}};
+    if (!l.name.empty()) light["name"] = l.name;
+    if (!l.source.empty()) light["source"] = l.source;
+    list.push_back(std::move(light));
+  }
+  return list;
+}
+
+void print_lights(const std::vector<LightLine>& lines) {
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const LightLine& l = lines[i];
+    const Color rendered = l.color * l.intensity;
+    std::cout << "  light " << std::left << std::setw(5) << i << std::right << l.type
+              << (l.name.empty() ? "" : " '" + printable_text(l.name, 80) + "'") << ": intensity " << std::defaultfloat
+              << std::setprecision(6) << l.intensity << " x colour [" << l.color.x << ", " << l.color.y << ", "
+              << l.color.z << "] = [" << rendered.x << ", " << rendered.y << ", " << rendered.z << "] " << l.unit
+              << (l.source.empty() ? "" : ", from " + printable_text(l.source, 200)) << "\n";
+  }
 }
 
 nlohmann::json info_json(const std::string& file, const RenderScene& scene, const SceneSummary& s,
@@ -91,7 +146,7 @@ nlohmann::json info_json(const std::string& file, const RenderScene& scene, cons
 }
 
 void print_text(const std::string& file, const RenderScene& scene, const SceneSummary& s,
-                const SceneBuildReport& report) {
+                const SceneBuildReport& report, const std::vector<LightLine>& lights) {
   const auto mib = [](std::size_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); };
   std::cout << std::fixed << std::setprecision(1);
   std::cout << "scene        " << file << "\n"
@@ -103,8 +158,10 @@ void print_text(const std::string& file, const RenderScene& scene, const SceneSu
                     : std::string())
             << "materials    " << s.materials << "\n"
             << "lights       " << s.point_lights << " point, " << s.spot_lights << " spot, " << s.directional_lights
-            << " directional, " << s.area_lights << " area\n"
-            << "spheres      " << s.spheres_stored << " stored, " << s.spheres_rendered << " after instancing\n"
+            << " directional, " << s.area_lights << " area\n";
+  print_lights(lights);
+  std::cout << std::fixed << std::setprecision(1) << "spheres      " << s.spheres_stored << " stored, "
+            << s.spheres_rendered << " after instancing\n"
             << "triangles    " << s.triangles_stored << " stored, " << s.triangles_rendered << " after instancing\n"
             << "meshes       " << s.meshes << " (" << s.vertices_stored << " vertices)\n"
             << "instances    " << s.instances << " of " << s.prototypes << " prototypes\n";
@@ -141,13 +198,19 @@ int run_info(const InfoOptions& o) {
   const MemoryBudget budget = parse_memory_budget(o.max_memory_mb);
   const LoadedScene loaded = load_scene({.file = o.scene, .overrides = o.scene_overrides, .memory = budget});
   const SceneSummary summary = summarize(loaded.scene);
+  const std::vector<LightLine> lights = light_lines(loaded.description);
+  std::vector<std::string> notes = loaded.description.notes;
+  if (const auto warning = unlit_scene_warning(loaded.scene)) notes.push_back("warning: " + *warning);
   if (o.json) {
     nlohmann::json json = info_json(o.scene, loaded.scene, summary, loaded.report);
+    json["light_list"] = lights_json(lights);
+    json["notes"] = notes;
     json["estimate"] = cost_json(loaded.cost, budget);
     std::cout << json.dump(2) << "\n";
   } else {
-    print_text(o.scene, loaded.scene, summary, loaded.report);
+    print_text(o.scene, loaded.scene, summary, loaded.report, lights);
     print_cost(loaded.cost, budget);
+    for (const std::string& note : notes) std::cout << "note         " << note << "\n";
   }
   return kExitOk;
 }
@@ -157,9 +220,11 @@ int run_info(const InfoOptions& o) {
 void add_info_command(CLI::App& app, Action& action) {
   auto options = std::make_shared<InfoOptions>();
   CLI::App* cmd = app.add_subcommand("info", "Describe what a scene holds without rendering it");
-  cmd->add_option("scene", options->scene, "Scene file (YAML or glTF), or '-' for a YAML scene on standard input")
+  cmd->add_option(
+         "scene", options->scene,
+         "Scene file (YAML), a model as the whole scene (glTF, OBJ, PLY), or '-' for a YAML scene on standard input")
       ->required();
-  add_scene_override_options(*cmd, options->overrides, options->defines);
+  add_scene_override_options(*cmd, options->overrides, options->defines, options->environments);
   cmd->add_flag("--json", options->json, "Print JSON instead of text");
   cmd->add_option("--max-memory", options->max_memory_mb,
                   "Memory budget in MiB the render estimate is checked against (0: no limit; default: the smaller "

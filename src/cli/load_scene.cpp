@@ -2,8 +2,20 @@
 
 #include "pixel_region_option.h"
 #include "rtpro/core/memory_budget.h"
+#include "rtpro/scene/scene_lighting.h"
 
 namespace rtpro::cli {
+
+namespace {
+
+// A model read while the scene was parsed is in the render scene now: the description's copy
+// would otherwise hold its memory through the render.
+void release_loaded_models(SceneDescription& description) {
+  for (MeshDesc& mesh : description.world.meshes) mesh.loaded.reset();
+  for (GltfDesc& gltf : description.world.gltfs) gltf.loaded.reset();
+}
+
+}  // namespace
 
 LoadedScene load_scene(const SceneLoad& load, Log* log) {
   LoadedScene loaded;
@@ -17,6 +29,11 @@ LoadedScene load_scene(const SceneLoad& load, Log* log) {
     log->verbose("estimated memory: " + format_bytes(loaded.cost.total_bytes) + " of a budget of " +
                  format_bytes(load.memory.bytes));
   loaded.scene = build_render_scene(loaded.description, &loaded.report);
+  release_loaded_models(loaded.description);
+  if (log) {
+    for (const std::string& note : loaded.description.notes) log->info(note);
+    if (const auto warning = unlit_scene_warning(loaded.scene)) log->warning(*warning);
+  }
   return loaded;
 }
 

@@ -37,7 +37,8 @@ struct LoadedScene {
 
 // Throws InputError for a scene or override in error (an override's error names its flag), a
 // region outside the image, or an estimate over the budget. With a log, says the estimate at
-// verbose level before the build.
+// verbose level before the build, and after it what rtpro chose for a model file (its notes) and
+// a warning when nothing lights the scene.
 LoadedScene load_scene(const SceneLoad& load, Log* log = nullptr);
 
 }  // namespace rtpro::cli

@@ -6,7 +6,10 @@
 namespace rtpro::cli {
 
 void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
-  cmd.add_option("scene", o.scene, "Scene file (YAML or glTF), or '-' for a YAML scene on standard input")->required();
+  cmd.add_option(
+         "scene", o.scene,
+         "Scene file (YAML), a model as the whole scene (glTF, OBJ, PLY), or '-' for a YAML scene on standard input")
+      ->required();
   cmd.footer(
       "Scene values: the file, then --set, -D and the flags that set a render value (--spp, --size, --seed, "
       "--max-depth, --integrator, the path controls) in the order typed (the last to set a key wins); every value "
@@ -44,7 +47,7 @@ void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
                  "Light transport: path (physically based path tracing with MIS) or whitted (Phong, mirrors, "
                  "glass); default: the scene's render.integrator, else whitted")
       ->check(CLI::IsMember({"path", "whitted"}));
-  add_scene_override_options(cmd, o.overrides, o.defines);
+  add_scene_override_options(cmd, o.overrides, o.defines, o.environments);
   cmd.add_option("--display-server", o.display_server,
                  "Stream the image after each pass to the tev image viewer listening at HOST:PORT (tev's default: "
                  "127.0.0.1:14158); the render goes on if it is absent or goes away");

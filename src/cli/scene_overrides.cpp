@@ -1,12 +1,16 @@
 #include "scene_overrides.h"
 
 #include "rtpro/core/error.h"
+#include "rtpro/core/printable_text.h"
 #include "rtpro/scene/scene_parser.h"
 
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <optional>
 #include <map>
 #include <string_view>
 
@@ -72,6 +76,41 @@ const RenderKeyFlag* render_key_flag(std::string_view name) {
   return nullptr;
 }
 
+// Three numbers (or one, a grey) separated by commas, each as the scene file would take it.
+std::optional<std::vector<std::string>> color_components(const std::string& value) {
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = value.find(',', start);
+    parts.push_back(value.substr(start, comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (parts.size() != 1 && parts.size() != 3) return std::nullopt;
+  for (const std::string& part : parts) {
+    char* end = nullptr;
+    std::strtod(part.c_str(), &end);
+    if (part.empty() || *end != '\0') return std::nullopt;
+  }
+  if (parts.size() == 1) parts = {parts[0], parts[0], parts[0]};
+  return parts;
+}
+
+// --environment FILE|R,G,B is --set environment={file: FILE} or {color: [R, G, B]}: the scene's
+// environment replaced, checked as the scene file's. The file is relative to where rtpro runs, so
+// it is written absolute (the scene's own paths are relative to the scene file).
+SceneOverride environment_override(const std::string& value) {
+  const std::string flag = "--environment " + value;
+  if (const auto rgb = color_components(value))
+    return {"environment={color: [" + (*rgb)[0] + ", " + (*rgb)[1] + ", " + (*rgb)[2] + "]}", flag};
+  if (value.empty()) throw InputError("--environment: expected an image file (.exr, .hdr, .pfm) or a colour R,G,B");
+  const std::string file = std::filesystem::absolute(value).lexically_normal().string();
+  const std::optional<std::string> quoted = yaml_string_literal(file);
+  if (!quoted)
+    throw InputError("--environment '" + printable_text(value, 200) +
+                     "': the file's path is not UTF-8, which a scene cannot hold; rename the file");
+  return {"environment={file: " + *quoted + "}", flag};
+}
+
 SceneOverride override_of(const std::string& option_name, const std::string& value) {
   if (option_name == "--set") return {value, "--set " + value};
   if (option_name == "--define") return variable_override(value);
@@ -81,11 +120,13 @@ SceneOverride override_of(const std::string& option_name, const std::string& val
     if (f->integer) return integer_override(key, flag, value);
     return {key + "=" + value, flag + " " + value};
   }
+  if (option_name == "--environment") return environment_override(value);
   throw std::logic_error("not a scene override option: " + option_name);
 }
 
 bool is_override_option(const std::string& name) {
-  return name == "--set" || name == "--define" || name == "--size" || render_key_flag(name) != nullptr;
+  return name == "--set" || name == "--define" || name == "--size" || name == "--environment" ||
+         render_key_flag(name) != nullptr;
 }
 
 constexpr std::size_t kMaxStdinSceneBytes = std::size_t{256} << 20;
@@ -119,7 +160,8 @@ std::vector<SceneOverride> command_line_overrides(const CLI::App& command) {
   return overrides;
 }
 
-void add_scene_override_options(CLI::App& command, std::vector<std::string>& sets, std::vector<std::string>& defines) {
+void add_scene_override_options(CLI::App& command, std::vector<std::string>& sets, std::vector<std::string>& defines,
+                                std::vector<std::string>& environments) {
   // One value per occurrence: a list option would otherwise swallow the scene file after it.
   const auto one_each = [](CLI::Option* option) {
     option->allow_extra_args(false)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -127,6 +169,12 @@ void add_scene_override_options(CLI::App& command, std::vector<std::string>& set
   one_each(command.add_option("--set", sets, "Override a scene value, e.g. --set camera.fov=30 (repeatable)"));
   one_each(command.add_option("-D,--define", defines,
                               "Set a scene variable, used as $NAME in the scene, e.g. -D radius=2 (repeatable)"));
+  command
+      .add_option("--environment", environments,
+                  "Light the scene from every direction: a latitude-longitude image (.exr, .hdr, .pfm) or a constant "
+                  "colour R,G,B; replaces the scene's environment")
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }
 
 SceneDescription parse_with_overrides(const std::string& scene, const std::vector<SceneOverride>& overrides) {

@@ -1,6 +1,7 @@
 #pragma once
-// Command-line values that change the scene: --set KEY=VALUE, -D NAME=VALUE, --size and the
-// flags that set one render key (--spp, --seed, --max-depth, the path controls...). Each becomes a scene override ("render.spp=16"), so it is
+// Command-line values that change the scene: --set KEY=VALUE, -D NAME=VALUE, --size, --environment
+// and the flags that set one render key (--spp, --seed, --max-depth, the path controls...). Each
+// becomes a scene override ("render.spp=16"), so it is
 // validated by the scene file's own rules, and they apply in the order they were typed: the last
 // one that sets a key wins, whichever spelling it used.
 #include "rtpro/scene/description.h"
@@ -23,9 +24,10 @@ struct SceneOverride {
 // override could hold (--spp ten, --size 640, -D =3).
 std::vector<SceneOverride> command_line_overrides(const CLI::App& command);
 
-// Adds --set and -D/--define to `command` (the shorthands belong to `render`); the values are
-// read back in order through command_line_overrides.
-void add_scene_override_options(CLI::App& command, std::vector<std::string>& sets, std::vector<std::string>& defines);
+// Adds --set, -D/--define and --environment to `command` (the shorthands belong to `render`); the
+// values are read back in order through command_line_overrides.
+void add_scene_override_options(CLI::App& command, std::vector<std::string>& sets, std::vector<std::string>& defines,
+                                std::vector<std::string>& environments);
 
 // The scene (a file, or "-" for standard input) with the overrides applied; an error about an
 // override names its flag.

@@ -110,12 +110,17 @@ struct SphereDesc {
   std::uint32_t linking = kNoLinking;  // index into SceneDescription::linkings (world entries only)
 };
 
+struct LoadedMesh;  // scene/mesh_loader.h
+
 struct MeshDesc {
   std::filesystem::path file;            // resolved against the scene file's folder
   std::uint32_t material = kNoMaterial;  // overrides the OBJ's own materials when set
   SourceLocation where;                  // of the entry in the scene file, for load errors
   NormalsMode normals = NormalsMode::kAuto;
   std::uint32_t linking = kNoLinking;
+  // Set when the file was already loaded while the scene was read (a mesh file as the whole scene
+  // needs its bounds then); otherwise loaded by build_render_scene.
+  std::shared_ptr<const LoadedMesh> loaded = nullptr;
 };
 
 struct GltfAsset;  // a loaded glTF file (src/scene/gltf/gltf_asset.h)
@@ -180,10 +185,17 @@ struct SceneDescription {
   std::vector<MaterialDesc> materials;  // index 0 is always "default"
   std::vector<LightDesc> lights;
   std::vector<std::string> light_names;  // one per light: its `name:`, empty when it has none
+  // One per light: where a model file's light came from and the value the file gave before rtpro
+  // converted it ("nodes[1] (extensions.KHR_lights_punctual.lights[0]): 1000 cd at 683 lm/W"),
+  // what `rtpro info` shows beside the value rendered; empty for a scene file's own lights.
+  std::vector<std::string> light_sources;
   std::optional<EnvironmentDesc> environment;
   std::vector<ObjectDesc> objects;         // named, reachable only through instances
   ObjectDesc world;                        // what is rendered
   std::vector<LightLinkingDesc> linkings;  // of the world's entries that have one
+  // What rtpro chose for a model file read as the whole scene (the camera framing it, the light it
+  // added), one line each, for the commands to say.
+  std::vector<std::string> notes;
 };
 
 }  // namespace rtpro

@@ -134,6 +134,7 @@ class RenderSceneBuilder {
   TriangleMesh load_mesh(const MeshDesc& desc) {
     const auto start = std::chrono::steady_clock::now();
     LoadedMesh loaded = [&] {
+      if (desc.loaded) return *desc.loaded;
       try {
         return load_mesh_file(desc.file, MeshLoadOptions{desc.normals});
       } catch (const InputError& e) {

@@ -2,12 +2,15 @@
 
 #include "gltf_loader.h"
 #include "gltf_scene.h"
+#include "mesh_scene.h"
+#include "model_scene.h"
 #include "yaml_document.h"
 #include "yaml_environment.h"
 #include "yaml_lights.h"
 #include "yaml_materials.h"
 #include "yaml_reader.h"
 #include "yaml_scene_objects.h"
+#include "rtpro/core/printable_text.h"
 #include "rtpro/core/special_file_kind.h"
 
 #include <fcntl.h>
@@ -15,6 +18,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -188,7 +192,8 @@ void check_scene_root(const YamlNode& root) {
     fail_at(root, "expected the scene to be a mapping (rtpro: 1, camera: ...), got " + root.describe());
 }
 
-SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& file) {
+SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& file,
+                            std::vector<MaterialDesc>* model_materials) {
   check_scene_root(root);
   read_version(root);
   const MappingReader scene(root, "the scene",
@@ -198,11 +203,25 @@ SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& f
   desc.file = file;
   desc.camera = read_camera(scene.required("camera"));
   desc.render = read_render(scene.optional("render"));
-  desc.materials = read_materials(scene.optional("materials"), file.parent_path());
+  desc.materials = read_materials(scene.optional("materials"), file.parent_path(), model_materials);
   read_lights(scene.optional("lights"), desc.lights, desc.light_names);
+  desc.light_sources.assign(desc.lights.size(), std::string());
   desc.environment = read_environment(scene.optional("environment"), file.parent_path());
   read_scene_objects(scene.optional("objects"), scene.optional("world"), file.parent_path(), desc);
   return desc;
+}
+
+// A scene file is YAML (JSON is YAML too); a name without an extension is read as one. Any other
+// extension is refused before the file is read: an image or a mesh format rtpro does not read
+// would otherwise fail as a YAML syntax error far from the cause.
+void check_scene_file_extension(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension.empty() || extension == ".yaml" || extension == ".yml" || extension == ".json") return;
+  throw InputError(SourceLocation{file.string()},
+                   "rtpro does not read '" + printable_text(file.extension().string(), 40) +
+                       "' files as scenes; it reads a scene file (.yaml, .yml or .json) or a model file as the whole "
+                       "scene (.gltf, .glb, .obj or .ply)");
 }
 
 [[noreturn]] void refuse_special_file(const SourceLocation& where, mode_t mode) {
@@ -261,17 +280,25 @@ std::string read_scene_file_text(const std::filesystem::path& file) {
 
 }  // namespace
 
+std::optional<std::string> yaml_string_literal(std::string_view text) {
+  if (!writable_in_yaml(text)) return std::nullopt;
+  return quoted_yaml(std::string(text));
+}
+
 std::string override_source(std::string_view override_text) { return "--set " + std::string(override_text); }
 
 SceneDescription parse_scene_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   if (is_gltf_file(file)) return parse_gltf_scene_file(file, overrides);
+  if (is_mesh_scene_file(file)) return parse_mesh_scene_file(file, overrides);
+  if (std::error_code error; std::filesystem::is_regular_file(file, error)) check_scene_file_extension(file);
   SceneDescription description = parse_scene_text(read_scene_file_text(file), file, overrides);
   description.source_files.insert(description.source_files.begin(), file);
   return description;
 }
 
 SceneDescription parse_scene_text(std::string_view text, const std::filesystem::path& file,
-                                  const std::vector<std::string>& overrides) {
+                                  const std::vector<std::string>& overrides,
+                                  std::vector<MaterialDesc>* model_materials) {
   std::vector<std::filesystem::path> included;
   const auto read_include = [&included](const std::filesystem::path& include) {
     included.push_back(include);
@@ -281,7 +308,7 @@ SceneDescription parse_scene_text(std::string_view text, const std::filesystem::
   check_scene_root(document.root());
   for (const std::string& override_text : overrides) document.apply_override(override_text);
   document.resolve_variables();
-  SceneDescription description = read_scene(document.root(), file);
+  SceneDescription description = read_scene(document.root(), file, model_materials);
   description.source_files = std::move(included);
   return description;
 }

@@ -105,13 +105,15 @@ void read_emission(const MappingReader& material, MaterialDesc& desc) {
   const YamlNode* emission = material.optional("emission");
   const YamlNode* strength = material.optional("emission_strength");
   const YamlNode* sides = material.optional("emission_sides");
-  if (!emission && (strength || sides))
+  // A model's material read over (model_materials) may qualify the emission it already has.
+  if (!emission && (strength || sides) && !(max_component(desc.emission) > 0.0f))
     fail_at(strength ? *strength : *sides, material.field(strength ? "emission_strength" : "emission_sides") +
                                                " qualifies the emission: give the material an emission colour too");
-  if (!emission) return;
-  desc.emission = read_vec3(*emission, material.field("emission"));  // radiance: no 1-is-full rule
-  if (std::min({desc.emission.x, desc.emission.y, desc.emission.z}) < 0.0f)
-    fail_at(*emission, material.field("emission") + " is emitted radiance: each channel 0 or more");
+  if (emission) {
+    desc.emission = read_vec3(*emission, material.field("emission"));  // radiance: no 1-is-full rule
+    if (std::min({desc.emission.x, desc.emission.y, desc.emission.z}) < 0.0f)
+      fail_at(*emission, material.field("emission") + " is emitted radiance: each channel 0 or more");
+  }
   if (strength) {
     const float factor = read_non_negative(*strength, material.field("emission_strength"));
     desc.emission = desc.emission * factor;
@@ -123,14 +125,18 @@ void read_emission(const MappingReader& material, MaterialDesc& desc) {
         read_keyword<bool>(*sides, material.field("emission_sides"), {{"front", false}, {"both", true}});
 }
 
-MaterialDesc read_material(const std::string& name, const YamlNode& node, const std::filesystem::path& folder) {
+// Read over `desc`: the keys the entry gives replace its values, the others stay (a fresh material's
+// defaults, or a model's material). A `type:` of another kind starts that kind from its defaults.
+MaterialDesc read_material(const std::string& name, const YamlNode& node, const std::filesystem::path& folder,
+                           MaterialDesc desc = {}) {
   if (!node.is_mapping())
     fail_at(node, "material '" + name + "': expected a mapping such as {type: diffuse, color: [0.8, 0.8, 0.8]}, got " +
                       node.describe());
-  MaterialDesc desc;
   desc.name = name;
-  if (const YamlEntry* type = node.find("type"))
-    desc.params = read_material_kind(*type->value, "material '" + name + "'.type");
+  if (const YamlEntry* type = node.find("type")) {
+    MaterialParams kind = read_material_kind(*type->value, "material '" + name + "'.type");
+    if (kind.index() != desc.params.index()) desc.params = std::move(kind);
+  }
   const std::vector<std::string_view> keys = allowed_keys(desc.params);
   const MappingReader material(node, "material '" + name + "'", keys);
   read_emission(material, desc);
@@ -149,13 +155,22 @@ MaterialDesc read_material(const std::string& name, const YamlNode& node, const 
 
 }  // namespace
 
-std::vector<MaterialDesc> read_materials(const YamlNode* node, const std::filesystem::path& folder) {
+std::vector<MaterialDesc> read_materials(const YamlNode* node, const std::filesystem::path& folder,
+                                         std::vector<MaterialDesc>* model_materials) {
   std::vector<MaterialDesc> materials(1);
   materials[0].name = "default";
   if (!node || node->is_null()) return materials;
   if (!node->is_mapping())
     fail_at(*node, "materials: expected a mapping of name: {color: ...}, got " + node->describe());
   for (const YamlEntry& entry : node->entries()) {
+    bool model_material = false;
+    for (std::size_t i = 0; model_materials && i < model_materials->size(); ++i) {
+      MaterialDesc& m = (*model_materials)[i];
+      if (m.name != entry.key) continue;
+      m = read_material(m.name, *entry.value, folder, m);
+      model_material = true;
+    }
+    if (model_material) continue;
     MaterialDesc material = read_material(std::string(entry.key), *entry.value, folder);
     if (entry.key == "default") {
       materials[0] = std::move(material);
