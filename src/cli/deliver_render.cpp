@@ -41,8 +41,13 @@ RenderStatistics render_statistics(const RenderRequest& request, const RenderSes
   stats.output = request.output.name();
   stats.threads = request.threads;
   stats.spp = scene.render.spp;
-  stats.width = scene.camera.width;
-  stats.height = scene.camera.height;
+  stats.samples = result.samples;
+  stats.full_width = scene.camera.width;
+  stats.full_height = scene.camera.height;
+  stats.region = request.render.region;
+  stats.crop = request.crop && request.render.region;
+  stats.width = stats.crop ? stats.region->width() : scene.camera.width;
+  stats.height = stats.crop ? stats.region->height() : scene.camera.height;
   stats.load_seconds = load_seconds;
   stats.backend = std::string(session.backend().name());
   stats.build_seconds = session.backend().stats().build_seconds;
@@ -64,7 +69,13 @@ std::vector<std::pair<std::string, std::string>> image_metadata(const RenderRequ
   std::vector<std::pair<std::string, std::string>> metadata = {
       {"Software", std::string("rtpro ") + RTPRO_VERSION},
       {"rtpro:backend", backend},
-      {"rtpro:spp", std::to_string(scene.render.spp)},
+      // As taken (a time limit or adaptive sampling takes fewer than asked): the most a pixel took,
+      // then the least and the mean.
+      {"rtpro:spp", std::to_string(result.samples.max)},
+      {"rtpro:spp_min", std::to_string(result.samples.min)},
+      {"rtpro:spp_mean", std::to_string(result.samples.mean)},
+      {"rtpro:spp_max", std::to_string(result.samples.max)},
+      {"rtpro:spp_requested", std::to_string(scene.render.spp)},
       {"rtpro:seed", std::to_string(scene.render.seed)},
       {"rtpro:max_depth", std::to_string(scene.render.max_depth)},
       {"rtpro:integrator", integrator_name(scene.render.integrator)},
@@ -75,6 +86,10 @@ std::vector<std::pair<std::string, std::string>> image_metadata(const RenderRequ
     for (const PathControlValue& control : path_control_values(scene.render))
       metadata.push_back({"rtpro:" + control.key, control.text()});
   if (request.render.region) metadata.push_back({"rtpro:region", request.scene.region_text});
+  // A cropped image says where it belongs.
+  if (request.render.region && request.crop)
+    metadata.push_back(
+        {"rtpro:full_resolution", std::to_string(scene.camera.width) + "x" + std::to_string(scene.camera.height)});
   if (request.frame >= 0) metadata.push_back({"rtpro:frame", std::to_string(request.frame)});
   if (result.passes_done < result.passes_total)
     metadata.push_back(
@@ -148,10 +163,12 @@ int deliver_render(const RenderRequest& request, RenderSession& session, RenderR
     say_interrupted(result, written, session.journal());
     return kExitInterrupted;
   }
-  const RenderScene& scene = session.scene();
   std::ostringstream line;
-  line << "wrote " << stats.output << " (" << scene.camera.width << "x" << scene.camera.height << ", "
-       << scene.render.spp << " spp, " << stats.backend << ") in " << format_duration(stats.total_seconds);
+  line << "wrote " << stats.output << " (" << size_text(stats) << ", " << samples_text(stats.samples, stats.spp)
+       << (result.stop == RenderStop::kTimeLimit   ? ": time limit"
+           : result.stop == RenderStop::kConverged ? ": converged"
+                                                   : "")
+       << ", " << stats.backend << ") in " << format_duration(stats.total_seconds);
   log.info(line.str());
   return kExitOk;
 }

@@ -1,6 +1,7 @@
 #include "render_command_options.h"
 
 #include "backend_options.h"
+#include "choice_option.h"
 #include "output_target.h"
 
 namespace rtpro::cli {
@@ -19,8 +20,7 @@ void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
   cmd.add_option("--exposure", o.exposure,
                  "Scale the rendered colour by 2^STOPS, in every format (before the view transform for display "
                  "formats; not the AOVs)");
-  cmd.add_option("--backend", o.backend, "Ray tracing backend: embree or native")
-      ->check(CLI::IsMember({"native", "embree"}))
+  one_of(cmd.add_option("--backend", o.backend, "Ray tracing backend: embree or native"), {"native", "embree"})
       ->capture_default_str();
   cmd.add_option("--spp", o.spp,
                  "Samples per pixel, 1 to 65536, stratified over the most nearly square grid (48: 8x6)");
@@ -43,10 +43,10 @@ void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
   cmd.add_option("--filter-glossy", o.filter_glossy,
                  "path: roughen glossy lobes seen after diffuse or rough bounces, against caustic noise (Cycles' "
                  "Filter Glossy; 0: off)");
-  cmd.add_option("--integrator", o.integrator,
-                 "Light transport: path (physically based path tracing with MIS) or whitted (Phong, mirrors, "
-                 "glass); default: the scene's render.integrator, else whitted")
-      ->check(CLI::IsMember({"path", "whitted"}));
+  one_of(cmd.add_option("--integrator", o.integrator,
+                        "Light transport: path (physically based path tracing with MIS) or whitted (Phong, mirrors, "
+                        "glass); default: the scene's render.integrator, else whitted"),
+         {"path", "whitted"});
   add_scene_override_options(cmd, o.overrides, o.defines, o.environments);
   cmd.add_option("--display-server", o.display_server,
                  "Stream the image after each pass to the tev image viewer listening at HOST:PORT (tev's default: "
@@ -57,8 +57,9 @@ void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
   cmd.add_flag("--skip-existing", o.skip_existing, "Skip frames (or the single output) whose file already exists");
   cmd.add_option("--region", o.region, "Render only pixels x0,y0,x1,y1 (x1, y1 exclusive)");
   cmd.add_flag("--crop", o.crop, "With --region: write only the region instead of a full-size image");
-  cmd.add_option("--aov", o.aovs,
-                 "Extra EXR layers: albedo,normal,depth,object-id,halves,variance,spp (EXR outputs only)")
+  one_of(cmd.add_option("--aov", o.aovs,
+                        "Extra EXR layers: albedo,normal,depth,object-id,halves,variance,spp (EXR outputs only)"),
+         {"albedo", "normal", "depth", "object-id", "halves", "variance", "spp"})
       ->delimiter(',')
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -70,10 +71,10 @@ void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
   cmd.add_option("--ocio-display", o.display, "OCIO display for display-referred outputs (default: the config's)");
   cmd.add_option("--display", o.deprecated_display, "Deprecated spelling of --ocio-display")->group("");
   cmd.add_option("--view", o.view, "OCIO view for display-referred outputs (default: the display's)");
-  cmd.add_option(
-         "--progress", o.progress,
-         "Progress on stderr: never, auto (bar on a terminal), always, or json (one object a line, kept with -q)")
-      ->type_name("TEXT:{never,auto,always,json}")
+  one_of(cmd.add_option(
+             "--progress", o.progress,
+             "Progress on stderr: never, auto (bar on a terminal), always, or json (one object a line, kept with -q)"),
+         {"never", "auto", "always", "json"})
       ->capture_default_str();
   cmd.add_flag("-q,--quiet", o.quiet, "Print only errors");
   cmd.add_flag("-v,--verbose", o.verbose, "Print more detail");
@@ -93,10 +94,11 @@ void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
   cmd.add_option("--noise-threshold", o.noise_threshold,
                  "Adaptive sampling: a pixel stops when its error (--noise-metric) is below this, e.g. 0.01 "
                  "(cycles) or 0.002 (relmse); --spp is then the most a pixel gets");
-  cmd.add_option("--noise-metric", o.noise_metric,
-                 "The error --noise-threshold stops at: cycles (Cycles' measure: every pixel stops at about one "
-                 "error) or relmse (one more sample's gain in relative MSE: the lowest relMSE for the time)")
-      ->check(CLI::IsMember({"cycles", "relmse"}))
+  one_of(
+      cmd.add_option("--noise-metric", o.noise_metric,
+                     "The error --noise-threshold stops at: cycles (Cycles' measure: every pixel stops at about "
+                     "one error) or relmse (one more sample's gain in relative MSE: the lowest relMSE for the time)"),
+      {"cycles", "relmse"})
       ->default_str("cycles");
   cmd.add_option("--min-samples", o.min_samples,
                  "With --noise-threshold: samples every pixel takes first (0: 16, or more for small thresholds)");

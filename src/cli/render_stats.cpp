@@ -29,23 +29,44 @@ nlohmann::json rays_json(const RayCounts& rays) {
   return out;
 }
 
+std::string region_text(const PixelRegion& r) {
+  return std::to_string(r.x0) + "," + std::to_string(r.y0) + "," + std::to_string(r.x1) + "," + std::to_string(r.y1);
+}
+
 }  // namespace
+
+std::string samples_text(const SampleCounts& samples, int requested) {
+  if (samples.uniform() && samples.max == requested) return std::to_string(requested) + " spp";
+  if (samples.uniform()) return std::to_string(samples.max) + " of " + std::to_string(requested) + " spp";
+  char mean[32];
+  std::snprintf(mean, sizeof mean, "%.1f", samples.mean);
+  return std::to_string(samples.min) + "-" + std::to_string(samples.max) + " spp (mean " + mean + ") of " +
+         std::to_string(requested);
+}
+
+std::string size_text(const RenderStatistics& stats) {
+  const std::string size = std::to_string(stats.width) + "x" + std::to_string(stats.height);
+  if (!stats.region) return size;
+  if (!stats.crop) return size + ", region " + region_text(*stats.region);
+  return size + ", the crop " + region_text(*stats.region) + " of " + std::to_string(stats.full_width) + "x" +
+         std::to_string(stats.full_height);
+}
 
 std::string RenderStatistics::text() const {
   const auto mib = [](std::size_t b) { return static_cast<double>(b) / (1024.0 * 1024.0); };
   char buffer[2048];
   std::snprintf(buffer, sizeof buffer,
                 "statistics\n"
-                "  image         %dx%d, %d spp%s\n"
+                "  image         %s, %s%s\n"
                 "  backend       %s, %d threads\n"
                 "  time          load %.3fs  build %.3fs  render %.3fs  write %.3fs  total %.3fs\n"
                 "  rays          %s\n"
                 "  speed         %.2f Mrays/s\n"
                 "  rejected      %llu rays,  %llu NaN samples\n"
                 "  memory        peak RSS %.1f MiB, acceleration structure %.1f MiB\n",
-                width, height, spp, complete ? "" : " (interrupted: partial)", backend.c_str(), threads, load_seconds,
-                build_seconds, render_seconds, write_seconds, total_seconds, rays_text(rays).c_str(),
-                mrays_per_second(), static_cast<unsigned long long>(rejected_rays),
+                size_text(*this).c_str(), samples_text(samples, spp).c_str(), complete ? "" : " (interrupted: partial)",
+                backend.c_str(), threads, load_seconds, build_seconds, render_seconds, write_seconds, total_seconds,
+                rays_text(rays).c_str(), mrays_per_second(), static_cast<unsigned long long>(rejected_rays),
                 static_cast<unsigned long long>(nan_samples), mib(peak_rss_bytes), mib(acceleration_bytes));
   std::string out = buffer;
   if (ranks.empty()) return out;
@@ -75,8 +96,13 @@ nlohmann::json RenderStatistics::json() const {
       {"output", output},
       {"backend", backend},
       {"threads", threads},
-      {"spp", spp},
+      // The most samples a pixel took: what was asked unless a time limit, adaptive sampling or an
+      // interrupt stopped short.
+      {"spp", samples.max},
+      {"spp_requested", spp},
+      {"spp_taken", {{"min", samples.min}, {"mean", samples.mean}, {"max", samples.max}}},
       {"resolution", {width, height}},
+      {"full_resolution", {full_width, full_height}},
       {"complete", complete},
       {"passes", {{"done", passes_done}, {"total", passes_total}, {"stop", stop}, {"seconds", pass_seconds}}},
       {"seconds",
@@ -91,6 +117,10 @@ nlohmann::json RenderStatistics::json() const {
       {"rejected_rays", rejected_rays},
       {"nan_samples", nan_samples},
       {"memory_bytes", {{"peak_rss", peak_rss_bytes}, {"acceleration", acceleration_bytes}}}};
+  if (region) {
+    out["region"] = {region->x0, region->y0, region->x1, region->y1};
+    out["crop"] = crop;
+  }
   if (!ranks.empty()) {
     nlohmann::json per_rank = nlohmann::json::array();
     for (const RankStats& r : ranks)

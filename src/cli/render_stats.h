@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,8 +18,12 @@ struct RenderStatistics {
   std::string output;
   std::string backend;
   int threads = 0;
-  int spp = 0;
-  int width = 0, height = 0;
+  int spp = 0;                          // asked for (render.spp, --spp)
+  SampleCounts samples;                 // taken, per pixel of the region
+  int width = 0, height = 0;            // of the image written: the crop's with --crop
+  int full_width = 0, full_height = 0;  // the camera's
+  std::optional<PixelRegion> region;    // --region
+  bool crop = false;
   double load_seconds = 0, build_seconds = 0, render_seconds = 0, write_seconds = 0, total_seconds = 0;
   double denoise_seconds = 0;  // within write: --denoise
   RayCounts rays;
@@ -36,6 +41,14 @@ struct RenderStatistics {
   std::string text() const;
   nlohmann::json json() const;
 };
+
+// The samples a render took, for people: "16 spp" when every pixel took what was asked,
+// "32 of 1024 spp" when every pixel took fewer, "16-1024 spp (mean 41.3) of 1024" otherwise.
+std::string samples_text(const SampleCounts& samples, int requested);
+
+// The image's size, for people: "24x16", "24x16, region 4,2,20,10", "16x8, the crop 4,2,20,10 of
+// 24x16".
+std::string size_text(const RenderStatistics& stats);
 
 // Peak resident set size of this process so far.
 std::size_t peak_rss_bytes();

@@ -1,5 +1,6 @@
 // `rtpro completion bash` and `rtpro manpage`: both generated from the option definitions the
 // commands register, so they list exactly what the parser accepts.
+#include "choice_option.h"
 #include "command.h"
 #include "usage_check.h"
 
@@ -149,7 +150,7 @@ std::string man_page(const CLI::App& app) {
 void add_shell_integration_commands(CLI::App& app, Action& action) {
   auto shell = std::make_shared<std::string>();
   CLI::App* completion = app.add_subcommand("completion", "Print a shell completion script: rtpro completion bash");
-  completion->add_option("shell", *shell, "Shell (bash)")->required()->check(CLI::IsMember({"bash"}));
+  one_of(completion->add_option("shell", *shell, "Shell (bash)")->required(), {"bash"});
   completion->callback([shell, &app, &action] {  // holds the string the option writes
     action = [&app] {
       std::cout << bash_completion(app);

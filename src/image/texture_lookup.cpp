@@ -147,12 +147,14 @@ class OiioTextureLookup final : public TextureLookup {
     return file;
   }
 
-  Color lookup(std::uint32_t index, float s, float t, TextureWrap wrap) const override {
+  Color lookup(std::uint32_t index, float s, float t, const TextureSampling& sampling) const override {
     OIIO::TextureOpt options;
-    options.swrap = options.twrap = oiio_wrap(wrap);
+    options.swrap = oiio_wrap(sampling.wrap_s);
+    options.twrap = oiio_wrap(sampling.wrap_t);
     // Bilinear: OpenImageIO's default (smart bicubic) smooths even at a texel's centre when there
     // is no footprint to filter over; camera rays carry none, and supersampling does the rest.
-    options.interpmode = OIIO::TextureOpt::InterpBilinear;
+    options.interpmode =
+        sampling.filter == TextureFilter::kNearest ? OIIO::TextureOpt::InterpClosest : OIIO::TextureOpt::InterpBilinear;
     float rgb[3] = {0.0f, 0.0f, 0.0f};
     system_->texture(handles_[index], system_->get_perthread_info(), options, s, t, 0.0f, 0.0f, 0.0f, 0.0f, 3, rgb);
     return {rgb[0], rgb[1], rgb[2]};

@@ -1,6 +1,7 @@
 // Passes through the real binary: adaptive sampling (--noise-threshold) stops converged pixels,
 // keeps the mean of what it renders, and says in the spp layer what each pixel took; a time limit
 // ends the render with whole passes.
+#include "exr_attribute.h"
 #include "rtpro/image/image_io.h"
 #include "test_commands.h"
 #include "test_paths.h"
@@ -38,6 +39,8 @@ world:
 struct Rendered {
   Image image;
   nlohmann::json stats;
+  std::string said;  // stderr and stdout
+  std::filesystem::path file;
 };
 
 Rendered render(const std::string& name, const std::string& options) {
@@ -50,6 +53,8 @@ Rendered render(const std::string& name, const std::string& options) {
                                &output);
   EXPECT_EQ(code, 0) << output;
   Rendered r;
+  r.said = output;
+  r.file = out;
   if (code != 0) return r;
   r.image = read_image(out);
   std::ifstream in(stats);
@@ -126,6 +131,13 @@ TEST(AdaptiveRender, RelMseMetricStopsConvergedPixelsAndKeepsTheMean) {
     }
   EXPECT_EQ(total, adaptive.stats["rays"]["camera"].get<double>());
   for (int x = 0; x < adaptive.image.width; ++x) EXPECT_EQ(adaptive.image.at(x, 0, spp), 16.0f) << "x " << x;
+  // The statistics say what the pixels took, not the 256 asked for.
+  const nlohmann::json& taken = adaptive.stats["spp_taken"];
+  EXPECT_EQ(taken["min"].get<int>(), 16);
+  EXPECT_EQ(taken["max"].get<double>(), most);
+  EXPECT_NEAR(taken["mean"].get<double>(), total / (adaptive.image.width * adaptive.image.height), 1e-9);
+  EXPECT_EQ(adaptive.stats["spp"].get<double>(), most);
+  EXPECT_EQ(adaptive.stats["spp_requested"].get<int>(), 256);
   EXPECT_GT(most, 64.0);
   EXPECT_LT(total, 256.0 * adaptive.image.width * adaptive.image.height / 2);
   for (int c = 0; c < 3; ++c) {
@@ -157,6 +169,19 @@ TEST(AdaptiveRender, TimeLimitEndsWithTheFinishedPasses) {
   const float first = limited.image.at(0, 0, spp);
   for (int y = 0; y < limited.image.height; ++y)
     for (int x = 0; x < limited.image.width; ++x) ASSERT_EQ(limited.image.at(x, y, spp), first);
+  // What they took is what the statistics and the metadata say, beside what was asked.
+  const int taken = static_cast<int>(first);
+  EXPECT_LT(taken, 65536);
+  EXPECT_EQ(limited.stats["spp"].get<int>(), taken);
+  EXPECT_EQ(limited.stats["spp_taken"]["min"].get<int>(), taken);
+  EXPECT_EQ(limited.stats["spp_taken"]["max"].get<int>(), taken);
+  EXPECT_EQ(limited.stats["spp_requested"].get<int>(), 65536);
+  EXPECT_EQ(test::exr_string_attribute(limited.file, "rtpro:spp"), std::to_string(taken));
+  EXPECT_EQ(test::exr_string_attribute(limited.file, "rtpro:spp_min"), std::to_string(taken));
+  EXPECT_EQ(test::exr_string_attribute(limited.file, "rtpro:spp_max"), std::to_string(taken));
+  EXPECT_EQ(test::exr_string_attribute(limited.file, "rtpro:spp_requested"), "65536");
+  EXPECT_NE(limited.said.find(std::to_string(taken) + " of 65536 spp: time limit, "), std::string::npos)
+      << limited.said;
 }
 
 TEST(AdaptiveRender, RefusesAThresholdForAOnePassRender) {

@@ -1,4 +1,5 @@
 // End-to-end tests of `rtpro render` and `rtpro info`, running the real binary.
+#include "exr_attribute.h"
 #include "rtpro/image/image_io.h"
 #include "test_fixtures.h"
 #include "test_commands.h"
@@ -110,6 +111,28 @@ TEST(RenderCommand, RegionAndCropMatchTheFullRender) {
       }
   run_rtpro(render_args(scene, dir / "bad.exr", "-q --region 10,5,400,30"), 2);
   run_rtpro(render_args(scene, dir / "bad.exr", "-q --region 1,2,3"), 2);
+}
+
+// A cropped image is reported at its own size, with the window it shows and the image it is cut
+// from: in the last line, the statistics and the metadata.
+TEST(RenderCommand, ACropIsReportedAtItsOwnSizeWithItsWindow) {
+  const auto scene = test::write_file("scene.yaml", kSmallScene);
+  const auto dir = scene.parent_path();
+  const auto crop = dir / "crop.exr", stats_file = dir / "crop.json";
+  expect_rtpro_answer(
+      render_args(scene, crop, "--progress never --region 10,5,40,30 --crop --stats-json " + stats_file.string()), 0,
+      "(30x25, the crop 10,5,40,30 of 64x48, 4 spp, ");
+  std::ifstream in(stats_file);
+  const nlohmann::json stats = nlohmann::json::parse(in);
+  EXPECT_EQ(stats["resolution"], nlohmann::json::array({30, 25}));
+  EXPECT_EQ(stats["full_resolution"], nlohmann::json::array({64, 48}));
+  EXPECT_EQ(stats["region"], nlohmann::json::array({10, 5, 40, 30}));
+  EXPECT_TRUE(stats["crop"].get<bool>());
+  EXPECT_EQ(test::exr_string_attribute(crop, "rtpro:region"), "10,5,40,30");
+  EXPECT_EQ(test::exr_string_attribute(crop, "rtpro:full_resolution"), "64x48");
+  // Without --crop the image is the whole frame, the region named beside it.
+  expect_rtpro_answer(render_args(scene, dir / "region.exr", "--progress never --region 10,5,40,30"), 0,
+                      "(64x48, region 10,5,40,30, 4 spp, ");
 }
 
 TEST(RenderCommand, AovLayersAreWrittenWithCompositorNames) {

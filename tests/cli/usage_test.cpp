@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 namespace rtpro {
@@ -77,7 +78,26 @@ TEST(Usage, ValuesAreCheckedByTheSceneFilesRules) {
                         "--region 0,0,30,10: not a non-empty window inside the 24x16 image");
   expect_one_line_error(render_args(scene, out, "--tile-size 0"), "--tile-size must be at least 1");
   expect_one_line_error(render_args(scene, out, "-q --progress sometimes"),
-                        "--progress 'sometimes': expected never, auto, always or json");
+                        "--progress: sometimes not in {never,auto,always,json}");
+}
+
+// Keyword values are read in any case, as pbrt and Cycles users type them (`--backend Embree`), and
+// reach the render as the keyword itself; misspelt ones are still refused with the list.
+TEST(Usage, KeywordValuesAreReadInAnyCase) {
+  const auto scene = test::write_file("scene.yaml", kScene);
+  const auto lower = scene.parent_path() / "lower.exr", mixed = scene.parent_path() / "mixed.exr";
+  run_rtpro(render_args(scene, lower,
+                        "--backend embree --integrator path --aov albedo,depth --progress never --noise-metric relmse "
+                        "--embree-quality high"),
+            0);
+  expect_rtpro_answer(render_args(scene, mixed,
+                                  "--backend Embree --integrator PATH --aov Albedo,DEPTH --progress NEVER "
+                                  "--noise-metric RelMSE --embree-quality High"),
+                      0, "embree)");
+  test::expect_same_pixels(lower, mixed);
+  const Image image = read_image(mixed);
+  EXPECT_NE(std::find(image.channels.begin(), image.channels.end(), "albedo.R"), image.channels.end());
+  expect_one_line_error(render_args(scene, mixed, "--backend Embre"), "--backend: Embre not in {native,embree}");
 }
 
 TEST(Usage, AovsNeedAnExrOutput) {

@@ -31,13 +31,15 @@ std::filesystem::path write_ramp(const std::string& name, int width, int height)
   return file;
 }
 
+const TextureSampling kClamped{TextureWrap::kClamp, TextureWrap::kClamp, TextureFilter::kLinear};
+
 TEST(TextureLookup, TexelCentresGiveTheMadeUpImagesPixels) {
   const auto file = write_ramp("ramp.exr", 8, 4);
   const std::vector<TextureSource> sources{{file, "Linear Rec.709 (sRGB)"}};
   const auto textures = open_textures(sources);
   for (int y = 0; y < 4; ++y)
     for (int x = 0; x < 8; ++x) {
-      const Color c = textures->lookup(0, (float(x) + 0.5f) / 8.0f, (float(y) + 0.5f) / 4.0f, TextureWrap::kClamp);
+      const Color c = textures->lookup(0, (float(x) + 0.5f) / 8.0f, (float(y) + 0.5f) / 4.0f, kClamped);
       EXPECT_NEAR(c.x, float(x) / 8.0f + 0.001f * float(x * y), 1e-6f) << x << "," << y;
       EXPECT_NEAR(c.y, float(y) / 4.0f, 1e-6f);
       EXPECT_NEAR(c.z, 0.25f, 1e-6f);
@@ -61,11 +63,36 @@ TEST(TextureLookup, MatchesOpenImageIOsOwnTextureCallOnTheSameFile) {
       options.interpmode = OIIO::TextureOpt::InterpBilinear;
       float expected[3];
       ASSERT_TRUE(system->texture(OIIO::ustring(file.string()), options, s, t, 0, 0, 0, 0, 3, expected));
-      const Color c = textures->lookup(0, s, t, wrap);
+      const Color c = textures->lookup(0, s, t, TextureSampling{wrap, wrap, TextureFilter::kLinear});
       EXPECT_NEAR(c.x, expected[0], 1e-5f) << s << "," << t << " wrap " << int(wrap);
       EXPECT_NEAR(c.y, expected[1], 1e-5f);
       EXPECT_NEAR(c.z, expected[2], 1e-5f);
     }
+}
+
+// Each axis wraps as its own mode says, and the nearest filter gives a texel's own value where
+// bilinear blends it with its neighbour (glTF samplers: wrapS, wrapT, magFilter).
+TEST(TextureLookup, WrapsPerAxisAndFiltersNearestOrLinear) {
+  const auto file = write_ramp("ramp.exr", 8, 4);  // red 0.125 x (+ 0.001 x y), green 0.25 y
+  const std::vector<TextureSource> sources{{file, "Linear Rec.709 (sRGB)"}};
+  const auto textures = open_textures(sources);
+  const TextureSampling mirror_clamp{TextureWrap::kMirror, TextureWrap::kClamp, TextureFilter::kLinear};
+  // s = -0.1875 mirrors onto 0.1875 (texel 1's centre); t = 1.625 clamps to the last row.
+  const Color c = textures->lookup(0, -0.1875f, 1.625f, mirror_clamp);
+  EXPECT_NEAR(c.x, 0.125f + 0.001f * 3.0f, 1e-6f);
+  EXPECT_NEAR(c.y, 0.75f, 1e-6f);
+  const TextureSampling repeat_mirror{TextureWrap::kRepeat, TextureWrap::kMirror, TextureFilter::kLinear};
+  // s = 1.1875 repeats onto 0.1875; t = 1.125 mirrors onto 0.875 (row 3's centre).
+  const Color d = textures->lookup(0, 1.1875f, 1.125f, repeat_mirror);
+  EXPECT_NEAR(d.x, 0.125f + 0.001f * 3.0f, 1e-6f);
+  EXPECT_NEAR(d.y, 0.75f, 1e-6f);
+  // On the border of texels 1 and 2 (s = 0.25), bilinear gives their mean, nearest one of them.
+  TextureSampling nearest = kClamped;
+  nearest.filter = TextureFilter::kNearest;
+  const float blended = textures->lookup(0, 0.25f - 1e-4f, 0.125f, kClamped).x;
+  const float picked = textures->lookup(0, 0.25f - 1e-4f, 0.125f, nearest).x;
+  EXPECT_NEAR(blended, 0.1875f, 1e-3f);
+  EXPECT_NEAR(picked, 0.125f, 1e-6f);
 }
 
 TEST(TextureLookup, SrgbTexturesAreDecodedToLinearThroughOpenColorIO) {
@@ -79,8 +106,8 @@ TEST(TextureLookup, SrgbTexturesAreDecodedToLinearThroughOpenColorIO) {
   const double linear = std::pow((encoded + 0.055) / 1.055, 2.4);  // the sRGB EOTF: 0.2158605
   const std::vector<TextureSource> sources{{file, "sRGB - Texture"}, {file, "Linear Rec.709 (sRGB)"}};
   const auto textures = open_textures(sources);
-  EXPECT_NEAR(textures->lookup(0, 0.5f, 0.5f, TextureWrap::kClamp).x, linear, 1e-5);
-  EXPECT_NEAR(textures->lookup(1, 0.5f, 0.5f, TextureWrap::kClamp).x, encoded, 1e-5);
+  EXPECT_NEAR(textures->lookup(0, 0.5f, 0.5f, kClamped).x, linear, 1e-5);
+  EXPECT_NEAR(textures->lookup(1, 0.5f, 0.5f, kClamped).x, encoded, 1e-5);
 }
 
 TEST(TextureLookup, UnreadableTexturesAreInputErrorsNamingTheFile) {

@@ -172,7 +172,7 @@ void expect_plain_hits_are(int triangles, IsPlain is_plain) {
   }
   EXPECT_GT(plain, 100);
   EXPECT_GT(other, 100);
-  for (Material& m : scene.materials) m.base_color = ImageTexture{0, Color(1.0f), TextureWrap{}};
+  for (Material& m : scene.materials) m.base_color = ImageTexture{0, Color(1.0f), TextureSampling{}};
   for (const Hit& hit : hits) EXPECT_FALSE(is_plain(scene, hit));
 }
 

@@ -186,6 +186,19 @@ TEST(GltfTextureTransform, SlotsThatDisagreeWithTheBaseColourAreAWarning) {
   expect_uv(asset.meshes[0].uvs[1], 1.0f, 1.0f);  // the base colour's TEXCOORD_0
 }
 
+// assimp's texcoord_crash.gltf: a textured material on a primitive that has TEXCOORD_1 but not
+// the TEXCOORD_0 its textures read rendered the texture's corner without a word.
+TEST(GltfTextureTransform, APrimitiveLackingTheSetItsTexturesReadIsAWarningWithItsVertexCount) {
+  GltfFile gltf = textured_triangle({{"index", 0}});
+  gltf.json["meshes"][0]["primitives"][0]["attributes"].erase("TEXCOORD_0");
+  const GltfAsset asset = load_gltf_file(gltf.write("second_only"));
+  EXPECT_TRUE(warned(asset,
+                     "second_only.gltf: meshes[0].primitives[0]: its material's textures read TEXCOORD_0, "
+                     "which the primitive lacks; its 3 vertices show the textures' corner (0, 0)"));
+  const GltfAsset untextured = load_gltf_file(plain_triangle().write("untextured"));
+  EXPECT_TRUE(untextured.stats.warnings.empty());
+}
+
 TEST(GltfHostile, AnImageThroughASymbolicLinkOutsideTheFolderIsRefused) {
   const auto outside = test::write_file("secret.png", "not for the glTF");
   GltfFile gltf = textured_triangle({{"index", 0}});

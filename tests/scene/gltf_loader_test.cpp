@@ -282,6 +282,20 @@ TEST(GltfHostile, DeepJsonAndForeignFilesAreRefusedBeforeParsing) {
                 .find("KHR_draco_mesh_compression"),
             std::string::npos);
   EXPECT_FALSE(error_of(test::write_file("text.glb", "glTF\x01\0\0\0garbage")).empty());
+}
+
+// tinygltf reads a version that is not a string as missing: the message says what it is instead.
+TEST(GltfHostile, AVersionThatIsNotAStringIsNamedAsWhatItIs) {
+  const auto version = [](const std::string& name, const std::string& value) {
+    return error_of(test::write_file(name + ".gltf", R"({"asset": {"version": )" + value + "}}"));
+  };
+  EXPECT_EQ(version("two", "2.0"), "asset.version must be a string, got a number (2.0); a glTF 2.0 file says \"2.0\"");
+  EXPECT_EQ(version("one", "1"),
+            "asset.version: 1 (a number, as glTF 1.0 exporters wrote it): rtpro reads glTF 2.0 "
+            "files only");
+  EXPECT_EQ(version("list", "[2]"), "asset.version must be a string, got an array; a glTF 2.0 file says \"2.0\"");
+  EXPECT_NE(error_of(test::write_file("none.gltf", R"({"asset": {}})")).find("asset.version: missing"),
+            std::string::npos);
   EXPECT_FALSE(error_of(test::write_file("broken.gltf", "{\"asset\": ")).empty());
 }
 

@@ -11,6 +11,7 @@
 
 #include <regex>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace rtpro {
@@ -160,6 +161,26 @@ TEST(GltfSceneErrors, ASpotLightBeyondTheSceneFormatsRangeNamesItsNodeAndLight) 
                                        "] (extensions.KHR_lights_punctual.lights[0]): "
                                        "spot light.position: 2e+09 is out of range"))
       << message;
+}
+
+// A light intensity below 0 or above 1e9 was read as 0: a black image with exit 0. It is refused
+// at its JSON path, in the light's unit.
+TEST(GltfSceneErrors, ALightIntensityOutOfRangeIsRefusedAtItsPath) {
+  for (const auto& [name, light, said] :
+       {std::tuple{"negative", nlohmann::json{{"type", "point"}, {"intensity", -5}}, "is -5; it"},
+        std::tuple{"huge", nlohmann::json{{"type", "directional"}, {"intensity", 2e9}}, "is 2e+09; it"}}) {
+    GltfFile gltf = triangle_model();
+    add_doubled_light(gltf, light, {{"translation", {0, 0, 1}}});
+    const std::string message = scene_error(gltf.write(name));
+    EXPECT_NE(message.find("extensions.KHR_lights_punctual.lights[0].intensity: " + std::string(said) +
+                           " must be a finite number from 0 to 1e9"),
+              std::string::npos)
+        << message;
+  }
+  GltfFile gltf = triangle_model();
+  add_doubled_light(gltf, {{"type", "spot"}, {"intensity", 1e9}, {"spot", nlohmann::json::object()}},
+                    {{"translation", {0, 0, 1}}});
+  EXPECT_NO_THROW(parse_scene_file(gltf.write("brightest")));
 }
 
 // An override's errors stay at the override, as in a scene file.

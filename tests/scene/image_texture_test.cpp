@@ -33,11 +33,28 @@ TEST(ImageTexture, SceneTextureIsRegisteredOnceWithItsColourSpaceAndWrap) {
   const auto& a = std::get<ImageTexture>(scene.materials[1].base_color);
   const auto& b = std::get<ImageTexture>(scene.materials[2].base_color);
   EXPECT_EQ(a.image, 0u);
-  EXPECT_EQ(a.wrap, TextureWrap::kRepeat);
+  EXPECT_EQ(a.sampling, TextureSampling{});
   EXPECT_EQ(a.tint.x, 1.0f);
   EXPECT_EQ(b.image, 0u);
-  EXPECT_EQ(b.wrap, TextureWrap::kClamp);
+  EXPECT_EQ(b.sampling, (TextureSampling{TextureWrap::kClamp, TextureWrap::kClamp, TextureFilter::kLinear}));
   EXPECT_EQ(b.tint.y, 0.5f);
+}
+
+// `wrap:` takes one mode or one per axis ([across, down]); `filter:` nearest or linear.
+TEST(ImageTexture, WrapPerAxisAndFilterAreRead) {
+  test::write_file("maps/wood.png", "not read until rendering");
+  const auto scene_file = test::write_file("s.yaml", "");
+  const auto sampling = [&](const std::string& keys) {
+    const RenderScene scene =
+        build_render_scene(parse_scene_text(scene_with("{color: {texture: maps/wood.png, " + keys + "}}"), scene_file));
+    return std::get<ImageTexture>(scene.materials[1].base_color).sampling;
+  };
+  EXPECT_EQ(sampling("wrap: [mirror, clamp], filter: nearest"),
+            (TextureSampling{TextureWrap::kMirror, TextureWrap::kClamp, TextureFilter::kNearest}));
+  EXPECT_EQ(sampling("wrap: black, filter: linear"),
+            (TextureSampling{TextureWrap::kBlack, TextureWrap::kBlack, TextureFilter::kLinear}));
+  EXPECT_THROW(sampling("wrap: [mirror]"), InputError);
+  EXPECT_THROW(sampling("filter: cubic"), InputError);
 }
 
 TEST(ImageTexture, MissingSceneTextureIsRefusedAtItsKey) {

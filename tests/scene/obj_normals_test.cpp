@@ -43,6 +43,51 @@ f 2/1/2 4/1/2 3/1/2
   EXPECT_EQ(loaded.mesh.vertex(loaded.mesh.triangles[1].v0), loaded.mesh.vertex(loaded.mesh.triangles[0].v1));
 }
 
+// A fan of four triangles around (0, 0, 0) bent into a shallow dome, with the file's tilted
+// normals at the rim and a zero-length one at the centre: the centre vertex alone gets the normal
+// of the faces around it (straight up, by symmetry), the rim keeps the file's (assimp's
+// spider.obj rendered faceted for one such normal).
+constexpr const char* kDome = R"(v 0 0 0.5
+v 1 0 0
+v 0 1 0
+v -1 0 0
+v 0 -1 0
+vn 0 0 0
+vn 1 0 1
+vn 0 1 1
+vn -1 0 1
+vn 0 -1 1
+f 1//1 2//2 3//3
+f 1//1 3//3 4//4
+f 1//1 4//4 5//5
+f 1//1 5//5 2//2
+)";
+
+TEST(ObjLoader, AZeroNormalIsReplacedForItsVertexAloneWithAWarningAtItsLine) {
+  const LoadedMesh loaded = load_mesh_file(write_file("dome.obj", kDome));
+  EXPECT_TRUE(has_warning_containing(
+      loaded.stats,
+      "dome.obj:6: 1 vertex normal is zero or not finite; replaced by the normals of the faces around it"));
+  expect_unit_normals(loaded.mesh);
+  const Vec3 centre = corner_normal(loaded.mesh, 0, 0);
+  EXPECT_NEAR(centre.z, 1.0f, 1e-6f);
+  const float s = 1.0f / std::sqrt(2.0f);
+  EXPECT_NEAR(corner_normal(loaded.mesh, 0, 1).x, s, 1e-6f);  // the file's, kept
+  EXPECT_NEAR(corner_normal(loaded.mesh, 0, 1).z, s, 1e-6f);
+  // PLY the same way: the one zero normal replaced, the others kept.
+  const LoadedMesh ply = load_mesh_file(
+      write_file("dome.ply",
+                 "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+                 "property float nx\nproperty float ny\nproperty float nz\nelement face 4\n"
+                 "property list uchar int vertex_indices\nend_header\n"
+                 "0 0 0.5 0 0 0\n1 0 0 1 0 1\n0 1 0 0 1 1\n-1 0 0 -1 0 1\n0 -1 0 0 -1 1\n"
+                 "3 0 1 2\n3 0 2 3\n3 0 3 4\n3 0 4 1\n"));
+  EXPECT_TRUE(has_warning_containing(ply.stats, "dome.ply: 1 vertex normal is zero or not finite"));
+  ASSERT_EQ(ply.mesh.normals.size(), 5u);
+  EXPECT_NEAR(ply.mesh.normals[0].z, 1.0f, 1e-6f);
+  EXPECT_NEAR(ply.mesh.normals[1].x, s, 1e-6f);
+}
+
 TEST(ObjLoader, NormalsMissingOnSomeCornersAreSetAsideWithAWarning) {
   const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 2 4 3\n";
   const LoadedMesh loaded = load_mesh_file(write_file("partial.obj", text));

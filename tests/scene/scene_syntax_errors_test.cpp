@@ -19,6 +19,17 @@ TEST(SceneParser, ReportsYamlSyntaxErrorsWithPosition) {
   EXPECT_NE(std::string(error.what()).find("test.yaml:4:"), std::string::npos) << error.what();
 }
 
+// libyaml calls a tab in the indentation "a character that cannot start any token": the message
+// names the tab and points at it, also after spaces and in a block mapping's first key.
+TEST(SceneParser, ATabInTheIndentationIsNamed) {
+  const std::string listed = kHeader + "lights:\n\t- {type: point, position: [4, 6, 5]}\n";
+  EXPECT_SCENE_ERROR(listed, at(listed, 4, "\t"), {"tab characters are not allowed in YAML indentation"});
+  const std::string mapped = kHeader + "render:\n  spp: 4\n  \tseed: 1\n";
+  EXPECT_SCENE_ERROR(mapped, at(mapped, 5, "\t"), {"tab characters are not allowed in YAML indentation"});
+  const std::string first = kHeader + "render:\n\tspp: 4\n";
+  EXPECT_SCENE_ERROR(first, at(first, 4, "\t"), {"tab characters are not allowed in YAML indentation"});
+}
+
 TEST(SceneParser, UnknownKeySuggestsTheClosestKey) {
   const std::string text = with_world("  - {type: sphere, radus: 1}\n");
   EXPECT_SCENE_ERROR(text, at(text, 4, "radus"), {"unknown key 'radus' in sphere; did you mean 'radius'?"});

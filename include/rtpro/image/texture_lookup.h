@@ -5,7 +5,7 @@
 // OpenColorIO (the bundled config's "sRGB - Texture", or "Linear Rec.709 (sRGB)" for linear
 // data), and written as a tiled, mip-mapped float .tx file in a private temporary folder that
 // lives as long as the lookup. Shading then reads linear values only.
-#include "rtpro/core/texture_wrap.h"
+#include "rtpro/core/texture_sampling.h"
 #include "rtpro/core/vec3.h"
 
 #include <cstdint>
@@ -31,9 +31,10 @@ class TextureLookup {
  public:
   virtual ~TextureLookup() = default;
   // The RGB colour of texture `index` (into the sources it was opened with) at (s, t): s across
-  // the image, t down it, both 0 to 1 over the image. Without a footprint the finest level is
-  // read, bilinearly filtered. Safe from any thread.
-  virtual Color lookup(std::uint32_t index, float s, float t, TextureWrap wrap) const = 0;
+  // the image, t down it, both 0 to 1 over the image, wrapped per axis as `sampling` says. Without
+  // a footprint the finest level is read, bilinearly filtered or its nearest texel. Safe from any
+  // thread.
+  virtual Color lookup(std::uint32_t index, float s, float t, const TextureSampling& sampling) const = 0;
 };
 
 // Opens every source. Throws InputError naming the file (and where it was named) when one cannot

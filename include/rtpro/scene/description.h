@@ -3,7 +3,7 @@
 // loaded yet (meshes are still paths). Produced by the scene parser, consumed by
 // build_render_scene().
 #include "rtpro/core/error.h"
-#include "rtpro/core/texture_wrap.h"
+#include "rtpro/core/texture_sampling.h"
 #include "rtpro/core/transform.h"
 #include "rtpro/core/vec3.h"
 #include "rtpro/scene/checker_axes.h"
@@ -68,8 +68,8 @@ struct MaterialDesc {
   // `texture_colorspace` (an OpenColorIO colour space) to scene-linear first.
   std::filesystem::path color_texture;
   std::string texture_colorspace = "sRGB - Texture";
-  TextureWrap texture_wrap = TextureWrap::kRepeat;
-  SourceLocation texture_where;  // where the texture was named, for a missing file
+  TextureSampling texture_sampling{};  // `wrap:` and `filter:`; a glTF texture's sampler
+  SourceLocation texture_where;        // where the texture was named, for a missing file
   // An image stored inside a glTF: its encoded bytes (color_texture then names it, e.g.
   // "model.glb#images[0].png", the extension telling its format).
   std::shared_ptr<const std::vector<unsigned char>> texture_bytes;

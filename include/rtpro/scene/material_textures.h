@@ -3,7 +3,7 @@
 // as shading evaluates them (ColorTexture, NormalMap: render/texture.h), shared by every kind of
 // material.
 #include "rtpro/core/error.h"
-#include "rtpro/core/texture_wrap.h"
+#include "rtpro/core/texture_sampling.h"
 #include "rtpro/core/vec3.h"
 #include "rtpro/scene/checker_axes.h"
 
@@ -23,6 +23,7 @@ struct TextureSlotDesc {
   std::string colorspace;      // the OpenColorIO colour space its values are decoded from; "Raw" for data
   std::shared_ptr<const std::vector<unsigned char>> bytes;  // an image stored inside a glTF
   SourceLocation where;                                     // where it was named, for a missing file
+  TextureSampling sampling{};                               // glTF: the texture's sampler
 };
 
 // A checkerboard as shading evaluates it (CheckerDesc, with the reciprocal size).
@@ -42,7 +43,7 @@ struct CheckerTexture {
 struct ImageTexture {
   std::uint32_t image;
   Color tint;
-  TextureWrap wrap;
+  TextureSampling sampling;
 };
 
 using ColorTexture = std::variant<Color, CheckerTexture, ImageTexture>;
@@ -62,6 +63,7 @@ struct TextureImage {
 struct NormalMap {
   std::uint32_t image;
   float scale;
+  TextureSampling sampling;
 };
 
 }  // namespace rtpro

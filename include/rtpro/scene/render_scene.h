@@ -3,7 +3,7 @@
 // instances flattened to one level (top-level group → prototype groups).
 #include "rtpro/core/bbox.h"
 #include "rtpro/core/error.h"
-#include "rtpro/core/texture_wrap.h"
+#include "rtpro/core/texture_sampling.h"
 #include "rtpro/core/transform.h"
 #include "rtpro/scene/checker_axes.h"
 #include "rtpro/scene/light.h"

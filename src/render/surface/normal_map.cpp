@@ -16,8 +16,7 @@ Vec3 mapped_normal(const NormalMap& map, const SurfacePoint& point, const Textur
   // the inside the normal is flipped, and with it the cross product.
   const float side = point.front_face ? 1.0f : -1.0f;
   const Vec3 b = cross(n, t) * point.bitangent_sign;
-  const Color texel =
-      evaluate(ImageTexture{map.image, Color(1.0f), TextureWrap::kRepeat}, point.tex_u, point.tex_v, textures);
+  const Color texel = evaluate(ImageTexture{map.image, Color(1.0f), map.sampling}, point.tex_u, point.tex_v, textures);
   const float x = (2.0f * texel.x - 1.0f) * map.scale, y = (2.0f * texel.y - 1.0f) * map.scale;
   const float z = 2.0f * texel.z - 1.0f;
   const Vec3 mapped = t * (side * x) + b * y + n * z;

@@ -53,7 +53,7 @@ Color evaluate(const ColorTexture& texture, const SurfacePoint& point, const Tex
 
 Color evaluate(const ImageTexture& texture, float u, float v, const TextureLookup* images) {
   // Texture coordinates have v up; the lookup's t runs down the image.
-  return texture.tint * images->lookup(texture.image, u, 1.0f - v, texture.wrap);
+  return texture.tint * images->lookup(texture.image, u, 1.0f - v, texture.sampling);
 }
 
 Color emitted_radiance(const Emission& emission, float u, float v, const TextureLookup* images) {

@@ -29,14 +29,14 @@ std::optional<ImageTexture> slot_texture(const std::optional<TextureSlotDesc>& s
                                          std::vector<TextureImage>& textures) {
   if (!slot) return std::nullopt;
   return ImageTexture{texture_index(slot->file, slot->colorspace, slot->bytes, slot->where, textures), tint,
-                      TextureWrap::kRepeat};
+                      slot->sampling};
 }
 
 ColorTexture color_texture(const MaterialDesc& m, const Color& color, std::vector<TextureImage>& textures) {
   if (!m.color_texture.empty())
     return ImageTexture{
         texture_index(m.color_texture, m.texture_colorspace, m.texture_bytes, m.texture_where, textures), color,
-        m.texture_wrap};
+        m.texture_sampling};
   if (!m.checker) return color;
   CheckerTexture checker;
   checker.inv_size = 1.0f / m.checker->size;

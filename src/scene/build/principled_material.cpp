@@ -18,7 +18,7 @@ PrincipledSurface surface_model_from(const PrincipledParams& p, const MaterialDe
   surface.metallic_roughness =
       slot_texture(p.metallic_roughness_texture, Color(1.0f, p.roughness, p.metalness), textures);
   if (const std::optional<ImageTexture> normals = slot_texture(p.normal_texture, Color(1.0f), textures))
-    surface.normal_map = NormalMap{normals->image, p.normal_scale};
+    surface.normal_map = NormalMap{normals->image, p.normal_scale, normals->sampling};
   return surface;
 }
 

@@ -170,8 +170,22 @@ std::string diagnose(std::string_view json_text, const Confinement& confinement,
   if (json.is_discarded() || !json.is_object()) return {};
   if (const auto asset = json.find("asset"); asset != json.end() && asset->is_object()) {
     const auto version = asset->find("version");
-    if (version == asset->end() || !version->is_string())
+    if (version == asset->end())
       return "asset.version: missing; rtpro reads glTF 2.0 files, whose asset.version is \"2.0\"";
+    // A number is what glTF 1.0 exporters wrote (CesiumMilkTruck's `1`), or a mistake for "2.0";
+    // tinygltf calls both missing.
+    if (version->is_number()) {
+      const double number = version->get<double>();
+      if (number >= 2.0 && number < 3.0)
+        return "asset.version must be a string, got a number (" + version->dump() + "); a glTF 2.0 file says \"2.0\"";
+      return "asset.version: " + version->dump() +
+             " (a number, as glTF 1.0 exporters wrote it): rtpro reads glTF 2.0 files only";
+    }
+    if (!version->is_string()) {
+      const std::string kind = version->type_name();  // "boolean", "array", "object", "null"
+      const std::string article = kind == "null" ? "" : kind[0] == 'a' || kind[0] == 'o' ? "an " : "a ";
+      return "asset.version must be a string, got " + article + kind + "; a glTF 2.0 file says \"2.0\"";
+    }
     if (version->get<std::string>().rfind("2.", 0) != 0)
       return "asset.version: " + ascii::quoted(version->get<std::string>()) + ": rtpro reads glTF 2.0 files only";
   } else {

@@ -4,6 +4,7 @@
 #include "ascii_scan.h"
 #include "path_containment.h"
 #include "mtl_parser.h"
+#include "gltf_sampler.h"
 
 #include <algorithm>
 #include <cmath>
@@ -68,6 +69,7 @@ std::optional<TextureSlotDesc> texture_slot(const tinygltf::Model& model, int te
   if (slot.file.empty()) return std::nullopt;
   slot.colorspace = colorspace;
   slot.where = SourceLocation{file.string() + ": " + where};
+  slot.sampling = texture_sampling(model, texture, file.string());
   return slot;
 }
 
@@ -176,6 +178,7 @@ MaterialDesc read_material(const tinygltf::Model& model, int index, const std::f
   desc.color_texture = texture_path(model, pbr.baseColorTexture.index, file,
                                     path + ".pbrMetallicRoughness.baseColorTexture", warnings, &desc.texture_bytes);
   desc.texture_where = SourceLocation{file.string() + ": " + path + ".pbrMetallicRoughness.baseColorTexture"};
+  desc.texture_sampling = texture_sampling(model, pbr.baseColorTexture.index, file.string());
   read_emission(m, desc);
   principled.metallic_roughness_texture =
       texture_slot(model, pbr.metallicRoughnessTexture.index, file,

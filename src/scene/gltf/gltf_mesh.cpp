@@ -39,11 +39,6 @@ std::vector<TriangleIndices> triangles_of(int mode, const std::vector<std::uint3
   return triangles;
 }
 
-bool all_nonzero(const std::vector<Vec3>& normals) {
-  return std::all_of(normals.begin(), normals.end(),
-                     [](const Vec3& n) { return is_finite(n) && (n.x != 0.0f || n.y != 0.0f || n.z != 0.0f); });
-}
-
 // A primitive's data before it joins the mesh.
 struct Primitive {
   std::vector<Vec3> positions, normals;
@@ -107,11 +102,9 @@ class MeshBuilder {
     if (const auto n = prim.attributes.find("NORMAL"); n != prim.attributes.end()) {
       p.normals = read_sized(reader_.normals(n->second, path + ".attributes.NORMAL"), vertex_count,
                              path + ".attributes.NORMAL");
-      if (!all_nonzero(p.normals)) {
-        stats_.warnings.push_back(file() + ": " + path +
-                                  ".attributes.NORMAL has zero-length normals; that primitive is flat");
-        p.normals.clear();
-      }
+      const auto position = [&](std::uint32_t v) { return p.positions[v]; };
+      if (const std::size_t repaired = repair_vertex_normals(position, p.triangles, p.normals))
+        stats_.warnings.push_back(repaired_normals_warning(file() + ": " + path + ".attributes.NORMAL", repaired));
     }
     const UvMapping mapping = prim.material >= 0 ? uv_mappings_[std::size_t(prim.material)] : UvMapping{};
     const std::string uv_name = "TEXCOORD_" + std::to_string(mapping.set);
@@ -119,9 +112,10 @@ class MeshBuilder {
       p.uvs = read_sized(reader_.texcoords(uv->second, path + ".attributes." + uv_name), vertex_count,
                          path + ".attributes." + uv_name);
       apply_uv_mapping(mapping, p.uvs);
-    } else if (mapping.set != 0 && prim.attributes.count("TEXCOORD_0")) {
+    } else if (mapping.textured) {
       stats_.warnings.push_back(file() + ": " + path + ": its material's textures read " + uv_name +
-                                ", which the primitive lacks; its textures show their corner (0, 0)");
+                                ", which the primitive lacks; its " + std::to_string(vertex_count) +
+                                " vertices show the textures' corner (0, 0)");
     }
     if (const auto c = prim.attributes.find("COLOR_0"); c != prim.attributes.end())
       p.colors = read_sized(reader_.colors(c->second, path + ".attributes.COLOR_0"), vertex_count,

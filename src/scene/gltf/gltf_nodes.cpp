@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -18,8 +19,17 @@ constexpr double kMaxCameraAspect = 16.0;
 // How far past its limits a spot light's angle may lie and be read as the limit: rounding in
 // exporters (Blender's π/2 as a float is 4e-8 above it).
 constexpr double kConeAngleSlack = 1e-6;
+// A punctual light's intensity (cd, or lx for a directional light), as FORMAT.md gives it: the scene
+// format's limit on numbers, far above the sun's 1e5 lx.
+constexpr double kMaxLightIntensity = 1e9;
 
 std::string node_path(int node) { return gltf_node_path(std::uint32_t(node)); }
+
+std::string shown(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
 
 bool all_finite(const std::vector<double>& values) {
   return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v) && std::fabs(v) <= 1e9; });
@@ -262,9 +272,12 @@ class NodeWalker {
     if (light.color.size() == 3 && all_finite(light.color))
       out.color = Color(float(std::max(light.color[0], 0.0)), float(std::max(light.color[1], 0.0)),
                         float(std::max(light.color[2], 0.0)));
-    out.intensity = std::isfinite(light.intensity) && light.intensity >= 0.0 && light.intensity <= 1e9
-                        ? float(light.intensity)
-                        : 0.0f;
+    // Refused, not zeroed: a light that silently goes out leaves a black image and exit 0.
+    if (!(light.intensity >= 0.0 && light.intensity <= kMaxLightIntensity))
+      reader_.fail("extensions.KHR_lights_punctual.lights[" + std::to_string(index) + "].intensity",
+                   "is " + shown(light.intensity) + "; it must be a finite number from 0 to 1e9 (" +
+                       (out.kind == GltfLight::Kind::kDirectional ? "lux" : "candela") + ")");
+    out.intensity = float(light.intensity);
     if (out.kind == GltfLight::Kind::kSpot) read_spot_cone(light.spot, index, out);
     asset_.lights.push_back(out);
   }

@@ -45,6 +45,7 @@ std::array<double, 2> pair_of(const tinygltf::Value& object, const char* key, st
 UvMapping slot_mapping(const TextureSlotRef& slot, const std::string& file) {
   UvMapping mapping;
   mapping.set = slot.tex_coord;
+  mapping.textured = true;
   const auto found = slot.extensions->find(kTextureTransform);
   if (found == slot.extensions->end() || !found->second.IsObject()) return mapping;
   const tinygltf::Value& transform = found->second;

@@ -15,7 +15,8 @@
 namespace rtpro::gltf {
 
 struct UvMapping {
-  int set = 0;  // TEXCOORD_<set>
+  int set = 0;            // TEXCOORD_<set>
+  bool textured = false;  // whether the material has a texture slot that reads them
   // u' = m[0] u + m[1] v + m[2], v' = m[3] u + m[4] v + m[5], in glTF's texture space (v down).
   double m[6] = {1, 0, 0, 0, 1, 0};
   bool identity() const { return m[0] == 1 && m[1] == 0 && m[2] == 0 && m[3] == 0 && m[4] == 1 && m[5] == 0; }

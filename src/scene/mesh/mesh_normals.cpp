@@ -22,6 +22,11 @@ Vec3 unit_or(const Vec3& v, const Vec3& fallback) {
   return scaled / length(scaled);
 }
 
+std::string repaired_normals_warning(const std::string& file, std::size_t repaired) {
+  return file + ": " + std::to_string(repaired) + (repaired == 1 ? " vertex normal is" : " vertex normals are") +
+         " zero or not finite; replaced by the normals of the faces around " + (repaired == 1 ? "it" : "them");
+}
+
 std::vector<Vec3> area_weighted_vertex_normals(const std::vector<PaddedVertex>& vertices,
                                                const std::vector<TriangleIndices>& triangles) {
   std::vector<Vec3> normals;

@@ -57,7 +57,8 @@ class CornerVertices {
 // is empty when they are the file's positions themselves.
 struct ShadingVertices {
   std::vector<std::uint32_t> position_of;
-  std::vector<Vec3> normals;  // per shading vertex; empty for a flat mesh
+  std::vector<Vec3> normals;         // per shading vertex; empty for a flat mesh
+  std::size_t repaired_normals = 0;  // the file's that were zero or not finite
   std::uint32_t position(std::uint32_t v) const { return position_of.empty() ? v : position_of[v]; }
   std::size_t size(std::size_t positions) const { return position_of.empty() ? positions : position_of.size(); }
 };
@@ -80,8 +81,11 @@ ShadingVertices key_by_file_normals(MeshParts& parts, std::vector<TriangleIndice
   }
   ShadingVertices shading;
   shading.normals.reserve(corners.attribute_of.size());
-  for (std::uint32_t n : corners.attribute_of) shading.normals.push_back(unit_or(parts.normals[n], Vec3(0, 0, 1)));
+  for (std::uint32_t n : corners.attribute_of) shading.normals.push_back(parts.normals[n]);
   shading.position_of = std::move(corners.position_of);
+  const auto position = [&](std::uint32_t v) { return parts.positions[shading.position(v)].position(); };
+  shading.repaired_normals = repair_vertex_normals(position, triangles, shading.normals);
+  for (Vec3& n : shading.normals) n = unit_or(n, Vec3(0, 0, 1));
   return shading;
 }
 
@@ -127,10 +131,11 @@ bool assign_shading(MeshParts& parts, std::vector<TriangleIndices>& triangles, S
 
 }  // namespace
 
-bool assemble_mesh(MeshParts parts, TriangleMesh& mesh) {
+bool assemble_mesh(MeshParts parts, TriangleMesh& mesh, std::size_t& repaired_normals) {
   std::vector<TriangleIndices> triangles = std::move(parts.triangle_positions);
   ShadingVertices shading;
   const bool generated = assign_shading(parts, triangles, shading);
+  repaired_normals = shading.repaired_normals;
   const std::size_t shading_count = shading.size(parts.positions.size());
 
   // The second step: a shading vertex meeting different texture coordinates is split again, so

@@ -27,7 +27,8 @@ struct MeshParts {
   std::vector<TriangleRun> runs;                    // in order, the first at triangle 0
 };
 
-// Fills mesh.vertices, triangles, normals, uvs and colors. Returns whether normals were generated.
-bool assemble_mesh(MeshParts parts, TriangleMesh& mesh);
+// Fills mesh.vertices, triangles, normals, uvs and colors. Returns whether normals were generated;
+// `repaired_normals` counts the file's normals that were zero or not finite (repair_vertex_normals).
+bool assemble_mesh(MeshParts parts, TriangleMesh& mesh, std::size_t& repaired_normals);
 
 }  // namespace rtpro::obj

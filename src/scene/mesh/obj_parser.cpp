@@ -8,6 +8,7 @@
 #include "mesh_limits.h"
 #include "mesh_text_encoding.h"
 #include "mesh_triangulation.h"
+#include "mesh_normals.h"
 #include "obj_assembly.h"
 #include "obj_chunk.h"
 #include "obj_materials.h"
@@ -172,13 +173,6 @@ void warn_about_ignored_statements(const std::string& file, const std::vector<Ch
 bool file_normals_usable(const std::string& file, const std::vector<Chunk>& chunks, const Counts& totals,
                          std::size_t triangles, std::vector<std::string>& warnings) {
   if (totals.normals == 0 || triangles == 0) return false;
-  for (const Chunk& chunk : chunks) {
-    if (chunk.first_zero_normal_line != 0) {
-      warnings.push_back(located(file, chunk.first_zero_normal_line,
-                                 "vertex normal has zero length; the file's normals are not used"));
-      return false;
-    }
-  }
   if (std::all_of(chunks.begin(), chunks.end(), [](const Chunk& c) { return c.every_corner_has_normal; })) return true;
   warnings.push_back(file + ": some face vertices have no normal (vn); the file's normals are not used");
   return false;
@@ -324,7 +318,16 @@ LoadedMesh load_obj_file(const fs::path& file, const MeshLoadOptions& options, s
     stats.dropped_degenerate += chunk.dropped_degenerate;
     stats.concave_polygons += chunk.concave_polygons;
   }
-  stats.normals_generated = assemble_mesh(std::move(parts), mesh);
+  std::size_t repaired_normals = 0;
+  stats.normals_generated = assemble_mesh(std::move(parts), mesh, repaired_normals);
+  // Named at the first zero-length vn, so the user can find what to fix.
+  if (repaired_normals > 0) {
+    std::uint64_t line = 0;
+    for (const Chunk& chunk : chunks)
+      if (line == 0) line = chunk.first_zero_normal_line;
+    warnings.push_back(
+        repaired_normals_warning(line ? file_name + ":" + std::to_string(line) : file_name, repaired_normals));
+  }
   stats.vertices = mesh.vertices.size();
   stats.triangles = mesh.triangles.size();
   stats.materials = loaded.materials.size();

@@ -252,11 +252,6 @@ PlyMesh read_body(std::string_view bytes, const Header& header, const std::strin
   return BodyReader<BinaryReader>(reader, header, file).read(body_bytes);
 }
 
-bool all_nonzero(const std::vector<Vec3>& normals) {
-  return std::all_of(normals.begin(), normals.end(),
-                     [](const Vec3& n) { return n.x != 0.0f || n.y != 0.0f || n.z != 0.0f; });
-}
-
 void triangulate_deferred_polygons(PlyMesh& ply, MeshLoadStats& stats, const std::string& file) {
   std::vector<Vec3> points;
   std::vector<LocalTriangle> local;
@@ -276,10 +271,12 @@ void triangulate_deferred_polygons(PlyMesh& ply, MeshLoadStats& stats, const std
 
 // The file's normals, generated ones or none (flat), as the scene's `normals:` asks.
 void choose_normals(PlyMesh& ply, NormalsMode mode, TriangleMesh& mesh, MeshLoadStats& stats, const std::string& file) {
-  const bool present = !ply.normals.empty();
-  const bool usable = present && all_nonzero(ply.normals);
-  if (present && !usable && mode != NormalsMode::kFlat && mode != NormalsMode::kSmooth)
-    stats.warnings.push_back(file + ": some vertex normals have zero length; the file's normals are not used");
+  const bool usable = !ply.normals.empty();
+  if (usable && mode != NormalsMode::kFlat && mode != NormalsMode::kSmooth) {
+    const auto position = [&](std::uint32_t v) { return mesh.vertices[v].position(); };
+    if (const std::size_t repaired = repair_vertex_normals(position, mesh.triangles, ply.normals))
+      stats.warnings.push_back(repaired_normals_warning(file, repaired));
+  }
   switch (mode) {
     case NormalsMode::kFile:
       if (!usable)

@@ -38,11 +38,30 @@ CheckerDesc read_checker(const YamlNode& node, const std::string& name) {
   return desc;
 }
 
+TextureWrap read_wrap(const YamlNode& node, const std::string& name) {
+  return read_keyword<TextureWrap>(node, name,
+                                   {{"repeat", TextureWrap::kRepeat},
+                                    {"clamp", TextureWrap::kClamp},
+                                    {"mirror", TextureWrap::kMirror},
+                                    {"black", TextureWrap::kBlack}});
+}
+
+// `wrap: MODE` for both axes, or `wrap: [ACROSS, DOWN]` (glTF's wrapS, wrapT).
+void read_wraps(const YamlNode& node, const std::string& name, TextureSampling& sampling) {
+  if (!node.is_sequence()) {
+    sampling.wrap_s = sampling.wrap_t = read_wrap(node, name);
+    return;
+  }
+  const YamlNodeList axes = read_list(node, name, 2, "a wrap mode, or [across, down]");
+  sampling.wrap_s = read_wrap(*axes[0], name + "[0]");
+  sampling.wrap_t = read_wrap(*axes[1], name + "[1]");
+}
+
 // color: {texture: FILE, colorspace: srgb | linear | an OpenColorIO colour space, wrap: repeat |
-// clamp | mirror | black, tint: [r, g, b]}
+// clamp | mirror | black (or [across, down]), filter: linear | nearest, tint: [r, g, b]}
 void read_image_texture(const YamlNode& node, const std::string& name, const std::filesystem::path& folder,
                         MaterialDesc& desc) {
-  const MappingReader texture(node, name, {"texture", "colorspace", "wrap", "tint"});
+  const MappingReader texture(node, name, {"texture", "colorspace", "wrap", "filter", "tint"});
   const YamlNode& file = texture.required("texture");
   const std::string written = read_string(file, texture.field("texture"));
   if (written.empty()) fail_at(file, texture.field("texture") + " must name an image file");
@@ -55,12 +74,10 @@ void read_image_texture(const YamlNode& node, const std::string& name, const std
     const std::string text = read_string(*colorspace, texture.field("colorspace"));
     desc.texture_colorspace = text == "srgb" ? "sRGB - Texture" : text == "linear" ? "Linear Rec.709 (sRGB)" : text;
   }
-  if (const YamlNode* wrap = texture.optional("wrap"))
-    desc.texture_wrap = read_keyword<TextureWrap>(*wrap, texture.field("wrap"),
-                                                  {{"repeat", TextureWrap::kRepeat},
-                                                   {"clamp", TextureWrap::kClamp},
-                                                   {"mirror", TextureWrap::kMirror},
-                                                   {"black", TextureWrap::kBlack}});
+  if (const YamlNode* wrap = texture.optional("wrap")) read_wraps(*wrap, texture.field("wrap"), desc.texture_sampling);
+  if (const YamlNode* filter = texture.optional("filter"))
+    desc.texture_sampling.filter = read_keyword<TextureFilter>(
+        *filter, texture.field("filter"), {{"linear", TextureFilter::kLinear}, {"nearest", TextureFilter::kNearest}});
   desc.color = Color(1.0f);
   if (const YamlNode* tint = texture.optional("tint")) desc.color = read_color(*tint, texture.field("tint"));
 }

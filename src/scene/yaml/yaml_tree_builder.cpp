@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstring>
 #include <new>
+#include <optional>
 #include <unordered_map>
 
 namespace rtpro {
@@ -219,10 +220,33 @@ yaml_mark_t mark_of_offset(std::string_view text, std::size_t offset) {
   return mark;
 }
 
+// The first tab in the indentation of the line holding `mark`, if any. libyaml reports one as
+// "found character that cannot start any token" (or a mapping error a line later), which does not
+// say what to change; YAML allows only spaces there.
+std::optional<yaml_mark_t> indentation_tab(std::string_view text, const yaml_mark_t& mark) {
+  const std::size_t at = std::min(mark.index, text.size());
+  std::size_t i = 0;  // the start of the line
+  if (const std::size_t newline = at == 0 ? std::string_view::npos : text.rfind('\n', at - 1);
+      newline != std::string_view::npos)
+    i = newline + 1;
+  yaml_mark_t tab = mark;
+  tab.column = 0;
+  for (; i < text.size() && (text[i] == ' ' || text[i] == '\t'); ++i, ++tab.column) {
+    if (text[i] == '\t') {
+      tab.index = i;
+      return tab;
+    }
+  }
+  return std::nullopt;
+}
+
 [[noreturn]] void throw_syntax_error(const yaml_parser_t& parser, std::string_view text, const TreeBuilder& builder) {
   if (parser.error == YAML_MEMORY_ERROR) throw std::bad_alloc();
   const yaml_mark_t mark =
       parser.error == YAML_READER_ERROR ? mark_of_offset(text, parser.problem_offset) : parser.problem_mark;
+  if (const std::optional<yaml_mark_t> tab = indentation_tab(text, mark))
+    throw InputError(builder.position(*tab).location(),
+                     "YAML syntax error: tab characters are not allowed in YAML indentation (indent with spaces)");
   std::string message = std::string("YAML syntax error: ") + (parser.problem ? parser.problem : "unreadable YAML");
   if (parser.context) {
     const YamlPosition context_at = builder.position(parser.context_mark);
