@@ -6,6 +6,7 @@
 #include "render_output.h"
 #include "render_stats.h"
 #include "rtpro/core/error.h"
+#include "rtpro/core/printable_text.h"
 #include "rtpro/denoise/denoise.h"
 #include "rtpro/image/atomic_file_replacement.h"
 
@@ -136,10 +137,11 @@ void say_interrupted(const RenderResult& result, const std::filesystem::path& wr
                                    ? "the " + std::to_string(result.passes_done) + " of " +
                                          std::to_string(result.passes_total) + " finished passes"
                                    : "the " + std::to_string(result.tiles_done) + " finished tiles of the first pass";
-  std::fprintf(stderr, "rtpro: interrupted: wrote %s to %s\n", finished.c_str(), written.c_str());
+  std::fprintf(stderr, "rtpro: interrupted: wrote %s to %s\n", finished.c_str(),
+               printable_message(written.string()).c_str());
   if (journal)
     std::fprintf(stderr, "rtpro: the same command with --resume renders only the rest (journal %s)\n",
-                 journal->file().c_str());
+                 printable_message(journal->file().string()).c_str());
 }
 
 }  // namespace

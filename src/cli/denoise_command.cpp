@@ -5,9 +5,11 @@
 // the channels the denoiser needs, or bad options; 1 when OUT cannot be written (an existing OUT
 // is then left as it was).
 #include "command.h"
+#include "output_target.h"
 #include "render_output.h"
 #include "thread_count.h"
 #include "rtpro/core/error.h"
+#include "rtpro/core/printable_text.h"
 #include "rtpro/denoise/denoise.h"
 #include "rtpro/image/image_io.h"
 #include "rtpro/image/output_check.h"
@@ -52,6 +54,8 @@ int run_denoise(const DenoiseCommandOptions& o) {
   const int threads = worker_thread_count(o.threads);
   const std::filesystem::path input = o.input, output = o.output;
   check_image_output(output);  // a typo in -o fails now, not after the denoise
+  // Denoising in place would leave no noisy image to denoise again with other settings.
+  check_output_is_distinct({"-o", o.output}, {{"the input", o.input}});
   tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
   const auto start = std::chrono::steady_clock::now();
@@ -64,7 +68,7 @@ int run_denoise(const DenoiseCommandOptions& o) {
     throw InputError(SourceLocation{input.string()}, e.message());
   }
   if (!o.quiet && report.features.size() < 3)
-    std::cerr << "rtpro: warning: " << input.string()
+    std::cerr << "rtpro: warning: " << printable_message(input.string())
               << " lacks some of the albedo, N and depth layers (render --aov albedo,normal,depth): the denoiser "
                  "tells less detail from noise without them\n";
   // Only EXR keeps the layers; other formats get the denoised colour alone.
@@ -78,8 +82,8 @@ int run_denoise(const DenoiseCommandOptions& o) {
   write_image(output, denoised, write_options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!o.quiet)
-    std::cerr << "rtpro: wrote " << output.string() << " (" << denoised.width << "x" << denoised.height
-              << ", denoised, " << what_was_used(report) << ") in " << seconds_text(seconds) << "\n";
+    std::cerr << "rtpro: wrote " << printable_message(output.string()) << " (" << denoised.width << "x"
+              << denoised.height << ", denoised, " << what_was_used(report) << ") in " << seconds_text(seconds) << "\n";
   return kExitOk;
 }
 

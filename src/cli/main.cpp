@@ -3,6 +3,7 @@
 #include "command.h"
 #include "usage_check.h"
 #include "rtpro/core/error.h"
+#include "rtpro/core/printable_text.h"
 #include "rtpro/image/image_layer.h"
 
 #include <embree3/rtcore_config.h>
@@ -35,7 +36,8 @@ int run(const rtpro::cli::Action& action) {
     std::cerr << "rtpro: error: out of memory\n";
     return rtpro::kExitRuntimeFailure;
   } catch (const std::exception& e) {
-    std::cerr << "rtpro: error: " << e.what() << "\n";
+    // A library's message may quote input too.
+    std::cerr << "rtpro: error: " << rtpro::printable_message(e.what()) << "\n";
     return rtpro::kExitRuntimeFailure;
   }
 }

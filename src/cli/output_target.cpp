@@ -2,7 +2,8 @@
 
 #include "render_output.h"
 #include "rtpro/core/error.h"
-#include "rtpro/core/stale_temporaries.h"
+#include "rtpro/core/printable_text.h"
+#include "rtpro/core/temporary_folder.h"
 
 #include <unistd.h>
 
@@ -10,7 +11,6 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <utility>
@@ -36,15 +36,6 @@ std::string without_dot(const std::string& format) {
 
 constexpr const char* kStdoutTemporaryPrefix = "rtpro-stdout-";
 
-// "$TMPDIR/rtpro-stdout-PID-N.FORMAT"; what killed renders left there before is removed first (a
-// killed `-o -` render left its whole image behind).
-std::filesystem::path temporary_output(const std::string& format) {
-  const char* folder = std::getenv("TMPDIR");
-  const std::filesystem::path base = folder && *folder ? folder : "/tmp";
-  remove_stale_temporaries(base, kStdoutTemporaryPrefix);
-  return base / (owned_temporary_name(kStdoutTemporaryPrefix) + "." + format);
-}
-
 }  // namespace
 
 OutputTarget::OutputTarget(const std::string& output, const std::string& format) {
@@ -55,7 +46,9 @@ OutputTarget::OutputTarget(const std::string& output, const std::string& format)
       throw InputError(
           "-o - would write binary image data to the terminal; redirect standard output to a file or pipe");
     to_stdout_ = true;
-    file_ = temporary_output(wanted);
+    // A private folder: the image is written and read back where no one else can plant a file.
+    stdout_folder_.emplace(kStdoutTemporaryPrefix, "the image for standard output");
+    file_ = stdout_folder_->path() / ("image." + wanted);
     return;
   }
   file_ = output;
@@ -66,13 +59,12 @@ OutputTarget::OutputTarget(const std::string& output, const std::string& format)
 }
 
 OutputTarget::OutputTarget(OutputTarget&& other) noexcept
-    : file_(std::move(other.file_)), to_stdout_(std::exchange(other.to_stdout_, false)) {}
-
-OutputTarget::~OutputTarget() {
-  if (!to_stdout_) return;
-  std::error_code ignored;
-  std::filesystem::remove(file_, ignored);
+    : file_(std::move(other.file_)), to_stdout_(std::exchange(other.to_stdout_, false)),
+      stdout_folder_(std::move(other.stdout_folder_)) {
+  other.stdout_folder_.reset();
 }
+
+OutputTarget::~OutputTarget() = default;
 
 std::string OutputTarget::name() const { return to_stdout_ ? "standard output" : file_.string(); }
 
@@ -120,8 +112,8 @@ void check_output_is_distinct(const NamedPath& output, const std::vector<NamedPa
   for (const NamedPath& other : others) {
     if (other.path.empty() || other.path == "-") continue;
     if (same_file(output.path, other.path))
-      throw InputError(output.what + " " + output.path + " is the same file as " + other.what + " " + other.path +
-                       ": writing it would replace that; choose another name");
+      throw InputError(output.what + " " + printable_text(output.path) + " is the same file as " + other.what + " " +
+                       printable_text(other.path) + ": writing it would replace that; choose another name");
   }
 }
 

@@ -3,8 +3,10 @@
 // standard output for `-o -` (the format from --format), and what --exposure does to it.
 #include "rtpro/image/image.h"
 #include "rtpro/image/image_io.h"
+#include "rtpro/core/temporary_folder.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,13 +19,13 @@ class OutputTarget {
  public:
   // Throws InputError for `-o -` without --format, or a --format that contradicts the extension.
   OutputTarget(const std::string& output, const std::string& format);
-  // Moving hands over the temporary file of a stdout target: only one of them removes it.
+  // Moving hands over the temporary folder of a stdout target: only one of them removes it.
   OutputTarget(OutputTarget&& other) noexcept;
   OutputTarget(const OutputTarget&) = delete;
   OutputTarget& operator=(const OutputTarget&) = delete;
-  ~OutputTarget();  // removes the temporary file of a stdout target
+  ~OutputTarget();  // removes the temporary folder of a stdout target
 
-  // What the image writer writes: the -o file, or a temporary file with the format's extension.
+  // What the image writer writes: the -o file, or "image.FORMAT" in a private temporary folder.
   const std::filesystem::path& file() const { return file_; }
   bool to_stdout() const { return to_stdout_; }
   // How messages name the target: the file, or "standard output".
@@ -39,6 +41,7 @@ class OutputTarget {
 
   std::filesystem::path file_;
   bool to_stdout_ = false;
+  std::optional<TemporaryFolder> stdout_folder_;  // holds file_ for a stdout target
 };
 
 // A file a command reads or writes, and how the command line names it ("-o", "--stats-json",

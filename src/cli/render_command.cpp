@@ -9,9 +9,12 @@
 #include "rtpro/core/error.h"
 #include "rtpro/distributed/communicator.h"
 
+#include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <utility>
 
 namespace rtpro::cli {
 
@@ -63,7 +66,7 @@ int run_renders_in_mpi_job(const RenderCommandOptions& o) {
   const int rank = job->rank();
   try {
     const int code = run_renders(o, job->size() > 1 ? job.get() : nullptr);
-    job.reset();
+    leave_mpi_job(std::move(job), std::chrono::milliseconds(static_cast<std::int64_t>(o.rank_timeout * 1000.0)));
     return code;
   } catch (const std::exception& e) {
     if (rank == 0) std::fprintf(stderr, "rtpro: error: %s\n", e.what());

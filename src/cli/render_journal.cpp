@@ -72,10 +72,9 @@ OpenedJournal open_render_journal(const std::filesystem::path& file, const JobId
     JournalContents contents = read_journal(file, grid, channel_count);
     const std::vector<std::string> differences = identity.differences(contents.identity, "the journal");
     if (!differences.empty()) {
-      std::string message = file.string() + ": the journal is of another render, so --resume cannot continue it:";
-      for (const std::string& line : differences) message += "\n  " + line;
-      message += "\nrender without --resume to start over";
-      throw InputError(message);
+      std::vector<std::string> lines = differences;
+      lines.push_back("render without --resume to start over");
+      throw InputError(file.string() + ": the journal is of another render, so --resume cannot continue it:", lines);
     }
     log.info("resuming: " + std::to_string(contents.tiles.size()) + " records of " + std::to_string(grid.count()) +
              " tiles in passes from " + file.string() +

@@ -62,8 +62,12 @@ void check_stopping_options(const RenderCommandOptions& o, bool distributed) {
     throw InputError("--time-limit must be a number of seconds >= 0 (0: no limit)");
   if (!(o.rank_timeout == 0.0 || (o.rank_timeout >= 1.0 && o.rank_timeout <= 1e6)))
     throw InputError("--rank-timeout must be 0 (wait for ever) or between 1 and 1000000 seconds");
-  if (!(o.noise_threshold >= 0.0 && o.noise_threshold < 1e6))
-    throw InputError("--noise-threshold must be >= 0 (0: every pixel takes every sample; Cycles' default is 0.01)");
+  // Below 1e-6 no float sum of samples resolves the noise, and 1/threshold stops fitting the
+  // sample counts it decides.
+  if (!(o.noise_threshold == 0.0 || (o.noise_threshold >= 1e-6 && o.noise_threshold < 1e6)))
+    throw InputError(
+        "--noise-threshold must be 0 (every pixel takes every sample) or from 0.000001 to 1000000 (Cycles' default "
+        "is 0.01)");
   if (o.min_samples < 0) throw InputError("--min-samples must be >= 0 (0: automatic)");
   if (o.min_samples > 0 && o.noise_threshold == 0.0) throw InputError("--min-samples needs --noise-threshold");
   if (o.noise_threshold > 0.0 && distributed)

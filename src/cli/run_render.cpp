@@ -8,6 +8,8 @@
 #include "log.h"
 #include "render_request.h"
 #include "render_session.h"
+#include "spared_inputs.h"
+#include "rtpro/scene/scene_inputs.h"
 
 #include <tbb/global_control.h>
 
@@ -24,6 +26,8 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   const tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism,
                                        static_cast<std::size_t>(request.threads));
   const LoadedScene loaded = load_scene(request.scene, &log);
+  if (request.leader)
+    check_outputs_spare_inputs(request, scene_inputs(loaded.description, loaded.report, loaded.scene));
   times.load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - times.start).count();
 
   RenderSession session(request, loaded, job, log);

@@ -1,6 +1,7 @@
 #include "usage_check.h"
 
 #include "rtpro/core/closest_match.h"
+#include "rtpro/core/printable_text.h"
 #include "rtpro/core/error.h"
 
 #include <map>
@@ -165,7 +166,8 @@ std::string usage_error_line(const CLI::App& app, const std::vector<std::string>
   while (!line.empty() && line.back() == '\n') line.pop_back();
   for (char& c : line)
     if (c == '\n') c = ' ';
-  return line + help_pointer(command);
+  // What remains of control characters came from the command line (an option's name or value).
+  return printable_message(line) + help_pointer(command);
 }
 
 }  // namespace rtpro::cli

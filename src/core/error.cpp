@@ -1,5 +1,7 @@
 #include "rtpro/core/error.h"
 
+#include "rtpro/core/printable_text.h"
+
 namespace rtpro {
 
 std::string SourceLocation::str() const {
@@ -13,14 +15,27 @@ std::string SourceLocation::str() const {
 
 namespace {
 std::string located(const SourceLocation& where, const std::string& message) {
-  const std::string prefix = where.str();
+  const std::string prefix = printable_message(where.str());
   return prefix.empty() ? message : prefix + ": " + message;
+}
+
+std::string with_details(const std::string& message, const std::vector<std::string>& details) {
+  std::string text = printable_message(message);
+  for (const std::string& line : details) text += "\n  " + printable_message(line);
+  return text;
 }
 }  // namespace
 
 InputError::InputError(SourceLocation where, const std::string& message)
-    : std::runtime_error(located(where, message)), where_(std::move(where)), message_(message) {}
+    : std::runtime_error(located(where, printable_message(message))), where_(std::move(where)),
+      message_(printable_message(message)) {}
 
-InputError::InputError(const std::string& message) : std::runtime_error(message), message_(message) {}
+InputError::InputError(const std::string& message)
+    : std::runtime_error(printable_message(message)), message_(printable_message(message)) {}
+
+InputError::InputError(const std::string& message, const std::vector<std::string>& details)
+    : std::runtime_error(with_details(message, details)), message_(with_details(message, details)) {}
+
+RuntimeError::RuntimeError(const std::string& message) : std::runtime_error(printable_message(message)) {}
 
 }  // namespace rtpro

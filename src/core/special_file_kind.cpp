@@ -15,4 +15,11 @@ const char* special_file_kind(mode_t mode) {
   return "a special file";
 }
 
+std::string unreadable_file_problem(const std::filesystem::path& file) {
+  struct stat status {};
+  if (::stat(file.c_str(), &status) != 0) return "not found";
+  if (S_ISREG(status.st_mode)) return {};
+  return std::string("is ") + special_file_kind(status.st_mode) + ", not a file";
+}
+
 }  // namespace rtpro

@@ -1,5 +1,6 @@
 #include "rtpro/core/stale_temporaries.h"
 
+#include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -18,6 +19,21 @@ bool process_is_gone(long pid) { return pid > 0 && ::kill(static_cast<pid_t>(pid
 std::string owned_temporary_name(std::string_view prefix) {
   static std::atomic<unsigned> sequence{0};
   return std::string(prefix) + std::to_string(::getpid()) + "-" + std::to_string(sequence.fetch_add(1));
+}
+
+int create_owned_temporary(const std::filesystem::path& folder, std::string_view prefix,
+                           std::filesystem::path& created) {
+  constexpr int kNames = 64;
+  for (int attempt = 0; attempt < kNames; ++attempt) {
+    const std::filesystem::path candidate = folder / owned_temporary_name(prefix);
+    const int descriptor = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (descriptor >= 0) {
+      created = candidate;
+      return descriptor;
+    }
+    if (errno != EEXIST) return -1;
+  }
+  return -1;  // errno is EEXIST: every name tried was taken
 }
 
 void remove_stale_temporaries(const std::filesystem::path& folder, std::string_view prefix) {

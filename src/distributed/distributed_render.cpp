@@ -1,6 +1,7 @@
 #include "rtpro/distributed/distributed_render.h"
 
 #include "follower_tiles.h"
+#include "job_messages.h"
 #include "rank_clock.h"
 #include "rank_liveness.h"
 #include "rtpro/core/error.h"
@@ -25,11 +26,6 @@ namespace rtpro {
 
 namespace {
 
-// kFinished: rank 0 has every rank's kDone of this image. A follower waits for it before it
-// returns, so that nothing it sends for the next frame (its hello) can reach rank 0 while rank 0
-// still waits for another follower's kDone of this one. kAlive: a heartbeat (rank_liveness.h).
-enum Tag : int { kHello = 1, kVerdict = 2, kRequest = 3, kGrant = 4, kTile = 5, kDone = 6, kFinished = 7, kAlive = 8 };
-
 // The talking threads wake rarely: on a machine whose cores all render, every wake-up takes a core
 // from a worker. Measured on 2 cores, 2 ranks x 1 thread: with pauses from 20 us up, each rank's
 // talking thread woke ~800 times a second, its worker lost its core ~900 times a second (one
@@ -44,7 +40,6 @@ constexpr auto kFollowerIdlePause = std::chrono::milliseconds(50);
 constexpr double kQueuedWorkSeconds = 0.02;
 constexpr std::size_t kMinTilesAheadPerThread = 2;
 constexpr std::size_t kMaxTilesAheadPerThread = 64;
-constexpr auto kPollPause = std::chrono::microseconds(200);
 
 // CPU time of the calling thread: what handling messages costs rank 0, whatever else runs.
 double thread_cpu_seconds() {
@@ -68,13 +63,6 @@ T value_of(const Message& message) {
                        " has the wrong size");
   std::memcpy(&value, message.bytes.data(), sizeof value);
   return value;
-}
-
-Message wait_for_message(Communicator& communicator) {
-  while (true) {
-    if (std::optional<Message> message = communicator.poll()) return std::move(*message);
-    std::this_thread::sleep_for(kPollPause);
-  }
 }
 
 struct DoneRecord {
@@ -185,11 +173,9 @@ void agree_on_job(Communicator& communicator, const JobIdentity& identity) {
     const std::string rank_name = "rank " + std::to_string(hello.source);
     const std::vector<std::string> differences = identity.differences(JobIdentity::parse(theirs, rank_name), rank_name);
     if (!differences.empty()) {
-      std::string message = rank_name +
-                            " would render another job than rank 0 (a different file, build or setting on "
-                            "its node):";
-      for (const std::string& line : differences) message += "\n  " + line;
-      throw InputError(message);
+      throw InputError(
+          rank_name + " would render another job than rank 0 (a different file, build or setting on its node):",
+          differences);
     }
   }
   for (int rank = 1; rank < communicator.size(); ++rank) communicator.send(rank, kVerdict, {});

@@ -31,10 +31,6 @@ std::filesystem::path folder_of(const std::filesystem::path& file) {
   fail(file, std::string(step) + ": " + std::strerror(error));
 }
 
-std::filesystem::path temporary_name_for(const std::filesystem::path& target) {
-  return folder_of(target) / owned_temporary_name(temporary_prefix(target));
-}
-
 void write_all(int descriptor, std::string_view bytes, const std::filesystem::path& target) {
   while (!bytes.empty()) {
     const ssize_t written = ::write(descriptor, bytes.data(), bytes.size());
@@ -77,35 +73,28 @@ AtomicFileReplacement::AtomicFileReplacement(std::filesystem::path target) : tar
 }
 
 // The temporary's name is predictable (PID and a counter), so another user of a shared folder
-// could plant a symbolic link there: created with O_EXCL | O_NOFOLLOW, the temporary is a new
-// regular file of this process or nothing (a name already taken is skipped for the next one).
+// could plant a file or symbolic link there: create_owned_temporary never opens or removes it.
 void AtomicFileReplacement::create_temporary() {
-  constexpr int kNames = 64;
-  for (int attempt = 0; attempt < kNames; ++attempt) {
-    temporary_ = temporary_name_for(target_);
-    descriptor_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
-    if (descriptor_ >= 0) {
-      struct stat created {};
-      if (::fstat(descriptor_, &created) != 0) fail_errno(target_, "create", errno);
-      device_ = created.st_dev;
-      inode_ = created.st_ino;
-      return;
-    }
-    if (errno != EEXIST) {
-      const int error = errno;
-      temporary_.clear();
-      fail_errno(target_, "create", error);
-    }
+  descriptor_ = create_owned_temporary(folder_of(target_), temporary_prefix(target_), temporary_);
+  if (descriptor_ < 0) {
+    const int error = errno;
+    temporary_.clear();
+    if (error == EEXIST) fail(target_, "create: the temporary names beside it are all taken by other files");
+    fail_errno(target_, "create", error);
   }
-  temporary_.clear();
-  fail(target_, "create: " + std::to_string(kNames) + " temporary names beside it are all taken by other files");
+  struct stat created {};
+  if (::fstat(descriptor_, &created) != 0) fail_errno(target_, "create", errno);
+  device_ = created.st_dev;
+  inode_ = created.st_ino;
 }
 
 AtomicFileReplacement::~AtomicFileReplacement() {
   if (descriptor_ >= 0) ::close(descriptor_);
   if (committed_ || temporary_.empty()) return;
-  std::error_code ignored;  // nothing useful to do if cleanup fails while another error unwinds
-  std::filesystem::remove(temporary_, ignored);
+  // Only the file created: another put in its place meanwhile is not rtpro's to remove.
+  struct stat now {};
+  if (::lstat(temporary_.c_str(), &now) == 0 && now.st_dev == device_ && now.st_ino == inode_)
+    ::unlink(temporary_.c_str());
 }
 
 void AtomicFileReplacement::commit() {

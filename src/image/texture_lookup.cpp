@@ -1,7 +1,7 @@
 #include "rtpro/image/texture_lookup.h"
 
 #include "rtpro/core/error.h"
-#include "rtpro/core/stale_temporaries.h"
+#include "rtpro/core/temporary_folder.h"
 #include "rtpro/image/color_config.h"
 #include "rtpro/image/image_io.h"
 #include "image_read_budget.h"
@@ -10,11 +10,6 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/texture.h>
 
-#include <sys/stat.h>
-
-#include <cerrno>
-#include <cstdlib>
-#include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -24,38 +19,6 @@ namespace rtpro {
 namespace {
 
 constexpr const char* kTextureFolderPrefix = "rtpro-textures-";
-
-// A private folder for the decoded .tx files, removed with the lookup: "$TMPDIR/rtpro-textures-
-// PID-N", created 0700 (a name already taken is skipped). The folders of killed renders (1.1 GB
-// for an 8k texture) are removed first.
-class TemporaryFolder {
- public:
-  TemporaryFolder() {
-    const char* folder = std::getenv("TMPDIR");
-    const std::filesystem::path base = folder && *folder ? folder : "/tmp";
-    remove_stale_temporaries(base, kTextureFolderPrefix);
-    for (int attempt = 0; attempt < 64; ++attempt) {
-      const std::filesystem::path candidate = base / owned_temporary_name(kTextureFolderPrefix);
-      if (::mkdir(candidate.c_str(), 0700) == 0) {
-        path_ = candidate;
-        return;
-      }
-      if (errno != EEXIST) break;
-    }
-    throw RuntimeError("cannot create a folder for decoded textures under " + base.string() + ": " +
-                       std::strerror(errno));
-  }
-  ~TemporaryFolder() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  TemporaryFolder(const TemporaryFolder&) = delete;
-  TemporaryFolder& operator=(const TemporaryFolder&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
 
 // The file's pixels as linear RGB floats: grey and grey-alpha images repeat their first channel,
 // extra channels (alpha) are dropped, then the colour space is converted to scene_linear.
@@ -162,7 +125,7 @@ class OiioTextureLookup final : public TextureLookup {
 
  private:
   // Declared first so it is removed last, after the files are forgotten by the system.
-  TemporaryFolder folder_;
+  TemporaryFolder folder_{kTextureFolderPrefix, "decoded textures"};
   // Forgets this lookup's files (closing them) before the folder holding them goes.
   struct Forget {
     OIIO::TextureSystem* system;

@@ -2,6 +2,7 @@
 
 #include "rtpro/core/error.h"
 #include "rtpro/core/printable_text.h"
+#include "rtpro/scene/scene_inputs.h"
 
 #include <xxhash.h>
 
@@ -13,7 +14,6 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <set>
 
 namespace rtpro {
 
@@ -117,20 +117,8 @@ JobIdentity scene_identity(const SceneDescription& description, const SceneBuild
                            const RenderScene& scene) {
   JobIdentity identity;
   identity.set("rtpro", RTPRO_VERSION);
-  std::set<std::filesystem::path> seen;
-  const auto add = [&](const std::string& kind, const std::filesystem::path& file) {
-    if (!seen.insert(file).second) return;
-    identity.set(kind + " " + file.string(), file_digest(file));
-  };
-  for (const auto& file : description.source_files) add("scene", file);
-  for (const SceneBuildReport::MeshFile& mesh : report.meshes) {
-    add("mesh", mesh.file);
-    for (const auto& file : mesh.stats.files_read) add("mesh data", file);
-  }
-  if (scene.environment && !scene.environment->file.empty()) add("environment", scene.environment->file);
-  // Images stored inside a glTF are covered by the glTF's own digest.
-  for (const TextureImage& texture : scene.textures)
-    if (!texture.bytes) add("texture", texture.file);
+  for (const SceneInput& input : scene_inputs(description, report, scene))
+    identity.set(input.kind + " " + input.file.string(), file_digest(input.file));
   return identity;
 }
 

@@ -37,7 +37,13 @@ JournalOwner::JournalOwner(std::filesystem::path journal) : lock_file_(journal_l
   // A handful of tries: each lost one means another owner deleted the file between open and flock.
   for (int attempt = 0; attempt < 16; ++attempt) {
     check_journal_file(lock_file_);
-    const int descriptor = ::open(lock_file_.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
+    constexpr int kFlags = O_RDWR | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC;
+    int descriptor = ::open(lock_file_.c_str(), kFlags | O_CREAT | O_EXCL, 0644);
+    const bool created = descriptor >= 0;
+    if (!created && errno == EEXIST) {
+      descriptor = ::open(lock_file_.c_str(), kFlags);
+      if (descriptor < 0 && errno == ENOENT) continue;  // its owner just ended and deleted it
+    }
     if (descriptor < 0)
       throw InputError(lock_file_.string() + ": cannot create the resume journal's lock file: " + std::strerror(errno));
     if (::flock(descriptor, LOCK_EX | LOCK_NB) != 0) {
@@ -51,6 +57,10 @@ JournalOwner::JournalOwner(std::filesystem::path journal) : lock_file_(journal_l
     }
     if (is_file_at(descriptor, lock_file_)) {
       descriptor_ = descriptor;
+      // A lock file is empty: one left by a killed render goes when this render ends; a file with
+      // contents at that name is not rtpro's and stays.
+      struct stat taken {};
+      removable_ = created || (::fstat(descriptor, &taken) == 0 && taken.st_size == 0);
       return;
     }
     ::close(descriptor);
@@ -62,7 +72,7 @@ JournalOwner::JournalOwner(std::filesystem::path journal) : lock_file_(journal_l
 
 JournalOwner::~JournalOwner() {
   // Deleted while still locked, so no other render can hold a lock on it that a third would miss.
-  if (is_file_at(descriptor_, lock_file_)) ::unlink(lock_file_.c_str());
+  if (removable_ && is_file_at(descriptor_, lock_file_)) ::unlink(lock_file_.c_str());
   ::close(descriptor_);
 }
 

@@ -181,16 +181,17 @@ TileJournal::TileJournal(std::filesystem::path file, const JobIdentity& identity
 }
 
 void TileJournal::write_new(std::span<const TileResult> kept) {
-  const std::filesystem::path temporary = folder_of(file_) / owned_temporary_name(temporary_prefix(file_));
-  int descriptor = -1;
+  std::filesystem::path temporary;
+  // A file or link planted at a temporary name is skipped, never written through or removed.
+  int descriptor = create_owned_temporary(folder_of(file_), temporary_prefix(file_), temporary);
   const auto fail = [&](const std::string& what) {
     const std::string reason = std::strerror(errno);
-    if (descriptor >= 0) ::close(descriptor);
-    ::unlink(temporary.c_str());
+    if (descriptor >= 0) {
+      ::close(descriptor);
+      ::unlink(temporary.c_str());
+    }
     return RuntimeError(file_.string() + ": cannot " + what + " the resume journal: " + reason);
   };
-  // O_EXCL | O_NOFOLLOW: a file or link planted at the temporary name is never written through.
-  descriptor = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
   if (descriptor < 0) throw fail("create");
   std::size_t bytes = header_.size();
   if (!write_all(descriptor, header_.data(), header_.size())) throw fail("write");

@@ -179,6 +179,32 @@ TEST(OutputFaults, AnOutputThatIsTheImageOrTheSceneIsRefusedBeforeRendering) {
   EXPECT_EQ(read_file(scene), read_file(scenes_dir() / "demo.yaml"));
 }
 
+// Files planted at the names of every temporary a render creates (the resume journal's, the
+// image's, the statistics') and at the journal's lock: the render takes other names, and every
+// planted file is still there with its bytes. The shell's PID is rtpro's once it execs.
+TEST(OutputFaults, FilesPlantedAtTheTemporaryNamesAreNeitherUsedNorRemoved) {
+  const auto dir = scratch_dir();
+  std::vector<std::string> prefixes = {"out.exr.rtpro-journal.tmp-", ".out.exr.rtpro-tmp-", ".stats.json.rtpro-tmp-"};
+  std::string plant = "for n in 0 1 2 3 4 5 6 7; do";
+  for (const std::string& prefix : prefixes) plant += " echo planted > " + prefix + "$$-$n;";
+  plant += " done; echo mine > out.exr.rtpro-journal.lock; exec " +
+           rtpro_command(
+               render_args(scenes_dir() / "demo.yaml", "out.exr", "--size 8x8 --spp 1 -q --stats-json stats.json"));
+  std::string out;
+  EXPECT_EQ(run_command("cd " + dir.string() + " && sh -c '" + plant + "'", &out), 0) << out;
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "out.exr"));
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "stats.json"));
+  int planted = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    for (const std::string& prefix : prefixes)
+      if (entry.path().filename().string().rfind(prefix, 0) == 0) {
+        EXPECT_EQ(read_file(entry.path()), "planted\n") << entry.path();
+        ++planted;
+      }
+  EXPECT_EQ(planted, 24);
+  EXPECT_EQ(read_file(dir / "out.exr.rtpro-journal.lock"), "mine\n");
+}
+
 // SIGKILL at random moments of a render that replaces a good image: the target is always the
 // old image or a complete new one, and the temporaries the killed runs left are gone after the
 // next run that writes the same target.

@@ -3,6 +3,7 @@
 // runtime failures (cannot write, out of memory, backend failure) with code 1.
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace rtpro {
 
@@ -16,10 +17,14 @@ struct SourceLocation {
   std::string str() const;
 };
 
+// A message is one line: control characters in it (an ESC or a newline of echoed input) are shown
+// escaped (core/printable_text.h), whoever built it. A message that lists things gives them as
+// `details`, each on a line of its own, indented, and escaped the same way.
 class InputError : public std::runtime_error {
  public:
   InputError(SourceLocation where, const std::string& message);
   explicit InputError(const std::string& message);
+  InputError(const std::string& message, const std::vector<std::string>& details);
   const SourceLocation& where() const { return where_; }
   const std::string& message() const { return message_; }
 
@@ -28,9 +33,10 @@ class InputError : public std::runtime_error {
   std::string message_;
 };
 
+// One line, escaped as an InputError's.
 class RuntimeError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit RuntimeError(const std::string& message);
 };
 
 enum ExitCode : int { kExitOk = 0, kExitRuntimeFailure = 1, kExitInputError = 2, kExitInterrupted = 130 };

@@ -13,6 +13,12 @@ namespace rtpro {
 // cut keeps a 10 MB token from becoming a 10 MB message.
 std::string printable_text(std::string_view text, std::size_t max_bytes = std::string_view::npos);
 
+// A whole message as one line for the terminal: like printable_text, but backslashes stay as they
+// are, so text printable_text already escaped is unchanged. rtpro's errors and log lines pass
+// through it, so input echoed anywhere in them (a name, a key, a path, an option's value) can
+// neither colour the terminal nor start a line of its own.
+std::string printable_message(std::string_view text);
+
 // The length of the UTF-8 sequence that starts the non-empty `text` (1 for ASCII), or 0 where none
 // does: a byte that cannot lead one (a continuation byte, 0xc0, 0xc1, 0xf5 to 0xff) or a sequence cut short
 // or broken by a byte that does not continue it.

@@ -13,6 +13,13 @@ namespace rtpro {
 // "<prefix>PID-N" for this process, N unique within it.
 std::string owned_temporary_name(std::string_view prefix);
 
+// A new, empty regular file "<folder>/<prefix>PID-N" of this process, open for writing. Created
+// with O_EXCL | O_NOFOLLOW: a file or link already at a name (planted there, or left by an earlier
+// process with the same PID) is neither written through nor removed; the next N is taken. Returns
+// the descriptor and sets `created`; -1 with errno set when no name would do.
+int create_owned_temporary(const std::filesystem::path& folder, std::string_view prefix,
+                           std::filesystem::path& created);
+
 // Removes the files (and folders, with their contents) in `folder` named "<prefix>PID-…" whose
 // process is no longer running. A PID
 // reused by another process keeps its file until that process ends too; symbolic links and

@@ -2,6 +2,7 @@
 // How the ranks of a distributed render talk: numbered processes that send each other tagged
 // byte messages. Open MPI provides it (librtpro_mpi.so, loaded only when mpirun started rtpro);
 // the scheduler (distributed_render.h) needs nothing more, so it is tested without MPI too.
+#include <chrono>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -38,5 +39,12 @@ bool launched_by_mpirun();
 // the calling thread talks MPI). The communicator finalizes MPI when destroyed. Throws
 // RuntimeError when the plugin or MPI cannot be loaded.
 std::unique_ptr<Communicator> join_mpi_job();
+
+// Leaves the job: destroys `job`, which finalizes MPI. MPI_Finalize waits for every rank, so one
+// stopped, hung or unreachable after its last message would hold the others (and mpirun) for
+// ever, with the image already written: after `rank_timeout` (zero: wait for ever) this rank says
+// so on standard error and exits with kExitRuntimeFailure without finalizing, and mpirun then
+// ends every rank of the job, the silent one too.
+void leave_mpi_job(std::unique_ptr<Communicator> job, std::chrono::milliseconds rank_timeout);
 
 }  // namespace rtpro

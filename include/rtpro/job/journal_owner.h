@@ -16,7 +16,8 @@ class JournalOwner {
   // Takes the lock without waiting. Throws InputError naming the journal when another render owns
   // it, or when the journal or its lock file is not a regular file (check_journal_file).
   explicit JournalOwner(std::filesystem::path journal);
-  // Deletes the lock file and releases the lock.
+  // Deletes the lock file (when this owner created it, or took over an empty one a killed render
+  // left) and releases the lock.
   ~JournalOwner();
   JournalOwner(const JournalOwner&) = delete;
   JournalOwner& operator=(const JournalOwner&) = delete;
@@ -24,6 +25,7 @@ class JournalOwner {
  private:
   std::filesystem::path lock_file_;
   int descriptor_ = -1;
+  bool removable_ = false;
 };
 
 }  // namespace rtpro

@@ -15,7 +15,10 @@ int resolved_min_samples(int min_samples, float threshold, int spp) {
   if (samples <= 0) {
     // Enough for the even half to be a usable estimate; more for stricter thresholds.
     samples = 16;
-    if (threshold > 0.0f) samples = std::max(samples, static_cast<int>(std::ceil(std::sqrt(1.0f / threshold))));
+    // Capped at the spp before the conversion: a tiny threshold's root is beyond any int.
+    if (threshold > 0.0f)
+      samples = std::max(samples, static_cast<int>(std::min(std::ceil(std::sqrt(1.0f / threshold)),
+                                                            static_cast<float>(std::max(spp, 1)))));
   }
   return std::clamp(samples, 1, std::max(spp, 1));
 }

@@ -1,6 +1,7 @@
 #include "material_textures.h"
 
 #include "rtpro/core/error.h"
+#include "rtpro/core/special_file_kind.h"
 
 #include <filesystem>
 #include <string>
@@ -13,9 +14,8 @@ namespace {
 std::uint32_t texture_index(const std::filesystem::path& file, const std::string& colorspace,
                             const std::shared_ptr<const std::vector<unsigned char>>& bytes, const SourceLocation& where,
                             std::vector<TextureImage>& textures) {
-  std::error_code error;
-  if (!bytes && !std::filesystem::is_regular_file(file, error))
-    throw InputError(where, "texture '" + file.string() + "' not found");
+  if (const std::string problem = bytes ? std::string() : unreadable_file_problem(file); !problem.empty())
+    throw InputError(where, "texture '" + file.string() + "' " + problem);
   std::uint32_t index = 0;
   while (index < textures.size() && !(textures[index].file == file && textures[index].colorspace == colorspace))
     ++index;

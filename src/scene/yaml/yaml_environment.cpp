@@ -1,5 +1,7 @@
 #include "yaml_environment.h"
 
+#include "rtpro/core/special_file_kind.h"
+
 #include "yaml_reader.h"
 #include "yaml_transform.h"
 
@@ -35,9 +37,8 @@ std::optional<EnvironmentDesc> read_environment(const YamlNode* node, const std:
     if (written.empty()) fail_at(*file, environment.field("file") + " must name a latitude-longitude image file");
     desc.file = folder / written;
     desc.file_where = file->at.location();
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(desc.file, error))
-      fail_at(*file, environment.field("file") + ": image file '" + desc.file.string() + "' not found");
+    if (const std::string problem = unreadable_file_problem(desc.file); !problem.empty())
+      fail_at(*file, environment.field("file") + ": image file '" + desc.file.string() + "' " + problem);
     if (!is_scene_linear_format(desc.file))
       fail_at(*file, environment.field("file") + ": '" + desc.file.string() +
                          "' is not a scene-linear image; an environment is read from an EXR, Radiance HDR or PFM file");

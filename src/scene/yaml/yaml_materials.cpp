@@ -1,5 +1,7 @@
 #include "yaml_materials.h"
 
+#include "rtpro/core/special_file_kind.h"
+
 #include "yaml_reader.h"
 
 #include <algorithm>
@@ -67,9 +69,8 @@ void read_image_texture(const YamlNode& node, const std::string& name, const std
   if (written.empty()) fail_at(file, texture.field("texture") + " must name an image file");
   desc.color_texture = folder / written;
   desc.texture_where = file.at.location();
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(desc.color_texture, error))
-    fail_at(file, texture.field("texture") + ": image file '" + desc.color_texture.string() + "' not found");
+  if (const std::string problem = unreadable_file_problem(desc.color_texture); !problem.empty())
+    fail_at(file, texture.field("texture") + ": image file '" + desc.color_texture.string() + "' " + problem);
   if (const YamlNode* colorspace = texture.optional("colorspace")) {
     const std::string text = read_string(*colorspace, texture.field("colorspace"));
     desc.texture_colorspace = text == "srgb" ? "sRGB - Texture" : text == "linear" ? "Linear Rec.709 (sRGB)" : text;

@@ -134,12 +134,13 @@ pid_t rank_process(pid_t mpirun_pid, int rank) {
 }
 
 // Starts mpiexec with `ranks` ranks of a single-threaded render of `scene` into `out`, in tiles of
-// 8, `extra` added to its arguments, and its standard error to `log` if one is named; returns
+// `tile_size`, `extra` added to its arguments, and its standard error to `log` if one is named; returns
 // mpiexec's PID.
 // Open MPI is allowed to run as root (CI) and to place more ranks than cores; leak checks are off
 // (a rank killed or ended by MPI_Abort leaks by design).
 pid_t start_job(int ranks, const std::filesystem::path& scene, const std::filesystem::path& out,
-                const std::vector<std::string>& extra, const std::filesystem::path& log = {}) {
+                const std::vector<std::string>& extra, const std::filesystem::path& log = {},
+                const std::string& tile_size = "8") {
   const pid_t job = fork();
   if (job != 0) return job;
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
@@ -163,7 +164,7 @@ pid_t start_job(int ranks, const std::filesystem::path& scene, const std::filesy
                                    "--threads",
                                    "1",
                                    "--tile-size",
-                                   "8"};
+                                   tile_size};
   argv.insert(argv.end(), extra.begin(), extra.end());
   std::vector<char*> args;
   for (std::string& arg : argv) args.push_back(arg.data());
@@ -285,6 +286,65 @@ TEST(MpiJob, StoppedRankEndsTheJobAfterTheRankTimeoutAndResumeFinishesIt) {
   std::string output;
   ASSERT_EQ(run_command(render_command(scene, out) + " --spp 256 --tile-size 8 --resume", &output), 0) << output;
   expect_same_pixels(reference, out);
+}
+
+// The CPU time `pid` has used, in clock ticks; -1 once it is gone.
+long cpu_ticks(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string field;
+  long ticks = 0;
+  for (int i = 1; i <= 15 && stat >> field; ++i)
+    if (i == 14 || i == 15) ticks += std::stol(field);  // utime, stime (comm has no spaces here)
+  return stat ? ticks : -1;
+}
+
+// Issue 43: a rank stopped after its last tile left the image written and mpirun waiting for ever
+// in MPI_Finalize. One work item, taken by rank 0's own workers, so rank 1 finishes at once and
+// waits while rank 0 renders; stopped then, the job still ends within the rank timeout, non-zero,
+// saying why, with the image written. (A test deadline kills the job rather than hang.)
+TEST(MpiJob, RankStoppedAfterItsLastTileEndsTheJobWithinTheRankTimeout) {
+  const auto dir = test::scratch_dir();
+  const auto scene = test::write_file("scene.yaml", R"(rtpro: 1
+camera: {position: [0, 1.5, 6], look_at: [0, 0.5, 0], fov: 40, resolution: [12, 12]}
+render: {spp: 65536, max_depth: 8, seed: 9, sampler: stratified, integrator: path}
+lights: [{type: point, position: [4, 6, 5], intensity: 1}]
+world:
+  - {type: sphere, center: [0, -1000, 0], radius: 1000}
+  - {type: sphere, center: [0, 0.5, 0], radius: 0.7}
+)");
+  const auto out = dir / "out.exr", log = dir / "job.log";
+  const pid_t job = start_job(2, scene, out, {"--rank-timeout", "2"}, log, "16");
+  ASSERT_GE(job, 0);
+  // Rank 1 is idle once its CPU time stops growing: it has its (empty) share and waits for rank 0.
+  int status = 0;
+  pid_t victim = 0;
+  long last = -1;
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!victim && waitpid(job, &status, WNOHANG) == 0 && std::chrono::steady_clock::now() < give_up) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));
+    const pid_t rank1 = rank_process(job, 1);
+    const long ticks = rank1 ? cpu_ticks(rank1) : -1;
+    if (ticks > 0 && last > 0 && ticks - last <= 1 && kill(rank1, SIGSTOP) == 0) victim = rank1;
+    last = ticks;
+  }
+  ASSERT_TRUE(victim) << "the job ended before rank 1 could be stopped";
+  const auto stopped = std::chrono::steady_clock::now();
+  const auto deadline = stopped + std::chrono::seconds(30);
+  while (waitpid(job, &status, WNOHANG) == 0 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  const bool hung = std::chrono::steady_clock::now() >= deadline;
+  if (hung) {
+    if (const pid_t leader = rank_process(job, 0)) kill(leader, SIGKILL);
+    kill(job, SIGKILL);
+    waitpid(job, &status, 0);
+  }
+  kill(victim, SIGKILL);  // if mpirun left it behind
+  ASSERT_FALSE(hung) << "the job waited for the stopped rank";
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_NE(WEXITSTATUS(status), 0);
+  const std::string messages = test::read_file(log);
+  EXPECT_NE(messages.find("the end of the MPI job (MPI_Finalize) waited 2 s"), std::string::npos) << messages;
+  EXPECT_EQ(read_image(out).width, 12);
 }
 
 }  // namespace mpi_job_test
