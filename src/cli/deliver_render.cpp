@@ -1,5 +1,7 @@
 #include "deliver_render.h"
 
+#include "non_finite_pixels.h"
+
 #include "output_target.h"
 #include "path_controls.h"
 #include "progress.h"
@@ -114,6 +116,8 @@ Image finished_image(const RenderRequest& request, RenderResult& result, RenderS
     log.verbose("denoised in " + std::to_string(stats.denoise_seconds) + " s");
   }
   apply_exposure(image, request.exposure);
+  if (const auto warning = non_finite_pixels_warning(image))
+    log.warning(*warning + " and written as they are: a radiance in the scene is too large for 32-bit floats");
   return image;
 }
 

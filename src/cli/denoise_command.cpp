@@ -10,8 +10,12 @@
 #include "thread_count.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/printable_text.h"
+#include "memory_option.h"
+#include "non_finite_pixels.h"
+#include "rtpro/core/memory_budget.h"
 #include "rtpro/denoise/denoise.h"
 #include "rtpro/image/image_io.h"
+#include "rtpro/image/image_size.h"
 #include "rtpro/image/output_check.h"
 
 #include <tbb/global_control.h>
@@ -32,6 +36,7 @@ struct DenoiseCommandOptions {
   std::string output;
   std::optional<int> threads;
   DenoiseSettings settings;
+  std::string max_memory_mb;  // as typed: see memory_option.h
   bool quiet = false;
 };
 
@@ -50,6 +55,20 @@ std::string seconds_text(double seconds) {
   return text;
 }
 
+// Refused from the input's header, before a pixel is decoded: a small compressed file can declare
+// an image whose denoising needs tens of gigabytes.
+void check_denoise_memory(const std::filesystem::path& input, const DenoiseSettings& settings,
+                          const MemoryBudget& budget) {
+  const ImageSize size = read_image_size(input);
+  const std::uint64_t bytes = denoise_peak_bytes(size.width, size.height, size.channels, settings);
+  if (bytes <= budget.bytes) return;
+  throw InputError(SourceLocation{input.string()},
+                   "denoising this " + std::to_string(size.width) + "x" + std::to_string(size.height) + " image of " +
+                       std::to_string(size.channels) + " channels would need an estimated " + format_bytes(bytes) +
+                       ", more than the memory budget of " + format_bytes(budget.bytes) + " (" + budget.source +
+                       "); raise the budget with --max-memory MiB");
+}
+
 int run_denoise(const DenoiseCommandOptions& o) {
   const int threads = worker_thread_count(o.threads);
   const std::filesystem::path input = o.input, output = o.output;
@@ -59,7 +78,12 @@ int run_denoise(const DenoiseCommandOptions& o) {
   tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
   const auto start = std::chrono::steady_clock::now();
-  Image noisy = read_image(input);
+  const MemoryBudget budget = parse_memory_budget(o.max_memory_mb);
+  check_denoise_memory(input, o.settings, budget);
+  Image noisy = read_image(input, budget.bytes);
+  if (const auto warning = non_finite_pixels_warning(noisy); warning && !o.quiet)
+    std::cerr << "rtpro: warning: " << input.string() << ": " << *warning
+              << "; the denoiser cannot use them and their neighbours come out wrong\n";
   DenoiseReport report;
   Image denoised;
   try {
@@ -112,6 +136,9 @@ void add_denoise_command(CLI::App& app, Action& action) {
                   "Leave out pixels this many times further from their neighbours than noise explains (0: keep all)")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
+  cmd->add_option("--max-memory", o->max_memory_mb,
+                  "Memory budget in MiB, checked against an estimate from the input's header before it is read (0: "
+                  "no limit; default: the smaller of 4096 and the available memory)");
   cmd->add_flag("-q,--quiet", o->quiet, "Print only errors");
   cmd->callback([o, &action] { action = [o] { return run_denoise(*o); }; });
 }

@@ -39,6 +39,9 @@ nlohmann::json cost_json(const RenderCost& cost, const MemoryBudget& budget) {
           {"image_bytes", cost.image_bytes},
           {"instance_bytes", cost.instance_bytes},
           {"mesh_bytes", cost.mesh_bytes},
+          {"environment_width", cost.environment_width},
+          {"environment_height", cost.environment_height},
+          {"environment_bytes", cost.environment_bytes},
           {"total_bytes", cost.total_bytes},
           {"budget_bytes", budget.bytes},
           {"budget", budget.source}};
@@ -189,8 +192,9 @@ void print_text(const std::string& file, const RenderScene& scene, const SceneSu
 void print_cost(const RenderCost& cost, const MemoryBudget& budget) {
   std::cout << "estimate     " << format_bytes(cost.total_bytes) << " before the BVH: image "
             << format_bytes(cost.image_bytes) << ", " << cost.flattened_instances << " instances "
-            << format_bytes(cost.instance_bytes) << ", meshes " << format_bytes(cost.mesh_bytes) << "; budget "
-            << format_bytes(budget.bytes) << " (" << budget.source << ")\n"
+            << format_bytes(cost.instance_bytes) << ", meshes " << format_bytes(cost.mesh_bytes) << ", environment map "
+            << format_bytes(cost.environment_bytes) << "; budget " << format_bytes(budget.bytes) << " ("
+            << budget.source << ")\n"
             << "camera rays  " << cost.samples << " (pixels x spp)\n";
 }
 

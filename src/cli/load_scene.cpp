@@ -3,6 +3,8 @@
 #include "pixel_region_option.h"
 #include "rtpro/core/memory_budget.h"
 #include "rtpro/scene/scene_lighting.h"
+#include "rtpro/image/image_size.h"
+#include "rtpro/render/environment_light.h"
 
 namespace rtpro::cli {
 
@@ -15,6 +17,14 @@ void release_loaded_models(SceneDescription& description) {
   for (GltfDesc& gltf : description.world.gltfs) gltf.loaded.reset();
 }
 
+// The environment's image, from its header: a small run-length encoded file can declare gigabytes.
+void add_environment_image(RenderCost& cost, const SceneDescription& scene) {
+  if (!scene.environment || scene.environment->file.empty()) return;
+  const ImageSize size = read_image_size(scene.environment->file);
+  add_environment_cost(cost, scene.environment->file, size.width, size.height,
+                       EnvironmentLight::peak_bytes(size.width, size.height, size.channels));
+}
+
 }  // namespace
 
 LoadedScene load_scene(const SceneLoad& load, Log* log) {
@@ -24,6 +34,7 @@ LoadedScene load_scene(const SceneLoad& load, Log* log) {
   check_region_fits(load.region, load.region_text, camera.width, camera.height);
   // Refused before anything large is allocated: image buffers, flattened instances, meshes.
   loaded.cost = estimate_render_cost(loaded.description, load.extra_channels);
+  add_environment_image(loaded.cost, loaded.description);
   check_render_cost(loaded.cost, load.memory.bytes, load.memory.source, load.file);
   if (log)
     log->verbose("estimated memory: " + format_bytes(loaded.cost.total_bytes) + " of a budget of " +

@@ -33,6 +33,7 @@ SceneImages open_scene_images(const RenderScene& scene, std::uint64_t memory_byt
     if (!scene.environment->file.empty()) {
       const auto read_start = std::chrono::steady_clock::now();
       image = read_image(scene.environment->file, memory_bytes);
+      check_environment_radiance(image, *scene.environment);
       log.verbose("read " + scene.environment->file.string() + " (" + std::to_string(image.width) + "x" +
                   std::to_string(image.height) + ") in " + std::to_string(seconds_since(read_start)) + " s");
     }

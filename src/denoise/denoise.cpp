@@ -3,6 +3,7 @@
 #include "denoise_buffers.h"
 #include "regression_filter.h"
 #include "rtpro/core/error.h"
+#include "rtpro/core/memory_budget.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,6 +39,21 @@ Image denoise(const Image& image, const DenoiseSettings& settings, DenoiseReport
   const DenoiseBuffers buffers = gather_denoise_buffers(image, settings, regression_filter_pad(settings));
   if (report) *report = buffers.report;
   return regression_filter(buffers, settings);
+}
+
+std::uint64_t denoise_peak_bytes(std::uint64_t width, std::uint64_t height, std::uint64_t channels,
+                                 const DenoiseSettings& settings) {
+  constexpr std::uint64_t kPlanes = 3 + 3 + 7 + 2 + 1;  // DenoiseBuffers
+  const auto pad = static_cast<std::uint64_t>(std::max(regression_filter_pad(settings), 0));
+  const std::uint64_t padded_pixels =
+      saturating_multiply(saturating_add(width, 2 * pad), saturating_add(height, 2 * pad));
+  const std::uint64_t pixels = saturating_multiply(width, height);
+  // The noisy image and the denoised RGB, with either the planes or the merged layers (the noisy
+  // channels and three more) beside them, whichever is larger.
+  const std::uint64_t images = saturating_multiply(pixels, saturating_add(channels, 3));
+  const std::uint64_t planes = saturating_multiply(padded_pixels, kPlanes);
+  const std::uint64_t merged = saturating_multiply(pixels, saturating_add(channels, 3));
+  return saturating_multiply(saturating_add(images, std::max(planes, merged)), sizeof(float));
 }
 
 Image with_denoised_colour(const Image& noisy, const Image& denoised) {

@@ -7,6 +7,7 @@
 #include "image_metadata.h"
 #include "pixel_encoding.h"
 #include "image_format_sniff.h"
+#include "image_file_check.h"
 #include "image_header_check.h"
 #include "image_read_budget.h"
 #include "rtpro/core/error.h"
@@ -279,11 +280,7 @@ Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
 Image read_image_counting(const std::filesystem::path& file, std::uint64_t max_bytes,
                           std::uint64_t extra_bytes_per_pixel, const std::string& extra_purpose) {
   const SourceLocation where{file.string()};
-  std::error_code error;
-  const auto status = std::filesystem::status(file, error);
-  if (!std::filesystem::exists(status)) throw InputError(where, "no such image file");
-  if (!std::filesystem::is_regular_file(status))
-    throw InputError(where, "not a regular file (a FIFO, device or folder is never read as an image)");
+  require_image_file(file);
   // The caller's budget (render's --max-memory or its default) or, without one, the default here.
   const std::string budget =
       max_bytes == 0 ? " (the smaller of " + format_bytes(kDefaultMemoryBudgetCap) + " and the available memory)"

@@ -1,6 +1,6 @@
 // The executable's side of the image layer (see rtpro/image/image_layer.h): finds and loads
 // librtpro_image_oiio.so once, on a background thread or on first use, and forwards the
-// OpenImageIO-backed calls of image_io.h, image_compare.h and diff_image.h to it. EXR and PNG
+// OpenImageIO-backed calls of image_io.h, image_size.h, image_compare.h and diff_image.h to it. EXR and PNG
 // files are written here without it (direct_output.h).
 #include "rtpro/image/image_layer.h"
 
@@ -128,6 +128,8 @@ void write_image(const std::filesystem::path& file, const Image& image, const Im
 Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
   return image_layer().read_image(file, max_bytes);
 }
+
+ImageSize read_image_size(const std::filesystem::path& file) { return image_layer().read_image_size(file); }
 
 ImageComparison compare_images(const Image& reference, const Image& test, const CompareThresholds& thresholds) {
   return image_layer().compare_images(reference, test, thresholds);

@@ -6,6 +6,7 @@
 #include "rtpro/image/image.h"
 #include "rtpro/image/image_compare.h"
 #include "rtpro/image/image_io.h"
+#include "rtpro/image/image_size.h"
 #include "rtpro/image/texture_lookup.h"
 
 #include <cstdint>
@@ -14,7 +15,7 @@
 namespace rtpro {
 
 // Raise whenever a call is added, removed or changes its signature.
-inline constexpr int kImageLayerAbiVersion = 5;
+inline constexpr int kImageLayerAbiVersion = 6;
 inline constexpr const char* kImageLayerEntryPoint = "rtpro_image_layer";
 inline constexpr const char* kImageLayerFileName = "librtpro_image_oiio.so";
 
@@ -23,6 +24,7 @@ struct ImageLayerApi {
   const char* rtpro_version;
   void (*write_image)(const std::filesystem::path&, const Image&, const ImageWriteOptions&);
   Image (*read_image)(const std::filesystem::path&, std::uint64_t);
+  ImageSize (*read_image_size)(const std::filesystem::path&);
   ImageComparison (*compare_images)(const Image&, const Image&, const CompareThresholds&);
   void (*write_diff_image)(const std::filesystem::path&, const Image&, const Image&, float);
   // Owned by the caller.

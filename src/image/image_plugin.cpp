@@ -15,8 +15,8 @@ rtpro::TextureLookup* open_textures(const rtpro::TextureSource* sources, std::si
 
 extern "C" __attribute__((visibility("default"))) const rtpro::ImageLayerApi* rtpro_image_layer() {
   static const rtpro::ImageLayerApi api{
-      rtpro::kImageLayerAbiVersion, RTPRO_VERSION,  &rtpro::write_image, &rtpro::read_image, &rtpro::compare_images,
-      &rtpro::write_diff_image,     &open_textures,
+      rtpro::kImageLayerAbiVersion, RTPRO_VERSION,          &rtpro::write_image,      &rtpro::read_image,
+      &rtpro::read_image_size,      &rtpro::compare_images, &rtpro::write_diff_image, &open_textures,
   };
   return &api;
 }

@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -84,6 +85,14 @@ struct DenoiseReport {
 // settings out of
 // range (window_radius 1 to 32, patch_radius 0 to 8, tolerances 0.001 to 1000, threshold >= 0).
 Image denoise(const Image& image, const DenoiseSettings& settings = {}, DenoiseReport* report = nullptr);
+
+// What `rtpro denoise` holds at its peak for a width × height image of `channels` channels,
+// estimated from the file's header before anything is read: the image's floats, the denoiser's
+// padded planes (colour, variance, seven features, two depth slopes, fireflies), its RGB output
+// and the output file's layers beside the noisy image (a 1.6 MB EXR of 16384x16384 pixels holds
+// 30 GiB of them). Deliberately on the high side.
+std::uint64_t denoise_peak_bytes(std::uint64_t width, std::uint64_t height, std::uint64_t channels,
+                                 const DenoiseSettings& settings = {});
 
 // `noisy` with its R,G,B replaced by `denoised` (an RGB image of the same size) and the noisy
 // colour kept as noisy.R/G/B (or kept as it was, when `noisy` already holds those); every other

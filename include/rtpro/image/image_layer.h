@@ -1,7 +1,7 @@
 #pragma once
 // How the rtpro executable reaches OpenImageIO. Debian's OpenImageIO pulls in some 260 shared
 // libraries that take about half a second and 120 MB to load, so the executable does not link it:
-// write_image, read_image, compare_images and write_diff_image go through librtpro_image_oiio.so,
+// write_image, read_image, read_image_size, compare_images and write_diff_image go through librtpro_image_oiio.so,
 // a plugin loaded from the executable's own folder on first use. Everything else in this module
 // (output checks, OpenColorIO colour configs, writing EXR files through OpenEXR and PNG files
 // through libpng) works without it. Tests and other programs that link

@@ -5,6 +5,7 @@
 #include "rtpro/render/sampler.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -51,8 +52,9 @@ class Distribution2D {
   float pdf(float u, float v) const;  // u, v in [0, 1]; clamped to the cells
   int width() const { return width_; }
   int height() const { return height_; }
-  // Bytes held, for memory figures.
+  // Bytes held, for memory figures; and what a distribution of width × height cells holds.
   std::size_t bytes() const;
+  static std::uint64_t bytes_for(std::uint64_t width, std::uint64_t height);
 
  private:
   int width_ = 0, height_ = 0;

@@ -16,10 +16,16 @@
 #include "rtpro/scene/render_scene.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
 namespace rtpro {
+
+// Throws InputError naming the environment's file and the first pixel (from the top left) whose
+// radiance, its value × colour × intensity, is not finite or is above kMaxEnvironmentRadiance,
+// with how many such pixels there are. Call it on the image as read, before the light is built.
+void check_environment_radiance(const Image& image, const Environment& environment);
 
 class EnvironmentLight {
  public:
@@ -46,6 +52,12 @@ class EnvironmentLight {
   float mean_radiance() const { return mean_radiance_; }
   // Bytes held (image and distribution).
   std::size_t bytes() const;
+  // Bytes that reading a width × height image of `channels` channels and building the light from
+  // it hold at their peak, counted from the file's header before it is read: the decoded floats
+  // with the light's copy beside them, then the copy with the luminance table and the sampling
+  // distribution; 24 bytes a pixel for RGB. A file can be far smaller: a run-length encoded .hdr
+  // of one colour compresses about 250 to 1 (17 MB of file declared 16384x16384 pixels, 6.4 GB).
+  static std::uint64_t peak_bytes(std::uint64_t width, std::uint64_t height, std::uint64_t channels);
 
  private:
   struct ImageCoordinates {

@@ -4,7 +4,9 @@
 // rays they block. Group 0 is every object the file does not link: lit by every light, casting
 // every light's shadows. Cycles' receiver and blocker sets, Arnold's light and shadow groups.
 // Only the scene's `lights:` are linked; emissive surfaces and the environment reach everything.
+#include <cstddef>
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 namespace rtpro {
@@ -45,7 +47,12 @@ struct LightLinks {
   bool shadow_linked(std::uint32_t light) const { return !groups.empty() && shadows_pass_some[light] != 0; }
 
   // The group with these flags, added unless one has them already (group 0 first: every light).
+  // Found by hashing the flags: comparing each new group with every other made 3,000 groups of
+  // 3,000 lights take seconds.
   std::uint32_t group_with(const LinkGroup& group);
+
+ private:
+  std::unordered_multimap<std::size_t, std::uint32_t> groups_by_hash_;
 };
 
 }  // namespace rtpro

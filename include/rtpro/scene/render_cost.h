@@ -1,7 +1,8 @@
 #pragma once
 // What a render will cost, estimated from the scene description before anything large is
 // allocated: instances multiplied out through nesting (without flattening them), image buffers
-// from resolution × channels, and mesh memory from the mesh files' sizes. `rtpro render` and
+// from resolution × channels, mesh memory from the mesh files' sizes, and the environment's image
+// from its header. `rtpro render` and
 // `rtpro info` check it against the memory budget (--max-memory, else
 // default_memory_budget()), so a kilobyte of YAML asking for gigabytes is refused in milliseconds.
 #include "rtpro/scene/description.h"
@@ -16,12 +17,15 @@ namespace rtpro {
 struct RenderCost {
   std::uint64_t flattened_instances = 0;  // instances after flattening nested ones (saturating)
   std::uint64_t pixels = 0;
-  int channels = 3;                  // colour plus AOV channels
-  std::uint64_t samples = 0;         // camera samples: pixels × spp
-  std::uint64_t image_bytes = 0;     // film plus one output copy
-  std::uint64_t instance_bytes = 0;  // rtpro's and Embree's per-instance records
-  std::uint64_t mesh_bytes = 0;      // loaded meshes and their BVHs, from the file sizes
-  std::uint64_t total_bytes = 0;     // the sum, saturating
+  int channels = 3;                                             // colour plus AOV channels
+  std::uint64_t samples = 0;                                    // camera samples: pixels × spp
+  std::uint64_t image_bytes = 0;                                // film plus one output copy
+  std::uint64_t instance_bytes = 0;                             // rtpro's and Embree's per-instance records
+  std::uint64_t mesh_bytes = 0;                                 // loaded meshes and their BVHs, from the file sizes
+  std::filesystem::path environment_file;                       // the environment's image, if any
+  std::uint64_t environment_width = 0, environment_height = 0;  // as its header declares them
+  std::uint64_t environment_bytes = 0;  // that image read and made a light (see add_environment_cost)
+  std::uint64_t total_bytes = 0;        // the sum, saturating
 };
 
 // Rough bytes per flattened instance (two 3×4 transforms and the geometry record in rtpro, an
@@ -51,6 +55,12 @@ std::vector<std::uint64_t> flattened_instances_per_object(
 
 // `extra_channels`: AOV channels beyond R, G, B.
 RenderCost estimate_render_cost(const SceneDescription& scene, int extra_channels = 0);
+
+// Counts the environment's image `file`: its size as its header declares it, and `bytes`, what
+// reading it and building the light from it hold at their peak. The image layer and the light know
+// those, so the caller (the command that reads the scene) adds them to estimate_render_cost's.
+void add_environment_cost(RenderCost& cost, const std::filesystem::path& file, std::uint64_t width,
+                          std::uint64_t height, std::uint64_t bytes);
 
 // Throws InputError at the scene file when the estimate exceeds `budget_bytes`, naming the
 // largest parts and --max-memory. `budget_source` says where the budget came from, e.g.

@@ -85,6 +85,11 @@ inline const Dielectric* interior_of(const Material& material) {
 
 // Light from infinitely far away in every direction a ray escapes along: a latitude-longitude
 // image (read by the caller, see render/environment_light.h) or, without a file, a constant.
+// The most radiance an environment may send along any direction (a pixel's value × colour ×
+// intensity, per channel): far above any sky or sun, and far enough below the 32-bit float's
+// 3.4e38 that sums of samples and their squares stay finite (3e38 made every pixel infinite).
+inline constexpr float kMaxEnvironmentRadiance = 1e12f;
+
 struct Environment {
   std::filesystem::path file;  // empty: a constant environment of radiance `scale`
   Color scale{1.0f};           // colour × intensity, multiplying the image's values

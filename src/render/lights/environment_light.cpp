@@ -1,11 +1,14 @@
 #include "rtpro/render/environment_light.h"
 
 #include "rtpro/core/math_constants.h"
+#include "rtpro/core/error.h"
+#include "rtpro/core/memory_budget.h"
 
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 
 namespace rtpro {
@@ -23,6 +26,33 @@ float channel_average(const Color& c) { return (c.x + c.y + c.z) * (1.0f / 3.0f)
 constexpr float kCellWeights[3] = {0.125f, 0.75f, 0.125f};
 
 }  // namespace
+
+void check_environment_radiance(const Image& image, const Environment& environment) {
+  const std::size_t channels = static_cast<std::size_t>(std::max(image.channel_count(), 1));
+  const std::size_t colour_channels = std::min<std::size_t>(channels, 3);
+  const float scale[3] = {environment.scale.x, environment.scale.y, environment.scale.z};
+  std::size_t bad = 0, first = 0;
+  float first_value = 0.0f;
+  for (std::size_t i = 0; i < image.data.size(); ++i) {
+    const std::size_t channel = i % channels;
+    if (channel >= colour_channels) continue;
+    const float value = image.data[i];
+    // Negative values read as 0 (EXR filtering leaves small ones); the scale is 0 or more.
+    const float radiance = value > 0.0f ? value * (colour_channels == 1 ? scale[1] : scale[channel]) : 0.0f;
+    if (std::isfinite(value) && radiance <= kMaxEnvironmentRadiance) continue;
+    if (bad++ == 0) {
+      first = i / channels;
+      first_value = value;
+    }
+  }
+  if (bad == 0) return;
+  const auto width = static_cast<std::size_t>(std::max(image.width, 1));
+  throw InputError(SourceLocation{environment.file.string()},
+                   "pixel (" + std::to_string(first % width) + ", " + std::to_string(first / width) + ") is " +
+                       std::to_string(first_value) +
+                       " (times the environment's color x intensity): a radiance that is not finite or above 1e12; " +
+                       std::to_string(bad) + " values in all");
+}
 
 EnvironmentLight::EnvironmentLight(const Environment& environment, Image image)
     : to_world_(environment.to_world), to_local_(inverse(environment.to_world).value_or(Affine::identity())),
@@ -151,5 +181,17 @@ float EnvironmentLight::pdf(const Vec3& direction) const {
 }
 
 std::size_t EnvironmentLight::bytes() const { return texels_.size() * sizeof(Color) + distribution_.bytes(); }
+
+std::uint64_t EnvironmentLight::peak_bytes(std::uint64_t width, std::uint64_t height, std::uint64_t channels) {
+  const std::uint64_t pixels = saturating_multiply(width, height);
+  // The constructor's two phases: the file's floats beside the texels; then the texels, the
+  // luminance table and, once the filtered copy is freed, the distribution built from the table.
+  const std::uint64_t reading =
+      saturating_multiply(pixels, saturating_add(saturating_multiply(channels, sizeof(float)), sizeof(Color)));
+  const std::uint64_t filtering = saturating_multiply(pixels, sizeof(Color) + 2 * sizeof(float));
+  const std::uint64_t sampling = saturating_add(saturating_multiply(pixels, sizeof(Color) + sizeof(float)),
+                                                Distribution2D::bytes_for(width, height));
+  return std::max({reading, filtering, sampling});
+}
 
 }  // namespace rtpro

@@ -1,11 +1,15 @@
 #include "light_set.h"
 
 #include "point_light_batch.h"
+#include "rtpro/core/error.h"
 
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <stdexcept>
+#include <string>
+#include <string_view>
+#include <unordered_map>
 
 namespace rtpro {
 
@@ -36,18 +40,38 @@ LightSet::LightSet(const RenderScene& scene, const EnvironmentLight* environment
 }
 
 // One picker per distinct set of lights that illuminate a link group: every light but the scene
-// lights the group is not linked to, in the set's order.
+// lights the group is not linked to, in the set's order. Groups lit alike are found by hashing
+// their flags (comparing each group with every earlier one was cubic in the scene's size), and the
+// pickers' total size is checked before any is built: each holds a tree over all its lights, so
+// 3,000 sets of "every light but one" among 3,000 lights asked for 9 million entries and 2.2 GB
+// (about 250 bytes an entry: the limit, 2^21 entries, is about 500 MB).
 void LightSet::link(const RenderScene& scene, std::span<const float> power,
                     std::span<const std::optional<LightBounds>> bounds) {
   const std::vector<LinkGroup>& groups = scene.links.groups;
   linked_of_group_.assign(std::max<std::size_t>(groups.size(), 1), 0);
+  std::unordered_map<std::string_view, std::uint32_t> set_of_flags;
+  std::vector<std::uint32_t> first_group_of_set;
+  std::uint64_t entries = 0;
+  const std::size_t unlinked = lights_.size() - scene.lights.size();  // emitters and the environment
   for (std::uint32_t g = 0; g < linked_of_group_.size(); ++g) {
-    std::uint32_t same = 0;
-    while (same < g && groups[same].illuminated_by != groups[g].illuminated_by) ++same;
-    if (same < g) {
-      linked_of_group_[g] = linked_of_group_[same];
-      continue;
-    }
+    const std::string_view flags =
+        groups.empty() ? std::string_view()
+                       : std::string_view(reinterpret_cast<const char*>(groups[g].illuminated_by.data()),
+                                          groups[g].illuminated_by.size());
+    const auto [set, added] = set_of_flags.try_emplace(flags, static_cast<std::uint32_t>(first_group_of_set.size()));
+    linked_of_group_[g] = set->second;
+    if (!added) continue;
+    first_group_of_set.push_back(g);
+    entries += unlinked + static_cast<std::uint64_t>(std::count(flags.begin(), flags.end(), 1));
+  }
+  if (entries > kMaxLinkedLightEntries)
+    throw InputError("light linking: " + std::to_string(first_group_of_set.size()) +
+                     " distinct sets of illuminating lights sample " + std::to_string(entries) +
+                     " lights in all (each set a light tree of its own over its scene lights and the " +
+                     std::to_string(unlinked) + " emissive surfaces and environment), more than the limit of " +
+                     std::to_string(kMaxLinkedLightEntries) +
+                     "; give objects fewer distinct sets of lights (link an instance of many objects once)");
+  for (const std::uint32_t g : first_group_of_set) {
     std::vector<std::uint32_t> members;
     Linked linked;
     for (std::uint32_t i = 0; i < lights_.size(); ++i) {
@@ -56,7 +80,6 @@ void LightSet::link(const RenderScene& scene, std::span<const float> power,
       if (met_by_rays(lights_[i])) linked.analytic.push_back(i);
     }
     linked.picker = LightPicker(scene.render.light_sampler, members, power, bounds);
-    linked_of_group_[g] = static_cast<std::uint32_t>(linked_.size());
     linked_.push_back(std::move(linked));
   }
 }

@@ -32,9 +32,14 @@
 
 namespace rtpro {
 
+// The most lights all link groups' light pickers may hold together (each distinct set of
+// illuminating lights one picker over its members); a scene above it is refused (scenes/FORMAT.md).
+inline constexpr std::uint64_t kMaxLinkedLightEntries = std::uint64_t{1} << 21;
+
 class LightSet {
  public:
-  // `environment`: the scene's, built from its image (required when the scene has one).
+  // `environment`: the scene's, built from its image (required when the scene has one). Throws
+  // InputError when light linking asks for more than kMaxLinkedLightEntries.
   explicit LightSet(const RenderScene& scene, const EnvironmentLight* environment = nullptr);
 
   // No light illuminates the group's objects.

@@ -1,5 +1,7 @@
 #include "rtpro/render/distribution_2d.h"
 
+#include "rtpro/core/memory_budget.h"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -77,8 +79,16 @@ float Distribution2D::pdf(float u, float v) const {
 }
 
 std::size_t Distribution2D::bytes() const {
-  return (static_cast<std::size_t>(width_) * 2 + 1) * static_cast<std::size_t>(height_) * sizeof(float) +
-         static_cast<std::size_t>(height_) * (sizeof(Distribution1D) + 2 * sizeof(float));
+  return static_cast<std::size_t>(bytes_for(static_cast<std::uint64_t>(width_), static_cast<std::uint64_t>(height_)));
+}
+
+// Per row: the values and cdf (width + 1 entries) of its distribution, its object, and the
+// marginal's value and cdf entry.
+std::uint64_t Distribution2D::bytes_for(std::uint64_t width, std::uint64_t height) {
+  const std::uint64_t per_row =
+      saturating_add(saturating_multiply(saturating_add(saturating_multiply(width, 2), 1), sizeof(float)),
+                     sizeof(Distribution1D) + 2 * sizeof(float));
+  return saturating_multiply(per_row, height);
 }
 
 }  // namespace rtpro

@@ -6,6 +6,7 @@
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
 #include "rtpro/core/overloaded.h"
+#include "rtpro/core/printable_text.h"
 
 #include <algorithm>
 #include <map>
@@ -128,6 +129,15 @@ RenderCost estimate_render_cost(const SceneDescription& scene, int extra_channel
   return cost;
 }
 
+void add_environment_cost(RenderCost& cost, const std::filesystem::path& file, std::uint64_t width,
+                          std::uint64_t height, std::uint64_t bytes) {
+  cost.environment_file = file;
+  cost.environment_width = width;
+  cost.environment_height = height;
+  cost.environment_bytes = bytes;
+  cost.total_bytes = saturating_add(cost.total_bytes, bytes);
+}
+
 void check_render_cost(const RenderCost& cost, std::uint64_t budget_bytes, const std::string& budget_source,
                        const std::filesystem::path& scene_file) {
   if (cost.total_bytes <= budget_bytes) return;
@@ -137,10 +147,15 @@ void check_render_cost(const RenderCost& cost, std::uint64_t budget_bytes, const
     parts += ", instances " + format_bytes(cost.instance_bytes) + " (" + std::to_string(cost.flattened_instances) +
              " after flattening nested instances)";
   if (cost.mesh_bytes > 0) parts += ", meshes " + format_bytes(cost.mesh_bytes);
+  if (cost.environment_bytes > 0)
+    parts += ", environment map " + format_bytes(cost.environment_bytes) + " (" +
+             printable_text(cost.environment_file.string()) + ", " + std::to_string(cost.environment_width) + "x" +
+             std::to_string(cost.environment_height) + " pixels)";
   throw InputError(SourceLocation{scene_file.string()},
                    "the render would need an estimated " + format_bytes(cost.total_bytes) + " (" + parts +
                        "), more than the memory budget of " + format_bytes(budget_bytes) + " (" + budget_source +
-                       "); lower the resolution or the instancing, or raise the budget with --max-memory MiB");
+                       "); lower the resolution, the instancing or the environment map's size, or raise the budget "
+                       "with --max-memory MiB");
 }
 
 }  // namespace rtpro

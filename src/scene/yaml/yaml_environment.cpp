@@ -4,7 +4,9 @@
 
 #include "yaml_reader.h"
 #include "yaml_transform.h"
+#include "rtpro/scene/render_scene.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <system_error>
@@ -51,6 +53,10 @@ std::optional<EnvironmentDesc> read_environment(const YamlNode* node, const std:
       fail_at(*intensity, environment.field("intensity") + " must be 0 or more and finite, got " +
                               std::string(intensity->scalar()));
     desc.intensity = static_cast<float>(value);
+    const float brightest = std::max({desc.color.x, desc.color.y, desc.color.z}) * desc.intensity;
+    if (desc.file.empty() && !(brightest <= kMaxEnvironmentRadiance))
+      fail_at(*intensity, environment.field("intensity") + ": color x intensity is " + std::to_string(brightest) +
+                              ", more than the most radiance an environment may have (1e12)");
   }
   if (const YamlNode* rotation = environment.optional("rotation"))
     desc.rotation = read_rotation(*rotation, environment.field("rotation"));

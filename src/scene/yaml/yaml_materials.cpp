@@ -3,6 +3,7 @@
 #include "rtpro/core/special_file_kind.h"
 
 #include "yaml_reader.h"
+#include "rtpro/core/overloaded.h"
 
 #include <algorithm>
 #include <cmath>
@@ -143,6 +144,23 @@ void read_emission(const MappingReader& material, MaterialDesc& desc) {
         read_keyword<bool>(*sides, material.field("emission_sides"), {{"front", false}, {"both", true}});
 }
 
+// Whether a kind's `color` is a reflectance, from 0 to 1 in each channel: above 1 a surface
+// reflects more light than it receives and a path's weight grows with every bounce (pixels near
+// 1e33). Phong's colour is not held to it (Whitted and POV-Ray scenes brighten a pigment above 1),
+// nor the dielectric's, which is unused.
+bool colour_is_reflectance(const MaterialParams& kind) {
+  return std::visit(
+      Overloaded{[](const PhongParams&) { return false; }, [](const DiffuseParams&) { return true; },
+                 [](const ConductorParams&) { return true; }, [](const DielectricParams&) { return false; },
+                 [](const PrincipledParams&) { return true; }},
+      kind);
+}
+
+void require_reflectance(const YamlNode& node, const std::string& field, const Color& colour) {
+  if (max_component(colour) > 1.0f)
+    fail_at(node, field + " is a reflectance: each channel from 0 to 1 (light above 1 is an emission)");
+}
+
 // Read over `desc`: the keys the entry gives replace its values, the others stay (a fresh material's
 // defaults, or a model's material). A `type:` of another kind starts that kind from its defaults.
 MaterialDesc read_material(const std::string& name, const YamlNode& node, const std::filesystem::path& folder,
@@ -166,6 +184,13 @@ MaterialDesc read_material(const std::string& name, const YamlNode& node, const 
       desc.checker = read_checker(*color, material.field("color"));
     } else {
       desc.color = read_color(*color, material.field("color"));
+    }
+    if (colour_is_reflectance(desc.params)) {
+      require_reflectance(*color, material.field("color"), desc.color);
+      if (desc.checker) {
+        require_reflectance(*color, material.field("color") + ".colors[0]", desc.checker->even);
+        require_reflectance(*color, material.field("color") + ".colors[1]", desc.checker->odd);
+      }
     }
   }
   return desc;
