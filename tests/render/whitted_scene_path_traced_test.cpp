@@ -3,6 +3,7 @@
 // integrators (scenes/FORMAT.md, "Light units"), and a phong highlight narrows and brightens as its
 // shininess grows. Both backends where an image is rendered.
 #include "rtpro/backend/backend.h"
+#include "rtpro/core/error.h"
 #include "rtpro/render/renderer.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
@@ -95,6 +96,22 @@ TEST_P(WhittedScenePathTraced, LightsMeanTheSameUnderBothIntegrators) {
     EXPECT_NEAR(radiometric.path, 0.5 / std::numbers::pi * irradiance, 2e-3 * irradiance) << light;
     EXPECT_NEAR(radiometric.whitted, radiometric.path, 0.02 * radiometric.path) << light;
   }
+}
+
+// The units are those of the integrator the file itself names, whatever --integrator (an override
+// of render.integrator) renders it with, unless render.light_units says.
+TEST(WhittedScenePathTraced, LightUnitsFollowTheIntegratorTheFileNames) {
+  const auto units = [](const std::string& extra, const std::vector<std::string>& overrides) {
+    const std::string text = "rtpro: 1\ncamera: {position: [0, 0, -4], look_at: [0, 0, 0]}\n" + extra;
+    return parse_scene_text(text, "scene.yaml", overrides).render.light_units;
+  };
+  EXPECT_EQ(units("", {}), LightUnits::kWhitted);
+  EXPECT_EQ(units("", {"render.integrator=path"}), LightUnits::kWhitted);
+  EXPECT_EQ(units("render: {integrator: path}", {"render.integrator=whitted"}), LightUnits::kRadiometric);
+  EXPECT_EQ(units("variables: {i: path}\nrender: {integrator: $i}", {}), LightUnits::kRadiometric);
+  EXPECT_EQ(units("render: {light_units: radiometric}", {}), LightUnits::kRadiometric);
+  EXPECT_EQ(units("render: {integrator: path, light_units: whitted}", {}), LightUnits::kWhitted);
+  EXPECT_THROW(units("render: {light_units: lumens}", {}), InputError);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, WhittedScenePathTraced,
