@@ -22,7 +22,9 @@ Vec3 uniform_direction(std::mt19937& rng) {
 }  // namespace
 
 Material phong_material(const Color& color, float specular, float shininess, float reflectivity) {
-  return {.base_color = color, .model = PhongSurface{}, .whitted = {color, specular, shininess, reflectivity, {}}};
+  return {.base_color = color,
+          .model = PhongSurface{specular, shininess, reflectivity, {}},
+          .whitted = {color, specular, shininess, reflectivity, {}}};
 }
 
 void set_camera(RenderScene& scene, int width, int height) {

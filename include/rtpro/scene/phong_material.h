@@ -27,8 +27,13 @@ struct PhongParams {
   std::optional<Dielectric> glass;
 };
 
-// Under the path integrator: a Lambert surface of the material's colour or, with glass, smooth glass.
+// Under the path integrator (render/bsdf/phong_bsdf.h): the Whitted model's diffuse colour,
+// highlight and mirror as an energy-conserving mix of Lambert, GGX and mirror reflection or, with
+// glass, smooth glass. Without highlight and mirror (the defaults here) it is a Lambert surface.
 struct PhongSurface {
+  float specular = 0.0f;
+  float shininess = 10.0f;
+  float reflectivity = 0.0f;
   std::optional<Dielectric> glass;
 };
 
@@ -37,7 +42,7 @@ inline const char* material_type_name(const PhongParams&) { return "phong"; }
 std::vector<std::string_view> material_keys(const PhongParams&);
 void read_material_params(const MappingReader& material, PhongParams& params);
 inline PhongSurface surface_model_from(const PhongParams& params, const MaterialDesc&, std::vector<TextureImage>&) {
-  return {params.glass};
+  return {params.specular, params.shininess, params.reflectivity, params.glass};
 }
 // It is the Whitted model: `color` is the material's colour.
 inline WhittedMaterial whitted_approximation_of(const PhongParams& params, const MaterialDesc&,

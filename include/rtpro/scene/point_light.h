@@ -18,7 +18,11 @@ struct PointLightDesc {
 
 struct PointLight {
   Vec3 position;
-  Color radiance;  // colour × intensity; `whitted` shades it without distance falloff, `path` over d²
+  Color radiance;  // colour × intensity, in the scene's light units (scene/render_settings.h)
+  // Whether the path integrator divides what arrives by d²: its light set (render/lights/light_set.h)
+  // clears it in a scene of whitted light units. The whitted integrator takes the falloff from the
+  // units alone.
+  bool inverse_square = true;
 };
 
 inline const char* light_type_name(const PointLightDesc&) { return "point"; }

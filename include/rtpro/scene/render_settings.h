@@ -53,6 +53,23 @@ constexpr const char* light_sampler_name(LightSamplerKind kind) {
   return "?";
 }
 
+// What a light's `color` × `intensity` means, the same under either integrator (scenes/FORMAT.md,
+// "Light units"). `whitted` is POV-Ray's reading: a point or spot light does not fall off with
+// distance, and a white diffuse surface facing a light shows its colour × intensity (the whitted
+// integrator's diffuse term is colour × irradiance, without Lambert's 1/π, so the path integrator
+// multiplies every light by π). `radiometric` is pbrt's: W/sr falling off with the square of
+// distance for point and spot lights, irradiance for directional lights, radiance for area
+// lights (the whitted integrator divides what arrives by π).
+enum class LightUnits : std::uint8_t { kWhitted, kRadiometric };
+
+constexpr const char* light_units_name(LightUnits units) {
+  switch (units) {
+    case LightUnits::kWhitted: return "whitted";
+    case LightUnits::kRadiometric: return "radiometric";
+  }
+  return "?";
+}
+
 constexpr const char* integrator_name(Integrator integrator) {
   switch (integrator) {
     case Integrator::kWhitted: return "whitted";
@@ -86,6 +103,10 @@ struct RenderSettings {
   PathSampling path_sampling = PathSampling::kMis;
   SamplerKind sampler = SamplerKind::kStratified;  // the scene parser makes `path` default to sobol
   LightSamplerKind light_sampler = LightSamplerKind::kTree;
+  // The scene parser always sets it (by default from the integrator the file itself names); left
+  // unset, each integrator reads lights in its own units (whitted: LightUnits::kWhitted, path:
+  // kRadiometric), as a scene built in code expects.
+  std::optional<LightUnits> light_units;
   std::uint64_t seed = 0;
   float ambient = 0.2f;
   Color background{0.0f, 0.0f, 0.0f};

@@ -24,10 +24,11 @@ struct SpotLightDesc {
 // the inner cone, none outside the outer one, smoothstep(cos_outer, cos_inner, cos θ) between.
 struct SpotLight {
   Vec3 position;
-  Vec3 axis;        // unit: the direction light travels along
-  Color radiance;   // colour × intensity, on the axis (as a point light's)
-  float cos_inner;  // cosine of the inner cone's half-angle
-  float cos_outer;  // cosine of the outer cone's half-angle, <= cos_inner
+  Vec3 axis;                   // unit: the direction light travels along
+  Color radiance;              // colour × intensity, on the axis (as a point light's)
+  float cos_inner;             // cosine of the inner cone's half-angle
+  float cos_outer;             // cosine of the outer cone's half-angle, <= cos_inner
+  bool inverse_square = true;  // as a point light's (scene/point_light.h)
 
   // The share of `radiance` sent along unit `outward` (from the light): exactly 0 outside the
   // outer cone. Equal cones are a hard edge.

@@ -1,8 +1,7 @@
 #pragma once
 // The closed set of BSDF kinds the path tracer shades with, each a file pair of its own with the
 // members eval, pdf, sample, is_delta and needs_outward_frame, and beside them what the material
-// kind that makes it declares (render/bsdf/bsdf_from.h; a kind without a BSDF of its own, phong,
-// has a file pair for that alone). Registering a kind is its include and, for a BSDF, its
+// kind that makes it declares (render/bsdf/bsdf_from.h). Registering a kind is its include and, for a BSDF, its
 // alternative below; the static_asserts here and in render/bsdf/material_bsdf.h name what it
 // lacks. All directions are in the local shading frame (render/surface/shading_frame.h),
 // conventions in render/bsdf/bsdf_sample.h.
@@ -21,7 +20,7 @@
 
 namespace rtpro {
 
-using Bsdf = std::variant<DiffuseBsdf, ConductorBsdf, DielectricBsdf, PrincipledBsdf>;
+using Bsdf = std::variant<DiffuseBsdf, ConductorBsdf, DielectricBsdf, PrincipledBsdf, PhongBsdf>;
 
 // Every member the dispatch below calls, each by name, so that a BSDF missing one stops the build
 // with what it lacks rather than in the visits that call it.

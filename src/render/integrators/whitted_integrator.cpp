@@ -12,6 +12,7 @@
 #include "texture.h"
 
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <variant>
 
@@ -29,6 +30,11 @@ constexpr float kMinThroughput = 1.0f / 4096.0f;
 float max_channel(const Color& c) { return std::max(c.x, std::max(c.y, c.z)); }
 
 bool is_black(const Color& c) { return c.x == 0.0f && c.y == 0.0f && c.z == 0.0f; }
+
+// Whether the scene's lights are in radiometric units (unset: this integrator's own, whitted's).
+bool is_radiometric(const RenderScene& scene) {
+  return scene.render.light_units.value_or(LightUnits::kWhitted) == LightUnits::kRadiometric;
+}
 
 // The emission of the nearest area light `ray` sees before t_max, if any, and where along the ray.
 struct SeenEmitter {
@@ -53,12 +59,23 @@ Color through_medium(const RenderScene& scene, const Workspace::RayTask& task, c
          beer_lambert_transmittance(glass.transmittance, glass.transmittance_distance, t * length(ray.dir));
 }
 
+// Light sample `ls` of `light` in whitted light units (scene/render_settings.h): from a radiometric
+// scene's light divided by π, and by d² for point and spot lights.
+LightSample in_whitted_units(const Light& light, LightSample ls, bool radiometric) {
+  if (!radiometric) return ls;
+  const bool falls_off = std::holds_alternative<PointLight>(light) || std::holds_alternative<SpotLight>(light);
+  ls.radiance = ls.radiance * (falls_off ? std::numbers::inv_pi_v<float> / (ls.distance * ls.distance)
+                                         : std::numbers::inv_pi_v<float>);
+  return ls;
+}
+
 // The shadow ray and query of a one-sample light (point, spot or directional) for surface `s`,
 // written to `ray` and `query`; false (both left unspecified) when there is none: the light is
 // behind the surface by either normal, or a spot light's cone leaves it dark.
-bool one_sample_shadow_ray(const Light& light, const Workspace::ShadedSurface& s, Ray& ray,
+bool one_sample_shadow_ray(const Light& light, bool radiometric, const Workspace::ShadedSurface& s, Ray& ray,
                            Workspace::ShadowQuery& query) {
-  const LightSample ls = sample_light(light, s.point.position, Sample2D{0.5f, 0.5f});
+  const LightSample ls =
+      in_whitted_units(light, sample_light(light, s.point.position, Sample2D{0.5f, 0.5f}), radiometric);
   if (is_black(ls.radiance)) return false;  // outside a spot light's cone
   const float n_dot_l = dot(s.point.shading_normal, ls.direction);
   if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) return false;
@@ -74,9 +91,11 @@ bool one_sample_shadow_ray(const Light& light, const Workspace::ShadedSurface& s
 void queue_light_shadow_rays(const RenderScene& scene, const StratifiedSampler& sampler, const SampleKey& key,
                              int depth, const Workspace::ShadedSurface& s, std::uint32_t l, Workspace& ws) {
   const Light& light = scene.lights[l];
+  const bool radiometric = is_radiometric(scene);
   const int per_axis = ws.light_samples_per_axis[l];
   if (per_axis == 1 && !ws.is_emitter[l]) {
-    if (!one_sample_shadow_ray(light, s, ws.shadow_rays.emplace_back(), ws.shadow_queries.emplace_back())) {
+    if (!one_sample_shadow_ray(light, radiometric, s, ws.shadow_rays.emplace_back(),
+                               ws.shadow_queries.emplace_back())) {
       ws.shadow_rays.pop_back();
       ws.shadow_queries.pop_back();
       return;
@@ -88,7 +107,7 @@ void queue_light_shadow_rays(const RenderScene& scene, const StratifiedSampler& 
   const float share = 1.0f / static_cast<float>(count);
   for (int j = 0; j < count; ++j) {
     const Sample2D u = sampler.light_sample(key.pixel_key, key.sample_index, depth, int(l), j, per_axis);
-    const LightSample ls = sample_light(light, s.point.position, u);
+    const LightSample ls = in_whitted_units(light, sample_light(light, s.point.position, u), radiometric);
     if (is_black(ls.radiance)) continue;
     const float n_dot_l = dot(s.point.shading_normal, ls.direction);
     if (n_dot_l <= 0.0f || dot(s.point.geometric_normal, ls.direction) <= 0.0f) continue;
@@ -114,7 +133,8 @@ RTPRO_AVX2_CLONES
 void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sampler, std::span<const SampleKey> keys,
                        const Workspace::Generation& generation, int depth, Workspace& ws) {
   const std::size_t light_count = scene.lights.size();
-  bool laned = light_count <= kMaxLanedLights && !scene.links.linked();
+  const bool radiometric = is_radiometric(scene);
+  bool laned = light_count <= kMaxLanedLights && !scene.links.linked() && !radiometric;
   for (std::size_t l = 0; l < light_count && laned; ++l) laned = ws.light_samples_per_axis[l] == 1 && !ws.is_emitter[l];
   if (!laned) {
     for (Workspace::ShadedSurface& s : ws.surfaces) {
@@ -154,7 +174,7 @@ void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sample
       for (std::uint32_t l = 0; l < light_count; ++l) {
         const PointLight* point = point_lights[l];
         if (!point || (lanes[l].infinite >> k & 1u)) {
-          cursor += one_sample_shadow_ray(scene.lights[l], s, rays[cursor], queries[cursor]);
+          cursor += one_sample_shadow_ray(scene.lights[l], radiometric, s, rays[cursor], queries[cursor]);
           continue;
         }
         store_ray(lanes[l], k, rays[cursor]);
@@ -169,7 +189,7 @@ void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sample
     s.front_origin_known = false;
     s.first_shadow = cursor;
     for (std::uint32_t l = 0; l < light_count; ++l)
-      cursor += one_sample_shadow_ray(scene.lights[l], s, rays[cursor], queries[cursor]);
+      cursor += one_sample_shadow_ray(scene.lights[l], radiometric, s, rays[cursor], queries[cursor]);
     s.end_shadow = cursor;
   }
   ws.shadow_rays.resize(cursor);

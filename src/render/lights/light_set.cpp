@@ -16,7 +16,8 @@ namespace rtpro {
 LightSet::LightSet(const RenderScene& scene, const EnvironmentLight* environment) : environment_(environment) {
   if (scene.environment && !environment)
     throw std::logic_error("LightSet: the scene has an environment but none was built for it");
-  for (const Light& light : scene.lights) std::visit([&](const auto& l) { lights_.push_back(l); }, light);
+  const LightUnits units = scene.render.light_units.value_or(LightUnits::kRadiometric);
+  for (const Light& light : scene.lights) lights_.push_back(path_light_of(light, units));
   add_emitters(scene, scene.top, kInvalidId, nullptr);
   for (std::uint32_t g = 0; g < scene.top.geometries.size(); ++g)
     if (const auto* instance = std::get_if<Instance>(&scene.top.geometries[g]))

@@ -122,7 +122,7 @@ struct Sampler {
     const Vec3 direction = to_light / d;
     const float falloff = l.falloff(-direction);
     if (!(falloff > 0.0f)) return false;  // outside the outer cone
-    return found(direction, d, l.radiance * (falloff / d2), 1.0f, true);
+    return found(direction, d, l.radiance * (l.inverse_square ? falloff / d2 : falloff), 1.0f, true);
   }
   bool operator()(const DirectionalLight& l) const { return found(l.to_light, kInfinity, l.radiance, 1.0f, true); }
   bool operator()(const SphereLight& l) const {
@@ -265,6 +265,19 @@ constexpr bool has_path_light_overloads(const std::variant<Kinds...>*) {
 static_assert(has_path_light_overloads(static_cast<const PathLight*>(nullptr)));
 
 }  // namespace
+
+PathLight path_light_of(const Light& light, LightUnits units) {
+  return std::visit(
+      [units](auto l) -> PathLight {
+        if (units == LightUnits::kRadiometric) return l;
+        // What the whitted integrator shows as colour × irradiance, Lambert shows as colour ×
+        // irradiance / π: the same image takes π times the light.
+        l.radiance = l.radiance * kPi;
+        if constexpr (requires { l.inverse_square; }) l.inverse_square = false;
+        return l;
+      },
+      light);
+}
 
 float path_light_power(const PathLight& light, float scene_radius) { return std::visit(Power{scene_radius}, light); }
 

@@ -40,8 +40,9 @@ struct EnvironmentRef {
   const EnvironmentLight* light;
 };
 
-// Point and spot lights fall off with the square of distance here: `radiance` is read as intensity
-// (W/sr), as every physically based renderer reads it.
+// Point and spot lights fall off with the square of distance here (`radiance` read as intensity in
+// W/sr, as every physically based renderer reads it), unless the scene's light units are whitted's:
+// then path_light_of has made every light π times brighter and point and spot lights constant.
 // The scene's kinds of light (scene/light.h) first, in their order, then the emitters.
 template <typename Lights, typename... Emitters>
 struct WithEmitters;
@@ -60,6 +61,9 @@ struct PathLightSample {
   std::uint32_t light;  // which light of the set
 };
 
+// A scene light as the path integrator reads it in a scene of light units `units`.
+PathLight path_light_of(const Light& light, LightUnits units);
+
 // The power (the average of its channels) the set picks the light by; `scene_radius` sizes what
 // directional lights and the environment deliver.
 float path_light_power(const PathLight& light, float scene_radius);
@@ -77,7 +81,7 @@ inline bool sample_point_light(const PointLight& light, const Vec3& from, PathLi
   // a row on every path vertex.
   out.direction = to_light * (1.0f / d);
   out.distance = d;
-  out.radiance = light.radiance * (1.0f / d2);
+  out.radiance = light.inverse_square ? light.radiance * (1.0f / d2) : light.radiance;
   out.pdf = 1.0f;
   out.delta = true;
   return true;

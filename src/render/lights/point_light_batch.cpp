@@ -22,7 +22,7 @@ void sample_point_light_batch(const PointLight& light, std::span<const SurfacePo
     const __m128 d = _mm_sqrt_ps(d2);
     const __m128 one = _mm_set1_ps(1.0f);
     const __m128 inverse_d = _mm_div_ps(one, d);
-    const __m128 inverse_d2 = _mm_div_ps(one, d2);
+    const __m128 inverse_d2 = light.inverse_square ? _mm_div_ps(one, d2) : one;
     alignas(16) float dx[4], dy[4], dz[4], rx[4], ry[4], rz[4], distance[4];
     lanes::store(
         {_mm_mul_ps(to_light.x, inverse_d), _mm_mul_ps(to_light.y, inverse_d), _mm_mul_ps(to_light.z, inverse_d)}, dx,

@@ -13,7 +13,8 @@ namespace rtpro {
 
 inline int samples_per_axis(const PointLight&) { return 1; }
 
-// No distance falloff here (the Whitted model); `u` is not used.
+// No distance falloff here: the light in whitted light units (scene/render_settings.h), which the
+// whitted integrator converts a radiometric scene's lights into; `u` is not used.
 inline LightSample sample_light_of_kind(const PointLight& light, const Vec3& point, Sample2D) {
   const Vec3 to_light = light.position - point;
   const float distance = length(to_light);

@@ -12,8 +12,8 @@ namespace rtpro {
 
 inline int samples_per_axis(const SpotLight&) { return 1; }
 
-// A point light times its cone's falloff: no distance falloff here either (the Whitted model), and
-// nothing arrives outside the outer cone.
+// A point light times its cone's falloff: no distance falloff here either (as a point light's),
+// and nothing arrives outside the outer cone.
 inline LightSample sample_light_of_kind(const SpotLight& light, const Vec3& point, Sample2D) {
   const Vec3 to_light = light.position - point;
   const float distance = length(to_light);

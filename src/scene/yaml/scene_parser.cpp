@@ -150,13 +150,15 @@ void read_path_controls(const MappingReader& render, PathControls& path) {
   non_negative("filter_glossy", path.filter_glossy);
 }
 
-RenderSettings read_render(const YamlNode* node) {
+// `units`: the light units the file's own integrator implies, used where render.light_units is absent.
+RenderSettings read_render(const YamlNode* node, LightUnits units) {
   RenderSettings settings;
+  settings.light_units = units;
   if (absent(node)) return settings;
   const MappingReader render(*node, "render",
                              {"spp", "max_depth", "seed", "ambient", "background", "integrator", "sampling", "sampler",
-                              "light_sampler", "max_diffuse_depth", "max_glossy_depth", "max_transmission_depth",
-                              "clamp_direct", "clamp_indirect", "filter_glossy"});
+                              "light_sampler", "light_units", "max_diffuse_depth", "max_glossy_depth",
+                              "max_transmission_depth", "clamp_direct", "clamp_indirect", "filter_glossy"});
   if (const YamlNode* spp = render.optional("spp")) settings.spp = read_spp(*spp);
   if (const YamlNode* integrator = render.optional("integrator"))
     settings.integrator = read_keyword<Integrator>(*integrator, "render.integrator",
@@ -173,6 +175,10 @@ RenderSettings read_render(const YamlNode* node) {
     settings.light_sampler =
         read_keyword<LightSamplerKind>(*light_sampler, "render.light_sampler",
                                        {{"tree", LightSamplerKind::kTree}, {"power", LightSamplerKind::kPower}});
+  if (const YamlNode* light_units = render.optional("light_units"))
+    settings.light_units =
+        read_keyword<LightUnits>(*light_units, "render.light_units",
+                                 {{"whitted", LightUnits::kWhitted}, {"radiometric", LightUnits::kRadiometric}});
   if (const YamlNode* depth = render.optional("max_depth")) settings.max_depth = read_depth(*depth, "render.max_depth");
   read_path_controls(render, settings.path);
   if (const YamlNode* seed = render.optional("seed")) settings.seed = read_unsigned(*seed, "render.seed");
@@ -192,7 +198,24 @@ void check_scene_root(const YamlNode& root) {
     fail_at(root, "expected the scene to be a mapping (rtpro: 1, camera: ...), got " + root.describe());
 }
 
-SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& file,
+// The light units of a scene written for the integrator the file names: radiometric for `path`,
+// whitted otherwise. Read before --set, --integrator and -D apply, so that rendering a scene with
+// the other integrator does not change what its lights mean; a `$name` integrator is looked up
+// among the file's own variables.
+LightUnits written_light_units(const YamlNode& root) {
+  const YamlEntry* render = root.find("render");
+  const YamlEntry* integrator = render && render->value ? render->value->find("integrator") : nullptr;
+  if (!integrator || !integrator->value) return LightUnits::kWhitted;
+  std::string_view name = integrator->value->scalar();
+  if (name.starts_with('$')) {
+    const YamlEntry* variables = root.find("variables");
+    const YamlEntry* variable = variables && variables->value ? variables->value->find(name.substr(1)) : nullptr;
+    name = variable && variable->value ? variable->value->scalar() : std::string_view();
+  }
+  return name == "path" ? LightUnits::kRadiometric : LightUnits::kWhitted;
+}
+
+SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& file, LightUnits written_units,
                             std::vector<MaterialDesc>* model_materials) {
   check_scene_root(root);
   read_version(root);
@@ -202,7 +225,7 @@ SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& f
   SceneDescription desc;
   desc.file = file;
   desc.camera = read_camera(scene.required("camera"));
-  desc.render = read_render(scene.optional("render"));
+  desc.render = read_render(scene.optional("render"), written_units);
   desc.materials = read_materials(scene.optional("materials"), file.parent_path(), model_materials);
   read_lights(scene.optional("lights"), desc.lights, desc.light_names);
   desc.light_sources.assign(desc.lights.size(), std::string());
@@ -306,9 +329,10 @@ SceneDescription parse_scene_text(std::string_view text, const std::filesystem::
   };
   YamlDocument document = YamlDocument::parse(text, file.string(), read_include);
   check_scene_root(document.root());
+  const LightUnits written_units = written_light_units(document.root());
   for (const std::string& override_text : overrides) document.apply_override(override_text);
   document.resolve_variables();
-  SceneDescription description = read_scene(document.root(), file, model_materials);
+  SceneDescription description = read_scene(document.root(), file, written_units, model_materials);
   description.source_files = std::move(included);
   return description;
 }
