@@ -40,6 +40,10 @@ class PhongBsdf {
   float alpha() const { return ggx_.alpha; }
 
   bool is_delta() const { return p_mirror_ == 1.0f; }
+  // Filter Glossy widens the highlight; the mirror lobe, a weight of its own, stays a mirror.
+  void roughen_to(float min_alpha) {
+    if (ggx_.alpha < min_alpha) ggx_ = GgxDistribution{min_alpha};
+  }
   // It reflects on whichever side wo is: the frame's +z is the side the ray came from.
   bool needs_outward_frame() const { return false; }
   // The diffuse and highlight lobes (the mirror only sampling finds).
