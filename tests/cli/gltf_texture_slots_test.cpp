@@ -86,8 +86,9 @@ double centre_mean(const Image& image, int c) {
   return sum / n;
 }
 
+// Into NAME.render.exr: NAME.exr may be the scene's own texture, which rtpro refuses to replace.
 Image render(const std::filesystem::path& scene, const std::string& options = "--spp 16") {
-  const auto out = scene.parent_path() / (scene.stem().string() + ".exr");
+  const auto out = scene.parent_path() / (scene.stem().string() + ".render.exr");
   test::run_rtpro(render_args(scene, out) + " --size 24x24 -q " + options, 0);
   return read_image(out);
 }
