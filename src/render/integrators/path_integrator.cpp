@@ -79,6 +79,7 @@ class PathVertexStep {
         cosine_directions_(cosine_directions), lone_point_light_(lone_point_light), depths_(lobe_depths(scene.render)),
         direct_limit_(clamp_sum_limit(scene.render.path.clamp_direct)),
         indirect_limit_(clamp_sum_limit(scene.render.path.clamp_indirect)),
+        clamping_(scene.render.path.clamp_direct > 0.0f || scene.render.path.clamp_indirect > 0.0f),
         filter_glossy_(scene.render.path.filter_glossy) {}
 
   // `vertex`: the path's place in the generation; `sp` the surface of a valid hit (make_surfaces),
@@ -178,6 +179,9 @@ class PathVertexStep {
   // The clamp of light reaching the camera through the ray that found it: direct for the camera
   // ray and the first vertex's rays (at most one scattering), indirect after.
   float emission_limit(const Path& path) const { return path.bounce <= 1 ? direct_limit_ : indirect_limit_; }
+  Color clamp(const Color& contribution, float sum_limit) const {
+    return clamping_ ? clamped(contribution, sum_limit) : contribution;
+  }
 
   // w_b, the weight of emission a BSDF sample found: in full after the camera or a specular
   // vertex, else against the light sampling that could have found the same point, whose pdf
@@ -200,7 +204,7 @@ class PathVertexStep {
     const float w_b = light == kInvalidId ? 1.0f : bsdf_sample_weight(path, [&] {
       return lights_.pdf(light, path.origin, on_light, path.group);
     });
-    result.radiance += clamped(beta * radiance * w_b, emission_limit(path));
+    result.radiance += clamp(beta * radiance * w_b, emission_limit(path));
   }
 
   // A ray that leaves the scene: the environment, weighted as emission is, or the background.
@@ -208,12 +212,12 @@ class PathVertexStep {
   void add_escaped_light(const Path& path, const Ray& ray, SampleResult& result) {
     const EnvironmentLight* environment = lights_.environment();
     if (!environment || (path.bounce == 0 && !environment->visible())) {
-      result.radiance += clamped(path.beta * scene_.render.background, emission_limit(path));
+      result.radiance += clamp(path.beta * scene_.render.background, emission_limit(path));
       return;
     }
     const Color radiance = environment->radiance(ray.dir);
     const float w_b = bsdf_sample_weight(path, [&] { return lights_.environment_pdf(ray.dir, path.group); });
-    result.radiance += clamped(path.beta * radiance * w_b, emission_limit(path));
+    result.radiance += clamp(path.beta * radiance * w_b, emission_limit(path));
   }
 
   // A point on a light for next-event estimation: the lone point light's sample, made for the
@@ -242,7 +246,7 @@ class PathVertexStep {
         case PathSampling::kBsdf: return;  // BSDF samples find it
       }
     }
-    const Color contribution = clamped(beta * f * ls.radiance * (w_l / ls.pdf), clamp_limit);
+    const Color contribution = clamp(beta * f * ls.radiance * (w_l / ls.pdf), clamp_limit);
     if (!is_finite(contribution) || carries_no_light(contribution)) return;
     Ray ray;
     if (std::isinf(ls.distance)) {
@@ -269,6 +273,7 @@ class PathVertexStep {
   PathLightSample light_sample_;
   LobeDepths depths_;
   float direct_limit_, indirect_limit_;  // clamp_sum_limit of the clamps
+  bool clamping_;                        // either clamp on: a contribution's sum is worth computing
   float filter_glossy_;                  // 0: off
 };
 

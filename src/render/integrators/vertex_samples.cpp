@@ -3,14 +3,46 @@
 #include "cosine_lanes.h"
 #include "material_bsdf.h"
 #include "sample_dimensions.h"
+#include "rtpro/core/overloaded.h"
 
 #include <algorithm>
 
 namespace rtpro {
 
+namespace {
+
+// Which materials a surface of the scene uses. A material no surface uses (the default material
+// beside a mesh's own, say) must not turn the Lambert fast paths off or add draws.
+std::vector<char> materials_in_use(const RenderScene& scene) {
+  std::vector<char> used(scene.materials.size(), 0);
+  const auto use = [&](std::uint32_t material) {
+    if (material < used.size()) used[material] = 1;
+  };
+  const auto visit_group = [&](const Group& group) {
+    for (const Geometry& geometry : group.geometries)
+      std::visit(Overloaded{[&](const SphereSet& set) {
+                              for (const Sphere& sphere : set.spheres) use(sphere.material);
+                            },
+                            [&](const TriangleMesh& mesh) {
+                              use(mesh.material);
+                              for (std::uint32_t material : mesh.triangle_materials) use(material);
+                            },
+                            [](const Instance&) {}},  // its prototype's surfaces are visited below
+                 geometry);
+  };
+  visit_group(scene.top);
+  for (const Group& prototype : scene.prototypes) visit_group(prototype);
+  return used;
+}
+
+}  // namespace
+
 VertexDraws vertex_draws(const RenderScene& scene, const LightSet& lights) {
+  const std::vector<char> used = materials_in_use(scene);
   const auto any_material = [&](bool (*which)(const Material&)) {
-    return std::any_of(scene.materials.begin(), scene.materials.end(), which);
+    for (std::size_t i = 0; i < scene.materials.size(); ++i)
+      if (used[i] && which(scene.materials[i])) return true;
+    return false;
   };
   return {any_material(reads_lobe_choice) || lights.reads_pick_number(), lights.reads_point_numbers(),
           any_material(makes_lambert_bsdf)};

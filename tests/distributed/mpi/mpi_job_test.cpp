@@ -315,18 +315,22 @@ world:
   const auto out = dir / "out.exr", log = dir / "job.log";
   const pid_t job = start_job(2, scene, out, {"--rank-timeout", "2"}, log, "16");
   ASSERT_GE(job, 0);
-  // Rank 1 is idle once its CPU time grows by less than a quarter of a core (10 of 40 ticks in
-  // 400 ms; it polls for rank 0's messages at about a tenth): it has its (empty) share and waits.
+  // Rank 1 has its (empty) share and waits once rank 0 renders (over 15 of 40 ticks in 400 ms:
+  // past the start-of-job handshake, which waits for every rank for ever) while rank 1's CPU time
+  // grows by less than a quarter of a core (it polls for rank 0's messages at about a tenth).
   int status = 0;
   pid_t victim = 0;
-  long last = -1;
+  long last0 = -1, last1 = -1;
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (!victim && waitpid(job, &status, WNOHANG) == 0 && std::chrono::steady_clock::now() < give_up) {
     std::this_thread::sleep_for(std::chrono::milliseconds(400));
-    const pid_t rank1 = rank_process(job, 1);
-    const long ticks = rank1 ? cpu_ticks(rank1) : -1;
-    if (ticks > 0 && last > 0 && ticks - last <= 10 && kill(rank1, SIGSTOP) == 0) victim = rank1;
-    last = ticks;
+    const pid_t rank0 = rank_process(job, 0), rank1 = rank_process(job, 1);
+    const long ticks0 = rank0 ? cpu_ticks(rank0) : -1, ticks1 = rank1 ? cpu_ticks(rank1) : -1;
+    const bool rank0_renders = ticks0 > 0 && last0 > 0 && ticks0 - last0 >= 15;
+    const bool rank1_waits = ticks1 > 0 && last1 > 0 && ticks1 - last1 <= 10;
+    if (rank0_renders && rank1_waits && kill(rank1, SIGSTOP) == 0) victim = rank1;
+    last0 = ticks0;
+    last1 = ticks1;
   }
   ASSERT_TRUE(victim) << "the job ended before rank 1 could be stopped";
   const auto stopped = std::chrono::steady_clock::now();
