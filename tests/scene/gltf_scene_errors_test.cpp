@@ -12,6 +12,7 @@
 #include <regex>
 #include <string>
 #include <tuple>
+#include <variant>
 #include <vector>
 
 namespace rtpro {
@@ -38,7 +39,7 @@ int add_camera(GltfFile& gltf, double yfov, nlohmann::json node) {
 }
 
 // Adds extensions.KHR_lights_punctual.lights[0] on nodes[N], the child of a root scaled by 2, so a
-// translation of 1e9 places it at 2e9; returns N.
+// translation of 1e16 places it at 2e16; returns N.
 int add_doubled_light(GltfFile& gltf, nlohmann::json light, nlohmann::json node) {
   gltf.json["extensionsUsed"] = {"KHR_lights_punctual"};
   gltf.json["extensions"]["KHR_lights_punctual"]["lights"] = nlohmann::json::array({std::move(light)});
@@ -83,25 +84,49 @@ std::string build_error(const std::filesystem::path& file) {
 
 bool starts_with(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
 
-// The scene format's numbers stay within ±1e9: a camera node at 1e9 under a parent scaled by 2
-// is at 2e9.
+// The scene format's positions stay within ±1e16: a camera node at 1e16 under a parent scaled by
+// 2 is at 2e16.
 TEST(GltfSceneErrors, ACameraBeyondTheSceneFormatsRangeNamesItsNode) {
   GltfFile gltf = triangle_model();
   gltf.json["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.7}, {"znear", 0.1}}}}};
-  const int camera = gltf.node({{"camera", 0}, {"translation", {0, 0, 1e9}}});
+  const int camera = gltf.node({{"camera", 0}, {"translation", {0, 0, 1e16}}});
   gltf.json["scenes"][0]["nodes"].push_back(gltf.node({{"children", {camera}}, {"scale", {2, 2, 2}}}));
   const std::string message = scene_error(gltf.write("far_camera"));
-  EXPECT_TRUE(starts_with(message, "nodes[1] (cameras[0]): camera.position: 2e+09 is out of range")) << message;
+  EXPECT_TRUE(starts_with(message, "nodes[1] (cameras[0]): camera.position: 2")) << message;
+  EXPECT_NE(message.find("is out of range (numbers must be finite and within ±1e16 for positions)"), std::string::npos)
+      << message;
 }
 
-// At 1e9 a float cannot hold the step of 1 along the view direction: the point looked at is the
-// camera's own position.
-TEST(GltfSceneErrors, ACameraTooFarForItsViewDirectionNamesItsNode) {
+// At 2e9 a float cannot hold a step of 1 along the view direction: the point looked at is placed
+// farther along it, and the camera keeps its direction.
+TEST(GltfSceneErrors, ACameraFarFromTheOriginKeepsItsViewDirection) {
   GltfFile gltf = triangle_model();
-  add_camera(gltf, 0.7, {{"translation", {0, 0, 1e9}}});
-  const std::string message = scene_error(gltf.write("lost_camera"));
-  EXPECT_TRUE(starts_with(message, "nodes[1] (cameras[0]): camera.look_at must differ from camera.position"))
-      << message;
+  add_camera(gltf, 0.7, {{"translation", {0, 3, 2e9}}});
+  const SceneDescription scene = parse_scene_file(gltf.write("far_view"));
+  EXPECT_EQ(scene.camera.position.z, 2e9f);
+  const Vec3 view = normalize(scene.camera.look_at - scene.camera.position);
+  EXPECT_NEAR(view.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(view.y, 0.0f, 1e-6f);
+  EXPECT_NEAR(view.z, -1.0f, 1e-6f);
+}
+
+// A glTF node translated within ±1e16 is kept as the backends trace it (±1e16).
+TEST(GltfSceneErrors, ANodeTranslatedBeyondABillionLoads) {
+  GltfFile gltf = triangle_model();
+  gltf.json["nodes"][0]["translation"] = {5e9, 0, 0};
+  const std::filesystem::path file = gltf.write("far_node");
+  const SceneDescription scene = parse_scene_file(file);
+  EXPECT_NO_THROW(build_render_scene(scene));
+  GltfFile refused = triangle_model();
+  refused.json["nodes"][0]["translation"] = {2e16, 0, 0};
+  try {
+    parse_scene_file(refused.write("too_far_node"));
+    ADD_FAILURE() << "a translation of 2e16 was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("nodes[0].translation: needs 3 finite numbers (magnitude <= 1e16)"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 // A sheared node matrix turns the camera's -z nearly onto its +y (sine 1e-4): the loader keeps
@@ -129,12 +154,12 @@ TEST(GltfSceneErrors, AFieldOfViewThatRoundsToZeroNamesTheCamerasNode) {
   EXPECT_TRUE(starts_with(message, "nodes[1] (cameras[0]): camera.fov must be between 0 and 180 degrees")) << message;
 }
 
-// A mesh at 5e9 is within what the backends trace, but the camera framing it is beyond the scene
-// format's ±1e9: there is no glTF camera to name, so the error says which camera it is.
+// A mesh 1e9 wide at z = 1e16 is within what the backends trace, but the camera framing it from
+// +z is beyond the scene format's ±1e16: there is no glTF camera to name, so the error says which camera it is.
 TEST(GltfSceneErrors, TheCameraFramingFarMeshesSaysItIsRtprosOwn) {
   GltfFile gltf = triangle_model();
-  gltf.json["nodes"][0]["translation"] = {1e9, 0, 0};
-  gltf.json["scenes"][0]["nodes"] = {gltf.node({{"children", {0}}, {"scale", {5, 5, 5}}})};
+  gltf.json["nodes"][0]["translation"] = {0, 0, 1e7};
+  gltf.json["scenes"][0]["nodes"] = {gltf.node({{"children", {0}}, {"scale", {1e9, 1e9, 1e9}}})};
   const std::string message = scene_error(gltf.write("far_meshes"));
   EXPECT_TRUE(starts_with(message,
                           "the camera rtpro places to frame the meshes (the file has no perspective camera): "
@@ -144,23 +169,31 @@ TEST(GltfSceneErrors, TheCameraFramingFarMeshesSaysItIsRtprosOwn) {
 
 TEST(GltfSceneErrors, APointLightBeyondTheSceneFormatsRangeNamesItsNodeAndLight) {
   GltfFile gltf = triangle_model();
-  const int lamp = add_doubled_light(gltf, {{"type", "point"}, {"intensity", 10}}, {{"translation", {0, 0, 1e9}}});
+  const int lamp = add_doubled_light(gltf, {{"type", "point"}, {"intensity", 10}}, {{"translation", {0, 0, 1e16}}});
   const std::string message = scene_error(gltf.write("far_point"));
   EXPECT_TRUE(starts_with(message, "nodes[" + std::to_string(lamp) +
                                        "] (extensions.KHR_lights_punctual.lights[0]): "
-                                       "point light.position: 2e+09 is out of range"))
+                                       "point light.position: 2"))
       << message;
+  EXPECT_NE(message.find("is out of range (numbers must be finite and within ±1e16 for positions)"), std::string::npos)
+      << message;
+  GltfFile near = triangle_model();
+  add_doubled_light(near, {{"type", "point"}, {"intensity", 10}}, {{"translation", {0, 0, 1e9}}});
+  const SceneDescription lit = parse_scene_file(near.write("point_at_2e9"));
+  ASSERT_EQ(lit.lights.size(), 1u);
+  EXPECT_EQ(std::get<PointLightDesc>(lit.lights[0]).position.z, 2e9f);
 }
 
 TEST(GltfSceneErrors, ASpotLightBeyondTheSceneFormatsRangeNamesItsNodeAndLight) {
   GltfFile gltf = triangle_model();
   const int lamp =
-      add_doubled_light(gltf, {{"type", "spot"}, {"spot", nlohmann::json::object()}}, {{"translation", {1e9, 0, 0}}});
+      add_doubled_light(gltf, {{"type", "spot"}, {"spot", nlohmann::json::object()}}, {{"translation", {1e16, 0, 0}}});
   const std::string message = scene_error(gltf.write("far_spot"));
   EXPECT_TRUE(starts_with(message, "nodes[" + std::to_string(lamp) +
                                        "] (extensions.KHR_lights_punctual.lights[0]): "
-                                       "spot light.position: 2e+09 is out of range"))
+                                       "spot light.position: 2"))
       << message;
+  EXPECT_NE(message.find("±1e16 for positions"), std::string::npos) << message;
 }
 
 // A light intensity below 0 or above 1e9 was read as 0: a black image with exit 0. It is refused

@@ -85,6 +85,30 @@ TEST(SceneParser, RejectsHugeNumbers) {
   EXPECT_SCENE_ERROR(text, at(text, 4, "1e20"), {"sphere.center", "out of range"});
 }
 
+// Positions and translations reach ±1e16, as far as mesh vertices; lengths and factors stay within
+// ±1e9.
+TEST(SceneParser, PositionsReachFartherThanOtherNumbers) {
+  const std::string far = camera_scene("{position: [2e9, 0, 5], look_at: [2e9, 0, 0]}") + "world:\n" +
+                          "  - {type: sphere, center: [2e9, 0, 0]}\n" +
+                          "  - {type: instance, object: o, transform: {translate: [0, 2e15, 0]}}\n" +
+                          "objects: {o: [{type: sphere}]}\n";
+  const SceneDescription scene = parse_scene_text(far, "far.yaml");
+  EXPECT_EQ(scene.camera.position.x, 2e9f);
+  const std::string beyond = with_world("  - {type: sphere, center: [0, 2e16, 0]}\n");
+  EXPECT_SCENE_ERROR(beyond, at(beyond, 4, "2e16"), {"sphere.center: 2e16 is out of range", "±1e16 for positions"});
+  const std::string translated = with_world("  - {type: instance, object: o, transform: {translate: [2e16, 0, 0]}}\n") +
+                                 "objects: {o: [{type: sphere}]}\n";
+  EXPECT_SCENE_ERROR(translated, at(translated, 4, "2e16"), {"instance.transform.translate", "±1e16 for positions"});
+  const std::string radius = with_world("  - {type: sphere, radius: 2e9}\n");
+  EXPECT_SCENE_ERROR(radius, at(radius, 4, "2e9"), {"sphere.radius: 2e9 is out of range", "within ±1e9)"});
+  const std::string scaled =
+      with_world(
+          "  - {type: instance, object: o, transform: [{scale: 1e5}, {translate: [1e9, 0, 0]}, {scale: 1e5}]}\n") +
+      "objects: {o: [{type: sphere}]}\n";
+  EXPECT_SCENE_ERROR(scaled, at(scaled, 4, "[{scale"),
+                     {"instance.transform", "beyond ±1e9 (±1e16 for its translation"});
+}
+
 TEST(SceneParser, UnknownMaterialSuggestsTheClosestName) {
   const std::string text = kHeader + "materials: {crimson: {}}\nworld:\n  - {type: sphere, material: crimsom}\n";
   EXPECT_SCENE_ERROR(text, at(text, 5, "crimsom"), {"unknown material 'crimsom'", "did you mean 'crimson'?"});

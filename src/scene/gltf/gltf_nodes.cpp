@@ -1,6 +1,7 @@
 #include "gltf_nodes.h"
 
 #include "ascii_scan.h"
+#include "mesh_limits.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,15 +32,29 @@ std::string shown(double value) {
   return text;
 }
 
-bool all_finite(const std::vector<double>& values) {
-  return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v) && std::fabs(v) <= 1e9; });
+// The scene format's bounds (yaml_reader.h): translations reach as far as mesh vertices, every
+// other transform entry (scale, rotation, the matrix's linear part) stays within 1e9.
+constexpr double kMaxTransformFactor = 1e9;
+constexpr double kMaxTranslation = kMaxAbsCoordinate;
+
+bool within(double value, double bound) { return std::isfinite(value) && std::fabs(value) <= bound; }
+
+bool all_finite(const std::vector<double>& values, double bound = kMaxTransformFactor) {
+  return std::all_of(values.begin(), values.end(), [bound](double v) { return within(v, bound); });
+}
+
+// A column-major 4x4 matrix: elements 12-14 are the translation.
+bool matrix_within_bounds(const std::vector<double>& c) {
+  for (std::size_t i = 0; i < c.size(); ++i)
+    if (!within(c[i], i >= 12 && i < 15 ? kMaxTranslation : kMaxTransformFactor)) return false;
+  return true;
 }
 
 Affine local_transform(const tinygltf::Node& node, int index, const AccessorReader& reader) {
   const std::string path = node_path(index);
   if (!node.matrix.empty()) {
-    if (node.matrix.size() != 16 || !all_finite(node.matrix))
-      reader.fail(path + ".matrix", "needs 16 finite numbers (magnitude <= 1e9)");
+    if (node.matrix.size() != 16 || !matrix_within_bounds(node.matrix))
+      reader.fail(path + ".matrix", "needs 16 finite numbers (magnitude <= 1e9; <= 1e16 for the translation)");
     const auto& c = node.matrix;  // column-major: element (row r, column k) is c[4k + r]
     if (c[3] != 0.0 || c[7] != 0.0 || c[11] != 0.0 || c[15] != 1.0)
       reader.fail(path + ".matrix", "is not affine: its last row must be 0 0 0 1");
@@ -50,7 +65,8 @@ Affine local_transform(const tinygltf::Node& node, int index, const AccessorRead
   }
   Affine t = Affine::identity();
   if (!node.scale.empty()) {
-    if (node.scale.size() != 3 || !all_finite(node.scale)) reader.fail(path + ".scale", "needs 3 finite numbers");
+    if (node.scale.size() != 3 || !all_finite(node.scale))
+      reader.fail(path + ".scale", "needs 3 finite numbers (magnitude <= 1e9)");
     t = Affine::scale(Vec3(float(node.scale[0]), float(node.scale[1]), float(node.scale[2])));
   }
   if (!node.rotation.empty()) {
@@ -67,8 +83,8 @@ Affine local_transform(const tinygltf::Node& node, int index, const AccessorRead
     t = compose(r, t);
   }
   if (!node.translation.empty()) {
-    if (node.translation.size() != 3 || !all_finite(node.translation))
-      reader.fail(path + ".translation", "needs 3 finite numbers");
+    if (node.translation.size() != 3 || !all_finite(node.translation, kMaxTranslation))
+      reader.fail(path + ".translation", "needs 3 finite numbers (magnitude <= 1e16)");
     t = compose(
         Affine::translate(Vec3(float(node.translation[0]), float(node.translation[1]), float(node.translation[2]))), t);
   }

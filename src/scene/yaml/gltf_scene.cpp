@@ -24,7 +24,11 @@ void add_camera(const GltfAsset& asset, const BBox& bounds, ModelSceneText& text
     const GltfCamera& c = asset.cameras.front();
     const int height = c.aspect_ratio > 0.0f ? std::clamp(int(std::lround(kModelImageWidth / c.aspect_ratio)), 1, 65536)
                                              : kModelImageHeight;
-    text.add("camera: {position: " + yaml_vector(c.position) + ", look_at: " + yaml_vector(c.position + c.forward) +
+    // A unit step along the view is lost in rounding far from the origin (at 1e9 a float's spacing
+    // is 128): the step grows with the position, and below 256 stays 1.
+    const float magnitude = std::max({std::fabs(c.position.x), std::fabs(c.position.y), std::fabs(c.position.z)});
+    const Vec3 look_at = c.position + c.forward * std::max(1.0f, magnitude / 256.0f);
+    text.add("camera: {position: " + yaml_vector(c.position) + ", look_at: " + yaml_vector(look_at) +
                  ", up: " + yaml_vector(c.up) + ", fov: " + yaml_number(c.yfov_degrees) + ", resolution: [" +
                  std::to_string(kModelImageWidth) + ", " + std::to_string(height) + "]}",
              gltf_node_path(c.node) + " (cameras[" + std::to_string(c.camera) + "])");

@@ -75,9 +75,9 @@ CameraDesc read_camera(const YamlNode& node) {
   const MappingReader camera(node, "camera",
                              {"position", "look_at", "up", "fov", "resolution", "aperture", "focus_distance"});
   CameraDesc desc;
-  desc.position = read_vec3(camera.required("position"), "camera.position");
+  desc.position = read_position(camera.required("position"), "camera.position");
   const YamlNode& look_at = camera.required("look_at");
-  desc.look_at = read_vec3(look_at, "camera.look_at");
+  desc.look_at = read_position(look_at, "camera.look_at");
   const Vec3 view = desc.look_at - desc.position;
   if (!(length(view) > 0.0f))
     fail_at(look_at, "camera.look_at must differ from camera.position: the camera needs a direction to look in");

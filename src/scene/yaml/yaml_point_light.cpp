@@ -6,7 +6,7 @@ namespace rtpro {
 
 void read_light_desc(const YamlNode& node, PointLightDesc& desc) {
   const MappingReader light(node, "point light", {"type", "name", "position", "color", "intensity"});
-  desc.position = read_vec3(light.required("position"), light.field("position"));
+  desc.position = read_position(light.required("position"), light.field("position"));
   read_color_and_intensity(light, desc);
 }
 

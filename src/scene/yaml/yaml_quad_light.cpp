@@ -7,7 +7,7 @@ namespace rtpro {
 void read_light_desc(const YamlNode& node, QuadLightDesc& desc) {
   const MappingReader light(node, "quad light",
                             {"type", "name", "position", "edge1", "edge2", "color", "intensity", "samples"});
-  desc.position = read_vec3(light.required("position"), light.field("position"));
+  desc.position = read_position(light.required("position"), light.field("position"));
   const YamlNode& edge1 = light.required("edge1");
   const YamlNode& edge2 = light.required("edge2");
   desc.edge1 = read_vec3(edge1, light.field("edge1"));

@@ -85,7 +85,10 @@ std::string read_entry_type(const YamlNode& entry, const std::string& what, cons
   return name;
 }
 
-double read_number(const YamlNode& node, const std::string& name) {
+namespace {
+
+// A number within ±bound; `bound_text` is how messages show the bound.
+double read_bounded(const YamlNode& node, const std::string& name, double bound, const char* bound_text) {
   const std::string_view text = without_plus(scalar_or_fail(node, name, "a number").scalar());
   if (is_yaml_special_float(text))
     fail_at(node, name + ": expected a finite number, got '" + std::string(node.scalar()) + "'");
@@ -93,11 +96,21 @@ double read_number(const YamlNode& node, const std::string& name) {
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (end != text.data() + text.size() || text.empty())
     fail_at(node, name + ": expected a number, got " + node.describe());
-  if (error == std::errc::result_out_of_range || !std::isfinite(value) || std::fabs(value) > kMaxSceneNumber) {
-    fail_at(node,
-            name + ": " + std::string(node.scalar()) + " is out of range (numbers must be finite and within ±1e9)");
+  if (error == std::errc::result_out_of_range || !std::isfinite(value) || std::fabs(value) > bound) {
+    fail_at(node, name + ": " + std::string(node.scalar()) + " is out of range (numbers must be finite and within ±" +
+                      bound_text + ")");
   }
   return value;
+}
+
+}  // namespace
+
+double read_number(const YamlNode& node, const std::string& name) {
+  return read_bounded(node, name, kMaxSceneNumber, "1e9");
+}
+
+double read_coordinate(const YamlNode& node, const std::string& name) {
+  return read_bounded(node, name, kMaxSceneCoordinate, "1e16 for positions");
 }
 
 float read_non_negative(const YamlNode& node, const std::string& name) {
@@ -133,11 +146,21 @@ YamlNodeList read_list(const YamlNode& node, const std::string& name, std::size_
   return node.items();
 }
 
-Vec3 read_vec3(const YamlNode& node, const std::string& name) {
+namespace {
+
+using NumberReader = double (*)(const YamlNode&, const std::string&);
+
+Vec3 read_triple(const YamlNode& node, const std::string& name, NumberReader read) {
   const auto& items = read_list(node, name, 3, "a list of 3 numbers [x, y, z]");
-  return Vec3(static_cast<float>(read_number(*items[0], name)), static_cast<float>(read_number(*items[1], name)),
-              static_cast<float>(read_number(*items[2], name)));
+  return Vec3(static_cast<float>(read(*items[0], name)), static_cast<float>(read(*items[1], name)),
+              static_cast<float>(read(*items[2], name)));
 }
+
+}  // namespace
+
+Vec3 read_vec3(const YamlNode& node, const std::string& name) { return read_triple(node, name, read_number); }
+
+Vec3 read_position(const YamlNode& node, const std::string& name) { return read_triple(node, name, read_coordinate); }
 
 namespace {
 

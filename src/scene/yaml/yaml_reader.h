@@ -3,6 +3,7 @@
 // node that names the field ("camera.fov: expected a number, got 'wide'").
 #include "rtpro/core/closest_match.h"
 #include "rtpro/core/vec3.h"
+#include "mesh_limits.h"
 #include "yaml_document.h"
 
 #include <cstdint>
@@ -19,6 +20,11 @@ namespace rtpro {
 // Numbers further from zero than this are rejected everywhere: at float precision they mean
 // nothing to a ray tracer, and far larger ones overflow (or abort Embree) once combined.
 inline constexpr double kMaxSceneNumber = 1e9;
+// Positions and translations may go as far as mesh vertices (kMaxAbsCoordinate, 1e16): a scene
+// placed far from the origin (a georeferenced glTF) is still traceable there. Lengths such as
+// radii, scale factors and edges keep kMaxSceneNumber: squared in intersection tests, a length
+// beyond 1e9 leaves a float quadratic no precision, whereas a far position only shifts the origin.
+inline constexpr double kMaxSceneCoordinate = kMaxAbsCoordinate;
 
 [[noreturn]] void fail_at(const YamlPosition& at, const std::string& message);
 [[noreturn]] void fail_at(const YamlNode& node, const std::string& message);
@@ -47,12 +53,16 @@ std::string read_entry_type(const YamlNode& entry, const std::string& what, cons
 
 // `name` is the field's name in messages.
 double read_number(const YamlNode& node, const std::string& name);
+// One coordinate of a position or translation: within ±kMaxSceneCoordinate.
+double read_coordinate(const YamlNode& node, const std::string& name);
 // A number >= 0 (weights, intensities).
 float read_non_negative(const YamlNode& node, const std::string& name);
 std::int64_t read_integer(const YamlNode& node, const std::string& name);
 std::uint64_t read_unsigned(const YamlNode& node, const std::string& name);
 std::string read_string(const YamlNode& node, const std::string& name);
 Vec3 read_vec3(const YamlNode& node, const std::string& name);
+// A point or translation [x, y, z], each within ±kMaxSceneCoordinate.
+Vec3 read_position(const YamlNode& node, const std::string& name);
 // A vec3 whose components are all >= 0 (colours).
 Color read_color(const YamlNode& node, const std::string& name);
 // A list of exactly `count` items, or a failure naming the expected shape.

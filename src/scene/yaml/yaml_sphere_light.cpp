@@ -9,7 +9,7 @@ namespace rtpro {
 void read_light_desc(const YamlNode& node, SphereLightDesc& desc) {
   const MappingReader light(node, "sphere light",
                             {"type", "name", "center", "radius", "color", "intensity", "samples"});
-  desc.center = read_vec3(light.required("center"), light.field("center"));
+  desc.center = read_position(light.required("center"), light.field("center"));
   const YamlNode& radius = light.required("radius");
   desc.radius = static_cast<float>(read_number(radius, light.field("radius")));
   if (!(desc.radius > 0.0f))

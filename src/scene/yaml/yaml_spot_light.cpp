@@ -32,7 +32,7 @@ Vec3 read_spot_axis(const MappingReader& light, const Vec3& position) {
   if (!look_at)
     fail_at(light.node(),
             "spot light needs 'direction' (the axis light travels along) or 'look_at' (a point on the axis)");
-  const Vec3 axis = read_vec3(*look_at, light.field("look_at")) - position;
+  const Vec3 axis = read_position(*look_at, light.field("look_at")) - position;
   if (!(length(axis) > 0.0f))
     fail_at(*look_at, light.field("look_at") + " must differ from position: the light needs an axis to shine along");
   return normalize(axis);
@@ -44,7 +44,7 @@ void read_light_desc(const YamlNode& node, SpotLightDesc& desc) {
   const MappingReader light(
       node, "spot light",
       {"type", "name", "position", "direction", "look_at", "color", "intensity", "inner_angle", "outer_angle"});
-  desc.position = read_vec3(light.required("position"), light.field("position"));
+  desc.position = read_position(light.required("position"), light.field("position"));
   desc.direction = read_spot_axis(light, desc.position);
   read_color_and_intensity(light, desc);
   const YamlNode* outer = light.optional("outer_angle");

@@ -32,7 +32,8 @@ Affine read_matrix(const YamlNode& node, const std::string& name) {
   for (int row = 0; row < 4; ++row) {
     for (int column = 0; column < 4; ++column) {
       const YamlNode& item = *items[row * 4 + column];
-      const double value = read_number(item, name);
+      // The last column is the translation: a position, not a factor.
+      const double value = column == 3 ? read_coordinate(item, name) : read_number(item, name);
       if (row < 3) {
         matrix.m[row][column] = static_cast<float>(value);
       } else if (value != (column == 3 ? 1.0 : 0.0)) {
@@ -44,7 +45,7 @@ Affine read_matrix(const YamlNode& node, const std::string& name) {
 }
 
 Affine read_step(std::string_view key, const YamlNode& value, const std::string& name) {
-  if (key == "translate") return Affine::translate(read_vec3(value, name));
+  if (key == "translate") return Affine::translate(read_position(value, name));
   if (key == "rotate") return read_rotation(value, name);
   if (key == "scale") return read_scale(value, name);
   return read_matrix(value, name);
@@ -107,9 +108,12 @@ Affine read_rotation(const YamlNode& node, const std::string& name) {
 Affine read_transform(const YamlNode& node, const std::string& name) {
   const Affine transform = node.is_sequence() ? read_step_list(node, name) : read_transform_mapping(node, name);
   for (const auto& row : transform.m) {
-    for (float value : row) {
-      if (!std::isfinite(value) || std::fabs(value) > kMaxSceneNumber)
-        fail_at(node, name + ": the combined transform has entries beyond ±1e9");
+    for (std::size_t column = 0; column < row.size(); ++column) {
+      const double bound = column == 3 ? kMaxSceneCoordinate : kMaxSceneNumber;
+      if (!std::isfinite(row[column]) || std::fabs(row[column]) > bound) {
+        fail_at(node, name + ": the combined transform has entries beyond ±1e9 (±1e16 for its translation, " +
+                          "the last column)");
+      }
     }
   }
   if (!inverse(transform)) {
