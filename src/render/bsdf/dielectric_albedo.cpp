@@ -3,6 +3,7 @@
 #include "dielectric.h"
 #include "microfacet.h"
 #include "table_coordinate.h"
+#include "visible_normal_quadrature.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -108,25 +109,16 @@ float integrate_rough_dielectric_albedo(float mu, float alpha, float eta, GlassF
   const GgxDistribution ggx{alpha};
   const Vec3 wo{std::sqrt(std::max(0.0f, 1.0f - mu * mu)), 0.0f, mu};
   const float g1_wo = ggx.g1(wo);
-  double sum = 0.0;
-  // A midpoint rule over the visible-normal sampler's square, with u.x = 1 − v²: at v → 0 the
-  // disk's rim maps to the steep facets that send light back into the surface.
-  for (int i = 0; i < quadrature; ++i) {
-    const double v = (i + 0.5) / quadrature;
-    double row = 0.0;
-    for (int j = 0; j < quadrature; ++j) {
-      const Sample2D u{static_cast<float>(1.0 - v * v), (static_cast<float>(j) + 0.5f) / quadrature};
-      const Vec3 wm = ggx.sample_visible_normal(wo, u);
-      const float wo_dot_wm = dot(wo, wm);
-      const float r = fresnel_of(fresnel, wo_dot_wm, eta);
-      const Vec3 reflected = -reflect(wo, wm);
-      if (reflected.z > 0.0f) row += r * ggx.g(wo, reflected);
-      const std::optional<Vec3> refracted = refract(-wo, wm, eta);
-      if (refracted && refracted->z < 0.0f) row += (1.0f - r) * ggx.g(wo, *refracted);
-    }
-    sum += 2.0 * v * row / g1_wo;  // du.x = 2v dv
-  }
-  return static_cast<float>(sum / (static_cast<double>(quadrature) * quadrature));
+  const double mean = visible_normal_quadrature(ggx, wo, quadrature, [&](const Vec3& wm) {
+    const float r = fresnel_of(fresnel, dot(wo, wm), eta);
+    float value = 0.0f;
+    const Vec3 reflected = -reflect(wo, wm);
+    if (reflected.z > 0.0f) value += r * ggx.g(wo, reflected);
+    const std::optional<Vec3> refracted = refract(-wo, wm, eta);
+    if (refracted && refracted->z < 0.0f) value += (1.0f - r) * ggx.g(wo, *refracted);
+    return value;
+  });
+  return static_cast<float>(mean / g1_wo);
 }
 
 float rough_dielectric_albedo(float mu, float alpha, float eta, GlassFresnel fresnel) {

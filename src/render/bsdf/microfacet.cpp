@@ -2,6 +2,7 @@
 
 #include "rtpro/core/math_constants.h"
 #include "table_coordinate.h"
+#include "visible_normal_quadrature.h"
 
 #include <algorithm>
 #include <array>
@@ -38,18 +39,10 @@ float single_scattering_albedo(float mu, float alpha) {
   const GgxDistribution ggx{alpha};
   const Vec3 wo{std::sqrt(std::max(0.0f, 1.0f - mu * mu)), 0.0f, mu};
   const float g1_wo = ggx.g1(wo);
-  double sum = 0.0;
-  for (int i = 0; i < kQuadrature; ++i) {
-    const double v = (i + 0.5) / kQuadrature;
-    double row = 0.0;
-    for (int j = 0; j < kQuadrature; ++j) {
-      const Sample2D u{static_cast<float>(1.0 - v * v), (static_cast<float>(j) + 0.5f) / kQuadrature};
-      const Vec3 wi = -reflect(wo, ggx.sample_visible_normal(wo, u));
-      if (wi.z > 0.0f) row += ggx.g(wo, wi) / g1_wo;
-    }
-    sum += 2.0 * v * row;  // du.x = 2v dv
-  }
-  return static_cast<float>(sum / (kQuadrature * kQuadrature));
+  return static_cast<float>(visible_normal_quadrature(ggx, wo, kQuadrature, [&](const Vec3& wm) -> float {
+    const Vec3 wi = -reflect(wo, wm);
+    return wi.z > 0.0f ? ggx.g(wo, wi) / g1_wo : 0.0f;
+  }));
 }
 
 // 2∫E(μ)μ dμ = 4∫E(x)x³ dx (x = √μ) of the interpolant, linear in x on each segment: three-point
