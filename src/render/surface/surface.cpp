@@ -146,6 +146,7 @@ void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, Surf
                                  : local_surface(group, hit, ray);
   sp.tangent = Vec3(0.0f);
   sp.bitangent_sign = 1.0f;
+  sp.fiber_offset = 0.0f;
   std::optional<TextureDerivatives> derivatives;
   if (has_image_texture(scene, local.material))
     derivatives = texture_coordinates(group, hit, local.geometric_normal, sp);

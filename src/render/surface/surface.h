@@ -31,6 +31,10 @@ struct SurfacePoint {
   // point along increasing v (a mirrored mapping or transform makes it −1).
   Vec3 tangent{0.0f};
   float bitangent_sign = 1.0f;
+  // Where across a curve's width the ray hit, from -1 to 1: pbrt's h, the signed distance of the
+  // hit from the fibre's axis over its radius, seen along the ray. A hair BSDF reads it with the
+  // curve's direction in `tangent`; 0 on every other shape.
+  float fiber_offset = 0.0f;
 };
 
 // Writes the shading point of `hit` (a hit of `ray`) into `out`; every field is set. Filling the
