@@ -156,35 +156,35 @@ std::size_t tiles_ahead(const RankClock& clock, int threads) {
 }
 
 // The next message of the handshake, or an error saying who has not been heard from.
-Message handshake_message(Communicator& communicator, std::chrono::milliseconds rank_timeout,
+Message handshake_message(Communicator& communicator, std::chrono::milliseconds start_timeout,
                           std::chrono::steady_clock::time_point deadline, const std::vector<bool>& heard) {
-  if (rank_timeout.count() <= 0) return wait_for_message(communicator);
+  if (start_timeout.count() <= 0) return wait_for_message(communicator);
   if (std::optional<Message> message = wait_for_message_until(communicator, deadline)) return std::move(*message);
-  const std::string waited = std::to_string(std::chrono::duration_cast<std::chrono::seconds>(rank_timeout).count());
+  const std::string waited = std::to_string(std::chrono::duration_cast<std::chrono::seconds>(start_timeout).count());
   if (communicator.rank() != 0)
     throw RuntimeError("distributed render: rank 0 did not answer the handshake within " + waited +
-                       " s (--rank-timeout): stopped, unreachable or still loading the scene");
+                       " s (--start-timeout): stopped, unreachable or still loading the scene");
   std::string silent;
   for (int r = 1; r < communicator.size(); ++r)
     if (!heard[std::size_t(r)]) silent += (silent.empty() ? "" : ", ") + std::to_string(r);
   throw RuntimeError("distributed render: rank " + silent + " did not reach the start of the job within " + waited +
-                     " s of rank 0 (--rank-timeout): stopped, unreachable or still loading the scene");
+                     " s of rank 0 (--start-timeout): stopped, unreachable or still loading the scene");
 }
 
 }  // namespace
 
-void agree_on_job(Communicator& communicator, const JobIdentity& identity, std::chrono::milliseconds rank_timeout) {
+void agree_on_job(Communicator& communicator, const JobIdentity& identity, std::chrono::milliseconds start_timeout) {
   const std::string text = identity.text();
-  const auto deadline = std::chrono::steady_clock::now() + rank_timeout;
+  const auto deadline = std::chrono::steady_clock::now() + start_timeout;
   std::vector<bool> heard(std::size_t(communicator.size()), false);
   if (communicator.rank() != 0) {
     communicator.send(0, kHello, std::as_bytes(std::span(text)));
-    const Message verdict = handshake_message(communicator, rank_timeout, deadline, heard);
+    const Message verdict = handshake_message(communicator, start_timeout, deadline, heard);
     if (verdict.tag != kVerdict) throw RuntimeError("distributed render: rank 0 did not answer the handshake");
     return;
   }
   for (int pending = communicator.size() - 1; pending > 0; --pending) {
-    const Message hello = handshake_message(communicator, rank_timeout, deadline, heard);
+    const Message hello = handshake_message(communicator, start_timeout, deadline, heard);
     if (hello.tag != kHello)
       throw RuntimeError("distributed render: rank " + std::to_string(hello.source) + " skipped the handshake");
     if (hello.source > 0 && hello.source < communicator.size()) heard[std::size_t(hello.source)] = true;
