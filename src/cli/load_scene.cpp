@@ -27,9 +27,11 @@ void add_environment_image(RenderCost& cost, const SceneDescription& scene) {
 
 }  // namespace
 
-LoadedScene load_scene(const SceneLoad& load, Log* log) {
+LoadedScene load_scene(const SceneLoad& load, Log* log,
+                       const std::function<void(const SceneDescription&)>& check_description) {
   LoadedScene loaded;
   loaded.description = parse_with_overrides(load.file, load.overrides);
+  if (check_description) check_description(loaded.description);
   const CameraDesc& camera = loaded.description.camera;
   check_region_fits(load.region, load.region_text, camera.width, camera.height);
   // Refused before anything large is allocated: image buffers, flattened instances, meshes.
