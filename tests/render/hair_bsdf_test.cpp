@@ -1,10 +1,13 @@
 // The hair BSDF (pbrt-v4's HairBSDF tests and more): without absorption it returns all the light it
 // receives for every roughness, offset and direction, integrated over the sphere (the white
 // furnace) and sampled (every sample's weight is the attenuation, 1); its sampler matches its pdf
-// (χ²).
+// (χ²); and on a surface it lines its fibre up with the tangent and puts its highlight where a
+// mirror would.
 #include "hair_bsdf.h"
 
 #include "bsdf_test_support.h"
+#include "material_bsdf.h"
+#include "rtpro/scene/hair_material.h"
 
 #include <gtest/gtest.h>
 
@@ -114,6 +117,59 @@ TEST(HairBsdf, FilterGlossyWidensBothRoughnesses) {
   EXPECT_EQ(bsdf.beta_n(), 0.4f);
   const Color albedo = furnace_integral(bsdf, test::direction(0.3f, 1.0f));
   EXPECT_NEAR(albedo.x, 1.0f, 0.01f);
+}
+
+// A hair material's BSDF at a surface point: its normal (0.6, 0, 0.8), its tangent along y.
+SurfaceBsdf hair_at(const Vec3& tangent, float fiber_offset = 0.0f) {
+  Material material;
+  material.model = HairSurface{0.05f, 0.05f, 0.0f, 1.55f, false, Color(1e3f), Color(0.0f)};
+  SurfacePoint point{};
+  point.shading_normal = point.geometric_normal = Vec3(0.6f, 0.0f, 0.8f);
+  point.front_face = true;
+  point.tangent = tangent;
+  point.fiber_offset = fiber_offset;
+  return material_bsdf(material, point, nullptr);
+}
+
+TEST(HairBsdf, TheFibreRunsAlongTheSurfacesTangent) {
+  const SurfaceBsdf surface = hair_at(Vec3(0.0f, 3.0f, 0.0f));
+  const HairBsdf& bsdf = std::get<HairBsdf>(surface.bsdf);
+  const Vec3 axis = surface.frame.to_world(bsdf.axis());
+  EXPECT_NEAR(axis.y, 1.0f, 1e-5f);
+  // A tangent with a part along the normal keeps the rest; none at all leaves some tangent.
+  const SurfaceBsdf tilted = hair_at(Vec3(0.6f, 1.0f, 0.8f));
+  const Vec3 tilted_axis = tilted.frame.to_world(std::get<HairBsdf>(tilted.bsdf).axis());
+  EXPECT_NEAR(tilted_axis.y, 1.0f, 1e-5f);
+  const SurfaceBsdf none = hair_at(Vec3(0.0f));
+  const Vec3 any = none.frame.to_world(std::get<HairBsdf>(none.bsdf).axis());
+  EXPECT_NEAR(length(any), 1.0f, 1e-5f);
+  EXPECT_NEAR(dot(any, Vec3(0.6f, 0.0f, 0.8f)), 0.0f, 1e-5f);
+}
+
+TEST(HairBsdf, OnASurfaceTheHighlightIsTheMirrorDirection) {
+  // Absorbing, nearly smooth hair reflects by R alone: where the shading normal mirrors wo,
+  // whatever the azimuth (h follows from wo and the normal).
+  const SurfaceBsdf surface = hair_at(Vec3(0.0f, 1.0f, 0.0f));
+  test::Uniforms u(50);
+  for (int i = 0; i < 20; ++i) {
+    const Vec3 wo = u.next_direction(0.3f, 1.0f);
+    const Vec3 mirror{-wo.x, -wo.y, wo.z};
+    const float peak = bsdf_eval(surface.bsdf, wo, mirror).x;
+    // 0.1 rad off the mirror direction, either way: the lobes are about 0.04 rad wide.
+    const ShadingFrame around = ShadingFrame::from_normal(mirror);
+    for (const Vec3& offset : {around.s, around.t, -around.s, -around.t}) {
+      const Vec3 beside = normalize(mirror + offset * 0.1f);
+      EXPECT_GT(peak * std::fabs(mirror.z), 2.0f * bsdf_eval(surface.bsdf, wo, beside).x * std::fabs(beside.z));
+    }
+  }
+}
+
+TEST(HairBsdf, ACurvesOffsetIsUsedAsGiven) {
+  // Seen along the normal, h = 0 from the geometry; a curve's offset of 0.9 moves the highlight.
+  const Vec3 wo = ShadingFrame::from_normal(Vec3(0.6f, 0.0f, 0.8f)).to_local(Vec3(0.6f, 0.0f, 0.8f));
+  const SurfaceBsdf centre = hair_at(Vec3(0.0f, 1.0f, 0.0f));
+  const SurfaceBsdf edge = hair_at(Vec3(0.0f, 1.0f, 0.0f), 0.9f);
+  EXPECT_GT(bsdf_eval(centre.bsdf, wo, wo).x, 10.0f * bsdf_eval(edge.bsdf, wo, wo).x);
 }
 
 }  // namespace hair_bsdf_test
