@@ -29,6 +29,11 @@ struct BsdfSample {
   BsdfLobe lobe;
 };
 
+// The largest float below 1, where a random number rescaled after a choice must stay.
+inline constexpr float kOneMinusEpsilon = 1.0f - 0x1p-24f;
+// A colour's channels averaged: the weight of a coloured lobe when one number picks among lobes.
+inline float channel_mean(const Color& c) { return (c.x + c.y + c.z) / 3.0f; }
+
 inline float cos_theta(const Vec3& w) { return w.z; }
 inline float abs_cos_theta(const Vec3& w) { return std::fabs(w.z); }
 inline bool same_hemisphere(const Vec3& a, const Vec3& b) { return a.z * b.z > 0.0f; }
