@@ -108,7 +108,7 @@ TEST(HairBsdf, SamplingWeightsAreTheAttenuation) {
     }
 }
 
-TEST(HairBsdf, SamplerMatchesPdf) {
+TEST(HairBsdfChi2, SamplerMatchesPdf) {
   const std::vector<Vec3> wos{test::direction(0.8f, 0.3f), test::direction(0.1f, 2.0f), test::direction(-0.5f, 4.0f)};
   test::expect_sampler_matches_pdf("hair beta 0.2/0.25 h 0.3 brown", fibre(0.2f, 0.25f, 0.3f, Color(0.3f, 0.6f, 1.2f)),
                                    wos, 200'000);
