@@ -16,7 +16,7 @@ namespace rtpro {
 // Memory one refined face (a quad as two triangles, or a Loop triangle) holds at its peak: its
 // triangles, vertices, normals and texture coordinates, a BVH over them, and OpenSubdiv's
 // topology tables while refining. Deliberately on the high side.
-inline constexpr std::uint64_t kBytesPerRefinedFace = 384;
+inline constexpr std::uint64_t kBytesPerRefinedFace = 512;
 
 // Faces of the cage at `level` (saturating): Catmull–Clark makes n quads of an n-gon, then 4 of
 // each quad per level; Loop 4 triangles of each triangle per level.
