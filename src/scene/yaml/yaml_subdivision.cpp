@@ -27,26 +27,31 @@ float read_sharpness(const YamlNode& node, const std::string& name) {
   return float(s);
 }
 
-void read_creases(const YamlNode& node, const std::string& name, SubdivisionDesc& desc) {
-  if (!node.is_sequence()) fail_at(node, name + ": expected a list of [v0, v1, sharpness], got " + node.describe());
+// A list of `count`-item lists (`shape` names one in messages), each handed to `read` with its
+// field name and place.
+template <typename Read>
+void read_tuples(const YamlNode& node, const std::string& name, std::size_t count, std::string_view shape,
+                 Read&& read) {
+  if (!node.is_sequence())
+    fail_at(node, name + ": expected a list of " + std::string(shape) + ", got " + node.describe());
   for (std::size_t i = 0; i < node.items().size(); ++i) {
     const YamlNode& item = *node.items()[i];
     const std::string field = name + "[" + std::to_string(i) + "]";
-    const YamlNodeList values = read_list(item, field, 3, "[v0, v1, sharpness]");
-    desc.creases.push_back({read_vertex(*values[0], field + "[0]"), read_vertex(*values[1], field + "[1]"),
-                            read_sharpness(*values[2], field + "[2]"), item.at.location()});
+    read(read_list(item, field, count, shape), field, item.at.location());
   }
 }
 
+void read_creases(const YamlNode& node, const std::string& name, SubdivisionDesc& desc) {
+  read_tuples(node, name, 3, "[v0, v1, sharpness]", [&](YamlNodeList v, const std::string& field, SourceLocation at) {
+    desc.creases.push_back({read_vertex(*v[0], field + "[0]"), read_vertex(*v[1], field + "[1]"),
+                            read_sharpness(*v[2], field + "[2]"), std::move(at)});
+  });
+}
+
 void read_corners(const YamlNode& node, const std::string& name, SubdivisionDesc& desc) {
-  if (!node.is_sequence()) fail_at(node, name + ": expected a list of [v, sharpness], got " + node.describe());
-  for (std::size_t i = 0; i < node.items().size(); ++i) {
-    const YamlNode& item = *node.items()[i];
-    const std::string field = name + "[" + std::to_string(i) + "]";
-    const YamlNodeList values = read_list(item, field, 2, "[v, sharpness]");
-    desc.corners.push_back(
-        {read_vertex(*values[0], field + "[0]"), read_sharpness(*values[1], field + "[1]"), item.at.location()});
-  }
+  read_tuples(node, name, 2, "[v, sharpness]", [&](YamlNodeList v, const std::string& field, SourceLocation at) {
+    desc.corners.push_back({read_vertex(*v[0], field + "[0]"), read_sharpness(*v[1], field + "[1]"), std::move(at)});
+  });
 }
 
 float read_finite(const YamlNode& node, const std::string& name) {
