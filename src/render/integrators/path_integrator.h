@@ -3,7 +3,8 @@
 // vertex whose BSDF is not purely specular, one light sample (LightSet: every light kind and every
 // emissive surface) and one BSDF sample, each weighted by the power heuristic against the other's
 // pdf; emission reached by a BSDF sample after a specular vertex (or by the camera ray) counts in
-// full. Russian roulette after kRouletteStart bounces, its number from the sampler.
+// full. Russian roulette after kRouletteStart bounces, on the throughput without refraction's 1/η²
+// radiance scale, its number from the sampler.
 //
 // Light linking (scene/light_links.h): a vertex samples among the lights that illuminate its
 // object, and emission a ray from it reaches is weighted by that vertex's pdfs; its shadow rays
@@ -37,6 +38,7 @@ class PathWorkspace {
     std::uint32_t sample;
     int bounce;
     Color beta;            // throughput from the camera to this ray's origin
+    float eta_scale;       // the product of η² of the path's refractions (BsdfSample::eta)
     Vec3 origin;           // the vertex the ray leaves (for the pdf of light sampling)
     float bsdf_pdf;        // solid-angle pdf of the ray's direction
     bool specular;         // the ray left a specular vertex or the camera: emission counts in full
