@@ -25,7 +25,13 @@ struct SceneBuildReport {
 // Upper bound on instances after flattening; deeper or wider nesting is an input error.
 inline constexpr std::size_t kMaxFlattenedInstances = 10'000'000;
 
+// Models the scene reader already loaded (MeshDesc::loaded, GltfDesc::loaded) are copied into
+// the render scene: `description` keeps them and can be built again.
 RenderScene build_render_scene(const SceneDescription& description, SceneBuildReport* report = nullptr);
+// The same, but those models move into the render scene (each one that no other entry shares) and
+// leave `description`: a mesh is never held twice, which for a mesh file of 100 million triangles
+// is gigabytes. What the commands use.
+RenderScene build_render_scene_taking_models(SceneDescription& description, SceneBuildReport* report = nullptr);
 
 // The render-time forms of the description's camera and lights (build_render_scene uses them;
 // tests that assemble a RenderScene by hand do too).

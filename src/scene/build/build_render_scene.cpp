@@ -33,6 +33,14 @@ WhittedMaterial whitted_material(const MaterialDesc& m, const ColorTexture& base
   return std::visit([&](const auto& params) { return whitted_approximation_of(params, m, base_color); }, m.params);
 }
 
+// A model the scene reader loaded (an entry's `loaded`, moved out of it): moved into the render
+// scene when this is its only holder, copied when another entry or description still holds it.
+template <typename Model>
+Model taken_or_copied(std::shared_ptr<Model> model) {
+  if (model.use_count() == 1) return std::move(*model);
+  return *model;
+}
+
 class RenderSceneBuilder {
  public:
   RenderSceneBuilder(const SceneDescription& description, SceneBuildReport* report)
@@ -134,7 +142,7 @@ class RenderSceneBuilder {
   TriangleMesh load_mesh(const MeshDesc& desc) {
     const auto start = std::chrono::steady_clock::now();
     LoadedMesh loaded = [&] {
-      if (desc.loaded) return *desc.loaded;
+      if (desc.loaded) return taken_or_copied(std::move(desc.loaded));
       try {
         return load_mesh_file(desc.file, MeshLoadOptions{desc.normals});
       } catch (const InputError& e) {
@@ -203,10 +211,10 @@ class RenderSceneBuilder {
     const auto key = std::make_tuple(desc.file, int(desc.normals), desc.material);
     if (const auto found = gltfs_.find(key); found != gltfs_.end()) return found->second;
     const auto start = std::chrono::steady_clock::now();
-    std::shared_ptr<const GltfAsset> asset = desc.loaded;
+    std::shared_ptr<GltfAsset> asset = std::move(desc.loaded);
     if (!asset) {
       try {
-        asset = std::make_shared<const GltfAsset>(load_gltf_file(desc.file, MeshLoadOptions{desc.normals}));
+        asset = std::make_shared<GltfAsset>(load_gltf_file(desc.file, MeshLoadOptions{desc.normals}));
       } catch (const InputError& e) {
         if (!e.where().file.empty()) throw;
         throw InputError(desc.where, e.message());
@@ -223,13 +231,16 @@ class RenderSceneBuilder {
     const auto material = [&](std::uint32_t m) {
       return desc.material != kNoMaterial ? desc.material : m == kNoMaterial ? 0u : remap[m];
     };
+    // Only the placements are read from here on: the meshes move into the prototypes unless
+    // another entry or description still holds the asset.
+    const bool sole_holder = asset.use_count() == 1;
     PlacedGltf placed{asset, {}};
-    for (const TriangleMesh& source : asset->meshes) {
+    for (TriangleMesh& source : asset->meshes) {
       if (source.triangles.empty()) {
         placed.prototype_of_mesh.emplace_back();
         continue;
       }
-      TriangleMesh mesh = source;
+      TriangleMesh mesh = sole_holder ? std::move(source) : source;
       mesh.material = material(mesh.material);
       if (desc.material != kNoMaterial) mesh.triangle_materials = {};
       for (std::uint32_t& m : mesh.triangle_materials) m = material(m);
@@ -296,7 +307,16 @@ class RenderSceneBuilder {
 }  // namespace
 
 RenderScene build_render_scene(const SceneDescription& description, SceneBuildReport* report) {
-  return RenderSceneBuilder(description, report).build();
+  // A shallow copy: the loaded models it shares with `description` are copied, never taken.
+  const SceneDescription shared = description;
+  return RenderSceneBuilder(shared, report).build();
+}
+
+RenderScene build_render_scene_taking_models(SceneDescription& description, SceneBuildReport* report) {
+  RenderScene scene = RenderSceneBuilder(description, report).build();
+  // An entry placing a glTF file another entry placed alike was never read: it lets go too.
+  for (GltfDesc& gltf : description.world.gltfs) gltf.loaded.reset();
+  return scene;
 }
 
 }  // namespace rtpro
