@@ -11,6 +11,7 @@
 #include "rtpro/core/printable_text.h"
 #include "rtpro/denoise/denoise.h"
 #include "rtpro/image/atomic_file_replacement.h"
+#include "rtpro/scene/scene_summary.h"
 
 #include <cstdio>
 #include <sstream>
@@ -121,12 +122,17 @@ Image finished_image(const RenderRequest& request, RenderResult& result, RenderS
   return image;
 }
 
-void report_statistics(const RenderRequest& request, RenderStatistics& stats, const Backend& backend,
-                       Clock::time_point start, Log& log) {
+void report_statistics(const RenderRequest& request, RenderStatistics& stats, const RenderScene& scene,
+                       const Backend& backend, Clock::time_point start, Log& log) {
   const BackendStats backend_stats = backend.stats();
   stats.rejected_rays = backend_stats.rejected_rays;
   stats.acceleration_bytes = backend_stats.acceleration_bytes;
   stats.peak_rss_bytes = peak_rss_bytes();
+  if (request.print_stats || !request.stats_json.empty()) {
+    const SceneSummary summary = summarize(scene);
+    stats.geometry_bytes = summary.geometry_bytes;
+    stats.triangles = summary.triangles_stored;
+  }
   stats.total_seconds = seconds_since(start);
   if (stats.rejected_rays > 0) log.warning(std::to_string(stats.rejected_rays) + " rays were rejected as untraceable");
   if (stats.nan_samples > 0) log.warning(std::to_string(stats.nan_samples) + " samples were NaN or infinite");
@@ -163,7 +169,9 @@ int deliver_render(const RenderRequest& request, RenderSession& session, RenderR
     if (result.complete()) journal->remove();
   }
   stats.write_seconds = seconds_since(write_start);
-  report_statistics(request, stats, session.backend(), times.start, log);
+  stats.peak_rss_after_load_bytes = times.peak_rss_after_load_bytes;
+  stats.peak_rss_after_build_bytes = session.peak_rss_after_build_bytes();
+  report_statistics(request, stats, session.scene(), session.backend(), times.start, log);
 
   if (!result.complete()) {
     say_interrupted(result, written, session.journal());

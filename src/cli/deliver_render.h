@@ -8,13 +8,16 @@
 #include "rtpro/render/renderer.h"
 
 #include <chrono>
+#include <cstddef>
 
 namespace rtpro::cli {
 
-// When the command started, and the seconds the scene took to read and build.
+// When the command started, the seconds the scene took to read and build, and the peak resident
+// set size by then.
 struct RenderTimes {
   std::chrono::steady_clock::time_point start;
   double load_seconds = 0.0;
+  std::size_t peak_rss_after_load_bytes = 0;
 };
 
 // The exit code: kExitOk, or kExitInterrupted when the image written is partial.

@@ -12,13 +12,6 @@ namespace rtpro::cli {
 
 namespace {
 
-// A model read while the scene was parsed is in the render scene now: the description's copy
-// would otherwise hold its memory through the render.
-void release_loaded_models(SceneDescription& description) {
-  for (MeshDesc& mesh : description.world.meshes) mesh.loaded.reset();
-  for (GltfDesc& gltf : description.world.gltfs) gltf.loaded.reset();
-}
-
 // The environment's image, from its header: a small run-length encoded file can declare gigabytes.
 void add_environment_image(RenderCost& cost, const SceneDescription& scene) {
   if (!scene.environment || scene.environment->file.empty()) return;
@@ -63,8 +56,10 @@ LoadedScene load_scene(const SceneLoad& load, Log* log,
   if (log)
     log->verbose("estimated memory: " + format_bytes(loaded.cost.total_bytes) + " of a budget of " +
                  format_bytes(load.memory.bytes));
-  loaded.scene = build_render_scene(loaded.description, &loaded.report, build_options(load.memory, loaded.cost));
-  release_loaded_models(loaded.description);
+  // A model read while the scene was parsed moves into the render scene: a copy would double the
+  // mesh's memory while the BVH is built.
+  loaded.scene =
+      build_render_scene_taking_models(loaded.description, &loaded.report, build_options(load.memory, loaded.cost));
   if (log) {
     for (const std::string& note : loaded.description.notes) log->info(note);
     if (const auto warning = unlit_scene_warning(loaded.scene)) log->warning(*warning);

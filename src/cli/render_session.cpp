@@ -2,6 +2,7 @@
 
 #include "interrupt.h"
 #include "progress.h"
+#include "render_stats.h"
 #include "tbb_workers.h"
 #include "rtpro/core/error.h"
 #include "rtpro/distributed/distributed_render.h"
@@ -68,6 +69,7 @@ void RenderSession::start_workers() {
 
 void RenderSession::build_backend() {
   backend_ = make_backend(request_.backend, loaded_.scene, request_.backend_options);
+  peak_rss_after_build_bytes_ = peak_rss_bytes();
   log_.verbose("built " + std::string(backend_->name()) + " acceleration structure in " +
                std::to_string(backend_->stats().build_seconds) + " s");
 }

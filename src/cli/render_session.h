@@ -39,6 +39,9 @@ class RenderSession {
 
   const RenderScene& scene() const { return loaded_.scene; }
   const Backend& backend() const { return *backend_; }
+  // The process's peak resident set size when the backend was built: the scene and its
+  // acceleration structure, with whatever their builds held at their peaks.
+  std::size_t peak_rss_after_build_bytes() const { return peak_rss_after_build_bytes_; }
   // The journal kept for --resume; null without one.
   TileJournal* journal() { return journal_.journal.get(); }
   // Every rank's figures of a distributed render; empty for one process.
@@ -60,6 +63,7 @@ class RenderSession {
   RenderOptions options_;
   std::optional<PrestartedThread> render_thread_;
   std::unique_ptr<Backend> backend_;
+  std::size_t peak_rss_after_build_bytes_ = 0;
   SceneImages images_;
   std::unique_ptr<TevClient> preview_;
   OpenedJournal journal_;

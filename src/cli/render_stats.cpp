@@ -63,12 +63,19 @@ std::string RenderStatistics::text() const {
                 "  rays          %s\n"
                 "  speed         %.2f Mrays/s\n"
                 "  rejected      %llu rays,  %llu NaN samples\n"
-                "  memory        peak RSS %.1f MiB, acceleration structure %.1f MiB\n",
+                "  memory        peak RSS %.1f MiB (%.1f after load, %.1f after build), geometry %.1f MiB, "
+                "acceleration structure %.1f MiB\n",
                 size_text(*this).c_str(), samples_text(samples, spp).c_str(), complete ? "" : " (interrupted: partial)",
                 backend.c_str(), threads, load_seconds, build_seconds, render_seconds, write_seconds, total_seconds,
                 rays_text(rays).c_str(), mrays_per_second(), static_cast<unsigned long long>(rejected_rays),
-                static_cast<unsigned long long>(nan_samples), mib(peak_rss_bytes), mib(acceleration_bytes));
+                static_cast<unsigned long long>(nan_samples), mib(peak_rss_bytes), mib(peak_rss_after_load_bytes),
+                mib(peak_rss_after_build_bytes), mib(geometry_bytes), mib(acceleration_bytes));
   std::string out = buffer;
+  if (triangles > 0) {
+    std::snprintf(buffer, sizeof buffer, "  triangles     %llu, %.1f bytes each (geometry and acceleration)\n",
+                  static_cast<unsigned long long>(triangles), bytes_per_triangle());
+    out += buffer;
+  }
   if (ranks.empty()) return out;
   std::snprintf(buffer, sizeof buffer,
                 "  ranks         %zu, load imbalance %.3f (busiest rank's busy time over the mean)\n", ranks.size(),
@@ -116,7 +123,14 @@ nlohmann::json RenderStatistics::json() const {
       {"mrays_per_second", mrays_per_second()},
       {"rejected_rays", rejected_rays},
       {"nan_samples", nan_samples},
-      {"memory_bytes", {{"peak_rss", peak_rss_bytes}, {"acceleration", acceleration_bytes}}}};
+      {"triangles", triangles},
+      {"bytes_per_triangle", bytes_per_triangle()},
+      {"memory_bytes",
+       {{"peak_rss", peak_rss_bytes},
+        {"peak_rss_after_load", peak_rss_after_load_bytes},
+        {"peak_rss_after_build", peak_rss_after_build_bytes},
+        {"geometry", geometry_bytes},
+        {"acceleration", acceleration_bytes}}}};
   if (region) {
     out["region"] = {region->x0, region->y0, region->x1, region->y1};
     out["crop"] = crop;

@@ -30,6 +30,14 @@ struct RenderStatistics {
   std::uint64_t rejected_rays = 0;
   std::uint64_t nan_samples = 0;
   std::size_t acceleration_bytes = 0;
+  // rtpro's own arrays of the shapes (vertices, indices, normals, texture coordinates, spheres):
+  // with acceleration_bytes, what the geometry costs; per stored triangle, bytes_per_triangle().
+  std::size_t geometry_bytes = 0;
+  std::uint64_t triangles = 0;  // stored once each, however often instanced
+  // The peak resident set size at the end of each phase, which tells which one holds the peak:
+  // reading the scene (files parsed, meshes assembled), building the backend, then the whole run.
+  std::size_t peak_rss_after_load_bytes = 0;
+  std::size_t peak_rss_after_build_bytes = 0;
   std::size_t peak_rss_bytes = 0;
   bool complete = true;
   int passes_done = 0, passes_total = 0;
@@ -38,6 +46,9 @@ struct RenderStatistics {
   std::vector<RankStats> ranks;      // of a distributed render (mpirun), by rank; empty otherwise
 
   double mrays_per_second() const { return render_seconds > 0 ? rays.total() / render_seconds * 1e-6 : 0.0; }
+  double bytes_per_triangle() const {
+    return triangles > 0 ? double(geometry_bytes + acceleration_bytes) / double(triangles) : 0.0;
+  }
   std::string text() const;
   nlohmann::json json() const;
 };

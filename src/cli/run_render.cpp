@@ -8,6 +8,7 @@
 #include "log.h"
 #include "render_request.h"
 #include "render_session.h"
+#include "render_stats.h"
 #include "spared_inputs.h"
 #include "rtpro/scene/scene_inputs.h"
 
@@ -32,6 +33,7 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   if (request.leader)
     check_outputs_spare_inputs(request, scene_inputs(loaded.description, loaded.report, loaded.scene));
   times.load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - times.start).count();
+  times.peak_rss_after_load_bytes = peak_rss_bytes();
 
   RenderSession session(request, loaded, job, log);
   if (!request.leader) return session.follow();

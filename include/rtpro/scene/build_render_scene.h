@@ -38,8 +38,15 @@ struct SceneBuildOptions {
   std::function<ScalarImage(const std::filesystem::path&, std::uint64_t max_bytes)> read_scalar_image = nullptr;
 };
 
+// Models the scene reader already loaded (MeshDesc::loaded, GltfDesc::loaded) are copied into
+// the render scene: `description` keeps them and can be built again.
 RenderScene build_render_scene(const SceneDescription& description, SceneBuildReport* report = nullptr,
                                const SceneBuildOptions& options = {});
+// The same, but those models move into the render scene (each one that no other entry shares) and
+// leave `description`: a mesh is never held twice, which for a mesh file of 100 million triangles
+// is gigabytes. What the commands use.
+RenderScene build_render_scene_taking_models(SceneDescription& description, SceneBuildReport* report = nullptr,
+                                             const SceneBuildOptions& options = {});
 
 // The render-time forms of the description's camera and lights (build_render_scene uses them;
 // tests that assemble a RenderScene by hand do too).

@@ -120,8 +120,9 @@ struct MeshDesc {
   NormalsMode normals = NormalsMode::kAuto;
   std::uint32_t linking = kNoLinking;
   // Set when the file was already loaded while the scene was read (a mesh file as the whole scene
-  // needs its bounds then); otherwise loaded by build_render_scene.
-  std::shared_ptr<const LoadedMesh> loaded = nullptr;
+  // needs its bounds then); otherwise loaded by build_render_scene. Mutable, as a cache: the
+  // render scene takes the mesh over when nothing else holds it (build_render_scene_taking_models).
+  mutable std::shared_ptr<LoadedMesh> loaded = nullptr;
   std::optional<SubdivisionDesc> subdivision = std::nullopt;  // the file's faces refined as a cage
   std::optional<DisplacementDesc> displacement = std::nullopt;
 };
@@ -135,8 +136,9 @@ struct GltfDesc {
   SourceLocation where;
   NormalsMode normals = NormalsMode::kAuto;
   // Set when the file was already loaded while the scene was read (a glTF file as the whole
-  // scene needs its cameras, lights and bounds then); otherwise loaded by build_render_scene.
-  std::shared_ptr<const GltfAsset> loaded;
+  // scene needs its cameras, lights and bounds then); otherwise loaded by build_render_scene,
+  // which takes its meshes over as MeshDesc::loaded says.
+  mutable std::shared_ptr<GltfAsset> loaded;
   std::uint32_t linking = kNoLinking;                         // every instance the file places
   std::optional<SubdivisionDesc> subdivision = std::nullopt;  // every mesh of the file refined
   std::optional<DisplacementDesc> displacement = std::nullopt;

@@ -29,10 +29,14 @@ struct RenderCost {
 };
 
 // Rough bytes per flattened instance (two 3×4 transforms and the geometry record in rtpro, an
-// instance geometry and BVH leaf in Embree) and per byte of mesh file (positions, normals,
-// indices and an Embree BVH, relative to the file's size). Deliberately on the high side.
+// instance geometry and BVH leaf in Embree) and per byte of mesh file: positions, normals and
+// indices with the BVH build at its peak (the BVH and the builder's scratch arrays), relative to
+// the file's size. A binary PLY spends about 19 bytes a triangle where text spends 35-40, for the
+// same ~140 bytes at the peak (benchmarks/scale_benchmark.sh, the dragon: docs/performance.md,
+// "Memory"). Deliberately on the high side.
 inline constexpr std::uint64_t kBytesPerInstance = 1024;
 inline constexpr std::uint64_t kMeshBytesPerFileByte = 4;
+inline constexpr std::uint64_t kMeshBytesPerBinaryFileByte = 8;
 
 // How many placements (nodes drawing a mesh) a glTF entry becomes.
 using GltfPlacementCount = std::function<std::uint64_t(const GltfDesc&)>;

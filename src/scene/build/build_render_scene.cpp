@@ -34,6 +34,14 @@ WhittedMaterial whitted_material(const MaterialDesc& m, const ColorTexture& base
   return std::visit([&](const auto& params) { return whitted_approximation_of(params, m, base_color); }, m.params);
 }
 
+// A model the scene reader loaded (an entry's `loaded`, moved out of it): moved into the render
+// scene when this is its only holder, copied when another entry or description still holds it.
+template <typename Model>
+Model taken_or_copied(std::shared_ptr<Model> model) {
+  if (model.use_count() == 1) return std::move(*model);
+  return *model;
+}
+
 class RenderSceneBuilder {
  public:
   RenderSceneBuilder(const SceneDescription& description, SceneBuildReport* report, const SceneBuildOptions& options)
@@ -137,7 +145,7 @@ class RenderSceneBuilder {
   TriangleMesh load_mesh(const MeshDesc& desc) {
     const auto start = std::chrono::steady_clock::now();
     LoadedMesh loaded = [&] {
-      if (desc.loaded) return *desc.loaded;
+      if (desc.loaded) return taken_or_copied(std::move(desc.loaded));
       try {
         return load_mesh_file(desc.file, MeshLoadOptions{desc.normals, desc.subdivision.has_value()});
       } catch (const InputError& e) {
@@ -226,10 +234,10 @@ class RenderSceneBuilder {
                                      desc.subdivision ? desc.where.str() : std::string());
     if (const auto found = gltfs_.find(key); found != gltfs_.end()) return found->second;
     const auto start = std::chrono::steady_clock::now();
-    std::shared_ptr<const GltfAsset> asset = desc.loaded;
+    std::shared_ptr<GltfAsset> asset = std::move(desc.loaded);
     if (!asset) {
       try {
-        asset = std::make_shared<const GltfAsset>(load_gltf_file(desc.file, MeshLoadOptions{desc.normals}));
+        asset = std::make_shared<GltfAsset>(load_gltf_file(desc.file, MeshLoadOptions{desc.normals}));
       } catch (const InputError& e) {
         if (!e.where().file.empty()) throw;
         throw InputError(desc.where, e.message());
@@ -246,13 +254,17 @@ class RenderSceneBuilder {
     const auto material = [&](std::uint32_t m) {
       return desc.material != kNoMaterial ? desc.material : m == kNoMaterial ? 0u : remap[m];
     };
+    // Only the placements are read from here on: the meshes move into the prototypes unless
+    // another entry or description still holds the asset.
+    const bool sole_holder = asset.use_count() == 1;
     PlacedGltf placed{asset, {}};
-    for (const TriangleMesh& source : asset->meshes) {
+    for (TriangleMesh& source : asset->meshes) {
       if (source.triangles.empty()) {
         placed.prototype_of_mesh.emplace_back();
         continue;
       }
-      TriangleMesh mesh = desc.subdivision ? subdivided_gltf_mesh(desc, source) : source;
+      TriangleMesh mesh =
+          desc.subdivision ? subdivided_gltf_mesh(desc, source) : (sole_holder ? std::move(source) : source);
       mesh.material = material(mesh.material);
       if (desc.material != kNoMaterial) mesh.triangle_materials = {};
       for (std::uint32_t& m : mesh.triangle_materials) m = material(m);
@@ -334,7 +346,17 @@ class RenderSceneBuilder {
 
 RenderScene build_render_scene(const SceneDescription& description, SceneBuildReport* report,
                                const SceneBuildOptions& options) {
-  return RenderSceneBuilder(description, report, options).build();
+  // A shallow copy: the loaded models it shares with `description` are copied, never taken.
+  const SceneDescription shared = description;
+  return RenderSceneBuilder(shared, report, options).build();
+}
+
+RenderScene build_render_scene_taking_models(SceneDescription& description, SceneBuildReport* report,
+                                             const SceneBuildOptions& options) {
+  RenderScene scene = RenderSceneBuilder(description, report, options).build();
+  // An entry placing a glTF file another entry placed alike was never read: it lets go too.
+  for (GltfDesc& gltf : description.world.gltfs) gltf.loaded.reset();
+  return scene;
 }
 
 }  // namespace rtpro

@@ -9,6 +9,8 @@
 #include "rtpro/core/printable_text.h"
 
 #include <algorithm>
+#include <fstream>
+#include <string_view>
 #include <map>
 #include <optional>
 #include <set>
@@ -48,11 +50,22 @@ std::uint64_t instances_of(const SceneDescription& scene, std::uint32_t object,
   return count;
 }
 
+// A binary PLY says so in its second line ("format binary_little_endian 1.0").
+bool is_binary_ply(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  char start[64] = {};
+  in.read(start, sizeof start);
+  const std::string_view head(start, static_cast<std::size_t>(in.gcount()));
+  return head.starts_with("ply") && head.find("format binary") != std::string_view::npos;
+}
+
 void add_file_bytes(const std::filesystem::path& file, std::set<std::filesystem::path>& seen, std::uint64_t& bytes) {
   if (!seen.insert(file).second) return;
   std::error_code error;
   const std::uintmax_t size = std::filesystem::file_size(file, error);
-  if (!error) bytes = saturating_add(bytes, saturating_multiply(size, kMeshBytesPerFileByte));
+  if (error) return;
+  const std::uint64_t per_byte = is_binary_ply(file) ? kMeshBytesPerBinaryFileByte : kMeshBytesPerFileByte;
+  bytes = saturating_add(bytes, saturating_multiply(size, per_byte));
 }
 
 // A glTF file's buffers may live in .bin files beside it: a loaded asset counts its meshes' own
