@@ -10,7 +10,8 @@ target_include_directories(rtpro_scene_headers INTERFACE ${scene_root})
 target_link_libraries(rtpro_scene_headers INTERFACE rtpro_core)
 
 rtpro_add_wing(scene mesh
-  SHARES ascii_scan.h large_buffer.h mapped_file.h mesh_limits.h mesh_normals.h mtl_parser.h path_containment.h
+  SHARES ascii_scan.h hair_file.h large_buffer.h mapped_file.h mesh_limits.h mesh_normals.h mtl_parser.h
+         path_containment.h
   PRIVATE_DEPENDS TBB::tbb)
 rtpro_add_wing(scene gltf SHARES gltf_asset.h gltf_loader.h USES mesh PRIVATE_DEPENDS TinyGLTF::TinyGLTF)
 rtpro_add_wing(scene yaml USES gltf mesh PRIVATE_DEPENDS PkgConfig::libyaml)
