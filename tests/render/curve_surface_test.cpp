@@ -48,7 +48,7 @@ TEST_P(CurveSurface, FibreFrameAndOffsetAcrossTheFibre) {
   const RenderScene scene = fibre_scene(GetParam().basis, GetParam().shape);
   const auto backend = make_backend(GetParam().backend, scene, {});
   // Rays down -z at offsets d across the fibre at y = 0.3: h = d / r, up to the sign convention
-  // (h along cross(ray, tangent)), the same on both shapes.
+  // (h along cross(tangent, ray)), the same on both shapes.
   for (const float d : {-0.015f, -0.005f, 0.0f, 0.01f, 0.018f}) {
     Ray ray{Vec3(0.1f, 0.3f + d, 3.0f), 0.0f, Vec3(0.0f, 0.0f, -1.0f), INFINITY};
     Hit hit;
@@ -58,8 +58,15 @@ TEST_P(CurveSurface, FibreFrameAndOffsetAcrossTheFibre) {
     EXPECT_NEAR(std::fabs(sp.tangent.x), 1.0f, 1e-4f);
     EXPECT_NEAR(dot(sp.tangent, sp.geometric_normal), 0.0f, 1e-3f);
     EXPECT_GT(dot(sp.geometric_normal, ray.dir * -1.0f), 0.0f);
-    // cross((0, 0, -1), (±1, 0, 0)) is (0, ∓1, 0): h = −d/r along +x.
-    EXPECT_NEAR(sp.fiber_offset, -d / 0.02f * sp.tangent.x, 0.03f) << d;
+    // cross((±1, 0, 0), (0, 0, -1)) is (0, ±1, 0): h = d/r along +x.
+    EXPECT_NEAR(sp.fiber_offset, d / 0.02f * sp.tangent.x, 0.03f) << d;
+    // The hair BSDF's own h on a round tube, from its frame (x the fibre, z the normal): −wo·y over
+    // wo's length across the fibre. A sign apart from it put the R highlight on the wrong side.
+    if (GetParam().shape == CurveShape::kRound) {
+      const Vec3 wo = ray.dir * -1.0f;
+      const Vec3 y = cross(sp.geometric_normal, sp.tangent);
+      EXPECT_NEAR(sp.fiber_offset, -dot(wo, y) / length(cross(sp.tangent, wo)), 0.03f) << d;
+    }
   }
 }
 

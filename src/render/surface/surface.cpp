@@ -74,8 +74,8 @@ Vec3 curve_direction(const BezierSegment& segment, float u) {
 
 // The hit on a fibre: its normal faces the ray (a round tube's points away from the axis; a flat
 // ribbon's lies across the fibre, towards the ray), `tangent` is the fibre's unit direction and
-// `fiber_offset` pbrt's h, the hit's signed offset from the axis along cross(ray, tangent) over the
-// radius: worked out from the hit point on both shapes (on a ribbon pbrt's −1 + 2v, whatever v
+// `fiber_offset` pbrt's h, the hit's signed offset from the axis along cross(tangent, ray) over the
+// radius (the hair BSDF's sign: on a round tube, the h its frame gives the normal): worked out from the hit point on both shapes (on a ribbon pbrt's −1 + 2v, whatever v
 // convention the backend has, so both backends give the same h). Secondary rays must clear the fibre, whose surface is known only to within the backends'
 // tolerance and which a ribbon turns to face every ray: `fibre_error` is pbrt's two widths (its
 // Curve's pError), a four-radius offset.
@@ -86,7 +86,7 @@ LocalSurface curve_surface(const CurveSet& curves, const Hit& hit, const Ray& ra
   const Vec3 tangent = curve_direction(segment, hit.u);
   const Vec3 p = ray.at(hit.t);
   const Vec3 facing = (ray.dir - tangent * dot(ray.dir, tangent)) * -1.0f;
-  Vec3 across = cross(ray.dir, tangent);
+  Vec3 across = cross(tangent, ray.dir);
   const float across_length = length(across);
   across = across_length > 0.0f ? across / across_length : Vec3(0.0f);
   const Vec3 offset = p - axis.position;
