@@ -27,6 +27,10 @@ struct BsdfSample {
   bool delta;
   bool transmitted;  // wi is on the other side of the surface from wo
   BsdfLobe lobe;
+  // For a refraction, η of the side wi leaves into over η of the side wo is on (pbrt-v4's
+  // BSDFSample::eta): f carries the radiance scale 1/η², which the path integrator takes out of
+  // the throughput its Russian roulette reads. 1 for every other sample.
+  float eta = 1.0f;
 };
 
 // The largest float below 1, where a random number rescaled after a choice must stay.

@@ -318,7 +318,7 @@ std::optional<BsdfSample> PrincipledBsdf::sample_delta(Lobe lobe, const Vec3& wo
     const Color weight = base_color_ * (Color(1.0f) - glass_fresnel(wo.z)) *
                          (o.below_fuzz * (1.0f - metalness_) * transmission_ / (etap * etap));
     return BsdfSample{weight / abs_cos_theta(*wi), *wi, o.probability[kTransmission], true, true,
-                      BsdfLobe::kTransmission};
+                      BsdfLobe::kTransmission,     etap};
   }
   Color weight(0.0f);
   float probability = 0.0f;
@@ -360,7 +360,9 @@ std::optional<BsdfSample> PrincipledBsdf::sample(const Vec3& wo, float u_lobe, S
   // f and pdf of the whole mixture, as eval() and pdf() compute them, so MIS weights match.
   const float pdf = density(wo, *wi, o);
   if (pdf == 0.0f) return std::nullopt;
-  return BsdfSample{evaluate(wo, *wi, o), *wi, pdf, false, !same_hemisphere(wo, *wi), lobe_kind(lobe)};
+  const bool transmitted = !same_hemisphere(wo, *wi);
+  return BsdfSample{
+      evaluate(wo, *wi, o), *wi, pdf, false, transmitted, lobe_kind(lobe), transmitted ? relative_eta(wo, eta_) : 1.0f};
 }
 
 Vec3 bsdf_from(const PrincipledSurface& p, const ColorTexture& base_color, const SurfacePoint& point,

@@ -43,6 +43,23 @@ void count_bounce(BsdfLobe lobe, Path& next) {
   }
 }
 
+// Russian roulette (pbrt-v4's rule): where β·eta_scale, the throughput without the 1/η² by which
+// the path's refractions scaled radiance, is below 1 in its largest channel m, the path ends with
+// probability q = 1 − m and a survivor's β is divided by 1 − q; a path with m >= 1 goes on as it
+// is. Read with the scale, roulette would end more than half of the paths inside glass (1/2.25 at
+// ior 1.5) and give the survivors 2.25; a floor on q would multiply β by 1/(1 − q) at every bounce
+// of the long chains of internal reflections in rough glass. Either spreads a white furnace,
+// where every path through glass brings back exactly 1, into pixels up to 1.17 at 256 spp.
+// Returns whether the path goes on.
+bool russian_roulette(Color& beta, float eta_scale, float u) {
+  const float survival = max_component(beta) * eta_scale;
+  if (!(survival < 1.0f)) return true;
+  const float q = 1.0f - survival;
+  if (u < q) return false;
+  beta = beta * (1.0f / (1.0f - q));
+  return true;
+}
+
 // Cycles' sample clamp: a contribution whose channels sum to more than `sum_limit` (3 × the
 // clamp, so that the channel mean is capped) is scaled down to it, its hue kept. An infinite
 // limit, clamping off, leaves every contribution as it was.
@@ -69,6 +86,9 @@ bool record_aovs(const Path& path, const Ray& ray, const Hit& hit, const Surface
 //   L += β·Le·w_b                the emission the ray found, MIS-weighted against light sampling
 //   L += β·f·|cos θ|·Le·w_l/p_l  next-event estimation: a light sample, added if its shadow ray passes
 //   β *= f·|cos θ|/p_b           the BSDF sample, the path's next ray if it survives Russian roulette
+// kLightPathControls: compiled with Cycles' controls (clamps, per-lobe depths, Filter Glossy); without
+// them, a scene that sets none pays for none of their tests on its hottest loop.
+template <bool kLightPathControls>
 class PathVertexStep {
  public:
   // `cosine_directions`: the vertices' samples hold their Lambert directions (VertexDraws);
@@ -80,7 +100,12 @@ class PathVertexStep {
         direct_limit_(clamp_sum_limit(scene.render.path.clamp_direct)),
         indirect_limit_(clamp_sum_limit(scene.render.path.clamp_indirect)),
         clamping_(scene.render.path.clamp_direct > 0.0f || scene.render.path.clamp_indirect > 0.0f),
-        filter_glossy_(scene.render.path.filter_glossy) {}
+        filter_glossy_(scene.render.path.filter_glossy), max_depth_(scene.render.max_depth),
+        lobe_limits_(depths_.diffuse < max_depth_ || depths_.glossy < max_depth_ || depths_.transmission < max_depth_),
+        filtering_glossy_(filter_glossy_ > 0.0f) {}
+
+  // Whether the scene sets any of Cycles' controls this step is compiled for.
+  bool controls_apply() const { return clamping_ || lobe_limits_ || filtering_glossy_; }
 
   // `vertex`: the path's place in the generation; `sp` the surface of a valid hit (make_surfaces),
   // unread otherwise; `u` the vertex's random numbers, read only below max_depth.
@@ -128,34 +153,35 @@ class PathVertexStep {
         queue_light_sample(path.sample, origins, surface, wo, *light, beta,
                            path.bounce == 0 ? direct_limit_ : indirect_limit_);
 
-    // The BSDF sample: β·f·|cos θ|/p_b, then Russian roulette from kRouletteStart on, by the
-    // throughput (q the probability of ending, survivors weighted by 1/(1 − q)).
+    // The BSDF sample: β·f·|cos θ|/p_b, then Russian roulette (russian_roulette).
     const std::optional<BsdfSample> bs = sample_bsdf(surface.bsdf, wo, u, cosine_directions_);
     if (!bs || !(bs->pdf > 0.0f) || carries_no_light(bs->f)) return;
     Color next_beta = beta * bs->f * (std::fabs(bs->wi.z) / bs->pdf);
-    if (path.bounce >= kRouletteStart) {
-      const float q = std::max(0.05f, 1.0f - max_component(next_beta));
-      if (u.roulette < q) return;
-      next_beta = next_beta * (1.0f / (1.0f - q));
-    }
+    const float eta_scale = bs->transmitted ? path.eta_scale * (bs->eta * bs->eta) : path.eta_scale;
+    if (path.bounce >= kRouletteStart && !russian_roulette(next_beta, eta_scale, u.roulette)) return;
     if (!is_finite(next_beta) || carries_no_light(next_beta)) return;
     // The path's next ray, inside the dielectric it was refracted into, or outside again.
     const Vec3 direction = surface.frame.to_world(bs->wi);
     std::uint32_t medium = path.medium;
     if (bs->transmitted && interior_of(material)) medium = sp.front_face ? sp.material : PathWorkspace::kOutside;
-    Path& next = ws_.next_paths.emplace_back(path);
-    next.bounce = path.bounce + 1;
-    next.beta = next_beta;
-    next.origin = sp.position;
-    next.bsdf_pdf = bs->pdf;
-    next.specular = bs->delta;
-    next.aov_pending = aov_pending;
-    next.transmitted = bs->transmitted;
-    next.medium = medium;
-    next.group = group;
+    Path& next = ws_.next_paths.emplace_back(Path{.sample = path.sample,
+                                                  .bounce = static_cast<std::uint16_t>(path.bounce + 1),
+                                                  .diffuse_bounces = path.diffuse_bounces,
+                                                  .glossy_bounces = path.glossy_bounces,
+                                                  .transmission_bounces = path.transmission_bounces,
+                                                  .beta = next_beta,
+                                                  .eta_scale = eta_scale,
+                                                  .origin = sp.position,
+                                                  .bsdf_pdf = bs->pdf,
+                                                  .min_pdf = path.min_pdf,
+                                                  .medium = medium,
+                                                  .group = group,
+                                                  .specular = bs->delta,
+                                                  .aov_pending = aov_pending,
+                                                  .transmitted = bs->transmitted});
     // A delta sample's pdf is the lobe's probability, not a density: it roughens nothing.
-    if (!bs->delta) next.min_pdf = std::min(path.min_pdf, bs->pdf);
-    count_bounce(bs->lobe, next);
+    if (kLightPathControls && filtering_glossy_ && !bs->delta) next.min_pdf = std::min(path.min_pdf, bs->pdf);
+    if (kLightPathControls && lobe_limits_) count_bounce(bs->lobe, next);
     append_ray(ws_.next_rays, spawn_ray(origins, direction));
   }
 
@@ -164,8 +190,10 @@ class PathVertexStep {
   // or as many of one lobe kind as that kind's limit (Cycles' per-kind bounce limits, which end a
   // path at the surface after the bounce that reached one).
   bool ends_here(const Path& path) const {
-    return path.bounce >= scene_.render.max_depth || path.diffuse_bounces >= depths_.diffuse ||
-           path.glossy_bounces >= depths_.glossy || path.transmission_bounces >= depths_.transmission;
+    if (path.bounce >= max_depth_) return true;
+    return kLightPathControls && lobe_limits_ &&
+           (path.diffuse_bounces >= depths_.diffuse || path.glossy_bounces >= depths_.glossy ||
+            path.transmission_bounces >= depths_.transmission);
   }
 
   // Cycles' Filter Glossy: after BSDF samples of small pdf (diffuse or rough bounces), the
@@ -173,14 +201,15 @@ class PathVertexStep {
   // highlight seen through a diffuse bounce becomes a blur the BSDF samples find, not a caustic
   // only rare samples do. Off (0), or after the camera and delta bounces only, nothing changes.
   void filter_glossy(const Path& path, Bsdf& bsdf) const {
-    if (path.min_pdf < filter_glossy_) roughen_bsdf(bsdf, 0.5f * std::sqrt(1.0f - path.min_pdf / filter_glossy_));
+    if (kLightPathControls && filtering_glossy_ && path.min_pdf < filter_glossy_)
+      roughen_bsdf(bsdf, 0.5f * std::sqrt(1.0f - path.min_pdf / filter_glossy_));
   }
 
   // The clamp of light reaching the camera through the ray that found it: direct for the camera
   // ray and the first vertex's rays (at most one scattering), indirect after.
   float emission_limit(const Path& path) const { return path.bounce <= 1 ? direct_limit_ : indirect_limit_; }
   Color clamp(const Color& contribution, float sum_limit) const {
-    return clamping_ ? clamped(contribution, sum_limit) : contribution;
+    return kLightPathControls && clamping_ ? clamped(contribution, sum_limit) : contribution;
   }
 
   // w_b, the weight of emission a BSDF sample found: in full after the camera or a specular
@@ -275,6 +304,10 @@ class PathVertexStep {
   float direct_limit_, indirect_limit_;  // clamp_sum_limit of the clamps
   bool clamping_;                        // either clamp on: a contribution's sum is worth computing
   float filter_glossy_;                  // 0: off
+  int max_depth_;
+  // Work only some scenes ask for: the per-lobe counts (a limit below max_depth), Filter Glossy.
+  bool lobe_limits_;
+  bool filtering_glossy_;
 };
 
 // Every camera ray as the first ray of its sample's path, every result cleared.
@@ -285,18 +318,19 @@ void start_camera_paths(const CameraBatch& batch, PathWorkspace& ws) {
     batch.results[i] = SampleResult{};
     ws.paths.push_back({.sample = i,
                         .bounce = 0,
-                        .beta = Color(1.0f),
-                        .origin = batch.rays[i].org,
-                        .bsdf_pdf = 0.0f,
-                        .specular = true,
-                        .aov_pending = true,
-                        .transmitted = false,
-                        .medium = PathWorkspace::kOutside,
-                        .group = 0,
-                        .min_pdf = std::numeric_limits<float>::infinity(),
                         .diffuse_bounces = 0,
                         .glossy_bounces = 0,
-                        .transmission_bounces = 0});
+                        .transmission_bounces = 0,
+                        .beta = Color(1.0f),
+                        .eta_scale = 1.0f,
+                        .origin = batch.rays[i].org,
+                        .bsdf_pdf = 0.0f,
+                        .min_pdf = std::numeric_limits<float>::infinity(),
+                        .medium = PathWorkspace::kOutside,
+                        .group = 0,
+                        .specular = true,
+                        .aov_pending = true,
+                        .transmitted = false});
   }
 }
 
@@ -321,8 +355,15 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
   counts[RayKind::kCamera] += batch.rays.size();
   // Asked per batch, not kept: it points into lights_, which a copy of the integrator would not share.
   const std::optional<LightSet::LonePointLight> lone_point_light = lights_.lone_point_light();
-  PathVertexStep step(scene, lights_, batch.results, ws, textures_, draws_.cosine_directions,
-                      lone_point_light.has_value());
+  PathVertexStep<true> controlled_step(scene, lights_, batch.results, ws, textures_, draws_.cosine_directions,
+                                       lone_point_light.has_value());
+  PathVertexStep<false> plain_step(scene, lights_, batch.results, ws, textures_, draws_.cosine_directions,
+                                   lone_point_light.has_value());
+  const bool controlled = controlled_step.controls_apply();
+  const auto extend_generation = [&](auto& step) {
+    for (std::size_t i = 0; i < ws.paths.size(); ++i)
+      step.extend(i, ws.paths[i], ws.rays[i], ws.hits[i], ws.surfaces[i], ws.samples[i]);
+  };
   for (int generation = 0; !ws.paths.empty(); ++generation) {
     ws.hits.resize(ws.rays.size());
     backend_.intersect(ws.rays, ws.hits, generation == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
@@ -337,8 +378,8 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
       ws.samples.draw(sampler, path_keys(batch.keys, ws), generation, draws_);
       if (lone_point_light) ws.samples.sample_lone_point_light(*lone_point_light, ws.surfaces);
     }
-    for (std::size_t i = 0; i < ws.paths.size(); ++i)
-      step.extend(i, ws.paths[i], ws.rays[i], ws.hits[i], ws.surfaces[i], ws.samples[i]);
+    if (controlled) extend_generation(controlled_step);
+    else extend_generation(plain_step);
 
     ws.occluded.resize(ws.shadow_rays.size());
     occluded_with_shadow_linking(backend_, scene.links, ws.shadow_rays, ws.shadow_lights, ws.occluded,
