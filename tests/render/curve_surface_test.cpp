@@ -95,12 +95,13 @@ TEST_P(CurveSurface, SpawnedRaysNeverReHitTheFibre) {
       // point far along, meets no part of that fibre again.
       for (const Ray& spawned : {spawn_ray(sp, direction), spawn_ray_to(sp, sp.position + direction * 3.0f)}) {
         Hit again;
-        if (backend->intersect(spawned, again))
+        if (backend->intersect(spawned, again)) {
           EXPECT_NE(std::lround(
                         bezier_segment(std::get<CurveSet>(scene.top.geometries[0]), again.prim_id).at(0.5f).position.y /
                         0.3f),
                     std::lround(sp.position.y / 0.3f))
               << "ray " << i << " re-hits its fibre at t " << again.t;
+        }
       }
     }
   }
