@@ -9,13 +9,22 @@ namespace rtpro {
 std::optional<std::string> embree_refusal(const CurveSet& curves) {
   for (std::size_t i = 0; i < curves.points.size(); ++i) {
     const CurvePoint& p = curves.points[i];
-    if (!within_traceable_range(p.position) || !(p.radius >= 0.0f) || !std::isfinite(p.radius))
+    if (!within_traceable_range(p.position) || !std::isfinite(p.radius))
       return "has curve control point " + std::to_string(i) + " outside Embree's range or with a bad radius";
   }
   const std::size_t span = control_points_per_segment(curves.basis);
   for (const std::uint32_t first : curves.segments)
     if (first + span > curves.points.size())
       return "has a curve segment past its " + std::to_string(curves.points.size()) + " control points";
+  // A control point's radius may be negative (a B-spline's phantom end, scene/curve_geometry.h), a
+  // segment's may not: Embree's rule. Its Bézier radii bound it; a blend of radii that should come
+  // to 0 may round to a hair below.
+  for (std::uint32_t prim = 0; prim < curves.segments.size(); ++prim) {
+    const BezierSegment segment = bezier_segment(curves, prim);
+    const float floor = -1e-5f * std::fabs(segment.largest_radius());
+    for (const CurvePoint& c : segment.c)
+      if (!(c.radius >= floor)) return "has curve segment " + std::to_string(prim) + " with a negative radius";
+  }
   return std::nullopt;
 }
 

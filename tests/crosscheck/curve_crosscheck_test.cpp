@@ -18,15 +18,23 @@ namespace curve_crosscheck_test {
 CurveSet random_curves(std::mt19937& rng, int strands, CurveBasis basis, CurveShape shape) {
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   std::uniform_real_distribution<float> radius(0.01f, 0.06f);
+  // The draws one statement each: the order of a call's arguments is unspecified (gcc and clang
+  // differ), and the scene must be the same under both.
+  const auto random_vec = [&] {
+    const float x = unit(rng);
+    const float y = unit(rng);
+    const float z = unit(rng);
+    return Vec3(x, y, z);
+  };
   std::vector<CurvePoint> points;
   std::vector<std::uint32_t> counts;
   const int per_strand = basis == CurveBasis::kBezier ? 7 : 5;
   for (int s = 0; s < strands; ++s) {
-    Vec3 p(unit(rng), unit(rng), unit(rng));
-    const Vec3 heading = normalize(Vec3(unit(rng), unit(rng), unit(rng)));
+    Vec3 p = random_vec();
+    const Vec3 heading = normalize(random_vec());
     for (int i = 0; i < per_strand; ++i) {
       points.push_back({p, radius(rng)});
-      p += (heading + Vec3(unit(rng), unit(rng), unit(rng)) * 0.4f) * 0.25f;
+      p += (heading + random_vec() * 0.4f) * 0.25f;
     }
     counts.push_back(per_strand);
   }

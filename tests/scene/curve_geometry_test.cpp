@@ -14,6 +14,7 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rtpro::test {
@@ -77,11 +78,18 @@ TEST(HairFile, ReadsStrandsThicknessAndColour) {
 
 TEST(HairFile, StrandsBecomeSegmentsOfEachBasis) {
   EXPECT_EQ(load_curves(hair_entry({}, CurveBasis::kLinear)).segments.size(), 5u);
-  EXPECT_EQ(load_curves(hair_entry({}, CurveBasis::kBSpline)).segments.size(), 4u + 5u);
-  // A B-spline strand with its ends repeated thrice starts and ends at them.
+  EXPECT_EQ(load_curves(hair_entry({}, CurveBasis::kBSpline)).segments.size(), 2u + 3u);
+  // A B-spline strand, given a phantom point past each end, starts and ends at them, leaving them
+  // along the strand (p1 − p0 per unit of u), not with the zero tangent of an end repeated thrice,
+  // which Embree's round curves cannot sweep a circle along.
   const CurveSet bspline = load_curves(hair_entry({}, CurveBasis::kBSpline));
-  EXPECT_NEAR(bezier_segment(bspline, 0).at(0.0f).position.x, 0.0f, 1e-6f);
-  EXPECT_NEAR(bezier_segment(bspline, 8).at(1.0f).position.x, 6.0f, 1e-5f);
+  const BezierSegment first = bezier_segment(bspline, 0), last = bezier_segment(bspline, 4);
+  EXPECT_NEAR(first.at(0.0f).position.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(last.at(1.0f).position.x, 6.0f, 1e-5f);
+  EXPECT_NEAR(first.derivative(0.0f).x, 1.0f, 1e-5f);
+  EXPECT_NEAR(first.derivative(0.0f).y, 0.5f, 1e-5f);
+  EXPECT_NEAR(last.derivative(1.0f).x, 1.0f, 1e-5f);
+  EXPECT_NEAR(first.at(0.0f).radius, 0.01f, 1e-8f);
   HairSpec bezier;
   bezier.strands = 1;
   bezier.segments = {6};
@@ -171,16 +179,29 @@ TEST(CurvesEntry, EmittingCurvesAreRefused) {
   }
 }
 
+// The hostile files through the command line: a truncated file, a negative thickness and a
+// header claiming 10^9 segments (a strand of the default segment count) each end the render with
+// exit status 2 and the file named, writing no image.
 TEST(CurvesEntry, ABadHairFileEndsTheRenderWithExitTwo) {
   const std::filesystem::path output = scratch_dir() / "fur.png";
   HairSpec truncated;
   truncated.cut = 9;
-  write_file("fur.hair", hair_bytes(truncated));
-  const auto scene = write_file("fur.yaml", kHeader + "world:\n  - {type: curves, file: fur.hair}\n");
-  const std::string out = run_rtpro(render_args(scene, output, "--size 8x8 --spp 1"), 2);
-  EXPECT_NE(out.find("fur.hair"), std::string::npos) << out;
-  EXPECT_NE(out.find("truncated"), std::string::npos) << out;
-  EXPECT_FALSE(std::filesystem::exists(output));
+  HairSpec negative;
+  negative.thickness = -0.01f;
+  std::string billion = hair_bytes({});
+  const std::uint32_t no_segments_array = 2 | 4 | 16, segments = 1000000000u;
+  std::memcpy(billion.data() + 12, &no_segments_array, 4);
+  std::memcpy(billion.data() + 16, &segments, 4);
+  const std::pair<std::string, std::string> cases[] = {
+      {hair_bytes(truncated), "truncated"}, {hair_bytes(negative), "thickness"}, {billion, "strands already need"}};
+  for (const auto& [bytes, problem] : cases) {
+    write_file("fur.hair", bytes);
+    const auto scene = write_file("fur.yaml", kHeader + "world:\n  - {type: curves, file: fur.hair}\n");
+    const std::string out = run_rtpro(render_args(scene, output, "--size 8x8 --spp 1"), 2);
+    EXPECT_NE(out.find("fur.hair"), std::string::npos) << out;
+    EXPECT_NE(out.find(problem), std::string::npos) << out;
+    EXPECT_FALSE(std::filesystem::exists(output));
+  }
 }
 
 }  // namespace curve_geometry_test

@@ -50,9 +50,9 @@ struct CurveSet {
 inline std::uint32_t control_points_per_segment(CurveBasis basis) { return basis == CurveBasis::kLinear ? 2 : 4; }
 
 // Strands of consecutive control points (`points` laid out strand after strand, strand s having
-// `strand_points[s]` of them) as segments of `basis`. Cubic strands get their end points repeated
-// so the curve starts and ends at them (Catmull–Rom and B-spline) and a strand of 2 points still
-// makes a segment; a Bézier strand needs 3k + 1 points. The error names the strand.
+// `strand_points[s]` of them) as segments of `basis`. Cubic strands get a point past each end so the
+// curve starts and ends there along the strand (Catmull–Rom: the end again; B-spline: the end
+// reflected through its neighbour); a Bézier strand needs 3k + 1 points. The error names the strand.
 CurveSet curves_from_strands(std::vector<CurvePoint> points, const std::vector<std::uint32_t>& strand_points,
                              CurveBasis basis);
 

@@ -18,17 +18,19 @@ std::size_t CurveSet::memory_bytes() const {
 
 namespace {
 
-// How often a cubic strand's first and last points are repeated so the curve reaches them: once
-// for Catmull–Rom (which passes through its inner two control points), twice for a B-spline
-// (which passes through a point repeated three times).
-std::uint32_t end_repeats(CurveBasis basis) {
-  switch (basis) {
-    case CurveBasis::kLinear:
-    case CurveBasis::kBezier: return 0;
-    case CurveBasis::kCatmullRom: return 1;
-    case CurveBasis::kBSpline: return 2;
-  }
-  return 0;
+// The points a cubic strand gets before its first and after its last so the curve runs from the
+// one to the other: a copy of the end for Catmull–Rom (which passes through its inner two control
+// points, with the tangent (p1 − p0) / 2 there), and for a B-spline the end reflected through its
+// neighbour, 2·p0 − p1 (a phantom point: the segment then starts at p0 with the tangent p1 − p0
+// and no bend). A B-spline end repeated three times instead starts the curve at p0 with a zero
+// tangent, where Embree's sweep of a circle along the curve has no direction and reports hits a
+// radius off the tube. The phantom's radius, 2·r0 − r1, may be negative (Embree allows that); the
+// segment's radius, a blend of the strand's own, is not.
+bool has_end_points(CurveBasis basis) { return basis == CurveBasis::kCatmullRom || basis == CurveBasis::kBSpline; }
+
+CurvePoint end_point(CurveBasis basis, const CurvePoint& end, const CurvePoint& neighbour) {
+  if (basis != CurveBasis::kBSpline) return end;
+  return {end.position * 2.0f - neighbour.position, end.radius * 2.0f - neighbour.radius};
 }
 
 }  // namespace
@@ -37,10 +39,10 @@ CurveSet curves_from_strands(std::vector<CurvePoint> points, const std::vector<s
                              CurveBasis basis) {
   CurveSet curves;
   curves.basis = basis;
-  const std::uint32_t repeats = end_repeats(basis);
+  const bool ends = has_end_points(basis);
   const std::uint32_t step = basis == CurveBasis::kBezier ? 3 : 1;
   const std::uint32_t span = control_points_per_segment(basis) - 1;
-  curves.points.reserve(points.size() + 2 * repeats * strand_points.size());
+  curves.points.reserve(points.size() + (ends ? 2 : 0) * strand_points.size());
   std::size_t first = 0;
   for (std::size_t s = 0; s < strand_points.size(); ++s) {
     const std::uint32_t n = strand_points[s];
@@ -55,10 +57,11 @@ CurveSet curves_from_strands(std::vector<CurvePoint> points, const std::vector<s
       throw InputError("strand " + std::to_string(s) + " has " + std::to_string(n) +
                        " points; a Bezier strand needs 3k + 1 (4, 7, 10, ...)");
     const auto start = static_cast<std::uint32_t>(curves.points.size());
-    for (std::uint32_t r = 0; r < repeats; ++r) curves.points.push_back(points[first]);
+    const std::size_t last = first + n - 1;
+    if (ends) curves.points.push_back(end_point(basis, points[first], points[first + 1]));
     curves.points.insert(curves.points.end(), points.begin() + static_cast<std::ptrdiff_t>(first),
-                         points.begin() + static_cast<std::ptrdiff_t>(first + n));
-    for (std::uint32_t r = 0; r < repeats; ++r) curves.points.push_back(points[first + n - 1]);
+                         points.begin() + static_cast<std::ptrdiff_t>(last + 1));
+    if (ends) curves.points.push_back(end_point(basis, points[last], points[last - 1]));
     const auto stored = static_cast<std::uint32_t>(curves.points.size()) - start;
     for (std::uint32_t i = 0; i + span < stored; i += step) curves.segments.push_back(start + i);
     first += n;
@@ -68,14 +71,16 @@ CurveSet curves_from_strands(std::vector<CurvePoint> points, const std::vector<s
 
 namespace {
 
-// The per-point colours follow the points through the repeats curves_from_strands adds.
+// The per-point colours follow the points through the end points curves_from_strands adds (a
+// B-spline's phantom colour, extrapolated like its position, kept at or above 0).
 std::vector<Color> colors_of_strands(const std::vector<Color>& colors, const std::vector<std::uint32_t>& strands,
                                      CurveBasis basis) {
   std::vector<CurvePoint> carried;
   carried.reserve(colors.size());
   for (const Color& c : colors) carried.push_back({c, 0.0f});
   std::vector<Color> out;
-  for (const CurvePoint& p : curves_from_strands(std::move(carried), strands, basis).points) out.push_back(p.position);
+  for (const CurvePoint& p : curves_from_strands(std::move(carried), strands, basis).points)
+    out.push_back(max(p.position, Vec3(0.0f)));
   return out;
 }
 
