@@ -51,12 +51,13 @@ inline Tolerance tolerance_for(BackendKind backend, const RenderScene& scene) {
   // of 1e-3 and more). The threshold separates the two; the pixel share bounds the edge flips and
   // the mean error catches a shift of the whole image that stays under the threshold everywhere.
   // Curves differ by construction, within a stated share of their radius (docs/backends.md): every
-  // fibre's silhouette and ends move a little, so a few percent of a furry image's pixels differ.
+  // fibre's silhouette and ends move a little, so a few percent of a furry image's pixels differ, and
+  // under the path integrator a path that meets another fibre goes on elsewhere.
   if (has_curves(scene)) {
     CompareThresholds curves;
     curves.fail = curves.warn = 1e-3f;
-    curves.fail_percent = 4.0;
-    curves.max_mean_error = 5e-4;
+    curves.fail_percent = 10.0;
+    curves.max_mean_error = 8e-4;
     return {"embree, curves", curves};
   }
   CompareThresholds meshes;
