@@ -4,6 +4,7 @@
 // sphere_backend.h). A new kind of shape is its header's include here and its case in
 // visit_geometry; the native traversal, the Embree scene builder and the Embree backend then name
 // whatever it still lacks.
+#include "curve_backend.h"
 #include "sphere_backend.h"
 #include "triangle_backend.h"
 #include "rtpro/scene/render_scene.h"
@@ -22,6 +23,7 @@ template <typename Visit>
     case GeometryKind::kSpheres: return visit(*std::get_if<SphereSet>(&geometry));
     case GeometryKind::kTriangles: return visit(*std::get_if<TriangleMesh>(&geometry));
     case GeometryKind::kInstance: return visit(*std::get_if<Instance>(&geometry));
+    case GeometryKind::kCurves: return visit(*std::get_if<CurveSet>(&geometry));
   }
   throw std::logic_error("visit_geometry: a geometry without a kind");
 }

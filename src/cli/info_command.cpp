@@ -137,6 +137,7 @@ nlohmann::json info_json(const std::string& file, const RenderScene& scene, cons
             {"area", s.area_lights}}},
           {"spheres", {{"stored", s.spheres_stored}, {"rendered", s.spheres_rendered}}},
           {"triangles", {{"stored", s.triangles_stored}, {"rendered", s.triangles_rendered}}},
+          {"curve_segments", {{"stored", s.curve_segments_stored}, {"rendered", s.curve_segments_rendered}}},
           {"vertices", s.vertices_stored},
           {"meshes", meshes},
           {"prototypes", s.prototypes},
@@ -166,6 +167,10 @@ void print_text(const std::string& file, const RenderScene& scene, const SceneSu
   std::cout << std::fixed << std::setprecision(1) << "spheres      " << s.spheres_stored << " stored, "
             << s.spheres_rendered << " after instancing\n"
             << "triangles    " << s.triangles_stored << " stored, " << s.triangles_rendered << " after instancing\n"
+            << (s.curve_segments_stored > 0
+                    ? "curves       " + std::to_string(s.curve_segments_stored) + " segments stored, " +
+                          std::to_string(s.curve_segments_rendered) + " after instancing\n"
+                    : std::string())
             << "meshes       " << s.meshes << " (" << s.vertices_stored << " vertices)\n"
             << "instances    " << s.instances << " of " << s.prototypes << " prototypes\n";
   for (const auto& m : report.meshes)

@@ -1,5 +1,6 @@
 #include "rtpro/crosscheck/crosscheck.h"
 
+#include "curve_tolerance.h"
 #include "rtpro/core/fp_env.h"
 #include "rtpro/core/random.h"
 #include "rtpro/render/camera.h"
@@ -80,14 +81,16 @@ float segment_margin(const Ray& ray, float t) {
   return static_cast<float>(std::max(tolerance, 0.001 * double(t)));
 }
 
-void trace(const Backend& reference, const Backend& candidate, TracedRay& traced) {
+void trace(const RenderScene& scene, const Backend& reference, const Backend& candidate, TracedRay& traced) {
   const Ray& ray = traced.ray;
   traced.reference_found = reference.intersect(ray, traced.reference);
   traced.candidate_found = candidate.intersect(ray, traced.candidate);
   std::array<float, kOcclusionSegments> ends{kInfinity};
   traced.segments = 1;
   if (traced.reference_found) {
-    const float margin = segment_margin(ray, traced.reference.t);
+    // Beyond where the other backend may put the same curve hit, too.
+    const float margin = std::max(segment_margin(ray, traced.reference.t),
+                                  float(2.0 * curve_allowance(scene, traced.reference) / magnitude(ray.dir)));
     const float before = traced.reference.t - margin;
     if (before > ray.tnear) ends[traced.segments++] = before;
     ends[traced.segments++] = traced.reference.t + margin;
@@ -199,6 +202,8 @@ bool is_borderline(const RenderScene& scene, const Ray& ray, const Hit& hit) {
       const auto& instance = std::get<Instance>(scene.top.geometries[hit.inst_id]);
       return grazes(instance, std::get<SphereSet>(geometry).spheres[hit.prim_id], ray);
     }
+    case GeometryKind::kCurves:
+      return grazes_curve(std::get<CurveSet>(geometry), hit.prim_id, object_ray(scene, hit, ray));
     case GeometryKind::kInstance: return false;
   }
   return false;
@@ -215,6 +220,7 @@ double surface_error(const RenderScene& scene, const TracedRay& traced) {
       return magnitude(tri.at(a.u, a.v) - tri.at(b.u, b.v)) / error_scale(traced.ray, a.t);
     }
     case GeometryKind::kSpheres:
+    case GeometryKind::kCurves:  // no surface coordinates to compare: the backends' u differ by design
     case GeometryKind::kInstance: return 0.0;
   }
   return 0.0;
@@ -225,16 +231,20 @@ void classify_same_primitive(const RenderScene& scene, const TracedRay& traced, 
   const Hit& b = traced.candidate;
   c.t_error = relative_t_error(traced.ray, a.t, b.t);
   c.surface_error = surface_error(scene, traced);
+  const double t_tolerance = kPointTolerance + curve_allowance(scene, a) / error_scale(traced.ray, a.t);
   if (bit_identical(a, b)) {
     c.agreement = Agreement::kIdentical;
   } else if (is_top_level_sphere(scene, a)) {
     c.agreement = Agreement::kMismatch;
     c.note = "top-level sphere hit is not bit-identical";
-  } else if (c.t_error <= kPointTolerance && c.surface_error <= kPointTolerance) {
+  } else if (c.t_error <= t_tolerance && c.surface_error <= kPointTolerance) {
     c.agreement = Agreement::kWithinTolerance;
+  } else if (curve_allowance(scene, a) > 0.0 && is_borderline(scene, traced.ray, a)) {
+    c.agreement = Agreement::kAmbiguous;  // a fibre's silhouette or open end: the surfaces differ there
+    c.note = "the same curve segment hit at its silhouette, an end or from inside";
   } else {
     c.agreement = Agreement::kMismatch;
-    c.note = c.t_error > kPointTolerance ? "distance differs beyond tolerance" : "barycentrics differ beyond tolerance";
+    c.note = c.t_error > t_tolerance ? "distance differs beyond tolerance" : "barycentrics differ beyond tolerance";
   }
 }
 
@@ -249,8 +259,10 @@ void classify_different_primitives(const RenderScene& scene, const TracedRay& tr
   const bool both_top_spheres =
       both && is_top_level_sphere(scene, traced.reference) && is_top_level_sphere(scene, traced.candidate);
   if (both) c.t_error = relative_t_error(traced.ray, traced.reference.t, traced.candidate.t);
+  const double allowance =
+      both ? std::max(curve_allowance(scene, traced.reference), curve_allowance(scene, traced.candidate)) : 0.0;
 
-  if (both && !both_top_spheres && c.t_error <= kPointTolerance) {
+  if (both && !both_top_spheres && c.t_error <= kPointTolerance + allowance / error_scale(traced.ray, closer.t)) {
     c.agreement = Agreement::kAmbiguous;
     c.note = "different primitives at the same distance (shared edge or touching surfaces)";
   } else if (!both_top_spheres && is_borderline(scene, traced.ray, closer)) {
@@ -352,7 +364,7 @@ CrosscheckReport crosscheck(const RenderScene& scene, const Backend& reference, 
         traced[k] = TracedRay{};
         traced[k].ray =
             i < camera_rays ? random_camera_ray(scene.camera, options.seed, i) : random_ray(bounds, options.seed, i);
-        trace(reference, candidate, traced[k]);
+        trace(scene, reference, candidate, traced[k]);
       }
     });
     for (std::size_t k = 0; k < count; ++k) {

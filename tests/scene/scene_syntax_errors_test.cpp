@@ -127,7 +127,8 @@ TEST(SceneParser, UnknownEntryAndLightTypesSuggestTheClosest) {
   const std::string light = kHeader + "lights:\n  - {type: lamp, position: [0, 1, 0]}\n";
   EXPECT_SCENE_ERROR(light, at(light, 4, "lamp"), {"unknown light type 'lamp'", "point, spot, directional"});
   const std::string untyped = with_world("  - {radius: 1}\n");
-  EXPECT_SCENE_ERROR(untyped, at(untyped, 4, "{"), {"missing the required key 'type'", "sphere, mesh, instance"});
+  EXPECT_SCENE_ERROR(untyped, at(untyped, 4, "{"),
+                     {"missing the required key 'type'", "sphere, mesh, curves, instance"});
 }
 
 TEST(SceneParser, DetectsInstanceCyclesWithTheChain) {

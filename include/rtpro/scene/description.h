@@ -13,6 +13,7 @@
 #include "rtpro/scene/render_settings.h"
 // Each kind of shape's scene side (its entries' type and reader, its shapes and their bounds),
 // here so that whatever visits the lists below finds the kind's functions.
+#include "rtpro/scene/curve_geometry.h"
 #include "rtpro/scene/sphere_geometry.h"
 #include "rtpro/scene/subdivision.h"
 #include "rtpro/scene/triangle_geometry.h"
@@ -157,6 +158,7 @@ struct ObjectDesc {
   std::vector<SphereDesc> spheres;
   std::vector<MeshDesc> meshes;
   std::vector<GltfDesc> gltfs;
+  std::vector<CurvesDesc> curves;
   std::vector<InstanceDesc> instances;
 };
 
@@ -169,6 +171,7 @@ void visit_shape_lists(Object& object, Visit&& visit) {
   visit(object.spheres);
   visit(object.meshes);
   visit(object.gltfs);
+  visit(object.curves);
 }
 
 // `environment:` at the top of a scene file: what arrives where rays escape (see scenes/FORMAT.md).

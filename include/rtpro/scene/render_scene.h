@@ -6,6 +6,7 @@
 #include "rtpro/core/texture_sampling.h"
 #include "rtpro/core/transform.h"
 #include "rtpro/scene/checker_axes.h"
+#include "rtpro/scene/curve_geometry.h"
 #include "rtpro/scene/light.h"
 #include "rtpro/scene/light_links.h"
 #include "rtpro/scene/material_kinds.h"
@@ -36,17 +37,17 @@ struct Instance {
 // One geometry of a group; its index in the group is the geometry id a hit reports. Each kind of
 // shape has a home of its own on each side of the modules (scene/sphere_geometry.h, the backend's
 // and the renderer's per-kind files); an Instance places a prototype group.
-using Geometry = std::variant<SphereSet, TriangleMesh, Instance>;
+using Geometry = std::variant<SphereSet, TriangleMesh, Instance, CurveSet>;
 
-enum class GeometryKind : std::uint8_t { kSpheres = 0, kTriangles = 1, kInstance = 2 };
+enum class GeometryKind : std::uint8_t { kSpheres = 0, kTriangles = 1, kInstance = 2, kCurves = 3 };
 inline GeometryKind kind_of(const Geometry& g) { return static_cast<GeometryKind>(g.index()); }
 // A new geometry alternative needs its GeometryKind; switches over the kind are compiled with
 // -Werror=switch, so each one that misses the new kind stops the build.
-static_assert(std::variant_size_v<Geometry> == 3, "add the new alternative to GeometryKind");
+static_assert(std::variant_size_v<Geometry> == 4, "add the new alternative to GeometryKind");
 
 struct Group {
   std::vector<Geometry> geometries;
-  // Primitive count of geometry g (spheres, triangles, or 1 for an instance).
+  // Primitive count of geometry g (spheres, triangles, curve segments, or 1 for an instance).
   std::uint32_t primitive_count(std::uint32_t g) const;
   // Instances need their prototype's bounds: callers compute RenderScene::prototype_bounds()
   // once rather than walking a large prototype again for every instance of it.

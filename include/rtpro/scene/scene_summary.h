@@ -22,6 +22,8 @@ struct SceneSummary {
   std::uint64_t vertices_stored = 0;
   std::uint64_t spheres_rendered = 0;  // after instancing: what the camera can see
   std::uint64_t triangles_rendered = 0;
+  std::uint64_t curve_segments_stored = 0;
+  std::uint64_t curve_segments_rendered = 0;
   BBox bounds;
   std::size_t geometry_bytes = 0;       // spheres, vertices, indices, normals, materials
   std::size_t estimated_bvh_bytes = 0;  // native BVH, from primitive counts
@@ -30,7 +32,7 @@ struct SceneSummary {
 // What one group's shapes add up to, each kind of shape adding its own (tally_shapes, in the
 // kind's file): spheres and triangles count again for every instance that places the group.
 struct ShapeTally {
-  std::uint64_t spheres = 0, triangles = 0;
+  std::uint64_t spheres = 0, triangles = 0, curve_segments = 0;
   std::size_t primitives = 0;  // what the native BVH holds references to
 };
 

@@ -27,6 +27,7 @@ std::vector<char> materials_in_use(const RenderScene& scene) {
                               use(mesh.material);
                               for (std::uint32_t material : mesh.triangle_materials) use(material);
                             },
+                            [&](const CurveSet& curves) { use(curves.material); },
                             [](const Instance&) {}},  // its prototype's surfaces are visited below
                  geometry);
   };

@@ -163,6 +163,7 @@ void LightSet::add_emitters(const RenderScene& scene, const Group& group, std::u
         break;
       }
       case GeometryKind::kInstance: break;  // the top level's instances are visited by the constructor
+      case GeometryKind::kCurves: break;    // never emit: the scene builder refuses emitting curves
     }
   }
 }

@@ -2,6 +2,7 @@
 
 #include "rtpro/core/error.h"
 #include "rtpro/core/math_constants.h"
+#include "rtpro/scene/curve_basis.h"
 
 #include <algorithm>
 #include <cmath>
@@ -62,12 +63,52 @@ struct LocalSurface {
   return {p, ng, ns, mag, mesh.material_of(prim), flat};
 }
 
-[[gnu::always_inline]] inline LocalSurface local_surface(const Group& group, const Hit& hit, const Ray& local_ray) {
+// A curve's unit direction at u (its chord where the derivative vanishes, as at a repeated end point).
+Vec3 curve_direction(const BezierSegment& segment, float u) {
+  for (const Vec3& d : {segment.derivative(u), segment.c[3].position - segment.c[0].position}) {
+    const float len = length(d);
+    if (len > 0.0f && std::isfinite(len)) return d / len;
+  }
+  return Vec3(1.0f, 0.0f, 0.0f);
+}
+
+// The hit on a fibre: its normal faces the ray (a round tube's points away from the axis; a flat
+// ribbon's lies across the fibre, towards the ray), `tangent` is the fibre's unit direction and
+// `fiber_offset` pbrt's h, the hit's signed offset from the axis along cross(tangent, ray) over the
+// radius (the hair BSDF's sign: on a round tube, the h its frame gives the normal): worked out from the hit point on both shapes (on a ribbon pbrt's −1 + 2v, whatever v
+// convention the backend has, so both backends give the same h). Secondary rays must clear the fibre, whose surface is known only to within the backends'
+// tolerance and which a ribbon turns to face every ray: `fibre_error` is pbrt's two widths (its
+// Curve's pError), a four-radius offset.
+LocalSurface curve_surface(const CurveSet& curves, const Hit& hit, const Ray& ray, SurfacePoint& sp,
+                           float& fibre_error) {
+  const BezierSegment segment = bezier_segment(curves, hit.prim_id);
+  const CurvePoint axis = segment.at(hit.u);
+  const Vec3 tangent = curve_direction(segment, hit.u);
+  const Vec3 p = ray.at(hit.t);
+  const Vec3 facing = (ray.dir - tangent * dot(ray.dir, tangent)) * -1.0f;
+  Vec3 across = cross(tangent, ray.dir);
+  const float across_length = length(across);
+  across = across_length > 0.0f ? across / across_length : Vec3(0.0f);
+  const Vec3 offset = p - axis.position;
+  const Vec3 radial = offset - tangent * dot(offset, tangent);
+  const bool round = curves.shape == CurveShape::kRound;
+  const float radius = std::max(axis.radius, 0.0f);
+  const float h = radius > 0.0f ? dot(radial, across) / radius : 0.0f;
+  sp.tangent = tangent;
+  sp.fiber_offset = std::clamp(std::isfinite(h) ? h : 0.0f, -1.0f, 1.0f);
+  fibre_error = 4.0f * radius;
+  const Vec3 n = round && length(radial) > 0.0f ? radial : facing;
+  return {p, n, n, std::max(magnitude(p), magnitude(axis.position) + radius), curves.material, true};
+}
+
+[[gnu::always_inline]] inline LocalSurface local_surface(const Group& group, const Hit& hit, const Ray& local_ray,
+                                                         SurfacePoint& sp, float& fibre_error) {
   const Geometry& geometry = group.geometries[hit.geom_id];
   switch (kind_of(geometry)) {
     case GeometryKind::kSpheres:
       return sphere_surface(std::get<SphereSet>(geometry).spheres[hit.prim_id], local_ray, hit.t);
     case GeometryKind::kTriangles: return triangle_surface(std::get<TriangleMesh>(geometry), hit.prim_id, hit.u, hit.v);
+    case GeometryKind::kCurves: return curve_surface(std::get<CurveSet>(geometry), hit, local_ray, sp, fibre_error);
     case GeometryKind::kInstance: break;
   }
   // Backends report the primitive inside the instance, never the instance itself.
@@ -113,6 +154,12 @@ TextureDerivatives texture_coordinates(const Group& group, const Hit& hit, const
       const float inverse = 1.0f / determinant;
       return {(e1 * dv2 - e2 * dv1) * inverse, (e2 * du1 - e1 * du2) * inverse};
     }
+    case GeometryKind::kCurves: {
+      // u along the segment, v across it (0.5 on the axis): the fibre's direction and the side.
+      sp.tex_u = hit.u;
+      sp.tex_v = 0.5f + 0.5f * sp.fiber_offset;
+      return {sp.tangent, cross(object_normal, sp.tangent)};
+    }
     case GeometryKind::kInstance: break;
   }
   throw RuntimeError("hit record names an instance as its primitive");
@@ -140,13 +187,15 @@ void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, Surf
   const bool instanced = hit.inst_id != kInvalidId;
   const Instance* instance = instanced ? &std::get<Instance>(scene.top.geometries[hit.inst_id]) : nullptr;
   const Group& group = instanced ? scene.prototypes[instance->prototype] : scene.top;
-  LocalSurface local = instanced ? local_surface(group, hit,
-                                                 Ray{instance->world_to_object.apply_point(ray.org), ray.tnear,
-                                                     instance->world_to_object.apply_vector(ray.dir), ray.tfar})
-                                 : local_surface(group, hit, ray);
   sp.tangent = Vec3(0.0f);
   sp.bitangent_sign = 1.0f;
   sp.fiber_offset = 0.0f;
+  float fibre_error = 0.0f;  // a curve's (curve_surface), in the object's space
+  LocalSurface local = instanced ? local_surface(group, hit,
+                                                 Ray{instance->world_to_object.apply_point(ray.org), ray.tnear,
+                                                     instance->world_to_object.apply_vector(ray.dir), ray.tfar},
+                                                 sp, fibre_error)
+                                 : local_surface(group, hit, ray, sp, fibre_error);
   std::optional<TextureDerivatives> derivatives;
   if (has_image_texture(scene, local.material))
     derivatives = texture_coordinates(group, hit, local.geometric_normal, sp);
@@ -160,18 +209,26 @@ void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, Surf
     local.shading_normal = instance->world_to_object.apply_normal_of_inverse(local.shading_normal);
     // The transform adds error proportional to the translation and the transformed magnitude.
     local.magnitude = std::max(local.magnitude, magnitude(local.position)) * 4.0f;
+    if (fibre_error > 0.0f) {
+      const Affine& m = instance->object_to_world;
+      fibre_error *=
+          std::max({length(m.apply_vector(Vec3(1.0f, 0.0f, 0.0f))), length(m.apply_vector(Vec3(0.0f, 1.0f, 0.0f))),
+                    length(m.apply_vector(Vec3(0.0f, 0.0f, 1.0f)))});
+      sp.tangent = safe_normalize(m.apply_vector(sp.tangent), [] { return Vec3(1.0f, 0.0f, 0.0f); });
+    }
     sp.object_id = hit.inst_id;
   } else {
     sp.object_id = hit.geom_id;
   }
 
   if (derivatives) {
-    sp.tangent = derivatives->dpdu;
+    if (!(fibre_error > 0.0f)) sp.tangent = derivatives->dpdu;  // a fibre's stays its unit direction
     if (dot(cross(local.geometric_normal, derivatives->dpdu), derivatives->dpdv) < 0.0f) sp.bitangent_sign = -1.0f;
   }
   sp.position = local.position;
   sp.material = local.material;
-  sp.position_error = kRelativePositionError * std::max(local.magnitude, magnitude(local.position));
+  sp.position_error =
+      std::max(kRelativePositionError * std::max(local.magnitude, magnitude(local.position)), fibre_error);
 
   Vec3 ng = safe_normalize(local.geometric_normal, [&] { return -normalize(ray.dir); });
   sp.front_face = !(dot(ng, ray.dir) > 0.0f);

@@ -125,6 +125,14 @@ class RenderSceneBuilder {
                                            }
                                          },
                                          [](const std::vector<GltfDesc>&) {},
+                                         [&](const std::vector<CurvesDesc>& curves) {
+                                           for (const CurvesDesc& entry : curves) {
+                                             group.geometries.emplace_back(load_curve_entry(entry));
+                                             if (!world) continue;
+                                             top_origins_.push_back({&entry.where});
+                                             linking_of_object_.push_back(entry.linking);
+                                           }
+                                         },
                                          [&](const auto& shapes) { add_shape_list(shapes, group, world); }});
   }
 
@@ -140,6 +148,15 @@ class RenderSceneBuilder {
     linking_of_object_.push_back(kLinkedPerPrimitive);
     std::vector<std::uint32_t>& linkings = primitive_linkings_.emplace_back();
     for (const Desc& shape : shapes) linkings.push_back(shape.linking);
+  }
+
+  // Emitting curves are refused: the light set samples spheres and triangles only, and a fibre hit
+  // only by BSDF samples would light the scene with noise alone.
+  CurveSet load_curve_entry(const CurvesDesc& desc) {
+    if (scene_.materials[desc.material].emission.emits())
+      throw InputError(desc.where, "curves cannot emit light: material '" + scene_.material_names[desc.material] +
+                                       "' has an emission; give the curves a material without one");
+    return load_curves(desc);
   }
 
   TriangleMesh load_mesh(const MeshDesc& desc) {

@@ -35,15 +35,18 @@ SceneSummary summarize(const RenderScene& scene) {
 
   s.spheres_stored = s.spheres_rendered = top.spheres;
   s.triangles_stored = s.triangles_rendered = top.triangles;
+  s.curve_segments_stored = s.curve_segments_rendered = top.curve_segments;
   for (const ShapeTally& c : per_prototype) {
     s.spheres_stored += c.spheres;
     s.triangles_stored += c.triangles;
+    s.curve_segments_stored += c.curve_segments;
   }
   for (const Geometry& g : scene.top.geometries) {
     if (const auto* instance = std::get_if<Instance>(&g)) {
       ++s.instances;
       s.spheres_rendered += per_prototype[instance->prototype].spheres;
       s.triangles_rendered += per_prototype[instance->prototype].triangles;
+      s.curve_segments_rendered += per_prototype[instance->prototype].curve_segments;
     }
   }
   s.bounds = scene.bounds();

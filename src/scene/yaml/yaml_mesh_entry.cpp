@@ -16,7 +16,6 @@ namespace rtpro {
 
 namespace {
 
-const std::vector<std::string> kMeshExtensions = {".obj", ".ply", ".gltf", ".glb"};
 const std::vector<std::string> kNormalsModes = {"flat", "smooth", "file"};
 
 NormalsMode read_normals_mode(const YamlNode& node, const std::string& field) {
@@ -25,28 +24,6 @@ NormalsMode read_normals_mode(const YamlNode& node, const std::string& field) {
   if (mode == "smooth") return NormalsMode::kSmooth;
   if (mode == "file") return NormalsMode::kFile;
   fail_at(node, field + ": expected flat, smooth or file, got '" + mode + "'" + suggestion(mode, kNormalsModes));
-}
-
-// Relative to the file that wrote it: an included file's meshes sit beside it.
-std::filesystem::path resolve_mesh_file(const YamlNode& node, const std::string& field,
-                                        const ShapeEntryReader& reader) {
-  const std::string written = read_string(node, field);
-  const std::filesystem::path folder =
-      node.at.line > 0 ? std::filesystem::path(*node.at.source).parent_path() : reader.folder();
-  const std::filesystem::path file = (folder / written).lexically_normal();
-  std::string extension = file.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (std::find(kMeshExtensions.begin(), kMeshExtensions.end(), extension) == kMeshExtensions.end())
-    fail_at(node,
-            field + ": '" + written + "' is not a mesh format rtpro reads (.obj or .ply, or a .gltf or .glb scene)");
-  std::error_code error;
-  const std::filesystem::file_status status = std::filesystem::status(file, error);
-  if (!std::filesystem::exists(status))
-    fail_at(node, field + ": mesh file '" + written + "' not found (looked for '" + file.string() + "')");
-  if (!std::filesystem::is_regular_file(status)) fail_at(node, field + ": '" + file.string() + "' is not a file");
-  if (!std::ifstream(file, std::ios::binary)) fail_at(node, field + ": cannot open mesh file '" + file.string() + "'");
-  return file;
 }
 
 // `displacement:` moves the refined vertices, so it needs `subdivision:` (a level of 0 keeps the
@@ -71,7 +48,8 @@ void read_shape_entry(const YamlNode& node, ShapeEntryReader& reader, std::vecto
       node, "mesh",
       {"type", "file", "material", "normals", "subdivision", "displacement", kLightLinkingKey, kShadowLinkingKey});
   MeshDesc desc;
-  desc.file = resolve_mesh_file(mesh.required("file"), mesh.field("file"), reader);
+  desc.file = reader.input_file(mesh.required("file"), mesh.field("file"), {".obj", ".ply", ".gltf", ".glb"},
+                                ".obj or .ply, or a .gltf or .glb scene", "mesh");
   if (const YamlNode* material = mesh.optional("material"))
     desc.material = reader.material_index(*material, mesh.field("material"));
   if (const YamlNode* normals = mesh.optional("normals"))

@@ -3,6 +3,9 @@
 #include "rtpro/core/closest_match.h"
 #include "yaml_light_linking.h"
 
+#include <algorithm>
+#include <cctype>
+#include <fstream>
 #include <optional>
 #include <utility>
 
@@ -19,6 +22,28 @@ std::uint32_t ShapeEntryReader::material_index(const YamlNode& node, const std::
   const std::uint32_t* index = materials_.find(name);
   if (!index) fail_at(node, field + ": unknown material '" + name + "'" + suggestion(name, materials_.names()));
   return *index;
+}
+
+std::filesystem::path ShapeEntryReader::input_file(const YamlNode& node, const std::string& field,
+                                                   std::initializer_list<std::string_view> extensions,
+                                                   const std::string& formats, const std::string& what) const {
+  const std::string written = read_string(node, field);
+  const std::filesystem::path folder =
+      node.at.line > 0 ? std::filesystem::path(*node.at.source).parent_path() : folder_;
+  const std::filesystem::path file = (folder / written).lexically_normal();
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (std::find(extensions.begin(), extensions.end(), extension) == extensions.end())
+    fail_at(node, field + ": '" + written + "' is not a " + what + " format rtpro reads (" + formats + ")");
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(file, error);
+  if (!std::filesystem::exists(status))
+    fail_at(node, field + ": " + what + " file '" + written + "' not found (looked for '" + file.string() + "')");
+  if (!std::filesystem::is_regular_file(status)) fail_at(node, field + ": '" + file.string() + "' is not a file");
+  if (!std::ifstream(file, std::ios::binary))
+    fail_at(node, field + ": cannot open " + what + " file '" + file.string() + "'");
+  return file;
 }
 
 std::uint32_t ShapeEntryReader::read_linking(const MappingReader& entry) {

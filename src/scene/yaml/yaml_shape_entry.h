@@ -8,6 +8,8 @@
 #include "yaml_reader.h"
 
 #include <cstdint>
+#include <initializer_list>
+#include <string_view>
 #include <filesystem>
 #include <string>
 
@@ -28,6 +30,12 @@ class ShapeEntryReader {
 
   // The index of the material `node` names; an unknown name fails at the node, with a suggestion.
   std::uint32_t material_index(const YamlNode& node, const std::string& field) const;
+  // The file a `file:` value (`node`) names, relative to the file that wrote it (an included file's
+  // meshes sit beside it), with the extension one of `extensions` (lower case); `what` names the
+  // kind in messages ("mesh", "hair"). Fails at the node when the file is missing or unreadable.
+  std::filesystem::path input_file(const YamlNode& node, const std::string& field,
+                                   std::initializer_list<std::string_view> extensions, const std::string& formats,
+                                   const std::string& what) const;
   // The index of the entry's light linking in the scene's list, or kNoLinking. Only world entries
   // are linked: an object's entries are lit as the instances placing it are.
   std::uint32_t read_linking(const MappingReader& entry);
