@@ -49,9 +49,15 @@ struct TriangleMesh {
     return triangle_materials.empty() ? material : triangle_materials[triangle];
   }
   Vec3 vertex(std::uint32_t i) const { return vertices[i].position(); }
+  bool moving() const { return !vertex_steps.empty(); }
+  // Vertex i and its shading normal at ray time `time` in [0, 1] (a moving mesh's).
+  Vec3 vertex_at(std::uint32_t i, float time) const;
+  Vec3 normal_at(std::uint32_t i, float time) const;
+  // Over the whole shutter for a moving mesh.
   BBox triangle_bounds(std::uint32_t t) const;
   BBox bounds() const;
   std::size_t memory_bytes() const;
+  std::size_t motion_memory_bytes() const;  // of vertex_steps and normal_steps
 };
 
 }  // namespace rtpro

@@ -145,4 +145,17 @@ std::vector<T> resample_steps(std::span<const T> steps, int count) {
   return result;
 }
 
+// a ∘ b over the shutter, each given by its value at the frame's time and its steps (empty:
+// static): the steps of the composition (empty when neither moves), at the larger step count.
+inline std::vector<Affine> compose_steps(const Affine& a, std::span<const Affine> a_steps, const Affine& b,
+                                         std::span<const Affine> b_steps) {
+  if (a_steps.empty() && b_steps.empty()) return {};
+  const int count = static_cast<int>(std::max(a_steps.size(), b_steps.size()));
+  const std::vector<Affine> a_all = a_steps.empty() ? std::vector<Affine>(count, a) : resample_steps(a_steps, count);
+  const std::vector<Affine> b_all = b_steps.empty() ? std::vector<Affine>(count, b) : resample_steps(b_steps, count);
+  std::vector<Affine> steps;
+  for (int i = 0; i < count; ++i) steps.push_back(compose(a_all[i], b_all[i]));
+  return steps;
+}
+
 }  // namespace rtpro

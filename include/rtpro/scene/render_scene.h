@@ -35,7 +35,16 @@ struct Instance {
   // object_to_world at each time step of the shutter (scene/motion.h); empty: static. The
   // transform at a ray's time is interpolated from these and inverted.
   std::vector<Affine> object_to_world_steps;
+
+  bool moving() const { return !object_to_world_steps.empty(); }
 };
+
+// A moving instance's placement at ray time `time` in [0, 1] and its inverse (nothing when the
+// interpolated matrix is singular: the instance is then missed at that time).
+struct InstancePlacement {
+  Affine object_to_world, world_to_object;
+};
+std::optional<InstancePlacement> placement_at(const Instance& instance, float time);
 
 // One geometry of a group; its index in the group is the geometry id a hit reports. Each kind of
 // shape has a home of its own on each side of the modules (scene/sphere_geometry.h, the backend's

@@ -382,7 +382,7 @@ void WhittedIntegrator::trace(const CameraBatch& batch, RayCounts& counts, Works
     gather_surfaces(scene, sampler_, keys, ws.current, depth, records_primary_, results, ws);
 
     ws.occluded.resize(ws.shadow_rays.size());
-    occluded_with_shadow_linking(backend_, scene.links, ws.shadow_rays, ws.shadow_lights, ws.occluded,
+    occluded_with_shadow_linking(backend_, scene.links, ws.shadow_rays, {}, ws.shadow_lights, ws.occluded,
                                  depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
     counts[RayKind::kShadow] += ws.shadow_rays.size();
 

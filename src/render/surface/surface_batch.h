@@ -45,5 +45,9 @@ void make_triangle_surfaces4(const RenderScene& scene, const Ray* const rays[4],
 // and divisions for four surfaces.
 void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::span<const Hit> hits,
                    std::span<SurfacePoint> out);
+// The same for rays at `times` (scene/motion.h; empty: the call above), one by one with
+// make_surface_at.
+void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::span<const float> times,
+                   std::span<const Hit> hits, std::span<SurfacePoint> out);
 
 }  // namespace rtpro
