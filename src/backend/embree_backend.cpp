@@ -23,7 +23,7 @@ namespace {
 
 // Every field Embree reads, set explicitly: a zero mask would hit nothing (Debian's Embree is
 // built with ray masks).
-void to_embree(const Ray& ray, float tfar, unsigned id, RTCRay& r) {
+void to_embree(const Ray& ray, float tfar, unsigned id, RTCRay& r, float time = 0.0f) {
   r.org_x = ray.org.x;
   r.org_y = ray.org.y;
   r.org_z = ray.org.z;
@@ -31,7 +31,7 @@ void to_embree(const Ray& ray, float tfar, unsigned id, RTCRay& r) {
   r.dir_x = ray.dir.x;
   r.dir_y = ray.dir.y;
   r.dir_z = ray.dir.z;
-  r.time = 0.0f;
+  r.time = time;
   r.tfar = tfar;
   r.mask = 0xFFFFFFFFu;
   r.id = id;
@@ -39,8 +39,8 @@ void to_embree(const Ray& ray, float tfar, unsigned id, RTCRay& r) {
 }
 
 // The invalid ids tell a miss apart after the query.
-void to_embree(const Ray& ray, unsigned id, RTCRayHit& out) {
-  to_embree(ray, ray.tfar, id, out.ray);
+void to_embree(const Ray& ray, unsigned id, RTCRayHit& out, float time = 0.0f) {
+  to_embree(ray, ray.tfar, id, out.ray, time);
   out.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   out.hit.primID = RTC_INVALID_GEOMETRY_ID;
   out.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -101,14 +101,17 @@ class EmbreeBackend final : public Backend {
 
   std::string_view name() const override { return "embree"; }
 
-  bool intersect(const Ray& ray, Hit& hit) const override {
+  bool intersect(const Ray& ray, Hit& hit) const override { return intersect(ray, 0.0f, hit); }
+  bool occluded(const Ray& ray) const override { return occluded(ray, 0.0f); }
+
+  bool intersect(const Ray& ray, float time, Hit& hit) const override {
     if (!gate_.admit(ray)) return false;
     Hit closest_user_hit = no_user_hit_yet(ray);
     EmbreeIntersectContext context;
     rtcInitIntersectContext(&context.base);
     context.closest_user_hits = &closest_user_hit;
     alignas(16) RTCRayHit query;
-    to_embree(ray, 0, query);
+    to_embree(ray, 0, query, time);
     rtcIntersect1(scenes_.top.get(), &context.base, &query);
     return from_embree(query, hit);
   }
@@ -150,14 +153,14 @@ class EmbreeBackend final : public Backend {
 
   // Embree's triangles accept t == tfar; asking for (tnear, previous float below tfar] instead
   // gives exactly the open interval (tnear, tfar) the interface promises, for every geometry.
-  bool occluded(const Ray& ray) const override {
+  bool occluded(const Ray& ray, float time) const override {
     if (!gate_.admit(ray)) return false;
     const float tfar = one_step_towards_zero(ray.tfar);
     if (!(tfar > ray.tnear)) return false;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     alignas(16) RTCRay query;
-    to_embree(ray, tfar, 0, query);
+    to_embree(ray, tfar, 0, query, time);
     rtcOccluded1(scenes_.top.get(), &context, &query);
     return query.tfar < 0.0f;
   }

@@ -36,6 +36,9 @@ void validate_instance(const Instance& instance, std::span<const BBox> prototype
   const BBox world = instance.object_to_world.apply(prototype_bounds[instance.prototype]);
   if (!instance.object_to_world.is_finite() || !in_embree_range(world))
     refuse(-1, geometry, "is placed outside Embree's coordinate range");
+  for (const Affine& step : instance.object_to_world_steps)
+    if (!step.is_finite() || !in_embree_range(step.apply(prototype_bounds[instance.prototype])))
+      refuse(-1, geometry, "moves outside Embree's coordinate range");
 }
 
 void validate_group(const Group& group, int group_index, std::span<const BBox> prototype_bounds) {
@@ -61,7 +64,16 @@ EmbreeGeometry new_instance_geometry(RTCDevice device, const Instance& instance,
   RTCGeometry g = geometry.get();
   rtcSetGeometryInstancedScene(g, prototype);
   // Affine::m is row-major 3×4 (linear part, then translation, per row): Embree's FLOAT3X4_ROW_MAJOR.
-  rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, instance.object_to_world.m.data()->data());
+  // A moving instance gives one per time step; Embree interpolates the matrices linearly, as
+  // placement_at does for the native backend.
+  if (instance.moving()) {
+    rtcSetGeometryTimeStepCount(g, static_cast<unsigned>(instance.object_to_world_steps.size()));
+    for (unsigned step = 0; step < instance.object_to_world_steps.size(); ++step)
+      rtcSetGeometryTransform(g, step, RTC_FORMAT_FLOAT3X4_ROW_MAJOR,
+                              instance.object_to_world_steps[step].m.data()->data());
+  } else {
+    rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, instance.object_to_world.m.data()->data());
+  }
   rtcCommitGeometry(g);
   return geometry;
 }

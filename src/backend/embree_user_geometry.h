@@ -15,9 +15,12 @@
 #include "embree_handles.h"
 #include "sphere_lanes.h"
 #include "rtpro/backend/hit.h"
+#include "rtpro/core/ray.h"
+#include "shape_hit.h"
 
 #include <embree3/rtcore.h>
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -45,12 +48,33 @@ static_assert(std::is_standard_layout_v<EmbreeIntersectContext>);
 // packet sizes is vectorised into the callbacks, which then realign their stack on every call.
 std::uint32_t valid_lanes(const int* valid, unsigned n);
 
+// A moving kind's primitive against each valid lane at the lane's own time, one by one with the
+// kind's native_hit_at: the native traversal's test, so both backends agree bit for bit.
+template <typename Shapes, typename OnHit>
+void moving_hit_lanes(const Shapes& shapes, std::uint32_t prim, RTCRayN* rays, unsigned n, const int* valid,
+                      OnHit&& on_hit) {
+  for (std::uint32_t lanes = valid_lanes(valid, n); lanes != 0; lanes &= lanes - 1) {
+    const auto i = static_cast<unsigned>(std::countr_zero(lanes));
+    const Ray ray{{RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)},
+                  RTCRayN_tnear(rays, n, i),
+                  {RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)},
+                  RTCRayN_tfar(rays, n, i)};
+    ShapeHit hit;
+    if (native_hit_at(shapes, prim, ray, RTCRayN_time(rays, n, i), ray.tfar, hit)) on_hit(i, hit.t, hit.u, hit.v);
+  }
+}
+
 // One ulp outwards: the bounds are rounded to nearest, and a box even slightly too small would let
 // Embree cull grazing hits that the kind's hit_lanes finds.
 template <typename Shapes>
 void bound_user_primitive(const RTCBoundsFunctionArguments* args) {
   constexpr float kInfinity = std::numeric_limits<float>::infinity();
-  const BBox box = primitive_bounds_of(*static_cast<const Shapes*>(args->geometryUserPtr), args->primID);
+  const Shapes& shapes = *static_cast<const Shapes*>(args->geometryUserPtr);
+  BBox box;
+  if constexpr (requires { shapes.moving(); })
+    box = shapes.moving() ? primitive_bounds_at_step(shapes, args->primID, args->timeStep)
+                          : primitive_bounds_of(shapes, args->primID);
+  else box = primitive_bounds_of(shapes, args->primID);
   RTCBounds& out = *args->bounds_o;
   out.lower_x = std::nextafter(box.lower.x, -kInfinity);
   out.lower_y = std::nextafter(box.lower.y, -kInfinity);
@@ -73,26 +97,28 @@ template <typename Shapes>
   const unsigned n = args->N;
   RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, n);
   RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, n);
-  hit_lanes(
-      shapes, args->primID, lanes_of(rays, n), valid_lanes(args->valid, n), [&](unsigned i, float t, float u, float v) {
-        float& tfar = RTCRayN_tfar(rays, n, i);
-        Hit& closest = closest_user_hits[RTCRayN_id(rays, n, i)];
-        const bool wins_tie = t == closest.t && is_closer(t, inst, args->geomID, args->primID, closest, closest.t);
-        if (!(t < tfar || wins_tie)) return;
+  const auto on_hit = [&](unsigned i, float t, float u, float v) {
+    float& tfar = RTCRayN_tfar(rays, n, i);
+    Hit& closest = closest_user_hits[RTCRayN_id(rays, n, i)];
+    const bool wins_tie = t == closest.t && is_closer(t, inst, args->geomID, args->primID, closest, closest.t);
+    if (!(t < tfar || wins_tie)) return;
 
-        closest.t = t;
-        closest.inst_id = inst;
-        closest.geom_id = args->geomID;
-        closest.prim_id = args->primID;
+    closest.t = t;
+    closest.inst_id = inst;
+    closest.geom_id = args->geomID;
+    closest.prim_id = args->primID;
 
-        tfar = t;
-        // Ng is left unset: Embree does not read it, and neither does rtpro (hit_of_lane).
-        RTCHitN_u(hits, n, i) = u;
-        RTCHitN_v(hits, n, i) = v;
-        RTCHitN_primID(hits, n, i) = args->primID;
-        RTCHitN_geomID(hits, n, i) = args->geomID;
-        RTCHitN_instID(hits, n, i, 0) = inst;
-      });
+    tfar = t;
+    // Ng is left unset: Embree does not read it, and neither does rtpro (hit_of_lane).
+    RTCHitN_u(hits, n, i) = u;
+    RTCHitN_v(hits, n, i) = v;
+    RTCHitN_primID(hits, n, i) = args->primID;
+    RTCHitN_geomID(hits, n, i) = args->geomID;
+    RTCHitN_instID(hits, n, i, 0) = inst;
+  };
+  if constexpr (requires { shapes.moving(); })
+    if (shapes.moving()) return moving_hit_lanes(shapes, args->primID, rays, n, args->valid, on_hit);
+  hit_lanes(shapes, args->primID, lanes_of(rays, n), valid_lanes(args->valid, n), on_hit);
 }
 
 // Occlusion queries arrive with tfar already lowered by one ulp (see the backend), so the closed
@@ -102,9 +128,11 @@ template <typename Shapes>
   constexpr float kInfinity = std::numeric_limits<float>::infinity();
   const unsigned n = args->N;
   RTCRayN* rays = args->ray;
-  hit_lanes(*static_cast<const Shapes*>(args->geometryUserPtr), args->primID, lanes_of(rays, n),
-            valid_lanes(args->valid, n),
-            [&](unsigned i, float, float, float) { RTCRayN_tfar(rays, n, i) = -kInfinity; });
+  const Shapes& shapes = *static_cast<const Shapes*>(args->geometryUserPtr);
+  const auto on_hit = [&](unsigned i, float, float, float) { RTCRayN_tfar(rays, n, i) = -kInfinity; };
+  if constexpr (requires { shapes.moving(); })
+    if (shapes.moving()) return moving_hit_lanes(shapes, args->primID, rays, n, args->valid, on_hit);
+  hit_lanes(shapes, args->primID, lanes_of(rays, n), valid_lanes(args->valid, n), on_hit);
 }
 
 // A committed user geometry over `shapes`, which must outlive it, answered by `intersect` and
@@ -118,6 +146,8 @@ EmbreeGeometry new_embree_user_geometry(RTCDevice device, const Shapes& shapes, 
   if (!geometry) return geometry;
   RTCGeometry g = geometry.get();
   rtcSetGeometryUserPrimitiveCount(g, primitive_count_of(shapes));
+  if constexpr (requires { shapes.moving(); })
+    if (shapes.moving()) rtcSetGeometryTimeStepCount(g, shapes.step_count);
   // Embree 3.13.5 ignores the bounds function's own user pointer and passes the geometry's.
   rtcSetGeometryUserData(g, const_cast<Shapes*>(&shapes));
   rtcSetGeometryBoundsFunction(g, &bound_user_primitive<Shapes>, nullptr);

@@ -48,20 +48,23 @@ class NativeBackend final : public Backend {
   using Backend::intersect;
   using Backend::occluded;
 
-  bool intersect(const Ray& ray, Hit& hit) const override {
+  bool intersect(const Ray& ray, Hit& hit) const override { return intersect(ray, 0.0f, hit); }
+  bool occluded(const Ray& ray) const override { return occluded(ray, 0.0f); }
+
+  bool intersect(const Ray& ray, float time, Hit& hit) const override {
     if (!gate_.admit(ray)) return false;
     Hit best;
     float best_t = ray.tfar;
-    bvhs_.closest(ray, best, best_t);
+    bvhs_.closest(ray, time, best, best_t);
     if (!best.valid()) return false;
     hit = best;
     hit.t = best_t;
     return true;
   }
 
-  bool occluded(const Ray& ray) const override {
+  bool occluded(const Ray& ray, float time) const override {
     if (!gate_.admit(ray)) return false;
-    return bvhs_.any(ray);
+    return bvhs_.any(ray, time);
   }
 
   // Scattered rays in packets of eight through the top-level BVH: one node test for eight rays,

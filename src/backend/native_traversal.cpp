@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace rtpro {
 
@@ -55,10 +56,31 @@ inline bool hits_box(const BBox& box, const RayBoxData& d, float tnear, float tm
   return entry <= _mm_cvtss_f32(t1);
 }
 
-Ray to_object_space(const Instance& instance, const Ray& ray, float tfar) {
+Ray to_object_space(const Affine& world_to_object, const Ray& ray, float tfar) {
   // The direction is not renormalised, so distances t mean the same in both spaces.
-  return {instance.world_to_object.apply_point(ray.org), ray.tnear, instance.world_to_object.apply_vector(ray.dir),
-          tfar};
+  return {world_to_object.apply_point(ray.org), ray.tnear, world_to_object.apply_vector(ray.dir), tfar};
+}
+
+Ray to_object_space(const Instance& instance, const Ray& ray, float tfar) {
+  return to_object_space(instance.world_to_object, ray, tfar);
+}
+
+// The ray in a moving or static instance's space at `time`, or nothing where it misses the instance
+// (its interpolated placement is singular there).
+std::optional<Ray> to_object_space_at(const Instance& instance, const Ray& ray, float time, float tfar) {
+  if (!instance.moving()) return to_object_space(instance, ray, tfar);
+  const std::optional<InstancePlacement> placement = placement_at(instance, time);
+  if (!placement) return std::nullopt;
+  return to_object_space(placement->world_to_object, ray, tfar);
+}
+
+// A shape's hit, at `time` where it moves.
+template <typename Shapes>
+[[gnu::always_inline]] inline bool shape_hit_at(const Shapes& shapes, std::uint32_t prim, const Ray& ray, float time,
+                                                float t_max, ShapeHit& hit) {
+  if constexpr (requires { shapes.moving(); })
+    if (shapes.moving()) return native_hit_at(shapes, prim, ray, time, t_max, hit);
+  return native_hit(shapes, prim, ray, t_max, hit);
 }
 
 // The far children still to visit, the last kept on top: a ray, or a packet by its first active
@@ -222,7 +244,7 @@ std::size_t NativeTraversal::memory_bytes() const {
 }
 
 void NativeTraversal::closest_in_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves, const Ray& ray,
-                                       std::uint32_t inst, Hit& best, float& best_t) const {
+                                       float time, std::uint32_t inst, Hit& best, float& best_t) const {
   traverse(bvh, ray, best_t, [&](const BvhNode& leaf, std::uint32_t node_index) {
     if (leaves.triangle_leaf[node_index]) {
       closest_in_triangle_leaf(bvh, leaves, leaf, ray, inst, best, best_t);
@@ -231,14 +253,15 @@ void NativeTraversal::closest_in_group(const Group& group, const Bvh& bvh, const
     for (std::uint32_t i = 0; i < leaf.count; ++i) {
       const PrimitiveRef& ref = bvh.refs[leaf.index + i];
       const auto in_instance = [&](const Instance& instance) {
-        const Ray local = to_object_space(instance, ray, best_t);
-        if (is_traceable(local))
+        const std::optional<Ray> local = to_object_space_at(instance, ray, time, best_t);
+        if (local && is_traceable(*local))
           closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
-                           prototype_leaves_[instance.prototype], local, ref.geom, best, best_t);
+                           prototype_leaves_[instance.prototype], *local, time, ref.geom, best, best_t);
       };
       const auto in_shapes = [&](const auto& shapes) {
         ShapeHit hit;
-        if (native_hit(shapes, ref.prim, ray, best_t, hit)) offer_hit(hit.t, hit.u, hit.v, inst, ref, best, best_t);
+        if (shape_hit_at(shapes, ref.prim, ray, time, best_t, hit))
+          offer_hit(hit.t, hit.u, hit.v, inst, ref, best, best_t);
       };
       visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     }
@@ -246,8 +269,8 @@ void NativeTraversal::closest_in_group(const Group& group, const Bvh& bvh, const
   });
 }
 
-bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves,
-                                   const Ray& ray) const {
+bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves, const Ray& ray,
+                                   float time) const {
   bool found = false;
   const float tfar = ray.tfar;
   traverse(bvh, ray, tfar, [&](const BvhNode& leaf, std::uint32_t node_index) {
@@ -258,14 +281,14 @@ bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const Tri
     for (std::uint32_t i = 0; i < leaf.count && !found; ++i) {
       const PrimitiveRef& ref = bvh.refs[leaf.index + i];
       const auto in_instance = [&](const Instance& instance) {
-        const Ray local = to_object_space(instance, ray, tfar);
-        return is_traceable(local) &&
+        const std::optional<Ray> local = to_object_space_at(instance, ray, time, tfar);
+        return local && is_traceable(*local) &&
                any_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
-                            prototype_leaves_[instance.prototype], local);
+                            prototype_leaves_[instance.prototype], *local, time);
       };
       const auto in_shapes = [&](const auto& shapes) {
         ShapeHit hit;
-        return native_hit(shapes, ref.prim, ray, tfar, hit) && hit.t < tfar;
+        return shape_hit_at(shapes, ref.prim, ray, time, tfar, hit) && hit.t < tfar;
       };
       found = visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     }
@@ -290,7 +313,7 @@ void NativeTraversal::closest_in_packet(RayPacket& packet, std::uint32_t active,
         const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
         if (is_traceable(local))
           closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
-                           prototype_leaves_[instance.prototype], local, ref.geom, best[k], packet.tmax[k]);
+                           prototype_leaves_[instance.prototype], local, 0.0f, ref.geom, best[k], packet.tmax[k]);
       }
     };
     const auto in_shapes = [&](const auto& shapes) {
@@ -323,7 +346,7 @@ std::uint32_t NativeTraversal::any_in_packet(const RayPacket& packet, std::uint3
         const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
         if (is_traceable(local) &&
             any_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
-                         prototype_leaves_[instance.prototype], local))
+                         prototype_leaves_[instance.prototype], local, 0.0f))
           blocked |= 1u << k;
       }
     };

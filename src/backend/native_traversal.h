@@ -22,13 +22,14 @@ class NativeTraversal {
   // CPU must have AVX2).
   NativeTraversal(const RenderScene& scene, bool triangle_rows);
 
-  // The closest hit along `ray` closer than best_t, under the shared tie rule.
-  void closest(const Ray& ray, Hit& best, float& best_t) const {
-    closest_in_group(scene_.top, top_bvh_, top_leaves_, ray, kInvalidId, best, best_t);
+  // The closest hit along `ray` closer than best_t, under the shared tie rule, with the scene's
+  // moving shapes where they are at `time` (scene/motion.h).
+  void closest(const Ray& ray, float time, Hit& best, float& best_t) const {
+    closest_in_group(scene_.top, top_bvh_, top_leaves_, ray, time, kInvalidId, best, best_t);
   }
-  bool any(const Ray& ray) const { return any_in_group(scene_.top, top_bvh_, top_leaves_, ray); }
+  bool any(const Ray& ray, float time) const { return any_in_group(scene_.top, top_bvh_, top_leaves_, ray, time); }
   // The packet's `active` lanes: closest hits into best[lane] (distances in packet.tmax), or the
-  // lanes that something blocks in (tnear, tfar).
+  // lanes that something blocks in (tnear, tfar); moving shapes where they are at time 0.
   void closest_in_packet(RayPacket& packet, std::uint32_t active, Hit* best) const;
   std::uint32_t any_in_packet(const RayPacket& packet, std::uint32_t active) const;
 
@@ -36,9 +37,9 @@ class NativeTraversal {
   std::size_t memory_bytes() const;
 
  private:
-  void closest_in_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves, const Ray& ray,
+  void closest_in_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves, const Ray& ray, float time,
                         std::uint32_t inst, Hit& best, float& best_t) const;
-  bool any_in_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves, const Ray& ray) const;
+  bool any_in_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves, const Ray& ray, float time) const;
 
   const RenderScene& scene_;
   Bvh top_bvh_;

@@ -29,6 +29,15 @@ namespace rtpro {
   return intersect_sphere(s.center, s.radius, ray.org, ray.dir, ray.tnear, t_max, hit.t);
 }
 
+// Sphere `prim` of a moving set against one ray at `time`, within (ray.tnear, t_max): the native
+// traversal and Embree's callbacks both answer moving spheres with it, so their hits agree bit for bit.
+[[gnu::always_inline]] inline bool native_hit_at(const SphereSet& set, std::uint32_t prim, const Ray& ray, float time,
+                                                 float t_max, ShapeHit& hit) {
+  hit.u = hit.v = 0.0f;
+  return intersect_sphere(set.center_at(prim, time), set.spheres[prim].radius, ray.org, ray.dir, ray.tnear, t_max,
+                          hit.t);
+}
+
 // Sphere `prim` against the `active` lanes of `rays` (a native packet's or Embree's), each within
 // its own closed [tnear, tfar]: on_hit(k, t, u, v) for every lane k that meets it, in lane order.
 // The lanes are tested together. Embree's user-geometry callbacks (embree_user_geometry.h) call it

@@ -31,6 +31,18 @@ namespace rtpro {
   return true;
 }
 
+// Triangle `prim` of a deforming mesh against one ray at `time`, within (ray.tnear, t_max).
+[[gnu::always_inline]] inline bool native_hit_at(const TriangleMesh& mesh, std::uint32_t prim, const Ray& ray,
+                                                 float time, float t_max, ShapeHit& hit) {
+  const TriangleIndices& tri = mesh.triangles[prim];
+  TriangleHit th;
+  if (!intersect_triangle(mesh.vertex_at(tri.v0, time), mesh.vertex_at(tri.v1, time), mesh.vertex_at(tri.v2, time),
+                          ray.org, ray.dir, ray.tnear, t_max, th))
+    return false;
+  hit = {th.t, th.u, th.v};
+  return true;
+}
+
 // Triangle `prim` against the `lanes` of a packet, lane by lane, as native_hit_lanes of a
 // SphereSet (sphere_backend.h).
 template <typename OnHit>

@@ -17,8 +17,11 @@ TriangleLeaves build_triangle_leaves(const Group& group, const Bvh& bvh, bool en
       const BvhNode& node = bvh.nodes[n];
       if (!node.is_leaf()) continue;
       bool triangles = true;
-      for (std::uint32_t i = 0; i < node.count; ++i)
-        triangles &= kind_of(group.geometries[bvh.refs[node.index + i].geom]) == GeometryKind::kTriangles;
+      // A deforming mesh's triangles are tested one by one at each ray's time, not from rows.
+      for (std::uint32_t i = 0; i < node.count; ++i) {
+        const auto* mesh = std::get_if<TriangleMesh>(&group.geometries[bvh.refs[node.index + i].geom]);
+        triangles &= mesh != nullptr && !mesh->moving();
+      }
       leaves.triangle_leaf[n] = triangles;
     }
   });

@@ -25,7 +25,7 @@ namespace {
 
 struct CrosscheckCommandOptions {
   std::string scene;
-  std::vector<std::string> overrides, defines, environments;
+  std::vector<std::string> overrides, defines, environments, shutters;
   std::vector<SceneOverride> scene_overrides;  // both, in command-line order
   CrosscheckOptions check;
   int threads = 0;
@@ -108,7 +108,7 @@ void add_crosscheck_command(CLI::App& app, Action& action) {
   auto o = std::make_shared<CrosscheckCommandOptions>();
   CLI::App* cmd = app.add_subcommand("crosscheck", "Compare the native and Embree backends ray by ray");
   cmd->add_option("scene", o->scene, "Scene file (YAML), or a model as the whole scene (glTF, OBJ, PLY)")->required();
-  add_scene_override_options(*cmd, o->overrides, o->defines, o->environments);
+  add_scene_override_options(*cmd, o->overrides, o->defines, o->environments, o->shutters);
   cmd->add_option("--rays", o->check.rays, "Number of rays: half camera rays, half random rays")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}))
       ->capture_default_str();

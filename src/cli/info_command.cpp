@@ -23,7 +23,7 @@ namespace {
 
 struct InfoOptions {
   std::string scene;
-  std::vector<std::string> overrides, defines, environments;
+  std::vector<std::string> overrides, defines, environments, shutters;
   std::vector<SceneOverride> scene_overrides;  // both, in command-line order
   bool json = false;
   std::string max_memory_mb;
@@ -233,7 +233,7 @@ void add_info_command(CLI::App& app, Action& action) {
          "scene", options->scene,
          "Scene file (YAML), a model as the whole scene (glTF, OBJ, PLY), or '-' for a YAML scene on standard input")
       ->required();
-  add_scene_override_options(*cmd, options->overrides, options->defines, options->environments);
+  add_scene_override_options(*cmd, options->overrides, options->defines, options->environments, options->shutters);
   cmd->add_flag("--json", options->json, "Print JSON instead of text");
   cmd->add_option("--max-memory", options->max_memory_mb,
                   "Memory budget in MiB the render estimate is checked against (0: no limit; default: the smaller "

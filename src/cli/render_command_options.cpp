@@ -47,7 +47,7 @@ void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
                         "Light transport: path (physically based path tracing with MIS) or whitted (Phong, mirrors, "
                         "glass); default: the scene's render.integrator, else whitted"),
          {"path", "whitted"});
-  add_scene_override_options(cmd, o.overrides, o.defines, o.environments);
+  add_scene_override_options(cmd, o.overrides, o.defines, o.environments, o.shutters);
   cmd.add_option("--display-server", o.display_server,
                  "Stream the image after each pass to the tev image viewer listening at HOST:PORT (tev's default: "
                  "127.0.0.1:14158); the render goes on if it is absent or goes away");

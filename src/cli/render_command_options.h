@@ -24,7 +24,7 @@ struct RenderCommandOptions {
   std::string ocio_config, display, deprecated_display, view;
   std::string format;     // for -o -
   double exposure = 0.0;  // stops
-  std::vector<std::string> overrides, defines, environments;
+  std::vector<std::string> overrides, defines, environments, shutters;
   std::vector<SceneOverride> scene_overrides;  // all of the above, in command-line order
   std::string display_server;                  // HOST:PORT of a tev for a live preview
   std::string frames;                          // FIRST-LAST[:STEP]

@@ -111,6 +111,20 @@ SceneOverride environment_override(const std::string& value) {
   return {"environment={file: " + *quoted + "}", flag};
 }
 
+// --shutter OPEN,CLOSE is --set camera.shutter=[OPEN, CLOSE], checked as the scene file's.
+SceneOverride shutter_override(const std::string& value) {
+  const std::size_t comma = value.find(',');
+  const auto is_number = [](const std::string& part) {
+    char* end = nullptr;
+    std::strtod(part.c_str(), &end);
+    return !part.empty() && *end == '\0';
+  };
+  if (comma == std::string::npos || !is_number(value.substr(0, comma)) || !is_number(value.substr(comma + 1)))
+    throw InputError("--shutter '" + printable_text(value, 200) +
+                     "': expected OPEN,CLOSE in frames relative to the frame, e.g. --shutter -0.25,0.25");
+  return {"camera.shutter=[" + value.substr(0, comma) + ", " + value.substr(comma + 1) + "]", "--shutter " + value};
+}
+
 SceneOverride override_of(const std::string& option_name, const std::string& value) {
   if (option_name == "--set") return {value, "--set " + value};
   if (option_name == "--define") return variable_override(value);
@@ -121,11 +135,12 @@ SceneOverride override_of(const std::string& option_name, const std::string& val
     return {key + "=" + value, flag + " " + value};
   }
   if (option_name == "--environment") return environment_override(value);
+  if (option_name == "--shutter") return shutter_override(value);
   throw std::logic_error("not a scene override option: " + option_name);
 }
 
 bool is_override_option(const std::string& name) {
-  return name == "--set" || name == "--define" || name == "--size" || name == "--environment" ||
+  return name == "--set" || name == "--define" || name == "--size" || name == "--environment" || name == "--shutter" ||
          render_key_flag(name) != nullptr;
 }
 
@@ -161,7 +176,7 @@ std::vector<SceneOverride> command_line_overrides(const CLI::App& command) {
 }
 
 void add_scene_override_options(CLI::App& command, std::vector<std::string>& sets, std::vector<std::string>& defines,
-                                std::vector<std::string>& environments) {
+                                std::vector<std::string>& environments, std::vector<std::string>& shutters) {
   // One value per occurrence: a list option would otherwise swallow the scene file after it.
   const auto one_each = [](CLI::Option* option) {
     option->allow_extra_args(false)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -173,6 +188,12 @@ void add_scene_override_options(CLI::App& command, std::vector<std::string>& set
       .add_option("--environment", environments,
                   "Light the scene from every direction: a latitude-longitude image (.exr, .hdr, .pfm) or a constant "
                   "colour R,G,B; replaces the scene's environment")
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  command
+      .add_option("--shutter", shutters,
+                  "Open the camera's shutter from OPEN to CLOSE frames relative to the frame (e.g. -0.25,0.25: half "
+                  "a frame centred on it): keyframed transforms and sphere centres blur; sets camera.shutter")
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }

@@ -27,7 +27,7 @@ std::vector<SceneOverride> command_line_overrides(const CLI::App& command);
 // Adds --set, -D/--define and --environment to `command` (the shorthands belong to `render`); the
 // values are read back in order through command_line_overrides.
 void add_scene_override_options(CLI::App& command, std::vector<std::string>& sets, std::vector<std::string>& defines,
-                                std::vector<std::string>& environments);
+                                std::vector<std::string>& environments, std::vector<std::string>& shutters);
 
 // The scene (a file, or "-" for standard input) with the overrides applied; an error about an
 // override names its flag.

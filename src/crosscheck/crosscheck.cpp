@@ -33,6 +33,7 @@ constexpr int kOcclusionSegments = 3;
 
 struct TracedRay {
   Ray ray;
+  float time = 0.0f;  // in the shutter (scene/motion.h), random while it is open
   bool reference_found = false, candidate_found = false;
   Hit reference, candidate;
   int segments = 0;
@@ -83,8 +84,8 @@ float segment_margin(const Ray& ray, float t) {
 
 void trace(const RenderScene& scene, const Backend& reference, const Backend& candidate, TracedRay& traced) {
   const Ray& ray = traced.ray;
-  traced.reference_found = reference.intersect(ray, traced.reference);
-  traced.candidate_found = candidate.intersect(ray, traced.candidate);
+  traced.reference_found = reference.intersect(ray, traced.time, traced.reference);
+  traced.candidate_found = candidate.intersect(ray, traced.time, traced.candidate);
   std::array<float, kOcclusionSegments> ends{kInfinity};
   traced.segments = 1;
   if (traced.reference_found) {
@@ -98,8 +99,8 @@ void trace(const RenderScene& scene, const Backend& reference, const Backend& ca
   for (int s = 0; s < traced.segments; ++s) {
     Ray segment = ray;
     segment.tfar = ends[s];
-    traced.reference_occluded[s] = reference.occluded(segment);
-    traced.candidate_occluded[s] = candidate.occluded(segment);
+    traced.reference_occluded[s] = reference.occluded(segment, traced.time);
+    traced.candidate_occluded[s] = candidate.occluded(segment, traced.time);
   }
 }
 
@@ -364,6 +365,8 @@ CrosscheckReport crosscheck(const RenderScene& scene, const Backend& reference, 
         traced[k] = TracedRay{};
         traced[k].ray =
             i < camera_rays ? random_camera_ray(scene.camera, options.seed, i) : random_ray(bounds, options.seed, i);
+        // Moving shapes are compared where each ray's time puts them.
+        if (scene.camera.shutter.is_open()) traced[k].time = unit_random(options.seed, i, 8);
         trace(scene, reference, candidate, traced[k]);
       }
     });

@@ -127,7 +127,17 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
     }
   }
   ws.samples.resize(ws.camera_rays.size());
-  trace(integration_->integrator, {ws.camera_rays, ws.sample_keys, ws.samples}, out.rays, ws.integrator->workspaces);
+  ws.camera_times.clear();
+  if (scene_.camera.shutter.is_open()) {
+    // A box shutter: the time uniform over it, stratified as the sampler stratifies a dimension.
+    ws.camera_times.resize(ws.sample_keys.size());
+    switch (scene_.render.sampler) {
+      case SamplerKind::kStratified: sampler.sample_1d(ws.sample_keys, sample_dimension::kTime, ws.camera_times); break;
+      case SamplerKind::kSobol: sobol.sample_1d(ws.sample_keys, sample_dimension::kTime, ws.camera_times); break;
+    }
+  }
+  trace(integration_->integrator, {ws.camera_rays, ws.sample_keys, ws.samples, ws.camera_times}, out.rays,
+        ws.integrator->workspaces);
 
   const bool color_only = sums_.keeps_color_only();
   for (std::size_t i = 0; i < pixel_count; ++i) {

@@ -54,6 +54,16 @@ class Backend {
   virtual void intersect(std::span<const Ray> rays, std::span<Hit> hits, RayCoherence coherence) const;
   virtual void occluded(std::span<const Ray> rays, std::span<std::uint8_t> occluded, RayCoherence coherence) const;
 
+  // Rays at a time of the shutter (scene/motion.h: 0 at open, 1 at close), where the scene's
+  // moving shapes are interpolated. `times` empty: every ray at the frame's time, the calls above.
+  // By default the time is ignored (a backend of a scene where nothing moves).
+  virtual bool intersect(const Ray& ray, float /*time*/, Hit& hit) const { return intersect(ray, hit); }
+  virtual bool occluded(const Ray& ray, float /*time*/) const { return occluded(ray); }
+  void intersect(std::span<const Ray> rays, std::span<const float> times, std::span<Hit> hits,
+                 RayCoherence coherence) const;
+  void occluded(std::span<const Ray> rays, std::span<const float> times, std::span<std::uint8_t> occluded,
+                RayCoherence coherence) const;
+
   virtual BackendStats stats() const = 0;
 };
 

@@ -38,15 +38,26 @@ struct TriangleMesh {
   // Per vertex when the file has them, else empty; kept for texturing, not rendered yet.
   std::vector<TexCoord> uvs;
   std::vector<Color> colors;  // linear RGB
+  // Deformation during the shutter (scene/motion.h): the vertices at each time step, each as long
+  // as `vertices` (which holds them at the frame's time); empty: the mesh does not deform.
+  // normal_steps likewise for `normals`; empty while vertex_steps is not: the normals stay put.
+  std::vector<std::vector<PaddedVertex>> vertex_steps;
+  std::vector<std::vector<Vec3>> normal_steps;
 
   std::size_t triangle_count() const { return triangles.size(); }
   std::uint32_t material_of(std::uint32_t triangle) const {
     return triangle_materials.empty() ? material : triangle_materials[triangle];
   }
   Vec3 vertex(std::uint32_t i) const { return vertices[i].position(); }
+  bool moving() const { return !vertex_steps.empty(); }
+  // Vertex i and its shading normal at ray time `time` in [0, 1] (a moving mesh's).
+  Vec3 vertex_at(std::uint32_t i, float time) const;
+  Vec3 normal_at(std::uint32_t i, float time) const;
+  // Over the whole shutter for a moving mesh.
   BBox triangle_bounds(std::uint32_t t) const;
   BBox bounds() const;
   std::size_t memory_bytes() const;
+  std::size_t motion_memory_bytes() const;  // of vertex_steps and normal_steps
 };
 
 }  // namespace rtpro

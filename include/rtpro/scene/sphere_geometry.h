@@ -26,7 +26,18 @@ struct Sphere {
 
 struct SphereSet {
   std::vector<Sphere> spheres;
+  // Moving spheres (scene/motion.h): sphere i's centre at step j is center_steps[i * step_count
+  // + j]; empty when none of the set moves (a set with one moving sphere keys them all).
+  std::vector<Vec3> center_steps;
+  std::uint32_t step_count = 0;
+
+  bool moving() const { return !center_steps.empty(); }
+  // Sphere i's centre at ray time `time` in [0, 1] (moving sets only).
+  Vec3 center_at(std::uint32_t i, float time) const;
+  // Over the whole shutter for a moving set.
   BBox sphere_bounds(std::uint32_t i) const;
+  // At one time step (a moving set's), for Embree's per-step bounds.
+  BBox sphere_bounds_at_step(std::uint32_t i, std::uint32_t step) const;
 };
 
 // `type: sphere` in an object's or the world's list of entries.
@@ -36,7 +47,10 @@ void read_shape_entry(const YamlNode& node, ShapeEntryReader& reader, std::vecto
 // One geometry of every sphere an object lists in the scene file, in their order.
 SphereSet shapes_from(const std::vector<SphereDesc>& spheres);
 std::uint32_t primitive_count_of(const SphereSet& set);
-BBox primitive_bounds_of(const SphereSet& set, std::uint32_t prim);
+BBox primitive_bounds_of(const SphereSet& set, std::uint32_t prim);  // over the whole shutter
+inline BBox primitive_bounds_at_step(const SphereSet& set, std::uint32_t prim, std::uint32_t step) {
+  return set.sphere_bounds_at_step(prim, step);
+}
 BBox bounds_of(const SphereSet& set);  // of every sphere
 void tally_shapes(const SphereSet& set, ShapeTally& tally, SceneSummary& summary);
 // Memory the described shape adds to a render (scene/render_cost.h): a sphere's few dozen bytes

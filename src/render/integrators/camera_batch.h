@@ -14,6 +14,9 @@ struct CameraBatch {
   std::span<const Ray> rays;
   std::span<const SampleKey> keys;
   std::span<SampleResult> results;
+  // Per sample, its time in the shutter (scene/motion.h), which every ray of its path keeps;
+  // empty while the shutter is closed.
+  std::span<const float> times;
 };
 
 }  // namespace rtpro

@@ -334,6 +334,17 @@ void start_camera_paths(const CameraBatch& batch, PathWorkspace& ws) {
   }
 }
 
+// Each item's sample's time (an item is a path or a shadow query), or nothing while the shutter is
+// closed: every ray of a path is traced at its camera sample's time.
+template <typename Item, typename SampleOf>
+void times_of_samples(std::span<const float> sample_times, const std::vector<Item>& items, SampleOf&& sample_of,
+                      std::vector<float>& times) {
+  times.clear();
+  if (sample_times.empty()) return;
+  times.resize(items.size());
+  for (std::size_t i = 0; i < items.size(); ++i) times[i] = sample_times[sample_of(items[i])];
+}
+
 // Each path's camera sample key, for its vertex's draws.
 std::span<const SampleKey> path_keys(std::span<const SampleKey> keys, PathWorkspace& ws) {
   ws.path_keys.resize(ws.paths.size());
@@ -366,14 +377,17 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
   };
   for (int generation = 0; !ws.paths.empty(); ++generation) {
     ws.hits.resize(ws.rays.size());
-    backend_.intersect(ws.rays, ws.hits, generation == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
+    times_of_samples(
+        batch.times, ws.paths, [](const Path& path) { return path.sample; }, ws.ray_times);
+    backend_.intersect(ws.rays, ws.ray_times, ws.hits,
+                       generation == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
     ws.next_paths.clear();
     ws.next_rays.clear();
     ws.shadow_queries.clear();
     ws.shadow_rays.clear();
     ws.shadow_lights.clear();
     ws.surfaces.resize(ws.rays.size());
-    make_surfaces(scene, ws.rays, ws.hits, ws.surfaces);
+    make_surfaces(scene, ws.rays, ws.ray_times, ws.hits, ws.surfaces);
     if (generation < scene.render.max_depth) {
       ws.samples.draw(sampler, path_keys(batch.keys, ws), generation, draws_);
       if (lone_point_light) ws.samples.sample_lone_point_light(*lone_point_light, ws.surfaces);
@@ -382,7 +396,9 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
     else extend_generation(plain_step);
 
     ws.occluded.resize(ws.shadow_rays.size());
-    occluded_with_shadow_linking(backend_, scene.links, ws.shadow_rays, ws.shadow_lights, ws.occluded,
+    times_of_samples(
+        batch.times, ws.shadow_queries, [](const PathWorkspace::ShadowQuery& q) { return q.sample; }, ws.shadow_times);
+    occluded_with_shadow_linking(backend_, scene.links, ws.shadow_rays, ws.shadow_times, ws.shadow_lights, ws.occluded,
                                  RayCoherence::kIncoherent);
     counts[RayKind::kShadow] += ws.shadow_rays.size();
     for (std::size_t i = 0; i < ws.shadow_queries.size(); ++i)

@@ -69,6 +69,8 @@ class PathWorkspace {
   // Under light linking only: per shadow ray, the scene light it goes to, or kInvalidId.
   std::vector<std::uint32_t> shadow_lights;
   std::vector<std::uint8_t> occluded;
+  // While the shutter is open: per ray and per shadow ray, its sample's time (CameraBatch::times).
+  std::vector<float> ray_times, shadow_times;
 };
 
 // The path integrator with its scene, settings and lights (every light and emissive surface of the

@@ -244,7 +244,9 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
   // Any other hit, and plain hits left over from the last four: one at a time.
   auto make_one_surface = [&](Workspace::ShadedSurface& s) {
     const Ray& ray = generation.rays[s.task];
-    make_surface(scene, ray, ws.hits[s.task], s.point);
+    // The Whitted integrator traces every ray at time 0, the instant the shutter opens.
+    if (scene.camera.shutter.is_open()) make_surface_at(scene, ray, 0.0f, ws.hits[s.task], s.point);
+    else make_surface(scene, ray, ws.hits[s.task], s.point);
     s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
     complete(s);
   };
@@ -382,7 +384,7 @@ void WhittedIntegrator::trace(const CameraBatch& batch, RayCounts& counts, Works
     gather_surfaces(scene, sampler_, keys, ws.current, depth, records_primary_, results, ws);
 
     ws.occluded.resize(ws.shadow_rays.size());
-    occluded_with_shadow_linking(backend_, scene.links, ws.shadow_rays, ws.shadow_lights, ws.occluded,
+    occluded_with_shadow_linking(backend_, scene.links, ws.shadow_rays, {}, ws.shadow_lights, ws.occluded,
                                  depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
     counts[RayKind::kShadow] += ws.shadow_rays.size();
 

@@ -19,8 +19,9 @@ inline std::uint32_t link_group_of(const LightLinks& links, const Hit& hit) {
 // surfaces, the environment). An object that does not cast that light's shadows is transparent to
 // the ray, and only to it. Rays of lights nothing lets through take the backend's occlusion query
 // alone; the others, where that query finds something, are followed hit by hit.
+// `times`: each ray's time in the shutter (scene/motion.h), or empty.
 void occluded_with_shadow_linking(const Backend& backend, const LightLinks& links, std::span<const Ray> rays,
-                                  std::span<const std::uint32_t> light_of_ray, std::span<std::uint8_t> occluded,
-                                  RayCoherence coherence);
+                                  std::span<const float> times, std::span<const std::uint32_t> light_of_ray,
+                                  std::span<std::uint8_t> occluded, RayCoherence coherence);
 
 }  // namespace rtpro

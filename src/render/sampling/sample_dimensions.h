@@ -6,6 +6,9 @@ namespace rtpro::sample_dimension {
 
 inline constexpr int kPixel = 0;  // and 1: the position inside the pixel
 inline constexpr int kLens = 2;   // and 3: the point on the lens (thin-lens depth of field)
+// The sample's time in the shutter (scene/motion.h), drawn only while it is open: far past any
+// bounce's dimensions, so the images of an instant shutter keep every other dimension's values.
+inline constexpr int kTime = 1 << 24;
 // Decisions made at the k-th surface a sample's rays reach (k = 0 for the camera ray's hit) use
 // dimensions kFirstBounce + k · kPerBounce + offset, offset < kPerBounce.
 inline constexpr int kFirstBounce = 4;

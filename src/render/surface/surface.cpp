@@ -115,6 +115,31 @@ LocalSurface curve_surface(const CurveSet& curves, const Hit& hit, const Ray& ra
   throw RuntimeError("hit record names an instance as its primitive");
 }
 
+// The surface of a hit at ray time `time`: a moving sphere or deforming triangle where it is then.
+LocalSurface local_surface_at(const Group& group, const Hit& hit, const Ray& local_ray, float time, SurfacePoint& sp,
+                              float& fibre_error) {
+  const Geometry& geometry = group.geometries[hit.geom_id];
+  if (const auto* set = std::get_if<SphereSet>(&geometry); set && set->moving()) {
+    Sphere posed = set->spheres[hit.prim_id];
+    posed.center = set->center_at(hit.prim_id, time);
+    return sphere_surface(posed, local_ray, hit.t);
+  }
+  if (const auto* mesh = std::get_if<TriangleMesh>(&geometry); mesh && mesh->moving()) {
+    const TriangleIndices& tri = mesh->triangles[hit.prim_id];
+    const Vec3 p0 = mesh->vertex_at(tri.v0, time), p1 = mesh->vertex_at(tri.v1, time),
+               p2 = mesh->vertex_at(tri.v2, time);
+    const float w = 1.0f - hit.u - hit.v;
+    const Vec3 ng = cross(p1 - p0, p2 - p0);
+    const bool flat = mesh->normals.empty();
+    const Vec3 ns = flat ? ng
+                         : mesh->normal_at(tri.v0, time) * w + mesh->normal_at(tri.v1, time) * hit.u +
+                               mesh->normal_at(tri.v2, time) * hit.v;
+    const float mag = std::max(magnitude(p0), std::max(magnitude(p1), magnitude(p2)));
+    return {p0 * w + p1 * hit.u + p2 * hit.v, ng, ns, mag, mesh->material_of(hit.prim_id), flat};
+  }
+  return local_surface(group, hit, local_ray, sp, fibre_error);
+}
+
 // The surface's derivatives along its texture coordinates (object space, not unit).
 struct TextureDerivatives {
   Vec3 dpdu, dpdv;
@@ -179,7 +204,13 @@ TexCoord sphere_texture_coordinates(const Vec3& n) {
   return {0.5f + std::atan2(n.x, n.z) * (0.5f / kPi), 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) * (1.0f / kPi)};
 }
 
-void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfacePoint& sp) {
+namespace {
+
+// make_surface, and make_surface_at with kTimed: moving shapes and instances where they are at
+// `time`. One body, so the static surface is the same code it was before motion existed.
+template <bool kTimed>
+[[gnu::always_inline]] inline void surface_of(const RenderScene& scene, const Ray& ray, const Hit& hit, float time,
+                                              SurfacePoint& sp) {
   sp.tex_u = 0.0f;
   sp.tex_v = 0.0f;
   // `local` is initialised from the call's result, not assigned: an assignment copied the returned
@@ -187,30 +218,40 @@ void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, Surf
   const bool instanced = hit.inst_id != kInvalidId;
   const Instance* instance = instanced ? &std::get<Instance>(scene.top.geometries[hit.inst_id]) : nullptr;
   const Group& group = instanced ? scene.prototypes[instance->prototype] : scene.top;
+  InstancePlacement placement;
+  if (instanced) placement = {instance->object_to_world, instance->world_to_object};
+  if constexpr (kTimed) {
+    // A backend reports no hit where the placement is singular, so it has an inverse here.
+    if (instanced && instance->moving()) placement = placement_at(*instance, time).value_or(placement);
+  }
+  const Affine& to_world = placement.object_to_world;
+  const Affine& to_object = placement.world_to_object;
   sp.tangent = Vec3(0.0f);
   sp.bitangent_sign = 1.0f;
   sp.fiber_offset = 0.0f;
   float fibre_error = 0.0f;  // a curve's (curve_surface), in the object's space
-  LocalSurface local = instanced ? local_surface(group, hit,
-                                                 Ray{instance->world_to_object.apply_point(ray.org), ray.tnear,
-                                                     instance->world_to_object.apply_vector(ray.dir), ray.tfar},
-                                                 sp, fibre_error)
-                                 : local_surface(group, hit, ray, sp, fibre_error);
+  const auto local_of = [&](const Ray& local_ray) {
+    if constexpr (kTimed) return local_surface_at(group, hit, local_ray, time, sp, fibre_error);
+    else return local_surface(group, hit, local_ray, sp, fibre_error);
+  };
+  LocalSurface local =
+      instanced ? local_of(Ray{to_object.apply_point(ray.org), ray.tnear, to_object.apply_vector(ray.dir), ray.tfar})
+                : local_of(ray);
   std::optional<TextureDerivatives> derivatives;
   if (has_image_texture(scene, local.material))
     derivatives = texture_coordinates(group, hit, local.geometric_normal, sp);
   if (instanced) {
     if (derivatives) {
-      derivatives->dpdu = instance->object_to_world.apply_vector(derivatives->dpdu);
-      derivatives->dpdv = instance->object_to_world.apply_vector(derivatives->dpdv);
+      derivatives->dpdu = to_world.apply_vector(derivatives->dpdu);
+      derivatives->dpdv = to_world.apply_vector(derivatives->dpdv);
     }
-    local.position = instance->object_to_world.apply_point(local.position);
-    local.geometric_normal = instance->world_to_object.apply_normal_of_inverse(local.geometric_normal);
-    local.shading_normal = instance->world_to_object.apply_normal_of_inverse(local.shading_normal);
+    local.position = to_world.apply_point(local.position);
+    local.geometric_normal = to_object.apply_normal_of_inverse(local.geometric_normal);
+    local.shading_normal = to_object.apply_normal_of_inverse(local.shading_normal);
     // The transform adds error proportional to the translation and the transformed magnitude.
     local.magnitude = std::max(local.magnitude, magnitude(local.position)) * 4.0f;
     if (fibre_error > 0.0f) {
-      const Affine& m = instance->object_to_world;
+      const Affine& m = to_world;
       fibre_error *=
           std::max({length(m.apply_vector(Vec3(1.0f, 0.0f, 0.0f))), length(m.apply_vector(Vec3(0.0f, 1.0f, 0.0f))),
                     length(m.apply_vector(Vec3(0.0f, 0.0f, 1.0f)))});
@@ -242,6 +283,16 @@ void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, Surf
   Vec3 ns = safe_normalize(local.shading_normal, [&] { return ng; });
   if (dot(ns, ng) < 0.0f) ns = -ns;
   sp.shading_normal = ns;
+}
+
+}  // namespace
+
+void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfacePoint& sp) {
+  surface_of<false>(scene, ray, hit, 0.0f, sp);
+}
+
+void make_surface_at(const RenderScene& scene, const Ray& ray, float time, const Hit& hit, SurfacePoint& sp) {
+  surface_of<true>(scene, ray, hit, time, sp);
 }
 
 }  // namespace rtpro

@@ -40,6 +40,9 @@ struct SurfacePoint {
 // Writes the shading point of `hit` (a hit of `ray`) into `out`; every field is set. Filling the
 // caller's record in place spares the copy of a returned one, which stalled on store forwarding.
 void make_surface(const RenderScene& scene, const Ray& ray, const Hit& hit, SurfacePoint& out);
+// The surface of a hit by a ray at `time` (scene/motion.h): moving shapes and instances where
+// they are then; the rest as make_surface has them.
+void make_surface_at(const RenderScene& scene, const Ray& ray, float time, const Hit& hit, SurfacePoint& out);
 
 // Whether `material` reads an image (and so needs texture coordinates): its base colour, its
 // emission, its Whitted colour (the whitted integrator's albedo) or one of its model's own

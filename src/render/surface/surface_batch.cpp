@@ -322,4 +322,11 @@ void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::spa
       make_surface(scene, *waiting->rays[k], *waiting->hits[k], *waiting->points[k]);
 }
 
+void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::span<const float> times,
+                   std::span<const Hit> hits, std::span<SurfacePoint> out) {
+  if (times.empty()) return make_surfaces(scene, rays, hits, out);
+  for (std::size_t i = 0; i < hits.size(); ++i)
+    if (hits[i].valid()) make_surface_at(scene, rays[i], times[i], hits[i], out[i]);
+}
+
 }  // namespace rtpro

@@ -13,7 +13,7 @@ namespace rtpro {
 inline bool is_plain_sphere_hit(const RenderScene& scene, const Hit& hit) {
   if (hit.inst_id != kInvalidId) return false;
   const auto* set = std::get_if<SphereSet>(&scene.top.geometries[hit.geom_id]);
-  return set && !has_image_texture(scene, set->spheres[hit.prim_id].material);
+  return set && !set->moving() && !has_image_texture(scene, set->spheres[hit.prim_id].material);
 }
 
 // make_surface for four plain sphere hits at once (is_plain_sphere_hit), lane by lane in SSE2
@@ -30,7 +30,7 @@ void make_sphere_surfaces4(const RenderScene& scene, const Ray* const rays[4], c
 inline bool is_plain_triangle_hit(const RenderScene& scene, const Hit& hit) {
   if (hit.inst_id != kInvalidId) return false;
   const auto* mesh = std::get_if<TriangleMesh>(&scene.top.geometries[hit.geom_id]);
-  return mesh && !has_image_texture(scene, mesh->material_of(hit.prim_id));
+  return mesh && !mesh->moving() && !has_image_texture(scene, mesh->material_of(hit.prim_id));
 }
 
 // make_surface for four plain triangle hits at once (is_plain_triangle_hit), with the same
@@ -45,5 +45,9 @@ void make_triangle_surfaces4(const RenderScene& scene, const Ray* const rays[4],
 // and divisions for four surfaces.
 void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::span<const Hit> hits,
                    std::span<SurfacePoint> out);
+// The same for rays at `times` (scene/motion.h; empty: the call above), one by one with
+// make_surface_at.
+void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::span<const float> times,
+                   std::span<const Hit> hits, std::span<SurfacePoint> out);
 
 }  // namespace rtpro

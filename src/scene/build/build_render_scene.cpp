@@ -61,11 +61,11 @@ class RenderSceneBuilder {
     prototype_of_object_.assign(description_.objects.size(), std::nullopt);
     add_own_shapes(description_.world, scene_.top, true);
     for (const GltfDesc& gltf : description_.world.gltfs) {
-      place_gltf(gltf, Affine::identity());
+      place_gltf(gltf, Affine::identity(), {});
       linking_of_object_.resize(scene_.top.geometries.size(), gltf.linking);
     }
     for (const InstanceDesc& instance : description_.world.instances) {
-      flatten_instance(instance.object, instance.transform, instance.where);
+      flatten_instance(instance.object, instance.transform, instance.transform_steps, instance.where);
       linking_of_object_.resize(scene_.top.geometries.size(), instance.linking);
     }
     link_objects();
@@ -227,14 +227,21 @@ class RenderSceneBuilder {
     return id;
   }
 
-  void add_instance(std::uint32_t prototype, const Affine& to_world, const GeometryOrigin& origin) {
+  void add_instance(std::uint32_t prototype, const Affine& to_world, std::span<const Affine> to_world_steps,
+                    const GeometryOrigin& origin) {
     if (++flattened_ > kMaxFlattenedInstances)
       throw geometry_error(origin, "instancing expands to more than " + std::to_string(kMaxFlattenedInstances) +
                                        " instances after flattening nested instances");
     const auto inverse_transform = inverse(to_world);
     if (!inverse_transform)
       throw geometry_error(origin, "instance transform (combined with its parents) is singular or not finite");
-    scene_.top.geometries.emplace_back(Instance{prototype, to_world, *inverse_transform});
+    for (const Affine& step : to_world_steps)
+      if (!step.is_finite() || !inverse(step))
+        throw geometry_error(origin,
+                             "instance transform (combined with its parents) is singular or not finite "
+                             "during the shutter");
+    scene_.top.geometries.emplace_back(
+        Instance{prototype, to_world, *inverse_transform, {to_world_steps.begin(), to_world_steps.end()}});
     top_origins_.push_back(origin);
   }
 
@@ -306,18 +313,22 @@ class RenderSceneBuilder {
     return mesh;
   }
 
-  void place_gltf(const GltfDesc& desc, const Affine& to_world) {
+  // `to_world_steps`: the placement's time steps (scene/motion.h), empty when it does not move.
+  void place_gltf(const GltfDesc& desc, const Affine& to_world, std::span<const Affine> to_world_steps) {
     const PlacedGltf& placed = gltf_prototypes(desc);
     for (const GltfPlacement& p : placed.asset->placements)
       if (const auto prototype = placed.prototype_of_mesh[p.mesh])
-        add_instance(*prototype, compose(to_world, p.transform), {&desc.where, &desc.file, p.node});
+        add_instance(*prototype, compose(to_world, p.transform),
+                     compose_steps(to_world, to_world_steps, p.transform, {}), {&desc.where, &desc.file, p.node});
   }
 
-  void flatten_instance(std::uint32_t object, const Affine& to_world, const SourceLocation& where) {
-    if (const auto prototype = prototype_of(object)) add_instance(*prototype, to_world, {&where});
-    for (const GltfDesc& gltf : description_.objects[object].gltfs) place_gltf(gltf, to_world);
+  void flatten_instance(std::uint32_t object, const Affine& to_world, std::span<const Affine> to_world_steps,
+                        const SourceLocation& where) {
+    if (const auto prototype = prototype_of(object)) add_instance(*prototype, to_world, to_world_steps, {&where});
+    for (const GltfDesc& gltf : description_.objects[object].gltfs) place_gltf(gltf, to_world, to_world_steps);
     for (const InstanceDesc& nested : description_.objects[object].instances)
-      flatten_instance(nested.object, compose(to_world, nested.transform), nested.where);
+      flatten_instance(nested.object, compose(to_world, nested.transform),
+                       compose_steps(to_world, to_world_steps, nested.transform, nested.transform_steps), nested.where);
   }
 
   // Light linking: the group of each top-level object (none when no world entry is linked), per

@@ -22,6 +22,7 @@ RenderCamera make_render_camera(const CameraDesc& desc) {
   c.half_height = static_cast<float>(std::tan(double(desc.fov_degrees) * std::numbers::pi / 360.0));
   c.half_width = c.half_height * static_cast<float>(desc.width) / static_cast<float>(desc.height);
   c.lens_radius = desc.aperture;
+  c.shutter = desc.shutter;
   c.focus_distance = desc.focus_distance > 0.0f ? desc.focus_distance : length(desc.look_at - desc.position);
   return c;
 }

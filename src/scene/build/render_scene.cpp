@@ -16,7 +16,11 @@ std::uint32_t Group::primitive_count(std::uint32_t g) const {
 
 BBox Group::primitive_bounds(std::uint32_t g, std::uint32_t prim, std::span<const BBox> prototype_bounds) const {
   return std::visit(Overloaded{[&](const Instance& instance) {
-                                 return instance.object_to_world.apply(prototype_bounds[instance.prototype]);
+                                 BBox box = instance.object_to_world.apply(prototype_bounds[instance.prototype]);
+                                 // Linear in time between steps: the steps' boxes hold the motion.
+                                 for (const Affine& step : instance.object_to_world_steps)
+                                   box.extend(step.apply(prototype_bounds[instance.prototype]));
+                                 return box;
                                },
                                [&](const auto& shapes) { return primitive_bounds_of(shapes, prim); }},
                     geometries[g]);
@@ -30,6 +34,13 @@ BBox Group::bounds(std::span<const BBox> prototype_bounds) const {
                geometries[g]);
   }
   return b;
+}
+
+std::optional<InstancePlacement> placement_at(const Instance& instance, float time) {
+  const Affine to_world = value_at_time<Affine>(instance.object_to_world_steps, time);
+  const std::optional<Affine> to_object = inverse(to_world);
+  if (!to_object) return std::nullopt;
+  return InstancePlacement{to_world, *to_object};
 }
 
 std::vector<BBox> RenderScene::prototype_bounds() const {

@@ -1,19 +1,47 @@
 #include "rtpro/scene/sphere_geometry.h"
 
 #include "rtpro/scene/description.h"
+#include "rtpro/scene/motion.h"
 #include "rtpro/scene/scene_summary.h"
+
+#include <algorithm>
+#include <span>
 
 namespace rtpro {
 
 BBox SphereSet::sphere_bounds(std::uint32_t i) const {
   const Sphere& s = spheres[i];
-  return {s.center - Vec3(s.radius), s.center + Vec3(s.radius)};
+  BBox box{s.center - Vec3(s.radius), s.center + Vec3(s.radius)};
+  for (std::uint32_t step = 0; step < step_count; ++step) box.extend(sphere_bounds_at_step(i, step));
+  return box;
+}
+
+BBox SphereSet::sphere_bounds_at_step(std::uint32_t i, std::uint32_t step) const {
+  const Vec3 center = center_steps[std::size_t{i} * step_count + step];
+  return {center - Vec3(spheres[i].radius), center + Vec3(spheres[i].radius)};
+}
+
+Vec3 SphereSet::center_at(std::uint32_t i, float time) const {
+  return value_at_time(std::span<const Vec3>(center_steps.data() + std::size_t{i} * step_count, step_count), time);
 }
 
 SphereSet shapes_from(const std::vector<SphereDesc>& spheres) {
   SphereSet set;
   set.spheres.reserve(spheres.size());
-  for (const SphereDesc& s : spheres) set.spheres.push_back({s.center, s.radius, s.material});
+  std::size_t steps = 0;
+  for (const SphereDesc& s : spheres) {
+    set.spheres.push_back({s.center, s.radius, s.material});
+    steps = std::max(steps, s.center_steps.size());
+  }
+  if (steps == 0) return set;
+  // One step count for the set: the others' steps resampled, the static spheres' repeated.
+  set.step_count = static_cast<std::uint32_t>(steps);
+  for (const SphereDesc& s : spheres) {
+    const std::vector<Vec3> own = s.center_steps.empty()
+                                      ? std::vector<Vec3>(steps, s.center)
+                                      : resample_steps<Vec3>(s.center_steps, static_cast<int>(steps));
+    set.center_steps.insert(set.center_steps.end(), own.begin(), own.end());
+  }
   return set;
 }
 
@@ -29,7 +57,7 @@ BBox bounds_of(const SphereSet& set) {
 
 void tally_shapes(const SphereSet& set, ShapeTally& tally, SceneSummary& summary) {
   tally.spheres += set.spheres.size();
-  summary.geometry_bytes += set.spheres.capacity() * sizeof(Sphere);
+  summary.geometry_bytes += set.spheres.capacity() * sizeof(Sphere) + set.center_steps.capacity() * sizeof(Vec3);
   tally.primitives += set.spheres.size();
 }
 

@@ -71,9 +71,20 @@ void read_resolution(const YamlNode& node, CameraDesc& camera) {
   }
 }
 
+// `camera.shutter: [open, close]`, in frames relative to the frame's time.
+Shutter read_shutter(const YamlNode& node) {
+  const auto& items = read_list(node, "camera.shutter", 2, "[open, close] in frames relative to the frame");
+  const double open = read_number(*items[0], "camera.shutter");
+  const double close = read_number(*items[1], "camera.shutter");
+  if (!(close >= open))
+    fail_at(node, "camera.shutter: the shutter must close no earlier than it opens ([open, close] in frames), got [" +
+                      std::string(items[0]->scalar()) + ", " + std::string(items[1]->scalar()) + "]");
+  return {static_cast<float>(open), static_cast<float>(close)};
+}
+
 CameraDesc read_camera(const YamlNode& node) {
-  const MappingReader camera(node, "camera",
-                             {"position", "look_at", "up", "fov", "resolution", "aperture", "focus_distance"});
+  const MappingReader camera(
+      node, "camera", {"position", "look_at", "up", "fov", "resolution", "aperture", "focus_distance", "shutter"});
   CameraDesc desc;
   desc.position = read_position(camera.required("position"), "camera.position");
   const YamlNode& look_at = camera.required("look_at");
@@ -106,6 +117,7 @@ CameraDesc read_camera(const YamlNode& node) {
                              std::string(aperture->scalar()));
     desc.aperture = static_cast<float>(radius);
   }
+  if (const YamlNode* shutter = camera.optional("shutter")) desc.shutter = read_shutter(*shutter);
   if (const YamlNode* focus = camera.optional("focus_distance")) {
     const double distance = read_number(*focus, "camera.focus_distance");
     if (!(distance > 0.0) || !std::isfinite(static_cast<float>(distance)))
@@ -215,8 +227,9 @@ LightUnits written_light_units(const YamlNode& root) {
   return name == "path" ? LightUnits::kRadiometric : LightUnits::kWhitted;
 }
 
-SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& file, LightUnits written_units,
+SceneDescription read_scene(const YamlDocument& document, const std::filesystem::path& file, LightUnits written_units,
                             std::vector<MaterialDesc>* model_materials) {
+  const YamlNode& root = document.root();
   check_scene_root(root);
   read_version(root);
   const MappingReader scene(root, "the scene",
@@ -230,7 +243,8 @@ SceneDescription read_scene(const YamlNode& root, const std::filesystem::path& f
   read_lights(scene.optional("lights"), desc.lights, desc.light_names);
   desc.light_sources.assign(desc.lights.size(), std::string());
   desc.environment = read_environment(scene.optional("environment"), file.parent_path());
-  read_scene_objects(scene.optional("objects"), scene.optional("world"), file.parent_path(), desc);
+  read_scene_objects(scene.optional("objects"), scene.optional("world"), file.parent_path(),
+                     YamlMotion(document, desc.camera.shutter), desc);
   return desc;
 }
 
@@ -332,7 +346,7 @@ SceneDescription parse_scene_text(std::string_view text, const std::filesystem::
   const LightUnits written_units = written_light_units(document.root());
   for (const std::string& override_text : overrides) document.apply_override(override_text);
   document.resolve_variables();
-  SceneDescription description = read_scene(document.root(), file, written_units, model_materials);
+  SceneDescription description = read_scene(document, file, written_units, model_materials);
   description.source_files = std::move(included);
   return description;
 }

@@ -15,6 +15,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace rtpro {
@@ -165,6 +166,13 @@ class YamlDocument {
 
   const YamlNode& root() const { return *root_; }
 
+  // The frame keyframes were read at (the scene variable `frame`; 1 when unset).
+  double frame() const { return frame_; }
+  // A node of root() as it reads at another frame: its keyframes and $frame substituted again
+  // (a motion blur's time steps read a keyframed transform this way). The node itself where no
+  // substitution touched it.
+  YamlNodePtr at_frame(const YamlNode& resolved, double frame) const;
+
  private:
   YamlDocument() = default;
   static YamlDocument parse_included(std::string_view text, const std::string& source_name,
@@ -178,6 +186,10 @@ class YamlDocument {
   YamlNodePtr root_ = nullptr;
   bool has_includes_ = false;   // an `include` key was read: expansion walks the tree
   bool has_variables_ = false;  // a `$`, `variables` or `keyframes` was read: substitution walks it
+  // Kept by resolve_variables for at_frame: the variables and each substituted node's original.
+  YamlNodePtr variables_ = nullptr;
+  std::unordered_map<const YamlNode*, YamlNodePtr> originals_;
+  double frame_ = 1.0;
 };
 
 }  // namespace rtpro

@@ -109,6 +109,8 @@ class ObjectsReader {
   ObjectsReader(const std::vector<MaterialDesc>& materials, std::filesystem::path folder, SceneDescription& scene)
       : shapes_(materials, std::move(folder), scene) {}
 
+  void set_motion(const YamlMotion& motion) { shapes_.set_motion(motion); }
+
   void read(const YamlNode* objects, const YamlNode* world, SceneDescription& scene) {
     const bool has_objects = objects && !objects->is_null();
     if (has_objects && !objects->is_mapping())
@@ -175,8 +177,11 @@ class ObjectsReader {
                                                     : suggestion(name, objects_.names())));
     }
     desc.object = *index;
-    if (const YamlNode* transform = instance.optional("transform"))
-      desc.transform = read_transform(*transform, instance.field("transform"));
+    if (const YamlNode* transform = instance.optional("transform")) {
+      const auto read = [&](const YamlNode& at) { return read_transform(at, instance.field("transform")); };
+      desc.transform = read(*transform);
+      desc.transform_steps = shapes_.motion().transform_steps(*transform, read);
+    }
     desc.where = node.at.location();
     desc.linking = shapes_.read_linking(instance);
     links.push_back({*index, object.at});
@@ -192,8 +197,10 @@ class ObjectsReader {
 }  // namespace
 
 void read_scene_objects(const YamlNode* objects, const YamlNode* world, const std::filesystem::path& folder,
-                        SceneDescription& scene) {
-  ObjectsReader(scene.materials, folder, scene).read(objects, world, scene);
+                        const YamlMotion& motion, SceneDescription& scene) {
+  ObjectsReader reader(scene.materials, folder, scene);
+  reader.set_motion(motion);
+  reader.read(objects, world, scene);
 }
 
 }  // namespace rtpro

@@ -4,6 +4,7 @@
 // world entries' light linking too) and checking the instance graph for cycles and nesting depth.
 #include "rtpro/scene/description.h"
 #include "yaml_document.h"
+#include "yaml_motion.h"
 
 #include <cstddef>
 #include <filesystem>
@@ -17,7 +18,8 @@ inline constexpr int kMaxInstanceNesting = 16;
 inline constexpr std::size_t kMaxSceneEntries = std::size_t{1} << 24;
 
 // Either node may be null (absent). Mesh paths are resolved against `folder` and must exist.
+// `motion`: how keyframed transforms and sphere centres are read at the shutter's time steps.
 void read_scene_objects(const YamlNode* objects, const YamlNode* world, const std::filesystem::path& folder,
-                        SceneDescription& scene);
+                        const YamlMotion& motion, SceneDescription& scene);
 
 }  // namespace rtpro

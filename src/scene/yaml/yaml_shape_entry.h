@@ -4,6 +4,7 @@
 // (read_shape_entry, declared beside the kind: scene/sphere_geometry.h); yaml_scene_objects.cpp
 // hands each entry to the kind its `type:` names.
 #include "rtpro/scene/description.h"
+#include "yaml_motion.h"
 #include "yaml_name_table.h"
 #include "yaml_reader.h"
 
@@ -27,6 +28,9 @@ class ShapeEntryReader {
   ObjectDesc& object() const { return *object_; }
   // The scene file's folder, for a file named by a value no file wrote (--set).
   const std::filesystem::path& folder() const { return folder_; }
+  // What moves during the shutter: keyframed values read at its steps.
+  const YamlMotion& motion() const { return motion_; }
+  void set_motion(const YamlMotion& motion) { motion_ = motion; }
 
   // The index of the material `node` names; an unknown name fails at the node, with a suggestion.
   std::uint32_t material_index(const YamlNode& node, const std::string& field) const;
@@ -46,6 +50,7 @@ class ShapeEntryReader {
   NameTable materials_;
   ObjectDesc* object_ = nullptr;
   bool in_world_ = false;
+  YamlMotion motion_;
 };
 
 }  // namespace rtpro

@@ -11,7 +11,11 @@ void read_shape_entry(const YamlNode& node, ShapeEntryReader& reader, std::vecto
   const MappingReader sphere(node, "sphere",
                              {"type", "center", "radius", "material", kLightLinkingKey, kShadowLinkingKey});
   SphereDesc desc;
-  if (const YamlNode* center = sphere.optional("center")) desc.center = read_position(*center, sphere.field("center"));
+  if (const YamlNode* center = sphere.optional("center")) {
+    const auto read_center = [&](const YamlNode& at) { return read_position(at, sphere.field("center")); };
+    desc.center = read_center(*center);
+    desc.center_steps = reader.motion().position_steps(*center, read_center);
+  }
   if (const YamlNode* radius = sphere.optional("radius")) {
     const double value = read_number(*radius, sphere.field("radius"));
     if (!(value > 0.0)) fail_at(*radius, sphere.field("radius") + " must be > 0, got " + std::string(radius->scalar()));

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <optional>
+#include <cstdio>
 #include <set>
 #include <unordered_map>
 
@@ -28,7 +30,9 @@ bool is_name_char(char c) { return is_name_start(c) || (c >= '0' && c <= '9'); }
 
 class Substitution {
  public:
-  Substitution(const YamlNode& variables, YamlNodeArena& arena) : arena_(arena) {
+  // `frame`: the frame keyframes and $frame read, instead of the variable's (motion steps).
+  Substitution(const YamlNode& variables, YamlNodeArena& arena, std::optional<double> frame = std::nullopt)
+      : arena_(arena) {
     if (!variables.is_mapping() && !variables.is_null())
       throw InputError(variables.at.location(),
                        "variables: expected a mapping of names to values, got " + variables.describe());
@@ -41,6 +45,14 @@ class Substitution {
                              "' is not a name (letters, digits and '_', not starting with a digit)");
       values_[std::string(entry.key)] = entry.value;
       if (entry.key_at.line == 0 && entry.key_at.source) command_line_.push_back(&entry);
+    }
+    if (frame) {
+      YamlNode* value = arena_.node();
+      value->kind = YamlNode::Kind::scalar;
+      char text[40];
+      std::snprintf(text, sizeof text, "%.17g", *frame);
+      value->set_scalar(arena_.text(text));
+      values_["frame"] = value;
     }
   }
 
@@ -65,6 +77,14 @@ class Substitution {
     applied_.emplace(node, result);
     return result;
   }
+
+  // Each substituted node's original, for substituting it again at another frame.
+  void record_originals(std::unordered_map<const YamlNode*, YamlNodePtr>& originals) const {
+    for (const auto& [original, result] : applied_) originals.emplace(result, original);
+  }
+
+  // The frame being rendered.
+  double frame_number() const { return frame(); }
 
  private:
   YamlNodePtr apply_once(YamlNodePtr node) const {
@@ -211,6 +231,17 @@ void YamlDocument::resolve_variables() {
   const Substitution substitution(*variables, *arena_);
   root_ = substitution.apply(arena_->with_entries(*root_, entries));
   substitution.check_command_line_variables_used();
+  variables_ = variables == &none ? nullptr : variables;
+  frame_ = substitution.frame_number();
+  substitution.record_originals(originals_);
+}
+
+YamlNodePtr YamlDocument::at_frame(const YamlNode& resolved, double frame) const {
+  const auto original = originals_.find(&resolved);
+  if (original == originals_.end()) return &resolved;  // nothing was substituted: the same at every frame
+  const YamlNode none;
+  const Substitution substitution(variables_ ? *variables_ : none, *arena_, frame);
+  return substitution.apply(original->second);
 }
 
 }  // namespace rtpro
