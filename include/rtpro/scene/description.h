@@ -10,6 +10,7 @@
 #include "rtpro/scene/light.h"  // LightDesc
 #include "rtpro/scene/material_kinds.h"
 #include "rtpro/scene/material_textures.h"
+#include "rtpro/scene/motion.h"
 #include "rtpro/scene/render_settings.h"
 // Each kind of shape's scene side (its entries' type and reader, its shapes and their bounds),
 // here so that whatever visits the lists below finds the kind's functions.
@@ -42,6 +43,8 @@ struct CameraDesc {
   // along the view direction that is in focus (0: the distance to look_at).
   float aperture = 0.0f;
   float focus_distance = 0.0f;
+  // `camera.shutter`: the exposure in frames relative to the frame's time (scene/motion.h).
+  Shutter shutter;
 };
 
 // A procedural checkerboard in world space: squares (or cubes) of side `size`, alternating
@@ -105,7 +108,9 @@ struct LightLinkingDesc {
 inline constexpr std::uint32_t kNoLinking = ~0u;
 
 struct SphereDesc {
-  Vec3 center;
+  Vec3 center;  // at the frame's time
+  // The centre at each time step of the shutter (scene/motion.h); empty: the sphere does not move.
+  std::vector<Vec3> center_steps;
   float radius = 1.0f;
   std::uint32_t material = 0;          // index into SceneDescription::materials
   std::uint32_t linking = kNoLinking;  // index into SceneDescription::linkings (world entries only)
@@ -144,7 +149,9 @@ struct GltfDesc {
 
 struct InstanceDesc {
   std::uint32_t object = 0;  // index into SceneDescription::objects
-  Affine transform;          // object to parent
+  Affine transform;          // object to parent, at the frame's time
+  // Object to parent at each time step of the shutter (scene/motion.h); empty: static.
+  std::vector<Affine> transform_steps;
   SourceLocation where;
   std::uint32_t linking = kNoLinking;  // every instance this one expands to
 };

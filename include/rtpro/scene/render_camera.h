@@ -3,6 +3,7 @@
 // aperture) with its frame worked out once. Right-handed world, +y up by convention: the image's +x runs along cross(forward, up);
 // pixel coordinates are continuous, (0,0) at the top-left corner.
 #include "rtpro/core/vec3.h"
+#include "rtpro/scene/motion.h"
 
 namespace rtpro {
 
@@ -21,6 +22,9 @@ struct RenderCamera {
   // Thin lens: radius in scene units (0: pinhole) and the focus distance along `forward`.
   float lens_radius = 0.0f;
   float focus_distance = 1.0f;
+
+  // The exposure (scene/motion.h); while open, each camera sample gets a time in it.
+  Shutter shutter;
 };
 
 }  // namespace rtpro

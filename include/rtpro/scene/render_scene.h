@@ -10,6 +10,7 @@
 #include "rtpro/scene/light_links.h"
 #include "rtpro/scene/material_kinds.h"
 #include "rtpro/scene/material_textures.h"
+#include "rtpro/scene/motion.h"
 #include "rtpro/scene/render_camera.h"
 #include "rtpro/scene/render_settings.h"
 #include "rtpro/scene/sphere_geometry.h"
@@ -29,8 +30,11 @@ namespace rtpro {
 
 struct Instance {
   std::uint32_t prototype;  // index into RenderScene::prototypes
-  Affine object_to_world;
+  Affine object_to_world;   // at the frame's time
   Affine world_to_object;
+  // object_to_world at each time step of the shutter (scene/motion.h); empty: static. The
+  // transform at a ray's time is interpolated from these and inverted.
+  std::vector<Affine> object_to_world_steps;
 };
 
 // One geometry of a group; its index in the group is the geometry id a hit reports. Each kind of
