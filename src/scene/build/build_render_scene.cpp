@@ -7,6 +7,7 @@
 #include "traceable_range_check.h"
 #include "gltf_asset.h"
 #include "gltf_loader.h"
+#include "gltf_motion.h"
 #include "material_textures.h"
 #include "subdivided_mesh.h"
 
@@ -213,11 +214,25 @@ class RenderSceneBuilder {
     top_origins_.push_back(origin);
   }
 
+  // The last instance's time steps: `to_world` after each of `steps`.
+  void add_instance_steps(const Affine& to_world, const std::vector<Affine>& steps, const GeometryOrigin& origin) {
+    Instance& instance = std::get<Instance>(scene_.top.geometries.back());
+    for (const Affine& step : steps) {
+      const Affine composed = compose(to_world, step);
+      if (!composed.is_finite() || !inverse(composed))
+        throw geometry_error(origin, "instance transform is singular or not finite during the shutter");
+      instance.object_to_world_steps.push_back(composed);
+    }
+  }
+
   // A glTF file loaded once per (file, normals, material) however often it is placed: each of its
   // meshes one prototype, each node drawing a mesh one instance.
+  // The file posed at the frame (gltf_motion.h), its skinned and morphed meshes prototypes of their own.
   struct PlacedGltf {
     std::shared_ptr<const GltfAsset> asset;
-    std::vector<std::optional<std::uint32_t>> prototype_of_mesh;  // none for meshes without triangles
+    GltfPose pose;
+    std::vector<std::optional<std::uint32_t>> prototype_of_mesh;      // none for meshes without triangles
+    std::vector<std::optional<std::uint32_t>> prototype_of_deformed;  // per pose.deformed
   };
 
   const PlacedGltf& gltf_prototypes(const GltfDesc& desc) {
@@ -246,12 +261,12 @@ class RenderSceneBuilder {
     const auto material = [&](std::uint32_t m) {
       return desc.material != kNoMaterial ? desc.material : m == kNoMaterial ? 0u : remap[m];
     };
-    PlacedGltf placed{asset, {}};
-    for (const TriangleMesh& source : asset->meshes) {
-      if (source.triangles.empty()) {
-        placed.prototype_of_mesh.emplace_back();
-        continue;
-      }
+    PlacedGltf placed{asset,
+                      pose_gltf_frame(*asset, description_.frame, description_.render.fps, description_.camera.shutter),
+                      {},
+                      {}};
+    const auto add_prototype = [&](const TriangleMesh& source) -> std::optional<std::uint32_t> {
+      if (source.triangles.empty()) return std::nullopt;
       TriangleMesh mesh = desc.subdivision ? subdivided_gltf_mesh(desc, source) : source;
       mesh.material = material(mesh.material);
       if (desc.material != kNoMaterial) mesh.triangle_materials = {};
@@ -259,8 +274,11 @@ class RenderSceneBuilder {
       Group group;
       group.geometries.emplace_back(std::move(mesh));
       scene_.prototypes.push_back(std::move(group));
-      placed.prototype_of_mesh.emplace_back(static_cast<std::uint32_t>(scene_.prototypes.size() - 1));
-    }
+      return static_cast<std::uint32_t>(scene_.prototypes.size() - 1);
+    };
+    for (const TriangleMesh& source : asset->meshes) placed.prototype_of_mesh.push_back(add_prototype(source));
+    for (const TriangleMesh& source : placed.pose.deformed)
+      placed.prototype_of_deformed.push_back(add_prototype(source));
     return gltfs_.emplace(key, std::move(placed)).first->second;
   }
 
@@ -279,9 +297,14 @@ class RenderSceneBuilder {
 
   void place_gltf(const GltfDesc& desc, const Affine& to_world) {
     const PlacedGltf& placed = gltf_prototypes(desc);
-    for (const GltfPlacement& p : placed.asset->placements)
-      if (const auto prototype = placed.prototype_of_mesh[p.mesh])
-        add_instance(*prototype, compose(to_world, p.transform), {&desc.where, &desc.file, p.node});
+    for (const GltfPlacement& p : placed.pose.placements) {
+      const auto prototype =
+          p.deformed >= 0 ? placed.prototype_of_deformed[std::size_t(p.deformed)] : placed.prototype_of_mesh[p.mesh];
+      if (!prototype) continue;
+      const GeometryOrigin origin{&desc.where, &desc.file, p.node};
+      add_instance(*prototype, compose(to_world, p.transform), origin);
+      if (!p.transform_steps.empty()) add_instance_steps(to_world, p.transform_steps, origin);
+    }
   }
 
   void flatten_instance(std::uint32_t object, const Affine& to_world, const SourceLocation& where) {

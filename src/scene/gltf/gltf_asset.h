@@ -31,6 +31,8 @@ struct GltfPlacement {
   // The mesh as the node's skin or morph weights pose it: an index into GltfPose::deformed, which
   // `transform` places (the identity for a skinned mesh, whose joints place it); -1: meshes[mesh].
   std::int32_t deformed = -1;
+  // `transform` at each time step of the shutter (scene/motion.h); empty: still during it.
+  std::vector<Affine> transform_steps;
 };
 
 struct GltfCamera {

@@ -82,49 +82,55 @@ void place_light(GltfLight& light, const Affine& world) {
   light.direction = length(direction) > 0.0f ? normalize(direction) : Vec3(0, -1, 0);
 }
 
-}  // namespace gltf
-
-GltfPose pose_gltf(const GltfAsset& asset, double seconds) {
-  if (!asset.animated()) return asset;
+NodeState animate_nodes(const GltfAsset& asset, double seconds) {
   const std::size_t count = asset.nodes.size();
   std::vector<Vec3> translation(count), scale(count);
-  std::vector<gltf::Quaternion> rotation(count);
+  std::vector<Quaternion> rotation(count);
   for (std::size_t n = 0; n < count; ++n) {
     translation[n] = asset.nodes[n].translation;
     rotation[n] = asset.nodes[n].rotation;
     scale[n] = asset.nodes[n].scale;
   }
-  std::vector<std::vector<double>> weights = gltf::rest_weights(asset);
+  NodeState state{{}, rest_weights(asset)};
   // Each node follows the first animation with a channel for it (gltf_pose.h).
   std::vector<std::size_t> animation_of(count, asset.animations.size());
   for (std::size_t a = 0; a < asset.animations.size(); ++a)
-    for (const gltf::AnimationChannel& c : asset.animations[a].channels)
+    for (const AnimationChannel& c : asset.animations[a].channels)
       animation_of[c.node] = std::min(animation_of[c.node], a);
   for (std::size_t a = 0; a < asset.animations.size(); ++a) {
-    const gltf::Animation& animation = asset.animations[a];
-    for (const gltf::AnimationChannel& c : animation.channels) {
+    const Animation& animation = asset.animations[a];
+    for (const AnimationChannel& c : animation.channels) {
       if (animation_of[c.node] != a) continue;
-      const gltf::AnimationSampler& sampler = animation.samplers[c.sampler];
+      const AnimationSampler& sampler = animation.samplers[c.sampler];
       std::vector<double> value(sampler.width);
-      gltf::sample(sampler, seconds, c.path == gltf::AnimatedPath::kRotation, value);
+      sample(sampler, seconds, c.path == AnimatedPath::kRotation, value);
       switch (c.path) {
-        case gltf::AnimatedPath::kTranslation:
+        case AnimatedPath::kTranslation:
           translation[c.node] = Vec3(float(value[0]), float(value[1]), float(value[2]));
           break;
-        case gltf::AnimatedPath::kRotation: rotation[c.node] = {value[0], value[1], value[2], value[3]}; break;
-        case gltf::AnimatedPath::kScale: scale[c.node] = Vec3(float(value[0]), float(value[1]), float(value[2])); break;
-        case gltf::AnimatedPath::kWeights: weights[c.node] = std::move(value); break;
+        case AnimatedPath::kRotation: rotation[c.node] = {value[0], value[1], value[2], value[3]}; break;
+        case AnimatedPath::kScale: scale[c.node] = Vec3(float(value[0]), float(value[1]), float(value[2])); break;
+        case AnimatedPath::kWeights: state.weights[c.node] = std::move(value); break;
       }
     }
   }
   std::vector<Affine> locals(count);
   for (std::size_t n = 0; n < count; ++n) {
     const GltfNode& node = asset.nodes[n];
-    locals[n] = node.matrix ? *node.matrix : gltf::local_transform(translation[n], rotation[n], scale[n]);
+    locals[n] = node.matrix ? *node.matrix : local_transform(translation[n], rotation[n], scale[n]);
   }
+  state.world = node_worlds(asset, locals);
+  return state;
+}
+
+}  // namespace gltf
+
+GltfPose pose_gltf(const GltfAsset& asset, double seconds) {
+  if (!asset.animated()) return asset;
+  gltf::NodeState state = gltf::animate_nodes(asset, seconds);
   GltfPose pose;
-  pose.world = gltf::node_worlds(asset, locals);
-  gltf::place_meshes(asset, weights, pose);
+  pose.world = std::move(state.world);
+  gltf::place_meshes(asset, state.weights, pose);
   pose.cameras = asset.cameras;
   for (GltfCamera& camera : pose.cameras) gltf::place_camera(camera, pose.world[camera.node]);
   pose.lights = asset.lights;

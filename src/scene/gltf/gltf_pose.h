@@ -19,6 +19,13 @@ GltfPose pose_gltf(const GltfAsset& asset, double seconds);
 
 namespace gltf {
 
+// Every node's world transform and morph weights (empty for nodes without targets) at `seconds`.
+struct NodeState {
+  std::vector<Affine> world;
+  std::vector<std::vector<double>> weights;
+};
+NodeState animate_nodes(const GltfAsset& asset, double seconds);
+
 // The loader's parts of posing (the asset's pose without animation).
 Affine local_transform(const Vec3& translation, const Quaternion& rotation, const Vec3& scale);
 std::vector<Affine> node_locals(const std::vector<GltfNode>& nodes);
