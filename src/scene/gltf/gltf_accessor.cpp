@@ -266,11 +266,4 @@ std::vector<std::array<std::uint16_t, 4>> AccessorReader::joints(int accessor, c
   return out;
 }
 
-std::size_t AccessorReader::count(int accessor, const std::string& where) const {
-  if (accessor < 0 || std::size_t(accessor) >= model_.accessors.size())
-    fail(where, "accessor " + std::to_string(accessor) + " does not exist (the file has " +
-                    std::to_string(model_.accessors.size()) + ")");
-  return model_.accessors[std::size_t(accessor)].count;
-}
-
 }  // namespace rtpro::gltf

@@ -34,8 +34,6 @@ class AccessorReader {
   std::vector<float> values(int accessor, const std::string& where, int type, bool normalized_integers) const;
   // JOINTS_n: four unsigned bytes or shorts per vertex.
   std::vector<std::array<std::uint16_t, 4>> joints(int accessor, const std::string& where) const;
-  // The number of elements of an accessor that exists (`where` names the reference otherwise).
-  std::size_t count(int accessor, const std::string& where) const;
 
   [[noreturn]] void fail(const std::string& path, const std::string& message) const;
   const std::string& file() const { return file_; }

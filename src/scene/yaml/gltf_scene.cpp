@@ -139,7 +139,17 @@ SceneDescription parse_gltf_scene_file(const std::filesystem::path& file, const 
   SceneDescription description = parse(*asset);
   // The frame and frames per second are known once the text is read with the overrides: an
   // animated camera or light is written again where the frame's pose puts it.
-  if (asset->animated()) description = parse(pose_gltf(*asset, description.frame / description.render.fps));
+  if (asset->animated()) {
+    description = parse(pose_gltf(*asset, description.frame / description.render.fps));
+    const double seconds = gltf::animation_end(asset->animations);
+    // Up to a thousandth of a frame past a whole frame is float rounding of the key time.
+    const auto last = static_cast<long>(std::ceil(seconds * description.render.fps - 1e-3));
+    description.notes.push_back(printable_text(file.filename().string(), 200) +
+                                " is animated: " + short_number(float(seconds)) + " s, frames 0 to " +
+                                std::to_string(last) + " at " + short_number(float(description.render.fps)) +
+                                " fps (--frames 0-" + std::to_string(last) + " renders them); this is frame " +
+                                short_number(float(description.frame)));
+  }
   note_light_sources(*asset, description);
   // The world entry's errors (when the scene is built) name the file itself, and the nodes the
   // error is about (geometry_origin.h).
