@@ -22,7 +22,9 @@ rtpro_add_wing(scene mesh
   SHARES ascii_scan.h cage_check.h hair_file.h large_buffer.h mapped_file.h mesh_limits.h mesh_normals.h
          mtl_parser.h path_containment.h subdivision_refine.h
   PRIVATE_DEPENDS TBB::tbb rtpro_opensubdiv)
-rtpro_add_wing(scene gltf SHARES gltf_asset.h gltf_loader.h USES mesh PRIVATE_DEPENDS TinyGLTF::TinyGLTF)
+rtpro_add_wing(scene gltf
+  SHARES gltf_animation.h gltf_asset.h gltf_deformation.h gltf_loader.h gltf_morph.h gltf_motion.h gltf_pose.h gltf_quaternion.h gltf_skin.h
+  USES mesh PRIVATE_DEPENDS TinyGLTF::TinyGLTF)
 rtpro_add_wing(scene yaml USES gltf mesh PRIVATE_DEPENDS PkgConfig::libyaml)
 rtpro_add_wing(scene build USES gltf mesh)
 

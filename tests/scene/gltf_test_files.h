@@ -27,8 +27,9 @@ class GltfFile {
     const int count = int(values.size()) / components(type);
     return accessor(append(values.data(), values.size() * 4), 5126, count, type);
   }
-  int indices(const std::vector<std::uint16_t>& values) {
-    return accessor(append(values.data(), values.size() * 2), 5123, int(values.size()), "SCALAR");
+  int indices(const std::vector<std::uint16_t>& values) { return ushorts(values, "SCALAR"); }
+  int ushorts(const std::vector<std::uint16_t>& values, const char* type) {
+    return accessor(append(values.data(), values.size() * 2), 5123, int(values.size()) / components(type), type);
   }
 
   // A mesh of one primitive; returns the mesh index.
@@ -60,7 +61,7 @@ class GltfFile {
 
  private:
   static int components(const std::string& type) {
-    return type == "SCALAR" ? 1 : type == "VEC2" ? 2 : type == "VEC3" ? 3 : 4;
+    return type == "SCALAR" ? 1 : type == "VEC2" ? 2 : type == "VEC3" ? 3 : type == "MAT4" ? 16 : 4;
   }
 
   int append(const void* data, std::size_t bytes) {

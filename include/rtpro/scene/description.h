@@ -199,6 +199,9 @@ struct SceneDescription {
   std::vector<std::filesystem::path> source_files;
   CameraDesc camera;
   RenderSettings render;
+  // The frame rendered: the scene variable `frame` (--frames sets it), 1 when unset. A glTF file
+  // is posed at frame / render.fps seconds.
+  double frame = 1.0;
   std::vector<MaterialDesc> materials;  // index 0 is always "default"
   std::vector<LightDesc> lights;
   std::vector<std::string> light_names;  // one per light: its `name:`, empty when it has none

@@ -108,6 +108,8 @@ struct RenderSettings {
   // kRadiometric), as a scene built in code expects.
   std::optional<LightUnits> light_units;
   std::uint64_t seed = 0;
+  // Frames per second (`render.fps`): frame f of a glTF animation is its pose at f / fps seconds.
+  double fps = 24.0;
   float ambient = 0.2f;
   Color background{0.0f, 0.0f, 0.0f};
 };

@@ -7,6 +7,7 @@
 #include "traceable_range_check.h"
 #include "gltf_asset.h"
 #include "gltf_loader.h"
+#include "gltf_motion.h"
 #include "material_textures.h"
 #include "subdivided_mesh.h"
 
@@ -247,9 +248,12 @@ class RenderSceneBuilder {
 
   // A glTF file loaded once per (file, normals, material) however often it is placed: each of its
   // meshes one prototype, each node drawing a mesh one instance.
+  // The file posed at the frame (gltf_motion.h), its skinned and morphed meshes prototypes of their own.
   struct PlacedGltf {
     std::shared_ptr<const GltfAsset> asset;
-    std::vector<std::optional<std::uint32_t>> prototype_of_mesh;  // none for meshes without triangles
+    GltfPose pose;
+    std::vector<std::optional<std::uint32_t>> prototype_of_mesh;      // none for meshes without triangles
+    std::vector<std::optional<std::uint32_t>> prototype_of_deformed;  // per pose.deformed
   };
 
   const PlacedGltf& gltf_prototypes(const GltfDesc& desc) {
@@ -281,22 +285,26 @@ class RenderSceneBuilder {
     // Only the placements are read from here on: the meshes move into the prototypes unless
     // another entry or description still holds the asset.
     const bool sole_holder = asset.use_count() == 1;
-    PlacedGltf placed{asset, {}};
-    for (TriangleMesh& source : asset->meshes) {
-      if (source.triangles.empty()) {
-        placed.prototype_of_mesh.emplace_back();
-        continue;
-      }
+    PlacedGltf placed{asset,
+                      pose_gltf_frame(*asset, description_.frame, description_.render.fps, description_.camera.shutter),
+                      {},
+                      {}};
+    const auto add_prototype = [&](TriangleMesh& source, bool movable) -> std::optional<std::uint32_t> {
+      if (source.triangles.empty()) return std::nullopt;
       TriangleMesh mesh =
-          desc.subdivision ? subdivided_gltf_mesh(desc, source) : (sole_holder ? std::move(source) : source);
+          desc.subdivision ? subdivided_gltf_mesh(desc, source) : (movable ? std::move(source) : source);
       mesh.material = material(mesh.material);
       if (desc.material != kNoMaterial) mesh.triangle_materials = {};
       for (std::uint32_t& m : mesh.triangle_materials) m = material(m);
       Group group;
       group.geometries.emplace_back(std::move(mesh));
       scene_.prototypes.push_back(std::move(group));
-      placed.prototype_of_mesh.emplace_back(static_cast<std::uint32_t>(scene_.prototypes.size() - 1));
-    }
+      return static_cast<std::uint32_t>(scene_.prototypes.size() - 1);
+    };
+    for (TriangleMesh& source : asset->meshes) placed.prototype_of_mesh.push_back(add_prototype(source, sole_holder));
+    // The posed meshes are the placement's own.
+    for (TriangleMesh& source : placed.pose.deformed)
+      placed.prototype_of_deformed.push_back(add_prototype(source, true));
     return gltfs_.emplace(key, std::move(placed)).first->second;
   }
 
@@ -316,10 +324,14 @@ class RenderSceneBuilder {
   // `to_world_steps`: the placement's time steps (scene/motion.h), empty when it does not move.
   void place_gltf(const GltfDesc& desc, const Affine& to_world, std::span<const Affine> to_world_steps) {
     const PlacedGltf& placed = gltf_prototypes(desc);
-    for (const GltfPlacement& p : placed.asset->placements)
-      if (const auto prototype = placed.prototype_of_mesh[p.mesh])
-        add_instance(*prototype, compose(to_world, p.transform),
-                     compose_steps(to_world, to_world_steps, p.transform, {}), {&desc.where, &desc.file, p.node});
+    for (const GltfPlacement& p : placed.pose.placements) {
+      const auto prototype =
+          p.deformed >= 0 ? placed.prototype_of_deformed[std::size_t(p.deformed)] : placed.prototype_of_mesh[p.mesh];
+      if (!prototype) continue;
+      add_instance(*prototype, compose(to_world, p.transform),
+                   compose_steps(to_world, to_world_steps, p.transform, p.transform_steps),
+                   {&desc.where, &desc.file, p.node});
+    }
   }
 
   void flatten_instance(std::uint32_t object, const Affine& to_world, std::span<const Affine> to_world_steps,

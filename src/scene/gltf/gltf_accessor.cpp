@@ -30,9 +30,13 @@ int component_count(int type) {
     case TINYGLTF_TYPE_VEC2: return 2;
     case TINYGLTF_TYPE_VEC3: return 3;
     case TINYGLTF_TYPE_VEC4: return 4;
-    default: return 0;  // matrices: no attribute rtpro reads uses them
+    case TINYGLTF_TYPE_MAT4: return 16;  // inverseBindMatrices
+    default: return 0;                   // MAT2 and MAT3: nothing rtpro reads uses them
   }
 }
+
+// Animation and skin accessors without a bufferView: more zeros than any real file keys.
+constexpr std::size_t kMaxImplicitZeros = std::size_t(1) << 20;
 
 std::string index_path(const char* array, int index) { return std::string(array) + "[" + std::to_string(index) + "]"; }
 
@@ -222,6 +226,43 @@ std::vector<std::uint32_t> AccessorReader::indices(int accessor, std::uint32_t v
                        ") is out of range: the primitive has " + std::to_string(vertex_count) + " vertices");
     out[i] = index;
   }
+  return out;
+}
+
+std::vector<float> AccessorReader::values(int accessor, const std::string& where, int type,
+                                          bool normalized_integers) const {
+  const View v =
+      normalized_integers
+          ? view(accessor, where, {type},
+                 {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                  TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT})
+          : view(accessor, where, {type}, {TINYGLTF_COMPONENT_TYPE_FLOAT});
+  if (v.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT && !v.normalized)
+    fail(v.path + ".normalized", "integer components here must be normalized");
+  // Without a bufferView the values are zeros that take no bytes in the file: bounded here, or a
+  // few bytes of JSON could ask for gigabytes.
+  if (!v.data && v.count > kMaxImplicitZeros)
+    fail(v.path + ".count", std::to_string(v.count) + " elements without a bufferView (all zeros); at most " +
+                                std::to_string(kMaxImplicitZeros) + " are read");
+  std::vector<float> out;
+  resize_large(out, v.count * std::size_t(v.components));
+  for (std::size_t i = 0; i < v.count; ++i)
+    for (int k = 0; k < v.components; ++k) {
+      const float value = component(v, i, k);
+      if (!std::isfinite(value)) fail(v.path, "element " + std::to_string(i) + " is not a finite number");
+      out[i * std::size_t(v.components) + std::size_t(k)] = value;
+    }
+  return out;
+}
+
+std::vector<std::array<std::uint16_t, 4>> AccessorReader::joints(int accessor, const std::string& where) const {
+  const View v = view(accessor, where, {TINYGLTF_TYPE_VEC4},
+                      {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+  if (v.normalized) fail(v.path + ".normalized", "joint indices must not be normalized");
+  std::vector<std::array<std::uint16_t, 4>> out;
+  resize_large(out, v.count);
+  for (std::size_t i = 0; i < v.count; ++i)
+    for (int k = 0; k < 4; ++k) out[i][std::size_t(k)] = std::uint16_t(component(v, i, k));
   return out;
 }
 

@@ -9,6 +9,7 @@
 
 #include <tiny_gltf.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -27,6 +28,12 @@ class AccessorReader {
   std::vector<Color> colors(int accessor, const std::string& where) const;        // RGB or RGBA, alpha dropped
   // Indices, each below `vertex_count`.
   std::vector<std::uint32_t> indices(int accessor, std::uint32_t vertex_count, const std::string& where) const;
+  // Animation and skinning data, each element's components in a row: `type` one of TINYGLTF_TYPE_*
+  // (SCALAR to MAT4); floats, or with `normalized_integers` also normalised (unsigned) bytes and
+  // shorts (animated rotations and weights, skin weights).
+  std::vector<float> values(int accessor, const std::string& where, int type, bool normalized_integers) const;
+  // JOINTS_n: four unsigned bytes or shorts per vertex.
+  std::vector<std::array<std::uint16_t, 4>> joints(int accessor, const std::string& where) const;
 
   [[noreturn]] void fail(const std::string& path, const std::string& message) const;
   const std::string& file() const { return file_; }

@@ -4,6 +4,8 @@
 #include "ascii_scan.h"
 #include "rtpro/core/printable_text.h"
 #include "gltf_accessor.h"
+#include "gltf_animation.h"
+#include "gltf_skin.h"
 #include "gltf_json_types.h"
 #include "gltf_material.h"
 #include "gltf_mesh.h"
@@ -308,8 +310,11 @@ GltfAsset load_gltf_file(const fs::path& file, const MeshLoadOptions& options) {
   std::vector<gltf::UvMapping> uv_mappings;
   for (std::size_t m = 0; m < model.materials.size(); ++m)
     uv_mappings.push_back(gltf::uv_mapping(model, int(m), file.string(), stats.warnings));
+  asset.deformations.resize(model.meshes.size());
   for (std::size_t m = 0; m < model.meshes.size(); ++m)
-    asset.meshes.push_back(gltf::read_mesh(model, int(m), reader, options, uv_mappings, stats));
+    asset.meshes.push_back(gltf::read_mesh(model, int(m), reader, options, uv_mappings, stats, asset.deformations[m]));
+  asset.skins = gltf::read_skins(model, reader);
+  asset.animations = gltf::read_animations(model, reader, stats.warnings);
   gltf::place_nodes(model, reader, asset);
   for (const TriangleMesh& mesh : asset.meshes) {
     stats.vertices += mesh.vertices.size();

@@ -46,18 +46,23 @@ struct Primitive {
   std::vector<Color> colors;
   std::vector<TriangleIndices> triangles;
   std::uint32_t material;
+  std::vector<MorphTarget> targets;
+  SkinWeights skin;
 };
 
 class MeshBuilder {
  public:
   MeshBuilder(const tinygltf::Model& model, int mesh, const AccessorReader& reader, const MeshLoadOptions& options,
-              const std::vector<UvMapping>& uv_mappings, MeshLoadStats& stats)
-      : model_(model), mesh_index_(mesh), reader_(reader), options_(options), uv_mappings_(uv_mappings), stats_(stats) {
-  }
+              const std::vector<UvMapping>& uv_mappings, MeshLoadStats& stats, MeshDeformation& deformation)
+      : model_(model), mesh_index_(mesh), reader_(reader), options_(options), uv_mappings_(uv_mappings), stats_(stats),
+        deformation_(deformation) {}
 
   TriangleMesh build() {
     const tinygltf::Mesh& mesh = model_.meshes[std::size_t(mesh_index_)];
     const std::string path = "meshes[" + std::to_string(mesh_index_) + "]";
+    target_count_ = morph_target_count(model_, mesh_index_, reader_);
+    deformation_.default_weights.assign(target_count_, 0.0);
+    for (std::size_t t = 0; t < mesh.weights.size(); ++t) deformation_.default_weights[t] = mesh.weights[t];
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
       read_primitive(mesh.primitives[p], path + ".primitives[" + std::to_string(p) + "]");
     out_.name = mesh.name.empty() ? path : mesh.name;
@@ -120,6 +125,14 @@ class MeshBuilder {
     if (const auto c = prim.attributes.find("COLOR_0"); c != prim.attributes.end())
       p.colors = read_sized(reader_.colors(c->second, path + ".attributes.COLOR_0"), vertex_count,
                             path + ".attributes.COLOR_0");
+    p.targets = read_morph_targets(prim, vertex_count, reader_, path);
+    p.skin = read_skin_weights(prim, vertex_count, reader_, path);
+    for (const auto& joints : p.skin.joints)
+      for (const std::uint16_t j : joints)
+        if (j > deformation_.max_joint || deformation_.max_joint_path.empty()) {
+          deformation_.max_joint = std::max<std::uint32_t>(deformation_.max_joint, j);
+          deformation_.max_joint_path = path + ".attributes.JOINTS_0";
+        }
     primitives_.push_back(std::move(p));
   }
 
@@ -164,6 +177,17 @@ class MeshBuilder {
     reserve_large(out_.vertices, vertices);
     reserve_large(out_.triangles, triangles);
     if (any_normals) reserve_large(out_.normals, vertices);
+    deformation_.targets.resize(target_count_);
+    target_positions_.assign(target_count_, false);
+    target_normals_.assign(target_count_, false);
+    for (const Primitive& p : primitives_)
+      for (std::size_t t = 0; t < p.targets.size(); ++t) {
+        target_positions_[t] = target_positions_[t] || !p.targets[t].positions.empty();
+        target_normals_[t] = target_normals_[t] || (any_normals && !p.targets[t].normals.empty());
+      }
+    deformation_.smooth_normals = options_.normals == NormalsMode::kSmooth;
+    any_skin_ =
+        std::any_of(primitives_.begin(), primitives_.end(), [](const Primitive& p) { return !p.skin.joints.empty(); });
     for (Primitive& p : primitives_) {
       if (any_normals && p.normals.empty()) append_flat(p, any_uvs, any_colors);
       else append_shared(p, any_normals, any_uvs, any_colors);
@@ -188,6 +212,24 @@ class MeshBuilder {
     if (uvs) append_or_fill(out_.uvs, p.uvs, p.positions.size(), TexCoord{0.0f, 0.0f});
     if (colors) append_or_fill(out_.colors, p.colors, p.positions.size(), Color(1.0f, 1.0f, 1.0f));
     for (const TriangleIndices& t : p.triangles) out_.triangles.push_back({base + t.v0, base + t.v1, base + t.v2});
+    for (std::uint32_t v = 0; v < p.positions.size(); ++v) append_deformation(p, v, normals);
+  }
+
+  // Vertex v of primitive p's morph offsets and skin weights, after the merged mesh's last ones:
+  // zeros where the primitive lacks what another primitive of the mesh has.
+  void append_deformation(const Primitive& p, std::uint32_t v, bool normals) {
+    for (std::size_t t = 0; t < target_count_; ++t) {
+      MorphTarget& target = deformation_.targets[t];
+      const MorphTarget* from = p.targets.empty() ? nullptr : &p.targets[t];
+      if (target_positions_[t])
+        target.positions.push_back(from && !from->positions.empty() ? from->positions[v] : Vec3(0.0f));
+      if (normals && target_normals_[t])
+        target.normals.push_back(from && !from->normals.empty() ? from->normals[v] : Vec3(0.0f));
+    }
+    if (any_skin_) {
+      deformation_.skin.joints.push_back(p.skin.joints.empty() ? std::array<std::uint16_t, 4>{} : p.skin.joints[v]);
+      deformation_.skin.weights.push_back(p.skin.weights.empty() ? std::array<float, 4>{} : p.skin.weights[v]);
+    }
   }
 
   void append_flat(const Primitive& p, bool uvs, bool colors) {
@@ -200,7 +242,9 @@ class MeshBuilder {
         out_.normals.push_back(face);
         if (uvs) out_.uvs.push_back(p.uvs.empty() ? TexCoord{0.0f, 0.0f} : p.uvs[v]);
         if (colors) out_.colors.push_back(p.colors.empty() ? Color(1.0f, 1.0f, 1.0f) : p.colors[v]);
+        append_deformation(p, v, true);
       }
+      deformation_.flat_triangles.push_back(std::uint32_t(out_.triangles.size()));
       out_.triangles.push_back({base, base + 1, base + 2});
     }
   }
@@ -219,6 +263,10 @@ class MeshBuilder {
   const MeshLoadOptions& options_;
   const std::vector<UvMapping>& uv_mappings_;
   MeshLoadStats& stats_;
+  MeshDeformation& deformation_;
+  std::size_t target_count_ = 0;
+  bool any_skin_ = false;
+  std::vector<bool> target_positions_, target_normals_;  // per target: whether any primitive offsets them
   std::vector<Primitive> primitives_;
   std::vector<std::uint32_t> triangle_materials_;
   TriangleMesh out_;
@@ -227,9 +275,9 @@ class MeshBuilder {
 }  // namespace
 
 TriangleMesh read_mesh(const tinygltf::Model& model, int mesh, const AccessorReader& reader,
-                       const MeshLoadOptions& options, const std::vector<UvMapping>& uv_mappings,
-                       MeshLoadStats& stats) {
-  return MeshBuilder(model, mesh, reader, options, uv_mappings, stats).build();
+                       const MeshLoadOptions& options, const std::vector<UvMapping>& uv_mappings, MeshLoadStats& stats,
+                       MeshDeformation& deformation) {
+  return MeshBuilder(model, mesh, reader, options, uv_mappings, stats, deformation).build();
 }
 
 }  // namespace rtpro::gltf

@@ -16,8 +16,11 @@
 //   of 1 or 2, is refused: the file is truncated or wrong.
 // - Each triangle's material: the primitive's (an index into the file's materials), or
 //   kNoMaterial.
+// - Morph targets and JOINTS_0/WEIGHTS_0, per vertex of the merged mesh, into a MeshDeformation
+//   (gltf_deformation.h); primitives without them offset nothing and carry weights 0.
 #include "rtpro/scene/mesh_loader.h"
 #include "gltf_accessor.h"
+#include "gltf_deformation.h"
 #include "gltf_uv_mapping.h"
 
 #include <tiny_gltf.h>
@@ -26,6 +29,7 @@ namespace rtpro::gltf {
 
 // `uv_mappings`: one per material of the model (gltf_uv_mapping.h).
 TriangleMesh read_mesh(const tinygltf::Model& model, int mesh, const AccessorReader& reader,
-                       const MeshLoadOptions& options, const std::vector<UvMapping>& uv_mappings, MeshLoadStats& stats);
+                       const MeshLoadOptions& options, const std::vector<UvMapping>& uv_mappings, MeshLoadStats& stats,
+                       MeshDeformation& deformation);
 
 }  // namespace rtpro::gltf

@@ -1,6 +1,8 @@
 #include "gltf_nodes.h"
 
 #include "ascii_scan.h"
+#include "gltf_morph.h"
+#include "gltf_pose.h"
 #include "mesh_limits.h"
 
 #include <algorithm>
@@ -50,8 +52,22 @@ bool matrix_within_bounds(const std::vector<double>& c) {
   return true;
 }
 
-Affine local_transform(const tinygltf::Node& node, int index, const AccessorReader& reader) {
+// The node's placement before animation, its references checked.
+GltfNode read_node(const tinygltf::Model& model, const tinygltf::Node& node, int index, const AccessorReader& reader) {
   const std::string path = node_path(index);
+  GltfNode out;
+  if (node.mesh >= 0 && std::size_t(node.mesh) >= model.meshes.size())
+    reader.fail(path + ".mesh", "mesh " + std::to_string(node.mesh) + " does not exist");
+  if (node.skin >= 0 && std::size_t(node.skin) >= model.skins.size())
+    reader.fail(path + ".skin", "skin " + std::to_string(node.skin) + " does not exist");
+  out.mesh = node.mesh;
+  out.skin = node.skin;
+  if (!node.weights.empty()) {
+    if (node.mesh < 0 || node.weights.size() != morph_target_count(model, node.mesh, reader))
+      reader.fail(path + ".weights", "needs one weight per morph target of the node's mesh");
+    if (!all_finite(node.weights)) reader.fail(path + ".weights", "needs finite numbers (magnitude <= 1e9)");
+    out.weights = node.weights;
+  }
   if (!node.matrix.empty()) {
     if (node.matrix.size() != 16 || !matrix_within_bounds(node.matrix))
       reader.fail(path + ".matrix", "needs 16 finite numbers (magnitude <= 1e9; <= 1e16 for the translation)");
@@ -61,34 +77,27 @@ Affine local_transform(const tinygltf::Node& node, int index, const AccessorRead
     Affine a;
     for (int r = 0; r < 3; ++r)
       for (int k = 0; k < 4; ++k) a.m[std::size_t(r)][std::size_t(k)] = float(c[std::size_t(4 * k + r)]);
-    return a;
+    out.matrix = a;
+    return out;
   }
-  Affine t = Affine::identity();
   if (!node.scale.empty()) {
     if (node.scale.size() != 3 || !all_finite(node.scale))
       reader.fail(path + ".scale", "needs 3 finite numbers (magnitude <= 1e9)");
-    t = Affine::scale(Vec3(float(node.scale[0]), float(node.scale[1]), float(node.scale[2])));
+    out.scale = Vec3(float(node.scale[0]), float(node.scale[1]), float(node.scale[2]));
   }
   if (!node.rotation.empty()) {
     if (node.rotation.size() != 4 || !all_finite(node.rotation))
       reader.fail(path + ".rotation", "needs 4 finite numbers (x, y, z, w)");
-    double x = node.rotation[0], y = node.rotation[1], z = node.rotation[2], w = node.rotation[3];
-    const double norm = std::sqrt(x * x + y * y + z * z + w * w);
-    if (!(norm > 0.0)) reader.fail(path + ".rotation", "is a zero quaternion");
-    x /= norm, y /= norm, z /= norm, w /= norm;
-    Affine r;
-    r.m = {{{float(1 - 2 * (y * y + z * z)), float(2 * (x * y - z * w)), float(2 * (x * z + y * w)), 0.0f},
-            {float(2 * (x * y + z * w)), float(1 - 2 * (x * x + z * z)), float(2 * (y * z - x * w)), 0.0f},
-            {float(2 * (x * z - y * w)), float(2 * (y * z + x * w)), float(1 - 2 * (x * x + y * y)), 0.0f}}};
-    t = compose(r, t);
+    const Quaternion q{node.rotation[0], node.rotation[1], node.rotation[2], node.rotation[3]};
+    if (!(dot(q, q) > 0.0)) reader.fail(path + ".rotation", "is a zero quaternion");
+    out.rotation = normalized(q);
   }
   if (!node.translation.empty()) {
     if (node.translation.size() != 3 || !all_finite(node.translation, kMaxTranslation))
       reader.fail(path + ".translation", "needs 3 finite numbers (magnitude <= 1e16)");
-    t = compose(
-        Affine::translate(Vec3(float(node.translation[0]), float(node.translation[1]), float(node.translation[2]))), t);
+    out.translation = Vec3(float(node.translation[0]), float(node.translation[1]), float(node.translation[2]));
   }
-  return t;
+  return out;
 }
 
 int light_of(const tinygltf::Node& node) {
@@ -105,10 +114,18 @@ class NodeWalker {
 
   void run() {
     link_children();
+    for (std::size_t n = 0; n < model_.nodes.size(); ++n) {
+      asset_.nodes.push_back(read_node(model_, model_.nodes[n], int(n), reader_));
+      if (parent_[n] != kNone) asset_.nodes.back().parent = std::uint32_t(parent_[n]);
+    }
+    order_nodes();
     std::vector<int> roots = scene_roots();
     for (int root : roots) walk(root);
-    if (singular_ > 0)
-      asset_.stats.warnings.push_back(reader_.file() + ": " + std::to_string(singular_) +
+    asset_.world = node_worlds(asset_, node_locals(asset_.nodes));
+    for (const std::uint32_t n : asset_.scene_nodes) visit(int(n), asset_.world[n]);
+    check_skins();
+    if (const std::size_t singular = place_meshes(asset_, rest_weights(asset_), asset_))
+      asset_.stats.warnings.push_back(reader_.file() + ": " + std::to_string(singular) +
                                       " node(s) with a singular transform (scale 0) place nothing");
   }
 
@@ -156,6 +173,29 @@ class NodeWalker {
     }
   }
 
+  // Parents before children, every node (joints may lie outside the scene).
+  void order_nodes() {
+    std::vector<std::uint32_t>& order = asset_.node_order;
+    for (std::size_t n = 0; n < model_.nodes.size(); ++n)
+      if (parent_[n] == kNone) order.push_back(std::uint32_t(n));
+    for (std::size_t i = 0; i < order.size(); ++i)
+      for (const int child : model_.nodes[order[i]].children) order.push_back(std::uint32_t(child));
+  }
+
+  // Every skinned mesh's joint indices within the skin of each node that draws it.
+  void check_skins() const {
+    for (const std::uint32_t n : asset_.scene_nodes) {
+      const GltfNode& node = asset_.nodes[n];
+      if (node.mesh < 0 || node.skin < 0) continue;
+      const MeshDeformation& d = asset_.deformations[std::size_t(node.mesh)];
+      const std::size_t joints = asset_.skins[std::size_t(node.skin)].joints.size();
+      if (d.skinned() && d.max_joint >= joints)
+        reader_.fail(d.max_joint_path, "joint " + std::to_string(d.max_joint) + ", but " + node_path(int(n)) +
+                                           " skins the mesh with skins[" + std::to_string(node.skin) + "], which has " +
+                                           std::to_string(joints) + " joints");
+    }
+  }
+
   std::vector<int> scene_roots() {
     std::vector<int> roots;
     if (model_.scenes.empty()) {
@@ -185,19 +225,18 @@ class NodeWalker {
     return roots;
   }
 
-  // Depth first with an explicit stack. With one parent per node and roots that have none, a
-  // cycle can only be met as a node already on the path.
+  // Depth first with an explicit stack, into asset.scene_nodes. With one parent per node and roots
+  // that have none, a cycle can only be met as a node already on the path.
   void walk(int root) {
     struct Frame {
       int node;
-      Affine world;
       std::size_t next_child;
     };
     std::vector<Frame> stack;
     std::vector<bool> on_path(model_.nodes.size(), false);
-    stack.push_back({root, local_transform(model_.nodes[std::size_t(root)], root, reader_), 0});
+    stack.push_back({root, 0});
     on_path[std::size_t(root)] = true;
-    visit(stack.back().node, stack.back().world);
+    asset_.scene_nodes.push_back(std::uint32_t(root));
     while (!stack.empty()) {
       Frame& frame = stack.back();
       const tinygltf::Node& node = model_.nodes[std::size_t(frame.node)];
@@ -213,23 +252,15 @@ class NodeWalker {
         reader_.fail(path, "node " + std::to_string(child) + " is its own ancestor (a cycle)");
       if (stack.size() >= kMaxGltfNodeDepth)
         reader_.fail(path, "nodes nest deeper than " + std::to_string(kMaxGltfNodeDepth) + " levels");
-      const Affine world = compose(frame.world, local_transform(model_.nodes[std::size_t(child)], child, reader_));
       on_path[std::size_t(child)] = true;
-      stack.push_back({child, world, 0});
-      visit(child, world);
+      stack.push_back({child, 0});
+      asset_.scene_nodes.push_back(std::uint32_t(child));
     }
   }
 
+  // The node's camera and light (its mesh is placed by place_meshes).
   void visit(int index, const Affine& world) {
     const tinygltf::Node& node = model_.nodes[std::size_t(index)];
-    const std::string path = node_path(index);
-    const bool invertible = inverse(world).has_value();
-    if (node.mesh >= 0) {
-      if (std::size_t(node.mesh) >= model_.meshes.size())
-        reader_.fail(path + ".mesh", "mesh " + std::to_string(node.mesh) + " does not exist");
-      if (invertible) asset_.placements.push_back({std::uint32_t(node.mesh), std::uint32_t(index), world});
-      else ++singular_;
-    }
     if (node.camera >= 0) add_camera(node, index, world);
     const int light = light_of(node);
     if (light != -1) add_light(light, index, world);
@@ -246,8 +277,8 @@ class NodeWalker {
       return;
     }
     const double yfov = camera.perspective.yfov * kRadiansToDegrees;
-    const Vec3 forward = world.apply_vector(Vec3(0, 0, -1)), up = world.apply_vector(Vec3(0, 1, 0));
-    if (!(yfov > 0.0 && yfov < 180.0) || !(length(forward) > 0.0f) || !(length(cross(forward, up)) > 0.0f)) {
+    GltfCamera placed{std::uint32_t(index), std::uint32_t(node.camera), {}, {}, {}, float(yfov), 0.0f};
+    if (!(yfov > 0.0 && yfov < 180.0) || !place_camera(placed, world)) {
       asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) +
                                       "]: unusable field of view or placement; skipped");
       return;
@@ -263,8 +294,8 @@ class NodeWalker {
                                       std::to_string(clamped) + " is used");
       aspect = clamped;
     }
-    asset_.cameras.push_back({std::uint32_t(index), std::uint32_t(node.camera), world.apply_point(Vec3(0, 0, 0)),
-                              normalize(forward), normalize(up), float(yfov), float(aspect)});
+    placed.aspect_ratio = float(aspect);
+    asset_.cameras.push_back(placed);
   }
 
   void add_light(int index, int node, const Affine& world) {
@@ -281,9 +312,7 @@ class NodeWalker {
     else
       reader_.fail("extensions.KHR_lights_punctual.lights[" + std::to_string(index) + "].type",
                    "unknown light type " + ascii::quoted(light.type));
-    out.position = world.apply_point(Vec3(0, 0, 0));
-    const Vec3 direction = world.apply_vector(Vec3(0, 0, -1));
-    out.direction = length(direction) > 0.0f ? normalize(direction) : Vec3(0, -1, 0);
+    place_light(out, world);
     out.color = Color(1.0f, 1.0f, 1.0f);
     // Refused, not clamped: a channel clamped to 0 changes the light's hue without a word.
     if (!light.color.empty()) {
@@ -324,7 +353,6 @@ class NodeWalker {
   const AccessorReader& reader_;
   GltfAsset& asset_;
   std::vector<std::size_t> parent_;
-  std::size_t singular_ = 0;
 };
 
 }  // namespace

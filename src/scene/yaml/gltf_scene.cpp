@@ -5,6 +5,7 @@
 #include "rtpro/scene/scene_parser.h"
 #include "gltf_asset.h"
 #include "gltf_loader.h"
+#include "gltf_pose.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,10 +19,10 @@ namespace rtpro {
 
 namespace {
 
-// The file's first camera, or one that frames the placed meshes.
-void add_camera(const GltfAsset& asset, const BBox& bounds, ModelSceneText& text) {
-  if (!asset.cameras.empty()) {
-    const GltfCamera& c = asset.cameras.front();
+// The pose's first camera, or one that frames the placed meshes.
+void add_camera(const GltfPose& pose, const BBox& bounds, ModelSceneText& text) {
+  if (!pose.cameras.empty()) {
+    const GltfCamera& c = pose.cameras.front();
     const int height = c.aspect_ratio > 0.0f ? std::clamp(int(std::lround(kModelImageWidth / c.aspect_ratio)), 1, 65536)
                                              : kModelImageHeight;
     // A unit step along the view is lost in rounding far from the origin (at 1e9 a float's spacing
@@ -52,11 +53,11 @@ bool has_emissive_material(const GltfAsset& asset) {
                      [](const MaterialDesc& m) { return max_component(m.emission) > 0.0f; });
 }
 
-// The file's punctual lights in physical units (gltf_scene.h).
-void add_lights(const GltfAsset& asset, ModelSceneText& text) {
-  if (asset.lights.empty()) return;
+// The pose's punctual lights in physical units (gltf_scene.h).
+void add_lights(const GltfPose& pose, ModelSceneText& text) {
+  if (pose.lights.empty()) return;
   text.add("lights:", "the file's KHR_lights_punctual lights");
-  for (const GltfLight& light : asset.lights) {
+  for (const GltfLight& light : pose.lights) {
     const std::string common =
         ", color: " + yaml_vector(light.color) + ", intensity: " + yaml_number(light.intensity / kLumensPerWatt) + "}";
     const std::string origin =
@@ -107,13 +108,14 @@ void note_light_sources(const GltfAsset& asset, SceneDescription& description) {
 
 }  // namespace
 
-ModelSceneText gltf_scene_text(const GltfAsset& asset) {
+ModelSceneText gltf_scene_text(const GltfAsset& asset, const GltfPose& pose) {
   ModelSceneText text;
   const std::string name = asset.file.filename().string();
   add_model_header(asset.file, text);
-  add_camera(asset, asset.bounds(), text);
+  // Framed as the file places its meshes without animation: the same view for every frame.
+  add_camera(pose, asset.bounds(), text);
   add_model_lighting(!asset.lights.empty() || has_emissive_material(asset), text);
-  add_lights(asset, text);
+  add_lights(pose, text);
   if (writable_in_yaml(name)) {
     const std::string origin = "the file itself, the world's mesh";
     text.add("world:", origin);
@@ -124,15 +126,30 @@ ModelSceneText gltf_scene_text(const GltfAsset& asset) {
 
 SceneDescription parse_gltf_scene_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   auto asset = std::make_shared<GltfAsset>(load_gltf_file(file));
-  const ModelSceneText text = gltf_scene_text(*asset);
   const BBox bounds = asset->bounds();
-  SceneDescription description = parse_model_scene({.text = text,
-                                                    .materials = &asset->materials,
-                                                    .has_camera = !asset->cameras.empty(),
-                                                    .bounds = bounds,
-                                                    .has_lights = !asset->lights.empty(),
-                                                    .emits = has_emissive_material(*asset)},
-                                                   file, overrides);
+  const auto parse = [&](const GltfPose& pose) {
+    return parse_model_scene({.text = gltf_scene_text(*asset, pose),
+                              .materials = &asset->materials,
+                              .has_camera = !asset->cameras.empty(),
+                              .bounds = bounds,
+                              .has_lights = !asset->lights.empty(),
+                              .emits = has_emissive_material(*asset)},
+                             file, overrides);
+  };
+  SceneDescription description = parse(*asset);
+  // The frame and frames per second are known once the text is read with the overrides: an
+  // animated camera or light is written again where the frame's pose puts it.
+  if (asset->animated()) {
+    description = parse(pose_gltf(*asset, description.frame / description.render.fps));
+    const double seconds = gltf::animation_end(asset->animations);
+    // Up to a thousandth of a frame past a whole frame is float rounding of the key time.
+    const auto last = static_cast<long>(std::ceil(seconds * description.render.fps - 1e-3));
+    description.notes.push_back(printable_text(file.filename().string(), 200) +
+                                " is animated: " + short_number(float(seconds)) + " s, frames 0 to " +
+                                std::to_string(last) + " at " + short_number(float(description.render.fps)) +
+                                " fps (--frames 0-" + std::to_string(last) + " renders them); this is frame " +
+                                short_number(float(description.frame)));
+  }
   note_light_sources(*asset, description);
   // The world entry's errors (when the scene is built) name the file itself, and the nodes the
   // error is about (geometry_origin.h).

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -34,6 +35,8 @@ constexpr std::int64_t kMaxSpp = 65536;
 // paths longer than 64.
 constexpr std::int64_t kMaxDepth = 1024;
 constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{256} << 20;
+// Frames per second: far above any camera's, low enough that frame / fps stays a usable time.
+constexpr double kMaxFps = 1e6;
 // Below this sine of the angle between them, up and the view direction give no usable basis.
 constexpr float kMinUpViewSine = 1e-3f;
 
@@ -170,7 +173,7 @@ RenderSettings read_render(const YamlNode* node, LightUnits units) {
   const MappingReader render(*node, "render",
                              {"spp", "max_depth", "seed", "ambient", "background", "integrator", "sampling", "sampler",
                               "light_sampler", "light_units", "max_diffuse_depth", "max_glossy_depth",
-                              "max_transmission_depth", "clamp_direct", "clamp_indirect", "filter_glossy"});
+                              "max_transmission_depth", "clamp_direct", "clamp_indirect", "filter_glossy", "fps"});
   if (const YamlNode* spp = render.optional("spp")) settings.spp = read_spp(*spp);
   if (const YamlNode* integrator = render.optional("integrator"))
     settings.integrator = read_keyword<Integrator>(*integrator, "render.integrator",
@@ -194,11 +197,33 @@ RenderSettings read_render(const YamlNode* node, LightUnits units) {
   if (const YamlNode* depth = render.optional("max_depth")) settings.max_depth = read_depth(*depth, "render.max_depth");
   read_path_controls(render, settings.path);
   if (const YamlNode* seed = render.optional("seed")) settings.seed = read_unsigned(*seed, "render.seed");
+  if (const YamlNode* fps = render.optional("fps")) {
+    settings.fps = read_number(*fps, "render.fps");
+    if (!(settings.fps > 0.0 && settings.fps <= kMaxFps))
+      fail_at(*fps, "render.fps must be more than 0 and at most " + std::to_string(int(kMaxFps)) +
+                        " frames per second, got " + std::string(fps->scalar()));
+  }
   if (const YamlNode* ambient = render.optional("ambient"))
     settings.ambient = read_non_negative(*ambient, "render.ambient");
   if (const YamlNode* background = render.optional("background"))
     settings.background = read_color(*background, "render.background");
   return settings;
+}
+
+// The frame being rendered: the scene variable `frame` (--frames and -D set it), 1 when unset, as
+// keyframes read it. Read before variables are substituted (which removes `variables:`).
+double frame_of(const YamlNode& root) {
+  const YamlEntry* variables = root.is_mapping() ? root.find("variables") : nullptr;
+  const YamlEntry* frame =
+      variables && variables->value && variables->value->is_mapping() ? variables->value->find("frame") : nullptr;
+  if (!frame || !frame->value) return 1.0;
+  const YamlNode& value = *frame->value;
+  double number = 0.0;
+  const std::string_view text = value.is_scalar() ? value.scalar() : std::string_view();
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
+  if (!value.is_scalar() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(number))
+    fail_at(value, "frame: expected a frame number, got " + value.describe());
+  return number;
 }
 
 void check_scene_root(const YamlNode& root) {
@@ -345,9 +370,11 @@ SceneDescription parse_scene_text(std::string_view text, const std::filesystem::
   check_scene_root(document.root());
   const LightUnits written_units = written_light_units(document.root());
   for (const std::string& override_text : overrides) document.apply_override(override_text);
+  const double frame = frame_of(document.root());
   document.resolve_variables();
   SceneDescription description = read_scene(document, file, written_units, model_materials);
   description.source_files = std::move(included);
+  description.frame = frame;
   return description;
 }
 

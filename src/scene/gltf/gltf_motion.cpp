@@ -1,0 +1,83 @@
+#include "gltf_motion.h"
+
+#include "gltf_pose.h"
+
+#include <algorithm>
+#include <map>
+
+namespace rtpro {
+
+namespace {
+
+// Node states by time in frames: the steps of every placement fall on the same few times.
+class StatesOverShutter {
+ public:
+  StatesOverShutter(const GltfAsset& asset, double fps) : asset_(asset), fps_(fps) {}
+
+  const gltf::NodeState& at(double frame) {
+    auto found = states_.find(frame);
+    if (found == states_.end()) found = states_.emplace(frame, gltf::animate_nodes(asset_, frame / fps_)).first;
+    return found->second;
+  }
+
+ private:
+  const GltfAsset& asset_;
+  double fps_;
+  std::map<double, gltf::NodeState> states_;
+};
+
+bool vertices_equal(const std::vector<PaddedVertex>& a, const std::vector<PaddedVertex>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const PaddedVertex& p, const PaddedVertex& q) {
+    return p.x == q.x && p.y == q.y && p.z == q.z;
+  });
+}
+
+// The mesh of `placement` at each deformation step; its steps stay empty when it keeps still.
+void add_vertex_steps(const GltfAsset& asset, const GltfPlacement& placement, const std::vector<double>& times,
+                      StatesOverShutter& states, TriangleMesh& mesh) {
+  const GltfNode& node = asset.nodes[placement.node];
+  const gltf::MeshDeformation& deformation = asset.deformations[placement.mesh];
+  const bool skinned = node.skin >= 0 && deformation.skinned();
+  for (const double time : times) {
+    const gltf::NodeState& state = states.at(time);
+    std::vector<Affine> joints;
+    if (skinned) joints = gltf::joint_matrices(asset.skins[std::size_t(node.skin)], state.world);
+    TriangleMesh posed =
+        gltf::deform_mesh(asset.meshes[placement.mesh], deformation, state.weights[placement.node],
+                          skinned ? &joints : nullptr, asset.file.string(), gltf_node_path(placement.node));
+    mesh.vertex_steps.push_back(std::move(posed.vertices));
+    if (!mesh.normals.empty()) mesh.normal_steps.push_back(std::move(posed.normals));
+  }
+  const auto& steps = mesh.vertex_steps;
+  if (std::all_of(steps.begin(), steps.end(), [&](const auto& s) { return vertices_equal(s, steps.front()); })) {
+    mesh.vertex_steps.clear();
+    mesh.normal_steps.clear();
+  }
+}
+
+}  // namespace
+
+GltfPose pose_gltf_frame(const GltfAsset& asset, double frame, double fps, const Shutter& shutter) {
+  GltfPose pose = pose_gltf(asset, frame / fps);
+  if (!asset.animated() || !shutter.is_open()) return pose;
+  StatesOverShutter states(asset, fps);
+  const std::vector<double> deformation_times = motion_step_times(shutter, frame, kDeformationSteps);
+  for (GltfPlacement& placement : pose.placements) {
+    const GltfNode& node = asset.nodes[placement.node];
+    const gltf::MeshDeformation& deformation = asset.deformations[placement.mesh];
+    const bool skinned = node.skin >= 0 && deformation.skinned();
+    if (!skinned)
+      placement.transform_steps =
+          sample_transform_motion(shutter, frame, [&](double time) { return states.at(time).world[placement.node]; });
+    if (!skinned && !deformation.morphs()) continue;
+    // A morphed mesh whose weights are all 0 at the frame may still move during the shutter.
+    if (placement.deformed < 0) {
+      pose.deformed.push_back(asset.meshes[placement.mesh]);
+      placement.deformed = std::int32_t(pose.deformed.size() - 1);
+    }
+    add_vertex_steps(asset, placement, deformation_times, states, pose.deformed[std::size_t(placement.deformed)]);
+  }
+  return pose;
+}
+
+}  // namespace rtpro

@@ -1,0 +1,21 @@
+#pragma once
+// A glTF animation over a frame's exposure (scene/motion.h): the pose at the frame, with the time
+// steps that motion blur interpolates between.
+// - A placement whose node moves during the shutter gets transform steps, as many as keep a
+//   rotation on its arc (sample_transform_motion).
+// - A skinned or morphed mesh whose vertices move gets kDeformationSteps vertex steps (normal
+//   steps too when it has normals); its placement, for a skinned mesh the identity, keeps still.
+// Nothing gets steps with a closed shutter or a file without animations.
+#include "gltf_asset.h"
+#include "rtpro/scene/motion.h"
+
+namespace rtpro {
+
+// Vertex steps of a deforming mesh: 8 segments over the shutter, enough for a joint turning a
+// quarter turn to stray from its arc by under 2% of its radius.
+inline constexpr int kDeformationSteps = 9;
+
+// The pose at frame `frame` (frame / fps seconds) with the steps of `shutter` (in frames).
+GltfPose pose_gltf_frame(const GltfAsset& asset, double frame, double fps, const Shutter& shutter);
+
+}  // namespace rtpro
