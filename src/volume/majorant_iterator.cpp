@@ -37,7 +37,7 @@ bool clip_to_box(const Vec3& origin, const Vec3& dir, const BBox& box, float& t_
 }
 
 DdaMajorantIterator::DdaMajorantIterator(const Vec3& origin, const Vec3& dir, float t_min, float t_max,
-                                         const MajorantGrid& grid, const Color& sigma_t, bool skip_empty)
+                                         const MajorantGrid& grid, float sigma_t, bool skip_empty)
     : grid_(&grid), origin_(origin), dir_(dir), sigma_t_(sigma_t), skip_empty_(skip_empty) {
   if (!clip_to_box(origin, dir, grid.bounds(), t_min, t_max) || !(t_min < t_max)) return;
   t_min_ = t_min;

@@ -238,7 +238,8 @@ openvdb::GridBase::Ptr make_grid(const VdbGridSpec& spec, Convert convert) {
     access.setValueOn(openvdb::Coord(voxel.at[0], voxel.at[1], voxel.at[2]), convert(voxel.value));
   if (spec.tile_origin) {
     const VoxelCoord& o = *spec.tile_origin;
-    grid->tree().addTile(1, openvdb::Coord(o[0], o[1], o[2]), convert(spec.tile_value), true);
+    grid->tree().addTile(static_cast<openvdb::Index>(spec.tile_level), openvdb::Coord(o[0], o[1], o[2]),
+                         convert(spec.tile_value), true);
   }
   return grid;
 }

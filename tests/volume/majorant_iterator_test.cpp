@@ -61,7 +61,7 @@ std::vector<TestRay> test_rays(const MajorantGrid& grid, std::uint32_t seed) {
 TEST(DdaMajorantIterator, SegmentsTileTheRaysOverlapWithTheGridInOrder) {
   const VoxelGrid grid = test::random_cloud(-5, 40, 0.02, 3);
   const MajorantGrid majorants(grid);
-  const Color sigma_t(2.0f, 1.0f, 0.5f);
+  const float sigma_t = 2.0f;
   int walked = 0;
   for (const TestRay& ray : test_rays(majorants, 5)) {
     float t0 = 0.0f, t1 = 1000.0f;
@@ -100,7 +100,7 @@ TEST(DdaMajorantIterator, SegmentsTileTheRaysOverlapWithTheGridInOrder) {
     // Skipping empty cells leaves exactly the segments with a non-zero majorant.
     std::vector<RayMajorantSegment> nonzero;
     for (const RayMajorantSegment& s : segments)
-      if (s.sigma_maj.x > 0.0f) nonzero.push_back(s);
+      if (s.sigma_maj > 0.0f) nonzero.push_back(s);
     const auto skipped = walk(DdaMajorantIterator(ray.origin, ray.dir, 0.0f, 1000.0f, majorants, sigma_t, true));
     ASSERT_EQ(skipped.size(), nonzero.size());
     for (std::size_t i = 0; i < skipped.size(); ++i) {
@@ -114,8 +114,8 @@ TEST(DdaMajorantIterator, SegmentsTileTheRaysOverlapWithTheGridInOrder) {
 TEST(DdaMajorantIterator, RaysThatMissTheGridOrEndBeforeItYieldNothing) {
   const VoxelGrid grid = test::random_cloud(0, 15, 0.2, 1);
   const MajorantGrid majorants(grid);
-  EXPECT_FALSE(DdaMajorantIterator({-50, 0, 0}, {0, 1, 0}, 0, 1e30f, majorants, Color(1.0f)).next());
-  EXPECT_FALSE(DdaMajorantIterator({-50, 5, 5}, {1, 0, 0}, 0, 10.0f, majorants, Color(1.0f)).next());
+  EXPECT_FALSE(DdaMajorantIterator({-50, 0, 0}, {0, 1, 0}, 0, 1e30f, majorants, 1.0f).next());
+  EXPECT_FALSE(DdaMajorantIterator({-50, 5, 5}, {1, 0, 0}, 0, 10.0f, majorants, 1.0f).next());
   EXPECT_FALSE(DdaMajorantIterator().next());
 }
 
@@ -124,10 +124,10 @@ TEST(DdaMajorantIterator, RaysThatMissTheGridOrEndBeforeItYieldNothing) {
 double ratio_tracking(const VoxelGrid& grid, const MajorantGrid& majorants, const TestRay& ray, float sigma_scale,
                       std::mt19937& random) {
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  DdaMajorantIterator it(ray.origin, ray.dir, 0.0f, 1e30f, majorants, Color(sigma_scale), true);
+  DdaMajorantIterator it(ray.origin, ray.dir, 0.0f, 1e30f, majorants, sigma_scale, true);
   double transmittance = 1.0;
   while (const auto segment = it.next()) {
-    const double sigma_maj = segment->sigma_maj.x;
+    const double sigma_maj = segment->sigma_maj;
     double t = segment->t_min;
     while (true) {
       t -= std::log(1.0 - uniform(random)) / sigma_maj;

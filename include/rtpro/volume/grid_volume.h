@@ -40,13 +40,13 @@ struct GridVolume {
 
   // The world box the density can be non-zero in (the support's corners transformed).
   BBox world_bounds() const { return density_to_world.apply(majorants.bounds()); }
-  // Segments of the ray (world space, t in [ray.tnear, ray.tfar]) with σ_maj = sigma_t × the
-  // density's majorant.
-  DdaMajorantIterator majorants_along(const Ray& ray, const Color& sigma_t, bool skip_empty = false) const {
+  // Segments of the ray (world space, t in [ray.tnear, t_max]) with σ_maj = sigma_t × the
+  // density's majorant: the grid kind's `majorants` of render/media/medium_interface.h.
+  DdaMajorantIterator majorants_along(const Ray& ray, float t_max, float sigma_t, bool skip_empty = false) const {
     return {density.world_to_index.apply_point(ray.org),
             density.world_to_index.apply_vector(ray.dir),
             ray.tnear,
-            ray.tfar,
+            t_max,
             majorants,
             sigma_t,
             skip_empty};

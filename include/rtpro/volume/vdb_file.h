@@ -64,10 +64,11 @@ struct VdbGridSpec {
   double voxel_size = 1.0;
   std::array<double, 3> translation{0.0, 0.0, 0.0};
   bool level_set = false;  // marks the grid as a level set (its class), as a narrow-band SDF is
-  // A tile of active voxels (8³ from `tile_origin`, in the lowest internal node in place of a
-  // leaf) of value `tile_value`, as OpenVDB stores constant regions.
+  // A tile of active voxels of value `tile_value` from `tile_origin`, as OpenVDB stores constant
+  // regions: 8³ voxels in place of a leaf (level 1), 128³ (level 2) or 4096³ (level 3).
   std::optional<VoxelCoord> tile_origin;
   float tile_value = 0.0f;
+  int tile_level = 1;
 };
 
 void write_vdb_file(const std::filesystem::path& file, std::span<const VdbGridSpec> grids);
