@@ -7,7 +7,7 @@
 rtpro_module_include_root(scene scene_root)
 add_library(rtpro_scene_headers INTERFACE)
 target_include_directories(rtpro_scene_headers INTERFACE ${scene_root})
-target_link_libraries(rtpro_scene_headers INTERFACE rtpro_core)
+target_link_libraries(rtpro_scene_headers INTERFACE rtpro_core rtpro_volume)
 
 rtpro_add_wing(scene mesh
   SHARES ascii_scan.h large_buffer.h mapped_file.h mesh_limits.h mesh_normals.h mtl_parser.h path_containment.h

@@ -15,6 +15,7 @@
 // here so that whatever visits the lists below finds the kind's functions.
 #include "rtpro/scene/sphere_geometry.h"
 #include "rtpro/scene/triangle_geometry.h"
+#include "rtpro/scene/volume_desc.h"
 
 #include <concepts>
 #include <cstdint>
@@ -192,6 +193,7 @@ struct SceneDescription {
   std::optional<EnvironmentDesc> environment;
   std::vector<ObjectDesc> objects;         // named, reachable only through instances
   ObjectDesc world;                        // what is rendered
+  std::vector<VolumeDesc> volumes;         // the world's `volume` entries
   std::vector<LightLinkingDesc> linkings;  // of the world's entries that have one
   // What rtpro chose for a model file read as the whole scene (the camera framing it, the light it
   // added), one line each, for the commands to say.

@@ -6,6 +6,7 @@
 #include "rtpro/core/texture_sampling.h"
 #include "rtpro/core/transform.h"
 #include "rtpro/scene/checker_axes.h"
+#include "rtpro/scene/grid_medium.h"
 #include "rtpro/scene/light.h"
 #include "rtpro/scene/light_links.h"
 #include "rtpro/scene/material_kinds.h"
@@ -108,6 +109,7 @@ struct RenderScene {
   std::vector<TextureImage> textures;  // each file and colour space once
   Group top;                           // may contain instances
   std::vector<Group> prototypes;       // never contain instances
+  std::vector<GridMedium> volumes;     // the world's volume entries, read and placed
 
   std::vector<BBox> prototype_bounds() const;
   BBox bounds() const { return top.bounds(prototype_bounds()); }

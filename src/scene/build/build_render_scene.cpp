@@ -45,6 +45,7 @@ class RenderSceneBuilder {
     if (const std::optional<EnvironmentDesc>& e = description_.environment)
       scene_.environment = Environment{e->file, e->color * e->intensity, e->rotation, e->visible};
     for (const MaterialDesc& m : description_.materials) add_material(m, m.name);
+    for (const VolumeDesc& volume : description_.volumes) scene_.volumes.push_back(make_grid_medium(volume));
 
     check_instance_count();
     prototype_of_object_.assign(description_.objects.size(), std::nullopt);
