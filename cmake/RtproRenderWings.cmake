@@ -25,7 +25,7 @@ rtpro_add_wing(render lights
   USES sampling surface
   PRIVATE_DEPENDS TBB::tbb)
 rtpro_add_wing(render media
-  SHARES hg_phase.h medium.h medium_interface.h medium_tracking.h
+  SHARES hg_phase.h medium.h medium_interface.h medium_stack.h medium_tracking.h
   SHARES_MATCHING *_medium.h
   USES surface)
 rtpro_add_wing(render film PRIVATE_DEPENDS TBB::tbb)
