@@ -112,11 +112,7 @@ void PathVertexStep::scatter_in_medium(std::size_t vertex, const Path& path, con
   // The phase function sample: p/pdf = 1, so β stays; Russian roulette as at a surface.
   const PhaseSample ps = sample_henyey_greenstein(direction, g, u.bsdf_direction);
   Color next_beta = beta;
-  if (path.bounce >= kRouletteStart) {
-    const float q = std::max(0.05f, 1.0f - max_component(next_beta));
-    if (u.roulette < q) return;
-    next_beta = next_beta * (1.0f / (1.0f - q));
-  }
+  if (!survives_roulette(path.bounce, u.roulette, next_beta)) return;
   if (!is_finite(next_beta) || carries_no_light(next_beta)) return;
   Path& next = ws_.next_paths.emplace_back(path);
   next.bounce = path.bounce + 1;

@@ -113,11 +113,7 @@ PathVertexStep::PathVertexStep(const RenderScene& scene, const Backend& backend,
   const std::optional<BsdfSample> bs = sample_bsdf(surface.bsdf, wo, u, cosine_directions_);
   if (!bs || !(bs->pdf > 0.0f) || carries_no_light(bs->f)) return;
   Color next_beta = beta * bs->f * (std::fabs(bs->wi.z) / bs->pdf);
-  if (path.bounce >= kRouletteStart) {
-    const float q = std::max(0.05f, 1.0f - max_component(next_beta));
-    if (u.roulette < q) return;
-    next_beta = next_beta * (1.0f / (1.0f - q));
-  }
+  if (!survives_roulette(path.bounce, u.roulette, next_beta)) return;
   if (!is_finite(next_beta) || carries_no_light(next_beta)) return;
   // The path's next ray, inside the medium it was refracted into, or outside it again.
   const Vec3 direction = surface.frame.to_world(bs->wi);

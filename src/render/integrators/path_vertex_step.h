@@ -19,6 +19,7 @@
 #include "surface_bsdf.h"
 #include "vertex_samples.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -36,6 +37,16 @@ inline float power_heuristic(float a, float b) {
 
 // No channel positive (NaN counts as nothing).
 inline bool carries_no_light(const Color& c) { return !(c.x > 0.0f || c.y > 0.0f || c.z > 0.0f); }
+
+// Russian roulette from kRouletteStart on, by the throughput `beta` after the vertex's sample (q
+// the probability of ending, survivors weighted by 1/(1 − q)): whether the path goes on.
+inline bool survives_roulette(int bounce, float u, Color& beta) {
+  if (bounce < kRouletteStart) return true;
+  const float q = std::max(0.05f, 1.0f - max_component(beta));
+  if (u < q) return false;
+  beta = beta * (1.0f / (1.0f - q));
+  return true;
+}
 
 class SpawnOrigins;  // render/surface/ray_offset.h
 

@@ -148,15 +148,8 @@ std::optional<Medium> volume_interior(const tinygltf::Material& m) {
   if (!volume || !(number_of(*volume, "thicknessFactor", 0.0f) > 0.0f)) return std::nullopt;
   const float distance = number_of(*volume, "attenuationDistance", std::numeric_limits<float>::infinity());
   const Color color = color_of(*volume, "attenuationColor", Color(1.0f));
-  HomogeneousMedium medium;
-  if (distance > 0.0f && std::isfinite(distance)) {
-    const auto sigma = [&](float kept) {
-      const float s = -std::log(kept) / distance;
-      return std::isfinite(s) ? std::max(s, 0.0f) : std::numeric_limits<float>::max();
-    };
-    medium.sigma_a = {sigma(color.x), sigma(color.y), sigma(color.z)};
-  }
-  return medium;
+  if (!(distance > 0.0f) || !std::isfinite(distance)) return HomogeneousMedium{};
+  return beer_lambert_medium(Dielectric{1.0f, color, distance}).value_or(HomogeneousMedium{});
 }
 
 }  // namespace
