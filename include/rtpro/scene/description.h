@@ -10,6 +10,7 @@
 #include "rtpro/scene/light.h"  // LightDesc
 #include "rtpro/scene/material_kinds.h"
 #include "rtpro/scene/material_textures.h"
+#include "rtpro/scene/medium_kinds.h"
 #include "rtpro/scene/render_settings.h"
 // Each kind of shape's scene side (its entries' type and reader, its shapes and their bounds),
 // here so that whatever visits the lists below finds the kind's functions.
@@ -75,6 +76,9 @@ struct MaterialDesc {
   // "model.glb#images[0].png", the extension telling its format).
   std::shared_ptr<const std::vector<unsigned char>> texture_bytes;
   float opacity = 1.0f;  // MTL d (or 1 - Tr), glTF baseColorFactor alpha; not rendered yet
+  // The medium inside the surface (`interior:`, glTF KHR_materials_volume); unset, a kind whose
+  // inside is glass has its absorption (or vacuum), the others bound no medium.
+  std::optional<Medium> interior;
 };
 
 // How a mesh entry gets its shading normals (`normals:` in the scene file).
@@ -191,6 +195,7 @@ struct SceneDescription {
   // what `rtpro info` shows beside the value rendered; empty for a scene file's own lights.
   std::vector<std::string> light_sources;
   std::optional<EnvironmentDesc> environment;
+  std::optional<Medium> medium;            // `medium:`: what fills the world outside every object
   std::vector<ObjectDesc> objects;         // named, reachable only through instances
   ObjectDesc world;                        // what is rendered
   std::vector<VolumeDesc> volumes;         // the world's `volume` entries

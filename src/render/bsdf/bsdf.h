@@ -9,6 +9,7 @@
 #include "conductor_bsdf.h"
 #include "dielectric_bsdf.h"
 #include "diffuse_bsdf.h"
+#include "interface_bsdf.h"
 #include "phong_bsdf.h"
 #include "principled_bsdf.h"
 

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <optional>
@@ -33,6 +34,17 @@ WhittedMaterial whitted_material(const MaterialDesc& m, const ColorTexture& base
   return std::visit([&](const auto& params) { return whitted_approximation_of(params, m, base_color); }, m.params);
 }
 
+// What the Whitted integrator shows of a medium inside glass: absorption only, by its extinction
+// (what it scatters away counts as lost), as the glass's transmittance over one scene unit.
+Color whitted_transmittance(const Medium& medium) {
+  return std::visit(
+      [](const HomogeneousMedium& m) {
+        const Color sigma_t = m.sigma_a + m.sigma_s;
+        return Color{std::exp(-sigma_t.x), std::exp(-sigma_t.y), std::exp(-sigma_t.z)};
+      },
+      medium);
+}
+
 class RenderSceneBuilder {
  public:
   RenderSceneBuilder(const SceneDescription& description, SceneBuildReport* report)
@@ -44,6 +56,7 @@ class RenderSceneBuilder {
     for (const LightDesc& light : description_.lights) scene_.lights.push_back(make_light(light));
     if (const std::optional<EnvironmentDesc>& e = description_.environment)
       scene_.environment = Environment{e->file, e->color * e->intensity, e->rotation, e->visible};
+    if (description_.medium) scene_.world_medium = add_medium(*description_.medium);
     for (const MaterialDesc& m : description_.materials) add_material(m, m.name);
     for (const VolumeDesc& volume : description_.volumes) scene_.volumes.push_back(make_grid_medium(volume));
 
@@ -73,9 +86,30 @@ class RenderSceneBuilder {
     material.emission =
         Emission{m.emission, m.emission_two_sided, slot_texture(m.emission_texture, Color(1.0f), scene_.textures)};
     material.whitted = whitted_material(m, material.base_color);
+    material.index_matched = std::holds_alternative<InterfaceSurface>(material.model);
+    material.interior = interior_medium(m, material);
+    if (m.interior && material.whitted.glass)
+      material.whitted.glass->transmittance = whitted_transmittance(*m.interior);
     scene_.materials.push_back(std::move(material));
     scene_.material_names.push_back(name);
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);
+  }
+
+  std::uint32_t add_medium(const Medium& medium) {
+    scene_.media.push_back(medium);
+    return static_cast<std::uint32_t>(scene_.media.size() - 1);
+  }
+
+  // The medium a material's surface bounds: its `interior:`; else a glass's absorption (vacuum
+  // when clear) and an interface's vacuum; else none.
+  std::optional<std::uint32_t> interior_medium(const MaterialDesc& m, const Material& material) {
+    if (m.interior) return add_medium(*m.interior);
+    if (const Dielectric* glass = interior_of(material)) {
+      const std::optional<HomogeneousMedium> absorbing = beer_lambert_medium(*glass);
+      return absorbing ? add_medium(*absorbing) : kNoMedium;
+    }
+    if (material.index_matched) return kNoMedium;
+    return std::nullopt;
   }
 
   // Counted before anything is flattened: a few nested levels of a few instances each multiply

@@ -52,11 +52,13 @@ std::filesystem::path resolve_mesh_file(const YamlNode& node, const std::string&
 
 // An OBJ or PLY file is one mesh; a glTF file is a scene of its own, placed as a whole.
 void read_shape_entry(const YamlNode& node, ShapeEntryReader& reader, std::vector<MeshDesc>& meshes) {
-  const MappingReader mesh(node, "mesh", {"type", "file", "material", "normals", kLightLinkingKey, kShadowLinkingKey});
+  const MappingReader mesh(node, "mesh",
+                           {"type", "file", "material", "normals", "interior", kLightLinkingKey, kShadowLinkingKey});
   MeshDesc desc;
   desc.file = resolve_mesh_file(mesh.required("file"), mesh.field("file"), reader);
   if (const YamlNode* material = mesh.optional("material"))
     desc.material = reader.material_index(*material, mesh.field("material"));
+  desc.material = reader.with_interior(mesh, desc.material);
   if (const YamlNode* normals = mesh.optional("normals"))
     desc.normals = read_normals_mode(*normals, mesh.field("normals"));
   desc.where = node.at.location();
