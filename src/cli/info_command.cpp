@@ -108,7 +108,8 @@ double per_voxel(std::uint64_t bytes, std::uint64_t voxels) {
 
 nlohmann::json volumes_json(const RenderScene& scene) {
   nlohmann::json list = nlohmann::json::array();
-  for (const GridMedium& v : scene.volumes) {
+  for (const std::uint32_t medium : scene.volumes) {
+    const GridMedium& v = std::get<GridMedium>(scene.media[medium]);
     const VolumeMemory& m = v.grid->memory;
     const auto dims = v.grid->density.grid.active_box().dims();
     list.push_back(
@@ -127,7 +128,8 @@ nlohmann::json volumes_json(const RenderScene& scene) {
 }
 
 void print_volumes(const RenderScene& scene) {
-  for (const GridMedium& v : scene.volumes) {
+  for (const std::uint32_t medium : scene.volumes) {
+    const GridMedium& v = std::get<GridMedium>(scene.media[medium]);
     const VolumeMemory& m = v.grid->memory;
     const auto dims = v.grid->density.grid.active_box().dims();
     std::cout << "  volume     " << printable_text(v.file, 200) << " grid '" << printable_text(v.grid_name, 80)

@@ -13,6 +13,19 @@ PlacedGrid place(VoxelGrid grid, const Affine& medium_to_world, const SourceLoca
   return {std::move(grid), *world_to_index};
 }
 
+// The bricks' values summed over the box's voxels (the background's weight left out: a fog
+// volume's is 0).
+float mean_over_box(const VoxelGrid& grid, const BBox& box) {
+  if (box.empty()) return 0.0f;
+  double sum = 0.0;
+  grid.for_each_brick([&](const VoxelCoord&, std::span<const float> values) {
+    for (const float v : values) sum += v;
+  });
+  const Vec3 extent = box.extent();
+  const double voxels = double(extent.x) * double(extent.y) * double(extent.z);
+  return voxels > 0.0 ? static_cast<float>(sum / voxels) : 0.0f;
+}
+
 }  // namespace
 
 GridVolume place_grid_volume(VdbGrids grids, const Affine& medium_to_world, const SourceLocation& where) {
@@ -23,6 +36,7 @@ GridVolume place_grid_volume(VdbGrids grids, const Affine& medium_to_world, cons
   if (grids.temperature)
     volume.temperature = place(std::move(*grids.temperature), medium_to_world, where, "temperature");
   volume.majorants = MajorantGrid(volume.density.grid);
+  volume.mean_density = mean_over_box(volume.density.grid, volume.majorants.bounds());
   volume.memory = grids.memory;
   volume.memory.bytes += volume.majorants.memory_bytes();
   return volume;

@@ -83,12 +83,35 @@ TEST(YamlVolumeEntry, BuildingReadsAndPlacesTheGrids) {
       "test.yaml");
   const RenderScene scene = build_render_scene(description);
   ASSERT_EQ(scene.volumes.size(), 1u);
-  const GridMedium& medium = scene.volumes[0];
+  const GridMedium& medium = std::get<GridMedium>(scene.media[scene.volumes[0]]);
   EXPECT_EQ(medium.sigma_s, Color(1.5f, 1.0f, 0.5f));
   EXPECT_EQ(medium.sigma_a, Color(0.5f, 1.0f, 1.5f));
   EXPECT_FLOAT_EQ(medium.grid->density.at({5.5f, 0.0f, 0.0f}), 0.75f);
   EXPECT_EQ(medium.grid->memory.active_voxels, 2u);
   EXPECT_GT(estimate_render_cost(description).volume_bytes, 0u);
+}
+
+TEST(YamlVolumeEntry, AVolumeIsAnInterfaceBoxIntoItsMediumWoundOutwardEvenWhenMirrored) {
+  const std::string vdb = write_smoke();
+  for (const std::string scale : {"[2, 2, 2]", "[-2, 1, 1]"}) {
+    const SceneDescription description = parse_scene_text(
+        with_world("  - {type: volume, file: " + vdb + ", transform: {scale: " + scale + "}}\n"), "test.yaml");
+    const RenderScene scene = build_render_scene(description);
+    ASSERT_EQ(scene.top.geometries.size(), 1u) << scale;
+    const TriangleMesh& box = std::get<TriangleMesh>(scene.top.geometries[0]);
+    ASSERT_EQ(box.triangles.size(), 12u);
+    const Material& boundary = scene.materials[box.material];
+    EXPECT_TRUE(boundary.index_matched);
+    EXPECT_EQ(boundary.interior, scene.volumes[0]);
+    const BBox bounds = box.bounds();
+    const Vec3 centre = (bounds.lower + bounds.upper) * 0.5f;
+    // The majorant box in index space is [-1, 2] x [-1, 1]², half a voxel wider each way.
+    EXPECT_NEAR(bounds.extent().y * bounds.extent().z, scale == "[2, 2, 2]" ? 36.0f : 9.0f, 1e-4f) << scale;
+    for (const TriangleIndices& t : box.triangles) {
+      const Vec3 v0 = box.vertex(t.v0), v1 = box.vertex(t.v1), v2 = box.vertex(t.v2);
+      EXPECT_GT(dot(cross(v1 - v0, v2 - v0), (v0 + v1 + v2) * (1.0f / 3.0f) - centre), 0.0f) << scale;
+    }
+  }
 }
 
 TEST(YamlVolumeEntry, GridErrorsNameTheFileAndGridAtTheEntry) {

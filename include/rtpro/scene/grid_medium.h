@@ -4,10 +4,13 @@
 // path integrator's grid kind takes at a point σ_a and σ_s × the density there, and along a ray the
 // density's majorant segments scaled by max_component(σ_a + σ_s).
 #include "rtpro/core/vec3.h"
+#include "rtpro/scene/mesh.h"
 #include "rtpro/scene/volume_desc.h"
 #include "rtpro/volume/grid_volume.h"
 
+#include <cstdint>
 #include <memory>
+#include <string>
 
 namespace rtpro {
 
@@ -20,6 +23,12 @@ struct GridMedium {
   std::string file;  // for `rtpro info` and messages
   std::string grid_name;
 };
+
+// The volume object's boundary (a world `volume` entry has no surface): the density's majorant
+// box, half a voxel wider, placed in the world, twelve triangles wound outward (a mirroring transform is rewound), all
+// of `material`, an index-matched interface whose interior is the medium. Empty when the grid
+// holds no density.
+TriangleMesh bounding_box_mesh(const GridMedium& medium, std::uint32_t material);
 
 // Reads the entry's grids (InputError at the entry, naming the file and grid, for what
 // read_vdb_grids refuses) and places them by its transform.

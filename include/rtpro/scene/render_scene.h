@@ -6,7 +6,6 @@
 #include "rtpro/core/texture_sampling.h"
 #include "rtpro/core/transform.h"
 #include "rtpro/scene/checker_axes.h"
-#include "rtpro/scene/grid_medium.h"
 #include "rtpro/scene/light.h"
 #include "rtpro/scene/light_links.h"
 #include "rtpro/scene/material_kinds.h"
@@ -118,7 +117,7 @@ struct RenderScene {
   std::vector<TextureImage> textures;      // each file and colour space once
   Group top;                               // may contain instances
   std::vector<Group> prototypes;           // never contain instances
-  std::vector<GridMedium> volumes;         // the world's volume entries, read and placed
+  std::vector<std::uint32_t> volumes;      // the world's volume entries: their media (GridMedium)
 
   std::vector<BBox> prototype_bounds() const;
   BBox bounds() const { return top.bounds(prototype_bounds()); }

@@ -37,6 +37,9 @@ struct GridVolume {
   MajorantGrid majorants;  // over density's index space
   Affine density_to_world;
   VolumeMemory memory;
+  // The density averaged over the majorant grid's box (index space): what a renderer that cannot
+  // track the grid (Whitted) shows of it as a uniform absorption.
+  float mean_density = 0.0f;
 
   // The world box the density can be non-zero in (the support's corners transformed).
   BBox world_bounds() const { return density_to_world.apply(majorants.bounds()); }

@@ -34,14 +34,16 @@ WhittedMaterial whitted_material(const MaterialDesc& m, const ColorTexture& base
   return std::visit([&](const auto& params) { return whitted_approximation_of(params, m, base_color); }, m.params);
 }
 
-// What the Whitted integrator shows of a medium inside glass: absorption only, by its extinction
-// (what it scatters away counts as lost), as the glass's transmittance over one scene unit.
+// What the Whitted integrator shows of a medium inside glass or an interface: absorption only, by
+// its extinction (what it scatters away counts as lost), as the glass's transmittance over one
+// scene unit; a grid's at its mean density over its box.
 Color whitted_transmittance(const Medium& medium) {
+  const auto beer_lambert = [](const Color& sigma_t) {
+    return Color{std::exp(-sigma_t.x), std::exp(-sigma_t.y), std::exp(-sigma_t.z)};
+  };
   return std::visit(
-      [](const HomogeneousMedium& m) {
-        const Color sigma_t = m.sigma_a + m.sigma_s;
-        return Color{std::exp(-sigma_t.x), std::exp(-sigma_t.y), std::exp(-sigma_t.z)};
-      },
+      Overloaded{[&](const HomogeneousMedium& m) { return beer_lambert(m.sigma_a + m.sigma_s); },
+                 [&](const GridMedium& m) { return beer_lambert((m.sigma_a + m.sigma_s) * m.grid->mean_density); }},
       medium);
 }
 
@@ -58,7 +60,8 @@ class RenderSceneBuilder {
       scene_.environment = Environment{e->file, e->color * e->intensity, e->rotation, e->visible};
     if (description_.medium) scene_.world_medium = add_medium(*description_.medium);
     for (const MaterialDesc& m : description_.materials) add_material(m, m.name);
-    for (const VolumeDesc& volume : description_.volumes) scene_.volumes.push_back(make_grid_medium(volume));
+    for (const VolumeDesc& volume : description_.volumes)
+      scene_.volumes.push_back(add_medium(make_grid_medium(volume)));
 
     check_instance_count();
     prototype_of_object_.assign(description_.objects.size(), std::nullopt);
@@ -71,6 +74,7 @@ class RenderSceneBuilder {
       flatten_instance(instance.object, instance.transform, instance.where);
       linking_of_object_.resize(scene_.top.geometries.size(), instance.linking);
     }
+    add_volume_boundaries();
     link_objects();
     check_traceable_range(scene_, top_origins_, description_.camera, description_.lights);
     if (report_) report_->flattened_instances = flattened_;
@@ -98,6 +102,26 @@ class RenderSceneBuilder {
   std::uint32_t add_medium(const Medium& medium) {
     scene_.media.push_back(medium);
     return static_cast<std::uint32_t>(scene_.media.size() - 1);
+  }
+
+  // Each volume entry as Blender's Volume object: its grid's box, an interface into its medium
+  // (scene/grid_medium.h's bounding_box_mesh), a top-level geometry of its own.
+  void add_volume_boundaries() {
+    for (std::size_t v = 0; v < scene_.volumes.size(); ++v) {
+      const GridMedium& medium = std::get<GridMedium>(scene_.media[scene_.volumes[v]]);
+      MaterialDesc boundary;
+      boundary.name = "volume " + std::to_string(v);
+      boundary.params = InterfaceParams{};
+      TriangleMesh box = bounding_box_mesh(medium, 0);
+      if (box.triangles.empty()) continue;
+      box.material = add_material(boundary, boundary.name);
+      Material& material = scene_.materials[box.material];
+      material.interior = scene_.volumes[v];
+      if (material.whitted.glass) material.whitted.glass->transmittance = whitted_transmittance(medium);
+      scene_.top.geometries.emplace_back(std::move(box));
+      top_origins_.push_back({&description_.volumes[v].where});
+      linking_of_object_.push_back(kNoLinking);
+    }
   }
 
   // The medium a material's surface bounds: its `interior:`; else a glass's absorption (vacuum
