@@ -108,7 +108,7 @@ double per_voxel(std::uint64_t bytes, std::uint64_t voxels) {
 
 nlohmann::json volumes_json(const RenderScene& scene) {
   nlohmann::json list = nlohmann::json::array();
-  for (const std::uint32_t medium : scene.volumes) {
+  for (const MediumIndex medium : scene.volumes) {
     const GridMedium& v = std::get<GridMedium>(scene.media[medium]);
     const VolumeMemory& m = v.grid->memory;
     const auto dims = v.grid->density.grid.active_box().dims();
@@ -128,7 +128,7 @@ nlohmann::json volumes_json(const RenderScene& scene) {
 }
 
 void print_volumes(const RenderScene& scene) {
-  for (const std::uint32_t medium : scene.volumes) {
+  for (const MediumIndex medium : scene.volumes) {
     const GridMedium& v = std::get<GridMedium>(scene.media[medium]);
     const VolumeMemory& m = v.grid->memory;
     const auto dims = v.grid->density.grid.active_box().dims();
