@@ -1,7 +1,7 @@
-# render: six wings (RtproWings.cmake), in the order the data flows: sampling (the samplers, every
+# render: seven wings (RtproWings.cmake), in the order the data flows: sampling (the samplers, every
 # random number's one source; alias tables) and surface (hit -> surface point, textures, normal
-# maps) <- bsdf (the BSDF kinds, microfacet tables) and lights (light kinds, sampling, the tree,
-# linking) <- film (pixel sums, passes, adaptive sampling, tiles) <- integrators (whitted, path).
+# maps) <- bsdf (the BSDF kinds, microfacet tables), lights (light kinds, sampling, the tree,
+# linking) and media (medium kinds, phase function, tracking) <- film (pixel sums, passes, adaptive sampling, tiles) <- integrators (whitted, path).
 # rtpro_render itself is the renderer on top of them (src/render/*.cpp: camera, tile renderer,
 # passes over tiles) behind the public headers, which are all that other modules see.
 
@@ -14,7 +14,7 @@ rtpro_add_wing(render sampling SHARES alias_table.h camera_samplers.h sample_dim
 rtpro_add_wing(render surface
   SHARES normal_map.h ray_offset.h shading_frame.h surface.h surface_batch.h texture.h)
 rtpro_add_wing(render bsdf
-  SHARES beer_lambert.h bsdf.h bsdf_from.h bsdf_sample.h cosine_lanes.h dielectric.h hair_lobes.h microfacet.h sheen.h
+  SHARES bsdf.h bsdf_from.h bsdf_sample.h cosine_lanes.h dielectric.h hair_lobes.h microfacet.h sheen.h
   SHARES_MATCHING *_bsdf.h
   USES surface
   PRIVATE_DEPENDS TBB::tbb)
@@ -24,10 +24,14 @@ rtpro_add_wing(render lights
   SHARES_MATCHING *_light_sample.h
   USES sampling surface
   PRIVATE_DEPENDS TBB::tbb)
+rtpro_add_wing(render media
+  SHARES beer_lambert.h hg_phase.h medium.h medium_interface.h medium_stack.h medium_tracking.h
+  SHARES_MATCHING *_medium.h
+  USES surface)
 rtpro_add_wing(render film PRIVATE_DEPENDS TBB::tbb)
 rtpro_add_wing(render integrators
   SHARES camera_batch.h integrator.h path_integrator.h vertex_samples.h whitted_integrator.h
-  USES sampling surface bsdf lights film)
+  USES sampling surface bsdf lights media film)
 
 file(GLOB render_sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/render/*.cpp)
 add_library(rtpro_render STATIC ${render_sources})

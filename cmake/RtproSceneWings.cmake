@@ -7,7 +7,7 @@
 rtpro_module_include_root(scene scene_root)
 add_library(rtpro_scene_headers INTERFACE)
 target_include_directories(rtpro_scene_headers INTERFACE ${scene_root})
-target_link_libraries(rtpro_scene_headers INTERFACE rtpro_core)
+target_link_libraries(rtpro_scene_headers INTERFACE rtpro_core rtpro_volume)
 
 # OpenSubdiv (Debian's libosd-dev): its CMake config also names static libraries Debian does not
 # ship, so find_package(OpenSubdiv) fails; the CPU library (Far, Sdc, Vtr) is found directly and the

@@ -8,6 +8,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config git python3 time
   libembree-dev libtbb-dev libosd-dev
+  libopenvdb-dev libboost-dev python3-openvdb
   libopenimageio-dev openimageio-tools python3-imath libopenexr-dev
   libopencolorio-dev opencolorio-tools
   libgtest-dev libgmock-dev libbenchmark-dev

@@ -42,6 +42,7 @@ nlohmann::json cost_json(const RenderCost& cost, const MemoryBudget& budget) {
           {"environment_width", cost.environment_width},
           {"environment_height", cost.environment_height},
           {"environment_bytes", cost.environment_bytes},
+          {"volume_bytes", cost.volume_bytes},
           {"total_bytes", cost.total_bytes},
           {"budget_bytes", budget.bytes},
           {"budget", budget.source}};
@@ -99,6 +100,46 @@ void print_lights(const std::vector<LightLine>& lines) {
   }
 }
 
+// Each volume's grid as rtpro holds it, against the file OpenVDB wrote: the memory figure of a
+// grid medium (bytes per active voxel).
+double per_voxel(std::uint64_t bytes, std::uint64_t voxels) {
+  return voxels ? static_cast<double>(bytes) / static_cast<double>(voxels) : 0.0;
+}
+
+nlohmann::json volumes_json(const RenderScene& scene) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const MediumIndex medium : scene.volumes) {
+    const GridMedium& v = std::get<GridMedium>(scene.media[medium]);
+    const VolumeMemory& m = v.grid->memory;
+    const auto dims = v.grid->density.grid.active_box().dims();
+    list.push_back(
+        {{"file", v.file},
+         {"grid", v.grid_name},
+         {"active_voxels", m.active_voxels},
+         {"active_box", {dims[0], dims[1], dims[2]}},
+         {"bytes", m.bytes},
+         {"bytes_per_active_voxel", per_voxel(m.bytes, m.active_voxels)},
+         {"file_bytes", m.file_bytes},
+         {"file_bytes_per_active_voxel", per_voxel(m.file_bytes, m.active_voxels)},
+         {"bounds",
+          {{"lower", vec_json(v.grid->world_bounds().lower)}, {"upper", vec_json(v.grid->world_bounds().upper)}}}});
+  }
+  return list;
+}
+
+void print_volumes(const RenderScene& scene) {
+  for (const MediumIndex medium : scene.volumes) {
+    const GridMedium& v = std::get<GridMedium>(scene.media[medium]);
+    const VolumeMemory& m = v.grid->memory;
+    const auto dims = v.grid->density.grid.active_box().dims();
+    std::cout << "  volume     " << printable_text(v.file, 200) << " grid '" << printable_text(v.grid_name, 80)
+              << "': " << m.active_voxels << " active voxels in " << dims[0] << "x" << dims[1] << "x" << dims[2] << ", "
+              << format_bytes(m.bytes) << " (" << std::setprecision(1) << per_voxel(m.bytes, m.active_voxels)
+              << " bytes per active voxel; the file " << format_bytes(m.file_bytes) << ", "
+              << per_voxel(m.file_bytes, m.active_voxels) << " per active voxel)\n";
+  }
+}
+
 nlohmann::json info_json(const std::string& file, const RenderScene& scene, const SceneSummary& s,
                          const SceneBuildReport& report) {
   nlohmann::json meshes = nlohmann::json::array();
@@ -140,6 +181,7 @@ nlohmann::json info_json(const std::string& file, const RenderScene& scene, cons
           {"curve_segments", {{"stored", s.curve_segments_stored}, {"rendered", s.curve_segments_rendered}}},
           {"vertices", s.vertices_stored},
           {"meshes", meshes},
+          {"volumes", volumes_json(scene)},
           {"prototypes", s.prototypes},
           {"instances", s.instances},
           {"bounds", bounds},
@@ -182,6 +224,8 @@ void print_text(const std::string& file, const RenderScene& scene, const SceneSu
               << "\n";
   for (const auto& m : report.meshes)
     for (const std::string& warning : m.stats.warnings) std::cout << "  warning    " << warning << "\n";
+  print_volumes(scene);
+  std::cout << std::fixed;
   std::cout << std::setprecision(3);
   if (s.bounds.empty()) {
     std::cout << "bounds       none (nothing to render)\n";
@@ -198,8 +242,8 @@ void print_cost(const RenderCost& cost, const MemoryBudget& budget) {
   std::cout << "estimate     " << format_bytes(cost.total_bytes) << " before the BVH: image "
             << format_bytes(cost.image_bytes) << ", " << cost.flattened_instances << " instances "
             << format_bytes(cost.instance_bytes) << ", meshes " << format_bytes(cost.mesh_bytes) << ", environment map "
-            << format_bytes(cost.environment_bytes) << "; budget " << format_bytes(budget.bytes) << " ("
-            << budget.source << ")\n"
+            << format_bytes(cost.environment_bytes) << ", volumes " << format_bytes(cost.volume_bytes) << "; budget "
+            << format_bytes(budget.bytes) << " (" << budget.source << ")\n"
             << "camera rays  " << cost.samples << " (pixels x spp)\n";
 }
 

@@ -10,6 +10,7 @@
 #include "rtpro/scene/light.h"  // LightDesc
 #include "rtpro/scene/material_kinds.h"
 #include "rtpro/scene/material_textures.h"
+#include "rtpro/scene/medium_kinds.h"
 #include "rtpro/scene/motion.h"
 #include "rtpro/scene/render_settings.h"
 // Each kind of shape's scene side (its entries' type and reader, its shapes and their bounds),
@@ -18,6 +19,7 @@
 #include "rtpro/scene/sphere_geometry.h"
 #include "rtpro/scene/subdivision.h"
 #include "rtpro/scene/triangle_geometry.h"
+#include "rtpro/scene/volume_desc.h"
 
 #include <concepts>
 #include <cstdint>
@@ -79,6 +81,9 @@ struct MaterialDesc {
   // "model.glb#images[0].png", the extension telling its format).
   std::shared_ptr<const std::vector<unsigned char>> texture_bytes;
   float opacity = 1.0f;  // MTL d (or 1 - Tr), glTF baseColorFactor alpha; not rendered yet
+  // The medium inside the surface (`interior:`, glTF KHR_materials_volume); unset, a kind whose
+  // inside is glass has its absorption (or vacuum), the others bound no medium.
+  std::optional<Medium> interior;
 };
 
 // How a mesh entry gets its shading normals (`normals:` in the scene file).
@@ -210,8 +215,10 @@ struct SceneDescription {
   // what `rtpro info` shows beside the value rendered; empty for a scene file's own lights.
   std::vector<std::string> light_sources;
   std::optional<EnvironmentDesc> environment;
+  std::optional<Medium> medium;            // `medium:`: what fills the world outside every object
   std::vector<ObjectDesc> objects;         // named, reachable only through instances
   ObjectDesc world;                        // what is rendered
+  std::vector<VolumeDesc> volumes;         // the world's `volume` entries
   std::vector<LightLinkingDesc> linkings;  // of the world's entries that have one
   // What rtpro chose for a model file read as the whole scene (the camera framing it, the light it
   // added), one line each, for the commands to say.

@@ -2,7 +2,7 @@
 // What a render will cost, estimated from the scene description before anything large is
 // allocated: instances multiplied out through nesting (without flattening them), image buffers
 // from resolution × channels, mesh memory from the mesh files' sizes, and the environment's image
-// from its header. `rtpro render` and
+// from its header, volumes from their grids' metadata. `rtpro render` and
 // `rtpro info` check it against the memory budget (--max-memory, else
 // default_memory_budget()), so a kilobyte of YAML asking for gigabytes is refused in milliseconds.
 #include "rtpro/scene/description.h"
@@ -25,6 +25,7 @@ struct RenderCost {
   std::filesystem::path environment_file;                       // the environment's image, if any
   std::uint64_t environment_width = 0, environment_height = 0;  // as its header declares them
   std::uint64_t environment_bytes = 0;  // that image read and made a light (see add_environment_cost)
+  std::uint64_t volume_bytes = 0;       // the volume entries' grids, from the files' grid metadata
   std::uint64_t total_bytes = 0;        // the sum, saturating
 };
 

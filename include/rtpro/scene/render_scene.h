@@ -11,6 +11,7 @@
 #include "rtpro/scene/light_links.h"
 #include "rtpro/scene/material_kinds.h"
 #include "rtpro/scene/material_textures.h"
+#include "rtpro/scene/medium_kinds.h"
 #include "rtpro/scene/motion.h"
 #include "rtpro/scene/render_camera.h"
 #include "rtpro/scene/render_settings.h"
@@ -89,6 +90,12 @@ struct Material {
   Emission emission{};
   SurfaceModel model = PhongSurface{};
   WhittedMaterial whitted;
+  // The medium inside the surface (an index into RenderScene::media, kNoMedium for vacuum) when the
+  // surface bounds one: a path refracted (or passing) through it from the front is in that medium
+  // until it crosses such a surface from the back. Unset: what crosses it stays where it was.
+  std::optional<MediumIndex> interior = std::nullopt;
+  // `type: interface`: no surface, only a medium's boundary: rays pass straight through.
+  bool index_matched = false;
 };
 
 // The medium inside the material's surface, whose absorption a path through it takes: its kind's
@@ -119,9 +126,12 @@ struct RenderScene {
   std::vector<Light> lights;
   LightLinks links;  // which lights reach which top-level objects, and whose shadows they cast
   std::optional<Environment> environment;
-  std::vector<TextureImage> textures;  // each file and colour space once
-  Group top;                           // may contain instances
-  std::vector<Group> prototypes;       // never contain instances
+  std::vector<Medium> media;             // the materials' interiors, the world's and the volumes'
+  MediumIndex world_medium = kNoMedium;  // what fills the world outside every object
+  std::vector<TextureImage> textures;    // each file and colour space once
+  Group top;                             // may contain instances
+  std::vector<Group> prototypes;         // never contain instances
+  std::vector<MediumIndex> volumes;      // the world's volume entries: their media (GridMedium)
 
   std::vector<BBox> prototype_bounds() const;
   BBox bounds() const { return top.bounds(prototype_bounds()); }

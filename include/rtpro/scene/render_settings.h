@@ -85,6 +85,8 @@ struct PathControls {
   // never binds. The vertex a path reaches when one count reaches its limit adds its emission
   // and ends, as at max_depth.
   std::optional<int> max_diffuse_depth, max_glossy_depth, max_transmission_depth;
+  // How many phase function samples (scatterings in a medium) a path may take; unset is max_depth.
+  std::optional<int> max_volume_depth;
   // Cycles' Clamp Direct / Indirect: each contribution to a sample whose channel mean is above
   // the limit is scaled down to it (the colour's hue kept); 0 is off. Direct: light reaching the
   // camera after at most one scattering; indirect: the rest.
@@ -116,12 +118,12 @@ struct RenderSettings {
 
 // The per-lobe bounce limits, each unset one resolved to max_depth.
 struct LobeDepths {
-  int diffuse, glossy, transmission;
+  int diffuse, glossy, transmission, volume;
 };
 inline LobeDepths lobe_depths(const RenderSettings& settings) {
   const int all = settings.max_depth;
   return {settings.path.max_diffuse_depth.value_or(all), settings.path.max_glossy_depth.value_or(all),
-          settings.path.max_transmission_depth.value_or(all)};
+          settings.path.max_transmission_depth.value_or(all), settings.path.max_volume_depth.value_or(all)};
 }
 
 }  // namespace rtpro

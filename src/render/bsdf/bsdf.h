@@ -10,6 +10,7 @@
 #include "dielectric_bsdf.h"
 #include "diffuse_bsdf.h"
 #include "hair_bsdf.h"
+#include "interface_bsdf.h"
 #include "phong_bsdf.h"
 #include "principled_bsdf.h"
 

@@ -6,6 +6,13 @@
 // full. Russian roulette after kRouletteStart bounces, on the throughput without refraction's 1/η²
 // radiance scale, its number from the sampler.
 //
+// Media (render/media/): a path's rays are tracked through the medium they travel in by delta
+// tracking, which adds the medium's emission and may end the ray at a scattering vertex, where one
+// light sample and one Henyey–Greenstein sample are weighted by the power heuristic as at a surface;
+// shadow rays are ratio-tracked through media and pass index-matched interfaces (`type:
+// interface`), and so does the path's own ray, without a vertex. A scene without media takes none
+// of this: one flag tested per vertex.
+//
 // Light linking (scene/light_links.h): a vertex samples among the lights that illuminate its
 // object, and emission a ray from it reaches is weighted by that vertex's pdfs; its shadow rays
 // pass the objects that do not cast their light's shadows.
@@ -21,6 +28,7 @@
 #include "rtpro/image/texture_lookup.h"
 #include "rtpro/render/ray_counts.h"
 #include "light_set.h"
+#include "medium_stack.h"
 #include "rtpro/render/sampler.h"
 #include "surface.h"
 #include "rtpro/scene/render_scene.h"
@@ -34,28 +42,34 @@ namespace rtpro {
 // The buffers one worker reuses from batch to batch.
 class PathWorkspace {
  public:
-  // 60 bytes, copied from vertex to vertex: the narrow fields are packed together.
+  // 72 bytes, copied from vertex to vertex: the narrow fields are packed together.
   struct Path {
     std::uint32_t sample;
     std::uint16_t bounce;
-    // How many of the path's BSDF samples took each kind of lobe (BsdfLobe), for its limits;
-    // counted only when a limit is below max_depth.
-    std::uint16_t diffuse_bounces, glossy_bounces, transmission_bounces;
-    Color beta;            // throughput from the camera to this ray's origin
-    float eta_scale;       // the product of η² of the path's refractions (BsdfSample::eta)
-    Vec3 origin;           // the vertex the ray leaves (for the pdf of light sampling)
-    float bsdf_pdf;        // solid-angle pdf of the ray's direction
-    float min_pdf;         // the least pdf of the path's non-delta BSDF samples (Filter Glossy, when on)
-    std::uint32_t medium;  // the dielectric material whose inside the ray crosses, or kOutside
-    std::uint32_t group;   // the light-link group of the vertex the ray leaves (0 for the camera)
-    bool specular;         // the ray left a specular vertex or the camera: emission counts in full
-    bool aov_pending;      // albedo and normal AOVs wait for the first non-specular vertex
-    bool transmitted;      // the ray was refracted into or out of a surface (counted as refraction)
+    // How many of the path's BSDF samples took each kind of lobe (BsdfLobe), and of its phase
+    // function samples (volume), for their limits; counted only when a limit is below max_depth.
+    std::uint16_t diffuse_bounces, glossy_bounces, transmission_bounces, volume_bounces;
+    Color beta;           // throughput from the camera to this ray's origin
+    float eta_scale;      // the product of η² of the path's refractions (BsdfSample::eta)
+    Vec3 origin;          // the vertex the ray leaves (for the pdf of light sampling)
+    float bsdf_pdf;       // solid-angle pdf of the ray's direction
+    float min_pdf;        // the least pdf of the path's non-delta BSDF samples (Filter Glossy, when on)
+    std::uint32_t group;  // the light-link group of the vertex the ray leaves (0 for the camera)
+    MediumStack media;    // the media the ray travels in
+    bool specular;        // the ray left a specular vertex or the camera: emission counts in full
+    bool aov_pending;     // albedo and normal AOVs wait for the first non-specular vertex
+    bool transmitted;     // the ray was refracted into or out of a surface (counted as refraction)
   };
-  static constexpr std::uint32_t kOutside = ~0u;
   struct ShadowQuery {
     std::uint32_t sample;
     Color contribution;  // added when the shadow ray is unoccluded
+  };
+  // In a scene with media, where a shadow ray starts: its media, the seed of its ratio tracking,
+  // and the scene light it goes to (kInvalidId for an emitter or the environment).
+  struct MediumShadow {
+    MediumStack media;
+    std::uint64_t seed;
+    std::uint32_t light;
   };
 
   std::vector<Path> paths, next_paths;
@@ -71,6 +85,9 @@ class PathWorkspace {
   std::vector<std::uint8_t> occluded;
   // While the shutter is open: per ray and per shadow ray, its sample's time (CameraBatch::times).
   std::vector<float> ray_times, shadow_times;
+  // In a scene with media only: per shadow ray, where it starts and what it lets through.
+  std::vector<MediumShadow> medium_shadows;
+  std::vector<Color> shadow_transmittance;
 };
 
 // The path integrator with its scene, settings and lights (every light and emissive surface of the

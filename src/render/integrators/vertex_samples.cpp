@@ -46,7 +46,7 @@ VertexDraws vertex_draws(const RenderScene& scene, const LightSet& lights) {
     return false;
   };
   return {any_material(reads_lobe_choice) || lights.reads_pick_number(), lights.reads_point_numbers(),
-          any_material(makes_lambert_bsdf)};
+          any_material(makes_lambert_bsdf), !scene.media.empty()};
 }
 
 namespace {
@@ -74,6 +74,11 @@ void GenerationSamples::draw(const StratifiedSampler& sampler, std::span<const S
   if (needed.light_point) draw(path_dimension::kLightPoint, &VertexSamples::light_point);
   draw(path_dimension::kBsdfDirection, &VertexSamples::bsdf_direction);
   if (needed.cosine_directions) draw_cosine_directions(vertices_);
+  if (needed.medium) {
+    roulette_draws_.resize(n);
+    sampler.sample_1d(path_keys, sample_dimension::at_bounce(bounce, path_dimension::kMedium), roulette_draws_);
+    for (std::size_t i = 0; i < n; ++i) vertices_[i].medium = roulette_draws_[i];
+  }
   if (bounce < kRouletteStart) return;
   roulette_draws_.resize(n);
   sampler.sample_1d(path_keys, sample_dimension::at_bounce(bounce, path_dimension::kRoulette), roulette_draws_);
@@ -96,10 +101,15 @@ void GenerationSamples::draw(const SobolSampler& sampler, std::span<const Sample
   if (needed.choices) pairs[pair_count++] = pair(path_dimension::kChoices, &VertexSamples::choices);
   if (needed.light_point) pairs[pair_count++] = pair(path_dimension::kLightPoint, &VertexSamples::light_point);
   pairs[pair_count++] = pair(path_dimension::kBsdfDirection, &VertexSamples::bsdf_direction);
-  const SobolSampler::Draw<float> roulette[] = {
-      {sample_dimension::at_bounce(bounce, path_dimension::kRoulette), &first->roulette, sizeof(VertexSamples)}};
-  sampler.sample(path_keys, {pairs, pair_count},
-                 bounce < kRouletteStart ? std::span<const SobolSampler::Draw<float>>() : roulette);
+  SobolSampler::Draw<float> singles[2];
+  std::size_t single_count = 0;
+  if (needed.medium)
+    singles[single_count++] = {sample_dimension::at_bounce(bounce, path_dimension::kMedium), &first->medium,
+                               sizeof(VertexSamples)};
+  if (bounce >= kRouletteStart)
+    singles[single_count++] = {sample_dimension::at_bounce(bounce, path_dimension::kRoulette), &first->roulette,
+                               sizeof(VertexSamples)};
+  sampler.sample(path_keys, {pairs, pair_count}, {singles, single_count});
   if (needed.cosine_directions) draw_cosine_directions(vertices_);
 }
 

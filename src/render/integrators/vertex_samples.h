@@ -24,6 +24,7 @@ inline constexpr int kLightPoint = 0;     // and 1
 inline constexpr int kBsdfDirection = 2;  // and 3
 inline constexpr int kChoices = 4;        // and 5: which light (x) and which BSDF lobe (y)
 inline constexpr int kRoulette = 6;
+inline constexpr int kMedium = 7;  // the first free path through a medium (render/media/medium_tracking.h)
 }  // namespace path_dimension
 
 // The bounce from which a path plays Russian roulette (and draws its number for it).
@@ -35,6 +36,7 @@ struct VertexSamples {
   Sample2D light_point;     // where on the light
   Sample2D bsdf_direction;  // the BSDF's direction within its lobe
   float roulette;           // from kRouletteStart on: whether the path goes on
+  float medium;             // in scenes with media: where the ray reaching the vertex first collides
   // sample_cosine_hemisphere(bsdf_direction), drawn with it when the scene has Lambert surfaces.
   Vec3 cosine_direction;
 };
@@ -43,11 +45,12 @@ struct VertexSamples {
 // a material chooses among lobes, the light point when a light has an extent. Each value is a
 // function of its own dimension, so leaving out a draw nothing reads changes no other value.
 // The Lambert surfaces' cosine-weighted directions are worked out for every vertex at once when
-// some material makes them.
+// some material makes them; the medium's number is drawn when the scene has media.
 struct VertexDraws {
   bool choices;
   bool light_point;
   bool cosine_directions;
+  bool medium;
 };
 VertexDraws vertex_draws(const RenderScene& scene, const LightSet& lights);
 

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <optional>
@@ -43,6 +44,23 @@ Model taken_or_copied(std::shared_ptr<Model> model) {
   return *model;
 }
 
+// What the Whitted integrator shows of a medium inside glass or an interface: absorption only, by
+// its extinction (what it scatters away counts as lost), as the glass's transmittance over a
+// distance; a grid's at its mean density over its box.
+void show_to_whitted(const Medium& medium, Dielectric& glass) {
+  const auto beer_lambert = [&](const Color& sigma_t) {
+    glass.transmittance = {std::exp(-sigma_t.x), std::exp(-sigma_t.y), std::exp(-sigma_t.z)};
+    glass.transmittance_distance = 1.0f;
+  };
+  std::visit(Overloaded{[&](const HomogeneousMedium& m) { beer_lambert(m.sigma_a + m.sigma_s); },
+                        [&](const AbsorbingMedium& m) {
+                          glass.transmittance = m.transmittance;
+                          glass.transmittance_distance = m.distance;
+                        },
+                        [&](const GridMedium& m) { beer_lambert((m.sigma_a + m.sigma_s) * m.grid->mean_density); }},
+             medium);
+}
+
 class RenderSceneBuilder {
  public:
   RenderSceneBuilder(const SceneDescription& description, SceneBuildReport* report, const SceneBuildOptions& options)
@@ -56,7 +74,10 @@ class RenderSceneBuilder {
     for (const LightDesc& light : description_.lights) scene_.lights.push_back(make_light(light));
     if (const std::optional<EnvironmentDesc>& e = description_.environment)
       scene_.environment = Environment{e->file, e->color * e->intensity, e->rotation, e->visible};
+    if (description_.medium) scene_.world_medium = add_medium(*description_.medium);
     for (const MaterialDesc& m : description_.materials) add_material(m, m.name);
+    for (const VolumeDesc& volume : description_.volumes)
+      scene_.volumes.push_back(add_medium(make_grid_medium(volume)));
 
     check_instance_count();
     prototype_of_object_.assign(description_.objects.size(), std::nullopt);
@@ -69,6 +90,7 @@ class RenderSceneBuilder {
       flatten_instance(instance.object, instance.transform, instance.transform_steps, instance.where);
       linking_of_object_.resize(scene_.top.geometries.size(), instance.linking);
     }
+    add_volume_boundaries();
     link_objects();
     check_traceable_range(scene_, top_origins_, description_.camera, description_.lights);
     if (report_) report_->flattened_instances = flattened_;
@@ -84,9 +106,52 @@ class RenderSceneBuilder {
     material.emission =
         Emission{m.emission, m.emission_two_sided, slot_texture(m.emission_texture, Color(1.0f), scene_.textures)};
     material.whitted = whitted_material(m, material.base_color);
+    material.index_matched = std::holds_alternative<InterfaceSurface>(material.model);
+    material.interior = interior_medium(m, material);
+    if (m.interior && material.whitted.glass) show_to_whitted(*m.interior, *material.whitted.glass);
     scene_.materials.push_back(std::move(material));
     scene_.material_names.push_back(name);
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);
+  }
+
+  MediumIndex add_medium(const Medium& medium) {
+    if (scene_.media.size() == kNoMedium)
+      throw InputError("the scene has more than " + std::to_string(kNoMedium) +
+                       " media (interiors, tinted glass and the world's medium together): the most a scene holds");
+    scene_.media.push_back(medium);
+    return static_cast<MediumIndex>(scene_.media.size() - 1);
+  }
+
+  // Each volume entry as Blender's Volume object: its grid's box, an interface into its medium
+  // (scene/grid_medium.h's bounding_box_mesh), a top-level geometry of its own.
+  void add_volume_boundaries() {
+    for (std::size_t v = 0; v < scene_.volumes.size(); ++v) {
+      const GridMedium& medium = std::get<GridMedium>(scene_.media[scene_.volumes[v]]);
+      MaterialDesc boundary;
+      boundary.name = "volume " + std::to_string(v);
+      boundary.params = InterfaceParams{};
+      TriangleMesh box = bounding_box_mesh(medium, 0);
+      if (box.triangles.empty()) continue;
+      box.material = add_material(boundary, boundary.name);
+      Material& material = scene_.materials[box.material];
+      material.interior = scene_.volumes[v];
+      if (material.whitted.glass) show_to_whitted(medium, *material.whitted.glass);
+      scene_.top.geometries.emplace_back(std::move(box));
+      top_origins_.push_back({&description_.volumes[v].where});
+      linking_of_object_.push_back(kNoLinking);
+    }
+  }
+
+  // The medium a material's surface bounds: its `interior:`; else a glass's absorption (vacuum
+  // when clear) and an interface's vacuum; else none.
+  std::optional<MediumIndex> interior_medium(const MaterialDesc& m, const Material& material) {
+    if (m.interior) return add_medium(*m.interior);
+    if (const Dielectric* glass = interior_of(material)) {
+      const std::optional<AbsorbingMedium> absorbing = glass_absorption(*glass);
+      return absorbing ? add_medium(*absorbing) : kNoMedium;
+    }
+    if (material.index_matched) return kNoMedium;
+    return std::nullopt;
   }
 
   // Counted before anything is flattened: a few nested levels of a few instances each multiply

@@ -5,6 +5,7 @@
 
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
+#include "rtpro/scene/grid_medium.h"
 #include "rtpro/core/overloaded.h"
 #include "rtpro/core/printable_text.h"
 
@@ -138,7 +139,10 @@ RenderCost estimate_render_cost(const SceneDescription& scene, int extra_channel
   std::set<std::filesystem::path> seen;
   add_shape_bytes(scene.world, seen, cost.mesh_bytes);
   for (const ObjectDesc& object : scene.objects) add_shape_bytes(object, seen, cost.mesh_bytes);
+  for (const VolumeDesc& volume : scene.volumes)
+    cost.volume_bytes = saturating_add(cost.volume_bytes, estimate_grid_medium_bytes(volume));
   cost.total_bytes = saturating_add(saturating_add(cost.image_bytes, cost.instance_bytes), cost.mesh_bytes);
+  cost.total_bytes = saturating_add(cost.total_bytes, cost.volume_bytes);
   return cost;
 }
 
@@ -160,15 +164,17 @@ void check_render_cost(const RenderCost& cost, std::uint64_t budget_bytes, const
     parts += ", instances " + format_bytes(cost.instance_bytes) + " (" + std::to_string(cost.flattened_instances) +
              " after flattening nested instances)";
   if (cost.mesh_bytes > 0) parts += ", meshes " + format_bytes(cost.mesh_bytes);
+  if (cost.volume_bytes > 0) parts += ", volumes " + format_bytes(cost.volume_bytes);
   if (cost.environment_bytes > 0)
     parts += ", environment map " + format_bytes(cost.environment_bytes) + " (" +
              printable_text(cost.environment_file.string()) + ", " + std::to_string(cost.environment_width) + "x" +
              std::to_string(cost.environment_height) + " pixels)";
-  throw InputError(SourceLocation{scene_file.string()},
-                   "the render would need an estimated " + format_bytes(cost.total_bytes) + " (" + parts +
-                       "), more than the memory budget of " + format_bytes(budget_bytes) + " (" + budget_source +
-                       "); lower the resolution, the instancing or the environment map's size, or raise the budget "
-                       "with --max-memory MiB");
+  throw InputError(
+      SourceLocation{scene_file.string()},
+      "the render would need an estimated " + format_bytes(cost.total_bytes) + " (" + parts +
+          "), more than the memory budget of " + format_bytes(budget_bytes) + " (" + budget_source +
+          "); lower the resolution, the instancing, the environment map's or the volumes' size, or raise the budget "
+          "with --max-memory MiB");
 }
 
 }  // namespace rtpro

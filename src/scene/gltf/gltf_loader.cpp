@@ -37,7 +37,8 @@ constexpr const char* kGeometryExtensions[] = {"KHR_draco_mesh_compression", "EX
 // and their own textures are not (gltf_material.cpp warns about those).
 constexpr const char* kSupportedExtensions[] = {
     "KHR_lights_punctual",    "KHR_materials_emissive_strength", "KHR_texture_transform",   "KHR_materials_ior",
-    "KHR_materials_specular", "KHR_materials_transmission",      "KHR_materials_clearcoat", "KHR_materials_sheen"};
+    "KHR_materials_specular", "KHR_materials_transmission",      "KHR_materials_clearcoat", "KHR_materials_sheen",
+    "KHR_materials_volume"};
 
 // Characters of a tinygltf message line shown.
 constexpr std::size_t kMaxTinygltfLine = 300;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rtpro::gltf {
 
@@ -138,6 +139,20 @@ void read_extensions(const tinygltf::Material& m, PrincipledParams& p) {
   }
 }
 
+// KHR_materials_volume: a material of thickness > 0 bounds a volume whose absorption makes white
+// light attenuationColor after attenuationDistance, σa = −ln(attenuationColor) / attenuationDistance
+// (the extension's own definition: an AbsorbingMedium); an infinite distance (its default) absorbs
+// nothing. Thickness
+// 0 is a thin wall, no volume. The thickness itself only serves rasterisers, which have no inside.
+std::optional<Medium> volume_interior(const tinygltf::Material& m) {
+  const tinygltf::Value* volume = extension(m, "KHR_materials_volume");
+  if (!volume || !(number_of(*volume, "thicknessFactor", 0.0f) > 0.0f)) return std::nullopt;
+  const float distance = number_of(*volume, "attenuationDistance", std::numeric_limits<float>::infinity());
+  const Color color = color_of(*volume, "attenuationColor", Color(1.0f));
+  if (!(distance > 0.0f) || !std::isfinite(distance)) return HomogeneousMedium{};
+  return AbsorbingMedium{color, distance};
+}
+
 }  // namespace
 
 MaterialDesc read_material(const tinygltf::Model& model, int index, const std::filesystem::path& file,
@@ -174,6 +189,7 @@ MaterialDesc read_material(const tinygltf::Model& model, int index, const std::f
   principled.roughness = roughness;
   principled.metalness = metallic;
   read_extensions(m, principled);
+  desc.interior = volume_interior(m);
   desc.opacity = alpha;
   desc.color_texture = texture_path(model, pbr.baseColorTexture.index, file,
                                     path + ".pbrMetallicRoughness.baseColorTexture", warnings, &desc.texture_bytes);

@@ -6,6 +6,7 @@
 #include "model_scene.h"
 #include "yaml_document.h"
 #include "yaml_environment.h"
+#include "yaml_medium.h"
 #include "yaml_lights.h"
 #include "yaml_materials.h"
 #include "yaml_reader.h"
@@ -157,6 +158,7 @@ void read_path_controls(const MappingReader& render, PathControls& path) {
   depth("max_diffuse_depth", path.max_diffuse_depth);
   depth("max_glossy_depth", path.max_glossy_depth);
   depth("max_transmission_depth", path.max_transmission_depth);
+  depth("max_volume_depth", path.max_volume_depth);
   const auto non_negative = [&](const char* key, float& out) {
     if (const YamlNode* node = render.optional(key)) out = read_non_negative(*node, std::string("render.") + key);
   };
@@ -170,10 +172,11 @@ RenderSettings read_render(const YamlNode* node, LightUnits units) {
   RenderSettings settings;
   settings.light_units = units;
   if (absent(node)) return settings;
-  const MappingReader render(*node, "render",
-                             {"spp", "max_depth", "seed", "ambient", "background", "integrator", "sampling", "sampler",
-                              "light_sampler", "light_units", "max_diffuse_depth", "max_glossy_depth",
-                              "max_transmission_depth", "clamp_direct", "clamp_indirect", "filter_glossy", "fps"});
+  const MappingReader render(
+      *node, "render",
+      {"spp", "max_depth", "seed", "ambient", "background", "integrator", "sampling", "sampler", "light_sampler",
+       "light_units", "max_diffuse_depth", "max_glossy_depth", "max_transmission_depth", "max_volume_depth",
+       "clamp_direct", "clamp_indirect", "filter_glossy", "fps"});
   if (const YamlNode* spp = render.optional("spp")) settings.spp = read_spp(*spp);
   if (const YamlNode* integrator = render.optional("integrator"))
     settings.integrator = read_keyword<Integrator>(*integrator, "render.integrator",
@@ -257,8 +260,9 @@ SceneDescription read_scene(const YamlDocument& document, const std::filesystem:
   const YamlNode& root = document.root();
   check_scene_root(root);
   read_version(root);
-  const MappingReader scene(root, "the scene",
-                            {"rtpro", "camera", "render", "materials", "lights", "environment", "objects", "world"});
+  const MappingReader scene(
+      root, "the scene",
+      {"rtpro", "camera", "render", "materials", "lights", "environment", "medium", "objects", "world"});
 
   SceneDescription desc;
   desc.file = file;
@@ -268,6 +272,8 @@ SceneDescription read_scene(const YamlDocument& document, const std::filesystem:
   read_lights(scene.optional("lights"), desc.lights, desc.light_names);
   desc.light_sources.assign(desc.lights.size(), std::string());
   desc.environment = read_environment(scene.optional("environment"), file.parent_path());
+  if (const YamlNode* medium = scene.optional("medium"); medium && !medium->is_null())
+    desc.medium = read_medium(*medium, "medium");
   read_scene_objects(scene.optional("objects"), scene.optional("world"), file.parent_path(),
                      YamlMotion(document, desc.camera.shutter), desc);
   return desc;

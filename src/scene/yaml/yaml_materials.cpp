@@ -2,6 +2,7 @@
 
 #include "rtpro/core/special_file_kind.h"
 
+#include "yaml_medium.h"
 #include "yaml_reader.h"
 #include "rtpro/core/overloaded.h"
 
@@ -112,7 +113,7 @@ MaterialParams read_material_kind(const YamlNode& node, const std::string& name)
 // The keys a material may have: type, colour and emission, and its kind's own, so that a key of
 // another kind (a conductor's `reflectivity`) is an error, not silently ignored.
 std::vector<std::string_view> allowed_keys(const MaterialParams& kind) {
-  std::vector<std::string_view> keys{"type", "color", "emission", "emission_strength", "emission_sides"};
+  std::vector<std::string_view> keys{"type", "color", "emission", "emission_strength", "emission_sides", "interior"};
   const std::vector<std::string_view> own = std::visit([](const auto& params) { return material_keys(params); }, kind);
   keys.insert(keys.end(), own.begin(), own.end());
   return keys;
@@ -152,7 +153,8 @@ bool colour_is_reflectance(const MaterialParams& kind) {
   return std::visit(
       Overloaded{[](const PhongParams&) { return false; }, [](const DiffuseParams&) { return true; },
                  [](const ConductorParams&) { return true; }, [](const DielectricParams&) { return false; },
-                 [](const PrincipledParams&) { return true; }, [](const HairParams&) { return true; }},
+                 [](const PrincipledParams&) { return true; }, [](const HairParams&) { return true; },
+                 [](const InterfaceParams&) { return false; }},
       kind);
 }
 
@@ -177,6 +179,12 @@ MaterialDesc read_material(const std::string& name, const YamlNode& node, const 
   const MappingReader material(node, "material '" + name + "'", keys);
   read_emission(material, desc);
   std::visit([&](auto& params) { read_material_params(material, params); }, desc.params);
+  if (const YamlNode* interior = material.optional("interior")) {
+    if (material.optional("transmittance") || material.optional("transmittance_distance"))
+      fail_at(*interior, material.field("interior") +
+                             " replaces the glass's transmittance: give its absorption as the interior's sigma_a");
+    desc.interior = read_medium(*interior, material.field("interior"));
+  }
   if (const YamlNode* color = material.optional("color")) {
     if (color->is_mapping() && color->find("texture")) {
       read_image_texture(*color, material.field("color"), folder, desc);

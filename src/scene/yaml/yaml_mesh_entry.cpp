@@ -44,14 +44,15 @@ void read_subdivision_keys(const MappingReader& mesh, const ShapeEntryReader& re
 
 // An OBJ or PLY file is one mesh; a glTF file is a scene of its own, placed as a whole.
 void read_shape_entry(const YamlNode& node, ShapeEntryReader& reader, std::vector<MeshDesc>& meshes) {
-  const MappingReader mesh(
-      node, "mesh",
-      {"type", "file", "material", "normals", "subdivision", "displacement", kLightLinkingKey, kShadowLinkingKey});
+  const MappingReader mesh(node, "mesh",
+                           {"type", "file", "material", "normals", "subdivision", "displacement", "interior",
+                            kLightLinkingKey, kShadowLinkingKey});
   MeshDesc desc;
   desc.file = reader.input_file(mesh.required("file"), mesh.field("file"), {".obj", ".ply", ".gltf", ".glb"},
                                 ".obj or .ply, or a .gltf or .glb scene", "mesh");
   if (const YamlNode* material = mesh.optional("material"))
     desc.material = reader.material_index(*material, mesh.field("material"));
+  desc.material = reader.with_interior(mesh, desc.material);
   if (const YamlNode* normals = mesh.optional("normals"))
     desc.normals = read_normals_mode(*normals, mesh.field("normals"));
   desc.where = node.at.location();

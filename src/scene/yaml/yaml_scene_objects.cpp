@@ -7,6 +7,7 @@
 #include "yaml_reader.h"
 #include "yaml_shape_entry.h"
 #include "yaml_transform.h"
+#include "yaml_volume_entry.h"
 
 #include <algorithm>
 #include <string>
@@ -101,13 +102,14 @@ std::vector<std::string> entry_types() {
   ObjectDesc kinds;
   visit_entry_kinds(kinds, [&](const auto& shapes) { types.push_back(entry_type_name(shapes)); });
   types.push_back("instance");
+  types.push_back("volume");
   return types;
 }
 
 class ObjectsReader {
  public:
   ObjectsReader(const std::vector<MaterialDesc>& materials, std::filesystem::path folder, SceneDescription& scene)
-      : shapes_(materials, std::move(folder), scene) {}
+      : shapes_(materials, folder, scene), folder_(std::move(folder)), volumes_(scene.volumes) {}
 
   void set_motion(const YamlMotion& motion) { shapes_.set_motion(motion); }
 
@@ -158,6 +160,12 @@ class ObjectsReader {
         object.instances.push_back(read_instance(*entry, links));
         continue;
       }
+      if (type == "volume") {
+        // A volume is a medium, not a shape: instancing one would need a medium per placement.
+        if (!in_world) fail_at(*entry, what + ": a volume entry belongs in world:, not in an object");
+        volumes_.push_back(read_volume_entry(*entry, folder_));
+        continue;
+      }
       visit_entry_kinds(object, [&](auto& shapes) {
         if (type == entry_type_name(shapes)) read_shape_entry(*entry, shapes_, shapes);
       });
@@ -189,6 +197,8 @@ class ObjectsReader {
   }
 
   ShapeEntryReader shapes_;
+  std::filesystem::path folder_;
+  std::vector<VolumeDesc>& volumes_;
   NameTable objects_;
   std::vector<std::vector<InstanceLink>> links_;  // per object, the world last
   std::size_t entries_ = 0;

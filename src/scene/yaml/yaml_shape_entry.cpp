@@ -2,6 +2,7 @@
 
 #include "rtpro/core/closest_match.h"
 #include "yaml_light_linking.h"
+#include "yaml_medium.h"
 
 #include <algorithm>
 #include <cctype>
@@ -57,6 +58,20 @@ std::uint32_t ShapeEntryReader::read_linking(const MappingReader& entry) {
   }
   scene_.linkings.push_back(std::move(*linking));
   return static_cast<std::uint32_t>(scene_.linkings.size() - 1);
+}
+
+std::uint32_t ShapeEntryReader::with_interior(const MappingReader& entry, std::uint32_t material) {
+  const YamlNode* interior = entry.optional("interior");
+  if (!interior) return material;
+  if (material == kNoMaterial)
+    fail_at(*interior, entry.field("interior") +
+                           " needs the entry's material: (the file's own materials would each need it); or give the "
+                           "interior on the material");
+  MaterialDesc inside = scene_.materials[material];
+  inside.interior = read_medium(*interior, entry.field("interior"));
+  inside.name += "+interior";
+  scene_.materials.push_back(std::move(inside));
+  return static_cast<std::uint32_t>(scene_.materials.size() - 1);
 }
 
 }  // namespace rtpro

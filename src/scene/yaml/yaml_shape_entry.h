@@ -43,6 +43,10 @@ class ShapeEntryReader {
   // The index of the entry's light linking in the scene's list, or kNoLinking. Only world entries
   // are linked: an object's entries are lit as the instances placing it are.
   std::uint32_t read_linking(const MappingReader& entry);
+  // `material` with the entry's `interior:` when it has one: a copy of the material (named
+  // "MATERIAL+interior") whose inside is that medium, so one object's inside differs from
+  // another's of the same material.
+  std::uint32_t with_interior(const MappingReader& entry, std::uint32_t material);
 
  private:
   std::filesystem::path folder_;

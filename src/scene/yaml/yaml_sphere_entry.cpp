@@ -9,7 +9,7 @@ namespace rtpro {
 
 void read_shape_entry(const YamlNode& node, ShapeEntryReader& reader, std::vector<SphereDesc>& spheres) {
   const MappingReader sphere(node, "sphere",
-                             {"type", "center", "radius", "material", kLightLinkingKey, kShadowLinkingKey});
+                             {"type", "center", "radius", "material", "interior", kLightLinkingKey, kShadowLinkingKey});
   SphereDesc desc;
   if (const YamlNode* center = sphere.optional("center")) {
     const auto read_center = [&](const YamlNode& at) { return read_position(at, sphere.field("center")); };
@@ -23,6 +23,7 @@ void read_shape_entry(const YamlNode& node, ShapeEntryReader& reader, std::vecto
   }
   if (const YamlNode* material = sphere.optional("material"))
     desc.material = reader.material_index(*material, sphere.field("material"));
+  desc.material = reader.with_interior(sphere, desc.material);
   desc.linking = reader.read_linking(sphere);
   spheres.push_back(desc);
 }
