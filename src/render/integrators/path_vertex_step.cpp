@@ -22,6 +22,7 @@ void count_bounce(BsdfLobe lobe, Path& next) {
     case BsdfLobe::kDiffuse: ++next.diffuse_bounces; return;
     case BsdfLobe::kGlossy: ++next.glossy_bounces; return;
     case BsdfLobe::kTransmission: ++next.transmission_bounces; return;
+    case BsdfLobe::kSubsurface: return;  // the walk's exit counts its own bounce
   }
 }
 
@@ -112,6 +113,7 @@ PathVertexStep::PathVertexStep(const RenderScene& scene, const Backend& backend,
   // throughput (q the probability of ending, survivors weighted by 1/(1 − q)).
   const std::optional<BsdfSample> bs = sample_bsdf(surface.bsdf, wo, u, cosine_directions_);
   if (!bs || !(bs->pdf > 0.0f) || carries_no_light(bs->f)) return;
+  if (bs->lobe == BsdfLobe::kSubsurface) return walk_under_surface(vertex, path, sp, *bs, u, beta, media, aov_pending);
   Color next_beta = beta * bs->f * (std::fabs(bs->wi.z) / bs->pdf);
   if (!survives_roulette(path.bounce, u.roulette, next_beta)) return;
   if (!is_finite(next_beta) || carries_no_light(next_beta)) return;
