@@ -14,7 +14,7 @@ rtpro_add_wing(render sampling SHARES alias_table.h camera_samplers.h sample_dim
 rtpro_add_wing(render surface
   SHARES normal_map.h ray_offset.h shading_frame.h surface.h surface_batch.h texture.h)
 rtpro_add_wing(render bsdf
-  SHARES beer_lambert.h bsdf.h bsdf_from.h bsdf_sample.h cosine_lanes.h dielectric.h microfacet.h sheen.h
+  SHARES bsdf.h bsdf_from.h bsdf_sample.h cosine_lanes.h dielectric.h hair_lobes.h microfacet.h sheen.h
   SHARES_MATCHING *_bsdf.h
   USES surface
   PRIVATE_DEPENDS TBB::tbb)
@@ -25,7 +25,7 @@ rtpro_add_wing(render lights
   USES sampling surface
   PRIVATE_DEPENDS TBB::tbb)
 rtpro_add_wing(render media
-  SHARES hg_phase.h medium.h medium_interface.h medium_stack.h medium_tracking.h
+  SHARES beer_lambert.h hg_phase.h medium.h medium_interface.h medium_stack.h medium_tracking.h
   SHARES_MATCHING *_medium.h
   USES surface)
 rtpro_add_wing(render film PRIVATE_DEPENDS TBB::tbb)

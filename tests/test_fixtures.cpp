@@ -9,8 +9,25 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <string>
 
 namespace rtpro::test {
+
+std::string white_furnace_scene(const std::string& material, int size, int spp) {
+  const std::string resolution = std::to_string(size);
+  return R"(rtpro: 1
+camera: {position: [0, 0, -4], look_at: [0, 0, 0], fov: 20, resolution: [)" +
+         resolution + ", " + resolution + R"(]}
+render: {integrator: path, spp: )" +
+         std::to_string(spp) + R"(, max_depth: 64, background: [1, 1, 1]}
+materials:
+  glass: )" +
+         material +
+         R"(
+world:
+  - {type: sphere, center: [0, 0, 0], radius: 1, material: glass}
+)";
+}
 
 Image uniform_image(int width, int height, float value) {
   Image image(width, height);

@@ -15,6 +15,11 @@ namespace rtpro::test {
 // The sum of every value of every pixel of `image`: positive for a render that is not black.
 double image_sum(const Image& image);
 
+// The scene text of a white furnace: a sphere of radius 1 of `material` (a YAML flow map) filling
+// a `size`×`size` image under a uniform background of radiance 1, path traced at `spp` with
+// max_depth 64. A material that neither creates nor loses light vanishes in it.
+std::string white_furnace_scene(const std::string& material, int size, int spp);
+
 // An RGB image whose every value is `value`.
 Image uniform_image(int width, int height, float value);
 

@@ -30,8 +30,8 @@ import numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from cycles_materials import bsdf_node, empty_node_tree  # noqa: E402
+from cycles_scene import grid_quads, look_at_camera, mesh_object, uv_sphere  # noqa: E402
 from cycles_settings import configure_cycles, render_timed_exr  # noqa: E402
-from mathutils import Vector
 
 args = sys.argv[sys.argv.index("--") + 1:]
 hdri, out_file = args[0], args[1]
@@ -41,56 +41,11 @@ bpy.ops.wm.read_factory_settings(use_empty=True)
 scene = bpy.context.scene
 
 
-def blender_axes(p):
-    """rtpro's +Y-up (x, y, z) in Blender's +Z-up axes."""
-    return Vector((p[0], -p[2], p[1]))
-
-
 def material(name, kind, color):
     m = bpy.data.materials.new(name)
     nodes, links, output = empty_node_tree(m)
     links.new(bsdf_node(nodes, kind, color, roughness=0.3).outputs["BSDF"], output.inputs["Surface"])
     return m
-
-
-def mesh_object(name, points, quads, center, mat):
-    """A mesh of quads (degenerate ones at poles are fine) with the sphere's normals about `center`."""
-    mesh = bpy.data.meshes.new(name)
-    mesh.vertices.add(len(points))
-    mesh.vertices.foreach_set("co", points.astype(numpy.float32).ravel())
-    mesh.loops.add(quads.size)
-    mesh.loops.foreach_set("vertex_index", quads.astype(numpy.int32).ravel())
-    mesh.polygons.add(len(quads))
-    mesh.polygons.foreach_set("loop_start", numpy.arange(0, quads.size, 4, dtype=numpy.int32))
-    mesh.polygons.foreach_set("loop_total", numpy.full(len(quads), 4, dtype=numpy.int32))
-    mesh.polygons.foreach_set("use_smooth", numpy.ones(len(quads), dtype=bool))
-    mesh.update(calc_edges=True)
-    mesh.validate()
-    normals = points - numpy.asarray(center)
-    normals /= numpy.linalg.norm(normals, axis=1)[:, None]
-    mesh.use_auto_smooth = True
-    mesh.normals_split_custom_set_from_vertices([tuple(n) for n in normals])
-    mesh.materials.append(mat)
-    obj = bpy.data.objects.new(name, mesh)
-    scene.collection.objects.link(obj)
-    return obj
-
-
-def grid_quads(rows, columns):
-    """Quads of a (rows + 1) x (columns + 1) grid of vertices, row by row, wound so that their
-    normal is (next row - this row) x (next column - this column): outwards for the spheres below."""
-    r, c = numpy.meshgrid(numpy.arange(rows), numpy.arange(columns), indexing="ij")
-    first = (r * (columns + 1) + c).ravel()
-    return numpy.stack([first, first + columns + 1, first + columns + 2, first + 1], axis=1)
-
-
-def uv_sphere(name, center, radius, mat, segments=256, rings=128):
-    c = blender_axes(center)
-    theta = numpy.linspace(0.0, numpy.pi, rings + 1)[:, None]
-    phi = numpy.linspace(0.0, 2.0 * numpy.pi, segments + 1)[None, :]
-    points = numpy.stack([numpy.sin(theta) * numpy.cos(phi), numpy.sin(theta) * numpy.sin(phi),
-                          numpy.cos(theta) * numpy.ones_like(phi)], axis=-1).reshape(-1, 3) * radius + numpy.asarray(c)
-    return mesh_object(name, points, grid_quads(rings, segments), c, mat)
 
 
 def ground_cap(name, radius, mat, half_width=190.0, cells=600):
@@ -99,21 +54,14 @@ def ground_cap(name, radius, mat, half_width=190.0, cells=600):
     x, y = numpy.meshgrid(u, u, indexing="ij")
     z = numpy.sqrt(radius * radius - x * x - y * y) - radius
     points = numpy.stack([x, y, z], axis=-1).reshape(-1, 3)
-    return mesh_object(name, points, grid_quads(cells, cells), (0.0, 0.0, -radius), mat)
+    return mesh_object(scene, name, points, grid_quads(cells, cells), (0.0, 0.0, -radius), mat)
 
 
 ground_cap("ground", 1000.0, material("ground", "lambert", (0.4, 0.4, 0.4)))
-uv_sphere("clay", (-0.6, 0.5, 0), 0.5, material("clay", "lambert", (0.8, 0.6, 0.5)))
-uv_sphere("metal", (0.6, 0.5, 0), 0.5, material("metal", "metal", (1.0, 1.0, 1.0)))
+uv_sphere(scene, "clay", (-0.6, 0.5, 0), 0.5, material("clay", "lambert", (0.8, 0.6, 0.5)))
+uv_sphere(scene, "metal", (0.6, 0.5, 0), 0.5, material("metal", "metal", (1.0, 1.0, 1.0)))
 
-camera_data = bpy.data.cameras.new("camera")
-camera_data.sensor_fit = "VERTICAL"
-camera_data.angle_y = math.radians(35.0)
-camera = bpy.data.objects.new("camera", camera_data)
-scene.collection.objects.link(camera)
-camera.location = blender_axes((0, 0.7, -4))
-camera.rotation_euler = (blender_axes((0, 0.35, 0)) - camera.location).to_track_quat("-Z", "Y").to_euler()
-scene.camera = camera
+look_at_camera(scene, (0, 0.7, -4), (0, 0.35, 0), 35.0)
 
 world = bpy.data.worlds.new("hdri")
 scene.world = world

@@ -1,8 +1,10 @@
 #include "load_scene.h"
 
 #include "pixel_region_option.h"
+#include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
 #include "rtpro/scene/scene_lighting.h"
+#include "rtpro/image/image_io.h"
 #include "rtpro/image/image_size.h"
 #include "rtpro/render/environment_light.h"
 
@@ -25,11 +27,33 @@ void add_environment_image(RenderCost& cost, const SceneDescription& scene) {
                        EnvironmentLight::peak_bytes(size.width, size.height, size.channels));
 }
 
+// Subdivision surfaces are made while the scene is built: they may take what the estimate left of
+// the budget, and read their displacement textures through the image layer.
+SceneBuildOptions build_options(const MemoryBudget& memory, const RenderCost& cost) {
+  SceneBuildOptions options;
+  options.geometry_budget =
+      std::max<std::uint64_t>(memory.bytes > cost.total_bytes ? memory.bytes - cost.total_bytes : 0, 1);
+  options.budget_source = memory.source;
+  options.read_scalar_image = [](const std::filesystem::path& file, std::uint64_t max_bytes) {
+    const Image image = read_image(file, max_bytes);
+    ScalarImage scalar{image.width, image.height, {}};
+    if (image.width <= 0 || image.height <= 0 || image.channel_count() == 0)
+      throw InputError(SourceLocation{file.string()}, "the image has no pixels");
+    scalar.values.reserve(std::size_t(image.width) * std::size_t(image.height));
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) scalar.values.push_back(image.at(x, y, 0));
+    return scalar;
+  };
+  return options;
+}
+
 }  // namespace
 
-LoadedScene load_scene(const SceneLoad& load, Log* log) {
+LoadedScene load_scene(const SceneLoad& load, Log* log,
+                       const std::function<void(const SceneDescription&)>& check_description) {
   LoadedScene loaded;
   loaded.description = parse_with_overrides(load.file, load.overrides);
+  if (check_description) check_description(loaded.description);
   const CameraDesc& camera = loaded.description.camera;
   check_region_fits(load.region, load.region_text, camera.width, camera.height);
   // Refused before anything large is allocated: image buffers, flattened instances, meshes.
@@ -39,7 +63,7 @@ LoadedScene load_scene(const SceneLoad& load, Log* log) {
   if (log)
     log->verbose("estimated memory: " + format_bytes(loaded.cost.total_bytes) + " of a budget of " +
                  format_bytes(load.memory.bytes));
-  loaded.scene = build_render_scene(loaded.description, &loaded.report);
+  loaded.scene = build_render_scene(loaded.description, &loaded.report, build_options(load.memory, loaded.cost));
   release_loaded_models(loaded.description);
   if (log) {
     for (const std::string& note : loaded.description.notes) log->info(note);

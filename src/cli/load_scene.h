@@ -11,6 +11,7 @@
 #include "rtpro/scene/render_cost.h"
 #include "rtpro/scene/render_scene.h"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,9 @@ struct LoadedScene {
 // region outside the image, or an estimate over the budget. With a log, says the estimate at
 // verbose level before the build, and after it what rtpro chose for a model file (its notes) and
 // a warning when nothing lights the scene.
-LoadedScene load_scene(const SceneLoad& load, Log* log = nullptr);
+// `check_description`, when given, sees the parsed description before anything large is loaded
+// (meshes, textures, the environment): a refusal it throws costs no loading.
+LoadedScene load_scene(const SceneLoad& load, Log* log = nullptr,
+                       const std::function<void(const SceneDescription&)>& check_description = {});
 
 }  // namespace rtpro::cli

@@ -91,6 +91,10 @@ void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
                  "(stopped, hung or unreachable), as if it had died; the journal keeps the finished tiles "
                  "(0: wait for ever)")
       ->capture_default_str();
+  cmd.add_option("--start-timeout", o.start_timeout,
+                 "Under mpirun: end the job when a rank has not loaded the scene and reached the start of the job "
+                 "this many seconds after rank 0 did, or rank 0 this long after it (0: wait for ever)")
+      ->capture_default_str();
   cmd.add_option("--noise-threshold", o.noise_threshold,
                  "Adaptive sampling: a pixel stops when its error (--noise-metric) is below this, e.g. 0.01 "
                  "(cycles) or 0.002 (relmse); --spp is then the most a pixel gets");

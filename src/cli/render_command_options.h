@@ -44,6 +44,7 @@ struct RenderCommandOptions {
   bool no_journal = false;
   double time_limit = 0.0;       // seconds; 0: none
   double rank_timeout = 60.0;    // seconds a rank of an MPI job may stay silent; 0: for ever
+  double start_timeout = 600.0;  // seconds the ranks wait for each other to load the scene; 0: for ever
   double noise_threshold = 0.0;  // 0: no adaptive sampling
   int min_samples = 0;           // 0: automatic (adaptive_sampling.h)
   std::string noise_metric = "cycles";

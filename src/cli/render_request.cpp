@@ -62,6 +62,8 @@ void check_stopping_options(const RenderCommandOptions& o, bool distributed) {
     throw InputError("--time-limit must be a number of seconds >= 0 (0: no limit)");
   if (!(o.rank_timeout == 0.0 || (o.rank_timeout >= 1.0 && o.rank_timeout <= 1e6)))
     throw InputError("--rank-timeout must be 0 (wait for ever) or between 1 and 1000000 seconds");
+  if (!(o.start_timeout == 0.0 || (o.start_timeout >= 1.0 && o.start_timeout <= 1e6)))
+    throw InputError("--start-timeout must be 0 (wait for ever) or between 1 and 1000000 seconds");
   // Below 1e-6 no float sum of samples resolves the noise, and 1/threshold stops fitting the
   // sample counts it decides.
   if (!(o.noise_threshold == 0.0 || (o.noise_threshold >= 1e-6 && o.noise_threshold < 1e6)))
@@ -168,6 +170,7 @@ RenderRequest parse_render_request(const RenderCommandOptions& o, const Communic
       .journal = journal,
       .resume = o.resume,
       .rank_timeout = std::chrono::milliseconds(static_cast<std::int64_t>(o.rank_timeout * 1000.0)),
+      .start_timeout = std::chrono::milliseconds(static_cast<std::int64_t>(o.start_timeout * 1000.0)),
       .print_stats = o.stats,
       .stats_json = o.stats_json,
   };

@@ -46,6 +46,7 @@ struct RenderRequest {
   std::filesystem::path journal;  // the leader's resume journal beside the output; empty: none
   bool resume = false;
   std::chrono::milliseconds rank_timeout{0};
+  std::chrono::milliseconds start_timeout{0};  // the handshake's, after loading (agree_on_job)
   bool print_stats = false;
   std::string stats_json;
 };

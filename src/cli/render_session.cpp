@@ -94,7 +94,7 @@ void RenderSession::open_journal() {
   settings.channels = FilmLayout(options_.aovs).channels();
   settings.adaptive = options_.adaptive;
   const JobIdentity identity = render_job_identity(loaded_.description, loaded_.report, loaded_.scene, settings);
-  if (job_) agree_on_job(*job_, identity);
+  if (job_) agree_on_job(*job_, identity, request_.start_timeout);
   if (!journaled) return;
   journal_ =
       open_render_journal(request_.journal, identity, tiles, render_sums(options_).floats(), request_.resume, log_);

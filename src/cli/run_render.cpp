@@ -25,7 +25,10 @@ int run_render(const RenderCommandOptions& o, Communicator* job) {
   // Must exist before any TBB or Embree work so the cap really holds.
   const tbb::global_control thread_cap(tbb::global_control::max_allowed_parallelism,
                                        static_cast<std::size_t>(request.threads));
-  const LoadedScene loaded = load_scene(request.scene, &log);
+  // The files the scene names are spared before loading it, the files those read once it is loaded.
+  const LoadedScene loaded = load_scene(request.scene, &log, [&](const SceneDescription& description) {
+    if (request.leader) check_outputs_spare_inputs(request, named_inputs(description));
+  });
   if (request.leader)
     check_outputs_spare_inputs(request, scene_inputs(loaded.description, loaded.report, loaded.scene));
   times.load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - times.start).count();

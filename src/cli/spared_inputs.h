@@ -1,8 +1,9 @@
 #pragma once
 // No output of `rtpro render` may be a file the scene read: writing the image, the statistics or
 // the resume journal over an included YAML, a mesh, an MTL library, a glTF buffer, a texture or
-// the environment map would destroy the input with exit 0. Checked once the scene is loaded (only
-// then is every file it read known) and before anything is rendered or written.
+// the environment map would destroy the input with exit 0. Checked once the scene is parsed against
+// the files it names (before loading them) and again once it is loaded (only then is every file it
+// read known), and always before anything is rendered or written.
 #include "render_request.h"
 #include "rtpro/scene/scene_inputs.h"
 

@@ -155,20 +155,39 @@ std::size_t tiles_ahead(const RankClock& clock, int threads) {
   return per_thread * static_cast<std::size_t>(std::max(1, threads));
 }
 
+// The next message of the handshake, or an error saying who has not been heard from.
+Message handshake_message(Communicator& communicator, std::chrono::milliseconds start_timeout,
+                          std::chrono::steady_clock::time_point deadline, const std::vector<bool>& heard) {
+  if (start_timeout.count() <= 0) return wait_for_message(communicator);
+  if (std::optional<Message> message = wait_for_message_until(communicator, deadline)) return std::move(*message);
+  const std::string waited = std::to_string(std::chrono::duration_cast<std::chrono::seconds>(start_timeout).count());
+  if (communicator.rank() != 0)
+    throw RuntimeError("distributed render: rank 0 did not answer the handshake within " + waited +
+                       " s (--start-timeout): stopped, unreachable or still loading the scene");
+  std::string silent;
+  for (int r = 1; r < communicator.size(); ++r)
+    if (!heard[std::size_t(r)]) silent += (silent.empty() ? "" : ", ") + std::to_string(r);
+  throw RuntimeError("distributed render: rank " + silent + " did not reach the start of the job within " + waited +
+                     " s of rank 0 (--start-timeout): stopped, unreachable or still loading the scene");
+}
+
 }  // namespace
 
-void agree_on_job(Communicator& communicator, const JobIdentity& identity) {
+void agree_on_job(Communicator& communicator, const JobIdentity& identity, std::chrono::milliseconds start_timeout) {
   const std::string text = identity.text();
+  const auto deadline = std::chrono::steady_clock::now() + start_timeout;
+  std::vector<bool> heard(std::size_t(communicator.size()), false);
   if (communicator.rank() != 0) {
     communicator.send(0, kHello, std::as_bytes(std::span(text)));
-    const Message verdict = wait_for_message(communicator);
+    const Message verdict = handshake_message(communicator, start_timeout, deadline, heard);
     if (verdict.tag != kVerdict) throw RuntimeError("distributed render: rank 0 did not answer the handshake");
     return;
   }
   for (int pending = communicator.size() - 1; pending > 0; --pending) {
-    const Message hello = wait_for_message(communicator);
+    const Message hello = handshake_message(communicator, start_timeout, deadline, heard);
     if (hello.tag != kHello)
       throw RuntimeError("distributed render: rank " + std::to_string(hello.source) + " skipped the handshake");
+    if (hello.source > 0 && hello.source < communicator.size()) heard[std::size_t(hello.source)] = true;
     const std::string_view theirs(reinterpret_cast<const char*>(hello.bytes.data()), hello.bytes.size());
     const std::string rank_name = "rank " + std::to_string(hello.source);
     const std::vector<std::string> differences = identity.differences(JobIdentity::parse(theirs, rank_name), rank_name);

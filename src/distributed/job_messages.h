@@ -35,4 +35,15 @@ inline Message wait_for_message(Communicator& communicator) {
   }
 }
 
+// The next message if one comes before `deadline`.
+inline std::optional<Message> wait_for_message_until(Communicator& communicator,
+                                                     std::chrono::steady_clock::time_point deadline) {
+  constexpr auto kPollPause = std::chrono::microseconds(200);
+  while (true) {
+    if (std::optional<Message> message = communicator.poll()) return message;
+    if (std::chrono::steady_clock::now() >= deadline) return std::nullopt;
+    std::this_thread::sleep_for(kPollPause);
+  }
+}
+
 }  // namespace rtpro

@@ -96,6 +96,24 @@ TEST(OutputsSpareInputs, AnOutputNamingAnyFileTheSceneReadsIsRefusedAndTheInputK
       << out;
 }
 
+// A file the scene names is spared before anything is loaded: the refusal of an output naming
+// the texture comes before the broken mesh beside it is read (a large scene is not loaded only to
+// be refused).
+TEST(OutputsSpareInputs, AnOutputNamingAFileTheSceneNamesIsRefusedBeforeLoading) {
+  const auto scene = write_scene_with_inputs();
+  const auto dir = scene.parent_path();
+  write_file("tri.obj", "v 0 0 0\nf 1 2 7\n");
+  std::string out;
+  EXPECT_EQ(run_command("cd " + dir.string() + " && " + rtpro_command("render scene.yaml -o tex.png -q"), &out), 2)
+      << out;
+  EXPECT_NE(out.find("-o tex.png is the same file as the scene's texture tex.png"), std::string::npos) << out;
+  EXPECT_EQ(out.find("tri.obj"), std::string::npos) << out;
+  // Without the clash, the broken mesh is what is refused.
+  EXPECT_EQ(run_command("cd " + dir.string() + " && " + rtpro_command("render scene.yaml -o out.exr -q"), &out), 2)
+      << out;
+  EXPECT_NE(out.find("tri.obj"), std::string::npos) << out;
+}
+
 TEST(OutputsSpareInputs, DenoisingAnImageOntoItselfIsRefused) {
   const auto scene = write_scene_with_inputs();
   const auto dir = scene.parent_path();

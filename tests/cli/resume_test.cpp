@@ -239,6 +239,9 @@ TEST(Resume, SecondRenderOfTheSameOutputIsRefusedWhileTheFirstRuns) {
   int status = 0;
   while (waitpid(first, &status, WNOHANG) == 0 && recorded_tiles(journal) < 2)
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  // Stopped, the first render holds its journal and lock however long the others take to start
+  // (it finished first when the machine was busy); a killed render is what --resume continues.
+  kill(first, SIGSTOP);
   ASSERT_EQ(waitpid(first, &status, WNOHANG), 0) << "the first render ended before the second started";
   expect_rtpro_answer(render_of(scene, out), 2, "another render of the same output owns this resume journal");
   run_rtpro(render_of(scene, out, "--resume"), 2);

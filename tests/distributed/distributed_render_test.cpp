@@ -166,6 +166,41 @@ TEST(DistributedRender, HandshakeNamesTheRankAndWhatDiffers) {
   same.join();
 }
 
+// A rank that never reaches the start of the job (stopped, hung, or loading for ever) held every
+// other rank in the handshake for ever: rank 0 now names it once the rank timeout has passed, and
+// a rank waiting on a silent rank 0 says so.
+TEST(DistributedRender, HandshakeNamesASilentRankAfterTheRankTimeout) {
+  Mailboxes mail(3);
+  JobIdentity ours;
+  ours.set("rtpro", "1");
+  std::thread talking([&] {
+    ThreadCommunicator c(mail, 1);
+    const std::string text = ours.text();
+    c.send(0, 1, std::as_bytes(std::span(text)));  // its hello; rank 2 never sends one
+  });
+  talking.join();
+  ThreadCommunicator leader(mail, 0);
+  const auto started = std::chrono::steady_clock::now();
+  try {
+    agree_on_job(leader, ours, std::chrono::milliseconds(200));
+    FAIL() << "the handshake ended without rank 2";
+  } catch (const RuntimeError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("rank 2 did not reach the start of the job"), std::string::npos) << message;
+    EXPECT_EQ(message.find("rank 1"), std::string::npos) << message;
+  }
+  EXPECT_GE(std::chrono::steady_clock::now() - started, std::chrono::milliseconds(200));
+
+  Mailboxes alone(2);
+  ThreadCommunicator follower(alone, 1);
+  try {
+    agree_on_job(follower, ours, std::chrono::milliseconds(100));
+    FAIL() << "a follower accepted a job rank 0 never answered";
+  } catch (const RuntimeError& e) {
+    EXPECT_NE(std::string(e.what()).find("rank 0 did not answer the handshake within"), std::string::npos) << e.what();
+  }
+}
+
 // A rank whose every message reaches the others `delay` late: a slow link, or a node under load.
 class SlowCommunicator final : public Communicator {
  public:

@@ -6,6 +6,7 @@
 #include "rtpro/render/renderer.h"
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
+#include "test_fixtures.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -173,6 +174,22 @@ TEST_P(PathIntegrator, FurnaceHidesRoughGlassAtEveryRoughness) {
       std::cout << "rough glass in the furnace, " << material << ": mean " << s.mean << ", max " << s.max << "\n";
       EXPECT_NEAR(s.mean, 1.0, 0.01) << material;
     }
+}
+
+// Under a uniform background (no light to sample) every path through the glass sphere brings
+// back exactly 1, its refractions' 1/η² and η² cancelling, unless Russian roulette reweights it:
+// roulette must read the throughput without refraction's radiance scale, and leave paths whose
+// throughput is still 1 alone. On the radiance inside (1/2.25), with a 5% floor, pixels reached
+// 1.32 here.
+TEST_P(PathIntegrator, RussianRouletteLeavesFurnacePathsThroughGlassAtOne) {
+  for (const char* material :
+       {"{type: dielectric, ior: 1.5, roughness: 0.3}",
+        "{type: principled, color: [1, 1, 1], transmission_weight: 1, ior: 1.5, roughness: 0.7}"}) {
+    const RenderScene scene = scene_from(test::white_furnace_scene(material, 12, 32));
+    const ImageStats s = stats_of(render(scene, GetParam()));
+    EXPECT_NEAR(s.mean, 1.0, 0.005) << material;
+    EXPECT_LT(s.max, 1.001) << material;
+  }
 }
 
 TEST_P(PathIntegrator, FurnaceHidesAPerfectRoughConductorWithEnergyCompensation) {

@@ -67,9 +67,9 @@ TEST(GltfExtensions, ARequiredExtensionRtproLacksRefusesTheFileByName) {
 
 TEST(GltfExtensions, AnUsedExtensionRtproLacksIsAWarningByName) {
   GltfFile gltf = plain_triangle();
-  gltf.json["extensionsUsed"] = {"KHR_lights_punctual", "KHR_materials_volume"};
+  gltf.json["extensionsUsed"] = {"KHR_lights_punctual", "KHR_materials_iridescence"};
   const GltfAsset asset = load_gltf_file(gltf.write("used"));
-  EXPECT_TRUE(warned(asset, "extensionsUsed[1]: 'KHR_materials_volume' is not supported"));
+  EXPECT_TRUE(warned(asset, "extensionsUsed[1]: 'KHR_materials_iridescence' is not supported"));
   EXPECT_FALSE(warned(asset, "KHR_lights_punctual"));
 }
 

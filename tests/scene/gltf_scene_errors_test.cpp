@@ -216,6 +216,27 @@ TEST(GltfSceneErrors, ALightIntensityOutOfRangeIsRefusedAtItsPath) {
   EXPECT_NO_THROW(parse_scene_file(gltf.write("brightest")));
 }
 
+// A colour channel below 0 was clamped to 0 without a word, changing the light's hue; a colour
+// that is not three finite numbers became white. Both are refused at the colour's path.
+TEST(GltfSceneErrors, ALightColourOutOfRangeIsRefusedAtItsPath) {
+  for (const auto& [name, color] :
+       {std::pair{"negative", nlohmann::json{1.0, -0.5, 1.0}}, std::pair{"two_channels", nlohmann::json{1.0, 0.5}}}) {
+    GltfFile gltf = triangle_model();
+    add_doubled_light(gltf, {{"type", "point"}, {"intensity", 5}, {"color", color}}, {{"translation", {0, 0, 1}}});
+    const std::string message = scene_error(gltf.write(name));
+    EXPECT_NE(
+        message.find("extensions.KHR_lights_punctual.lights[0].color: must be three finite numbers from 0 to 1e9"),
+        std::string::npos)
+        << message;
+  }
+  GltfFile gltf = triangle_model();
+  add_doubled_light(gltf, {{"type", "point"}, {"intensity", 5}, {"color", {0.0, 0.25, 1.0}}},
+                    {{"translation", {0, 0, 1}}});
+  const SceneDescription lit = parse_scene_file(gltf.write("blue"));
+  ASSERT_EQ(lit.lights.size(), 1u);
+  EXPECT_EQ(std::get<PointLightDesc>(lit.lights[0]).color.y, 0.25f);
+}
+
 // An override's errors stay at the override, as in a scene file.
 TEST(GltfSceneErrors, AnOverridesErrorNamesTheOverride) {
   GltfFile gltf = triangle_model();

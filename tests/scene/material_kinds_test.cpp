@@ -124,9 +124,9 @@ TEST(MaterialKinds, AKeyOfAnotherKindIsAnErrorAtItsPosition) {
 }
 
 TEST(MaterialKinds, BadValuesAreErrors) {
-  EXPECT_NE(
-      error_of("materials:\n  m: {type: metal}\n").find("must be phong, diffuse, conductor, dielectric or principled"),
-      std::string::npos);
+  EXPECT_NE(error_of("materials:\n  m: {type: metal}\n")
+                .find("must be phong, diffuse, conductor, dielectric, principled, hair or interface"),
+            std::string::npos);
   EXPECT_NE(error_of("materials:\n  m: {type: conductor, roughness: 1.5}\n").find("from 0 (smooth) to 1"),
             std::string::npos);
   EXPECT_NE(error_of("materials:\n  m: {type: conductor, eta: [1, 1, 1]}\n").find("needs both eta and k"),

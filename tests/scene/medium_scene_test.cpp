@@ -22,7 +22,7 @@ RenderScene build(const std::string& body) {
   return build_render_scene(parse_scene_text(kHeader + body, "test.yaml", {}));
 }
 
-const HomogeneousMedium& homogeneous(const RenderScene& scene, std::uint32_t medium) {
+const HomogeneousMedium& homogeneous(const RenderScene& scene, MediumIndex medium) {
   return std::get<HomogeneousMedium>(scene.media.at(medium));
 }
 
@@ -58,11 +58,9 @@ TEST(MediumScene, GlassTransmittanceIsAnAbsorbingInterior) {
   green: {type: dielectric, transmittance: [0.5, 1, 0], transmittance_distance: 2}
   clear: {type: dielectric}
 )");
-  const HomogeneousMedium& green = homogeneous(scene, *scene.materials[1].interior);
-  EXPECT_FLOAT_EQ(green.sigma_a.x, std::log(2.0f) / 2.0f);
-  EXPECT_EQ(green.sigma_a.y, 0.0f);
-  EXPECT_EQ(green.sigma_a.z, std::numeric_limits<float>::max());  // opaque
-  EXPECT_EQ(green.sigma_s, Color(0.0f));
+  const auto& green = std::get<AbsorbingMedium>(scene.media.at(*scene.materials[1].interior));
+  EXPECT_EQ(green.transmittance, Color(0.5f, 1.0f, 0.0f));
+  EXPECT_EQ(green.distance, 2.0f);
   EXPECT_EQ(scene.materials[2].interior, kNoMedium);  // clear glass holds vacuum, not the world's fog
 }
 
@@ -91,10 +89,9 @@ TEST(MediumScene, GltfVolumeIsAnAbsorbingInterior) {
   const GltfAsset asset = load_gltf_file(gltf.write("volume"));
   ASSERT_EQ(asset.materials.size(), 3u);
   ASSERT_TRUE(asset.materials[0].interior.has_value());
-  const auto& wine = std::get<HomogeneousMedium>(*asset.materials[0].interior);
-  EXPECT_FLOAT_EQ(wine.sigma_a.x, std::log(2.0f) / 0.5f);
-  EXPECT_FLOAT_EQ(wine.sigma_a.y, std::log(4.0f) / 0.5f);
-  EXPECT_EQ(wine.sigma_a.z, 0.0f);
+  const auto& wine = std::get<AbsorbingMedium>(*asset.materials[0].interior);
+  EXPECT_EQ(wine.transmittance, Color(0.5f, 0.25f, 1.0f));
+  EXPECT_EQ(wine.distance, 0.5f);
   EXPECT_FALSE(asset.materials[1].interior.has_value());  // thickness 0: a thin wall
   ASSERT_TRUE(asset.materials[2].interior.has_value());   // no attenuation: vacuum inside
   EXPECT_EQ(std::get<HomogeneousMedium>(*asset.materials[2].interior).sigma_a, Color(0.0f));

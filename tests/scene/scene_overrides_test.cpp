@@ -59,6 +59,20 @@ TEST(SceneParserOverrides, ErrorsNameTheOverride) {
   check_override_error("render.spp.x=4", {"'spp' is a single value"});
   check_override_error("lights.0.intensity=1", {"lights: expected a list of lights, got a mapping"});
   check_override_error("camera.resolution=[1, 2", {"YAML syntax error"});
+  check_override_error("materials.\"Material.001.color=[1,0,0]", {"a quoted key name has no closing \""});
+  check_override_error("materials.'a'b.color=[1,0,0]", {"expected key=value", "quoted"});
+}
+
+// Blender names materials "Material.001": a dot inside a name made the name unreachable. Quoted,
+// in either quotes, a name is one key, dots and '=' included.
+TEST(SceneParserOverrides, QuotedNamesKeepTheirDots) {
+  const std::string text = kHeader + "materials:\n  Material.001: {color: [0, 0, 1]}\n  a=b: {color: [0, 0, 1]}\n";
+  const SceneDescription scene = parse_scene_text(
+      text, "test.yaml", {"materials.\"Material.001\".color=[1, 0, 0]", "materials.'a=b'.color=[0, 1, 0]"});
+  ASSERT_EQ(scene.materials.size(), 3u);
+  EXPECT_EQ(scene.materials.at(1).name, "Material.001");
+  EXPECT_EQ(scene.materials.at(1).color, Color(1, 0, 0));
+  EXPECT_EQ(scene.materials.at(2).color, Color(0, 1, 0));
 }
 
 }  // namespace scene_overrides_test

@@ -39,7 +39,13 @@ inline constexpr std::chrono::milliseconds kDefaultRankTimeout{60000};
 
 // Before any work: rank 0 gathers every rank's identity and throws InputError naming the first
 // rank whose identity differs from its own, and how; the other ranks wait for rank 0's word.
-void agree_on_job(Communicator& communicator, const JobIdentity& identity);
+// Every rank loads the scene before it gets here, so a rank that is stopped, hung or still
+// loading holds the others: after `start_timeout` (--start-timeout; zero: wait for ever) of
+// waiting, rank 0 throws RuntimeError naming the ranks it has not heard from, and another rank
+// one saying rank 0 did not answer. It is not --rank-timeout: loading times differ between nodes
+// by far more than a rendering rank's silences.
+void agree_on_job(Communicator& communicator, const JobIdentity& identity,
+                  std::chrono::milliseconds start_timeout = std::chrono::milliseconds(0));
 
 // Rank 0: renders the tiles `source` hands out, with its workers and the other ranks, into `sink`;
 // returns every rank's figures (indexed by rank) once all have finished. Stops handing out tiles

@@ -7,6 +7,9 @@
 #include "rtpro/scene/render_scene.h"
 
 #include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,7 +28,18 @@ struct SceneBuildReport {
 // Upper bound on instances after flattening; deeper or wider nesting is an input error.
 inline constexpr std::size_t kMaxFlattenedInstances = 10'000'000;
 
-RenderScene build_render_scene(const SceneDescription& description, SceneBuildReport* report = nullptr);
+// What building may use besides the description: the memory left in the budget for geometry made
+// while building (subdivision surfaces; 0: the default budget), and how to read a displacement
+// texture (the image layer, which the scene module does not link; unset: such a texture is an
+// input error).
+struct SceneBuildOptions {
+  std::uint64_t geometry_budget = 0;
+  std::string budget_source = "the default budget";
+  std::function<ScalarImage(const std::filesystem::path&, std::uint64_t max_bytes)> read_scalar_image = nullptr;
+};
+
+RenderScene build_render_scene(const SceneDescription& description, SceneBuildReport* report = nullptr,
+                               const SceneBuildOptions& options = {});
 
 // The render-time forms of the description's camera and lights (build_render_scene uses them;
 // tests that assemble a RenderScene by hand do too).

@@ -15,6 +15,7 @@
 // Each kind of shape's scene side (its entries' type and reader, its shapes and their bounds),
 // here so that whatever visits the lists below finds the kind's functions.
 #include "rtpro/scene/sphere_geometry.h"
+#include "rtpro/scene/subdivision.h"
 #include "rtpro/scene/triangle_geometry.h"
 
 #include <concepts>
@@ -125,6 +126,8 @@ struct MeshDesc {
   // Set when the file was already loaded while the scene was read (a mesh file as the whole scene
   // needs its bounds then); otherwise loaded by build_render_scene.
   std::shared_ptr<const LoadedMesh> loaded = nullptr;
+  std::optional<SubdivisionDesc> subdivision = std::nullopt;  // the file's faces refined as a cage
+  std::optional<DisplacementDesc> displacement = std::nullopt;
 };
 
 struct GltfAsset;  // a loaded glTF file (src/scene/gltf/gltf_asset.h)
@@ -138,7 +141,9 @@ struct GltfDesc {
   // Set when the file was already loaded while the scene was read (a glTF file as the whole
   // scene needs its cameras, lights and bounds then); otherwise loaded by build_render_scene.
   std::shared_ptr<const GltfAsset> loaded;
-  std::uint32_t linking = kNoLinking;  // every instance the file places
+  std::uint32_t linking = kNoLinking;                         // every instance the file places
+  std::optional<SubdivisionDesc> subdivision = std::nullopt;  // every mesh of the file refined
+  std::optional<DisplacementDesc> displacement = std::nullopt;
 };
 
 struct InstanceDesc {

@@ -2,12 +2,9 @@
 // A smooth dielectric (glass, water): its refraction index and what it absorbs inside. A kind of
 // material whose inside is such a medium says so (interior_of, in the kind's header:
 // scene/dielectric_material.h): the scene's build makes its absorption a medium
-// (beer_lambert_medium), which the path integrator tracks paths through; the whitted integrator's
+// (glass_absorption, scene/absorbing_medium.h), which the path integrator tracks paths through; the whitted integrator's
 // glass is its Whitted approximation's (scene/whitted_material.h).
 #include "rtpro/core/vec3.h"
-#include "rtpro/scene/homogeneous_medium.h"
-
-#include <optional>
 
 namespace rtpro {
 
@@ -16,9 +13,5 @@ struct Dielectric {
   Color transmittance{1.0f};  // of white light after `transmittance_distance`
   float transmittance_distance = 1.0f;
 };
-
-// The medium that absorbs as the glass's transmittance says: σa = −ln(transmittance) / distance
-// per channel (an opaque channel the largest float); nothing for clear glass.
-std::optional<HomogeneousMedium> beer_lambert_medium(const Dielectric& glass);
 
 }  // namespace rtpro

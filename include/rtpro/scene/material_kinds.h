@@ -7,6 +7,7 @@
 #include "rtpro/scene/conductor_material.h"
 #include "rtpro/scene/dielectric_material.h"
 #include "rtpro/scene/diffuse_material.h"
+#include "rtpro/scene/hair_material.h"
 #include "rtpro/scene/interface_material.h"
 #include "rtpro/scene/phong_material.h"
 #include "rtpro/scene/principled_material.h"
@@ -22,13 +23,13 @@ namespace rtpro {
 
 // What the scene file says of a material besides what every kind has (MaterialDesc), in the order
 // its messages list the kinds.
-using MaterialParams =
-    std::variant<PhongParams, DiffuseParams, ConductorParams, DielectricParams, PrincipledParams, InterfaceParams>;
+using MaterialParams = std::variant<PhongParams, DiffuseParams, ConductorParams, DielectricParams, PrincipledParams,
+                                    HairParams, InterfaceParams>;
 
 // What the path integrator evaluates at a surface (render/bsdf/material_bsdf.h makes its BSDF), in
 // MaterialParams' order.
 using SurfaceModel = std::variant<PhongSurface, DiffuseSurface, ConductorSurface, DielectricSurface, PrincipledSurface,
-                                  InterfaceSurface>;
+                                  HairSurface, InterfaceSurface>;
 
 // Every function the generic code calls on a kind's scene side, each asked for by name, so that a
 // kind missing one stops the build with what it lacks rather than in the visits that call it.

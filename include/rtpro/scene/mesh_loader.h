@@ -3,9 +3,11 @@
 // number validated; a malformed file is one InputError naming file:line.
 #include "rtpro/scene/description.h"
 #include "rtpro/scene/mesh.h"
+#include "rtpro/scene/subdivision.h"
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +15,8 @@ namespace rtpro {
 
 struct MeshLoadOptions {
   NormalsMode normals = NormalsMode::kAuto;
+  // Also keep an OBJ's faces untriangulated (LoadedMesh::cage), for a subdivision surface.
+  bool keep_cage = false;
 };
 
 struct MeshLoadStats {
@@ -32,6 +36,7 @@ struct LoadedMesh {
   TriangleMesh mesh;                    // triangle_materials index into `materials` (may be empty)
   std::vector<MaterialDesc> materials;  // from MTL files, in first-use order
   MeshLoadStats stats;
+  std::shared_ptr<const PolygonCage> cage;  // with MeshLoadOptions::keep_cage, for an OBJ
 };
 
 // Chooses the format by extension (.obj, .ply). Throws InputError for missing or malformed files.

@@ -79,7 +79,7 @@ struct Material {
   // The medium inside the surface (an index into RenderScene::media, kNoMedium for vacuum) when the
   // surface bounds one: a path refracted (or passing) through it from the front is in that medium
   // until it crosses such a surface from the back. Unset: what crosses it stays where it was.
-  std::optional<std::uint32_t> interior = std::nullopt;
+  std::optional<MediumIndex> interior = std::nullopt;
   // `type: interface`: no surface, only a medium's boundary: rays pass straight through.
   bool index_matched = false;
 };
@@ -112,11 +112,11 @@ struct RenderScene {
   std::vector<Light> lights;
   LightLinks links;  // which lights reach which top-level objects, and whose shadows they cast
   std::optional<Environment> environment;
-  std::vector<Medium> media;               // the materials' interiors and the world's
-  std::uint32_t world_medium = kNoMedium;  // what fills the world outside every object
-  std::vector<TextureImage> textures;      // each file and colour space once
-  Group top;                               // may contain instances
-  std::vector<Group> prototypes;           // never contain instances
+  std::vector<Medium> media;             // the materials' interiors and the world's
+  MediumIndex world_medium = kNoMedium;  // what fills the world outside every object
+  std::vector<TextureImage> textures;    // each file and colour space once
+  Group top;                             // may contain instances
+  std::vector<Group> prototypes;         // never contain instances
 
   std::vector<BBox> prototype_bounds() const;
   BBox bounds() const { return top.bounds(prototype_bounds()); }

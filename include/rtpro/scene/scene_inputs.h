@@ -24,4 +24,9 @@ struct SceneInput {
 std::vector<SceneInput> scene_inputs(const SceneDescription& description, const SceneBuildReport& report,
                                      const RenderScene& scene);
 
+// The files the description itself names, known before anything is loaded: the scene text and its
+// includes, mesh and glTF files, the environment map and texture images named by path. The
+// files those read in turn (MTL libraries, glTF buffers and images) come with scene_inputs only.
+std::vector<SceneInput> named_inputs(const SceneDescription& description);
+
 }  // namespace rtpro

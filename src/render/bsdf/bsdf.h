@@ -9,6 +9,7 @@
 #include "conductor_bsdf.h"
 #include "dielectric_bsdf.h"
 #include "diffuse_bsdf.h"
+#include "hair_bsdf.h"
 #include "interface_bsdf.h"
 #include "phong_bsdf.h"
 #include "principled_bsdf.h"
@@ -21,7 +22,7 @@
 
 namespace rtpro {
 
-using Bsdf = std::variant<DiffuseBsdf, ConductorBsdf, DielectricBsdf, PrincipledBsdf, PhongBsdf>;
+using Bsdf = std::variant<DiffuseBsdf, ConductorBsdf, DielectricBsdf, PrincipledBsdf, PhongBsdf, HairBsdf>;
 
 // Every member the dispatch below calls, each by name, so that a BSDF missing one stops the build
 // with what it lacks rather than in the visits that call it.

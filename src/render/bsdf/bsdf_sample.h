@@ -29,7 +29,16 @@ struct BsdfSample {
   bool delta;
   bool transmitted;  // wi is on the other side of the surface from wo
   BsdfLobe lobe;
+  // For a refraction, η of the side wi leaves into over η of the side wo is on (pbrt-v4's
+  // BSDFSample::eta): f carries the radiance scale 1/η², which the path integrator takes out of
+  // the throughput its Russian roulette reads. 1 for every other sample.
+  float eta = 1.0f;
 };
+
+// The largest float below 1, where a random number rescaled after a choice must stay.
+inline constexpr float kOneMinusEpsilon = 1.0f - 0x1p-24f;
+// A colour's channels averaged: the weight of a coloured lobe when one number picks among lobes.
+inline float channel_mean(const Color& c) { return (c.x + c.y + c.z) / 3.0f; }
 
 inline float cos_theta(const Vec3& w) { return w.z; }
 inline float abs_cos_theta(const Vec3& w) { return std::fabs(w.z); }

@@ -12,8 +12,6 @@
 namespace rtpro {
 namespace {
 
-float channel_mean(const Color& c) { return (c.x + c.y + c.z) / 3.0f; }
-
 // F_avg of Schlick's F0 + (1 − F0)(1 − μ)⁵ in closed form: 2∫(1 − μ)⁵ μ dμ = 1/21.
 Color schlick_average(const Color& f0) { return (f0 * 20.0f + Color(1.0f)) / 21.0f; }
 

@@ -74,7 +74,7 @@ std::optional<BsdfSample> sample_smooth(const Vec3& wo, float eta, float u_lobe)
   if (!wi || wi->z == 0.0f) return std::nullopt;
   const float t = 1.0f - r;
   const float etap = relative_eta(wo, eta);
-  return BsdfSample{Color(t / abs_cos_theta(*wi) / (etap * etap)), *wi, t, true, true, BsdfLobe::kTransmission};
+  return BsdfSample{Color(t / abs_cos_theta(*wi) / (etap * etap)), *wi, t, true, true, BsdfLobe::kTransmission, etap};
 }
 
 }  // namespace
@@ -107,7 +107,8 @@ std::optional<BsdfSample> DielectricBsdf::sample(const Vec3& wo, float u_lobe, S
   const Evaluation e = evaluate_rough(wo, *wi, eta, ggx, scale);
   if (e.pdf == 0.0f) return std::nullopt;
   const bool transmitted = wi->z * wo.z < 0.0f;
-  return BsdfSample{e.f, *wi, e.pdf, false, transmitted, transmitted ? BsdfLobe::kTransmission : BsdfLobe::kGlossy};
+  if (!transmitted) return BsdfSample{e.f, *wi, e.pdf, false, false, BsdfLobe::kGlossy};
+  return BsdfSample{e.f, *wi, e.pdf, false, true, BsdfLobe::kTransmission, relative_eta(wo, eta)};
 }
 
 Vec3 bsdf_from(const DielectricSurface& d, const ColorTexture& base_color, const SurfacePoint& point,

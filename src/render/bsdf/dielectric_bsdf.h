@@ -19,10 +19,10 @@
 // kept is distributed exactly as the compensated f·|cos θi| (of energy), so every sample weighs
 // exactly what a smooth interface's does (1, times the radiance scale), where weighting the
 // single-scattering sample by G/G1/E instead compounds along the chains of internal reflections
-// in a glass object (a 64×64 furnace at 256 spp, roughness 0.3: max pixel 1.69 that way, 1.17
-// this way). The pdf is that of single scattering times G/G1/E(μo). Unlike Kulla and Conty's
-// added diffuse-like lobe it spreads the missing light along the lobes it belongs to, and a rough
-// glass does not turn milky.
+// in a glass object (a 64×64 furnace at 256 spp, roughness 0.3: max pixel 1.69 that way; 1.000
+// this way, with Russian roulette reading the throughput without the radiance scale). The pdf is
+// that of single scattering times G/G1/E(μo). Unlike Kulla and Conty's added diffuse-like lobe it
+// spreads the missing light along the lobes it belongs to, and a rough glass does not turn milky.
 //
 // What that costs is reciprocity: the scale follows wo alone, so f(wo, wi) n_wi² E(wo) =
 // f(wi, wo) n_wo² E(wi) rather than without the E's. The path tracer traces radiance only, wo

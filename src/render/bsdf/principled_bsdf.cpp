@@ -23,11 +23,9 @@ constexpr float kCoatF0 = 0.04f;  // KHR_materials_clearcoat: ior 1.5
 // angle, a smooth sheen seen from above), and a lobe never sampled would leave its light to the
 // light sampler alone.
 constexpr float kMinLobeShare = 0.02f;
-constexpr float kOneMinusEpsilon = 1.0f - 0x1p-24f;
 
 float clamp01(float x) { return std::clamp(x, 0.0f, 1.0f); }
 Color clamp01(const Color& c) { return {clamp01(c.x), clamp01(c.y), clamp01(c.z)}; }
-float mean(const Color& c) { return (c.x + c.y + c.z) / 3.0f; }
 
 }  // namespace
 
@@ -148,19 +146,19 @@ PrincipledBsdf::Outgoing PrincipledBsdf::outgoing(const Vec3& wo) const {
   const Color glass_passed = base_color_ * (Color(1.0f) - glass_fresnel(wo.z));
   std::array<float, kLobeCount> estimate{};
   if (active_[kCoat]) estimate[kCoat] = coat_weight_ * coat_albedo;
-  if (active_[kFuzz]) estimate[kFuzz] = o.below_coat * mean(fuzz_color_) * fuzz_albedo;
+  if (active_[kFuzz]) estimate[kFuzz] = o.below_coat * channel_mean(fuzz_color_) * fuzz_albedo;
   if (active_[kSpecular]) {
-    const float glass = rough_glass_ ? 0.0f : transmission_ * mean(glass_reflectance);
-    estimate[kSpecular] = dielectric * ((1.0f - transmission_) * mean(o.specular_albedo) + glass);
+    const float glass = rough_glass_ ? 0.0f : transmission_ * channel_mean(glass_reflectance);
+    estimate[kSpecular] = dielectric * ((1.0f - transmission_) * channel_mean(o.specular_albedo) + glass);
   }
-  const float base = dielectric * (1.0f - transmission_) * mean(base_color_ * (Color(1.0f) - o.specular_albedo));
+  const float base = dielectric * (1.0f - transmission_) * channel_mean(base_color_ * (Color(1.0f) - o.specular_albedo));
   if (active_[kDiffuse]) estimate[kDiffuse] = base * (1.0f - subsurface_);
   if (active_[kSubsurface]) estimate[kSubsurface] = base * subsurface_;
   if (active_[kTransmission]) {
-    const float reflected = rough_glass_ ? mean(glass_reflectance) : 0.0f;
-    estimate[kTransmission] = dielectric * transmission_ * (reflected + mean(glass_passed));
+    const float reflected = rough_glass_ ? channel_mean(glass_reflectance) : 0.0f;
+    estimate[kTransmission] = dielectric * transmission_ * (reflected + channel_mean(glass_passed));
   }
-  if (active_[kMetal]) estimate[kMetal] = o.below_fuzz * metalness_ * mean(metal_.fresnel(o.cos_o));
+  if (active_[kMetal]) estimate[kMetal] = o.below_fuzz * metalness_ * channel_mean(metal_.fresnel(o.cos_o));
 
   float total = 0.0f;
   for (float e : estimate) total += e;
@@ -294,7 +292,7 @@ std::optional<BsdfSample> PrincipledBsdf::sample_delta(Lobe lobe, const Vec3& wo
     const Color weight = base_color_ * (Color(1.0f) - glass_fresnel(wo.z)) *
                          (o.below_fuzz * (1.0f - metalness_) * transmission_ / (etap * etap));
     return BsdfSample{weight / abs_cos_theta(*wi), *wi, o.probability[kTransmission], true, true,
-                      BsdfLobe::kTransmission};
+                      BsdfLobe::kTransmission,     etap};
   }
   Color weight(0.0f);
   float probability = 0.0f;
@@ -346,7 +344,9 @@ std::optional<BsdfSample> PrincipledBsdf::sample(const Vec3& wo, float u_lobe, S
   // f and pdf of the whole mixture, as eval() and pdf() compute them, so MIS weights match.
   const float pdf = density(wo, *wi, o);
   if (pdf == 0.0f) return std::nullopt;
-  return BsdfSample{evaluate(wo, *wi, o), *wi, pdf, false, !same_hemisphere(wo, *wi), lobe_kind(lobe)};
+  const bool transmitted = !same_hemisphere(wo, *wi);
+  return BsdfSample{
+      evaluate(wo, *wi, o), *wi, pdf, false, transmitted, lobe_kind(lobe), transmitted ? relative_eta(wo, eta_) : 1.0f};
 }
 
 Vec3 bsdf_from(const PrincipledSurface& p, const ColorTexture& base_color, const SurfacePoint& point,

@@ -22,19 +22,20 @@ void start_camera_paths(const CameraBatch& batch, PathWorkspace& ws) {
     batch.results[i] = SampleResult{};
     ws.paths.push_back({.sample = i,
                         .bounce = 0,
-                        .beta = Color(1.0f),
-                        .origin = batch.rays[i].org,
-                        .bsdf_pdf = 0.0f,
-                        .specular = true,
-                        .aov_pending = true,
-                        .transmitted = false,
-                        .group = 0,
-                        .min_pdf = std::numeric_limits<float>::infinity(),
                         .diffuse_bounces = 0,
                         .glossy_bounces = 0,
                         .transmission_bounces = 0,
                         .volume_bounces = 0,
-                        .media = {}});
+                        .beta = Color(1.0f),
+                        .eta_scale = 1.0f,
+                        .origin = batch.rays[i].org,
+                        .bsdf_pdf = 0.0f,
+                        .min_pdf = std::numeric_limits<float>::infinity(),
+                        .group = 0,
+                        .media = {},
+                        .specular = true,
+                        .aov_pending = true,
+                        .transmitted = false});
   }
 }
 
@@ -58,11 +59,23 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
   start_camera_paths(batch, ws);
   counts[RayKind::kCamera] += batch.rays.size();
   // Asked per batch, not kept: it points into lights_, which a copy of the integrator would not
-  // share. Its samples are made at the surfaces a generation reaches, which media may stop short of.
+  // share. Its samples are made at the surfaces a generation reaches, which a path tracked through
+  // media and interfaces may stop short of or pass.
   std::optional<LightSet::LonePointLight> lone_point_light = lights_.lone_point_light();
   if (draws_.medium) lone_point_light.reset();
-  PathVertexStep step(scene, backend_, lights_, batch.results, ws, textures_, draws_.cosine_directions,
-                      lone_point_light.has_value());
+  PathVertexStep<true> controlled_step(scene, backend_, lights_, batch.results, ws, textures_, draws_.cosine_directions,
+                                       lone_point_light.has_value());
+  PathVertexStep<false> plain_step(scene, backend_, lights_, batch.results, ws, textures_, draws_.cosine_directions,
+                                   lone_point_light.has_value());
+  const bool controlled = controlled_step.controls_apply();
+  const auto extend_generation = [&](auto& step) {
+    if (draws_.medium)
+      for (std::size_t i = 0; i < ws.paths.size(); ++i)
+        step.extend_through_media(i, ws.paths[i], ws.rays[i], ws.hits[i], ws.surfaces[i], ws.samples[i]);
+    else
+      for (std::size_t i = 0; i < ws.paths.size(); ++i)
+        step.extend(i, ws.paths[i], ws.rays[i], ws.hits[i], ws.surfaces[i], ws.samples[i]);
+  };
   for (int generation = 0; !ws.paths.empty(); ++generation) {
     ws.hits.resize(ws.rays.size());
     backend_.intersect(ws.rays, ws.hits, generation == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
@@ -79,8 +92,8 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
       ws.samples.draw(sampler, path_keys(batch.keys, ws), generation, draws_);
       if (lone_point_light) ws.samples.sample_lone_point_light(*lone_point_light, ws.surfaces);
     }
-    for (std::size_t i = 0; i < ws.paths.size(); ++i)
-      step.extend(i, ws.paths[i], ws.rays[i], ws.hits[i], ws.surfaces[i], ws.samples[i]);
+    if (controlled) extend_generation(controlled_step);
+    else extend_generation(plain_step);
 
     counts[RayKind::kShadow] += ws.shadow_rays.size();
     if (draws_.medium) {

@@ -3,7 +3,8 @@
 // vertex whose BSDF is not purely specular, one light sample (LightSet: every light kind and every
 // emissive surface) and one BSDF sample, each weighted by the power heuristic against the other's
 // pdf; emission reached by a BSDF sample after a specular vertex (or by the camera ray) counts in
-// full. Russian roulette after kRouletteStart bounces, its number from the sampler.
+// full. Russian roulette after kRouletteStart bounces, on the throughput without refraction's 1/η²
+// radiance scale, its number from the sampler.
 //
 // Media (render/media/): a path's rays are tracked through the medium they travel in by delta
 // tracking, which adds the medium's emission and may end the ray at a scattering vertex, where one
@@ -41,21 +42,23 @@ namespace rtpro {
 // The buffers one worker reuses from batch to batch.
 class PathWorkspace {
  public:
+  // 72 bytes, copied from vertex to vertex: the narrow fields are packed together.
   struct Path {
     std::uint32_t sample;
-    int bounce;
+    std::uint16_t bounce;
+    // How many of the path's BSDF samples took each kind of lobe (BsdfLobe), and of its phase
+    // function samples (volume), for their limits; counted only when a limit is below max_depth.
+    std::uint16_t diffuse_bounces, glossy_bounces, transmission_bounces, volume_bounces;
     Color beta;           // throughput from the camera to this ray's origin
+    float eta_scale;      // the product of η² of the path's refractions (BsdfSample::eta)
     Vec3 origin;          // the vertex the ray leaves (for the pdf of light sampling)
     float bsdf_pdf;       // solid-angle pdf of the ray's direction
+    float min_pdf;        // the least pdf of the path's non-delta BSDF samples (Filter Glossy, when on)
+    std::uint32_t group;  // the light-link group of the vertex the ray leaves (0 for the camera)
+    MediumStack media;    // the media the ray travels in
     bool specular;        // the ray left a specular vertex or the camera: emission counts in full
     bool aov_pending;     // albedo and normal AOVs wait for the first non-specular vertex
     bool transmitted;     // the ray was refracted into or out of a surface (counted as refraction)
-    std::uint32_t group;  // the light-link group of the vertex the ray leaves (0 for the camera)
-    float min_pdf;        // the least pdf of the path's non-delta BSDF samples so far (Filter Glossy)
-    // How many of the path's BSDF samples took each kind of lobe (BsdfLobe), and its phase function
-    // samples (volume), for its limits.
-    std::uint16_t diffuse_bounces, glossy_bounces, transmission_bounces, volume_bounces;
-    MediumStack media;  // the media the ray travels in
   };
   struct ShadowQuery {
     std::uint32_t sample;

@@ -7,7 +7,6 @@
 #include "rtpro/core/append_ray.h"
 #include "rtpro/core/random.h"
 
-#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -29,18 +28,10 @@ Ray unit_ray(const Ray& ray) {
 
 }  // namespace
 
-std::uint64_t PathVertexStep::tracking_seed(std::size_t vertex, const VertexSamples& u) const {
-  const SampleKey& key = ws_.path_keys[vertex];
-  return hash_combine(hash_combine(key.pixel_key, static_cast<std::uint64_t>(key.sample_index)),
-                      std::bit_cast<std::uint32_t>(u.medium));
-}
-
-void PathVertexStep::queue_medium_shadow(const MediumStack& media, std::uint64_t seed, std::uint32_t light) {
-  ws_.medium_shadows.push_back({media, seed, light < scene_.lights.size() ? light : kInvalidId});
-}
-
-void PathVertexStep::extend_through_media(std::size_t vertex, const Path& path, const Ray& ray, const Hit& hit,
-                                          const SurfacePoint& sp, const VertexSamples& u) {
+template <bool kLightPathControls>
+void PathVertexStep<kLightPathControls>::extend_through_media(std::size_t vertex, const Path& path, const Ray& ray,
+                                                              const Hit& hit, const SurfacePoint& sp,
+                                                              const VertexSamples& u) {
   Color beta = path.beta;
   MediumStack media = path.media;
   TrackingRandom random(tracking_seed(vertex, u));
@@ -82,12 +73,16 @@ void PathVertexStep::extend_through_media(std::size_t vertex, const Path& path, 
       surface = &beyond;
     }
   }
-  reach(vertex, path, segment, reached, *surface, u, beta, media);
+  Path through = path;
+  through.beta = beta;
+  through.media = media;
+  extend(vertex, through, segment, reached, *surface, u);
 }
 
-void PathVertexStep::scatter_in_medium(std::size_t vertex, const Path& path, const Vec3& position,
-                                       const Vec3& direction, const TrackedRay& tracked, const MediumStack& media,
-                                       const VertexSamples& u) {
+template <bool kLightPathControls>
+void PathVertexStep<kLightPathControls>::scatter_in_medium(std::size_t vertex, const Path& path, const Vec3& position,
+                                                           const Vec3& direction, const TrackedRay& tracked,
+                                                           const MediumStack& media, const VertexSamples& u) {
   if (ends_here(path)) return;
   const float g = tracked.anisotropy;
   const Color& beta = tracked.beta;  // σs/σ̄ already taken: the phase function is all that is left
@@ -109,23 +104,38 @@ void PathVertexStep::scatter_in_medium(std::size_t vertex, const Path& path, con
       }
     }
 
-  // The phase function sample: p/pdf = 1, so β stays; Russian roulette as at a surface.
+  // The phase function sample: p/pdf = 1, so β stays; Russian roulette as at a surface, with
+  // the path's eta_scale (a medium vertex refracts nothing).
   const PhaseSample ps = sample_henyey_greenstein(direction, g, u.bsdf_direction);
   Color next_beta = beta;
-  if (!survives_roulette(path.bounce, u.roulette, next_beta)) return;
+  if (path.bounce >= kRouletteStart && !russian_roulette(next_beta, path.eta_scale, u.roulette)) return;
   if (!is_finite(next_beta) || carries_no_light(next_beta)) return;
-  Path& next = ws_.next_paths.emplace_back(path);
-  next.bounce = path.bounce + 1;
-  next.beta = next_beta;
-  next.origin = position;
-  next.bsdf_pdf = ps.pdf;
-  next.specular = false;
-  next.transmitted = false;
-  next.media = media;
-  next.group = kGroup;
-  next.min_pdf = std::min(path.min_pdf, ps.pdf);
-  ++next.volume_bounces;
+  Path& next = ws_.next_paths.emplace_back(Path{.sample = path.sample,
+                                                .bounce = static_cast<std::uint16_t>(path.bounce + 1),
+                                                .diffuse_bounces = path.diffuse_bounces,
+                                                .glossy_bounces = path.glossy_bounces,
+                                                .transmission_bounces = path.transmission_bounces,
+                                                .volume_bounces = path.volume_bounces,
+                                                .beta = next_beta,
+                                                .eta_scale = path.eta_scale,
+                                                .origin = position,
+                                                .bsdf_pdf = ps.pdf,
+                                                .min_pdf = path.min_pdf,
+                                                .group = kGroup,
+                                                .media = media,
+                                                .specular = false,
+                                                .aov_pending = path.aov_pending,
+                                                .transmitted = false});
+  if (kLightPathControls && filtering_glossy_) next.min_pdf = std::min(path.min_pdf, ps.pdf);
+  if (kLightPathControls && lobe_limits_) ++next.volume_bounces;
   append_ray(ws_.next_rays, Ray{position, 0.0f, ps.outgoing, kEndless});
 }
+
+// The members defined here, for both of PathIntegrator's steps (path_vertex_step.cpp instantiates
+// the rest).
+template void PathVertexStep<true>::extend_through_media(std::size_t, const Path&, const Ray&, const Hit&,
+                                                         const SurfacePoint&, const VertexSamples&);
+template void PathVertexStep<false>::extend_through_media(std::size_t, const Path&, const Ray&, const Hit&,
+                                                          const SurfacePoint&, const VertexSamples&);
 
 }  // namespace rtpro

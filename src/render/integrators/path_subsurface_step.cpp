@@ -28,9 +28,11 @@ std::uint64_t walk_seed(const SampleKey& key, const VertexSamples& u) {
 
 }  // namespace
 
-void PathVertexStep::walk_under_surface(std::size_t vertex, const Path& path, const SurfacePoint& sp,
-                                        const BsdfSample& entry, const VertexSamples& u, const Color& beta,
-                                        const MediumStack& media, bool aov_pending) {
+template <bool kLightPathControls>
+void PathVertexStep<kLightPathControls>::walk_under_surface(std::size_t vertex, const Path& path,
+                                                            const SurfacePoint& sp, const BsdfSample& entry,
+                                                            const VertexSamples& u, const Color& beta,
+                                                            const MediumStack& media, bool aov_pending) {
   const Material& material = scene_.materials[sp.material];
   const auto* model = std::get_if<PrincipledSurface>(&material.model);
   if (!model) return;  // only the principled kind has a subsurface lobe
@@ -69,22 +71,35 @@ void PathVertexStep::walk_under_surface(std::size_t vertex, const Path& path, co
   const Sample2D u_direction{random.next(), random.next()};
   const std::optional<BsdfSample> bs = bsdf_sample(lobe.bsdf, wo, 0.0f, u_direction);
   if (!bs || !(bs->pdf > 0.0f)) return;
+  // Then on as from any Lambert vertex: roulette, and one more diffuse bounce.
   Color next_beta = exit->beta * bs->f * (std::fabs(bs->wi.z) / bs->pdf);
-  if (!survives_roulette(path.bounce, u.roulette, next_beta)) return;
+  if (path.bounce >= kRouletteStart && !russian_roulette(next_beta, path.eta_scale, u.roulette)) return;
   if (!is_finite(next_beta) || carries_no_light(next_beta)) return;
-  Path& next = ws_.next_paths.emplace_back(path);
-  next.bounce = path.bounce + 1;
-  next.beta = next_beta;
-  next.origin = out.position;
-  next.bsdf_pdf = bs->pdf;
-  next.specular = false;
-  next.aov_pending = aov_pending;
-  next.transmitted = false;
-  if (has_media_) next.media = media;
-  next.group = group;
-  next.min_pdf = std::min(path.min_pdf, bs->pdf);
-  ++next.diffuse_bounces;
+  Path& next = ws_.next_paths.emplace_back(Path{.sample = path.sample,
+                                                .bounce = static_cast<std::uint16_t>(path.bounce + 1),
+                                                .diffuse_bounces = path.diffuse_bounces,
+                                                .glossy_bounces = path.glossy_bounces,
+                                                .transmission_bounces = path.transmission_bounces,
+                                                .volume_bounces = path.volume_bounces,
+                                                .beta = next_beta,
+                                                .eta_scale = path.eta_scale,
+                                                .origin = out.position,
+                                                .bsdf_pdf = bs->pdf,
+                                                .min_pdf = path.min_pdf,
+                                                .group = group,
+                                                .media = media,
+                                                .specular = false,
+                                                .aov_pending = aov_pending,
+                                                .transmitted = false});
+  if (kLightPathControls && filtering_glossy_) next.min_pdf = std::min(path.min_pdf, bs->pdf);
+  if (kLightPathControls && lobe_limits_) ++next.diffuse_bounces;
   append_ray(ws_.next_rays, spawn_ray(origins, lobe.frame.to_world(bs->wi)));
 }
+
+template void PathVertexStep<true>::walk_under_surface(std::size_t, const Path&, const SurfacePoint&, const BsdfSample&,
+                                                       const VertexSamples&, const Color&, const MediumStack&, bool);
+template void PathVertexStep<false>::walk_under_surface(std::size_t, const Path&, const SurfacePoint&,
+                                                        const BsdfSample&, const VertexSamples&, const Color&,
+                                                        const MediumStack&, bool);
 
 }  // namespace rtpro

@@ -26,14 +26,6 @@ void count_bounce(BsdfLobe lobe, Path& next) {
   }
 }
 
-// Cycles' sample clamp: a contribution whose channels sum to more than `sum_limit` (3 × the
-// clamp, so that the channel mean is capped) is scaled down to it, its hue kept. An infinite
-// limit, clamping off, leaves every contribution as it was.
-Color clamped(const Color& contribution, float sum_limit) {
-  const float sum = std::fabs(contribution.x) + std::fabs(contribution.y) + std::fabs(contribution.z);
-  return sum > sum_limit ? contribution * (sum_limit / sum) : contribution;
-}
-
 float clamp_sum_limit(float clamp) { return clamp > 0.0f ? 3.0f * clamp : std::numeric_limits<float>::infinity(); }
 
 // The primary hit's AOVs: the camera ray's hit, with the albedo and normal of the path's first
@@ -49,21 +41,25 @@ bool record_aovs(const Path& path, const Ray& ray, const Hit& hit, const Surface
 
 }  // namespace
 
-PathVertexStep::PathVertexStep(const RenderScene& scene, const Backend& backend, const LightSet& lights,
-                               std::span<SampleResult> results, PathWorkspace& ws, const TextureLookup* textures,
-                               bool cosine_directions, bool lone_point_light)
+template <bool kLightPathControls>
+PathVertexStep<kLightPathControls>::PathVertexStep(const RenderScene& scene, const Backend& backend,
+                                                   const LightSet& lights, std::span<SampleResult> results,
+                                                   PathWorkspace& ws, const TextureLookup* textures,
+                                                   bool cosine_directions, bool lone_point_light)
     : scene_(scene), backend_(backend), lights_(lights), results_(results), ws_(ws), textures_(textures),
       cosine_directions_(cosine_directions), lone_point_light_(lone_point_light), has_media_(!scene.media.empty()),
       depths_(lobe_depths(scene.render)), direct_limit_(clamp_sum_limit(scene.render.path.clamp_direct)),
       indirect_limit_(clamp_sum_limit(scene.render.path.clamp_indirect)),
       clamping_(scene.render.path.clamp_direct > 0.0f || scene.render.path.clamp_indirect > 0.0f),
-      filter_glossy_(scene.render.path.filter_glossy) {}
+      filter_glossy_(scene.render.path.filter_glossy), max_depth_(scene.render.max_depth),
+      lobe_limits_(depths_.diffuse < max_depth_ || depths_.glossy < max_depth_ || depths_.transmission < max_depth_ ||
+                   depths_.volume < max_depth_),
+      filtering_glossy_(filter_glossy_ > 0.0f) {}
 
-// Flattened: its helpers (the light sample's queueing, the clamps, the path's copy) are worth the
-// call they would otherwise cost at every vertex of every path.
-[[gnu::flatten]] void PathVertexStep::reach(std::size_t vertex, const Path& path, const Ray& ray, const Hit& hit,
-                                            const SurfacePoint& sp, const VertexSamples& u, const Color& beta,
-                                            const MediumStack& media) {
+template <bool kLightPathControls>
+void PathVertexStep<kLightPathControls>::extend(std::size_t vertex, const Path& path, const Ray& ray, const Hit& hit,
+                                                const SurfacePoint& sp, const VertexSamples& u) {
+  const Color& beta = path.beta;
   SampleResult& result = results_[path.sample];
   // Le the ray reaches: a light without geometry before the surface, the environment, or the
   // surface's own emission.
@@ -73,7 +69,7 @@ PathVertexStep::PathVertexStep(const RenderScene& scene, const Backend& backend,
     return;  // lights without geometry absorb what reaches them
   }
   if (!hit.valid()) {
-    add_escaped_light(path, ray, result, beta);
+    add_escaped_light(path, ray, result);
     return;
   }
   const Material& material = scene_.materials[sp.material];
@@ -102,39 +98,44 @@ PathVertexStep::PathVertexStep(const RenderScene& scene, const Backend& backend,
       queue_light_sample(path.sample, origins, surface, wo, *light, beta,
                          path.bounce == 0 ? direct_limit_ : indirect_limit_);
       if (has_media_ && ws_.shadow_queries.size() > queued) {
-        MediumStack shadow_media = media;
+        MediumStack shadow_media = path.media;
         if (material.interior && dot(light->direction, sp.geometric_normal) < 0.0f)
           shadow_media.cross(*material.interior, sp.front_face);
         queue_medium_shadow(shadow_media, tracking_seed(vertex, u) ^ 0x5ad0, light->light);
       }
     }
 
-  // The BSDF sample: β·f·|cos θ|/p_b, then Russian roulette from kRouletteStart on, by the
-  // throughput (q the probability of ending, survivors weighted by 1/(1 − q)).
+  // The BSDF sample: β·f·|cos θ|/p_b, then Russian roulette (russian_roulette).
   const std::optional<BsdfSample> bs = sample_bsdf(surface.bsdf, wo, u, cosine_directions_);
   if (!bs || !(bs->pdf > 0.0f) || carries_no_light(bs->f)) return;
-  if (bs->lobe == BsdfLobe::kSubsurface) return walk_under_surface(vertex, path, sp, *bs, u, beta, media, aov_pending);
+  if (bs->lobe == BsdfLobe::kSubsurface)
+    return walk_under_surface(vertex, path, sp, *bs, u, beta, path.media, aov_pending);
   Color next_beta = beta * bs->f * (std::fabs(bs->wi.z) / bs->pdf);
-  if (!survives_roulette(path.bounce, u.roulette, next_beta)) return;
+  const float eta_scale = bs->transmitted ? path.eta_scale * (bs->eta * bs->eta) : path.eta_scale;
+  if (path.bounce >= kRouletteStart && !russian_roulette(next_beta, eta_scale, u.roulette)) return;
   if (!is_finite(next_beta) || carries_no_light(next_beta)) return;
   // The path's next ray, inside the medium it was refracted into, or outside it again.
   const Vec3 direction = surface.frame.to_world(bs->wi);
-  Path& next = ws_.next_paths.emplace_back(path);
-  next.bounce = path.bounce + 1;
-  next.beta = next_beta;
-  next.origin = sp.position;
-  next.bsdf_pdf = bs->pdf;
-  next.specular = bs->delta;
-  next.aov_pending = aov_pending;
-  next.transmitted = bs->transmitted;
-  if (has_media_) {  // without media every path's stack stays empty: the copy above holds it
-    next.media = media;
-    if (bs->transmitted && material.interior) next.media.cross(*material.interior, sp.front_face);
-  }
-  next.group = group;
+  Path& next = ws_.next_paths.emplace_back(Path{.sample = path.sample,
+                                                .bounce = static_cast<std::uint16_t>(path.bounce + 1),
+                                                .diffuse_bounces = path.diffuse_bounces,
+                                                .glossy_bounces = path.glossy_bounces,
+                                                .transmission_bounces = path.transmission_bounces,
+                                                .volume_bounces = path.volume_bounces,
+                                                .beta = next_beta,
+                                                .eta_scale = eta_scale,
+                                                .origin = sp.position,
+                                                .bsdf_pdf = bs->pdf,
+                                                .min_pdf = path.min_pdf,
+                                                .group = group,
+                                                .media = path.media,
+                                                .specular = bs->delta,
+                                                .aov_pending = aov_pending,
+                                                .transmitted = bs->transmitted});
+  if (has_media_ && bs->transmitted && material.interior) next.media.cross(*material.interior, sp.front_face);
   // A delta sample's pdf is the lobe's probability, not a density: it roughens nothing.
-  if (!bs->delta) next.min_pdf = std::min(path.min_pdf, bs->pdf);
-  count_bounce(bs->lobe, next);
+  if (kLightPathControls && filtering_glossy_ && !bs->delta) next.min_pdf = std::min(path.min_pdf, bs->pdf);
+  if (kLightPathControls && lobe_limits_) count_bounce(bs->lobe, next);
   append_ray(ws_.next_rays, spawn_ray(origins, direction));
 }
 
@@ -142,15 +143,15 @@ PathVertexStep::PathVertexStep(const RenderScene& scene, const Backend& backend,
 // vertex's microfacet lobes are given GGX α >= 0.5·sqrt(1 − p_min / filter_glossy), so a sharp
 // highlight seen through a diffuse bounce becomes a blur the BSDF samples find, not a caustic
 // only rare samples do. Off (0), or after the camera and delta bounces only, nothing changes.
-void PathVertexStep::filter_glossy(const Path& path, Bsdf& bsdf) const {
-  if (path.min_pdf < filter_glossy_) roughen_bsdf(bsdf, 0.5f * std::sqrt(1.0f - path.min_pdf / filter_glossy_));
+template <bool kLightPathControls>
+void PathVertexStep<kLightPathControls>::filter_glossy(const Path& path, Bsdf& bsdf) const {
+  if (kLightPathControls && filtering_glossy_ && path.min_pdf < filter_glossy_)
+    roughen_bsdf(bsdf, 0.5f * std::sqrt(1.0f - path.min_pdf / filter_glossy_));
 }
 
-Color PathVertexStep::clamp(const Color& contribution, float sum_limit) const {
-  return clamping_ ? clamped(contribution, sum_limit) : contribution;
-}
-
-std::optional<float> PathVertexStep::light_sample_weight(const PathLightSample& ls, float scatter_pdf) const {
+template <bool kLightPathControls>
+std::optional<float> PathVertexStep<kLightPathControls>::light_sample_weight(const PathLightSample& ls,
+                                                                             float scatter_pdf) const {
   if (ls.delta) return 1.0f;  // only light sampling finds a delta light
   switch (scene_.render.path_sampling) {
     case PathSampling::kMis: return power_heuristic(ls.pdf, scatter_pdf);
@@ -162,8 +163,9 @@ std::optional<float> PathVertexStep::light_sample_weight(const PathLightSample& 
 
 // L += β·Le·w_b for the radiance Le emitted at `on_light` (of light `light`, kInvalidId for an
 // emitter light sampling never picks: that counts in full).
-void PathVertexStep::add_emission(const Path& path, SampleResult& result, const Color& radiance, std::uint32_t light,
-                                  const Vec3& on_light, const Color& beta) {
+template <bool kLightPathControls>
+void PathVertexStep<kLightPathControls>::add_emission(const Path& path, SampleResult& result, const Color& radiance,
+                                                      std::uint32_t light, const Vec3& on_light, const Color& beta) {
   const float w_b = light == kInvalidId ? 1.0f : bsdf_sample_weight(path, [&] {
     return lights_.pdf(light, path.origin, on_light, path.group);
   });
@@ -172,22 +174,24 @@ void PathVertexStep::add_emission(const Path& path, SampleResult& result, const 
 
 // A ray that leaves the scene: the environment, weighted as emission is, or the background.
 // Camera rays see the background where the environment is not visible.
-void PathVertexStep::add_escaped_light(const Path& path, const Ray& ray, SampleResult& result, const Color& beta) {
+template <bool kLightPathControls>
+void PathVertexStep<kLightPathControls>::add_escaped_light(const Path& path, const Ray& ray, SampleResult& result) {
   const EnvironmentLight* environment = lights_.environment();
   if (!environment || (path.bounce == 0 && !environment->visible())) {
-    result.radiance += clamp(beta * scene_.render.background, emission_limit(path));
+    result.radiance += clamp(path.beta * scene_.render.background, emission_limit(path));
     return;
   }
   const Color radiance = environment->radiance(ray.dir);
   const float w_b = bsdf_sample_weight(path, [&] { return lights_.environment_pdf(ray.dir, path.group); });
-  result.radiance += clamp(beta * radiance * w_b, emission_limit(path));
+  result.radiance += clamp(path.beta * radiance * w_b, emission_limit(path));
 }
 
 // A point on a light for next-event estimation: the lone point light's sample, made for the
 // whole generation, or the light set's pick and sample with the vertex's numbers. Null when
 // the light sends nothing there.
-const PathLightSample* PathVertexStep::sample_light(std::size_t vertex, const Vec3& position, const VertexSamples& u,
-                                                    std::uint32_t group) {
+template <bool kLightPathControls>
+const PathLightSample* PathVertexStep<kLightPathControls>::sample_light(std::size_t vertex, const Vec3& position,
+                                                                        const VertexSamples& u, std::uint32_t group) {
   if (lone_point_light_) return ws_.samples.lone_light_sample(vertex);
   return lights_.sample(position, u.choices.x, u.light_point, textures_, group, light_sample_) ? &light_sample_
                                                                                                : nullptr;
@@ -195,9 +199,11 @@ const PathLightSample* PathVertexStep::sample_light(std::size_t vertex, const Ve
 
 // β·f·|cos θ|·Le·w_l/p_l of a light sample, queued with its shadow ray: added when that passes.
 // `clamp_limit`: the vertex's (clamped).
-void PathVertexStep::queue_light_sample(std::uint32_t sample, SpawnOrigins& origins, const SurfaceBsdf& surface,
-                                        const Vec3& wo, const PathLightSample& ls, const Color& beta,
-                                        float clamp_limit) {
+template <bool kLightPathControls>
+void PathVertexStep<kLightPathControls>::queue_light_sample(std::uint32_t sample, SpawnOrigins& origins,
+                                                            const SurfaceBsdf& surface, const Vec3& wo,
+                                                            const PathLightSample& ls, const Color& beta,
+                                                            float clamp_limit) {
   const Vec3 wi = surface.frame.to_local(ls.direction);
   const Color f = eval_bsdf(surface.bsdf, wo, wi) * std::fabs(wi.z);
   if (carries_no_light(f)) return;
@@ -215,12 +221,16 @@ void PathVertexStep::queue_light_sample(std::uint32_t sample, SpawnOrigins& orig
   queue_shadow(sample, contribution, ray, ls.light);
 }
 
-void PathVertexStep::queue_shadow(std::uint32_t sample, const Color& contribution, const Ray& ray,
-                                  std::uint32_t light) {
+template <bool kLightPathControls>
+void PathVertexStep<kLightPathControls>::queue_shadow(std::uint32_t sample, const Color& contribution, const Ray& ray,
+                                                      std::uint32_t light) {
   ws_.shadow_queries.push_back({sample, contribution});
   append_ray(ws_.shadow_rays, ray);
   // Read only under light linking (occluded_with_shadow_linking).
   if (scene_.links.linked()) ws_.shadow_lights.push_back(light < scene_.lights.size() ? light : kInvalidId);
 }
+
+template class PathVertexStep<true>;
+template class PathVertexStep<false>;
 
 }  // namespace rtpro

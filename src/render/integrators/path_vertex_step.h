@@ -7,11 +7,15 @@
 // In a scene with media the ray is first tracked through the media it crosses
 // (path_medium_step.cpp), which may end it at a medium vertex, where the same three terms are
 // taken with the phase function in place of f·|cos θ| (VolPathIntegrator's loop body).
+// kLightPathControls: compiled with Cycles' controls (clamps, per-lobe depths, Filter Glossy); without
+// them, a scene that sets none pays for none of their tests on its hottest loop. Both are compiled
+// (path_vertex_step.cpp, path_medium_step.cpp), and PathIntegrator picks one per batch.
 #include "light_set.h"
 #include "medium_stack.h"
 #include "medium_tracking.h"
 #include "path_integrator.h"
 #include "rtpro/backend/backend.h"
+#include "rtpro/core/random.h"
 #include "rtpro/image/texture_lookup.h"
 #include "rtpro/render/sample_result.h"
 #include "rtpro/scene/render_scene.h"
@@ -20,6 +24,7 @@
 #include "vertex_samples.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -38,18 +43,34 @@ inline float power_heuristic(float a, float b) {
 // No channel positive (NaN counts as nothing).
 inline bool carries_no_light(const Color& c) { return !(c.x > 0.0f || c.y > 0.0f || c.z > 0.0f); }
 
-// Russian roulette from kRouletteStart on, by the throughput `beta` after the vertex's sample (q
-// the probability of ending, survivors weighted by 1/(1 − q)): whether the path goes on.
-inline bool survives_roulette(int bounce, float u, Color& beta) {
-  if (bounce < kRouletteStart) return true;
-  const float q = std::max(0.05f, 1.0f - max_component(beta));
+// Russian roulette (pbrt-v4's rule): where β·eta_scale, the throughput without the 1/η² by which
+// the path's refractions scaled radiance, is below 1 in its largest channel m, the path ends with
+// probability q = 1 − m and a survivor's β is divided by 1 − q; a path with m >= 1 goes on as it
+// is. Read with the scale, roulette would end more than half of the paths inside glass (1/2.25 at
+// ior 1.5) and give the survivors 2.25; a floor on q would multiply β by 1/(1 − q) at every bounce
+// of the long chains of internal reflections in rough glass. Either spreads a white furnace,
+// where every path through glass brings back exactly 1, into pixels up to 1.17 at 256 spp. A
+// medium vertex scales nothing: its eta_scale is the path's. Returns whether the path goes on.
+inline bool russian_roulette(Color& beta, float eta_scale, float u) {
+  const float survival = max_component(beta) * eta_scale;
+  if (!(survival < 1.0f)) return true;
+  const float q = 1.0f - survival;
   if (u < q) return false;
   beta = beta * (1.0f / (1.0f - q));
   return true;
 }
 
+// Cycles' sample clamp: a contribution whose channels sum to more than `sum_limit` (3 × the
+// clamp, so that the channel mean is capped) is scaled down to it, its hue kept. An infinite
+// limit, clamping off, leaves every contribution as it was.
+inline Color clamped(const Color& contribution, float sum_limit) {
+  const float sum = std::fabs(contribution.x) + std::fabs(contribution.y) + std::fabs(contribution.z);
+  return sum > sum_limit ? contribution * (sum_limit / sum) : contribution;
+}
+
 class SpawnOrigins;  // render/surface/ray_offset.h
 
+template <bool kLightPathControls>
 class PathVertexStep {
  public:
   using Path = PathWorkspace::Path;
@@ -60,25 +81,25 @@ class PathVertexStep {
                  std::span<SampleResult> results, PathWorkspace& ws, const TextureLookup* textures,
                  bool cosine_directions, bool lone_point_light);
 
-  // `vertex`: the path's place in the generation; `sp` the surface of a valid hit (make_surfaces),
-  // unread otherwise; `u` the vertex's random numbers, read only below max_depth (and in a scene
-  // with media, where the ray's tracking reads them at every generation).
-  void extend(std::size_t vertex, const Path& path, const Ray& ray, const Hit& hit, const SurfacePoint& sp,
-              const VertexSamples& u) {
-    if (has_media_) extend_through_media(vertex, path, ray, hit, sp, u);
-    else reach(vertex, path, ray, hit, sp, u, path.beta, path.media);
-  }
+  // Whether the scene sets any of Cycles' controls this step is compiled for.
+  bool controls_apply() const { return clamping_ || lobe_limits_ || filtering_glossy_; }
 
- private:
-  // What the ray reaches, with the path's throughput `beta` and media `media` there: a light
-  // without geometry, the environment, or a surface (path_vertex_step.cpp).
-  void reach(std::size_t vertex, const Path& path, const Ray& ray, const Hit& hit, const SurfacePoint& sp,
-             const VertexSamples& u, const Color& beta, const MediumStack& media);
+  // The step of a path whose ray travels in no medium but the vacuum: what the ray reaches, a
+  // light without geometry, the environment, or a surface. `vertex`: the path's place in the
+  // generation; `sp` the surface of a valid hit (make_surfaces), unread otherwise; `u` the vertex's
+  // random numbers, read only below max_depth. Flattened: its helpers (the light sample's queueing,
+  // the clamps, the path's copy) are worth the call they would otherwise cost at every vertex of
+  // every path (path_vertex_step.cpp).
+  [[gnu::flatten]] void extend(std::size_t vertex, const Path& path, const Ray& ray, const Hit& hit,
+                               const SurfacePoint& sp, const VertexSamples& u);
 
-  // The ray tracked through the media and interfaces it crosses, up to what it reaches or a
-  // medium vertex (path_medium_step.cpp).
+  // The step in a scene with media: the ray tracked through the media and interfaces it crosses,
+  // up to what it reaches (extend, with the path's throughput and media there) or a medium vertex
+  // (path_medium_step.cpp). `u` is read at every generation: the tracking's first number.
   void extend_through_media(std::size_t vertex, const Path& path, const Ray& ray, const Hit& hit,
                             const SurfacePoint& sp, const VertexSamples& u);
+
+ private:
   // A medium vertex at `position`, the ray having travelled along unit `direction`.
   void scatter_in_medium(std::size_t vertex, const Path& path, const Vec3& position, const Vec3& direction,
                          const TrackedRay& tracked, const MediumStack& media, const VertexSamples& u);
@@ -87,17 +108,24 @@ class PathVertexStep {
   void walk_under_surface(std::size_t vertex, const Path& path, const SurfacePoint& sp, const BsdfSample& entry,
                           const VertexSamples& u, const Color& beta, const MediumStack& media, bool aov_pending);
   // The seed of the vertex's tracking numbers after the first (render/media/medium_tracking.h).
-  std::uint64_t tracking_seed(std::size_t vertex, const VertexSamples& u) const;
+  std::uint64_t tracking_seed(std::size_t vertex, const VertexSamples& u) const {
+    const SampleKey& key = ws_.path_keys[vertex];
+    return hash_combine(hash_combine(key.pixel_key, static_cast<std::uint64_t>(key.sample_index)),
+                        std::bit_cast<std::uint32_t>(u.medium));
+  }
   // A shadow ray's start in a scene with media, queued beside it.
-  void queue_medium_shadow(const MediumStack& media, std::uint64_t seed, std::uint32_t light);
+  void queue_medium_shadow(const MediumStack& media, std::uint64_t seed, std::uint32_t light) {
+    ws_.medium_shadows.push_back({media, seed, light < scene_.lights.size() ? light : kInvalidId});
+  }
 
   // Whether the vertex adds its emission and nothing more: the path has made max_depth bounces,
   // or as many of one lobe kind (or of phase function samples) as that kind's limit (Cycles'
   // per-kind bounce limits, which end a path at the vertex after the bounce that reached one).
   bool ends_here(const Path& path) const {
-    return path.bounce >= scene_.render.max_depth || path.diffuse_bounces >= depths_.diffuse ||
-           path.glossy_bounces >= depths_.glossy || path.transmission_bounces >= depths_.transmission ||
-           path.volume_bounces >= depths_.volume;
+    if (path.bounce >= max_depth_) return true;
+    return kLightPathControls && lobe_limits_ &&
+           (path.diffuse_bounces >= depths_.diffuse || path.glossy_bounces >= depths_.glossy ||
+            path.transmission_bounces >= depths_.transmission || path.volume_bounces >= depths_.volume);
   }
 
   // Cycles' Filter Glossy (path_vertex_step.cpp).
@@ -106,7 +134,9 @@ class PathVertexStep {
   // The clamp of light reaching the camera through the ray that found it: direct for the camera
   // ray and the first vertex's rays (at most one scattering), indirect after.
   float emission_limit(const Path& path) const { return path.bounce <= 1 ? direct_limit_ : indirect_limit_; }
-  Color clamp(const Color& contribution, float sum_limit) const;
+  Color clamp(const Color& contribution, float sum_limit) const {
+    return kLightPathControls && clamping_ ? clamped(contribution, sum_limit) : contribution;
+  }
 
   // w_b, the weight of emission a BSDF or phase sample found: in full after the camera or a
   // specular vertex, else against the light sampling that could have found the same point, whose
@@ -127,7 +157,7 @@ class PathVertexStep {
 
   void add_emission(const Path& path, SampleResult& result, const Color& radiance, std::uint32_t light,
                     const Vec3& on_light, const Color& beta);
-  void add_escaped_light(const Path& path, const Ray& ray, SampleResult& result, const Color& beta);
+  void add_escaped_light(const Path& path, const Ray& ray, SampleResult& result);
   const PathLightSample* sample_light(std::size_t vertex, const Vec3& position, const VertexSamples& u,
                                       std::uint32_t group);
   void queue_light_sample(std::uint32_t sample, SpawnOrigins& origins, const SurfaceBsdf& surface, const Vec3& wo,
@@ -152,6 +182,10 @@ class PathVertexStep {
   float direct_limit_, indirect_limit_;  // clamp_sum_limit of the clamps
   bool clamping_;                        // either clamp on: a contribution's sum is worth computing
   float filter_glossy_;                  // 0: off
+  int max_depth_;
+  // Work only some scenes ask for: the per-kind counts (a limit below max_depth), Filter Glossy.
+  bool lobe_limits_;
+  bool filtering_glossy_;
 };
 
 // Shadow rays nearer than this fraction of the way to a sampled point stop short of it, so the

@@ -14,22 +14,7 @@ inline MediumPoint medium_point(const HomogeneousMedium& medium, const Vec3&) {
   return {medium.sigma_a, medium.sigma_s, medium.emission, medium.anisotropy};
 }
 
-// Its one segment, then nothing.
-class HomogeneousMajorants {
- public:
-  HomogeneousMajorants(float t_min, float t_max, float sigma_maj) : segment_{t_min, t_max, sigma_maj} {}
-  std::optional<MajorantSegment> next() {
-    if (done_) return std::nullopt;
-    done_ = true;
-    return segment_;
-  }
-
- private:
-  MajorantSegment segment_;
-  bool done_ = false;
-};
-
-inline HomogeneousMajorants majorants(const HomogeneousMedium& medium, const Ray& ray, float t_max) {
+inline SingleMajorant majorants(const HomogeneousMedium& medium, const Ray& ray, float t_max) {
   return {ray.tnear, t_max, max_component(medium.sigma_a + medium.sigma_s)};
 }
 

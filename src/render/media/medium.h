@@ -2,6 +2,7 @@
 // The closed set of medium kinds (scene/medium_kinds.h) with their render sides registered: each
 // kind's include below, and the static_assert names any function of render/media/medium_interface.h
 // that a kind lacks.
+#include "absorbing_medium.h"
 #include "homogeneous_medium.h"
 #include "medium_interface.h"
 #include "rtpro/scene/medium_kinds.h"

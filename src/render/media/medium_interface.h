@@ -35,6 +35,21 @@ struct MajorantSegment {
   float sigma_maj;  // per scene unit
 };
 
+// The majorants of a medium bounded by one number along the whole ray: one segment, then nothing.
+class SingleMajorant {
+ public:
+  SingleMajorant(float t_min, float t_max, float sigma_maj) : segment_{t_min, t_max, sigma_maj} {}
+  std::optional<MajorantSegment> next() {
+    if (done_) return std::nullopt;
+    done_ = true;
+    return segment_;
+  }
+
+ private:
+  MajorantSegment segment_;
+  bool done_ = false;
+};
+
 // A medium's coefficients at a point (per scene unit; the phase function is Henyey–Greenstein).
 struct MediumPoint {
   Color sigma_a, sigma_s;

@@ -13,18 +13,18 @@ namespace rtpro {
 
 struct MediumStack {
   static constexpr std::uint8_t kCapacity = 4;
-  std::array<std::uint32_t, kCapacity> media{};
+  std::array<MediumIndex, kCapacity> media{};
   std::uint8_t depth = 0;
 
   // The medium the path is in (kNoMedium: vacuum); `world` outside every entry.
-  std::uint32_t current(std::uint32_t world) const { return depth > 0 ? media[depth - 1] : world; }
+  MediumIndex current(MediumIndex world) const { return depth > 0 ? media[depth - 1] : world; }
 
-  void enter(std::uint32_t medium) {
+  void enter(MediumIndex medium) {
     if (depth == kCapacity) --depth;
     media[depth++] = medium;
   }
   // A path leaving what it never entered (its camera was inside) stays where it is.
-  void leave(std::uint32_t medium) {
+  void leave(MediumIndex medium) {
     for (int i = depth - 1; i >= 0; --i)
       if (media[i] == medium) {
         for (int j = i; j + 1 < depth; ++j) media[j] = media[j + 1];
@@ -33,7 +33,7 @@ struct MediumStack {
       }
   }
   // Crossing a surface whose inside is `interior`, entering it when `front_face`.
-  void cross(std::uint32_t interior, bool front_face) {
+  void cross(MediumIndex interior, bool front_face) {
     if (front_face) enter(interior);
     else leave(interior);
   }

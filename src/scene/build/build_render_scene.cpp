@@ -8,6 +8,7 @@
 #include "gltf_asset.h"
 #include "gltf_loader.h"
 #include "material_textures.h"
+#include "subdivided_mesh.h"
 
 #include <algorithm>
 #include <chrono>
@@ -35,20 +36,26 @@ WhittedMaterial whitted_material(const MaterialDesc& m, const ColorTexture& base
 }
 
 // What the Whitted integrator shows of a medium inside glass: absorption only, by its extinction
-// (what it scatters away counts as lost), as the glass's transmittance over one scene unit.
-Color whitted_transmittance(const Medium& medium) {
-  return std::visit(
-      [](const HomogeneousMedium& m) {
-        const Color sigma_t = m.sigma_a + m.sigma_s;
-        return Color{std::exp(-sigma_t.x), std::exp(-sigma_t.y), std::exp(-sigma_t.z)};
-      },
-      medium);
+// (what it scatters away counts as lost), as the glass's transmittance over a distance.
+void show_to_whitted(const Medium& medium, Dielectric& glass) {
+  std::visit(Overloaded{[&](const HomogeneousMedium& m) {
+                          const Color sigma_t = m.sigma_a + m.sigma_s;
+                          glass.transmittance = {std::exp(-sigma_t.x), std::exp(-sigma_t.y), std::exp(-sigma_t.z)};
+                          glass.transmittance_distance = 1.0f;
+                        },
+                        [&](const AbsorbingMedium& m) {
+                          glass.transmittance = m.transmittance;
+                          glass.transmittance_distance = m.distance;
+                        }},
+             medium);
 }
 
 class RenderSceneBuilder {
  public:
-  RenderSceneBuilder(const SceneDescription& description, SceneBuildReport* report)
-      : description_(description), report_(report) {}
+  RenderSceneBuilder(const SceneDescription& description, SceneBuildReport* report, const SceneBuildOptions& options)
+      : description_(description),
+        report_(report), subdivision_{description.camera, options,
+                                      options.geometry_budget ? options.geometry_budget : default_memory_budget()} {}
 
   RenderScene build() {
     scene_.camera = make_render_camera(description_.camera);
@@ -87,24 +94,26 @@ class RenderSceneBuilder {
     material.whitted = whitted_material(m, material.base_color);
     material.index_matched = std::holds_alternative<InterfaceSurface>(material.model);
     material.interior = interior_medium(m, material);
-    if (m.interior && material.whitted.glass)
-      material.whitted.glass->transmittance = whitted_transmittance(*m.interior);
+    if (m.interior && material.whitted.glass) show_to_whitted(*m.interior, *material.whitted.glass);
     scene_.materials.push_back(std::move(material));
     scene_.material_names.push_back(name);
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);
   }
 
-  std::uint32_t add_medium(const Medium& medium) {
+  MediumIndex add_medium(const Medium& medium) {
+    if (scene_.media.size() == kNoMedium)
+      throw InputError("the scene has more than " + std::to_string(kNoMedium) +
+                       " media (interiors, tinted glass and the world's medium together): the most a scene holds");
     scene_.media.push_back(medium);
-    return static_cast<std::uint32_t>(scene_.media.size() - 1);
+    return static_cast<MediumIndex>(scene_.media.size() - 1);
   }
 
   // The medium a material's surface bounds: its `interior:`; else a glass's absorption (vacuum
   // when clear) and an interface's vacuum; else none.
-  std::optional<std::uint32_t> interior_medium(const MaterialDesc& m, const Material& material) {
+  std::optional<MediumIndex> interior_medium(const MaterialDesc& m, const Material& material) {
     if (m.interior) return add_medium(*m.interior);
     if (const Dielectric* glass = interior_of(material)) {
-      const std::optional<HomogeneousMedium> absorbing = beer_lambert_medium(*glass);
+      const std::optional<AbsorbingMedium> absorbing = glass_absorption(*glass);
       return absorbing ? add_medium(*absorbing) : kNoMedium;
     }
     if (material.index_matched) return kNoMedium;
@@ -170,12 +179,23 @@ class RenderSceneBuilder {
     LoadedMesh loaded = [&] {
       if (desc.loaded) return *desc.loaded;
       try {
-        return load_mesh_file(desc.file, MeshLoadOptions{desc.normals});
+        return load_mesh_file(desc.file, MeshLoadOptions{desc.normals, desc.subdivision.has_value()});
       } catch (const InputError& e) {
         if (!e.where().file.empty()) throw;
         throw InputError(desc.where, e.message());
       }
     }();
+    if (desc.subdivision) {
+      const PolygonCage cage = loaded.cage ? *loaded.cage : cage_of_triangles(loaded.mesh);
+      loaded.cage.reset();
+      TriangleMesh refined =
+          subdivide(cage, desc.subdivision, desc.displacement, desc.file, desc.where, loaded.stats.warnings);
+      refined.name = loaded.mesh.name;
+      refined.material = loaded.mesh.material;
+      loaded.mesh = std::move(refined);
+      loaded.stats.vertices = loaded.mesh.vertices.size();
+      loaded.stats.triangles = loaded.mesh.triangles.size();
+    }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     TriangleMesh mesh = std::move(loaded.mesh);
@@ -196,6 +216,13 @@ class RenderSceneBuilder {
     }
     if (report_) report_->meshes.push_back({desc.file.string(), loaded.stats, seconds});
     return mesh;
+  }
+
+  TriangleMesh subdivide(const PolygonCage& cage, const std::optional<SubdivisionDesc>& subdivision,
+                         const std::optional<DisplacementDesc>& displacement, const std::filesystem::path& file,
+                         const SourceLocation& where, std::vector<std::string>& warnings) {
+    return subdivide_cage(cage, *subdivision, displacement ? &*displacement : nullptr, file.string(), where,
+                          subdivision_, warnings);
   }
 
   // The prototype holding an object's own shapes, created on first use; none if it has none.
@@ -234,7 +261,9 @@ class RenderSceneBuilder {
   };
 
   const PlacedGltf& gltf_prototypes(const GltfDesc& desc) {
-    const auto key = std::make_tuple(desc.file, int(desc.normals), desc.material);
+    // A subdivided entry's meshes are its own.
+    const auto key = std::make_tuple(desc.file, int(desc.normals), desc.material,
+                                     desc.subdivision ? desc.where.str() : std::string());
     if (const auto found = gltfs_.find(key); found != gltfs_.end()) return found->second;
     const auto start = std::chrono::steady_clock::now();
     std::shared_ptr<const GltfAsset> asset = desc.loaded;
@@ -263,7 +292,7 @@ class RenderSceneBuilder {
         placed.prototype_of_mesh.emplace_back();
         continue;
       }
-      TriangleMesh mesh = source;
+      TriangleMesh mesh = desc.subdivision ? subdivided_gltf_mesh(desc, source) : source;
       mesh.material = material(mesh.material);
       if (desc.material != kNoMaterial) mesh.triangle_materials = {};
       for (std::uint32_t& m : mesh.triangle_materials) m = material(m);
@@ -273,6 +302,19 @@ class RenderSceneBuilder {
       placed.prototype_of_mesh.emplace_back(static_cast<std::uint32_t>(scene_.prototypes.size() - 1));
     }
     return gltfs_.emplace(key, std::move(placed)).first->second;
+  }
+
+  // glTF has no subdivision of its own: an entry asking for one refines each of the file's meshes,
+  // its triangles welded into a cage.
+  TriangleMesh subdivided_gltf_mesh(const GltfDesc& desc, const TriangleMesh& source) {
+    std::vector<std::string> warnings;
+    TriangleMesh mesh =
+        subdivide(cage_of_triangles(source), desc.subdivision, desc.displacement, desc.file, desc.where, warnings);
+    mesh.name = source.name;
+    mesh.material = source.material;
+    if (report_)
+      for (std::string& warning : warnings) report_->meshes.back().stats.warnings.push_back(std::move(warning));
+    return mesh;
   }
 
   void place_gltf(const GltfDesc& desc, const Affine& to_world) {
@@ -314,9 +356,10 @@ class RenderSceneBuilder {
   static constexpr std::uint32_t kInvalidPrototype = ~0u;
   const SceneDescription& description_;
   SceneBuildReport* report_;
+  SubdivisionContext subdivision_;
   RenderScene scene_;
   std::vector<std::optional<std::uint32_t>> prototype_of_object_;
-  std::map<std::tuple<std::filesystem::path, int, std::uint32_t>, PlacedGltf> gltfs_;
+  std::map<std::tuple<std::filesystem::path, int, std::uint32_t, std::string>, PlacedGltf> gltfs_;
   std::size_t flattened_ = 0;
   const SourceLocation scene_file_{description_.file.string()};  // where the world's spheres are
   std::vector<GeometryOrigin> top_origins_;                      // where each top-level geometry came from
@@ -329,8 +372,9 @@ class RenderSceneBuilder {
 
 }  // namespace
 
-RenderScene build_render_scene(const SceneDescription& description, SceneBuildReport* report) {
-  return RenderSceneBuilder(description, report).build();
+RenderScene build_render_scene(const SceneDescription& description, SceneBuildReport* report,
+                               const SceneBuildOptions& options) {
+  return RenderSceneBuilder(description, report, options).build();
 }
 
 }  // namespace rtpro

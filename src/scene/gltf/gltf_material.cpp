@@ -141,7 +141,8 @@ void read_extensions(const tinygltf::Material& m, PrincipledParams& p) {
 
 // KHR_materials_volume: a material of thickness > 0 bounds a volume whose absorption makes white
 // light attenuationColor after attenuationDistance, σa = −ln(attenuationColor) / attenuationDistance
-// (the extension's own definition); an infinite distance (its default) absorbs nothing. Thickness
+// (the extension's own definition: an AbsorbingMedium); an infinite distance (its default) absorbs
+// nothing. Thickness
 // 0 is a thin wall, no volume. The thickness itself only serves rasterisers, which have no inside.
 std::optional<Medium> volume_interior(const tinygltf::Material& m) {
   const tinygltf::Value* volume = extension(m, "KHR_materials_volume");
@@ -149,7 +150,7 @@ std::optional<Medium> volume_interior(const tinygltf::Material& m) {
   const float distance = number_of(*volume, "attenuationDistance", std::numeric_limits<float>::infinity());
   const Color color = color_of(*volume, "attenuationColor", Color(1.0f));
   if (!(distance > 0.0f) || !std::isfinite(distance)) return HomogeneousMedium{};
-  return beer_lambert_medium(Dielectric{1.0f, color, distance}).value_or(HomogeneousMedium{});
+  return AbsorbingMedium{color, distance};
 }
 
 }  // namespace

@@ -285,9 +285,16 @@ class NodeWalker {
     const Vec3 direction = world.apply_vector(Vec3(0, 0, -1));
     out.direction = length(direction) > 0.0f ? normalize(direction) : Vec3(0, -1, 0);
     out.color = Color(1.0f, 1.0f, 1.0f);
-    if (light.color.size() == 3 && all_finite(light.color))
-      out.color = Color(float(std::max(light.color[0], 0.0)), float(std::max(light.color[1], 0.0)),
-                        float(std::max(light.color[2], 0.0)));
+    // Refused, not clamped: a channel clamped to 0 changes the light's hue without a word.
+    if (!light.color.empty()) {
+      const bool valid = light.color.size() == 3 && all_finite(light.color) &&
+                         std::all_of(light.color.begin(), light.color.end(),
+                                     [](double c) { return c >= 0.0 && c <= kMaxLightIntensity; });
+      if (!valid)
+        reader_.fail("extensions.KHR_lights_punctual.lights[" + std::to_string(index) + "].color",
+                     "must be three finite numbers from 0 to 1e9 (linear RGB)");
+      out.color = Color(float(light.color[0]), float(light.color[1]), float(light.color[2]));
+    }
     // Refused, not zeroed: a light that silently goes out leaves a black image and exit 0.
     if (!(light.intensity >= 0.0 && light.intensity <= kMaxLightIntensity))
       reader_.fail("extensions.KHR_lights_punctual.lights[" + std::to_string(index) + "].intensity",

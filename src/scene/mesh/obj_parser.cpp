@@ -10,6 +10,7 @@
 #include "mesh_triangulation.h"
 #include "mesh_normals.h"
 #include "obj_assembly.h"
+#include "obj_cage.h"
 #include "obj_chunk.h"
 #include "obj_materials.h"
 
@@ -266,6 +267,14 @@ LoadedMesh load_obj_file(const fs::path& file, const MeshLoadOptions& options, s
   for_each_chunk(chunks, [&out](Chunk& chunk) { parse_chunk(chunk, out); });
   for (const Chunk& chunk : chunks)
     if (chunk.error) std::rethrow_exception(chunk.error);
+  std::shared_ptr<PolygonCage> cage;
+  if (options.keep_cage) {
+    const bool cage_texcoords = totals.texcoords > 0 && std::all_of(chunks.begin(), chunks.end(), [](const Chunk& c) {
+                                  return c.every_corner_has_texcoord;
+                                });
+    cage = std::make_shared<PolygonCage>(
+        gather_cage(chunks, triangle_slots.data(), parts.positions, cage_texcoords ? &parts.texcoords : nullptr));
+  }
   for_each_chunk(chunks, [&parts](Chunk& chunk) { triangulate_polygons(chunk, parts.positions); });
 
   std::vector<std::size_t> offsets{0};
@@ -331,6 +340,10 @@ LoadedMesh load_obj_file(const fs::path& file, const MeshLoadOptions& options, s
   stats.vertices = mesh.vertices.size();
   stats.triangles = mesh.triangles.size();
   stats.materials = loaded.materials.size();
+  if (cage) {
+    assign_cage_materials(*cage, chunks, offsets, mesh);
+    loaded.cage = std::move(cage);
+  }
   return loaded;
 }
 

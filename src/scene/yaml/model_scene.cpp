@@ -42,7 +42,8 @@ bool material_in_use(const SceneDescription& scene, std::uint32_t index) {
 // The override that wrote materials.NAME (the first that names it, or the whole `materials`).
 std::string override_of_material(const std::vector<std::string>& overrides, const std::string& name) {
   for (const std::string& o : overrides)
-    if (o.starts_with("materials." + name + ".") || o.starts_with("materials." + name + "=")) return o;
+    for (const std::string& spelt : {name, '"' + name + '"', '\'' + name + '\''})
+      if (o.starts_with("materials." + spelt + ".") || o.starts_with("materials." + spelt + "=")) return o;
   for (const std::string& o : overrides)
     if (o.starts_with("materials")) return o;
   return overrides.empty() ? std::string() : overrides.front();

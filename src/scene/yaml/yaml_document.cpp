@@ -92,15 +92,38 @@ YamlNodePtr with_value_at(YamlNodeArena& arena, YamlNodePtr node, const std::vec
   throw InputError(at.location(), parent + " is a single value, so it has no key '" + segment + "'");
 }
 
-std::vector<std::string> split_key(const std::string& key, const YamlPosition& at) {
+struct OverrideKey {
   std::vector<std::string> segments;
-  std::size_t start = 0;
+  std::size_t equals = 0;  // where the value starts, less one
+};
+
+// A --set key: names separated by dots, ended by '='. A name with a dot or '=' in it (Blender
+// names materials "Material.001") is quoted, "..." or '...', as one segment.
+OverrideKey split_override_key(const std::string& text, const YamlPosition& at) {
+  OverrideKey key;
+  std::size_t pos = 0;
   while (true) {
-    const std::size_t dot = key.find('.', start);
-    segments.push_back(key.substr(start, dot - start));
-    if (segments.back().empty()) throw InputError(at.location(), "empty key name in '" + key + "'");
-    if (dot == std::string::npos) return segments;
-    start = dot + 1;
+    if (pos < text.size() && (text[pos] == '"' || text[pos] == '\'')) {
+      const std::size_t close = text.find(text[pos], pos + 1);
+      if (close == std::string::npos)
+        throw InputError(at.location(), "a quoted key name has no closing " + std::string(1, text[pos]));
+      key.segments.push_back(text.substr(pos + 1, close - pos - 1));
+      pos = close + 1;
+    } else {
+      const std::size_t end = std::min(text.find('.', pos), text.find('=', pos));
+      key.segments.push_back(text.substr(pos, end == std::string::npos ? std::string::npos : end - pos));
+      pos = end;
+    }
+    if (key.segments.back().empty()) throw InputError(at.location(), "empty key name");
+    if (pos >= text.size() || (text[pos] != '.' && text[pos] != '='))
+      throw InputError(at.location(),
+                       "expected key=value, e.g. render.spp=64 (a name with a dot in it is quoted: "
+                       "materials.\"Material.001\".color=[1,0,0])");
+    if (text[pos] == '=') {
+      key.equals = pos;
+      return key;
+    }
+    ++pos;
   }
 }
 
@@ -138,10 +161,7 @@ YamlDocument YamlDocument::parse_included(std::string_view text, const std::stri
 
 void YamlDocument::apply_override(const std::string& override_text) {
   const YamlPosition at{&sources_.emplace_back(override_source(override_text)), 0, 0};
-  const std::size_t equals = override_text.find('=');
-  if (equals == std::string::npos || equals == 0)
-    throw InputError(at.location(), "expected key=value, e.g. render.spp=64");
-  const std::vector<std::string> segments = split_key(override_text.substr(0, equals), at);
+  const auto [segments, equals] = split_override_key(override_text, at);
   ParsedTree value = parse_tree(std::string_view(override_text).substr(equals + 1), at.source, false, *arena_);
   if (value.saw_dollar || segments.front() == "variables") has_variables_ = true;
   root_ = with_value_at(*arena_, root_, segments, 0, value.root, at);

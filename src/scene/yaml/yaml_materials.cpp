@@ -153,7 +153,8 @@ bool colour_is_reflectance(const MaterialParams& kind) {
   return std::visit(
       Overloaded{[](const PhongParams&) { return false; }, [](const DiffuseParams&) { return true; },
                  [](const ConductorParams&) { return true; }, [](const DielectricParams&) { return false; },
-                 [](const PrincipledParams&) { return true; }, [](const InterfaceParams&) { return false; }},
+                 [](const PrincipledParams&) { return true; }, [](const HairParams&) { return true; },
+                 [](const InterfaceParams&) { return false; }},
       kind);
 }
 

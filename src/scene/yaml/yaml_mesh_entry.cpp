@@ -4,6 +4,7 @@
 #include "rtpro/core/closest_match.h"
 #include "yaml_light_linking.h"
 #include "yaml_shape_entry.h"
+#include "yaml_subdivision.h"
 
 #include <algorithm>
 #include <cctype>
@@ -48,12 +49,27 @@ std::filesystem::path resolve_mesh_file(const YamlNode& node, const std::string&
   return file;
 }
 
+// `displacement:` moves the refined vertices, so it needs `subdivision:` (a level of 0 keeps the
+// cage's faces, moved to the limit surface).
+void read_subdivision_keys(const MappingReader& mesh, const ShapeEntryReader& reader, MeshDesc& desc) {
+  if (const YamlNode* subdivision = mesh.optional("subdivision"))
+    desc.subdivision = read_subdivision(*subdivision, mesh.field("subdivision"));
+  const YamlNode* displacement = mesh.optional("displacement");
+  if (!displacement) return;
+  if (!desc.subdivision)
+    fail_at(*displacement, mesh.field("displacement") + " needs `subdivision:` (level 0 for the cage as it is)");
+  const std::filesystem::path folder =
+      displacement->at.line > 0 ? std::filesystem::path(*displacement->at.source).parent_path() : reader.folder();
+  desc.displacement = read_displacement(*displacement, mesh.field("displacement"), folder);
+}
+
 }  // namespace
 
 // An OBJ or PLY file is one mesh; a glTF file is a scene of its own, placed as a whole.
 void read_shape_entry(const YamlNode& node, ShapeEntryReader& reader, std::vector<MeshDesc>& meshes) {
   const MappingReader mesh(node, "mesh",
-                           {"type", "file", "material", "normals", "interior", kLightLinkingKey, kShadowLinkingKey});
+                           {"type", "file", "material", "normals", "subdivision", "displacement", "interior",
+                            kLightLinkingKey, kShadowLinkingKey});
   MeshDesc desc;
   desc.file = resolve_mesh_file(mesh.required("file"), mesh.field("file"), reader);
   if (const YamlNode* material = mesh.optional("material"))
@@ -63,8 +79,10 @@ void read_shape_entry(const YamlNode& node, ShapeEntryReader& reader, std::vecto
     desc.normals = read_normals_mode(*normals, mesh.field("normals"));
   desc.where = node.at.location();
   desc.linking = reader.read_linking(mesh);
+  read_subdivision_keys(mesh, reader, desc);
   if (is_gltf_file(desc.file))
-    reader.object().gltfs.push_back({desc.file, desc.material, desc.where, desc.normals, nullptr, desc.linking});
+    reader.object().gltfs.push_back({desc.file, desc.material, desc.where, desc.normals, nullptr, desc.linking,
+                                     desc.subdivision, desc.displacement});
   else meshes.push_back(std::move(desc));
 }
 

@@ -306,7 +306,7 @@ TEST(MpiJob, RankStoppedAfterItsLastTileEndsTheJobWithinTheRankTimeout) {
   const auto dir = test::scratch_dir();
   const auto scene = test::write_file("scene.yaml", R"(rtpro: 1
 camera: {position: [0, 1.5, 6], look_at: [0, 0.5, 0], fov: 40, resolution: [12, 12]}
-render: {spp: 65536, max_depth: 8, seed: 9, sampler: stratified, integrator: path}
+render: {spp: 65536, max_depth: 2, seed: 9, sampler: stratified, integrator: path}
 lights: [{type: point, position: [4, 6, 5], intensity: 1}]
 world:
   - {type: sphere, center: [0, -1000, 0], radius: 1000}
