@@ -151,7 +151,8 @@ PrincipledBsdf::Outgoing PrincipledBsdf::outgoing(const Vec3& wo) const {
     const float glass = rough_glass_ ? 0.0f : transmission_ * channel_mean(glass_reflectance);
     estimate[kSpecular] = dielectric * ((1.0f - transmission_) * channel_mean(o.specular_albedo) + glass);
   }
-  const float base = dielectric * (1.0f - transmission_) * channel_mean(base_color_ * (Color(1.0f) - o.specular_albedo));
+  const float base =
+      dielectric * (1.0f - transmission_) * channel_mean(base_color_ * (Color(1.0f) - o.specular_albedo));
   if (active_[kDiffuse]) estimate[kDiffuse] = base * (1.0f - subsurface_);
   if (active_[kSubsurface]) estimate[kSubsurface] = base * subsurface_;
   if (active_[kTransmission]) {
