@@ -18,6 +18,11 @@ namespace rtpro {
 struct MaterialDesc;  // scene/description.h
 class MappingReader;  // src/scene/yaml/yaml_reader.h
 
+// How a subsurface radius becomes the mean free path under the surface, as Cycles' two random
+// walks (render/media/subsurface_medium.h): scaled by the surface albedo, so that the radius is how
+// far light diffuses ("Random Walk"), or by 1/(4π) whatever the albedo ("Random Walk (Fixed Radius)").
+enum class SubsurfaceMethod { kRandomWalk, kRandomWalkFixedRadius };
+
 // The base colour is the material's colour.
 struct PrincipledParams {
   // glTF's default roughness is 1 and OpenPBR's 0.3; a principled material without one is in between.
@@ -31,6 +36,15 @@ struct PrincipledParams {
   float coat_roughness = 0.0f;       // KHR_materials_clearcoat clearcoatRoughnessFactor
   Color fuzz_color{0.0f};            // KHR_materials_sheen sheenColorFactor
   float fuzz_roughness = 0.0f;       // KHR_materials_sheen sheenRoughnessFactor
+  // Random-walk subsurface scattering (render/integrators/subsurface_walk.h), with Blender's
+  // Principled BSDF's names and defaults: the share of the diffuse base that scatters under the
+  // surface, how far light scatters there per channel (times the scale), and the anisotropy of
+  // its phase function.
+  float subsurface = 0.0f;
+  Color subsurface_radius{1.0f, 0.2f, 0.1f};
+  float subsurface_scale = 0.05f;
+  float subsurface_anisotropy = 0.0f;
+  SubsurfaceMethod subsurface_method = SubsurfaceMethod::kRandomWalk;
   // glTF metallicRoughnessTexture: roughness × its green channel, metalness × its blue one.
   std::optional<TextureSlotDesc> metallic_roughness_texture;
   // glTF normalTexture: a tangent-space normal map (+x along increasing u, +y along increasing v
@@ -48,6 +62,10 @@ struct PrincipledSurface {
   float coat_weight, coat_roughness;
   Color fuzz_color;
   float fuzz_roughness;
+  float subsurface;
+  Color subsurface_radius;  // subsurface_radius × subsurface_scale
+  float subsurface_anisotropy;
+  SubsurfaceMethod subsurface_method;
   // roughness × green and metalness × blue of an image (its tint is (1, roughness, metalness)).
   std::optional<ImageTexture> metallic_roughness;
   std::optional<NormalMap> normal_map;

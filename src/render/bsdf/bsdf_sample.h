@@ -14,8 +14,10 @@ namespace rtpro {
 
 // The kind of lobe a sample took, as Cycles counts a path's bounces against its per-kind limits:
 // diffuse (Lambert, sheen), glossy (reflection off a microfacet or mirror lobe, a rough metal's
-// multiple-scattering lobe included) and transmission (refraction, rough or smooth).
-enum class BsdfLobe : std::uint8_t { kDiffuse, kGlossy, kTransmission };
+// multiple-scattering lobe included) and transmission (refraction, rough or smooth). A subsurface
+// sample enters the surface for a random walk under it (render/integrators/subsurface_walk.h): its
+// f·|cos θi|/pdf is the walk's starting weight, its wi the inward normal.
+enum class BsdfLobe : std::uint8_t { kDiffuse, kGlossy, kTransmission, kSubsurface };
 
 struct BsdfSample {
   // The BSDF value without the cosine. For a delta lobe it is (lobe weight) / |cos θi|, so that

@@ -1,5 +1,7 @@
 #include "microfacet.h"
 
+#include "bsdf_sample.h"
+
 #include "rtpro/core/math_constants.h"
 #include "table_coordinate.h"
 #include "visible_normal_quadrature.h"
@@ -141,6 +143,31 @@ float ggx_average_albedo(float alpha) {
   const AlbedoTable& table = albedo_table();
   const TableCoordinate a = albedo_table_coordinate(alpha);
   return table_lerp(a.fraction, table.e_average[a.index], table.e_average[a.index + 1]);
+}
+
+std::optional<Vec3> reflection_normal(const Vec3& wo, const Vec3& wi) {
+  const Vec3 half = wo + wi;
+  const float half_length2 = dot(half, half);
+  if (half_length2 == 0.0f) return std::nullopt;
+  const Vec3 wm = half / std::sqrt(half_length2);
+  return wm.z < 0.0f ? -wm : wm;
+}
+
+float microfacet_reflection(const GgxDistribution& ggx, const Vec3& wo, const Vec3& wi, const Vec3& wm) {
+  return ggx.d(wm) * ggx.g(wo, wi) / (4.0f * abs_cos_theta(wo) * abs_cos_theta(wi));
+}
+
+float reflection_density(const GgxDistribution& ggx, const Vec3& wo, const Vec3& wm) {
+  const float wo_dot_wm = std::fabs(dot(wo, wm));
+  return wo_dot_wm == 0.0f ? 0.0f : ggx.visible_normal_pdf(wo, wm) / (4.0f * wo_dot_wm);
+}
+
+std::optional<Vec3> sample_reflection(const GgxDistribution& ggx, const Vec3& wo, Sample2D u) {
+  const Vec3 wi = -reflect(wo, ggx.sample_visible_normal(wo, u));
+  // Facets near the horizon reflect some directions into the surface: that light is lost to
+  // single scattering (the albedo scaling hands it to the layers below).
+  if (!same_hemisphere(wo, wi)) return std::nullopt;
+  return wi;
 }
 
 }  // namespace rtpro

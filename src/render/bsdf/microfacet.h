@@ -6,6 +6,7 @@
 #include "rtpro/render/sampler.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace rtpro {
 
@@ -52,5 +53,15 @@ float ggx_directional_albedo(float mu, float alpha);
 // E_avg(α) = 2 ∫ E(μ, α) μ dμ, exactly the integral of the table's interpolation, so a lobe built
 // from 1 − E(μ) normalised by 1 − E_avg carries exactly the energy it should.
 float ggx_average_albedo(float alpha);
+
+// A GGX reflection lobe's pieces, for the lobes that mix one with others:
+// The facet normal that reflects wo into wi, facing +z, or nothing for wi = −wo.
+std::optional<Vec3> reflection_normal(const Vec3& wo, const Vec3& wi);
+// D G / (4 |cos θo| |cos θi|): a GGX reflection without its Fresnel term.
+float microfacet_reflection(const GgxDistribution& ggx, const Vec3& wo, const Vec3& wi, const Vec3& wm);
+// Visible normals reflected: dωm/dωi = 1 / (4 |wo·wm|).
+float reflection_density(const GgxDistribution& ggx, const Vec3& wo, const Vec3& wm);
+// A reflected direction from a visible normal; nothing where the facet sends it into the surface.
+std::optional<Vec3> sample_reflection(const GgxDistribution& ggx, const Vec3& wo, Sample2D u);
 
 }  // namespace rtpro

@@ -27,39 +27,11 @@ constexpr float kMinLobeShare = 0.02f;
 float clamp01(float x) { return std::clamp(x, 0.0f, 1.0f); }
 Color clamp01(const Color& c) { return {clamp01(c.x), clamp01(c.y), clamp01(c.z)}; }
 
-// The facet normal that reflects wo into wi, facing +z, or nothing for wi = −wo.
-std::optional<Vec3> reflection_normal(const Vec3& wo, const Vec3& wi) {
-  const Vec3 half = wo + wi;
-  const float half_length2 = dot(half, half);
-  if (half_length2 == 0.0f) return std::nullopt;
-  const Vec3 wm = half / std::sqrt(half_length2);
-  return wm.z < 0.0f ? -wm : wm;
-}
-
-// D G / (4 |cos θo| |cos θi|): a GGX reflection without its Fresnel term.
-float microfacet_reflection(const GgxDistribution& ggx, const Vec3& wo, const Vec3& wi, const Vec3& wm) {
-  return ggx.d(wm) * ggx.g(wo, wi) / (4.0f * abs_cos_theta(wo) * abs_cos_theta(wi));
-}
-
-// Visible normals reflected: dωm/dωi = 1 / (4 |wo·wm|).
-float reflection_density(const GgxDistribution& ggx, const Vec3& wo, const Vec3& wm) {
-  const float wo_dot_wm = std::fabs(dot(wo, wm));
-  return wo_dot_wm == 0.0f ? 0.0f : ggx.visible_normal_pdf(wo, wm) / (4.0f * wo_dot_wm);
-}
-
-std::optional<Vec3> sample_reflection(const GgxDistribution& ggx, const Vec3& wo, Sample2D u) {
-  const Vec3 wi = -reflect(wo, ggx.sample_visible_normal(wo, u));
-  // Facets near the horizon reflect some directions into the surface: that light is lost to
-  // single scattering (the albedo scaling hands it to the layers below).
-  if (!same_hemisphere(wo, wi)) return std::nullopt;
-  return wi;
-}
-
 }  // namespace
 
 PrincipledBsdf::PrincipledBsdf(const PrincipledParameters& p)
     : base_color_(clamp01(p.base_color)), metalness_(clamp01(p.metalness)),
-      transmission_(clamp01(p.transmission_weight)),
+      transmission_(clamp01(p.transmission_weight)), subsurface_(clamp01(p.subsurface_weight)),
       eta_(std::max(1.0f, p.ior)), ggx_{roughness_to_alpha(clamp01(p.roughness))},
       specular_f90_(clamp01(p.specular_weight)),
       coat_weight_(clamp01(p.coat_weight)), coat_ggx_{roughness_to_alpha(clamp01(p.coat_roughness))},
@@ -79,7 +51,8 @@ PrincipledBsdf::PrincipledBsdf(const PrincipledParameters& p)
   // The opaque part's reflection, and the glass part's where the glass lobe does not sample its
   // own: from inside, total internal reflection happens whatever the specular weight.
   active_[kSpecular] = dielectric && ((reflects && transmission_ < 1.0f) || (transmission_ > 0.0f && !rough_glass_));
-  active_[kDiffuse] = dielectric && transmission_ < 1.0f && tinted;
+  active_[kDiffuse] = dielectric && transmission_ < 1.0f && tinted && subsurface_ < 1.0f;
+  active_[kSubsurface] = dielectric && transmission_ < 1.0f && tinted && subsurface_ > 0.0f;
   // Rough glass reflects even when black (total internal reflection); smooth glass only refracts here.
   active_[kTransmission] = dielectric && transmission_ > 0.0f && (tinted || rough_glass_);
   active_[kMetal] = metalness_ > 0.0f;
@@ -95,7 +68,8 @@ bool PrincipledBsdf::lobe_is_delta(Lobe lobe) const {
   switch (lobe) {
     case kCoat: return coat_ggx_.effectively_smooth();
     case kFuzz:
-    case kDiffuse: return false;
+    case kDiffuse:
+    case kSubsurface: return false;
     case kSpecular:
     case kMetal: return ggx_.effectively_smooth();
     // η = 1 bends nothing: the refraction is straight through, whatever α says.
@@ -151,7 +125,7 @@ float PrincipledBsdf::coat_fresnel(float cos_theta) const {
 PrincipledBsdf::Outgoing PrincipledBsdf::outgoing(const Vec3& wo) const {
   Outgoing o{};
   o.cos_o = abs_cos_theta(wo);
-  if (active_[kSpecular] || active_[kDiffuse])
+  if (active_[kSpecular] || active_[kDiffuse] || active_[kSubsurface])
     o.specular_albedo = ggx_schlick_albedo(o.cos_o, ggx_.alpha)(specular_f0_, specular_f90_);
   const float coat_albedo = active_[kCoat] ? ggx_schlick_albedo(o.cos_o, coat_ggx_.alpha)(kCoatF0, 1.0f) : 0.0f;
   const float fuzz_albedo = active_[kFuzz] ? fuzz_.albedo(o.cos_o) : 0.0f;
@@ -177,10 +151,10 @@ PrincipledBsdf::Outgoing PrincipledBsdf::outgoing(const Vec3& wo) const {
     const float glass = rough_glass_ ? 0.0f : transmission_ * channel_mean(glass_reflectance);
     estimate[kSpecular] = dielectric * ((1.0f - transmission_) * channel_mean(o.specular_albedo) + glass);
   }
-  if (active_[kDiffuse]) {
-    estimate[kDiffuse] =
-        dielectric * (1.0f - transmission_) * channel_mean(base_color_ * (Color(1.0f) - o.specular_albedo));
-  }
+  const float base =
+      dielectric * (1.0f - transmission_) * channel_mean(base_color_ * (Color(1.0f) - o.specular_albedo));
+  if (active_[kDiffuse]) estimate[kDiffuse] = base * (1.0f - subsurface_);
+  if (active_[kSubsurface]) estimate[kSubsurface] = base * subsurface_;
   if (active_[kTransmission]) {
     const float reflected = rough_glass_ ? channel_mean(glass_reflectance) : 0.0f;
     estimate[kTransmission] = dielectric * transmission_ * (reflected + channel_mean(glass_passed));
@@ -244,7 +218,7 @@ Color PrincipledBsdf::evaluate(const Vec3& wo, const Vec3& wi, const Outgoing& o
         const float passed = (1.0f - o.specular_albedo[c]) * (1.0f - albedo_i[c]);
         lambert[c] = base_color_[c] * (std::max(0.0f, passed) * diffuse_normalization_[c] * kInvPi);
       }
-      dielectric += lambert * (1.0f - transmission_);
+      dielectric += lambert * ((1.0f - transmission_) * (1.0f - subsurface_));
     }
     material += dielectric * (1.0f - metalness_);
   }
@@ -302,7 +276,8 @@ std::optional<Vec3> PrincipledBsdf::sample_direction(Lobe lobe, const Vec3& wo, 
       if (!s) return std::nullopt;
       return s->wi;
     }
-    case kLobeCount: break;
+    case kSubsurface:
+    case kLobeCount: break;  // the subsurface lobe has no direction to sample here
   }
   return std::nullopt;  // unreachable: the switch covers every lobe
 }
@@ -338,6 +313,15 @@ std::optional<BsdfSample> PrincipledBsdf::sample_delta(Lobe lobe, const Vec3& wo
   return BsdfSample{weight / o.cos_o, wi, probability, true, false, BsdfLobe::kGlossy};
 }
 
+// What enters under the surface: the Lambert lobe's energy without its colour, the path pointed
+// along the inward normal, a choice of lobe rather than a direction (pdf its probability).
+std::optional<BsdfSample> PrincipledBsdf::sample_subsurface(const Vec3& wo, const Outgoing& o) const {
+  const Color weight =
+      (Color(1.0f) - o.specular_albedo) * (o.below_fuzz * (1.0f - metalness_) * (1.0f - transmission_) * subsurface_);
+  const Vec3 inward{0.0f, 0.0f, wo.z > 0.0f ? -1.0f : 1.0f};
+  return BsdfSample{weight, inward, o.probability[kSubsurface], true, true, BsdfLobe::kSubsurface};
+}
+
 std::optional<BsdfSample> PrincipledBsdf::sample(const Vec3& wo, float u_lobe, Sample2D u) const {
   if (wo.z == 0.0f) return std::nullopt;
   const Outgoing o = outgoing(wo);
@@ -353,6 +337,7 @@ std::optional<BsdfSample> PrincipledBsdf::sample(const Vec3& wo, float u_lobe, S
   if (chosen < 0) return std::nullopt;
   const Lobe lobe = static_cast<Lobe>(chosen);
   const float u_within = std::clamp((u_lobe - share_start) / o.probability[lobe], 0.0f, kOneMinusEpsilon);
+  if (lobe == kSubsurface) return sample_subsurface(wo, o);
   if (lobe_is_delta(lobe)) return sample_delta(lobe, wo, o);
 
   const std::optional<Vec3> wi = sample_direction(lobe, wo, u_within, u);
@@ -379,6 +364,7 @@ Vec3 bsdf_from(const PrincipledSurface& p, const ColorTexture& base_color, const
   parameters.coat_roughness = p.coat_roughness;
   parameters.fuzz_color = p.fuzz_color;
   parameters.fuzz_roughness = p.fuzz_roughness;
+  parameters.subsurface_weight = p.subsurface;
   if (p.metallic_roughness) {
     const Color texel = evaluate(*p.metallic_roughness, point.tex_u, point.tex_v, textures);
     parameters.roughness = texel.y;
@@ -388,7 +374,7 @@ Vec3 bsdf_from(const PrincipledSurface& p, const ColorTexture& base_color, const
   // KHR_materials_specular's specularFactor 0 on a non-metal without other layers is the pure
   // Lambert base, by the extension's definition: the same f and pdf from the cheaper kind.
   if (p.specular_weight == 0.0f && parameters.metalness == 0.0f && p.transmission_weight == 0.0f &&
-      p.coat_weight == 0.0f && max_component(p.fuzz_color) == 0.0f)
+      p.coat_weight == 0.0f && max_component(p.fuzz_color) == 0.0f && p.subsurface == 0.0f)
     return lambert_surface(parameters.base_color, normal, out);
   out.bsdf = PrincipledBsdf(parameters);
   out.albedo = parameters.base_color;

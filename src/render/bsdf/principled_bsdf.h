@@ -8,8 +8,8 @@
 //   material =  mix(dielectric, metal, metalness)
 //     metal       ConductorBsdf::from_f0(base_color, α), with its Kulla-Conty compensation
 //     dielectric  GGX reflection with Schlick's F, F0 = min(((ior−1)/(ior+1))²·specular_color, 1)·specular_weight
-//                 and F90 = specular_weight, over mix(Lambert(base_color), rough transmission tinted
-//                 by base_color, transmission_weight)
+//                 and F90 = specular_weight, over mix(mix(Lambert(base_color), subsurface, subsurface),
+//                 rough transmission tinted by base_color, transmission_weight)
 //
 // with α = roughness² (the same GGX roughness for the specular layer, the metal and the
 // transmission). A layer passes on what it does not reflect, and that is what the layers below
@@ -25,6 +25,11 @@
 // A white dielectric thus reflects all it receives at any roughness, where Appendix B's
 // per-half-vector fresnel_mix, with the base weighted by 1 − F(V·H), reflects up to 1.35 at grazing
 // incidence (roughness 0.3, μo = 0.03) and 0.96 at normal incidence.
+//
+// The subsurface lobe receives what the Lambert lobe would, base_color·(1 − E(μo)), without the
+// base colour: a sample of it hands the path to a random walk under the surface, whose scattering
+// albedo makes that colour (render/integrators/subsurface_walk.h); it has no f of its own to
+// evaluate, so light sampling at the entry point leaves it out (the walk's exit samples lights).
 //
 // Surfaces whose α is below kSmoothAlpha become delta lobes (mirror reflection, straight
 // refraction), as in ConductorBsdf and DielectricBsdf.
@@ -58,6 +63,7 @@ struct PrincipledParameters {
   float coat_roughness = 0.0f;       // KHR_materials_clearcoat clearcoatRoughnessFactor
   Color fuzz_color{0.0f};            // KHR_materials_sheen sheenColorFactor (OpenPBR "fuzz")
   float fuzz_roughness = 0.0f;       // KHR_materials_sheen sheenRoughnessFactor
+  float subsurface_weight = 0.0f;    // Blender's Principled BSDF Subsurface (Weight)
 };
 
 class PrincipledBsdf {
@@ -88,13 +94,13 @@ class PrincipledBsdf {
   // probabilities times each lobe's density, summed.
   float pdf(const Vec3& wo, const Vec3& wi) const;
   // u_lobe chooses a lobe in proportion to an estimate of its albedo at wo (coat, fuzz, specular,
-  // diffuse, transmission, metal), and, rescaled within the lobe's share, the metal's own
+  // diffuse, transmission, metal, subsurface), and, rescaled within the lobe's share, the metal's own
   // sub-lobe. For a non-delta lobe f and pdf are those of the whole BSDF, as eval() and pdf()
   // give them; a delta sample carries every smooth lobe sharing its direction.
   std::optional<BsdfSample> sample(const Vec3& wo, float u_lobe, Sample2D u) const;
 
  private:
-  enum Lobe { kCoat, kFuzz, kSpecular, kDiffuse, kTransmission, kMetal, kLobeCount };
+  enum Lobe { kCoat, kFuzz, kSpecular, kDiffuse, kTransmission, kMetal, kSubsurface, kLobeCount };
 
   // What eval, pdf and sample need of wo alone.
   struct Outgoing {
@@ -112,6 +118,7 @@ class PrincipledBsdf {
       case kFuzz:
       case kDiffuse: return BsdfLobe::kDiffuse;
       case kTransmission: return BsdfLobe::kTransmission;
+      case kSubsurface: return BsdfLobe::kSubsurface;
       case kCoat:
       case kSpecular:
       case kMetal:
@@ -137,9 +144,11 @@ class PrincipledBsdf {
   float transmission_density(const Vec3& wo, const Vec3& wi, float compensation) const;
   std::optional<Vec3> sample_direction(Lobe lobe, const Vec3& wo, float u_lobe, Sample2D u) const;
   std::optional<BsdfSample> sample_delta(Lobe lobe, const Vec3& wo, const Outgoing& o) const;
+  std::optional<BsdfSample> sample_subsurface(const Vec3& wo, const Outgoing& o) const;
 
   Color base_color_;
   float metalness_, transmission_;
+  float subsurface_;
   float eta_;  // n_inside / n_outside
   // The transmissive part is rough glass: one lobe samples its reflection and refraction both.
   bool rough_glass_ = false;

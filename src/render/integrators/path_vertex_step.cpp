@@ -22,6 +22,7 @@ void count_bounce(BsdfLobe lobe, Path& next) {
     case BsdfLobe::kDiffuse: ++next.diffuse_bounces; return;
     case BsdfLobe::kGlossy: ++next.glossy_bounces; return;
     case BsdfLobe::kTransmission: ++next.transmission_bounces; return;
+    case BsdfLobe::kSubsurface: return;  // the walk's exit counts its own bounce
   }
 }
 
@@ -107,6 +108,8 @@ void PathVertexStep<kLightPathControls>::extend(std::size_t vertex, const Path& 
   // The BSDF sample: β·f·|cos θ|/p_b, then Russian roulette (russian_roulette).
   const std::optional<BsdfSample> bs = sample_bsdf(surface.bsdf, wo, u, cosine_directions_);
   if (!bs || !(bs->pdf > 0.0f) || carries_no_light(bs->f)) return;
+  if (bs->lobe == BsdfLobe::kSubsurface)
+    return walk_under_surface(vertex, path, sp, *bs, u, beta, path.media, aov_pending);
   Color next_beta = beta * bs->f * (std::fabs(bs->wi.z) / bs->pdf);
   const float eta_scale = bs->transmitted ? path.eta_scale * (bs->eta * bs->eta) : path.eta_scale;
   if (path.bounce >= kRouletteStart && !russian_roulette(next_beta, eta_scale, u.roulette)) return;

@@ -103,6 +103,10 @@ class PathVertexStep {
   // A medium vertex at `position`, the ray having travelled along unit `direction`.
   void scatter_in_medium(std::size_t vertex, const Path& path, const Vec3& position, const Vec3& direction,
                          const TrackedRay& tracked, const MediumStack& media, const VertexSamples& u);
+  // The random walk under the surface `sp` after its subsurface sample `entry`, and the path's
+  // next ray from where the walk leaves (path_subsurface_step.cpp).
+  void walk_under_surface(std::size_t vertex, const Path& path, const SurfacePoint& sp, const BsdfSample& entry,
+                          const VertexSamples& u, const Color& beta, const MediumStack& media, bool aov_pending);
   // The seed of the vertex's tracking numbers after the first (render/media/medium_tracking.h).
   std::uint64_t tracking_seed(std::size_t vertex, const VertexSamples& u) const {
     const SampleKey& key = ws_.path_keys[vertex];
@@ -173,6 +177,7 @@ class PathVertexStep {
   // The current vertex's BSDF and light sample, filled in place (material_bsdf, LightSet::sample).
   SurfaceBsdf surface_;
   PathLightSample light_sample_;
+  SurfacePoint exit_surface_;  // where a walk under a surface leaves
   LobeDepths depths_;
   float direct_limit_, indirect_limit_;  // clamp_sum_limit of the clamps
   bool clamping_;                        // either clamp on: a contribution's sum is worth computing

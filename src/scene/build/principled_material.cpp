@@ -12,9 +12,22 @@ namespace rtpro {
 
 PrincipledSurface surface_model_from(const PrincipledParams& p, const MaterialDesc&,
                                      std::vector<TextureImage>& textures) {
-  PrincipledSurface surface{p.metalness,      p.roughness,           p.ior,         p.specular_weight,
-                            p.specular_color, p.transmission_weight, p.coat_weight, p.coat_roughness,
-                            p.fuzz_color,     p.fuzz_roughness,      std::nullopt,  std::nullopt};
+  PrincipledSurface surface{p.metalness,
+                            p.roughness,
+                            p.ior,
+                            p.specular_weight,
+                            p.specular_color,
+                            p.transmission_weight,
+                            p.coat_weight,
+                            p.coat_roughness,
+                            p.fuzz_color,
+                            p.fuzz_roughness,
+                            p.subsurface,
+                            p.subsurface_radius * p.subsurface_scale,
+                            p.subsurface_anisotropy,
+                            p.subsurface_method,
+                            std::nullopt,
+                            std::nullopt};
   surface.metallic_roughness =
       slot_texture(p.metallic_roughness_texture, Color(1.0f, p.roughness, p.metalness), textures);
   if (const std::optional<ImageTexture> normals = slot_texture(p.normal_texture, Color(1.0f), textures))
