@@ -102,6 +102,29 @@ TEST(MediumTracking, AbsorbingOnlyMediumAttenuatesInClosedForm) {
   EXPECT_EQ(endless.beta, Color(0.0f, 1.0f, 0.0f));
 }
 
+TEST(MediumTracking, GlassAbsorptionIsItsColourAfterItsDistanceAndRatioTrackingAgrees) {
+  // Tinted glass: white light is (0.5, 0.8, 1) after 2 units, and an opaque channel stays 0.
+  const Medium medium = AbsorbingMedium{{0.5f, 0.8f, 0.0f}, 2.0f};
+  TrackingRandom random(11);
+  const Color closed = transmittance(medium, slab_ray(), 3.0f, random);
+  EXPECT_FLOAT_EQ(closed.x, std::pow(0.5f, 1.5f));
+  EXPECT_FLOAT_EQ(closed.y, std::pow(0.8f, 1.5f));
+  EXPECT_EQ(closed.z, 0.0f);
+  const TrackedRay tracked = delta_track(medium, slab_ray(), 3.0f, 0.5f, random, Color(1.0f));
+  EXPECT_EQ(tracked.event, TrackedRay::Event::kPassed);
+  EXPECT_EQ(tracked.beta, closed);
+  // Its coefficients, σa = −ln(colour)/distance, are what ratio tracking walks by.
+  const Color tint{0.5f, 0.8f, 0.9f};
+  const Medium tinted = AbsorbingMedium{tint, 2.0f};
+  for (int c = 0; c < 3; ++c) {
+    const auto [ratio, error] = mean_and_error([&](int i) {
+      TrackingRandom walk(mix64(i) ^ 0x77);
+      return ratio_tracking(tinted, slab_ray(), 3.0f, walk)[c];
+    });
+    EXPECT_NEAR(ratio, std::pow(tint[c], 1.5f), 5.0 * error + 1e-4) << "channel " << c;
+  }
+}
+
 TEST(MediumTracking, EndlessRayThroughAColouredFogKeepsTheUntouchedChannel) {
   // Scattering in red only: green and blue go to infinity; red scatters or is absorbed.
   const Medium medium = HomogeneousMedium{Color(0.0f), {1.0f, 0.0f, 0.0f}, 0.0f, Color(0.0f)};
