@@ -201,14 +201,14 @@ TEST(TriangleLeaves, TraversalAnswersTheSameWithAndWithoutRows) {
       for (unsigned k = 0; k < kPacketSize; ++k) {
         Hit single_with, single_without;
         float t_with = rays[k].tfar, t_without = rays[k].tfar;
-        with.closest(rays[k], single_with, t_with);
-        without.closest(rays[k], single_without, t_without);
+        with.closest(rays[k], 0.0f, single_with, t_with);
+        without.closest(rays[k], 0.0f, single_without, t_without);
         ASSERT_EQ(std::memcmp(&single_with, &single_without, sizeof(Hit)), 0) << "batch " << batch << " ray " << k;
         ASSERT_TRUE(same_bits(t_with, t_without));
         ASSERT_EQ(std::memcmp(&best_with[k], &single_with, sizeof(Hit)), 0) << "batch " << batch << " lane " << k;
         ASSERT_EQ(std::memcmp(&best_without[k], &single_with, sizeof(Hit)), 0);
         ASSERT_TRUE(same_bits(packet_with.tmax[k], t_with) && same_bits(packet_without.tmax[k], t_with));
-        EXPECT_EQ(with.any(rays[k]), without.any(rays[k]));
+        EXPECT_EQ(with.any(rays[k], 0.0f), without.any(rays[k], 0.0f));
         hits_seen += single_with.valid();
       }
     }
