@@ -32,6 +32,12 @@ rtpro_add_wing(render film PRIVATE_DEPENDS TBB::tbb)
 rtpro_add_wing(render integrators
   SHARES camera_batch.h integrator.h path_integrator.h vertex_samples.h whitted_integrator.h
   USES sampling surface bsdf lights media film)
+# Each defines members of PathVertexStep and instantiates them for both template arguments: in one
+# unity file with path_vertex_step.cpp, whose `template class` instantiates every member already
+# defined, clang rejects the second instantiation.
+set_source_files_properties(${CMAKE_SOURCE_DIR}/src/render/integrators/path_medium_step.cpp
+                            ${CMAKE_SOURCE_DIR}/src/render/integrators/path_subsurface_step.cpp
+                            PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
 
 file(GLOB render_sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/render/*.cpp)
 add_library(rtpro_render STATIC ${render_sources})

@@ -18,3 +18,10 @@ target_link_libraries(rtpro_openvdb INTERFACE ${RTPRO_OPENVDB_LIBRARY} Imath::Im
 
 rtpro_add_module(volume DEPENDS core PRIVATE_DEPENDS rtpro_openvdb)
 set_source_files_properties(${CMAKE_SOURCE_DIR}/src/volume/vdb_file.cpp PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
+# oneTBB 2021's concurrent_hash_map, which OpenVDB's trees use for their accessor registry, casts
+# its bucket sentinel (address 3) to a node pointer when a tree is cleared: UBSan's alignment check
+# stops every test that reads a grid there, inside library headers. That one check is off for this
+# one file (third_party_notes/openvdb.md); AddressSanitizer and the other checks stay on.
+if(RTPRO_SANITIZE MATCHES "undefined")
+  set_property(SOURCE ${CMAKE_SOURCE_DIR}/src/volume/vdb_file.cpp APPEND PROPERTY COMPILE_OPTIONS -fno-sanitize=alignment)
+endif()
