@@ -5,13 +5,13 @@
 #   2. a second tree built with clang under AddressSanitizer + UndefinedBehaviorSanitizer, with
 #      libFuzzer linked into the fuzz targets, and every test again (zero findings allowed);
 #   3. a short fuzz run of each target in that tree: its corpus and regressions replayed, then
-#      RTPRO_FUZZ_SECONDS (default 30) of fuzzing per target, two targets at a time.
+#      RTPRO_FUZZ_SECONDS (default 20) of fuzzing per target, two targets at a time.
 # RTPRO_TEST_STAGES=1 (or 1,2) runs fewer stages. Sanitizer options and the documented leak
 # suppressions are compiled into the sanitizer build (cmake/sanitizer_options.cpp).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 stages=",${RTPRO_TEST_STAGES:-1,2,3},"
-fuzz_seconds="${RTPRO_FUZZ_SECONDS:-30}"
+fuzz_seconds="${RTPRO_FUZZ_SECONDS:-20}"
 
 # Each stage's start, and at the end the seconds each took: CI's budget is 30 minutes in all.
 timings=""
