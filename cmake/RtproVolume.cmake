@@ -25,3 +25,9 @@ set_source_files_properties(${CMAKE_SOURCE_DIR}/src/volume/vdb_file.cpp PROPERTI
 if(RTPRO_SANITIZE MATCHES "undefined")
   set_property(SOURCE ${CMAKE_SOURCE_DIR}/src/volume/vdb_file.cpp APPEND PROPERTY COMPILE_OPTIONS -fno-sanitize=alignment)
 endif()
+# The sanitizer build reads only the tests' small grids, and at -O0 clang compiles this file in a
+# third of the time it takes at -O2 under instrumentation (42 s against 115 s on one core): the
+# largest single step of CI's sanitizer build. The Release build keeps -O2: users' grids are large.
+if(RTPRO_SANITIZE)
+  set_property(SOURCE ${CMAKE_SOURCE_DIR}/src/volume/vdb_file.cpp APPEND PROPERTY COMPILE_OPTIONS -O0)
+endif()

@@ -21,8 +21,8 @@ namespace ray_packet_test {
 // kinds is_traceable refuses (and a few it accepts that look suspicious: -0 tnear, zero tfar).
 Ray random_ray(std::mt19937& rng, float broken) {
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f), chance(0.0f, 1.0f);
-  Ray ray{Vec3(unit(rng), unit(rng), unit(rng)) * 100.0f, std::abs(unit(rng)) * 1e-3f,
-          Vec3(unit(rng), unit(rng), unit(rng)), chance(rng) < 0.5f ? std::numeric_limits<float>::infinity() : 50.0f};
+  Ray ray{Vec3{unit(rng), unit(rng), unit(rng)} * 100.0f, std::abs(unit(rng)) * 1e-3f,
+          Vec3{unit(rng), unit(rng), unit(rng)}, chance(rng) < 0.5f ? std::numeric_limits<float>::infinity() : 50.0f};
   if (!(chance(rng) < broken)) return ray;
   constexpr float kNaN = std::numeric_limits<float>::quiet_NaN(), kInf = std::numeric_limits<float>::infinity();
   std::uniform_int_distribution<int> kind(0, 13);

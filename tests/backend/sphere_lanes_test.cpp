@@ -31,15 +31,15 @@ LaneRay random_lane_ray(std::mt19937& rng, const Vec3& center, float radius) {
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   std::uniform_int_distribution<int> kind(0, 9);
   const Vec3 random_dir{unit(rng), unit(rng), unit(rng)};
-  LaneRay ray{Vec3(unit(rng), unit(rng), unit(rng)) * (4.0f * radius) + center, random_dir, 0.0f,
+  LaneRay ray{Vec3{unit(rng), unit(rng), unit(rng)} * (4.0f * radius) + center, random_dir, 0.0f,
               std::numeric_limits<float>::infinity()};
   switch (kind(rng)) {
-    case 0: ray.dir = center - ray.org + Vec3(unit(rng), unit(rng), unit(rng)) * (0.3f * radius); break;
+    case 0: ray.dir = center - ray.org + Vec3{unit(rng), unit(rng), unit(rng)} * (0.3f * radius); break;
     case 1: ray.org = center + random_dir * (0.5f * radius); break;  // inside
     case 2: {                                                        // on the surface, leaving or entering
       const Vec3 n = normalize(random_dir);
       ray.org = center + n * radius;
-      ray.dir = n * unit(rng) + Vec3(unit(rng), unit(rng), unit(rng)) * 0.2f;
+      ray.dir = n * unit(rng) + Vec3{unit(rng), unit(rng), unit(rng)} * 0.2f;
       break;
     }
     case 3: {  // grazing: aimed at a point just off the silhouette
@@ -101,7 +101,7 @@ TEST(SphereLanes, EveryLaneAnswersWhatTheScalarIntersectorAnswers) {
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   int hits_seen = 0;
   for (int round = 0; round < 4000; ++round) {
-    const Vec3 center = Vec3(unit(rng), unit(rng), unit(rng)) * (round % 3 == 0 ? 1000.0f : 3.0f);
+    const Vec3 center = Vec3{unit(rng), unit(rng), unit(rng)} * (round % 3 == 0 ? 1000.0f : 3.0f);
     const float radius = round % 5 == 0 ? 1000.0f : 0.01f + std::fabs(unit(rng));
     const unsigned count = (round % 3 == 0) ? 4u : (round % 3 == 1 ? 8u : 16u);
     std::vector<LaneRay> rays;

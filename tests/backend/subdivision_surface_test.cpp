@@ -46,7 +46,7 @@ TEST_P(SubdivisionSurface, IsWatertight) {
   for (int i = 0; i < 4000; ++i) {
     Ray ray;
     ray.org = Vec3(0.05f, -0.03f, 0.02f) * float(i % 3);
-    ray.dir = normalize(Vec3(normal(rng), normal(rng), normal(rng)));
+    ray.dir = normalize(Vec3{normal(rng), normal(rng), normal(rng)});
     Hit hit;
     ASSERT_TRUE(backend->intersect(ray, hit)) << i;
     EXPECT_LT(hit.t, 0.9f);
@@ -64,8 +64,8 @@ TEST_P(SubdivisionSurface, ConstantDisplacementMovesEveryHitByIt) {
   std::uniform_real_distribution<float> across(-0.9f, 0.9f);
   for (int i = 0; i < 500; ++i) {
     Ray ray;
-    ray.org = Vec3(across(rng), 1.0f, across(rng));
-    ray.dir = normalize(Vec3(across(rng) * 0.1f, -1.0f, across(rng) * 0.1f));
+    ray.org = Vec3{across(rng), 1.0f, across(rng)};
+    ray.dir = normalize(Vec3{across(rng) * 0.1f, -1.0f, across(rng) * 0.1f});
     Hit a, b;
     ASSERT_TRUE(flat_backend->intersect(ray, a)) << i;
     ASSERT_TRUE(raised_backend->intersect(ray, b)) << i;

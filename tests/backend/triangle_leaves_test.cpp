@@ -81,7 +81,11 @@ Ray random_ray_at(std::mt19937& rng, const Triangle& tri) {
     case 0: target = tri.p[vertex(rng)]; break;
     case 1: target = tri.p[0] + (tri.p[1] - tri.p[0]) * positive(rng); break;
     case 2: target = tri.p[1] + (tri.p[2] - tri.p[1]) * positive(rng); break;
-    case 3: ray.org = tri.p[0] + (tri.p[1] - tri.p[0]) * unit(rng) + (tri.p[2] - tri.p[0]) * unit(rng); break;
+    case 3: {
+      const float u = unit(rng), v = unit(rng);
+      ray.org = tri.p[0] + (tri.p[1] - tri.p[0]) * u + (tri.p[2] - tri.p[0]) * v;
+      break;
+    }
     case 4: ray.org = target; break;
     case 5: ray.tfar = positive(rng) * 4.0f; break;
     case 6: ray.tnear = -positive(rng); break;
@@ -89,7 +93,7 @@ Ray random_ray_at(std::mt19937& rng, const Triangle& tri) {
     case 8: ray.dir = {std::numeric_limits<float>::quiet_NaN(), 1.0f, 0.0f}; return ray;
     default: break;
   }
-  ray.dir = target - ray.org + Vec3(unit(rng), unit(rng), unit(rng)) * 1e-4f;
+  ray.dir = target - ray.org + Vec3{unit(rng), unit(rng), unit(rng)} * 1e-4f;
   return ray;
 }
 

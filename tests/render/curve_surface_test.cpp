@@ -78,8 +78,8 @@ TEST_P(CurveSurface, SpawnedRaysNeverReHitTheFibre) {
   int hits = 0;
   for (int i = 0; i < 400; ++i) {
     // From a sphere of origins around the strands towards points near one of them.
-    const Vec3 target(unit(rng) * 0.9f, 0.3f * float(i % 4) + unit(rng) * 0.02f, unit(rng) * 0.02f);
-    const Vec3 org = target + normalize(Vec3(unit(rng), unit(rng), unit(rng))) * 2.0f;
+    const Vec3 target{unit(rng) * 0.9f, 0.3f * float(i % 4) + unit(rng) * 0.02f, unit(rng) * 0.02f};
+    const Vec3 org = target + normalize(Vec3{unit(rng), unit(rng), unit(rng)}) * 2.0f;
     Ray ray{org, 0.0f, target - org, INFINITY};
     Hit hit;
     if (!backend->intersect(ray, hit)) continue;
@@ -90,7 +90,7 @@ TEST_P(CurveSurface, SpawnedRaysNeverReHitTheFibre) {
     // Out into the hemisphere, back through the fibre, and along it.
     for (const Vec3& direction :
          {sp.geometric_normal, sp.geometric_normal * -1.0f, ray.dir, sp.tangent * 0.2f + sp.geometric_normal * -1.0f,
-          normalize(Vec3(unit(rng), unit(rng), unit(rng)))}) {
+          normalize(Vec3{unit(rng), unit(rng), unit(rng)})}) {
       // The strands are straight and 0.3 apart: a ray that leaves a fibre, or a shadow ray to a
       // point far along, meets no part of that fibre again.
       for (const Ray& spawned : {spawn_ray(sp, direction), spawn_ray_to(sp, sp.position + direction * 3.0f)}) {

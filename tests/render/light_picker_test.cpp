@@ -35,7 +35,7 @@ TEST(LightPicker, OneLightIsPickedWithCertaintyFromEveryPoint) {
       const LightPicker picker(kind, members, kPower, kBounds);
       ASSERT_FALSE(picker.empty());
       for (int i = 0; i < 1000; ++i) {
-        const Vec3 point(coordinate(rng), coordinate(rng), coordinate(rng));
+        const Vec3 point{coordinate(rng), coordinate(rng), coordinate(rng)};
         const std::optional<LightPicker::Pick> pick = picker.pick(point, unit(rng) * 0x1.fffffep-1f);
         ASSERT_TRUE(pick);
         EXPECT_EQ(pick->light, light);

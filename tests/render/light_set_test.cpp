@@ -55,7 +55,7 @@ TEST(LightSet, SamplePdfIsThePdfOfTheSampledPoint) {
   std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
   int area_samples = 0;
   for (int i = 0; i < 20000; ++i) {
-    const Vec3 from(uniform(rng) * 6.0f - 3.0f, uniform(rng) * 3.0f, uniform(rng) * 6.0f - 3.0f);
+    const Vec3 from{uniform(rng) * 6.0f - 3.0f, uniform(rng) * 3.0f, uniform(rng) * 6.0f - 3.0f};
     const float u_pick = uniform(rng);
     const auto s = lights.sample(from, u_pick, {uniform(rng), uniform(rng)});
     if (!s || s->delta) continue;
@@ -120,11 +120,13 @@ bool sample_depends_on(const LightSet& lights, bool vary_pick, bool vary_point) 
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   for (int i = 0; i < 2000; ++i) {
     // Above and below the lights, on both sides of the one-sided quad.
-    const Vec3 from(unit(rng) * 12.0f - 6.0f, unit(rng) * 12.0f - 6.0f, unit(rng) * 12.0f - 6.0f);
+    const Vec3 from{unit(rng) * 12.0f - 6.0f, unit(rng) * 12.0f - 6.0f, unit(rng) * 12.0f - 6.0f};
     const float pick = unit(rng);
     const Sample2D u{unit(rng), unit(rng)};
     const auto a = lights.sample(from, pick, u);
-    const auto b = lights.sample(from, vary_pick ? unit(rng) : pick, vary_point ? Sample2D{unit(rng), unit(rng)} : u);
+    const float other_pick = vary_pick ? unit(rng) : pick;
+    const Sample2D other_u = vary_point ? Sample2D{unit(rng), unit(rng)} : u;
+    const auto b = lights.sample(from, other_pick, other_u);
     if (a.has_value() != b.has_value()) return true;
     if (a && (a->light != b->light || a->direction.x != b->direction.x || a->direction.y != b->direction.y ||
               a->distance != b->distance || a->pdf != b->pdf))

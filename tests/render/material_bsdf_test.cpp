@@ -58,7 +58,7 @@ bool sample_depends_on_lobe_choice(const Material& material) {
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   for (int i = 0; i < 2000; ++i) {
     const float z = unit(rng) * 2.0f - 1.0f;
-    const Vec3 wo = normalize(Vec3(unit(rng) - 0.5f, unit(rng) - 0.5f, z == 0.0f ? 0.5f : z));
+    const Vec3 wo = normalize(Vec3{unit(rng) - 0.5f, unit(rng) - 0.5f, z == 0.0f ? 0.5f : z});
     const Sample2D u{unit(rng), unit(rng)};
     const std::optional<BsdfSample> first = bsdf_sample(surface.bsdf, wo, unit(rng), u);
     if (!same_sample(first, bsdf_sample(surface.bsdf, wo, unit(rng), u))) return true;

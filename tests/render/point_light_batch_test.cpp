@@ -28,7 +28,7 @@ std::vector<SurfacePoint> points_around(const Vec3& light, std::size_t count) {
   std::vector<SurfacePoint> points(count);
   for (std::size_t i = 0; i < count; ++i) {
     const float scale = i % 7 == 0 ? 1e-3f : (i % 11 == 0 ? 1e19f : 5.0f);
-    points[i].position = light + Vec3(unit(rng), unit(rng), unit(rng)) * scale;
+    points[i].position = light + Vec3{unit(rng), unit(rng), unit(rng)} * scale;
   }
   if (count > 2) points[2].position = light;
   return points;

@@ -30,7 +30,7 @@ TEST(SurfaceBatch, FlatAndSmoothMeshHitsInOneBatchAreMakeSurfaceOfEachHit) {
   TriangleMesh smooth = test::random_triangles(rng, 100, 4.0f);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   for (std::size_t i = 0; i < smooth.vertices.size(); ++i)
-    smooth.normals.push_back(i % 5 == 0 ? Vec3() : Vec3(unit(rng), unit(rng), unit(rng)));
+    smooth.normals.push_back(i % 5 == 0 ? Vec3() : Vec3{unit(rng), unit(rng), unit(rng)});
   scene.top.geometries.emplace_back(std::move(smooth));
 
   std::vector<Ray> rays;

@@ -108,7 +108,7 @@ void expect_four_triangle_hits_at_a_time_are_make_surface() {
     TriangleMesh smooth = test::random_triangles(rng, 200, 4.0f * extent);
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
     for (std::size_t i = 0; i < smooth.vertices.size(); ++i)
-      smooth.normals.push_back(i % 7 == 0 ? Vec3() : Vec3(unit(rng), unit(rng), unit(rng)));
+      smooth.normals.push_back(i % 7 == 0 ? Vec3() : Vec3{unit(rng), unit(rng), unit(rng)});
     for (std::size_t t = 0; t < smooth.triangles.size(); ++t) {
       smooth.triangle_materials.push_back(static_cast<std::uint32_t>(t % 2));
       if (t % 11 == 0) smooth.triangles[t].v1 = smooth.triangles[t].v0;  // no area, no normal

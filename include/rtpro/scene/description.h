@@ -116,7 +116,7 @@ inline constexpr std::uint32_t kNoLinking = ~0u;
 struct SphereDesc {
   Vec3 center;  // at the frame's time
   // The centre at each time step of the shutter (scene/motion.h); empty: the sphere does not move.
-  std::vector<Vec3> center_steps;
+  std::vector<Vec3> center_steps = {};
   float radius = 1.0f;
   std::uint32_t material = 0;          // index into SceneDescription::materials
   std::uint32_t linking = kNoLinking;  // index into SceneDescription::linkings (world entries only)
@@ -159,7 +159,7 @@ struct InstanceDesc {
   std::uint32_t object = 0;  // index into SceneDescription::objects
   Affine transform;          // object to parent, at the frame's time
   // Object to parent at each time step of the shutter (scene/motion.h); empty: static.
-  std::vector<Affine> transform_steps;
+  std::vector<Affine> transform_steps = {};
   SourceLocation where;
   std::uint32_t linking = kNoLinking;  // every instance this one expands to
 };

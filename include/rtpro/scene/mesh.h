@@ -41,8 +41,8 @@ struct TriangleMesh {
   // Deformation during the shutter (scene/motion.h): the vertices at each time step, each as long
   // as `vertices` (which holds them at the frame's time); empty: the mesh does not deform.
   // normal_steps likewise for `normals`; empty while vertex_steps is not: the normals stay put.
-  std::vector<std::vector<PaddedVertex>> vertex_steps;
-  std::vector<std::vector<Vec3>> normal_steps;
+  std::vector<std::vector<PaddedVertex>> vertex_steps = {};
+  std::vector<std::vector<Vec3>> normal_steps = {};
 
   std::size_t triangle_count() const { return triangles.size(); }
   std::uint32_t material_of(std::uint32_t triangle) const {

@@ -36,7 +36,7 @@ struct Instance {
   Affine world_to_object;
   // object_to_world at each time step of the shutter (scene/motion.h); empty: static. The
   // transform at a ray's time is interpolated from these and inverted.
-  std::vector<Affine> object_to_world_steps;
+  std::vector<Affine> object_to_world_steps = {};
 
   bool moving() const { return !object_to_world_steps.empty(); }
 };

@@ -28,7 +28,7 @@ struct SphereSet {
   std::vector<Sphere> spheres;
   // Moving spheres (scene/motion.h): sphere i's centre at step j is center_steps[i * step_count
   // + j]; empty when none of the set moves (a set with one moving sphere keys them all).
-  std::vector<Vec3> center_steps;
+  std::vector<Vec3> center_steps = {};
   std::uint32_t step_count = 0;
 
   bool moving() const { return !center_steps.empty(); }

@@ -16,7 +16,7 @@ struct CameraBatch {
   std::span<SampleResult> results;
   // Per sample, its time in the shutter (scene/motion.h), which every ray of its path keeps;
   // empty while the shutter is closed.
-  std::span<const float> times;
+  std::span<const float> times = {};
 };
 
 }  // namespace rtpro

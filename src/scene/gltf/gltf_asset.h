@@ -32,7 +32,7 @@ struct GltfPlacement {
   // `transform` places (the identity for a skinned mesh, whose joints place it); -1: meshes[mesh].
   std::int32_t deformed = -1;
   // `transform` at each time step of the shutter (scene/motion.h); empty: still during it.
-  std::vector<Affine> transform_steps;
+  std::vector<Affine> transform_steps = {};
 };
 
 struct GltfCamera {
