@@ -22,3 +22,14 @@ render_with_cycles() {
   run_blender "$script" "$log" "$input" "$out/$name.rgba.exr" "$@"
   keep_rgb "$name"
 }
+
+# timed_rtpro RUN ARG...: rtpro renders $out/rtpro.yaml into $out/rtpro-rRUN.exr with the ARGs, its
+# statistics into $out/rtpro-rRUN.json and its wall-clock seconds, as "rtpro_seconds S", onto
+# $out/rtpro.log (benchmarks/cycles/peer_report.py reads them).
+timed_rtpro() {
+  local run=$1 start
+  shift
+  start=$(date +%s.%N)
+  "$build/rtpro" render "$out/rtpro.yaml" -o "$out/rtpro-r$run.exr" --quiet --no-journal --stats-json "$out/rtpro-r$run.json" "$@"
+  echo "rtpro_seconds $(echo "$(date +%s.%N) - $start" | bc)" >>"$out/rtpro.log"
+}
