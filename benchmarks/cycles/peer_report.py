@@ -48,7 +48,7 @@ print(f"| seconds, median (min-max) | {spread(cycles_s)} | {spread(rtpro_s)} | "
       f"{statistics.median(rtpro_s) / statistics.median(cycles_s):.2f} |")
 print(f"| rtpro's load + build + render alone | | {spread(phases)} | "
       f"{statistics.median(phases) / statistics.median(cycles_s):.2f} |")
-print(f"\nrelMSE of rtpro against Cycles (both at the same samples): {rel:.4f}")
+print(f"\nrelMSE of rtpro against Cycles (both at the same samples): {rel:.3g}")
 if os.path.exists(f"{out}/cycles-alpha.exr") and os.path.exists(f"{out}/rtpro-coverage.exr"):
     a, b = f"{out}/cycles-alpha.exr", f"{out}/rtpro-coverage.exr"
     iou = mean_of("min", a, b, "--min") / mean_of("max", a, b, "--max")
