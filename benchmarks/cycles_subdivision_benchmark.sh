@@ -78,11 +78,7 @@ for r in $(seq "$runs"); do
   keep_rgb "cycles-r$r"
   timed_rtpro "$r" --backend "$backend" --threads "$t"
 done
-"$build/rtpro" render "$out/coverage.yaml" -o "$out/coverage.exr" --aov albedo --backend "$backend" --threads "$t" \
-  --quiet --no-journal
-oiiotool "$out/cycles-r1.rgba.exr" --ch A -o "$out/cycles-alpha.exr"
-oiiotool "$out/coverage.exr" --ch albedo.R -o "$out/rtpro-coverage.exr"
-"$build/rtpro" compare "$out/cycles-r1.exr" "$out/rtpro-r1.exr" --json >"$out/compare.json" || true
+coverage_and_compare --backend "$backend" --threads "$t"
 
 python3 "$root/benchmarks/cycles/peer_report.py" "$out" "$runs" \
   "subdivided, displaced cube (level $level, scale $scale), ${size}x$size, $spp spp, max depth $max_depth, $t thread(s), rtpro on $backend"

@@ -33,3 +33,14 @@ timed_rtpro() {
   "$build/rtpro" render "$out/rtpro.yaml" -o "$out/rtpro-r$run.exr" --quiet --no-journal --stats-json "$out/rtpro-r$run.json" "$@"
   echo "rtpro_seconds $(echo "$(date +%s.%N) - $start" | bc)" >>"$out/rtpro.log"
 }
+
+# coverage_and_compare ARG...: what benchmarks/cycles/peer_report.py compares beyond the images: rtpro
+# renders $out/coverage.yaml (the scene with its surfaces white Lambert) with the ARGs and its
+# albedo AOV, the coverage of each pixel, kept as $out/rtpro-coverage.exr; Cycles' alpha of run 1
+# as $out/cycles-alpha.exr; and `rtpro compare` of run 1's images into $out/compare.json.
+coverage_and_compare() {
+  "$build/rtpro" render "$out/coverage.yaml" -o "$out/coverage.exr" --aov albedo --quiet --no-journal "$@"
+  oiiotool "$out/coverage.exr" --ch albedo.R -o "$out/rtpro-coverage.exr"
+  oiiotool "$out/cycles-r1.rgba.exr" --ch A -o "$out/cycles-alpha.exr"
+  "$build/rtpro" compare "$out/cycles-r1.exr" "$out/rtpro-r1.exr" --json >"$out/compare.json" || true
+}

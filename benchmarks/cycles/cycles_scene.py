@@ -88,3 +88,13 @@ def sky_and_sun(scene, sky, sun_direction, sun):
     sun_object = bpy.data.objects.new("sun", sun_data)
     scene.collection.objects.link(sun_object)
     sun_object.rotation_euler = blender_axes(sun_direction).to_track_quat("-Z", "Y").to_euler()
+
+
+def view_from_args(scene, args):
+    """The camera, sky and sun of the benchmarks that light one object as rtpro's scene does, from
+    six command-line words: SKY SUN_X,SUN_Y,SUN_Z SUN CAM_X,CAM_Y,CAM_Z AT_X,AT_Y,AT_Z FOV (rtpro's
+    axes; FOV rtpro's vertical field of view in degrees). See sky_and_sun and look_at_camera."""
+    vector = lambda word: [float(c) for c in word.split(",")]
+    sky, sun_direction, sun, position, target, fov = args
+    look_at_camera(scene, vector(position), vector(target), float(fov))
+    sky_and_sun(scene, float(sky), vector(sun_direction), float(sun))

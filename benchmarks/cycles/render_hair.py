@@ -11,8 +11,9 @@ into Blender 3.4's Curves (hair) object, which Cycles renders as round Catmull-R
 the points (scene.cycles_curves.shape THICK: Embree's round curves), its ends repeated as rtpro's
 `basis: catmull-rom` has them. The material: the Principled Hair BSDF (Chiang et al. 2016) with the
 Absorption Coefficient parametrization (σa as rtpro's `sigma_a`, per unit of the fibre's radius in
-both), Roughness β_m, Radial Roughness β_n, Coat 0, IOR, Offset α (the cuticle tilt) and no random
-colour or roughness: rtpro's `type: hair` with the same keys. The world a uniform sky of radiance
+both), Roughness β_m, Radial Roughness β_n, Coat 0, IOR, Offset −α (Cycles' cuticle tilt has the
+opposite sign of pbrt-v4's and rtpro's `alpha`) and no random colour or roughness: rtpro's
+`type: hair` with the same keys. The world a uniform sky of radiance
 SKY, light-sampled, transparent to the camera (film_transparent); a sun of irradiance SUN travelling
 along SUN_X,SUN_Y,SUN_Z with an angle of 0 (rtpro's directional light). Settings otherwise
 cycles_settings.py's. Prints "cycles_render_seconds S".
@@ -26,7 +27,7 @@ import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from cycles_materials import empty_node_tree  # noqa: E402
-from cycles_scene import blender_axes, look_at_camera, sky_and_sun  # noqa: E402
+from cycles_scene import blender_axes, view_from_args  # noqa: E402
 from cycles_settings import configure_cycles, render_timed_exr  # noqa: E402
 
 args = sys.argv[sys.argv.index("--") + 1:]
@@ -35,12 +36,6 @@ size, spp, max_depth, threads = (int(a) for a in args[1:5])
 hair_file = args[5]
 sigma_a = [float(c) for c in args[6].split(",")]
 beta_m, beta_n, alpha, ior = (float(a) for a in args[7:11])
-sky = float(args[11])
-sun_direction = [float(c) for c in args[12].split(",")]
-sun = float(args[13])
-camera_position = [float(c) for c in args[14].split(",")]
-camera_target = [float(c) for c in args[15].split(",")]
-fov = float(args[16])
 
 
 def read_hair(path):
@@ -99,15 +94,15 @@ hair.inputs["Roughness"].default_value = beta_m
 hair.inputs["Radial Roughness"].default_value = beta_n
 hair.inputs["Coat"].default_value = 0.0
 hair.inputs["IOR"].default_value = ior
-hair.inputs["Offset"].default_value = math.radians(alpha)
+# Cycles tilts the light's angle by +2α, −α, −4α where pbrt-v4 (and rtpro) tilt the viewer's by
+# −2α, +α, +4α: the same highlights for Cycles' Offset −α (third_party_notes/blender-cycles.md).
+hair.inputs["Offset"].default_value = math.radians(-alpha)
 hair.inputs["Random Color"].default_value = 0.0
 hair.inputs["Random Roughness"].default_value = 0.0
 links.new(hair.outputs["BSDF"], output.inputs["Surface"])
 obj.data.materials.append(material)
 
-look_at_camera(scene, camera_position, camera_target, fov)
-
-sky_and_sun(scene, sky, sun_direction, sun)
+view_from_args(scene, args[11:17])
 
 configure_cycles(scene, spp, max_depth, threads)
 render_timed_exr(scene, size, size, out_file)

@@ -27,7 +27,7 @@ import numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from cycles_materials import bsdf_node, empty_node_tree  # noqa: E402
-from cycles_scene import blender_axes, look_at_camera, sky_and_sun  # noqa: E402
+from cycles_scene import blender_axes, view_from_args  # noqa: E402
 from cycles_settings import configure_cycles, render_timed_exr  # noqa: E402
 
 args = sys.argv[sys.argv.index("--") + 1:]
@@ -36,12 +36,6 @@ size, spp, max_depth, threads = (int(a) for a in args[1:5])
 cage_file, texture_file = args[5], args[6]
 level, scale = int(args[7]), float(args[8])
 color = [float(c) for c in args[9].split(",")]
-sky = float(args[10])
-sun_direction = [float(c) for c in args[11].split(",")]
-sun = float(args[12])
-camera_position = [float(c) for c in args[13].split(",")]
-camera_target = [float(c) for c in args[14].split(",")]
-fov = float(args[15])
 
 
 def read_obj(path):
@@ -110,9 +104,7 @@ subdivision.boundary_smooth = "PRESERVE_CORNERS"
 subdivision.uv_smooth = "PRESERVE_CORNERS"
 subdivision.use_creases = True
 
-look_at_camera(scene, camera_position, camera_target, fov)
-
-sky_and_sun(scene, sky, sun_direction, sun)
+view_from_args(scene, args[10:16])
 
 configure_cycles(scene, spp, max_depth, threads)
 render_timed_exr(scene, size, size, out_file)
