@@ -2,9 +2,9 @@
 # A subdivided, displaced cube, rtpro beside Cycles (Debian's Blender 3.4): the unit cube cage
 # benchmarks/cycles/uv_cube_cage.obj (each face its own uv square) refined LEVEL=5 times
 # (Catmull-Clark to the limit surface) and displaced along the normal by SCALE=0.2 x a texture,
-# h(u, v) = sin²(πu) sin²(πv) (0.5 + u): a lopsided pillow on every face, 0 on the cube's edges so
-# both sides of a uv seam move alike, and lopsided so a flipped u or v would show. rtpro renders
-# `subdivision: {level}` with `displacement: {texture, scale}`; Cycles a Subdivision Surface
+# h(u, v) = sin²(πu) sin²(πv) (0.5 + u) (0.5 + v): a lopsided pillow on every face, 0 on the
+# cube's edges so both sides of a uv seam move alike, and lopsided so a flipped u or v would show.
+# rtpro renders `subdivision: {level}` with `displacement: {texture, scale}`; Cycles a Subdivision Surface
 # modifier of the same render level with true displacement (a Displacement node of Midlevel 0:
 # Blender's default 0.5 would pull the surface in by half the scale; benchmarks/cycles/
 # render_subdivision.py says how the rest is matched). A clay Lambert surface under a uniform sky
@@ -48,7 +48,7 @@ for row in range(n):  # PFM rows run from the bottom (v = 0) up
     v = (row + 0.5) / n
     for column in range(n):
         u = (column + 0.5) / n
-        rows.extend([math.sin(math.pi * u) ** 2 * math.sin(math.pi * v) ** 2 * (0.5 + u)] * 3)
+        rows.extend([math.sin(math.pi * u) ** 2 * math.sin(math.pi * v) ** 2 * (0.5 + u) * (0.5 + v)] * 3)
 with open(sys.argv[1], "wb") as f:
     f.write(b"PF\n%d %d\n-1.0\n" % (n, n))
     rows.tofile(f)  # little-endian on x86, as the -1.0 scale says
