@@ -71,13 +71,8 @@ rtpro_scene rtpro "{type: diffuse, color: [$color]}" "environment: {color: [$sky
 lights: [{type: directional, direction: [$sun_direction], intensity: $sun}]" "$max_depth"
 rtpro_scene coverage "{type: diffuse, color: [1, 1, 1]}" "" 1
 
-for r in $(seq "$runs"); do
-  echo "run $r: Cycles, rtpro (${size}x$size, $spp spp, $t threads) ..." >&2
-  run_blender render_subdivision.py "$out/cycles-r$r.log" "$out/cycles-r$r.rgba.exr" "$size" "$spp" "$max_depth" "$t" \
-    "$out/cage.obj" "$out/bump.exr" "$level" "$scale" "$color" "$sky" "$sun_direction" "$sun" "$camera" "$target" "$fov"
-  keep_rgb "cycles-r$r"
-  timed_rtpro "$r" --backend "$backend" --threads "$t"
-done
+interleaved_runs render_subdivision.py "$out/cage.obj" "$out/bump.exr" "$level" "$scale" "$color" \
+  "$sky" "$sun_direction" "$sun" "$camera" "$target" "$fov"
 coverage_and_compare --backend "$backend" --threads "$t"
 
 python3 "$root/benchmarks/cycles/peer_report.py" "$out" "$runs" \

@@ -44,3 +44,17 @@ coverage_and_compare() {
   oiiotool "$out/cycles-r1.rgba.exr" --ch A -o "$out/cycles-alpha.exr"
   "$build/rtpro" compare "$out/cycles-r1.exr" "$out/rtpro-r1.exr" --json >"$out/compare.json" || true
 }
+
+# interleaved_runs SCRIPT ARG...: $runs times, Cycles renders benchmarks/cycles/SCRIPT into
+# $out/cycles-rR.rgba.exr (and .exr, keep_rgb) with $size, $spp, $max_depth, $t and the ARGs, then
+# rtpro renders $out/rtpro.yaml (timed_rtpro) on $backend with $t threads.
+interleaved_runs() {
+  local script=$1 r
+  shift
+  for r in $(seq "$runs"); do
+    echo "run $r: Cycles, rtpro (${size}x$size, $spp spp, $t threads) ..." >&2
+    run_blender "$script" "$out/cycles-r$r.log" "$out/cycles-r$r.rgba.exr" "$size" "$spp" "$max_depth" "$t" "$@"
+    keep_rgb "cycles-r$r"
+    timed_rtpro "$r" --backend "$backend" --threads "$t"
+  done
+}
