@@ -22,3 +22,39 @@ render_with_cycles() {
   run_blender "$script" "$log" "$input" "$out/$name.rgba.exr" "$@"
   keep_rgb "$name"
 }
+
+# timed_rtpro RUN ARG...: rtpro renders $out/rtpro.yaml into $out/rtpro-rRUN.exr with the ARGs, its
+# statistics into $out/rtpro-rRUN.json and its wall-clock seconds, as "rtpro_seconds S", onto
+# $out/rtpro.log (benchmarks/cycles/peer_report.py reads them).
+timed_rtpro() {
+  local run=$1 start
+  shift
+  start=$(date +%s.%N)
+  "$build/rtpro" render "$out/rtpro.yaml" -o "$out/rtpro-r$run.exr" --quiet --no-journal --stats-json "$out/rtpro-r$run.json" "$@"
+  echo "rtpro_seconds $(echo "$(date +%s.%N) - $start" | bc)" >>"$out/rtpro.log"
+}
+
+# coverage_and_compare ARG...: what benchmarks/cycles/peer_report.py compares beyond the images: rtpro
+# renders $out/coverage.yaml (the scene with its surfaces white Lambert) with the ARGs and its
+# albedo AOV, the coverage of each pixel, kept as $out/rtpro-coverage.exr; Cycles' alpha of run 1
+# as $out/cycles-alpha.exr; and `rtpro compare` of run 1's images into $out/compare.json.
+coverage_and_compare() {
+  "$build/rtpro" render "$out/coverage.yaml" -o "$out/coverage.exr" --aov albedo --quiet --no-journal "$@"
+  oiiotool "$out/coverage.exr" --ch albedo.R -o "$out/rtpro-coverage.exr"
+  oiiotool "$out/cycles-r1.rgba.exr" --ch A -o "$out/cycles-alpha.exr"
+  "$build/rtpro" compare "$out/cycles-r1.exr" "$out/rtpro-r1.exr" --json >"$out/compare.json" || true
+}
+
+# interleaved_runs SCRIPT ARG...: $runs times, Cycles renders benchmarks/cycles/SCRIPT into
+# $out/cycles-rR.rgba.exr (and .exr, keep_rgb) with $size, $spp, $max_depth, $t and the ARGs, then
+# rtpro renders $out/rtpro.yaml (timed_rtpro) on $backend with $t threads.
+interleaved_runs() {
+  local script=$1 r
+  shift
+  for r in $(seq "$runs"); do
+    echo "run $r: Cycles, rtpro (${size}x$size, $spp spp, $t threads) ..." >&2
+    run_blender "$script" "$out/cycles-r$r.log" "$out/cycles-r$r.rgba.exr" "$size" "$spp" "$max_depth" "$t" "$@"
+    keep_rgb "cycles-r$r"
+    timed_rtpro "$r" --backend "$backend" --threads "$t"
+  done
+}

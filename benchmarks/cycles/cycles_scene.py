@@ -67,3 +67,34 @@ def uv_sphere(scene, name, center, radius, mat, segments=256, rings=128):
     points = numpy.stack([numpy.sin(theta) * numpy.cos(phi), numpy.sin(theta) * numpy.sin(phi),
                           numpy.cos(theta) * numpy.ones_like(phi)], axis=-1).reshape(-1, 3) * radius + numpy.asarray(c)
     return mesh_object(scene, name, points, grid_quads(rings, segments), c, mat)
+
+
+def sky_and_sun(scene, sky, sun_direction, sun):
+    """rtpro's `environment: {color: [sky, sky, sky], visible: false}` with `render.background`
+    black, and a directional light of irradiance `sun` travelling along rtpro's `sun_direction`:
+    a uniform world of radiance `sky`, light-sampled, transparent to the camera (film_transparent:
+    the alpha channel is what the objects cover), and a sun of that strength with an angle of 0."""
+    world = bpy.data.worlds.new("sky")
+    scene.world = world
+    world.use_nodes = True
+    world.node_tree.nodes["Background"].inputs["Color"].default_value = (sky, sky, sky, 1.0)
+    world.node_tree.nodes["Background"].inputs["Strength"].default_value = 1.0
+    world.cycles.sampling_method = "AUTOMATIC"
+    scene.render.film_transparent = True
+    scene.render.image_settings.color_mode = "RGBA"
+    sun_data = bpy.data.lights.new("sun", "SUN")
+    sun_data.energy = sun
+    sun_data.angle = 0.0
+    sun_object = bpy.data.objects.new("sun", sun_data)
+    scene.collection.objects.link(sun_object)
+    sun_object.rotation_euler = blender_axes(sun_direction).to_track_quat("-Z", "Y").to_euler()
+
+
+def view_from_args(scene, args):
+    """The camera, sky and sun of the benchmarks that light one object as rtpro's scene does, from
+    six command-line words: SKY SUN_X,SUN_Y,SUN_Z SUN CAM_X,CAM_Y,CAM_Z AT_X,AT_Y,AT_Z FOV (rtpro's
+    axes; FOV rtpro's vertical field of view in degrees). See sky_and_sun and look_at_camera."""
+    vector = lambda word: [float(c) for c in word.split(",")]
+    sky, sun_direction, sun, position, target, fov = args
+    look_at_camera(scene, vector(position), vector(target), float(fov))
+    sky_and_sun(scene, float(sky), vector(sun_direction), float(sun))
