@@ -2,7 +2,7 @@
 Debian's Blender 3.4:
 
   blender -b --factory-startup --python render_subsurface.py -- OUT_PREFIX SIZE SPP MAX_DEPTH THREADS \
-      R,G,B RADIUS_R,RADIUS_G,RADIUS_B ANISOTROPY IOR METHOD...
+      R,G,B RADIUS_R,RADIUS_G,RADIUS_B ANISOTROPY IOR SEED METHOD...
 
 The scene is the benchmark's rtpro scene (a sphere of radius 1 at the origin, seen from (0, 0, -4)
 with a 20-degree field of view) in Blender's axes: the sphere a UV sphere of 256 x 128 quads with
@@ -12,7 +12,7 @@ the Principled BSDF's subsurface takes, without the Principled's Disney-diffuse 
 entry and exit, so that it is rtpro's principled material at specular_weight 0 and subsurface 1
 (entry and exit through plain Lambert lobes). The world a uniform Background of colour 1 and
 strength 1, not light-sampled (sampling_method NONE), as rtpro's `background` is not. Settings
-otherwise cycles_settings.py's. One Blender start renders each METHOD (RANDOM_WALK,
+otherwise cycles_settings.py's, Cycles' seed SEED. One Blender start renders each METHOD (RANDOM_WALK,
 RANDOM_WALK_FIXED_RADIUS) into OUT_PREFIX-METHOD.rgba.exr; prints "cycles_render_seconds S" for each.
 """
 import sys
@@ -30,8 +30,8 @@ out_prefix = args[0]
 size, spp, max_depth, threads = (int(a) for a in args[1:5])
 color = [float(c) for c in args[5].split(",")]
 radius = [float(r) for r in args[6].split(",")]
-anisotropy, ior = float(args[7]), float(args[8])
-methods = args[9:]
+anisotropy, ior, seed = float(args[7]), float(args[8]), int(args[9])
+methods = args[10:]
 
 bpy.ops.wm.read_factory_settings(use_empty=True)
 scene = bpy.context.scene
@@ -57,6 +57,7 @@ world.node_tree.nodes["Background"].inputs["Strength"].default_value = 1.0
 world.cycles.sampling_method = "NONE"
 
 configure_cycles(scene, spp, max_depth, threads)
+scene.cycles.seed = seed
 for method in methods:
     sss.falloff = method
     render_timed_exr(scene, size, size, f"{out_prefix}-{method}.rgba.exr")

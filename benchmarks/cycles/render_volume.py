@@ -1,20 +1,22 @@
-"""Renders scenes/smoke.yaml's cloud with Cycles, for benchmarks/cycles_volume_benchmark.sh. Run by
-Debian's Blender 3.4:
+"""Renders benchmarks/scenes/smoke_hdri.yaml's cloud with Cycles, for
+benchmarks/cycles_volume_benchmark.sh. Run by Debian's Blender 3.4:
 
-  blender -b --factory-startup --python render_volume.py -- SMOKE.vdb OUT.exr WIDTH HEIGHT SPP MAX_DEPTH THREADS [SEED]
+  blender -b --factory-startup --python render_volume.py -- SMOKE.vdb OUT.exr WIDTH HEIGHT SPP MAX_DEPTH THREADS SEED HDRI.exr
 
-The scene is scenes/smoke.yaml in Blender's +Z-up axes (rtpro's (x, y, z) is Blender's (x, -z, y)):
+The scene is benchmarks/scenes/smoke_hdri.yaml in Blender's +Z-up axes (rtpro's (x, y, z) is Blender's (x, -z, y)):
 the VDB imported as a Volume object (Blender's own VDB import) turned +90 degrees about X, so the
 file's +Y (rtpro's up) is Blender's +Z, with a Principled Volume of the same optics: Color = the
 albedo and Absorption Color black, so that σs = Color × density and σa = (1 − Color) × density
 (Cycles' svm_node_principled_volume), Density = density_scale (the "density" grid is its Density
 Attribute), Anisotropy = g, no emission. A Sun of the same strength (irradiance, W/m²) and colour
-along the same direction with angle 0 (rtpro's directional light is a delta), and a constant world
-colour (the sky). Cycles ray-marches heterogeneous volumes (its step rate 1: one step a voxel,
+along the same direction with angle 0 (rtpro's directional light is a delta), and the HDRI as the
+world at strength 0.25 (an Environment Texture turned as rtpro's `rotation: [0, 160, 0]`, a Mapping
+node rotation of -160 degrees about Blender's Z, as render_environment.py; the world's multiple
+importance sampling on). Cycles ray-marches heterogeneous volumes (its step rate 1: one step a voxel,
 volume_max_steps 1024); rtpro tracks them without bias, so their means agree only within that
 bias. Settings otherwise as render_gltf.py's (cycles_settings.py), with volume_bounces =
 max_depth - 1 too (Cycles' default is 0: single scattering).
-SEED (default 0) is Cycles' seed: the benchmark's long reference takes another than the runs it is
+SEED is Cycles' seed: the benchmark's long reference takes another than the runs it is
 compared with, so that their noise is not shared.
 Prints one line: "cycles_render_seconds S".
 """
@@ -31,10 +33,10 @@ from cycles_settings import configure_cycles, render_timed_exr  # noqa: E402
 args = sys.argv[sys.argv.index("--") + 1:]
 vdb, out_file = args[0], args[1]
 width, height, spp, max_depth, threads = (int(a) for a in args[2:7])
-seed = int(args[7]) if len(args) > 7 else 0
+seed, hdri = int(args[7]), args[8]
 
 DENSITY_SCALE, ALBEDO, ANISOTROPY = 8.0, (0.9, 0.9, 0.9), 0.3
-SKY = (0.3, 0.4, 0.55)
+HDRI_STRENGTH, HDRI_TURN = 0.25, -160.0
 SUN_DIRECTION, SUN_COLOR, SUN_STRENGTH = (-0.6, -0.8, 0.45), (1.0, 0.94, 0.85), 3.0
 
 bpy.ops.wm.read_factory_settings(use_empty=True)
@@ -82,11 +84,22 @@ camera.location = blender_axes((0.0, 0.4, -5.0))
 camera.rotation_euler = (blender_axes((0.0, 0.05, 0.0)) - camera.location).to_track_quat("-Z", "Y").to_euler()
 scene.camera = camera
 
-world = bpy.data.worlds.new("sky")
+world = bpy.data.worlds.new("hdri")
 scene.world = world
 world.use_nodes = True
-world.node_tree.nodes["Background"].inputs["Color"].default_value = (*SKY, 1.0)
-world.node_tree.nodes["Background"].inputs["Strength"].default_value = 1.0
+world_nodes, world_links = world.node_tree.nodes, world.node_tree.links
+texture = world_nodes.new("ShaderNodeTexEnvironment")
+texture.image = bpy.data.images.load(os.path.abspath(hdri))
+texture.interpolation = "Linear"
+mapping = world_nodes.new("ShaderNodeMapping")
+mapping.vector_type = "POINT"
+mapping.inputs["Rotation"].default_value = (0.0, 0.0, math.radians(HDRI_TURN))
+coordinates = world_nodes.new("ShaderNodeTexCoord")
+world_links.new(coordinates.outputs["Generated"], mapping.inputs["Vector"])
+world_links.new(mapping.outputs["Vector"], texture.inputs["Vector"])
+world_links.new(texture.outputs["Color"], world_nodes["Background"].inputs["Color"])
+world_nodes["Background"].inputs["Strength"].default_value = HDRI_STRENGTH
+world.cycles.sampling_method = "AUTOMATIC"
 
 configure_cycles(scene, spp, max_depth, threads)
 scene.cycles.volume_bounces = max_depth - 1

@@ -88,6 +88,9 @@ void VoxelGrid::seal() {
     }
   });
   support_ = differing.empty() ? BBox{} : BBox{differing.lower - Vec3(1.0f), differing.upper + Vec3(1.0f)};
+  // The bricks were appended one by one: give back what their vectors' doubling reserved.
+  values_.shrink_to_fit();
+  origins_.shrink_to_fit();
 }
 
 std::uint64_t VoxelGrid::memory_bytes() const {

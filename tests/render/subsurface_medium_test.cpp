@@ -13,6 +13,7 @@
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace rtpro {
 namespace {
@@ -96,6 +97,36 @@ TEST(SubsurfaceMedium, RadiusBecomesTheMeanFreePath) {
   const float boundary = (4.0f / 3.0f) * (1.0f + fdr) / (1.0f - fdr);
   const float path = std::sqrt(3.0f * (1.0f - dipole_reduced_albedo(0.3f, boundary)));
   EXPECT_NEAR(dull.sigma_t.x, 1.0f / path, 1e-4f);
+}
+
+TEST(SubsurfaceMedium, CacheGivesTheMediumOfItsLatestInputs) {
+  // Each input alone changed must make the medium again; the same inputs again, the same medium.
+  struct Inputs {
+    Color albedo, radius;
+    float anisotropy, ior;
+    SubsurfaceMethod method;
+  };
+  const Inputs base{Color(0.8f, 0.5f, 0.3f), Color(1.0f, 0.5f, 0.25f), 0.3f, 1.4f, SubsurfaceMethod::kRandomWalk};
+  std::vector<Inputs> sequence{base, base};
+  for (int change = 0; change < 5; ++change) {
+    Inputs other = base;
+    if (change == 0) other.albedo = Color(0.8f, 0.5f, 0.4f);
+    if (change == 1) other.radius = Color(1.0f, 0.6f, 0.25f);
+    if (change == 2) other.anisotropy = 0.5f;
+    if (change == 3) other.ior = 1.3f;
+    if (change == 4) other.method = SubsurfaceMethod::kRandomWalkFixedRadius;
+    sequence.push_back(other);
+    sequence.push_back(base);
+  }
+  SubsurfaceMediumCache cache;
+  for (const Inputs& in : sequence) {
+    const SubsurfaceMedium& got = cache.get(in.albedo, in.radius, in.anisotropy, in.ior, in.method);
+    const SubsurfaceMedium want = subsurface_medium(in.albedo, in.radius, in.anisotropy, in.ior, in.method);
+    EXPECT_EQ(got.sigma_t, want.sigma_t);
+    EXPECT_EQ(got.albedo, want.albedo);
+    EXPECT_EQ(got.anisotropy, want.anisotropy);
+    EXPECT_EQ(got.weight, want.weight);
+  }
 }
 
 }  // namespace

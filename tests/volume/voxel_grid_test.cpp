@@ -49,5 +49,14 @@ TEST(VoxelGrid, MemoryFollowsTheBricksNotTheBox) {
   EXPECT_LT(grid.memory_bytes(), 9'000'000u);
 }
 
+TEST(VoxelGrid, SealedGridHoldsItsBricksAndNoSpareCapacity) {
+  // Five bricks appended one by one would leave room for eight in a doubling vector.
+  VoxelGrid grid(VoxelBox{{0, 0, 0}, {39, 7, 7}}, 0.0f);
+  for (std::int32_t x = 0; x < 40; x += 8) set(grid, x, 0, 0, 1.0f);
+  grid.seal();
+  EXPECT_EQ(grid.brick_count(), 5u);
+  EXPECT_EQ(grid.memory_bytes(), VoxelGrid::bytes_for(grid.active_box(), 5));
+}
+
 }  // namespace voxel_grid_test
 }  // namespace rtpro

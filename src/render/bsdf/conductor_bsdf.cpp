@@ -72,7 +72,9 @@ ConductorBsdf::ConductorBsdf(FresnelModel model, const Color& f0, const Color& e
                              bool energy_compensation)
     : model_(model), f0_(f0), eta_(eta), k_(k), ggx_{alpha}, energy_compensation_(energy_compensation),
       fresnel_average_(model == FresnelModel::kSchlick ? schlick_average(f0) : complex_ior_average(eta, k)),
-      average_albedo_(ggx_average_albedo(alpha)),
+      // Read only where the lobe compensates: a conductor without compensation (a principled
+      // material's unused metal lobe) leaves the albedo table unbuilt.
+      average_albedo_(energy_compensation ? ggx_average_albedo(alpha) : 1.0f),
       multiple_scattering_tint_(multiple_scattering_tint(fresnel_average_, average_albedo_)) {}
 
 ConductorBsdf ConductorBsdf::from_f0(const Color& f0, float alpha, bool energy_compensation) {

@@ -36,14 +36,14 @@ PrincipledBsdf::PrincipledBsdf(const PrincipledParameters& p)
       specular_f90_(clamp01(p.specular_weight)),
       coat_weight_(clamp01(p.coat_weight)), coat_ggx_{roughness_to_alpha(clamp01(p.coat_roughness))},
       fuzz_color_(clamp01(p.fuzz_color)), fuzz_max_(max_component(fuzz_color_)), fuzz_(p.fuzz_roughness),
-      metal_(ConductorBsdf::from_f0(base_color_, ggx_.alpha)) {
+      metal_(ConductorBsdf::from_f0(base_color_, ggx_.alpha, metalness_ > 0.0f)) {
   // KHR_materials_specular clamps the tinted F0 before applying the weight.
   const float reflectance = ((eta_ - 1.0f) / (eta_ + 1.0f)) * ((eta_ - 1.0f) / (eta_ + 1.0f));
   specular_f0_ = min(max(p.specular_color, Color(0.0f)) * reflectance, Color(1.0f)) * specular_f90_;
   normalize_diffuse();
 
   const bool dielectric = metalness_ < 1.0f;
-  const bool reflects = max_component(specular_f0_) > 0.0f || specular_f90_ > 0.0f;
+  const bool reflects = has_specular_layer();
   const bool tinted = max_component(base_color_) > 0.0f;
   rough_glass_ = dielectric && transmission_ > 0.0f && !lobe_is_delta(kTransmission);
   active_[kCoat] = coat_weight_ > 0.0f;
@@ -59,8 +59,13 @@ PrincipledBsdf::PrincipledBsdf(const PrincipledParameters& p)
   find_sampled_with_density();
 }
 
+// Without a specular layer (specular weight 0) its albedo is 0 exactly: the tables are not read,
+// nor built by a scene that needs them nowhere else.
+bool PrincipledBsdf::has_specular_layer() const { return max_component(specular_f0_) > 0.0f || specular_f90_ > 0.0f; }
+
 void PrincipledBsdf::normalize_diffuse() {
-  const Color average = ggx_schlick_average_albedo(ggx_.alpha)(specular_f0_, specular_f90_);
+  const Color average =
+      has_specular_layer() ? ggx_schlick_average_albedo(ggx_.alpha)(specular_f0_, specular_f90_) : Color(0.0f);
   for (int c = 0; c < 3; ++c) diffuse_normalization_[c] = average[c] < 1.0f ? 1.0f / (1.0f - average[c]) : 0.0f;
 }
 
@@ -125,7 +130,7 @@ float PrincipledBsdf::coat_fresnel(float cos_theta) const {
 PrincipledBsdf::Outgoing PrincipledBsdf::outgoing(const Vec3& wo) const {
   Outgoing o{};
   o.cos_o = abs_cos_theta(wo);
-  if (active_[kSpecular] || active_[kDiffuse] || active_[kSubsurface])
+  if ((active_[kSpecular] || active_[kDiffuse] || active_[kSubsurface]) && has_specular_layer())
     o.specular_albedo = ggx_schlick_albedo(o.cos_o, ggx_.alpha)(specular_f0_, specular_f90_);
   const float coat_albedo = active_[kCoat] ? ggx_schlick_albedo(o.cos_o, coat_ggx_.alpha)(kCoatF0, 1.0f) : 0.0f;
   const float fuzz_albedo = active_[kFuzz] ? fuzz_.albedo(o.cos_o) : 0.0f;
@@ -212,7 +217,9 @@ Color PrincipledBsdf::evaluate(const Vec3& wo, const Vec3& wi, const Outgoing& o
       dielectric += reflection_fresnel(dot(wo, *wm), o.glass_compensation) * microfacet_reflection(ggx_, wo, wi, *wm);
     }
     if (active_[kDiffuse]) {
-      const Color albedo_i = ggx_schlick_albedo(abs_cos_theta(wi), ggx_.alpha)(specular_f0_, specular_f90_);
+      const Color albedo_i = has_specular_layer()
+                                 ? ggx_schlick_albedo(abs_cos_theta(wi), ggx_.alpha)(specular_f0_, specular_f90_)
+                                 : Color(0.0f);
       Color lambert;
       for (int c = 0; c < 3; ++c) {
         const float passed = (1.0f - o.specular_albedo[c]) * (1.0f - albedo_i[c]);

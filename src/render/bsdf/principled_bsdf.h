@@ -81,7 +81,7 @@ class PrincipledBsdf {
   void roughen_to(float min_alpha) {
     if (ggx_.alpha < min_alpha) {
       ggx_.alpha = min_alpha;
-      metal_ = ConductorBsdf::from_f0(base_color_, min_alpha);
+      metal_ = ConductorBsdf::from_f0(base_color_, min_alpha, metalness_ > 0.0f);
       normalize_diffuse();
     }
     coat_ggx_.alpha = std::max(coat_ggx_.alpha, min_alpha);
@@ -129,6 +129,7 @@ class PrincipledBsdf {
   // What follows from the specular layer's α: the Lambert base's normalisation, and which lobes
   // are sampled with a density.
   void normalize_diffuse();
+  bool has_specular_layer() const;
   void find_sampled_with_density() {
     for (int k = 0; k < kLobeCount; ++k) sampled_with_density_[k] = active_[k] && !lobe_is_delta(static_cast<Lobe>(k));
   }

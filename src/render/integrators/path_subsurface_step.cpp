@@ -42,8 +42,8 @@ void PathVertexStep<kLightPathControls>::walk_under_surface(std::size_t vertex, 
   if (entry.wi.z < 0.0f) local.z = -local.z;
   const Vec3 direction = surface_.frame.to_world(local);
   if (!(dot(direction, sp.geometric_normal) < 0.0f)) return;
-  const SubsurfaceMedium medium = subsurface_medium(surface_.albedo, model->subsurface_radius,
-                                                    model->subsurface_anisotropy, model->ior, model->subsurface_method);
+  const SubsurfaceMedium medium = subsurface_media_.get(
+      surface_.albedo, model->subsurface_radius, model->subsurface_anisotropy, model->ior, model->subsurface_method);
   const std::uint64_t seed = walk_seed(ws_.path_keys[vertex], u);
   TrackingRandom random(seed);
   const std::optional<SubsurfaceExit> exit =

@@ -19,6 +19,7 @@
 #include "rtpro/image/texture_lookup.h"
 #include "rtpro/render/sample_result.h"
 #include "rtpro/scene/render_scene.h"
+#include "subsurface_medium.h"
 #include "surface.h"
 #include "surface_bsdf.h"
 #include "vertex_samples.h"
@@ -178,6 +179,7 @@ class PathVertexStep {
   SurfaceBsdf surface_;
   PathLightSample light_sample_;
   SurfacePoint exit_surface_;  // where a walk under a surface leaves
+  SubsurfaceMediumCache subsurface_media_;
   LobeDepths depths_;
   float direct_limit_, indirect_limit_;  // clamp_sum_limit of the clamps
   bool clamping_;                        // either clamp on: a contribution's sum is worth computing

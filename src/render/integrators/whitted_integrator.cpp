@@ -304,10 +304,13 @@ void queue_dielectric_children(const Dielectric& glass, const Workspace::ShadedS
   const float cos_incident = std::max(0.0f, -dot(incident, normal));
   const float eta = s.point.front_face ? glass.ior : 1.0f / glass.ior;
   const float reflectance = fresnel_dielectric(cos_incident, eta);
-  const std::uint32_t inside = s.point.material, outside = Workspace::kOutside;
+  // One medium is tracked, the glass entered last: leaving another glass by its back (the wall
+  // of a tumbler whose liquid reaches into it) keeps it, so the liquid keeps absorbing.
+  const std::uint32_t inside = s.point.material;
+  const std::uint32_t outside = task.medium == inside ? Workspace::kOutside : task.medium;
   // A reflected ray stays on the side it came from.
   if (dot(s.mirror, normal) > 0.0f)
-    queue_child(ws, {task.sample, s.weight * reflectance, s.point.front_face ? outside : inside, false},
+    queue_child(ws, {task.sample, s.weight * reflectance, s.point.front_face ? task.medium : inside, false},
                 spawn_ray(s.point, s.mirror));
   if (const auto refracted = refract(incident, normal, eta))
     queue_child(ws, {task.sample, s.weight * (1.0f - reflectance), s.point.front_face ? inside : outside, true},

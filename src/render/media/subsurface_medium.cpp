@@ -98,4 +98,14 @@ SubsurfaceMedium subsurface_medium(const Color& surface_albedo, const Color& rad
   return medium;
 }
 
+const SubsurfaceMedium& SubsurfaceMediumCache::get(const Color& surface_albedo, const Color& radius, float anisotropy,
+                                                   float ior, SubsurfaceMethod method) {
+  const Inputs inputs{surface_albedo, radius, anisotropy, ior, method};
+  if (inputs_ != inputs) {  // NaN inputs never match: made again, as without the cache
+    medium_ = subsurface_medium(surface_albedo, radius, anisotropy, ior, method);
+    inputs_ = inputs;
+  }
+  return medium_;
+}
+
 }  // namespace rtpro

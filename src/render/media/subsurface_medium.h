@@ -19,6 +19,8 @@
 #include "rtpro/core/vec3.h"
 #include "rtpro/scene/principled_material.h"
 
+#include <optional>
+
 namespace rtpro {
 
 struct SubsurfaceMedium {
@@ -33,6 +35,25 @@ struct SubsurfaceMedium {
 // in [0, 0.9], `ior` the surface's (the dipole's boundary; clamped to [1.01, 3.8] as Cycles does).
 SubsurfaceMedium subsurface_medium(const Color& surface_albedo, const Color& radius, float anisotropy, float ior,
                                    SubsurfaceMethod method);
+
+// subsurface_medium of the last inputs again, as long as they repeat: making a medium costs about a
+// hundred exponentials, powers and arc tangents (the dipole's bisection, the albedo fit), as much
+// as tens of a walk's flights, and a scene's walks mostly start under one untextured material.
+class SubsurfaceMediumCache {
+ public:
+  const SubsurfaceMedium& get(const Color& surface_albedo, const Color& radius, float anisotropy, float ior,
+                              SubsurfaceMethod method);
+
+ private:
+  struct Inputs {
+    Color surface_albedo, radius;
+    float anisotropy, ior;
+    SubsurfaceMethod method;
+    bool operator==(const Inputs&) const = default;
+  };
+  std::optional<Inputs> inputs_;
+  SubsurfaceMedium medium_{};
+};
 
 // The single-scattering albedo whose walk in a half-space of anisotropy g reflects `surface_albedo`.
 float single_scattering_albedo(float surface_albedo, float g);
