@@ -216,13 +216,11 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
     const Color* plain = std::get_if<Color>(&color);
     s.albedo = plain ? *plain : evaluate(color, s.point, ws.textures);
     if (depth == 0 && records_primary)
-      results[generation.tasks[s.task].sample].primary = {
-          true,
-          s.albedo,
-          s.point.shading_normal,
-          ws.hits[s.task].t * length(ray.dir),
-          s.point.object_id,
-          records_motion ? film_motion(scene, ws.hits[s.task], 0.0f, s.point.position) : FilmMotion{}};
+      results[generation.tasks[s.task].sample].primary = {true, s.albedo, s.point.shading_normal,
+                                                          ws.hits[s.task].t * length(ray.dir), s.point.object_id};
+    if (depth == 0 && records_motion)  // at time 0, where this integrator finds every shape
+      results[generation.tasks[s.task].sample].primary.motion =
+          film_motion(scene, ws.hits[s.task], 0.0f, s.point.position);
   };
   // Plain sphere hits and plain triangle hits wait in fours for make_sphere_surfaces4 and
   // make_triangle_surfaces4 (the same surfaces, bit for bit).
