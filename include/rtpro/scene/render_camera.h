@@ -1,7 +1,8 @@
 #pragma once
 // The camera as the renderer uses it: the scene file's camera (a pinhole, a thin lens with an
-// aperture, or an orthographic view) with its frame worked out once. Right-handed world, +y up by convention: the image's +x runs along cross(forward, up);
-// pixel coordinates are continuous, (0,0) at the top-left corner.
+// aperture, or an orthographic view) with its frame worked out once. Right-handed world, +y up by
+// convention: the image's +x runs along cross(forward, up); pixel coordinates are continuous,
+// (0,0) at the top-left corner.
 #include "rtpro/core/vec3.h"
 #include "rtpro/scene/motion.h"
 
