@@ -58,8 +58,9 @@ void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
   cmd.add_option("--region", o.region, "Render only pixels x0,y0,x1,y1 (x1, y1 exclusive)");
   cmd.add_flag("--crop", o.crop, "With --region: write only the region instead of a full-size image");
   one_of(cmd.add_option("--aov", o.aovs,
-                        "Extra EXR layers: albedo,normal,depth,object-id,halves,variance,spp (EXR outputs only)"),
-         {"albedo", "normal", "depth", "object-id", "halves", "variance", "spp"})
+                        "Extra EXR layers: albedo,normal,depth,object-id,halves,variance,spp,motion (EXR outputs "
+                        "only)"),
+         {"albedo", "normal", "depth", "object-id", "halves", "variance", "spp", "motion"})
       ->delimiter(',')
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);

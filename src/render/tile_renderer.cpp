@@ -23,11 +23,17 @@ constexpr std::size_t kSamplesPerBatch = 1024;
 
 struct TileRenderer::Integration {
   Integration(const RenderScene& scene, const Backend& backend, const TextureLookup* textures,
-              const EnvironmentLight* environment, bool records_primary)
-      : samplers(scene.render),
-        integrator(make_integrator(scene, {backend, samplers, textures, environment, records_primary})) {}
+              const EnvironmentLight* environment, const SumLayout& sums)
+      : samplers(scene.render), integrator(make_integrator(scene, {backend, samplers, textures, environment,
+                                                                   !sums.keeps_color_only(), sums.keeps_motion()})),
+        still_camera(scene.camera) {
+    still_camera.pose_steps.clear();
+  }
   CameraSamplers samplers;
   SceneIntegrator integrator;
+  // The scene's camera without its motion: a moving camera's samples copy it (no allocation) and
+  // pose the copy at their time.
+  RenderCamera still_camera;
 };
 
 struct TileRenderer::Workspace::IntegratorBuffers {
@@ -54,7 +60,7 @@ TileRenderer::TileRenderer(const RenderScene& scene, const Backend& backend, con
     throw std::logic_error("TileRenderer: the scene has an environment but none was built for it");
   if (!scene.textures.empty() && !textures)
     throw std::logic_error("TileRenderer: the scene has image textures but none were opened for it");
-  integration_ = std::make_unique<const Integration>(scene, backend, textures, environment, !sums.keeps_color_only());
+  integration_ = std::make_unique<const Integration>(scene, backend, textures, environment, sums);
 }
 
 TileRenderer::~TileRenderer() = default;
@@ -69,7 +75,9 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
   const int per_pixel = range.count();
   const auto image_width = static_cast<std::uint64_t>(scene_.camera.width);
   const auto tile_width = static_cast<std::size_t>(tile.width());
-  const bool pinhole = scene_.camera.lens_radius == 0.0f;
+  const RenderCamera& camera = scene_.camera;
+  const bool lensless = camera.lens_radius == 0.0f;
+  const bool pinhole = lensless && !camera.orthographic && !camera.moving();
   // Sized once per batch and written in place (a resize to the same size does nothing).
   ws.camera_rays.resize(pixel_count * static_cast<std::size_t>(per_pixel));
   ws.sample_keys.resize(ws.camera_rays.size());
@@ -93,6 +101,16 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
     ws.sobol_offsets.resize(ws.sample_keys.size());
     sobol.sample_2d(ws.sample_keys, sample_dimension::kPixel, ws.sobol_offsets);
   }
+  ws.camera_times.clear();
+  if (camera.shutter.is_open()) {
+    // A box shutter: the time uniform over it, stratified as the sampler stratifies a dimension.
+    ws.camera_times.resize(ws.sample_keys.size());
+    switch (scene_.render.sampler) {
+      case SamplerKind::kStratified: sampler.sample_1d(ws.sample_keys, sample_dimension::kTime, ws.camera_times); break;
+      case SamplerKind::kSobol: sobol.sample_1d(ws.sample_keys, sample_dimension::kTime, ws.camera_times); break;
+    }
+  }
+  RenderCamera posed = integration_->still_camera;  // a moving camera's, at each sample's time
   std::size_t next = 0;
   for (std::size_t i = 0; i < pixel_count; ++i) {
     const std::size_t p = pixels[i];
@@ -114,28 +132,21 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
         px[k] = static_cast<float>(x) + offsets[s + k].x;
         py[k] = static_cast<float>(y) + offsets[s + k].y;
       }
-      pinhole_rays4(scene_.camera, px, py, &ws.camera_rays[next]);
+      pinhole_rays4(camera, px, py, &ws.camera_rays[next]);
     }
     for (; s < range.end; ++s, ++next) {
       const PixelOffset& offset = offsets[s];
-      const Sample2D lens = pinhole ? Sample2D{0.5f, 0.5f}
+      const Sample2D lens = lensless ? Sample2D{0.5f, 0.5f}
                             : scene_.render.sampler == SamplerKind::kStratified
                                 ? sampler.sample_2d(pixel_key, s, sample_dimension::kLens)
                                 : sobol.sample_2d(pixel_key, s, sample_dimension::kLens);
-      copy_ray(camera_ray(scene_.camera, static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y, lens),
+      if (camera.moving()) set_pose(posed, camera_pose_at(camera, ws.camera_times[next]));
+      copy_ray(camera_ray(camera.moving() ? posed : camera, static_cast<float>(x) + offset.x,
+                          static_cast<float>(y) + offset.y, lens),
                ws.camera_rays[next]);
     }
   }
   ws.samples.resize(ws.camera_rays.size());
-  ws.camera_times.clear();
-  if (scene_.camera.shutter.is_open()) {
-    // A box shutter: the time uniform over it, stratified as the sampler stratifies a dimension.
-    ws.camera_times.resize(ws.sample_keys.size());
-    switch (scene_.render.sampler) {
-      case SamplerKind::kStratified: sampler.sample_1d(ws.sample_keys, sample_dimension::kTime, ws.camera_times); break;
-      case SamplerKind::kSobol: sobol.sample_1d(ws.sample_keys, sample_dimension::kTime, ws.camera_times); break;
-    }
-  }
   trace(integration_->integrator, {ws.camera_rays, ws.sample_keys, ws.samples, ws.camera_times}, out.rays,
         ws.integrator->workspaces);
 

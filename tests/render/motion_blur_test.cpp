@@ -7,6 +7,8 @@
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
 
+#include "box_filtered_coverage.h"
+
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -84,13 +86,7 @@ double covered_time(double s) {
 }
 
 // Pixel x's expected value: the covered time averaged over the pixel's footprint (box filter).
-double expected_pixel(int x) {
-  constexpr int kSteps = 2000;
-  const double left = -(x + 1 - kWidth / 2) * double(kPixel);
-  double sum = 0.0;
-  for (int i = 0; i < kSteps; ++i) sum += covered_time(left + (i + 0.5) * kPixel / kSteps);
-  return sum / kSteps;
-}
+double expected_pixel(int x) { return test::box_filtered_coverage(x, kWidth, kPixel, covered_time); }
 
 void expect_trapezoid(const Image& image, const char* what) {
   double worst = 0.0;

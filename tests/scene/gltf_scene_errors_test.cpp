@@ -162,7 +162,7 @@ TEST(GltfSceneErrors, TheCameraFramingFarMeshesSaysItIsRtprosOwn) {
   gltf.json["scenes"][0]["nodes"] = {gltf.node({{"children", {0}}, {"scale", {1e9, 1e9, 1e9}}})};
   const std::string message = scene_error(gltf.write("far_meshes"));
   EXPECT_TRUE(starts_with(message,
-                          "the camera rtpro places to frame the meshes (the file has no perspective camera): "
+                          "the camera rtpro places to frame the meshes (the file has no usable camera): "
                           "camera.position: "))
       << message;
 }

@@ -19,15 +19,21 @@ Sample2D concentric_disk(Sample2D square);
 // The ray through film point (px, py). With a lens (lens_radius > 0) it leaves the point of the
 // lens disk that `lens` ([0,1)², stratified) maps to and passes through the film point's image on
 // the plane in focus, so points on that plane stay sharp and others blur by the thin-lens circle
-// of confusion. With lens_radius 0 `lens` is unused: the pinhole ray.
+// of confusion. With lens_radius 0 `lens` is unused: the pinhole ray. An orthographic camera's ray
+// leaves the film point's place on the plane through the camera, along `forward`.
 // Inline: one call per camera sample, and a ray returned through memory was copied into the batch
 // with 16-byte loads over the callee's 4-byte stores (a store-forwarding stall per sample).
 inline Ray camera_ray(const RenderCamera& camera, float px, float py, Sample2D lens) {
   const float x = (2.0f * px * camera.inv_width - 1.0f) * camera.half_width;
   const float y = (1.0f - 2.0f * py * camera.inv_height) * camera.half_height;
+  Ray ray;
+  if (camera.orthographic) {
+    ray.org = camera.position + camera.right * x + camera.true_up * y;
+    ray.dir = camera.forward;
+    return ray;
+  }
   // The film point's direction at distance 1 along `forward`.
   const Vec3 through = camera.forward + camera.right * x + camera.true_up * y;
-  Ray ray;
   if (camera.lens_radius == 0.0f) {
     ray.org = camera.position;
     ray.dir = normalize(through);
@@ -41,7 +47,7 @@ inline Ray camera_ray(const RenderCamera& camera, float px, float py, Sample2D l
   return ray;
 }
 
-// Four pinhole rays (lens_radius 0) through film points (px[i], py[i]) into `rays[0..3]`: camera_ray's
+// Four pinhole rays (perspective, lens_radius 0) through film points (px[i], py[i]) into `rays[0..3]`: camera_ray's
 // operations in its order, four lanes at a time in SSE2 registers (IEEE operations are exact per
 // lane), so each ray is camera_ray's bit for bit. The square root and the three divisions of each
 // direction's normalisation were a latency chain per sample; four lanes run one chain for four.

@@ -23,6 +23,7 @@ struct PixelAccumulator {
   float depth_sum = 0.0f;
   int hits = 0;
   std::uint32_t first_object_id = 0;  // of sample 0; 0 when it missed (ids are stored + 1)
+  float motion[4] = {};               // of the hits: FilmMotion's forward x, y, back x, y
   int samples = 0;
   // Inline: it runs once per camera sample.
   void add(const Color& sample_radiance, const PrimaryHit& primary, int sample_index) {
@@ -35,6 +36,10 @@ struct PixelAccumulator {
     normal += primary.normal;
     depth_sum += primary.depth;
     ++hits;
+    motion[0] += primary.motion.forward_x;
+    motion[1] += primary.motion.forward_y;
+    motion[2] += primary.motion.back_x;
+    motion[3] += primary.motion.back_y;
   }
   // The colour and the count alone, as add sums them: all a SumLayout that keeps_color_only reads.
   void add_color(const Color& sample_radiance) {
@@ -46,8 +51,8 @@ struct PixelAccumulator {
 // The sums a render keeps, stored per pixel as floats in this order: the colour (3) and the sample
 // count (1) always; then, when something reads them, the even-sample colour (3: the halves layer,
 // Cycles' error), the odd-sample colour (3: halves), the squares (3: variance, relMSE error), albedo (3),
-// normal (3), depth sum and hit count (2: depth) and the first sample's object id (1, its bit
-// pattern). Counts are stored as float values: exact, as no pixel takes 2^24 samples.
+// normal (3), depth sum and hit count (2: depth, motion), the first sample's object id (1, its bit
+// pattern) and the motion (4). Counts are stored as float values: exact, as no pixel takes 2^24 samples.
 // Sums kept beyond what the layers read: what adaptive sampling's error reads.
 struct ExtraSums {
   bool even_half = false;
@@ -63,6 +68,7 @@ class SumLayout {
   int floats() const { return floats_; }
   bool keeps_even() const { return even_ >= 0; }
   bool keeps_color_only() const { return floats_ == 4; }
+  bool keeps_motion() const { return motion_ >= 0; }
 
   // Inline below, as they run once per pixel of every work item: writes the sums this layout keeps.
   void store(const PixelAccumulator& acc, float* out) const;
@@ -82,7 +88,7 @@ class SumLayout {
   }
   static Color load_color(const float* in) { return Color(in[0], in[1], in[2]); }
 
-  int even_ = -1, odd_ = -1, squared_ = -1, albedo_ = -1, normal_ = -1, depth_ = -1, object_id_ = -1;
+  int even_ = -1, odd_ = -1, squared_ = -1, albedo_ = -1, normal_ = -1, depth_ = -1, object_id_ = -1, motion_ = -1;
   int floats_ = 4;
 };
 
@@ -99,6 +105,8 @@ inline void SumLayout::store(const PixelAccumulator& acc, float* out) const {
     out[depth_ + 1] = static_cast<float>(acc.hits);
   }
   if (object_id_ >= 0) out[object_id_] = std::bit_cast<float>(acc.first_object_id);
+  if (motion_ >= 0)
+    for (int i = 0; i < 4; ++i) out[motion_ + i] = acc.motion[i];
 }
 
 inline PixelAccumulator SumLayout::load(const float* sums) const {
@@ -118,6 +126,8 @@ inline PixelAccumulator SumLayout::load(const float* sums) const {
     acc.hits = static_cast<int>(sums[depth_ + 1]);
   }
   if (object_id_ >= 0) acc.first_object_id = std::bit_cast<std::uint32_t>(sums[object_id_]);
+  if (motion_ >= 0)
+    for (int i = 0; i < 4; ++i) acc.motion[i] = sums[motion_ + i];
   return acc;
 }
 

@@ -35,11 +35,17 @@ namespace rtpro {
 
 inline constexpr int kSceneFormatVersion = 1;
 
+// How the camera maps directions to the film: through a point (perspective: `fov`) or along
+// parallel rays from the plane through its position (orthographic: `ortho_height`).
+enum class CameraProjection { kPerspective, kOrthographic };
+
 struct CameraDesc {
   Vec3 position{0.0f, 0.0f, -5.0f};
   Vec3 look_at{0.0f, 0.0f, 0.0f};
   Vec3 up{0.0f, 1.0f, 0.0f};
-  float fov_degrees = 45.0f;  // vertical field of view
+  CameraProjection projection = CameraProjection::kPerspective;
+  float fov_degrees = 45.0f;  // vertical field of view (perspective)
+  float ortho_height = 2.0f;  // the view's height in scene units (orthographic)
   int width = 640;
   int height = 480;
   // Thin lens: the lens radius in scene units (0: a pinhole, everything sharp) and the distance
@@ -48,6 +54,9 @@ struct CameraDesc {
   float focus_distance = 0.0f;
   // `camera.shutter`: the exposure in frames relative to the frame's time (scene/motion.h).
   Shutter shutter;
+  // A camera that moves during the shutter: its frame (camera_frame, build_render_scene.h) at the
+  // shutter's time steps; empty when it stands still.
+  std::vector<Affine> frame_steps;
 };
 
 // A procedural checkerboard in world space: squares (or cubes) of side `size`, alternating

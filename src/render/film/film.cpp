@@ -15,8 +15,9 @@ Aov parse_aov(std::string_view name) {
   if (name == "halves") return Aov::kHalves;
   if (name == "variance") return Aov::kVariance;
   if (name == "spp") return Aov::kSpp;
+  if (name == "motion") return Aov::kMotion;
   throw InputError("unknown AOV '" + std::string(name) +
-                   "': expected albedo, normal, depth, object-id, halves, variance or spp");
+                   "': expected albedo, normal, depth, object-id, halves, variance, spp or motion");
 }
 
 std::vector<std::string> aov_channel_names(Aov aov) {
@@ -28,6 +29,7 @@ std::vector<std::string> aov_channel_names(Aov aov) {
     case Aov::kHalves: return {"half_a.R", "half_a.G", "half_a.B", "half_b.R", "half_b.G", "half_b.B"};
     case Aov::kVariance: return {"variance.R", "variance.G", "variance.B"};
     case Aov::kSpp: return {"spp.count"};
+    case Aov::kMotion: return {"motion.X", "motion.Y", "motion.Z", "motion.W"};
   }
   throw InputError("unknown AOV");
 }
@@ -105,6 +107,11 @@ void FilmLayout::resolve(const PixelAccumulator& acc, std::span<float> pixel) co
         break;
       }
       case Aov::kSpp: *out++ = static_cast<float>(samples); break;
+      case Aov::kMotion: {
+        const float inv_hits = acc.hits > 0 ? 1.0f / static_cast<float>(acc.hits) : 0.0f;
+        for (float v : acc.motion) *out++ = v * inv_hits;
+        break;
+      }
     }
   }
 }

@@ -24,10 +24,10 @@ SceneIntegrator make_integrator(const RenderScene& scene, const IntegratorContex
       refuse_media_under_whitted(scene);
       return SceneIntegrator(std::in_place_type<WhittedIntegrator>, scene, context.backend,
                              context.samplers.stratified(), context.textures, context.environment,
-                             context.records_primary);
+                             context.records_primary, context.records_motion);
     case Integrator::kPath:
       return SceneIntegrator(std::in_place_type<PathIntegrator>, scene, context.backend, context.samplers,
-                             context.textures, context.environment);
+                             context.textures, context.environment, context.records_motion);
   }
   __builtin_unreachable();  // the switch covers every kind
 }

@@ -32,13 +32,15 @@ using IntegratorWorkspaces = WorkspacesOf<SceneIntegrator>::type;
 
 // What an integrator needs besides the scene: the backend it traces with, the samplers it draws
 // from, the scene's opened textures and environment (each required when the scene has one), and
-// whether anything reads the primary hits (the film keeps more than colour).
+// whether anything reads the primary hits (the film keeps more than colour) and their film motion
+// (the motion AOV).
 struct IntegratorContext {
   const Backend& backend;
   const CameraSamplers& samplers;
   const TextureLookup* textures;
   const EnvironmentLight* environment;
   bool records_primary;
+  bool records_motion = false;
 };
 
 // The integrator the scene's render.integrator names.

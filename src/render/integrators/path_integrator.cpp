@@ -75,9 +75,9 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
   std::optional<LightSet::LonePointLight> lone_point_light = lights_.lone_point_light();
   if (draws_.medium) lone_point_light.reset();
   PathVertexStep<true> controlled_step(scene, backend_, lights_, batch.results, ws, textures_, draws_.cosine_directions,
-                                       lone_point_light.has_value());
+                                       lone_point_light.has_value(), records_motion_);
   PathVertexStep<false> plain_step(scene, backend_, lights_, batch.results, ws, textures_, draws_.cosine_directions,
-                                   lone_point_light.has_value());
+                                   lone_point_light.has_value(), records_motion_);
   const bool controlled = controlled_step.controls_apply();
   const auto extend_generation = [&](auto& step) {
     if (draws_.medium)

@@ -97,9 +97,9 @@ class PathIntegrator {
  public:
   using Workspace = PathWorkspace;
   PathIntegrator(const RenderScene& scene, const Backend& backend, const CameraSamplers& samplers,
-                 const TextureLookup* textures, const EnvironmentLight* environment)
+                 const TextureLookup* textures, const EnvironmentLight* environment, bool records_motion = false)
       : scene_(scene), backend_(backend), samplers_(samplers), textures_(textures), lights_(scene, environment),
-        draws_(vertex_draws(scene, lights_)) {}
+        draws_(vertex_draws(scene, lights_)), records_motion_(records_motion) {}
 
   // Traces the batch's paths; each sample's random numbers come from the sampler render.sampler
   // chooses. Ray counts are added to `counts` (bounces as reflection or refraction rays).
@@ -116,7 +116,8 @@ class PathIntegrator {
   const CameraSamplers& samplers_;
   const TextureLookup* textures_;
   LightSet lights_;
-  VertexDraws draws_;  // which of a vertex's random numbers the scene reads
+  VertexDraws draws_;    // which of a vertex's random numbers the scene reads
+  bool records_motion_;  // the camera hits' film motion (the motion AOV)
 };
 
 }  // namespace rtpro

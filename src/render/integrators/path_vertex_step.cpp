@@ -1,5 +1,6 @@
 #include "path_vertex_step.h"
 
+#include "film_motion.h"
 #include "rtpro/core/append_ray.h"
 #include "lambert_fast_paths.h"
 #include "light_linking.h"
@@ -45,10 +46,11 @@ template <bool kLightPathControls>
 PathVertexStep<kLightPathControls>::PathVertexStep(const RenderScene& scene, const Backend& backend,
                                                    const LightSet& lights, std::span<SampleResult> results,
                                                    PathWorkspace& ws, const TextureLookup* textures,
-                                                   bool cosine_directions, bool lone_point_light)
+                                                   bool cosine_directions, bool lone_point_light, bool records_motion)
     : scene_(scene), backend_(backend), lights_(lights), results_(results), ws_(ws), textures_(textures),
-      cosine_directions_(cosine_directions), lone_point_light_(lone_point_light), has_media_(!scene.media.empty()),
-      depths_(lobe_depths(scene.render)), direct_limit_(clamp_sum_limit(scene.render.path.clamp_direct)),
+      cosine_directions_(cosine_directions), lone_point_light_(lone_point_light), records_motion_(records_motion),
+      has_media_(!scene.media.empty()), depths_(lobe_depths(scene.render)),
+      direct_limit_(clamp_sum_limit(scene.render.path.clamp_direct)),
       indirect_limit_(clamp_sum_limit(scene.render.path.clamp_indirect)),
       clamping_(scene.render.path.clamp_direct > 0.0f || scene.render.path.clamp_indirect > 0.0f),
       filter_glossy_(scene.render.path.filter_glossy), max_depth_(scene.render.max_depth),
@@ -85,6 +87,8 @@ void PathVertexStep<kLightPathControls>::extend(std::size_t vertex, const Path& 
   filter_glossy(path, surface.bsdf);
   const bool delta = bsdf_is_delta(surface.bsdf);
   const bool aov_pending = record_aovs(path, ray, hit, sp, surface, delta, result.primary);
+  if (records_motion_ && path.bounce == 0)
+    result.primary.motion = film_motion(scene_, hit, ws_.ray_times.empty() ? 0.0f : ws_.ray_times[vertex], sp.position);
   if (ends_here(path)) return;
 
   // The reciprocal length multiplied through: one division, not normalize's three.

@@ -77,10 +77,11 @@ class PathVertexStep {
   using Path = PathWorkspace::Path;
 
   // `cosine_directions`: the vertices' samples hold their Lambert directions (VertexDraws);
-  // `lone_point_light`: they hold their light samples (GenerationSamples::lone_light_sample).
+  // `lone_point_light`: they hold their light samples (GenerationSamples::lone_light_sample);
+  // `records_motion`: the camera hits' film motion is read (the motion AOV).
   PathVertexStep(const RenderScene& scene, const Backend& backend, const LightSet& lights,
                  std::span<SampleResult> results, PathWorkspace& ws, const TextureLookup* textures,
-                 bool cosine_directions, bool lone_point_light);
+                 bool cosine_directions, bool lone_point_light, bool records_motion);
 
   // Whether the scene sets any of Cycles' controls this step is compiled for.
   bool controls_apply() const { return clamping_ || lobe_limits_ || filtering_glossy_; }
@@ -174,6 +175,7 @@ class PathVertexStep {
   const TextureLookup* textures_;
   bool cosine_directions_;
   bool lone_point_light_;
+  bool records_motion_;
   bool has_media_;
   // The current vertex's BSDF and light sample, filled in place (material_bsdf, LightSet::sample).
   SurfaceBsdf surface_;

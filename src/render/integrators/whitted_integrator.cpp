@@ -5,6 +5,7 @@
 #include "rtpro/core/avx2_clones.h"
 #include "beer_lambert.h"
 #include "dielectric.h"
+#include "film_motion.h"
 #include "light_linking.h"
 #include "light_sample.h"
 #include "ray_offset.h"
@@ -199,10 +200,10 @@ void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sample
 // Reads the hits of one generation: misses see the background (or an area light), hits become
 // shaded surfaces with their shadow rays queued, one per light or samples² per area light (lights
 // behind the surface, by either normal, need none); at depth 0 a hit is the sample's primary hit
-// where records_primary.
+// where records_primary (with its film motion where records_motion).
 RTPRO_AVX2_CLONES
 void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler, std::span<const SampleKey> keys,
-                     const Workspace::Generation& generation, int depth, bool records_primary,
+                     const Workspace::Generation& generation, int depth, bool records_primary, bool records_motion,
                      std::span<SampleResult> results, Workspace& ws) {
   ws.surfaces.clear();
   ws.shadow_queries.clear();
@@ -217,6 +218,9 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
     if (depth == 0 && records_primary)
       results[generation.tasks[s.task].sample].primary = {true, s.albedo, s.point.shading_normal,
                                                           ws.hits[s.task].t * length(ray.dir), s.point.object_id};
+    if (depth == 0 && records_motion)  // at time 0, where this integrator finds every shape
+      results[generation.tasks[s.task].sample].primary.motion =
+          film_motion(scene, ws.hits[s.task], 0.0f, s.point.position);
   };
   // Plain sphere hits and plain triangle hits wait in fours for make_sphere_surfaces4 and
   // make_triangle_surfaces4 (the same surfaces, bit for bit).
@@ -384,7 +388,7 @@ void WhittedIntegrator::trace(const CameraBatch& batch, RayCounts& counts, Works
   for (int depth = 0; !ws.current.rays.empty(); ++depth) {
     ws.hits.resize(ws.current.rays.size());
     backend_.intersect(ws.current.rays, ws.hits, depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
-    gather_surfaces(scene, sampler_, keys, ws.current, depth, records_primary_, results, ws);
+    gather_surfaces(scene, sampler_, keys, ws.current, depth, records_primary_, records_motion_, results, ws);
 
     ws.occluded.resize(ws.shadow_rays.size());
     occluded_with_shadow_linking(backend_, scene.links, ws.shadow_rays, {}, ws.shadow_lights, ws.occluded,

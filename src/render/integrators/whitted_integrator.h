@@ -94,14 +94,16 @@ class ShadingWorkspace {
 // The Whitted integrator with its scene and settings. `textures`: the scene's image textures,
 // opened (needed only when it has some). `environment`: what rays that escape see (needed only
 // when the scene has one); the Whitted integrator shows it but does not light with it.
-// `records_primary`: false when nothing reads the primary hits (they are left empty).
+// `records_primary`: false when nothing reads the primary hits (they are left empty);
+// `records_motion`: their film motion is read too (the motion AOV).
 class WhittedIntegrator {
  public:
   using Workspace = ShadingWorkspace;
   WhittedIntegrator(const RenderScene& scene, const Backend& backend, const StratifiedSampler& sampler,
-                    const TextureLookup* textures, const EnvironmentLight* environment, bool records_primary)
+                    const TextureLookup* textures, const EnvironmentLight* environment, bool records_primary,
+                    bool records_motion)
       : scene_(scene), backend_(backend), sampler_(sampler), textures_(textures), environment_(environment),
-        records_primary_(records_primary) {}
+        records_primary_(records_primary), records_motion_(records_motion) {}
 
   // Traces and shades the batch; area lights draw their shadow samples from the sampler with each
   // sample's key. Ray counts are added to `counts`.
@@ -114,6 +116,7 @@ class WhittedIntegrator {
   const TextureLookup* textures_;
   const EnvironmentLight* environment_;
   bool records_primary_;
+  bool records_motion_;
 };
 
 }  // namespace rtpro

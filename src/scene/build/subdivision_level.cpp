@@ -12,7 +12,10 @@ constexpr float kPi = 3.14159265358979323846f;
 }  // namespace
 
 int choose_subdivision_level(const PolygonCage& cage, const CameraDesc& camera, float edge_length, int cap) {
-  const float pixel_angle = 2.0f * std::tan(camera.fov_degrees * kPi / 360.0f) / float(camera.height);
+  // A pixel's width at distance 1 (perspective), or anywhere (orthographic).
+  const bool orthographic = camera.projection == CameraProjection::kOrthographic;
+  const float pixel_angle = orthographic ? camera.ortho_height / float(camera.height)
+                                         : 2.0f * std::tan(camera.fov_degrees * kPi / 360.0f) / float(camera.height);
   float longest = 0.0f;  // pixels
   std::size_t first = 0;
   for (std::size_t f = 0; f < cage.face_count(); first += cage.face_sizes[f], ++f) {
@@ -21,7 +24,10 @@ int choose_subdivision_level(const PolygonCage& cage, const CameraDesc& camera, 
       const Vec3 a = cage.positions[cage.face_vertices[first + k]];
       const Vec3 b = cage.positions[cage.face_vertices[first + (k + 1) % n]];
       const float length_ab = length(b - a);
-      const float z = std::max({std::min(length(a - camera.position), length(b - camera.position)), length_ab, 1e-30f});
+      const float z =
+          orthographic
+              ? 1.0f
+              : std::max({std::min(length(a - camera.position), length(b - camera.position)), length_ab, 1e-30f});
       longest = std::max(longest, length_ab / (z * pixel_angle));
     }
   }

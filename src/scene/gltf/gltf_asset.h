@@ -39,10 +39,13 @@ struct GltfCamera {
   std::uint32_t node;  // nodes[node] places cameras[camera]
   std::uint32_t camera;
   Vec3 position;
-  Vec3 forward;  // the node's -z
-  Vec3 up;       // the node's +y
-  float yfov_degrees;
+  Vec3 forward;        // the node's -z
+  Vec3 up;             // the node's +y
+  float yfov_degrees;  // perspective
   float aspect_ratio;  // width / height; 0 when the file gives none
+  // An orthographic camera's half height (glTF's ymag; its xmag gives the aspect ratio); 0 for a
+  // perspective one.
+  float ortho_half_height = 0.0f;
 };
 
 struct GltfLight {

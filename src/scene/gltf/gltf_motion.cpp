@@ -1,6 +1,7 @@
 #include "gltf_motion.h"
 
 #include "gltf_pose.h"
+#include "rtpro/scene/render_camera.h"
 
 #include <algorithm>
 #include <map>
@@ -78,6 +79,17 @@ GltfPose pose_gltf_frame(const GltfAsset& asset, double frame, double fps, const
     add_vertex_steps(asset, placement, deformation_times, states, pose.deformed[std::size_t(placement.deformed)]);
   }
   return pose;
+}
+
+std::vector<Affine> gltf_camera_frame_steps(const GltfAsset& asset, const GltfCamera& camera, double frame, double fps,
+                                            const Shutter& shutter) {
+  if (!asset.animated()) return {};
+  return sample_transform_motion(shutter, frame, [&](double at) {
+    GltfCamera placed = camera;
+    // A step whose node leaves no view direction keeps the file's rest placement.
+    gltf::place_camera(placed, gltf::animate_nodes(asset, at / fps).world[camera.node]);
+    return camera_frame(placed.position, placed.forward, placed.up);
+  });
 }
 
 }  // namespace rtpro

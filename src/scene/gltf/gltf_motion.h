@@ -18,4 +18,9 @@ inline constexpr int kDeformationSteps = 9;
 // The pose at frame `frame` (frame / fps seconds) with the steps of `shutter` (in frames).
 GltfPose pose_gltf_frame(const GltfAsset& asset, double frame, double fps, const Shutter& shutter);
 
+// The frame of `camera` (camera_frame, scene/render_camera.h) at the steps of `shutter` around
+// frame `frame`, as many as keep a turn on its arc; empty when its node keeps still.
+std::vector<Affine> gltf_camera_frame_steps(const GltfAsset& asset, const GltfCamera& camera, double frame, double fps,
+                                            const Shutter& shutter);
+
 }  // namespace rtpro

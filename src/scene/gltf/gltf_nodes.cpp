@@ -271,27 +271,41 @@ class NodeWalker {
     if (std::size_t(node.camera) >= model_.cameras.size())
       reader_.fail(path + ".camera", "camera " + std::to_string(node.camera) + " does not exist");
     const tinygltf::Camera& camera = model_.cameras[std::size_t(node.camera)];
-    if (camera.type != "perspective") {
+    const bool orthographic = camera.type == "orthographic";
+    if (camera.type != "perspective" && !orthographic) {
       asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) +
                                       "]: " + ascii::quoted(camera.type) + " cameras are not supported; skipped");
       return;
     }
     const double yfov = camera.perspective.yfov * kRadiansToDegrees;
-    GltfCamera placed{std::uint32_t(index), std::uint32_t(node.camera), {}, {}, {}, float(yfov), 0.0f};
-    if (!(yfov > 0.0 && yfov < 180.0) || !place_camera(placed, world)) {
-      asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) +
-                                      "]: unusable field of view or placement; skipped");
+    const double ymag = std::fabs(camera.orthographic.ymag), xmag = std::fabs(camera.orthographic.xmag);
+    GltfCamera placed{std::uint32_t(index),
+                      std::uint32_t(node.camera),
+                      {},
+                      {},
+                      {},
+                      float(yfov),
+                      0.0f,
+                      orthographic ? float(ymag) : 0.0f};
+    const bool usable = orthographic
+                            ? ymag > 0.0 && std::isfinite(placed.ortho_half_height) && xmag > 0.0 && std::isfinite(xmag)
+                            : yfov > 0.0 && yfov < 180.0;
+    if (!usable || !place_camera(placed, world)) {
+      asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) + "]: unusable " +
+                                      (orthographic ? "xmag or ymag" : "field of view") + " or placement; skipped");
       return;
     }
     // The image is 640 pixels wide and as high as the aspect ratio makes it (0.0011 would make it
     // 65,536 high): ratios beyond 1:16 are clamped (with a warning), an image at most 10,240 high.
-    double aspect = camera.perspective.aspectRatio;
+    // An orthographic camera's is xmag / ymag, as Blender's importer fits its view.
+    double aspect = orthographic ? xmag / ymag : camera.perspective.aspectRatio;
     if (!std::isfinite(aspect) || aspect < 0.0) aspect = 0.0;  // none: the default size
     if (aspect > 0.0 && (aspect < kMinCameraAspect || aspect > kMaxCameraAspect)) {
       const double clamped = std::clamp(aspect, kMinCameraAspect, kMaxCameraAspect);
       asset_.stats.warnings.push_back(reader_.file() + ": cameras[" + std::to_string(node.camera) +
-                                      "].perspective.aspectRatio " + std::to_string(aspect) + " is outside 1/16..16; " +
-                                      std::to_string(clamped) + " is used");
+                                      (orthographic ? "]: xmag / ymag " : "].perspective.aspectRatio ") +
+                                      std::to_string(aspect) + " is outside 1/16..16; " + std::to_string(clamped) +
+                                      " is used");
       aspect = clamped;
     }
     placed.aspect_ratio = float(aspect);

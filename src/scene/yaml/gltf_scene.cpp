@@ -5,6 +5,7 @@
 #include "rtpro/scene/scene_parser.h"
 #include "gltf_asset.h"
 #include "gltf_loader.h"
+#include "gltf_motion.h"
 #include "gltf_pose.h"
 
 #include <algorithm>
@@ -29,13 +30,16 @@ void add_camera(const GltfPose& pose, const BBox& bounds, ModelSceneText& text) 
     // is 128): the step grows with the position, and below 256 stays 1.
     const float magnitude = std::max({std::fabs(c.position.x), std::fabs(c.position.y), std::fabs(c.position.z)});
     const Vec3 look_at = c.position + c.forward * std::max(1.0f, magnitude / 256.0f);
+    const std::string projection = c.ortho_half_height > 0.0f ? "projection: orthographic, ortho_height: " +
+                                                                    yaml_number(2.0f * c.ortho_half_height)
+                                                              : "fov: " + yaml_number(c.yfov_degrees);
     text.add("camera: {position: " + yaml_vector(c.position) + ", look_at: " + yaml_vector(look_at) +
-                 ", up: " + yaml_vector(c.up) + ", fov: " + yaml_number(c.yfov_degrees) + ", resolution: [" +
+                 ", up: " + yaml_vector(c.up) + ", " + projection + ", resolution: [" +
                  std::to_string(kModelImageWidth) + ", " + std::to_string(height) + "]}",
              gltf_node_path(c.node) + " (cameras[" + std::to_string(c.camera) + "])");
     return;
   }
-  add_framing_camera(bounds, "the camera rtpro places to frame the meshes (the file has no perspective camera)", text);
+  add_framing_camera(bounds, "the camera rtpro places to frame the meshes (the file has no usable camera)", text);
 }
 
 // A spot light's cone, glTF's half-angles in radians as the scene format's degrees: computed in
@@ -141,6 +145,11 @@ SceneDescription parse_gltf_scene_file(const std::filesystem::path& file, const 
   // animated camera or light is written again where the frame's pose puts it.
   if (asset->animated()) {
     description = parse(pose_gltf(*asset, description.frame / description.render.fps));
+    // The file's camera blurs as its node moves: its frames over the shutter replace the text's
+    // camera position and direction (--set camera.position moves only the closed-shutter camera).
+    if (!asset->cameras.empty())
+      description.camera.frame_steps = gltf_camera_frame_steps(*asset, asset->cameras.front(), description.frame,
+                                                               description.render.fps, description.camera.shutter);
     const double seconds = gltf::animation_end(asset->animations);
     // Up to a thousandth of a frame past a whole frame is float rounding of the key time.
     const auto last = static_cast<long>(std::ceil(seconds * description.render.fps - 1e-3));

@@ -4,6 +4,7 @@
 #include "gltf_scene.h"
 #include "mesh_scene.h"
 #include "model_scene.h"
+#include "yaml_camera.h"
 #include "yaml_document.h"
 #include "yaml_environment.h"
 #include "yaml_medium.h"
@@ -29,8 +30,6 @@ namespace rtpro {
 
 namespace {
 
-constexpr std::int64_t kMaxImageSide = 65536;
-constexpr std::int64_t kMaxImagePixels = std::int64_t{1} << 28;
 constexpr std::int64_t kMaxSpp = 65536;
 // Cycles' limit: pbrt-v4's Transparent Machines and scenes of many stacked glass layers need
 // paths longer than 64.
@@ -38,8 +37,6 @@ constexpr std::int64_t kMaxDepth = 1024;
 constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{256} << 20;
 // Frames per second: far above any camera's, low enough that frame / fps stays a usable time.
 constexpr double kMaxFps = 1e6;
-// Below this sine of the angle between them, up and the view direction give no usable basis.
-constexpr float kMinUpViewSine = 1e-3f;
 
 bool absent(const YamlNode* node) { return !node || node->is_null(); }
 
@@ -53,83 +50,6 @@ void read_version(const YamlNode& root) {
     fail_at(*version->value, "rtpro: unsupported scene format version " + std::string(version->value->scalar()) +
                                  "; this rtpro reads version " + std::to_string(kSceneFormatVersion));
   }
-}
-
-int read_image_side(const YamlNode& node, const std::string& name) {
-  const std::int64_t side = read_integer(node, name);
-  if (side < 1 || side > kMaxImageSide)
-    fail_at(node, name + ": each side must be from 1 to " + std::to_string(kMaxImageSide) + " pixels, got " +
-                      std::string(node.scalar()));
-  return static_cast<int>(side);
-}
-
-void read_resolution(const YamlNode& node, CameraDesc& camera) {
-  const auto& items = read_list(node, "camera.resolution", 2, "[width, height] in pixels");
-  camera.width = read_image_side(*items[0], "camera.resolution");
-  camera.height = read_image_side(*items[1], "camera.resolution");
-  const std::int64_t pixels = std::int64_t{camera.width} * camera.height;
-  if (pixels > kMaxImagePixels) {
-    fail_at(node, "camera.resolution: " + std::to_string(camera.width) + "x" + std::to_string(camera.height) + " is " +
-                      std::to_string(pixels) + " pixels; the limit is " + std::to_string(kMaxImagePixels) +
-                      " (2^28, e.g. 16384x16384)");
-  }
-}
-
-// `camera.shutter: [open, close]`, in frames relative to the frame's time.
-Shutter read_shutter(const YamlNode& node) {
-  const auto& items = read_list(node, "camera.shutter", 2, "[open, close] in frames relative to the frame");
-  const double open = read_number(*items[0], "camera.shutter");
-  const double close = read_number(*items[1], "camera.shutter");
-  if (!(close >= open))
-    fail_at(node, "camera.shutter: the shutter must close no earlier than it opens ([open, close] in frames), got [" +
-                      std::string(items[0]->scalar()) + ", " + std::string(items[1]->scalar()) + "]");
-  return {static_cast<float>(open), static_cast<float>(close)};
-}
-
-CameraDesc read_camera(const YamlNode& node) {
-  const MappingReader camera(
-      node, "camera", {"position", "look_at", "up", "fov", "resolution", "aperture", "focus_distance", "shutter"});
-  CameraDesc desc;
-  desc.position = read_position(camera.required("position"), "camera.position");
-  const YamlNode& look_at = camera.required("look_at");
-  desc.look_at = read_position(look_at, "camera.look_at");
-  const Vec3 view = desc.look_at - desc.position;
-  if (!(length(view) > 0.0f))
-    fail_at(look_at, "camera.look_at must differ from camera.position: the camera needs a direction to look in");
-
-  const YamlNode* up = camera.optional("up");
-  if (up) {
-    desc.up = read_vec3(*up, "camera.up");
-    if (!(length(desc.up) > 0.0f)) fail_at(*up, "camera.up must not be zero-length");
-  }
-  if (length(cross(normalize(view), normalize(desc.up))) < kMinUpViewSine) {
-    fail_at(up ? *up : look_at, std::string("camera.up") + (up ? "" : " (default [0, 1, 0])") +
-                                    " is parallel to the view direction (look_at - position); choose another up");
-  }
-
-  if (const YamlNode* fov = camera.optional("fov")) {
-    const double degrees = read_number(*fov, "camera.fov");
-    if (!(degrees > 0.0 && degrees < 180.0))
-      fail_at(*fov, "camera.fov must be between 0 and 180 degrees (exclusive), got " + std::string(fov->scalar()));
-    desc.fov_degrees = static_cast<float>(degrees);
-  }
-  if (const YamlNode* resolution = camera.optional("resolution")) read_resolution(*resolution, desc);
-  if (const YamlNode* aperture = camera.optional("aperture")) {
-    const double radius = read_number(*aperture, "camera.aperture");
-    if (!(radius >= 0.0) || !std::isfinite(radius))
-      fail_at(*aperture, "camera.aperture is the lens radius in scene units: 0 (a pinhole) or more, got " +
-                             std::string(aperture->scalar()));
-    desc.aperture = static_cast<float>(radius);
-  }
-  if (const YamlNode* shutter = camera.optional("shutter")) desc.shutter = read_shutter(*shutter);
-  if (const YamlNode* focus = camera.optional("focus_distance")) {
-    const double distance = read_number(*focus, "camera.focus_distance");
-    if (!(distance > 0.0) || !std::isfinite(static_cast<float>(distance)))
-      fail_at(*focus,
-              "camera.focus_distance must be a positive distance in scene units, got " + std::string(focus->scalar()));
-    desc.focus_distance = static_cast<float>(distance);
-  }
-  return desc;
 }
 
 int read_spp(const YamlNode& node) {
@@ -267,6 +187,7 @@ SceneDescription read_scene(const YamlDocument& document, const std::filesystem:
   SceneDescription desc;
   desc.file = file;
   desc.camera = read_camera(scene.required("camera"));
+  desc.camera.frame_steps = camera_frame_steps(document, scene.required("camera"), desc.camera.shutter);
   desc.render = read_render(scene.optional("render"), written_units);
   desc.materials = read_materials(scene.optional("materials"), file.parent_path(), model_materials);
   read_lights(scene.optional("lights"), desc.lights, desc.light_names);
