@@ -7,7 +7,9 @@
 # Blender's start-up and glTF import), rtpro's time over Cycles', each image's mean per channel
 # and its relMSE against a long Cycles render (REF_SPP samples).
 # Usage: benchmarks/cycles_benchmark.sh [--runs N] [--threads "1 2"]
-#   SCENE=scenes/cornell_box.gltf SIZE=256 SPP=64 MAX_DEPTH=8 REF_SPP=1024 pick the work;
+#   SCENE=scenes/cornell_box.gltf SIZE=256 (or WxH) SPP=64 MAX_DEPTH=8 REF_SPP=1024 pick the work;
+#   FRAME=F SHUTTER=OPEN,CLOSE render an animated file's frame F with that shutter (motion blur in
+#   both: benchmarks/cycles_motion_benchmark.sh);
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
 source "$(dirname "$0")/options.sh"
@@ -17,27 +19,37 @@ size=${SIZE:-256}
 spp=${SPP:-64}
 max_depth=${MAX_DEPTH:-8}
 ref_spp=${REF_SPP:-1024}
+scene_file=$scene
+[[ $scene = /* ]] || scene_file=$root/$scene
+pixels=$size
+[[ $size = *x* ]] || pixels=${size}x$size
+rtpro_motion=() cycles_motion=()
+if [ -n "${FRAME:-}" ]; then
+  rtpro_motion=(-D "frame=$FRAME" "--shutter=${SHUTTER:-0,0}")
+  cycles_motion=("$FRAME" "$(echo "${SHUTTER:-0,0}" | cut -d, -f1)" "$(echo "${SHUTTER:-0,0}" | cut -d, -f2)")
+fi
 
 build_release rtpro
 
 out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-cycles.XXXXXX")
 cycles() {  # NAME SPP THREADS LOG: $out/NAME.exr
-  render_with_cycles render_gltf.py "$root/$scene" "$1" "$4" "$size" "$2" "$max_depth" "$3"
+  render_with_cycles render_gltf.py "$scene_file" "$1" "$4" "$pixels" "$2" "$max_depth" "$3" "${cycles_motion[@]}"
 }
 
-echo "long Cycles reference: $size x $size, $ref_spp spp ..." >&2
+echo "long Cycles reference: $pixels, $ref_spp spp ..." >&2
 cycles reference "$ref_spp" 2 "$out/reference.log"
 for t in $threads; do
   for r in $(seq "$runs"); do
     cycles "cycles-t$t-r$r" "$spp" "$t" "$out/cycles-t$t-r$r.log"
-    /usr/bin/time -f "%e" -o "$out/rtpro-t$t-r$r.seconds" "$build/rtpro" render "$root/$scene" \
-      -o "$out/rtpro-t$t-r$r.exr" --size "${size}x${size}" --spp "$spp" --max-depth "$max_depth" --threads "$t" \
-      --quiet --no-journal --stats-json "$out/rtpro-t$t-r$r.json"
+    /usr/bin/time -f "%e" -o "$out/rtpro-t$t-r$r.seconds" "$build/rtpro" render "$scene_file" \
+      -o "$out/rtpro-t$t-r$r.exr" --size "$pixels" --spp "$spp" --max-depth "$max_depth" --threads "$t" \
+      "${rtpro_motion[@]}" --quiet --no-journal --stats-json "$out/rtpro-t$t-r$r.json"
   done
 done
 compare_each "$out/reference.exr" "$out"/cycles-t*-r*.exr "$out"/rtpro-t*-r*.exr
 
-python3 - "$out" "$runs" "$threads" "$scene" "$size" "$spp" "$max_depth" "$ref_spp" <<'PY'
+python3 - "$out" "$runs" "$threads" "$scene${FRAME:+ frame $FRAME, shutter [${SHUTTER:-0,0}]}" "$pixels" "$spp" \
+  "$max_depth" "$ref_spp" <<'PY'
 import json, re, statistics, sys
 out, runs, threads, scene, size, spp, depth, ref_spp = sys.argv[1:9]
 runs, threads = int(runs), threads.split()
@@ -51,7 +63,7 @@ def compared(who, t, r):
     return json.load(open(f"{out}/{who}-t{t}-r{r}.compare.json"))
 
 ref_means = compared("cycles", threads[0], 1)["means"]["reference"]
-print(f"{scene}, {size}x{size}, {spp} spp, max depth {depth} (rtpro) / {int(depth) - 1} bounces (Cycles), "
+print(f"{scene}, {size}, {spp} spp, max depth {depth} (rtpro) / {int(depth) - 1} bounces (Cycles), "
       f"{runs} interleaved runs\nreference: Cycles at {ref_spp} spp, mean "
       + " ".join(f"{m:.5f}" for m in ref_means) + "\n")
 header = f"{'renderer':8} {'thr':>3} {'median s':>9} {'min-max s':>13} {'rtpro/Cycles':>12} {'mean R G B':>26} {'vs ref %':>17} {'relMSE':>9}"

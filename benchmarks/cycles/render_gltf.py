@@ -1,7 +1,15 @@
 """Renders a glTF file with Cycles as rtpro's path integrator renders it, for
 benchmarks/cycles_benchmark.sh. Run by Debian's Blender 3.4:
 
-  blender -b --factory-startup --python render_gltf.py -- FILE.gltf OUT.exr SIZE SPP MAX_DEPTH THREADS
+  blender -b --factory-startup --python render_gltf.py -- FILE.gltf OUT.exr SIZE SPP MAX_DEPTH THREADS \
+      [FRAME SHUTTER_OPEN SHUTTER_CLOSE]
+
+SIZE is N (N x N pixels) or WxH. With FRAME the file is rendered posed at that frame (glTF time t is
+frame t x 24, as rtpro's render.fps and Blender's importer map it), and with an open shutter
+(SHUTTER_OPEN < SHUTTER_CLOSE, in frames relative to FRAME, rtpro's camera.shutter) with Cycles'
+motion blur over the same interval: shutter length CLOSE - OPEN placed by motion_blur_position
+(START for [0, s], CENTER for [-s/2, s/2], END for [-s, 0]; other intervals are refused), object
+and deformation motion on. Every sun's angle is 0 (rtpro's directional light is a delta light).
 
 Fair settings (see /work/shared/notes/pathtracing.md): CPU, no adaptive sampling, no denoising, a
 one-pixel box filter, no clamping, the Standard view, 32-bit float EXR, a black world. Path length:
@@ -36,7 +44,10 @@ numpy.bool = bool  # Blender 3.4's glTF importer still uses numpy.bool, removed 
 
 args = sys.argv[sys.argv.index("--") + 1:]
 gltf_file, out_file = args[0], args[1]
-size, spp, max_depth, threads = (int(a) for a in args[2:6])
+width, _, height = args[2].partition("x")
+width, height = int(width), int(height or width)
+spp, max_depth, threads = (int(a) for a in args[3:6])
+frame, shutter_open, shutter_close = (float(a) for a in args[6:9]) if len(args) > 6 else (None, 0.0, 0.0)
 
 bpy.ops.wm.read_factory_settings(use_empty=True)
 bpy.ops.import_scene.gltf(filepath=gltf_file)
@@ -85,5 +96,23 @@ scene.world = bpy.data.worlds.new("black")
 scene.world.use_nodes = True
 scene.world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
 
+if frame is not None:
+    scene.frame_set(int(frame), subframe=frame - int(frame))
+if shutter_close > shutter_open:
+    length = shutter_close - shutter_open
+    positions = {0.0: "START", -length / 2: "CENTER", -length: "END"}
+    if shutter_open not in positions:
+        sys.exit("render_gltf.py: Cycles places its shutter at the frame's start, centre or end; not [%g, %g]"
+                 % (shutter_open, shutter_close))
+    scene.render.use_motion_blur = True
+    scene.render.motion_blur_shutter = length
+    scene.cycles.motion_blur_position = positions[shutter_open]
+    for obj in scene.objects:
+        obj.cycles.use_motion_blur = True
+        obj.cycles.use_deform_motion = True
+for obj in scene.objects:
+    if obj.type == "LIGHT" and obj.data.type == "SUN":
+        obj.data.angle = 0.0  # rtpro's directional light is a delta light
+
 configure_cycles(scene, spp, max_depth, threads)
-render_timed_exr(scene, size, size, out_file)
+render_timed_exr(scene, width, height, out_file)

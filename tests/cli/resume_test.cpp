@@ -1,5 +1,6 @@
 // `rtpro render --resume` through the real binary: a render killed at any moment and resumed gives
-// the image of an uninterrupted render, bit for bit; a journal of another job is refused.
+// the image of an uninterrupted render, bit for bit (the path integrator's with the red sphere
+// blurred by an open shutter); a journal of another job is refused.
 #include "rtpro/image/image_io.h"
 #include "test_fixtures.h"
 #include "test_commands.h"
@@ -37,7 +38,7 @@ lights:
   - {type: point, position: [4, 6, 5], color: [1, 1, 1], intensity: 1}
 world:
   - {type: sphere, center: [0, -1000, 0], radius: 1000}
-  - {type: sphere, center: [-1, 0.7, 0], radius: 0.7, material: red}
+  - {type: sphere, center: {keyframes: {1: [-1, 0.7, 0], 2: [-0.2, 0.7, 0]}}, radius: 0.7, material: red}
   - {type: sphere, center: [1, 0.6, 0], radius: 0.6, material: glass}
 )";
 
@@ -58,12 +59,13 @@ std::string render_of(const std::filesystem::path& scene, const std::filesystem:
   return render_args(scene, out, options + extra);
 }
 
-// Starts a single-threaded, quiet render of `scene` into `out` (`path`: with --integrator path).
+// Starts a single-threaded, quiet render of `scene` into `out` (`path`: with --integrator path
+// and the shutter open over half a frame).
 pid_t start_render(const std::filesystem::path& scene, const std::filesystem::path& out, bool path = false) {
   std::vector<std::string> argv = {
       rtpro_executable().string(), "render", scene.string(), "-o", out.string(), "--threads", "1", "-q"};
   argv.insert(argv.end(), kOptions.begin(), kOptions.end());
-  if (path) argv.insert(argv.end(), {"--integrator", "path"});
+  if (path) argv.insert(argv.end(), {"--integrator", "path", "--shutter", "0,0.5"});
   return test::start_program(argv);
 }
 
@@ -136,7 +138,7 @@ TEST(Resume, KilledProgressiveRenderResumesBitIdenticallyBetweenAndWithinPasses)
   const auto dir = test::scratch_dir();
   const auto scene = test::write_file("scene.yaml", kScene);
   const auto whole = dir / "whole.exr";
-  run_rtpro(render_of(scene, whole, "--integrator path -q"), 0);
+  run_rtpro(render_of(scene, whole, "--integrator path --shutter 0,0.5 -q"), 0);
   // A compaction leaves one cumulative record per tile (24) and comes once a journal holds about 48.
   for (const auto& [records, compactions] : {std::pair{10, 0}, std::pair{30, 0}, std::pair{30, 1}, std::pair{40, 3}}) {
     SCOPED_TRACE("killed when the journal held " + std::to_string(records) + " records after " +
@@ -144,7 +146,7 @@ TEST(Resume, KilledProgressiveRenderResumesBitIdenticallyBetweenAndWithinPasses)
     const auto out = dir / ("resumed" + std::to_string(records) + "_" + std::to_string(compactions) + ".exr");
     kill_after(scene, out, static_cast<std::size_t>(records), true, compactions);
     ASSERT_TRUE(std::filesystem::exists(out.string() + ".rtpro-journal"));
-    run_rtpro(render_of(scene, out, "--integrator path --resume --threads 2 -q"), 0);
+    run_rtpro(render_of(scene, out, "--integrator path --shutter 0,0.5 --resume --threads 2 -q"), 0);
     expect_same_pixels(whole, out);
   }
 }

@@ -89,24 +89,53 @@ JobResult render_as_job(const RenderScene& scene, const Backend& backend, int ra
   return result;
 }
 
+// test_scene with its instances moving during an open shutter: each turns and travels, so every
+// sample's time (a sampler dimension) decides what its rays meet.
+void set_moving(RenderScene& scene) {
+  scene.camera.shutter = {0.0f, 1.0f};
+  for (Geometry& geometry : scene.top.geometries)
+    if (auto* instance = std::get_if<Instance>(&geometry))
+      instance->object_to_world_steps = {instance->object_to_world,
+                                         compose(Affine::translate({0.4f, 0.2f, 0.0f}),
+                                                 compose(instance->object_to_world, Affine::rotate({0, 1, 0}, 20))),
+                                         compose(Affine::translate({0.8f, 0.0f, 0.0f}), instance->object_to_world)};
+}
+
 // Whitted with stratified samples renders in one pass; the path integrator with Sobol samples in
-// passes of 1, 1, 2 and 4 samples, which ranks render ahead of the film's merging.
-class DistributedRenderScenes : public ::testing::TestWithParam<Integrator> {};
+// passes of 1, 1, 2 and 4 samples, which ranks render ahead of the film's merging. Each also with
+// motion blur (`moving`).
+struct Case {
+  Integrator integrator;
+  bool moving;
+};
+class DistributedRenderScenes : public ::testing::TestWithParam<Case> {};
 
 TEST_P(DistributedRenderScenes, ImageIsBitIdenticalForAnyRankCountAndTileSize) {
   RenderScene scene = test_scene();
-  if (GetParam() == Integrator::kPath) {
+  if (GetParam().integrator == Integrator::kPath) {
     scene.render.integrator = Integrator::kPath;
     scene.render.sampler = SamplerKind::kSobol;
     scene.render.spp = 8;
   }
-  ASSERT_EQ(render_passes(scene).passes(), GetParam() == Integrator::kPath ? 4 : 1);
+  if (GetParam().moving) set_moving(scene);
+  ASSERT_EQ(render_passes(scene).passes(), GetParam().integrator == Integrator::kPath ? 4 : 1);
   const auto backend = make_backend(BackendKind::kNative, scene, {});
   RenderOptions options;
   options.aovs = {Aov::kAlbedo, Aov::kDepth};
   options.tile_size = 8;
   const RenderResult alone = render_image(scene, *backend, options);
-  for (int ranks : {1, 2, 3, 4})
+  if (GetParam().moving) {
+    RenderScene still = scene;
+    still.camera.shutter = {};
+    const auto still_backend = make_backend(BackendKind::kNative, still, {});
+    const RenderResult unblurred = render_image(still, *still_backend, options);
+    ASSERT_NE(
+        std::memcmp(unblurred.image.data.data(), alone.image.data.data(), alone.image.data.size() * sizeof(float)), 0)
+        << "the shutter blurs";
+  }
+  // A moving scene's tile sizes and rank counts are fewer: its rays go one by one.
+  const std::vector<int> rank_counts = GetParam().moving ? std::vector{1, 3} : std::vector{1, 2, 3, 4};
+  for (int ranks : rank_counts)
     for (int tile_size : {8, 5}) {
       SCOPED_TRACE(std::to_string(ranks) + " ranks, tiles of " + std::to_string(tile_size));
       const JobResult job = render_as_job(scene, *backend, ranks, tile_size);
@@ -133,7 +162,8 @@ TEST_P(DistributedRenderScenes, ImageIsBitIdenticalForAnyRankCountAndTileSize) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrators, DistributedRenderScenes,
-                         ::testing::Values(Integrator::kWhitted, Integrator::kPath));
+                         ::testing::Values(Case{Integrator::kWhitted, false}, Case{Integrator::kPath, false},
+                                           Case{Integrator::kWhitted, true}, Case{Integrator::kPath, true}));
 
 TEST(DistributedRender, HandshakeNamesTheRankAndWhatDiffers) {
   Mailboxes mail(3);

@@ -213,6 +213,77 @@ TEST(MotionBlur, DeformingTrianglesAgreeAcrossBackendsWithinTheTolerance) {
   EXPECT_LE(over, static_cast<int>(native.data.size() / 1000));
 }
 
+// camera_scene under the Whitted integrator: a white diffuse material (index 1), lit only by
+// `lighting` (YAML: an ambient term and lights).
+RenderScene whitted_scene(int width, int height, const std::string& lighting) {
+  const double fov = 2.0 * std::atan(kPixel * height / 2.0 / 10.0) * 180.0 / 3.14159265358979323846;
+  const std::string text = "rtpro: 1\ncamera: {position: [0, 0, -10], look_at: [0, 0, 0], fov: " + std::to_string(fov) +
+                           ", resolution: [" + std::to_string(width) + ", " + std::to_string(height) +
+                           "], shutter: [0, 1]}\nrender: {integrator: whitted, spp: 256, max_depth: 1, background: "
+                           "[0, 0, 0], " +
+                           lighting + "\nmaterials: {white: {type: diffuse, color: [1, 1, 1]}}\n";
+  return build_render_scene(parse_scene_text(text, "whitted_motion.yaml", {}));
+}
+
+TEST(MotionBlur, WhittedCameraRaysBlurIntoTheTrapezoid) {
+  for (BackendKind kind : kBackends) {
+    RenderScene scene = whitted_scene(kWidth, kHeight, "ambient: 1}");
+    add_moving_instance(scene, quad(0, kQuadWidth, -1, 1),
+                        {Affine::translate({kStart, 0, 0}), Affine::translate({kStart + kTravel, 0, 0})});
+    expect_trapezoid(render(scene, kind), backend_name(kind).data());
+  }
+}
+
+// A floor lit by a point light at the camera's pinhole and a black occluder crossing in front of it:
+// a camera ray that reaches the floor has its shadow ray retrace it at the same time, so the floor
+// darkens only by the occluder's own blurred coverage (a shadow ray at another time would darken
+// it where the occluder was then).
+TEST(MotionBlur, WhittedShadowRaysKeepTheirCameraRaysTime) {
+  constexpr float kDepth = -0.5f, kScale = (10.0f + kDepth) / 10.0f;  // the occluder's plane
+  for (BackendKind kind : kBackends) {
+    RenderScene floor = whitted_scene(kWidth, kHeight, "ambient: 0}\nlights: [{type: point, position: [0, 0, -10]}]");
+    floor.materials[0].whitted = {Color(0.0f), 0.0f, 1.0f, 0.0f, {}};  // the default material: the occluder, black
+    floor.top.geometries.emplace_back(quad(-4, 4, -1, 1));
+    RenderScene scene = floor;
+    TriangleMesh occluder = quad(0, kQuadWidth * kScale, -1, 1);
+    occluder.material = 0;
+    add_moving_instance(
+        scene, std::move(occluder),
+        {Affine::translate({kStart * kScale, 0, kDepth}), Affine::translate({(kStart + kTravel) * kScale, 0, kDepth})});
+    const Image lit = render(floor, kind), blurred = render(scene, kind);
+    Image shadow = blurred;
+    for (std::size_t i = 0; i < shadow.data.size(); ++i) shadow.data[i] = 1.0f - blurred.data[i] / lit.data[i];
+    expect_trapezoid(shadow, backend_name(kind).data());
+  }
+}
+
+// A subsurface sphere (radius 0.6, flights of about 0.05) under a white sky, on the path of the
+// quad above when `moving`, else at rest in the middle of it: moving through a uniform sky it
+// returns the light it returns at rest, as long as its walks meet it where its camera rays did.
+RenderScene subsurface_sphere(bool moving) {
+  const std::string text =
+      "rtpro: 1\ncamera: {position: [0, 0, -10], look_at: [0, 0, 0], fov: 16, resolution: [24, 8], "
+      "shutter: [0, 1]}\nrender: {integrator: path, spp: 64, max_depth: 4, background: [1, 1, 1]}\n"
+      "materials: {jade: {type: principled, color: [0.3, 0.3, 0.3], roughness: 1, specular_weight: 0, "
+      "subsurface: 1, subsurface_radius: [1, 1, 1], subsurface_scale: 0.05}}\n";
+  RenderScene scene = build_render_scene(parse_scene_text(text, "subsurface_motion.yaml", {}));
+  const float centre = kStart + kTravel / 2;
+  add_moving_instance(
+      scene, SphereSet{{{{0.0f, 0.0f, 0.0f}, 0.6f, 1}}},
+      moving ? std::vector<Affine>{Affine::translate({kStart, 0, 0}), Affine::translate({kStart + kTravel, 0, 0})}
+             : std::vector<Affine>{Affine::translate({centre, 0, 0}), Affine::translate({centre, 0, 0})});
+  return scene;
+}
+
+TEST(MotionBlur, SubsurfaceWalksTraceAtTheirPathsTime) {
+  for (BackendKind kind : kBackends) {
+    // What the sphere takes from the white sky behind it.
+    const double still = 24 * 8 - red_sum(render(subsurface_sphere(false), kind));
+    const double blurred = 24 * 8 - red_sum(render(subsurface_sphere(true), kind));
+    EXPECT_NEAR(blurred, still, 0.03 * still) << backend_name(kind);
+  }
+}
+
 TEST(MotionBlur, OpenShutterOnAStaticSceneChangesNoPixel) {
   for (BackendKind kind : kBackends) {
     RenderScene closed = camera_scene(32, 16, 0.1f, 4, "[0, 0]");

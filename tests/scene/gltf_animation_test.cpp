@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <tuple>
 
 namespace rtpro {
 namespace gltf_animation_test {
@@ -114,6 +115,47 @@ TEST(GltfAnimation, SkinnedVertexFollowsItsWeightedJoints) {
   expect_near(posed.vertex(2), Vec3(0, 0.5f, 1));
   // Halfway (t = 0.5) joint 1 is at (2, 0.5, 0): each vertex rises by 0.25.
   expect_near(asset.mesh_of(pose_gltf(asset, 0.5), pose.placements[0]).vertex(1), Vec3(0, 1.25f, 0));
+}
+
+TEST(GltfAnimation, EightInfluencesFromTwoSetsOfJointsAndWeights) {
+  // Joints 0..7 at the origin, joint k rising to (0, k + 1, 0) at t = 1; every vertex an eighth on
+  // each (JOINTS_0 names joints 0..3, JOINTS_1 joints 4..7): at t = 1 it rises by 4.5, the mean of
+  // 1..8 (by 2.5 if the second set were dropped and the first renormalised).
+  GltfFile gltf;
+  const int mesh = gltf.mesh(gltf.floats(kTriangle, "VEC3"));
+  auto& attributes = gltf.json["meshes"][mesh]["primitives"][0]["attributes"];
+  attributes["JOINTS_0"] = gltf.ushorts({0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3}, "VEC4");
+  attributes["JOINTS_1"] = gltf.ushorts({4, 5, 6, 7, 4, 5, 6, 7, 4, 5, 6, 7}, "VEC4");
+  attributes["WEIGHTS_0"] = gltf.floats(std::vector<float>(12, 0.125f), "VEC4");
+  attributes["WEIGHTS_1"] = gltf.floats(std::vector<float>(12, 0.125f), "VEC4");
+  std::vector<int> nodes;
+  for (int k = 0; k < 8; ++k) nodes.push_back(gltf.node(nlohmann::json::object()));
+  nodes.push_back(gltf.node({{"mesh", mesh}, {"skin", 0}}));
+  gltf.json["skins"] = {{{"joints", {0, 1, 2, 3, 4, 5, 6, 7}}}};
+  gltf.scene(nodes);
+  for (int k = 0; k < 8; ++k) animate(gltf, k, "translation", {0, 1}, {0, 0, 0, 0, float(k + 1), 0}, "VEC3");
+  const GltfAsset asset = load_gltf_file(gltf.write("eight_influences"));
+  const GltfPose pose = pose_gltf(asset, 1.0);
+  ASSERT_EQ(pose.placements.size(), 1u);
+  expect_near(asset.mesh_of(pose, pose.placements[0]).vertex(0), Vec3(1, 4.5f, 0));
+  expect_near(asset.mesh_of(pose, pose.placements[0]).vertex(2), Vec3(0, 4.5f, 1));
+
+  // A second set alone, half a set, or a third set: errors naming the attributes.
+  for (const auto& [remove, add, expected] :
+       {std::tuple{"JOINTS_0", "", "JOINTS_1 or WEIGHTS_1 without JOINTS_0"},
+        std::tuple{"WEIGHTS_1", "", "one of JOINTS_1 and WEIGHTS_1 without the other"},
+        std::tuple{"", "JOINTS_2", "third set of joints or weights"}}) {
+    GltfFile broken = gltf;
+    auto& a = broken.json["meshes"][mesh]["primitives"][0]["attributes"];
+    if (*remove) {
+      a.erase(remove);
+      if (std::string(remove) == "JOINTS_0") a.erase("WEIGHTS_0");
+    }
+    if (*add) a[add] = a["JOINTS_1"];
+    const std::string message = test::gltf_error_of(broken.write("bad_influences"));
+    EXPECT_NE(message.find(expected), std::string::npos) << message;
+    EXPECT_NE(message.find("meshes[0].primitives[0].attributes"), std::string::npos) << message;
+  }
 }
 
 TEST(GltfAnimation, MorphTargetsBlendByMeshNodeAndAnimatedWeights) {

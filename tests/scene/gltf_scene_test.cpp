@@ -48,6 +48,23 @@ TEST(GltfScene, WithoutCameraTheDefaultOneFramesTheBoundsAndADefaultLightShines)
   EXPECT_EQ(render.bounds().lower, Vec3(10, 0, 0));
 }
 
+TEST(GltfScene, AMeshDrawnOnlyMorphedHasNoPrototypeOfItsOwn) {
+  // Node 0 draws mesh 0 morphed (weight 0.5); node 1 draws mesh 1 as it is.
+  GltfFile gltf = offset_model();
+  gltf.json["meshes"][0]["primitives"][0]["targets"] = {
+      {{"POSITION", gltf.floats({0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, "VEC3")}}};
+  gltf.json["meshes"][0]["weights"] = {0.5};
+  const int plain = gltf.mesh(gltf.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3"));
+  gltf.json["scenes"][0]["nodes"].push_back(gltf.node({{"mesh", plain}}));
+  const RenderScene render = build_render_scene(parse_scene_file(gltf.write("morphed")));
+  // The morphed copy and mesh 1: mesh 0 as the file stores it is drawn nowhere.
+  ASSERT_EQ(render.prototypes.size(), 2u);
+  std::size_t triangles = 0;
+  for (const Group& prototype : render.prototypes)
+    triangles += std::get<TriangleMesh>(prototype.geometries[0]).triangles.size();
+  EXPECT_EQ(triangles, 3u);
+}
+
 TEST(GltfScene, TheFirstCameraAndThePunctualLightsAreUsed) {
   GltfFile gltf = offset_model();
   gltf.json["cameras"] = {

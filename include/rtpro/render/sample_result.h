@@ -22,7 +22,7 @@ struct PrimaryHit {
   Vec3 normal;         // shading normal, world space, unit
   float depth = 0.0f;  // distance from the camera
   std::uint32_t object_id = 0;
-  FilmMotion motion;  // worked out only when the motion AOV is kept
+  FilmMotion motion = {};  // worked out only when the motion AOV is kept
 };
 
 // One camera sample's result: its radiance and the sources of its AOV passes.

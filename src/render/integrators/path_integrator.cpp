@@ -3,6 +3,7 @@
 #include "light_linking.h"
 #include "medium_shadows.h"
 #include "path_vertex_step.h"
+#include "sample_times.h"
 #include "surface_batch.h"
 
 #include <limits>
@@ -37,17 +38,6 @@ void start_camera_paths(const CameraBatch& batch, PathWorkspace& ws) {
                         .aov_pending = true,
                         .transmitted = false});
   }
-}
-
-// Each item's sample's time (an item is a path or a shadow query), or nothing while the shutter is
-// closed: every ray of a path is traced at its camera sample's time.
-template <typename Item, typename SampleOf>
-void times_of_samples(std::span<const float> sample_times, const std::vector<Item>& items, SampleOf&& sample_of,
-                      std::vector<float>& times) {
-  times.clear();
-  if (sample_times.empty()) return;
-  times.resize(items.size());
-  for (std::size_t i = 0; i < items.size(); ++i) times[i] = sample_times[sample_of(items[i])];
 }
 
 // Each path's camera sample key, for its vertex's draws.
@@ -90,7 +80,7 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
   for (int generation = 0; !ws.paths.empty(); ++generation) {
     ws.hits.resize(ws.rays.size());
     times_of_samples(
-        batch.times, ws.paths, [](const Path& path) { return path.sample; }, ws.ray_times);
+        batch.times, std::span<const Path>(ws.paths), [](const Path& path) { return path.sample; }, ws.ray_times);
     backend_.intersect(ws.rays, ws.ray_times, ws.hits,
                        generation == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
     ws.next_paths.clear();
@@ -110,7 +100,8 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
     else extend_generation(plain_step);
 
     times_of_samples(
-        batch.times, ws.shadow_queries, [](const PathWorkspace::ShadowQuery& q) { return q.sample; }, ws.shadow_times);
+        batch.times, std::span<const PathWorkspace::ShadowQuery>(ws.shadow_queries),
+        [](const PathWorkspace::ShadowQuery& q) { return q.sample; }, ws.shadow_times);
     counts[RayKind::kShadow] += ws.shadow_rays.size();
     if (draws_.medium) {
       ws.shadow_transmittance.resize(ws.shadow_rays.size());

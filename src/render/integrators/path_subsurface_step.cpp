@@ -46,13 +46,16 @@ void PathVertexStep<kLightPathControls>::walk_under_surface(std::size_t vertex, 
       surface_.albedo, model->subsurface_radius, model->subsurface_anisotropy, model->ior, model->subsurface_method);
   const std::uint64_t seed = walk_seed(ws_.path_keys[vertex], u);
   TrackingRandom random(seed);
+  // The path's time under an open shutter: the walk and its exit are where the path's rays meet.
+  const std::optional<float> time = ws_.ray_times.empty() ? std::nullopt : std::optional(ws_.ray_times[vertex]);
   const std::optional<SubsurfaceExit> exit =
-      subsurface_walk(backend_, medium, spawn_ray(sp, direction), beta * entry.f * (1.0f / entry.pdf), random);
+      subsurface_walk(backend_, medium, spawn_ray(sp, direction), time, beta * entry.f * (1.0f / entry.pdf), random);
   if (!exit) return;
 
   // The exit: a white Lambert lobe on the surface's far side from the walk.
   SurfacePoint& out = exit_surface_;
-  make_surface(scene_, exit->ray, exit->hit, out);
+  if (time) make_surface_at(scene_, exit->ray, *time, exit->hit, out);
+  else make_surface(scene_, exit->ray, exit->hit, out);
   SurfaceBsdf& lobe = surface_;
   lambert_surface(Color(1.0f), out.shading_normal, lobe);
   lobe.frame = ShadingFrame::from_normal(out.shading_normal);

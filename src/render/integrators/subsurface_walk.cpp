@@ -30,7 +30,7 @@ int choose_channel(const Color& throughput, const Color& albedo, float u, Color&
 }  // namespace
 
 std::optional<SubsurfaceExit> subsurface_walk(const Backend& backend, const SubsurfaceMedium& medium, const Ray& entry,
-                                              const Color& beta, TrackingRandom& random) {
+                                              std::optional<float> time, const Color& beta, TrackingRandom& random) {
   const Color sigma_s = medium.sigma_t * medium.albedo;
   // The similarity relation's isotropic medium, for the walk's later flights.
   const Color sigma_s_star = sigma_s * (1.0f - medium.anisotropy);
@@ -50,7 +50,7 @@ std::optional<SubsurfaceExit> subsurface_walk(const Backend& backend, const Subs
     float t = -std::log1p(-random.next()) / sigma_t[channel];
     ray.tfar = t;
     Hit hit;
-    const bool leaves = backend.intersect(ray, hit) && hit.valid();
+    const bool leaves = (time ? backend.intersect(ray, *time, hit) : backend.intersect(ray, hit)) && hit.valid();
     if (leaves) t = hit.t;
     // Per channel, the density of this flight (a collision at t, or passing t where it left),
     // combined over the channels by the balance heuristic.

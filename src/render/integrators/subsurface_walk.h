@@ -38,8 +38,9 @@ struct SubsurfaceExit {
 };
 
 // The walk from `entry`, its first flight (origin just under the surface, unit direction into
-// it), for a path of throughput `beta`; nothing when it gives up.
+// it), for a path of throughput `beta`; nothing when it gives up. `time`: the path's time under an
+// open shutter (every flight meets moving shapes where the path's other rays meet them), else none.
 std::optional<SubsurfaceExit> subsurface_walk(const Backend& backend, const SubsurfaceMedium& medium, const Ray& entry,
-                                              const Color& beta, TrackingRandom& random);
+                                              std::optional<float> time, const Color& beta, TrackingRandom& random);
 
 }  // namespace rtpro

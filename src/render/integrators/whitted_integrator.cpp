@@ -10,10 +10,12 @@
 #include "light_sample.h"
 #include "ray_offset.h"
 #include "surface_batch.h"
+#include "sample_times.h"
 #include "texture.h"
+#include "whitted_light_units.h"
 
+#include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <optional>
 #include <variant>
 
@@ -28,14 +30,7 @@ using Workspace = ShadingWorkspace;
 // glass (two children per hit) would otherwise double at every depth.
 constexpr float kMinThroughput = 1.0f / 4096.0f;
 
-float max_channel(const Color& c) { return std::max(c.x, std::max(c.y, c.z)); }
-
 bool is_black(const Color& c) { return c.x == 0.0f && c.y == 0.0f && c.z == 0.0f; }
-
-// Whether the scene's lights are in radiometric units (unset: this integrator's own, whitted's).
-bool is_radiometric(const RenderScene& scene) {
-  return scene.render.light_units.value_or(LightUnits::kWhitted) == LightUnits::kRadiometric;
-}
 
 // The emission of the nearest area light `ray` sees before t_max, if any, and where along the ray.
 struct SeenEmitter {
@@ -58,16 +53,6 @@ Color through_medium(const RenderScene& scene, const Workspace::RayTask& task, c
   const Dielectric& glass = *scene.materials[task.medium].whitted.glass;
   return task.weight *
          beer_lambert_transmittance(glass.transmittance, glass.transmittance_distance, t * length(ray.dir));
-}
-
-// Light sample `ls` of `light` in whitted light units (scene/render_settings.h): from a radiometric
-// scene's light divided by π, and by d² for point and spot lights.
-LightSample in_whitted_units(const Light& light, LightSample ls, bool radiometric) {
-  if (!radiometric) return ls;
-  const bool falls_off = std::holds_alternative<PointLight>(light) || std::holds_alternative<SpotLight>(light);
-  ls.radiance = ls.radiance * (falls_off ? std::numbers::inv_pi_v<float> / (ls.distance * ls.distance)
-                                         : std::numbers::inv_pi_v<float>);
-  return ls;
 }
 
 // The shadow ray and query of a one-sample light (point, spot or directional) for surface `s`,
@@ -218,9 +203,9 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
     if (depth == 0 && records_primary)
       results[generation.tasks[s.task].sample].primary = {true, s.albedo, s.point.shading_normal,
                                                           ws.hits[s.task].t * length(ray.dir), s.point.object_id};
-    if (depth == 0 && records_motion)  // at time 0, where this integrator finds every shape
+    if (depth == 0 && records_motion)
       results[generation.tasks[s.task].sample].primary.motion =
-          film_motion(scene, ws.hits[s.task], 0.0f, s.point.position);
+          film_motion(scene, ws.hits[s.task], ws.ray_times.empty() ? 0.0f : ws.ray_times[s.task], s.point.position);
   };
   // Plain sphere hits and plain triangle hits wait in fours for make_sphere_surfaces4 and
   // make_triangle_surfaces4 (the same surfaces, bit for bit).
@@ -248,8 +233,7 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
   // Any other hit, and plain hits left over from the last four: one at a time.
   auto make_one_surface = [&](Workspace::ShadedSurface& s) {
     const Ray& ray = generation.rays[s.task];
-    // The Whitted integrator traces every ray at time 0, the instant the shutter opens.
-    if (scene.camera.shutter.is_open()) make_surface_at(scene, ray, 0.0f, ws.hits[s.task], s.point);
+    if (!ws.ray_times.empty()) make_surface_at(scene, ray, ws.ray_times[s.task], ws.hits[s.task], s.point);
     else make_surface(scene, ray, ws.hits[s.task], s.point);
     s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
     complete(s);
@@ -294,7 +278,7 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
 
 // Queues a child ray of the ray tree unless its weight is negligible.
 void queue_child(Workspace& ws, const Workspace::RayTask& child, const Ray& ray) {
-  if (!(max_channel(child.weight) >= kMinThroughput)) return;
+  if (!(max_component(child.weight) >= kMinThroughput)) return;
   ws.next.tasks.push_back(child);
   append_ray(ws.next.rays, ray);
 }
@@ -357,6 +341,15 @@ void light_surfaces(const RenderScene& scene, const Workspace::Generation& gener
   }
 }
 
+// Each shadow ray's sample's time (nothing while the shutter is closed).
+void times_of_shadow_rays(std::span<const float> sample_times, const Workspace::Generation& generation, Workspace& ws) {
+  ws.shadow_times.resize(sample_times.empty() ? 0 : ws.shadow_rays.size());
+  for (const Workspace::ShadedSurface& s : ws.surfaces)
+    if (!sample_times.empty())
+      std::fill(ws.shadow_times.begin() + s.first_shadow, ws.shadow_times.begin() + s.end_shadow,
+                sample_times[generation.tasks[s.task].sample]);
+}
+
 }  // namespace
 
 void WhittedIntegrator::trace(const CameraBatch& batch, RayCounts& counts, Workspace& ws) const {
@@ -387,11 +380,16 @@ void WhittedIntegrator::trace(const CameraBatch& batch, RayCounts& counts, Works
 
   for (int depth = 0; !ws.current.rays.empty(); ++depth) {
     ws.hits.resize(ws.current.rays.size());
-    backend_.intersect(ws.current.rays, ws.hits, depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
+    times_of_samples(
+        batch.times, std::span<const Workspace::RayTask>(ws.current.tasks),
+        [](const Workspace::RayTask& task) { return task.sample; }, ws.ray_times);
+    backend_.intersect(ws.current.rays, ws.ray_times, ws.hits,
+                       depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
     gather_surfaces(scene, sampler_, keys, ws.current, depth, records_primary_, records_motion_, results, ws);
 
     ws.occluded.resize(ws.shadow_rays.size());
-    occluded_with_shadow_linking(backend_, scene.links, ws.shadow_rays, {}, ws.shadow_lights, ws.occluded,
+    times_of_shadow_rays(batch.times, ws.current, ws);
+    occluded_with_shadow_linking(backend_, scene.links, ws.shadow_rays, ws.shadow_times, ws.shadow_lights, ws.occluded,
                                  depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
     counts[RayKind::kShadow] += ws.shadow_rays.size();
 

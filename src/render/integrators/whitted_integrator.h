@@ -12,6 +12,9 @@
 // Light linking (scene/light_links.h): a surface takes the direct light of the lights that
 // illuminate its object only, and their shadow rays pass the objects that do not cast their
 // shadows; mirror and glass rays still see every area light.
+//
+// Under an open shutter every ray of a sample's tree (camera, shadow, mirror, refraction) is traced
+// at the sample's time, so what moves blurs as under the path integrator.
 #include "rtpro/backend/backend.h"
 #include "camera_batch.h"
 #include "rtpro/core/ray.h"
@@ -82,6 +85,9 @@ class ShadingWorkspace {
   std::vector<Ray> shadow_rays;
   std::vector<std::uint32_t> shadow_lights;  // under light linking only: per shadow ray, its light
   std::vector<std::uint8_t> occluded;
+  // While the shutter is open: per ray of the current generation and per shadow ray, its sample's
+  // time (CameraBatch::times), which every ray of the sample's tree keeps.
+  std::vector<float> ray_times, shadow_times;
   // Per light of the scene, set once per batch: its shadow samples per axis, and whether it is an
   // area light that camera and mirror rays can see (also listed in `emitters`).
   std::vector<int> light_samples_per_axis;

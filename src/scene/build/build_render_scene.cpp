@@ -317,7 +317,7 @@ class RenderSceneBuilder {
   struct PlacedGltf {
     std::shared_ptr<const GltfAsset> asset;
     GltfPose pose;
-    std::vector<std::optional<std::uint32_t>> prototype_of_mesh;      // none for meshes without triangles
+    std::vector<std::optional<std::uint32_t>> prototype_of_mesh;      // none without triangles or drawn only deformed
     std::vector<std::optional<std::uint32_t>> prototype_of_deformed;  // per pose.deformed
   };
 
@@ -366,7 +366,12 @@ class RenderSceneBuilder {
       scene_.prototypes.push_back(std::move(group));
       return static_cast<std::uint32_t>(scene_.prototypes.size() - 1);
     };
-    for (TriangleMesh& source : asset->meshes) placed.prototype_of_mesh.push_back(add_prototype(source, sole_holder));
+    // A mesh that every node draws deformed needs no prototype (nor a BVH) of its own.
+    std::vector<bool> drawn_as_is(asset->meshes.size(), false);
+    for (const GltfPlacement& p : placed.pose.placements)
+      if (p.deformed < 0) drawn_as_is[p.mesh] = true;
+    for (std::size_t m = 0; m < asset->meshes.size(); ++m)
+      placed.prototype_of_mesh.push_back(drawn_as_is[m] ? add_prototype(asset->meshes[m], sole_holder) : std::nullopt);
     // The posed meshes are the placement's own.
     for (TriangleMesh& source : placed.pose.deformed)
       placed.prototype_of_deformed.push_back(add_prototype(source, true));

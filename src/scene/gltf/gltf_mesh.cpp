@@ -128,10 +128,10 @@ class MeshBuilder {
     p.targets = read_morph_targets(prim, vertex_count, reader_, path);
     p.skin = read_skin_weights(prim, vertex_count, reader_, path);
     for (const auto& joints : p.skin.joints)
-      for (const std::uint16_t j : joints)
-        if (j > deformation_.max_joint || deformation_.max_joint_path.empty()) {
-          deformation_.max_joint = std::max<std::uint32_t>(deformation_.max_joint, j);
-          deformation_.max_joint_path = path + ".attributes.JOINTS_0";
+      for (std::size_t k = 0; k < kSkinInfluences; ++k)
+        if (joints[k] > deformation_.max_joint || deformation_.max_joint_path.empty()) {
+          deformation_.max_joint = std::max<std::uint32_t>(deformation_.max_joint, joints[k]);
+          deformation_.max_joint_path = path + ".attributes.JOINTS_" + std::to_string(k / 4);
         }
     primitives_.push_back(std::move(p));
   }
@@ -227,8 +227,10 @@ class MeshBuilder {
         target.normals.push_back(from && !from->normals.empty() ? from->normals[v] : Vec3(0.0f));
     }
     if (any_skin_) {
-      deformation_.skin.joints.push_back(p.skin.joints.empty() ? std::array<std::uint16_t, 4>{} : p.skin.joints[v]);
-      deformation_.skin.weights.push_back(p.skin.weights.empty() ? std::array<float, 4>{} : p.skin.weights[v]);
+      deformation_.skin.joints.push_back(p.skin.joints.empty() ? std::array<std::uint16_t, kSkinInfluences>{}
+                                                               : p.skin.joints[v]);
+      deformation_.skin.weights.push_back(p.skin.weights.empty() ? std::array<float, kSkinInfluences>{}
+                                                                 : p.skin.weights[v]);
     }
   }
 

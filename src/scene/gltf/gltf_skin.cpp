@@ -66,24 +66,35 @@ std::vector<Skin> read_skins(const tinygltf::Model& model, const AccessorReader&
 
 SkinWeights read_skin_weights(const tinygltf::Primitive& primitive, std::size_t vertex_count,
                               const AccessorReader& reader, const std::string& path) {
-  const auto joints = primitive.attributes.find("JOINTS_0");
-  const auto weights = primitive.attributes.find("WEIGHTS_0");
   SkinWeights out;
-  if (joints == primitive.attributes.end() && weights == primitive.attributes.end()) return out;
-  if (joints == primitive.attributes.end() || weights == primitive.attributes.end())
-    reader.fail(path + ".attributes", "has one of JOINTS_0 and WEIGHTS_0 without the other");
-  out.joints = reader.joints(joints->second, path + ".attributes.JOINTS_0");
-  const std::vector<float> w = reader.values(weights->second, path + ".attributes.WEIGHTS_0", TINYGLTF_TYPE_VEC4, true);
-  if (out.joints.size() != vertex_count || w.size() != 4 * vertex_count)
-    reader.fail(path + ".attributes.JOINTS_0",
-                "JOINTS_0 and WEIGHTS_0 need one element per vertex (" + std::to_string(vertex_count) + ")");
-  out.weights.resize(vertex_count);
-  for (std::size_t v = 0; v < vertex_count; ++v)
-    for (std::size_t k = 0; k < 4; ++k) {
-      if (!(w[4 * v + k] >= 0.0f))
-        reader.fail(path + ".attributes.WEIGHTS_0", "element " + std::to_string(v) + " has a negative weight");
-      out.weights[v][k] = w[4 * v + k];
-    }
+  const auto has = [&](const std::string& name) { return primitive.attributes.count(name) != 0; };
+  if (has("JOINTS_2") || has("WEIGHTS_2"))
+    reader.fail(path + ".attributes", "has a third set of joints or weights; at most " +
+                                          std::to_string(kSkinInfluences) + " influences per vertex are read");
+  for (std::size_t set = 0; set < kSkinInfluences / 4; ++set) {
+    const std::string joints = "JOINTS_" + std::to_string(set), weights = "WEIGHTS_" + std::to_string(set);
+    if (!has(joints) && !has(weights)) break;
+    if (!has(joints) || !has(weights))
+      reader.fail(path + ".attributes", "has one of " + joints + " and " + weights + " without the other");
+    const std::string where = path + ".attributes." + joints;
+    const auto indices = reader.joints(primitive.attributes.at(joints), where);
+    const std::vector<float> w =
+        reader.values(primitive.attributes.at(weights), path + ".attributes." + weights, TINYGLTF_TYPE_VEC4, true);
+    if (indices.size() != vertex_count || w.size() != 4 * vertex_count)
+      reader.fail(where,
+                  joints + " and " + weights + " need one element per vertex (" + std::to_string(vertex_count) + ")");
+    out.joints.resize(vertex_count);
+    out.weights.resize(vertex_count);
+    for (std::size_t v = 0; v < vertex_count; ++v)
+      for (std::size_t k = 0; k < 4; ++k) {
+        if (!(w[4 * v + k] >= 0.0f))
+          reader.fail(path + ".attributes." + weights, "element " + std::to_string(v) + " has a negative weight");
+        out.joints[v][4 * set + k] = indices[v][k];
+        out.weights[v][4 * set + k] = w[4 * v + k];
+      }
+  }
+  if (out.joints.empty() && (has("JOINTS_1") || has("WEIGHTS_1")))
+    reader.fail(path + ".attributes", "has JOINTS_1 or WEIGHTS_1 without JOINTS_0 and WEIGHTS_0");
   return out;
 }
 
@@ -105,10 +116,11 @@ void apply_skin(const std::vector<Affine>& joints, const SkinWeights& skin, std:
   for (std::size_t v = 0; v < positions.size(); ++v) {
     const auto& index = skin.joints[v];
     const auto& weight = skin.weights[v];
-    const float sum = weight[0] + weight[1] + weight[2] + weight[3];
+    float sum = 0.0f;
+    for (const float w : weight) sum += w;
     if (!(sum > 0.0f)) continue;
     Vec3 p(0.0f), n(0.0f);
-    for (std::size_t k = 0; k < 4; ++k) {
+    for (std::size_t k = 0; k < kSkinInfluences; ++k) {
       if (weight[k] == 0.0f) continue;
       const float w = weight[k] / sum;
       const Affine& j = joints[index[k]];

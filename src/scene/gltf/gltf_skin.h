@@ -1,6 +1,7 @@
 #pragma once
-// glTF skins: a mesh whose vertices follow joints (nodes). Each vertex names up to four joints of
-// the skin (JOINTS_0) with weights (WEIGHTS_0); its posed position is Σ w_k · J_k · p, where the
+// glTF skins: a mesh whose vertices follow joints (nodes). Each vertex names up to eight joints of
+// the skin (JOINTS_0 and JOINTS_1, four each) with weights (WEIGHTS_0 and WEIGHTS_1); its posed
+// position is Σ w_k · J_k · p, where the
 // joint matrix J = world(joint) · inverseBindMatrices[k] (the identity when the skin gives none).
 // As the specification says, the node drawing a skinned mesh contributes no transform: the posed
 // vertices are in the file's world. Weights are normalised to sum 1 (exporters round them); a
@@ -28,17 +29,22 @@ struct Skin {
   std::vector<Affine> inverse_bind;   // one per joint
 };
 
-// Per vertex: four joint indices into a skin's joints and their weights.
+// Joints a vertex follows at most: two sets of four (JOINTS_0/WEIGHTS_0, JOINTS_1/WEIGHTS_1), as
+// exporters write for more than four influences (Blender's with its "influences" limit raised).
+inline constexpr std::size_t kSkinInfluences = 8;
+
+// Per vertex: its joint indices into a skin's joints and their weights (0 past a primitive's sets).
 struct SkinWeights {
-  std::vector<std::array<std::uint16_t, 4>> joints;
-  std::vector<std::array<float, 4>> weights;
+  std::vector<std::array<std::uint16_t, kSkinInfluences>> joints;
+  std::vector<std::array<float, kSkinInfluences>> weights;
 };
 
 // The file's skins: joints that exist, inverse bind matrices that are affine, finite and one per joint.
 std::vector<Skin> read_skins(const tinygltf::Model& model, const AccessorReader& reader);
 
-// JOINTS_0 and WEIGHTS_0 of a primitive of `vertex_count` vertices (both or neither), or nothing
-// when it has none; weights finite and not negative. `path` names the primitive.
+// JOINTS_n and WEIGHTS_n of a primitive of `vertex_count` vertices (each set both or neither, set 1
+// only with set 0, no set past 1), or nothing when it has none; weights finite and not negative.
+// `path` names the primitive.
 SkinWeights read_skin_weights(const tinygltf::Primitive& primitive, std::size_t vertex_count,
                               const AccessorReader& reader, const std::string& path);
 
