@@ -14,6 +14,7 @@
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
 source "$(dirname "$0")/options.sh"
+source "$(dirname "$0")/embree_fur_matte.sh"
 command -v pathtracer >/dev/null || { echo "pathtracer not found: apt-get install embree-tools" >&2; exit 2; }
 models=/usr/share/doc/embree3/models
 size=${SIZE:-128}
@@ -22,15 +23,7 @@ depth=${DEPTH:-8}
 build_release rtpro
 
 out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-fur.XXXXXX")
-[ -f "$root/benchmarks/fur_ball.hair" ] || python3 "$root/benchmarks/embree_fur_to_hair.py" "$root/benchmarks/fur_ball.hair"
-gunzip -c "$models/furBall_A.bin.gz" >"$out/furBall_matte.xml.bin"
-python3 - "$models/furBall_A.xml" "$out/furBall_matte.xml" <<'PY'
-import re, sys
-xml = open(sys.argv[1]).read()
-matte = '<material><code>"Matte"</code><parameters><float3 name="reflectance">0.64 0.456 0.256</float3></parameters></material>'
-open(sys.argv[2], "w").write(re.sub(r"<material>.*</material>", matte, xml, flags=re.S))
-PY
-sed 's/furBall_A\.xml/furBall_matte.xml/' "$models/furBall_A.ecs" >"$out/furBall_matte.ecs"
+embree_fur_matte "$out"
 
 for t in $threads; do
   for r in $(seq "$runs"); do

@@ -24,15 +24,8 @@ namespace {
 // Every field Embree reads, set explicitly: a zero mask would hit nothing (Debian's Embree is
 // built with ray masks).
 void to_embree(const Ray& ray, float tfar, unsigned id, RTCRay& r, float time = 0.0f) {
-  r.org_x = ray.org.x;
-  r.org_y = ray.org.y;
-  r.org_z = ray.org.z;
-  r.tnear = ray.tnear;
-  r.dir_x = ray.dir.x;
-  r.dir_y = ray.dir.y;
-  r.dir_z = ray.dir.z;
+  set_ray_fields(ray, tfar, r);
   r.time = time;
-  r.tfar = tfar;
   r.mask = 0xFFFFFFFFu;
   r.id = id;
   r.flags = 0;
@@ -132,8 +125,7 @@ class EmbreeBackend final : public Backend {
       return;
     }
     if (coherence == RayCoherence::kIncoherent) {
-      for (std::size_t i = 0; i < rays.size(); ++i)
-        if (!intersect(rays[i], hits[i])) hits[i] = Hit{};
+      intersect_one_by_one(target(), rays, hits);
       return;
     }
     intersect_stream(target(), rays, hits);
@@ -145,7 +137,7 @@ class EmbreeBackend final : public Backend {
       return;
     }
     if (coherence == RayCoherence::kIncoherent) {
-      for (std::size_t i = 0; i < rays.size(); ++i) result[i] = occluded(rays[i]) ? 1 : 0;
+      occluded_one_by_one(target(), rays, result);
       return;
     }
     occluded_stream(target(), rays, result);

@@ -95,6 +95,59 @@ unsigned load_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, s
 
 }  // namespace
 
+RTPRO_AVX2_CLONES void intersect_one_by_one(const EmbreeRayTarget& target, std::span<const Ray> rays,
+                                            std::span<Hit> hits) {
+  Hit closest_user_hit;
+  EmbreeIntersectContext context;
+  rtcInitIntersectContext(&context.base);
+  context.closest_user_hits = &closest_user_hit;
+  alignas(16) RTCRayHit query;
+  query.ray.time = 0.0f;
+  query.ray.mask = 0xFFFFFFFFu;
+  query.ray.id = 0;
+  query.ray.flags = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const Ray& ray = rays[i];
+    Hit& hit = hits[i];
+    hit = Hit{};
+    if (!target.gate.admit(ray)) continue;
+    closest_user_hit = no_user_hit_yet(ray);
+    set_ray_fields(ray, ray.tfar, query.ray);
+    query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(target.scene, &context.base, &query);
+    if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+    hit.t = query.ray.tfar;
+    hit.u = query.hit.u;
+    hit.v = query.hit.v;
+    hit.geom_id = query.hit.geomID;
+    hit.prim_id = query.hit.primID;
+    hit.inst_id = query.hit.instID[0];
+  }
+}
+
+RTPRO_AVX2_CLONES void occluded_one_by_one(const EmbreeRayTarget& target, std::span<const Ray> rays,
+                                           std::span<std::uint8_t> result) {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  alignas(16) RTCRay query;
+  query.time = 0.0f;
+  query.mask = 0xFFFFFFFFu;
+  query.id = 0;
+  query.flags = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const Ray& ray = rays[i];
+    result[i] = 0;
+    if (!target.gate.admit(ray)) continue;
+    // (tnear, the float below tfar]: exactly the open interval, as the backend's single-ray query.
+    const float tfar = one_step_towards_zero(ray.tfar);
+    if (!(tfar > ray.tnear)) continue;
+    set_ray_fields(ray, tfar, query);
+    rtcOccluded1(target.scene, &context, &query);
+    result[i] = query.tfar < 0.0f ? 1 : 0;
+  }
+}
+
 RTPRO_AVX2_CLONES void intersect_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<Hit> hits) {
   alignas(32) RTCRayHit8 packets[kStreamPackets];
   Hit closest_user_hits[kStreamPackets * kPacket];

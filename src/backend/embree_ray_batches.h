@@ -36,7 +36,25 @@ inline Hit no_user_hit_yet(const Ray& ray) {
   return closest;
 }
 
+// The fields of an Embree ray that come from rtpro's ray, tfar given; time, mask, id and flags are
+// the caller's (set once for a whole batch: Embree writes only tfar and the hit).
+inline void set_ray_fields(const Ray& ray, float tfar, RTCRay& r) {
+  r.org_x = ray.org.x;
+  r.org_y = ray.org.y;
+  r.org_z = ray.org.z;
+  r.tnear = ray.tnear;
+  r.dir_x = ray.dir.x;
+  r.dir_y = ray.dir.y;
+  r.dir_z = ray.dir.z;
+  r.tfar = tfar;
+}
+
 // Each compiled for AVX2 and for baseline x86-64 (RTPRO_AVX2_CLONES on the definitions).
+// One rtcIntersect1 or rtcOccluded1 per ray, whose answer is then the single-ray call's: for
+// scattered rays among triangles (see the backend). The context and the ray's constant fields are
+// set once per batch, not per ray.
+void intersect_one_by_one(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<Hit> hits);
+void occluded_one_by_one(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<std::uint8_t> result);
 void intersect_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<Hit> hits);
 // A segment too short for the open interval (tnear, tfar) is no query: the ray is unoccluded.
 void occluded_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<std::uint8_t> result);

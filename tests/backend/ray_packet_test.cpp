@@ -2,6 +2,7 @@
 // eight exactly when the backend's own admission test (is_traceable) refuses one of its rays:
 // otherwise an untraceable ray would reach the traversal, or a rejected ray go uncounted.
 #include "ray_packet.h"
+#include "ray_gate.h"
 
 #include "rtpro/core/ray.h"
 
@@ -46,6 +47,22 @@ Ray random_ray(std::mt19937& rng, float broken) {
 }
 
 bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
+
+// The gate's two-compare test must admit exactly the rays the scalar is_traceable admits, at every
+// boundary random_ray exercises (NaN, infinities, the magnitude limit and the float below it,
+// negative and -0 tnear, an empty segment, a zero direction).
+TEST(RayGate, AdmitsExactlyTheRaysIsTraceableAdmits) {
+  std::mt19937 rng(11);
+  int accepted = 0, refused = 0;
+  for (int round = 0; round < 50000; ++round) {
+    const Ray ray = random_ray(rng, 0.5f);
+    const bool expected = is_traceable(ray);
+    ASSERT_EQ(is_traceable_ray(ray), expected) << "round " << round;
+    (expected ? accepted : refused) += 1;
+  }
+  EXPECT_GT(accepted, 20000);
+  EXPECT_GT(refused, 15000);
+}
 
 TEST(RayPacket, WideLoadHoldsWhatEightSetsHoldAndRefusesExactlyWhatIsTraceableRefuses) {
   if (!sphere_lanes_vectorised()) GTEST_SKIP() << "no AVX2 on this machine: packets are not used";
