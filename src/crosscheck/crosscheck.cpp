@@ -227,6 +227,28 @@ double surface_error(const RenderScene& scene, const TracedRay& traced) {
   return 0.0;
 }
 
+// The allowance for surface_error. Both backends find the point where the ray meets the
+// triangle's plane; an error ε across the plane moves that point ε / |cos θ| along it, so a ray
+// grazing a triangle (a mesh's silhouette) may put the two barycentric points far further apart
+// than the distances differ. The cosine is floored at 0.01: a hundredfold allowance at most.
+double surface_tolerance(const RenderScene& scene, const TracedRay& traced) {
+  const Hit& a = traced.reference;
+  switch (kind_of(*geometry_of(scene, a))) {
+    case GeometryKind::kTriangles: {
+      const WorldTriangle tri = world_triangle(scene, a);
+      const Vec3 normal = cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
+      const double normal_length = magnitude(normal), dir_length = magnitude(traced.ray.dir);
+      if (!(normal_length > 0.0) || !(dir_length > 0.0)) return kPointTolerance;
+      const double cosine = std::fabs(double(dot(normal, traced.ray.dir))) / (normal_length * dir_length);
+      return kPointTolerance / std::max(cosine, 0.01);
+    }
+    case GeometryKind::kSpheres:
+    case GeometryKind::kCurves:
+    case GeometryKind::kInstance: return kPointTolerance;
+  }
+  return kPointTolerance;
+}
+
 void classify_same_primitive(const RenderScene& scene, const TracedRay& traced, CrosscheckCase& c) {
   const Hit& a = traced.reference;
   const Hit& b = traced.candidate;
@@ -238,7 +260,7 @@ void classify_same_primitive(const RenderScene& scene, const TracedRay& traced, 
   } else if (is_top_level_sphere(scene, a)) {
     c.agreement = Agreement::kMismatch;
     c.note = "top-level sphere hit is not bit-identical";
-  } else if (c.t_error <= t_tolerance && c.surface_error <= kPointTolerance) {
+  } else if (c.t_error <= t_tolerance && c.surface_error <= surface_tolerance(scene, traced)) {
     c.agreement = Agreement::kWithinTolerance;
   } else if (curve_allowance(scene, a) > 0.0 && is_borderline(scene, traced.ray, a)) {
     c.agreement = Agreement::kAmbiguous;  // a fibre's silhouette or open end: the surfaces differ there
