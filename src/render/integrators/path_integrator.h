@@ -59,6 +59,21 @@ class PathWorkspace {
     bool specular;        // the ray left a specular vertex or the camera: emission counts in full
     bool aov_pending;     // albedo and normal AOVs wait for the first non-specular vertex
     bool transmitted;     // the ray was refracted into or out of a surface (counted as refraction)
+
+    // This path one bounce on from the vertex its ray reached, along a sampled direction of
+    // solid-angle pdf `pdf`: the sample, lobe counters, eta_scale, min_pdf, group, media and
+    // pending AOVs carried over, the ray neither specular nor refracted; a vertex that changes
+    // any of those sets it on the result.
+    Path bounced(const Color& next_beta, const Vec3& vertex, float pdf) const {
+      Path next = *this;
+      ++next.bounce;
+      next.beta = next_beta;
+      next.origin = vertex;
+      next.bsdf_pdf = pdf;
+      next.specular = false;
+      next.transmitted = false;
+      return next;
+    }
   };
   struct ShadowQuery {
     std::uint32_t sample;

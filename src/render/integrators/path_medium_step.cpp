@@ -113,22 +113,9 @@ void PathVertexStep<kLightPathControls>::scatter_in_medium(std::size_t vertex, c
   Color next_beta = beta;
   if (path.bounce >= kRouletteStart && !russian_roulette(next_beta, path.eta_scale, u.roulette)) return;
   if (!is_finite(next_beta) || carries_no_light(next_beta)) return;
-  Path& next = ws_.next_paths.emplace_back(Path{.sample = path.sample,
-                                                .bounce = static_cast<std::uint16_t>(path.bounce + 1),
-                                                .diffuse_bounces = path.diffuse_bounces,
-                                                .glossy_bounces = path.glossy_bounces,
-                                                .transmission_bounces = path.transmission_bounces,
-                                                .volume_bounces = path.volume_bounces,
-                                                .beta = next_beta,
-                                                .eta_scale = path.eta_scale,
-                                                .origin = position,
-                                                .bsdf_pdf = ps.pdf,
-                                                .min_pdf = path.min_pdf,
-                                                .group = kGroup,
-                                                .media = media,
-                                                .specular = false,
-                                                .aov_pending = path.aov_pending,
-                                                .transmitted = false});
+  Path& next = ws_.next_paths.emplace_back(path.bounced(next_beta, position, ps.pdf));
+  next.group = kGroup;
+  next.media = media;
   if (kLightPathControls && filtering_glossy_) next.min_pdf = std::min(path.min_pdf, ps.pdf);
   if (kLightPathControls && lobe_limits_) ++next.volume_bounces;
   append_ray(ws_.next_rays, Ray{position, 0.0f, ps.outgoing, kEndless});

@@ -78,22 +78,10 @@ void PathVertexStep<kLightPathControls>::walk_under_surface(std::size_t vertex, 
   Color next_beta = exit->beta * bs->f * (std::fabs(bs->wi.z) / bs->pdf);
   if (path.bounce >= kRouletteStart && !russian_roulette(next_beta, path.eta_scale, u.roulette)) return;
   if (!is_finite(next_beta) || carries_no_light(next_beta)) return;
-  Path& next = ws_.next_paths.emplace_back(Path{.sample = path.sample,
-                                                .bounce = static_cast<std::uint16_t>(path.bounce + 1),
-                                                .diffuse_bounces = path.diffuse_bounces,
-                                                .glossy_bounces = path.glossy_bounces,
-                                                .transmission_bounces = path.transmission_bounces,
-                                                .volume_bounces = path.volume_bounces,
-                                                .beta = next_beta,
-                                                .eta_scale = path.eta_scale,
-                                                .origin = out.position,
-                                                .bsdf_pdf = bs->pdf,
-                                                .min_pdf = path.min_pdf,
-                                                .group = group,
-                                                .media = media,
-                                                .specular = false,
-                                                .aov_pending = aov_pending,
-                                                .transmitted = false});
+  Path& next = ws_.next_paths.emplace_back(path.bounced(next_beta, out.position, bs->pdf));
+  next.group = group;
+  next.media = media;
+  next.aov_pending = aov_pending;
   if (kLightPathControls && filtering_glossy_) next.min_pdf = std::min(path.min_pdf, bs->pdf);
   if (kLightPathControls && lobe_limits_) ++next.diffuse_bounces;
   append_ray(ws_.next_rays, spawn_ray(origins, lobe.frame.to_world(bs->wi)));

@@ -120,22 +120,12 @@ void PathVertexStep<kLightPathControls>::extend(std::size_t vertex, const Path& 
   if (!is_finite(next_beta) || carries_no_light(next_beta)) return;
   // The path's next ray, inside the medium it was refracted into, or outside it again.
   const Vec3 direction = surface.frame.to_world(bs->wi);
-  Path& next = ws_.next_paths.emplace_back(Path{.sample = path.sample,
-                                                .bounce = static_cast<std::uint16_t>(path.bounce + 1),
-                                                .diffuse_bounces = path.diffuse_bounces,
-                                                .glossy_bounces = path.glossy_bounces,
-                                                .transmission_bounces = path.transmission_bounces,
-                                                .volume_bounces = path.volume_bounces,
-                                                .beta = next_beta,
-                                                .eta_scale = eta_scale,
-                                                .origin = sp.position,
-                                                .bsdf_pdf = bs->pdf,
-                                                .min_pdf = path.min_pdf,
-                                                .group = group,
-                                                .media = path.media,
-                                                .specular = bs->delta,
-                                                .aov_pending = aov_pending,
-                                                .transmitted = bs->transmitted});
+  Path& next = ws_.next_paths.emplace_back(path.bounced(next_beta, sp.position, bs->pdf));
+  next.eta_scale = eta_scale;
+  next.group = group;
+  next.specular = bs->delta;
+  next.aov_pending = aov_pending;
+  next.transmitted = bs->transmitted;
   if (has_media_ && bs->transmitted && material.interior) next.media.cross(*material.interior, sp.front_face);
   // A delta sample's pdf is the lobe's probability, not a density: it roughens nothing.
   if (kLightPathControls && filtering_glossy_ && !bs->delta) next.min_pdf = std::min(path.min_pdf, bs->pdf);
