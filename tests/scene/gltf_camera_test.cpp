@@ -19,7 +19,7 @@ using test::GltfFile;
 GltfFile camera_file(const nlohmann::json& camera) {
   GltfFile gltf;
   gltf.node({{"mesh", gltf.mesh(gltf.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3"))}});
-  gltf.json["cameras"] = {camera};
+  gltf.json["cameras"] = nlohmann::json::array({camera});
   gltf.node({{"children", {2}}});
   gltf.node({{"camera", 0}, {"translation", {0, 0, 5}}});
   gltf.scene({0, 1});
