@@ -12,12 +12,15 @@ time t at frame t x 24, as rtpro's render.fps does.
 The importer may split or merge vertices, so the vertex sets are compared as point sets: the
 symmetric Hausdorff distance (the farthest any vertex of either lies from the nearest of the other),
 relative to the diagonal of rtpro's posed bounding box, and the two boxes' corners likewise. Prints
-one line per frame: "pose FRAME VERTS_RTPRO VERTS_BLENDER HAUSDORFF_REL BBOX_REL CENTROID_REL NLERP_DEG".
+one line per frame: "pose FRAME VERTS_RTPRO VERTS_BLENDER HAUSDORFF_REL BBOX_REL CENTROID_REL NLERP_DEG
+SLERPED_HAUSDORFF_REL".
 
 NLERP_DEG: the importer keys a LINEAR rotation as four linear F-curves, one per quaternion
 component, so Blender interpolates rotations by normalised lerp where glTF (and rtpro) slerps; the
 largest angle between the two over the file's LINEAR rotation channels at that frame tells how far
-apart the poses are expected to be (0 at the keys).
+apart the poses are expected to be (0 at the keys). SLERPED_HAUSDORFF_REL is the Hausdorff distance
+again once Blender's rotation keys are slerped at the compared frames (rekey_rotations_by_slerp):
+what is left when the interpolations are the same.
 """
 import base64
 import json
@@ -115,8 +118,37 @@ def farthest_nearest(a, b):
     return distances.min(axis=1).max()
 
 
-for frame in frames:
-    ours, theirs = rtpro_vertices(frame), blender_vertices(frame)
+def slerp(q0, q1, u):
+    half = math.acos(max(-1.0, min(1.0, q0 @ q1)))
+    if half < 1e-9:
+        return q0
+    return (math.sin((1 - u) * half) * q0 + math.sin(u * half) * q1) / math.sin(half)
+
+
+def rekey_rotations_by_slerp():
+    """Keys every LINEAR quaternion F-curve quartet at each compared frame that lies between two of
+    its keys with the slerp of those keys, so that Blender poses those frames as glTF interpolates.
+    The importer's bone-space conversion multiplies every key by one constant quaternion, which
+    slerp commutes with, so slerping Blender's keys is slerping the file's."""
+    for action in bpy.data.actions:
+        quartets = {}
+        for fcurve in action.fcurves:
+            if fcurve.data_path.endswith("rotation_quaternion"):
+                quartets.setdefault(fcurve.data_path, [None] * 4)[fcurve.array_index] = fcurve
+        for quartet in quartets.values():
+            keys = [[(k.co[0], k.co[1], k.interpolation) for k in fcurve.keyframe_points] for fcurve in quartet]
+            for frame in frames:
+                for i in range(len(keys[0]) - 1):
+                    (f0, _, interpolation), (f1, _, _) = keys[0][i], keys[0][i + 1]
+                    if f0 < frame < f1 and interpolation == "LINEAR":
+                        q0 = numpy.array([keys[c][i][1] for c in range(4)])
+                        q1 = numpy.array([keys[c][i + 1][1] for c in range(4)])
+                        value = slerp(q0 / numpy.linalg.norm(q0), q1 / numpy.linalg.norm(q1), (frame - f0) / (f1 - f0))
+                        for c in range(4):
+                            quartet[c].keyframe_points.insert(frame, value[c]).interpolation = "LINEAR"
+
+
+def compare(ours, theirs):
     diagonal = numpy.linalg.norm(ours.max(axis=0) - ours.min(axis=0))
     hausdorff = max(farthest_nearest(ours, theirs), farthest_nearest(theirs, ours)) / diagonal
     box = max(numpy.abs(ours.min(axis=0) - theirs.min(axis=0)).max(),
@@ -124,5 +156,14 @@ for frame in frames:
     # Centroids of the distinct positions: the importer's splitting and merging would weigh them otherwise.
     centroid = numpy.linalg.norm(numpy.unique(ours.round(6), axis=0).mean(axis=0) -
                                  numpy.unique(theirs.round(6), axis=0).mean(axis=0)) / diagonal
-    print("pose %d %d %d %.3g %.3g %.3g %.3g" % (frame, len(ours), len(theirs), hausdorff, box, centroid,
-                                              nlerp_slerp_degrees(frame)))
+    return hausdorff, box, centroid
+
+
+as_imported = {frame: blender_vertices(frame) for frame in frames}
+rekey_rotations_by_slerp()
+for frame in frames:
+    ours = rtpro_vertices(frame)
+    hausdorff, box, centroid = compare(ours, as_imported[frame])
+    slerped = compare(ours, blender_vertices(frame))[0]
+    print("pose %d %d %d %.3g %.3g %.3g %.3g %.3g" % (frame, len(ours), len(as_imported[frame]), hausdorff, box,
+                                                   centroid, nlerp_slerp_degrees(frame), slerped))
