@@ -61,6 +61,17 @@ TEST(GltfAnimation, LinearRotationSlerpsAlongTheShorterArc) {
   expect_near(pose_gltf(asset, 7.0).placements[0].transform.apply_point(Vec3(1, 0, 0)), Vec3(0, 0, -1));
 }
 
+TEST(GltfAnimation, LinearRotationSlerpsTheRotationsOfKeysOffUnitLength) {
+  const float s = std::sqrt(0.5f);
+  // The identity written at twice unit length, then 90 degrees about +y: halfway is 45 degrees.
+  // Slerping the keys as written (weights from the angle of their raw dot product) gives 29.3.
+  GltfFile gltf = triangle_file();
+  animate(gltf, 0, "rotation", {0, 1}, {0, 0, 0, 2, 0, s, 0, s}, "VEC4");
+  const GltfAsset asset = load_gltf_file(gltf.write("slerp_unnormalised"));
+  const float c = std::sqrt(0.5f);
+  expect_near(pose_gltf(asset, 0.5).placements[0].transform.apply_point(Vec3(1, 0, 0)), Vec3(c, 0, -c));
+}
+
 TEST(GltfAnimation, CubicSplineScalesTangentsByTheKeyInterval) {
   // x from 0 (out-tangent 1) at t = 0 to 1 (in-tangent 0) at t = 2. At t = 1 (s = 1/2) the
   // Hermite basis is h00 = h01 = 1/2, h10 = 1/8, h11 = -1/8: x = 1/8 · 2 · 1 + 1/2 · 1 = 0.75.

@@ -22,8 +22,12 @@ inline Quaternion normalized(const Quaternion& q) {
 
 // Spherical interpolation from a (s = 0) to b (s = 1) along the shorter arc, as the glTF
 // specification's LINEAR rotation sampler does; nearly equal rotations are interpolated linearly,
-// where the sine below would lose its precision. The result is unit length.
-inline Quaternion slerp(const Quaternion& a, Quaternion b, double s) {
+// where the sine below would lose its precision. The result is unit length. a and b need not be:
+// a key stands for the rotation it normalises to (as it does at its own time), so the turn between
+// two keys written slightly off unit length still runs at a steady angular speed.
+inline Quaternion slerp(Quaternion a, Quaternion b, double s) {
+  a = normalized(a);
+  b = normalized(b);
   double cosine = dot(a, b);
   if (cosine < 0.0) {
     cosine = -cosine;
