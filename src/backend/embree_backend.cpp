@@ -39,17 +39,6 @@ void to_embree(const Ray& ray, unsigned id, RTCRayHit& out, float time = 0.0f) {
   out.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
 }
 
-bool from_embree(const RTCRayHit& in, Hit& hit) {
-  if (in.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-  hit.t = in.ray.tfar;
-  hit.u = in.hit.u;
-  hit.v = in.hit.v;
-  hit.geom_id = in.hit.geomID;
-  hit.prim_id = in.hit.primID;
-  hit.inst_id = in.hit.instID[0];
-  return true;
-}
-
 // Shapes whose hits Embree's own kernels decide (triangles); an instance's prototype is asked itself.
 bool has_triangles(const Group& group) {
   for (const Geometry& geometry : group.geometries) {

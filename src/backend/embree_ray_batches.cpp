@@ -116,13 +116,7 @@ RTPRO_AVX2_CLONES void intersect_one_by_one(const EmbreeRayTarget& target, std::
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(target.scene, &context.base, &query);
-    if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
-    hit.t = query.ray.tfar;
-    hit.u = query.hit.u;
-    hit.v = query.hit.v;
-    hit.geom_id = query.hit.geomID;
-    hit.prim_id = query.hit.primID;
-    hit.inst_id = query.hit.instID[0];
+    from_embree(query, hit);
   }
 }
 

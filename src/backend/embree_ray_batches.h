@@ -29,6 +29,18 @@ inline float one_step_towards_zero(float t) {
   return t == 0.0f ? t : std::bit_cast<float>(std::bit_cast<std::uint32_t>(t) - 1u);
 }
 
+// An answered Embree query as rtpro's hit, or false where it hit nothing.
+inline bool from_embree(const RTCRayHit& in, Hit& hit) {
+  if (in.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+  hit.t = in.ray.tfar;
+  hit.u = in.hit.u;
+  hit.v = in.hit.v;
+  hit.geom_id = in.hit.geomID;
+  hit.prim_id = in.hit.primID;
+  hit.inst_id = in.hit.instID[0];
+  return true;
+}
+
 // The closest user-geometry hit so far of a ray that has met none: its tfar.
 inline Hit no_user_hit_yet(const Ray& ray) {
   Hit closest;
