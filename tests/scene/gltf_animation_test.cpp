@@ -279,7 +279,8 @@ TEST(GltfAnimation, AnOpenShutterGivesMovingNodesAndDeformingMeshesTimeSteps) {
   EXPECT_TRUE(pose.placements[1].transform_steps.empty());
   EXPECT_TRUE(pose.placements[2].transform_steps.empty());
   const TriangleMesh& deforming = asset.mesh_of(pose, pose.placements[1]);
-  ASSERT_EQ(deforming.vertex_steps.size(), std::size_t(kDeformationSteps));
+  // The weight changes linearly, so the vertices move on straight lines: two steps hold the motion.
+  ASSERT_EQ(deforming.vertex_steps.size(), 2u);
   EXPECT_NEAR(deforming.vertex_steps.front()[0].z, 0.5f, 1e-6f);  // weight 0.25
   EXPECT_NEAR(deforming.vertex_steps.back()[0].z, 1.5f, 1e-6f);   // weight 0.75
   EXPECT_NEAR(deforming.vertex(0).z, 1.0f, 1e-6f);                // the frame's own pose
@@ -287,6 +288,50 @@ TEST(GltfAnimation, AnOpenShutterGivesMovingNodesAndDeformingMeshesTimeSteps) {
   const GltfPose still = pose_gltf_frame(asset, 12.0, 24.0, Shutter{});
   EXPECT_TRUE(still.placements[0].transform_steps.empty());
   EXPECT_TRUE(asset.mesh_of(still, still.placements[1]).vertex_steps.empty());
+}
+
+TEST(GltfAnimation, DeformingMeshesTakeAsManyVertexStepsAsKeepThemOnTheirPaths) {
+  const Shutter shutter{-6.0f, 6.0f};  // frame 12 at 24 fps: 0.25 s to 0.75 s
+  {
+    // The weight goes 0.5, 1, 0.5 over the shutter: both ends alike, the middle apart. Three steps
+    // are exact (the weight is linear on each half); two would leave the mesh still.
+    GltfFile gltf = triangle_file();
+    gltf.json["meshes"][0]["primitives"][0]["targets"] = {
+        {{"POSITION", gltf.floats({0, 0, 2, 0, 0, 0, 0, 0, 0}, "VEC3")}}};
+    animate(gltf, 0, "weights", {0, 0.5f, 1}, {0, 1, 0}, "SCALAR");
+    const GltfAsset asset = load_gltf_file(gltf.write("peaked_weight"));
+    const GltfPose pose = pose_gltf_frame(asset, 12.0, 24.0, shutter);
+    const TriangleMesh& mesh = asset.mesh_of(pose, pose.placements[0]);
+    ASSERT_EQ(mesh.vertex_steps.size(), 3u);
+    EXPECT_NEAR(mesh.vertex_steps[0][0].z, 1.0f, 1e-6f);
+    EXPECT_NEAR(mesh.vertex_steps[1][0].z, 2.0f, 1e-6f);
+    EXPECT_NEAR(mesh.vertex_steps[2][0].z, 1.0f, 1e-6f);
+  }
+  {
+    // A joint turning 90° about +y in the shutter: its vertices follow arcs, which take the most
+    // steps; each step is the pose at its time.
+    GltfFile gltf;
+    const int mesh = gltf.mesh(gltf.floats(kTriangle, "VEC3"));
+    auto& attributes = gltf.json["meshes"][mesh]["primitives"][0]["attributes"];
+    attributes["JOINTS_0"] = gltf.ushorts({0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, "VEC4");
+    attributes["WEIGHTS_0"] = gltf.floats({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, "VEC4");
+    const int joint = gltf.node(nlohmann::json::object());
+    gltf.json["skins"] = {{{"joints", {joint}}}};
+    gltf.scene({joint, gltf.node({{"mesh", mesh}, {"skin", 0}})});
+    const float s = std::sqrt(0.5f);
+    animate(gltf, joint, "rotation", {0.25f, 0.75f}, {0, 0, 0, 1, 0, s, 0, s}, "VEC4");
+    const GltfAsset asset = load_gltf_file(gltf.write("turning_joint"));
+    const GltfPose pose = pose_gltf_frame(asset, 12.0, 24.0, shutter);
+    const TriangleMesh& skinned = asset.mesh_of(pose, pose.placements[0]);
+    ASSERT_EQ(skinned.vertex_steps.size(), std::size_t(kMaxDeformationSteps));
+    for (int step = 0; step < kMaxDeformationSteps; ++step) {
+      const double time = 0.25 + 0.5 * step / (kMaxDeformationSteps - 1);
+      const GltfPose at = pose_gltf(asset, time);
+      for (std::uint32_t v = 0; v < 3; ++v)
+        expect_near(skinned.vertex_steps[std::size_t(step)][v].position(),
+                    asset.mesh_of(at, at.placements[0]).vertex(v));
+    }
+  }
 }
 
 // Khronos' samples from Debian's assimp-testmodels, posed against values worked out from their

@@ -4,6 +4,7 @@
 #include "rtpro/scene/render_camera.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace rtpro {
@@ -33,24 +34,62 @@ bool vertices_equal(const std::vector<PaddedVertex>& a, const std::vector<Padded
   });
 }
 
-// The mesh of `placement` at each deformation step; its steps stay empty when it keeps still.
-void add_vertex_steps(const GltfAsset& asset, const GltfPlacement& placement, const std::vector<double>& times,
+// Whether every vertex of `middle` lies within `tolerance` (per coordinate) of the midpoint of its
+// positions in `before` and `after`, computed as the backends interpolate.
+bool on_chords(const std::vector<PaddedVertex>& before, const std::vector<PaddedVertex>& middle,
+               const std::vector<PaddedVertex>& after, double tolerance) {
+  for (std::size_t i = 0; i < middle.size(); ++i) {
+    const Vec3 chord = motion_lerp(before[i].position(), after[i].position(), 0.5f);
+    const Vec3 d = middle[i].position() - chord;
+    if (std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)}) > tolerance) return false;
+  }
+  return true;
+}
+
+// The mesh of `placement` posed at time steps over the shutter, as few as deformation_steps_kept
+// allows; its steps stay empty when it keeps still.
+void add_vertex_steps(const GltfAsset& asset, const GltfPlacement& placement, const Shutter& shutter, double frame,
                       StatesOverShutter& states, TriangleMesh& mesh) {
   const GltfNode& node = asset.nodes[placement.node];
   const gltf::MeshDeformation& deformation = asset.deformations[placement.mesh];
   const bool skinned = node.skin >= 0 && deformation.skinned();
-  for (const double time : times) {
+  const auto pose_at = [&](double time) {
     const gltf::NodeState& state = states.at(time);
     std::vector<Affine> joints;
     if (skinned) joints = gltf::joint_matrices(asset.skins[std::size_t(node.skin)], state.world);
-    TriangleMesh posed =
-        gltf::deform_mesh(asset.meshes[placement.mesh], deformation, state.weights[placement.node],
-                          skinned ? &joints : nullptr, asset.file.string(), gltf_node_path(placement.node));
+    return gltf::deform_mesh(asset.meshes[placement.mesh], deformation, state.weights[placement.node],
+                             skinned ? &joints : nullptr, asset.file.string(), gltf_node_path(placement.node));
+  };
+  std::vector<TriangleMesh> steps;
+  for (const double time : motion_step_times(shutter, frame, 2)) steps.push_back(pose_at(time));
+  const double tolerance = kMotionChordTolerance * static_cast<double>(length(steps.front().bounds().extent()));
+  while (static_cast<int>(steps.size()) < kMaxDeformationSteps) {
+    // The finer steps' times, from motion_step_times itself: the steps of every count fall on them.
+    const std::vector<double> finer = motion_step_times(shutter, frame, 2 * static_cast<int>(steps.size()) - 1);
+    std::vector<TriangleMesh> refined;
+    bool close_enough = true;
+    for (std::size_t i = 0; i + 1 < steps.size(); ++i) {
+      TriangleMesh middle = pose_at(finer[2 * i + 1]);
+      close_enough = close_enough && on_chords(steps[i].vertices, middle.vertices, steps[i + 1].vertices, tolerance);
+      refined.push_back(std::move(steps[i]));
+      refined.push_back(std::move(middle));
+    }
+    refined.push_back(std::move(steps.back()));
+    if (close_enough) {
+      // The midpoints were only checked: the coarser steps are kept.
+      steps.clear();
+      for (std::size_t i = 0; i < refined.size(); i += 2) steps.push_back(std::move(refined[i]));
+      break;
+    }
+    steps = std::move(refined);
+  }
+  for (TriangleMesh& posed : steps) {
     mesh.vertex_steps.push_back(std::move(posed.vertices));
     if (!mesh.normals.empty()) mesh.normal_steps.push_back(std::move(posed.normals));
   }
-  const auto& steps = mesh.vertex_steps;
-  if (std::all_of(steps.begin(), steps.end(), [&](const auto& s) { return vertices_equal(s, steps.front()); })) {
+  const auto& vertex_steps = mesh.vertex_steps;
+  if (std::all_of(vertex_steps.begin(), vertex_steps.end(),
+                  [&](const auto& s) { return vertices_equal(s, vertex_steps.front()); })) {
     mesh.vertex_steps.clear();
     mesh.normal_steps.clear();
   }
@@ -62,7 +101,6 @@ GltfPose pose_gltf_frame(const GltfAsset& asset, double frame, double fps, const
   GltfPose pose = pose_gltf(asset, frame / fps);
   if (!asset.animated() || !shutter.is_open()) return pose;
   StatesOverShutter states(asset, fps);
-  const std::vector<double> deformation_times = motion_step_times(shutter, frame, kDeformationSteps);
   for (GltfPlacement& placement : pose.placements) {
     const GltfNode& node = asset.nodes[placement.node];
     const gltf::MeshDeformation& deformation = asset.deformations[placement.mesh];
@@ -76,7 +114,7 @@ GltfPose pose_gltf_frame(const GltfAsset& asset, double frame, double fps, const
       pose.deformed.push_back(asset.meshes[placement.mesh]);
       placement.deformed = std::int32_t(pose.deformed.size() - 1);
     }
-    add_vertex_steps(asset, placement, deformation_times, states, pose.deformed[std::size_t(placement.deformed)]);
+    add_vertex_steps(asset, placement, shutter, frame, states, pose.deformed[std::size_t(placement.deformed)]);
   }
   return pose;
 }
