@@ -275,6 +275,43 @@ class BvhBuilder {
   HugePageBuffer<BvhNode> scratch_;  // subtrees as built, before they are laid out
 };
 
+// Linear bounds of a primitive moving through `steps` (>= 2) boxes at evenly spaced times: the
+// first and last steps' boxes, each face pushed out as far as any middle step pokes past the
+// faces' interpolation. Between two steps the primitive lies within their boxes' interpolation,
+// so within these; the padding covers float rounding, which differs between these bounds'
+// formula (LinearBounds::at) and the shapes' own interpolation (scene/motion.h).
+template <typename BoxAt>
+LinearBounds linear_bounds(std::uint32_t steps, BoxAt&& box_at) {
+  LinearBounds bounds{box_at(0), box_at(steps - 1)};
+  for (std::uint32_t i = 1; i + 1 < steps; ++i) {
+    const float time = static_cast<float>(i) / static_cast<float>(steps - 1);
+    const BBox step = box_at(i);
+    const BBox there = bounds.at(time);
+    const Vec3 below = min(step.lower - there.lower, Vec3(0.0f));
+    const Vec3 above = max(step.upper - there.upper, Vec3(0.0f));
+    bounds.at_open = {bounds.at_open.lower + below, bounds.at_open.upper + above};
+    bounds.at_close = {bounds.at_close.lower + below, bounds.at_close.upper + above};
+  }
+  const Vec3 magnitude = max(max(abs(bounds.at_open.lower), abs(bounds.at_open.upper)),
+                             max(abs(bounds.at_close.lower), abs(bounds.at_close.upper)));
+  const Vec3 pad = magnitude * 0x1p-20f;
+  bounds.at_open = {bounds.at_open.lower - pad, bounds.at_open.upper + pad};
+  bounds.at_close = {bounds.at_close.lower - pad, bounds.at_close.upper + pad};
+  return bounds;
+}
+
+// Primitive `p` of geometry `g` as it moves (its box at every time when it keeps still).
+LinearBounds primitive_linear_bounds(const Group& group, std::uint32_t g, std::uint32_t p,
+                                     std::span<const BBox> prototype_bounds) {
+  const std::uint32_t steps = group.motion_step_count(g);
+  if (steps == 0) {
+    const BBox box = group.primitive_bounds(g, p, prototype_bounds);
+    return {box, box};
+  }
+  return linear_bounds(
+      steps, [&](std::uint32_t step) { return group.primitive_bounds_at_step(g, p, step, prototype_bounds); });
+}
+
 // Every primitive's bounds, computed in parallel into its place in geometry order; primitives
 // with empty bounds (an instance of an empty prototype) are then dropped, keeping the order.
 HugePageBuffer<BuildPrimitive> build_primitives(const Group& group, std::span<const BBox> prototype_bounds,
@@ -282,12 +319,17 @@ HugePageBuffer<BuildPrimitive> build_primitives(const Group& group, std::span<co
   std::vector<std::size_t> first(group.geometries.size() + 1, 0);
   for (std::uint32_t g = 0; g < group.geometries.size(); ++g) first[g + 1] = first[g] + group.primitive_count(g);
   HugePageBuffer<BuildPrimitive> primitives(first.back());
+  std::vector<char> moving(group.geometries.size());
+  for (std::uint32_t g = 0; g < group.geometries.size(); ++g) moving[g] = group.motion_step_count(g) > 0;
   tbb::parallel_for(std::uint32_t{0}, static_cast<std::uint32_t>(group.geometries.size()), [&](std::uint32_t g) {
     tbb::parallel_for(
         tbb::blocked_range<std::uint32_t>(0, group.primitive_count(g), kChunk),
         [&](const tbb::blocked_range<std::uint32_t>& r) {
           for (std::uint32_t p = r.begin(); p < r.end(); ++p) {
-            const BBox b = group.primitive_bounds(g, p, prototype_bounds);
+            // A moving primitive is placed in the tree by its box halfway through the shutter,
+            // which rays with a time test (motion_bounds_of) at the time they carry.
+            const BBox b = moving[g] ? primitive_linear_bounds(group, g, p, prototype_bounds).at(0.5f)
+                                     : group.primitive_bounds(g, p, prototype_bounds);
             primitives[first[g] + p] = {{b.lower.x, b.lower.y, b.lower.z}, g, {b.upper.x, b.upper.y, b.upper.z}, p};
           }
         });
@@ -298,12 +340,52 @@ HugePageBuffer<BuildPrimitive> build_primitives(const Group& group, std::span<co
   return primitives;
 }
 
+// Every node's linear bounds, leaves from their primitives and inner nodes as their children's
+// union (children come after their parent in `nodes`), where some geometry of `group` moves. The
+// nodes' own boxes, built from the primitives halfway through the shutter, become the boxes of
+// the whole motion (the linear bounds' two ends), for whatever traces without a time.
+std::vector<MotionNode> motion_nodes_of(const Group& group, std::span<const BBox> prototype_bounds, Bvh& bvh) {
+  bool moves = false;
+  for (std::uint32_t g = 0; g < group.geometries.size(); ++g) moves = moves || group.motion_step_count(g) > 0;
+  if (!moves) return {};
+  std::vector<LinearBounds> bounds(bvh.nodes.size());
+  tbb::parallel_for(std::size_t{0}, bvh.nodes.size(), [&](std::size_t n) {
+    const BvhNode& node = bvh.nodes[n];
+    if (!node.is_leaf()) return;
+    LinearBounds leaf;
+    for (std::uint32_t i = node.index; i < node.index + node.count; ++i) {
+      const PrimitiveRef& ref = bvh.refs[i];
+      const LinearBounds prim = primitive_linear_bounds(group, ref.geom, ref.prim, prototype_bounds);
+      leaf.at_open.extend(prim.at_open);
+      leaf.at_close.extend(prim.at_close);
+    }
+    bounds[n] = leaf;
+  });
+  for (std::size_t n = bvh.nodes.size(); n-- > 0;) {
+    const BvhNode& node = bvh.nodes[n];
+    if (node.is_leaf()) continue;
+    bounds[n] = bounds[node.index];
+    bounds[n].at_open.extend(bounds[node.index + 1].at_open);
+    bounds[n].at_close.extend(bounds[node.index + 1].at_close);
+  }
+  std::vector<MotionNode> nodes(bvh.nodes.size());
+  for (std::size_t n = 0; n < bvh.nodes.size(); ++n) {
+    BvhNode& node = bvh.nodes[n];
+    node.bounds = bounds[n].at_open;
+    node.bounds.extend(bounds[n].at_close);
+    nodes[n] = {bounds[n], node.index, node.count, node.axis};
+  }
+  return nodes;
+}
+
 }  // namespace
 
 Bvh build_bvh(const Group& group, std::span<const BBox> prototype_bounds, BvhBuildMode mode) {
   std::uint32_t count = 0;
   auto primitives = build_primitives(group, prototype_bounds, count);
-  return BvhBuilder(std::move(primitives), count, mode == BvhBuildMode::kParallel).build();
+  Bvh bvh = BvhBuilder(std::move(primitives), count, mode == BvhBuildMode::kParallel).build();
+  bvh.motion_nodes = motion_nodes_of(group, prototype_bounds, bvh);
+  return bvh;
 }
 
 }  // namespace rtpro

@@ -73,15 +73,54 @@ class NativeBackend final : public Backend {
   // closest hit under the shared tie rule does not depend on the order of the tests.
   void intersect(std::span<const Ray> rays, std::span<Hit> hits, RayCoherence coherence) const override {
     if (!packets_) return Backend::intersect(rays, hits, coherence);
+    closest_in_packets(rays, {}, hits);
+  }
+
+  void occluded(std::span<const Ray> rays, std::span<std::uint8_t> result, RayCoherence coherence) const override {
+    if (!packets_) return Backend::occluded(rays, result, coherence);
+    any_in_packets(rays, {}, result);
+  }
+
+  // Rays with times in packets too, each lane where the scene is at its time.
+  void intersect(std::span<const Ray> rays, std::span<const float> times, std::span<Hit> hits,
+                 RayCoherence coherence) const override {
+    if (!packets_ || times.empty()) return Backend::intersect(rays, times, hits, coherence);
+    closest_in_packets(rays, times, hits);
+  }
+
+  void occluded(std::span<const Ray> rays, std::span<const float> times, std::span<std::uint8_t> result,
+                RayCoherence coherence) const override {
+    if (!packets_ || times.empty()) return Backend::occluded(rays, times, result, coherence);
+    any_in_packets(rays, times, result);
+  }
+
+  BackendStats stats() const override {
+    BackendStats s;
+    s.build_seconds = bvhs_.build_seconds();
+    s.acceleration_bytes = bvhs_.memory_bytes();
+    s.rejected_rays = gate_.rejected();
+    return s;
+  }
+
+ private:
+  // Each lane's time from `times` (empty: none).
+  static void set_times(RayPacket& packet, std::span<const float> times, const std::size_t (&slots)[kPacketSize],
+                        unsigned count) {
+    for (unsigned k = 0; k < count; ++k) packet.time[k] = times[slots[k]];
+  }
+
+  void closest_in_packets(std::span<const Ray> rays, std::span<const float> times, std::span<Hit> hits) const {
     RayPacket packet;
     Hit best[kPacketSize];
     std::size_t slots[kPacketSize];
     std::size_t i = 0;
+    const bool timed = !times.empty();
     while (i < rays.size()) {
       const unsigned count = next_packet(rays, i, gate_, packet, slots, [&](std::size_t r) { hits[r] = Hit{}; });
       if (count == 0) continue;
+      if (timed) set_times(packet, times, slots, count);
       for (Hit& lane_best : best) lane_best = Hit{};
-      bvhs_.closest_in_packet(packet, (1u << count) - 1u, best);
+      bvhs_.closest_in_packet(packet, timed, (1u << count) - 1u, best);
       // The record is copied first and its distance stored after: setting best[k].t and then
       // copying the record read the fresh 4-byte store back with a 16-byte load, a
       // store-forwarding stall per hit.
@@ -94,28 +133,20 @@ class NativeBackend final : public Backend {
     }
   }
 
-  void occluded(std::span<const Ray> rays, std::span<std::uint8_t> result, RayCoherence coherence) const override {
-    if (!packets_) return Backend::occluded(rays, result, coherence);
+  void any_in_packets(std::span<const Ray> rays, std::span<const float> times, std::span<std::uint8_t> result) const {
     RayPacket packet;
     std::size_t slots[kPacketSize];
     std::size_t i = 0;
+    const bool timed = !times.empty();
     while (i < rays.size()) {
       const unsigned count = next_packet(rays, i, gate_, packet, slots, [&](std::size_t r) { result[r] = 0; });
       if (count == 0) continue;
-      std::uint32_t blocked = bvhs_.any_in_packet(packet, (1u << count) - 1u);
+      if (timed) set_times(packet, times, slots, count);
+      std::uint32_t blocked = bvhs_.any_in_packet(packet, timed, (1u << count) - 1u);
       for (; blocked != 0; blocked &= blocked - 1) result[slots[std::countr_zero(blocked)]] = 1;
     }
   }
 
-  BackendStats stats() const override {
-    BackendStats s;
-    s.build_seconds = bvhs_.build_seconds();
-    s.acceleration_bytes = bvhs_.memory_bytes();
-    s.rejected_rays = gate_.rejected();
-    return s;
-  }
-
- private:
   const bool packets_;  // the CPU has AVX2
   NativeTraversal bvhs_;
   RayGate gate_;

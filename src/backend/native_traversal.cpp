@@ -33,12 +33,12 @@ RayBoxData prepare(const Ray& ray) {
 // axis out, as the operand order of minps/maxps below arranges: each returns its second operand
 // when either is NaN. The far distance is enlarged by 2·gamma(3) (pbrt) so float rounding never
 // culls a box that the ray actually touches.
-inline bool hits_box(const BBox& box, const RayBoxData& d, float tnear, float tmax, float& entry) {
+// The box's corners are in lanes 0-2 of `lower` and `upper`; lane 3 is replaced before any
+// comparison.
+inline bool hits_box(__m128 lower, __m128 upper, const RayBoxData& d, float tnear, float tmax, float& entry) {
   constexpr float kRoundingSlack = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
-  // The loads read one float past each corner (the next corner's x, or the node's index bits):
-  // lane 3 is replaced before any comparison.
-  const __m128 tn = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(&box.lower.x), d.org), d.inv_dir);
-  const __m128 tf = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(&box.upper.x), d.org), d.inv_dir);
+  const __m128 tn = _mm_mul_ps(_mm_sub_ps(lower, d.org), d.inv_dir);
+  const __m128 tf = _mm_mul_ps(_mm_sub_ps(upper, d.org), d.inv_dir);
   const __m128 xyz = _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
   // min(tf, tn) is NaN when tn is (axis ignored) and tn when tf is; max(tn, tf) the other way round.
   const __m128 near_axes = _mm_min_ps(tf, tn);
@@ -54,6 +54,23 @@ inline bool hits_box(const BBox& box, const RayBoxData& d, float tnear, float tm
   t1 = _mm_min_ps(t1, _mm_shuffle_ps(t1, t1, _MM_SHUFFLE(1, 0, 3, 2)));
   entry = _mm_cvtss_f32(t0);
   return entry <= _mm_cvtss_f32(t1);
+}
+
+// The loads read one float past each corner (the next corner's x, or the node's index bits).
+inline bool hits_box(const BBox& box, const RayBoxData& d, float tnear, float tmax, float& entry) {
+  return hits_box(_mm_loadu_ps(&box.lower.x), _mm_loadu_ps(&box.upper.x), d, tnear, tmax, entry);
+}
+
+// A moving node's box at `time` (LinearBounds::at's a + t·(b − a), in registers: a box written to
+// memory and read back whole would stall on store forwarding at every node).
+inline bool hits_box_at(const LinearBounds& box, __m128 time, const RayBoxData& d, float tnear, float tmax,
+                        float& entry) {
+  const auto at = [time](const Vec3& a, const Vec3& b) {
+    const __m128 from = _mm_loadu_ps(&a.x);
+    return _mm_add_ps(from, _mm_mul_ps(time, _mm_sub_ps(_mm_loadu_ps(&b.x), from)));
+  };
+  return hits_box(at(box.at_open.lower, box.at_close.lower), at(box.at_open.upper, box.at_close.upper), d, tnear, tmax,
+                  entry);
 }
 
 Ray to_object_space(const Affine& world_to_object, const Ray& ray, float tfar) {
@@ -72,6 +89,13 @@ std::optional<Ray> to_object_space_at(const Instance& instance, const Ray& ray, 
   const std::optional<InstancePlacement> placement = placement_at(instance, time);
   if (!placement) return std::nullopt;
   return to_object_space(placement->world_to_object, ray, tfar);
+}
+
+// Whether a shape kind's geometry moves during the shutter (curves keep still).
+template <typename Shapes>
+bool moves(const Shapes& shapes) {
+  if constexpr (requires { shapes.moving(); }) return shapes.moving();
+  else return false;
 }
 
 // A shape's hit, at `time` where it moves.
@@ -105,18 +129,32 @@ struct NodeStack {
 };
 
 // Visits every leaf whose node box the ray enters, nearest child first: `visit(leaf, node_index)`
-// returns false to stop early. `tmax` is re-read after each leaf.
+// returns false to stop early. `tmax` is re-read after each leaf. Where the BVH has linear bounds
+// (something in the group moves), a node's box is taken at the ray's `time`, from its MotionNode.
 template <typename Visit>
-void traverse(const Bvh& bvh, const Ray& ray, const float& tmax, Visit&& visit) {
+void traverse(const Bvh& bvh, const Ray& ray, float time, const float& tmax, Visit&& visit) {
   if (bvh.nodes.empty()) return;
   const RayBoxData box_data = prepare(ray);
   const int dir_negative[3] = {ray.dir.x < 0.0f, ray.dir.y < 0.0f, ray.dir.z < 0.0f};
+  const bool linear = !bvh.motion_nodes.empty();
+  const __m128 time_lanes = _mm_set1_ps(time);
   NodeStack stack;
   std::uint32_t node_index = 0;
   for (;;) {
-    const BvhNode& node = bvh.nodes[node_index];
     float entry;
-    if (hits_box(node.bounds, box_data, ray.tnear, tmax, entry)) {
+    bool entered;
+    BvhNode node;  // index, count and axis; the bounds only where the node keeps still
+    if (linear) {
+      const MotionNode& m = bvh.motion_nodes[node_index];
+      entered = hits_box_at(m.bounds, time_lanes, box_data, ray.tnear, tmax, entry);
+      node.index = m.index;
+      node.count = m.count;
+      node.axis = m.axis;
+    } else {
+      node = bvh.nodes[node_index];
+      entered = hits_box(node.bounds, box_data, ray.tnear, tmax, entry);
+    }
+    if (entered) {
       if (node.is_leaf()) {
         if (!visit(node, node_index)) return;
       } else {
@@ -145,14 +183,26 @@ unsigned chunk_slots(const BvhNode& leaf, std::uint32_t i) {
   return left >= kBlockWidth ? (1u << kBlockWidth) - 1u : (1u << left) - 1u;
 }
 
-// A triangle leaf against one ray, four triangles at a time: every one the test accepts offered
-// under the tie rule.
+// Four triangles of a leaf from reference `i` on, as a ray at `time` meets them: from the still
+// rows, or between the two steps of the moving rows around `time`.
+[[gnu::target("avx2"), gnu::always_inline]] inline BlockVertices leaf_block(const TriangleLeaves& leaves,
+                                                                            std::uint8_t rows, std::uint32_t i,
+                                                                            const MotionSegment& segment) {
+  if (rows == kStillRows) return load_block(leaves.column(i), leaves.stride);
+  return load_block_between(leaves.motion_column(segment.index, i), leaves.stride, segment.fraction);
+}
+
+// A triangle leaf against one ray at `time`, four triangles at a time: every one the test accepts
+// offered under the tie rule.
 [[gnu::target("avx2")]] void closest_in_triangle_leaf(const Bvh& bvh, const TriangleLeaves& leaves, const BvhNode& leaf,
-                                                      const Ray& ray, std::uint32_t inst, Hit& best, float& best_t) {
+                                                      std::uint8_t rows, const Ray& ray, float time, std::uint32_t inst,
+                                                      Hit& best, float& best_t) {
   const BlockRay block = block_ray(ray.org, ray.dir, ray.tnear);
+  const MotionSegment segment = rows == kMovingRows ? motion_segment(time, leaves.motion_steps) : MotionSegment{};
   for (std::uint32_t i = leaf.index; i < leaf.index + leaf.count; i += kBlockWidth) {
     BlockHits hits;
-    for (unsigned mask = intersect_block(leaves.column(i), leaves.stride, chunk_slots(leaf, i), block, best_t, hits);
+    for (unsigned mask =
+             intersect_block(leaf_block(leaves, rows, i, segment), chunk_slots(leaf, i), block, best_t, hits);
          mask != 0; mask &= mask - 1) {
       const auto j = static_cast<unsigned>(std::countr_zero(mask));
       offer_hit(hits.t[j], hits.u[j], hits.v[j], inst, bvh.refs[i + j], best, best_t);
@@ -160,13 +210,14 @@ unsigned chunk_slots(const BvhNode& leaf, std::uint32_t i) {
   }
 }
 
-// Whether a triangle leaf holds anything in (ray.tnear, tfar).
-[[gnu::target("avx2")]] bool any_in_triangle_leaf(const TriangleLeaves& leaves, const BvhNode& leaf, const Ray& ray,
-                                                  float tfar) {
+// Whether a triangle leaf holds anything in (ray.tnear, tfar) at `time`.
+[[gnu::target("avx2")]] bool any_in_triangle_leaf(const TriangleLeaves& leaves, const BvhNode& leaf, std::uint8_t rows,
+                                                  const Ray& ray, float time, float tfar) {
   const BlockRay block = block_ray(ray.org, ray.dir, ray.tnear);
+  const MotionSegment segment = rows == kMovingRows ? motion_segment(time, leaves.motion_steps) : MotionSegment{};
   for (std::uint32_t i = leaf.index; i < leaf.index + leaf.count; i += kBlockWidth) {
     BlockHits hits;
-    for (unsigned mask = intersect_block(leaves.column(i), leaves.stride, chunk_slots(leaf, i), block, tfar, hits);
+    for (unsigned mask = intersect_block(leaf_block(leaves, rows, i, segment), chunk_slots(leaf, i), block, tfar, hits);
          mask != 0; mask &= mask - 1)
       if (hits.t[std::countr_zero(mask)] < tfar) return true;
   }
@@ -180,28 +231,46 @@ unsigned chunk_slots(const BvhNode& leaf, std::uint32_t i) {
 // reference first + j). Any other leaf's references go to `visit(ref, lanes)` one by one, with
 // the mask of the entering lanes. Both return the lanes still active (occlusion retires the
 // blocked ones).
+// With `timed`, each lane meets the scene where it is at the lane's time (packet.time): node boxes
+// from the BVH's linear bounds and deforming meshes' leaves from their moving rows, as traverse
+// and closest_in_triangle_leaf take them for a single ray. Without, a deforming mesh's leaf goes
+// reference by reference.
 template <typename Visit, typename OnBlockHits>
 [[gnu::target("avx2")]] void traverse_packet(const Bvh& bvh, const TriangleLeaves& leaves, const RayPacket& packet,
-                                             std::uint32_t active, Visit&& visit, OnBlockHits&& on_block_hits) {
+                                             bool timed, std::uint32_t active, Visit&& visit,
+                                             OnBlockHits&& on_block_hits) {
   if (bvh.nodes.empty() || active == 0) return;
   const unsigned lead = static_cast<unsigned>(std::countr_zero(active));
   const int dir_negative[3] = {packet.dir_x[lead] < 0.0f, packet.dir_y[lead] < 0.0f, packet.dir_z[lead] < 0.0f};
+  const bool linear = timed && !bvh.motion_nodes.empty();
   NodeStack stack;
   std::uint32_t node_index = 0;
   for (;;) {
-    const BvhNode& node = bvh.nodes[node_index];
-    const std::uint32_t entering = packet_hits_box(node.bounds, packet) & active;
+    BvhNode node;
+    std::uint32_t entering;
+    if (linear) {
+      const MotionNode& m = bvh.motion_nodes[node_index];
+      node = {m.bounds.at_open, m.index, m.count, m.axis};
+      entering = packet_hits_moving_box(m.bounds.at_open, m.bounds.at_close, packet) & active;
+    } else {
+      node = bvh.nodes[node_index];
+      entering = packet_hits_box(node.bounds, packet) & active;
+    }
     if (entering != 0) {
       if (node.is_leaf()) {
-        if (leaves.triangle_leaf[node_index]) {
+        const std::uint8_t rows = leaves.triangle_leaf[node_index];
+        if (rows == kStillRows || (rows == kMovingRows && timed)) {
           for (std::uint32_t i = node.index; i < node.index + node.count; i += kBlockWidth) {
             const unsigned slots = chunk_slots(node, i);
             for (std::uint32_t lanes = entering & active; lanes != 0; lanes &= lanes - 1) {
               const auto k = static_cast<unsigned>(std::countr_zero(lanes));
               const BlockRay ray = block_ray({packet.org_x[k], packet.org_y[k], packet.org_z[k]},
                                              {packet.dir_x[k], packet.dir_y[k], packet.dir_z[k]}, packet.tnear[k]);
+              const MotionSegment segment =
+                  rows == kMovingRows ? motion_segment(packet.time[k], leaves.motion_steps) : MotionSegment{};
               BlockHits hits;
-              const unsigned mask = intersect_block(leaves.column(i), leaves.stride, slots, ray, packet.tmax[k], hits);
+              const unsigned mask =
+                  intersect_block(leaf_block(leaves, rows, i, segment), slots, ray, packet.tmax[k], hits);
               if (mask != 0) active = on_block_hits(k, i, mask, hits);
             }
             if (active == 0) return;
@@ -245,9 +314,9 @@ std::size_t NativeTraversal::memory_bytes() const {
 
 void NativeTraversal::closest_in_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves, const Ray& ray,
                                        float time, std::uint32_t inst, Hit& best, float& best_t) const {
-  traverse(bvh, ray, best_t, [&](const BvhNode& leaf, std::uint32_t node_index) {
-    if (leaves.triangle_leaf[node_index]) {
-      closest_in_triangle_leaf(bvh, leaves, leaf, ray, inst, best, best_t);
+  traverse(bvh, ray, time, best_t, [&](const BvhNode& leaf, std::uint32_t node_index) {
+    if (const std::uint8_t rows = leaves.triangle_leaf[node_index]; rows != 0) {
+      closest_in_triangle_leaf(bvh, leaves, leaf, rows, ray, time, inst, best, best_t);
       return true;
     }
     for (std::uint32_t i = 0; i < leaf.count; ++i) {
@@ -273,9 +342,9 @@ bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const Tri
                                    float time) const {
   bool found = false;
   const float tfar = ray.tfar;
-  traverse(bvh, ray, tfar, [&](const BvhNode& leaf, std::uint32_t node_index) {
-    if (leaves.triangle_leaf[node_index]) {
-      found = any_in_triangle_leaf(leaves, leaf, ray, tfar);
+  traverse(bvh, ray, time, tfar, [&](const BvhNode& leaf, std::uint32_t node_index) {
+    if (const std::uint8_t rows = leaves.triangle_leaf[node_index]; rows != 0) {
+      found = any_in_triangle_leaf(leaves, leaf, rows, ray, time, tfar);
       return !found;
     }
     for (std::uint32_t i = 0; i < leaf.count && !found; ++i) {
@@ -297,7 +366,7 @@ bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const Tri
   return found;
 }
 
-void NativeTraversal::closest_in_packet(RayPacket& packet, std::uint32_t active, Hit* best) const {
+void NativeTraversal::closest_in_packet(RayPacket& packet, bool timed, std::uint32_t active, Hit* best) const {
   const Group& group = scene_.top;
   const auto on_block_hits = [&](unsigned k, std::uint32_t first, unsigned mask, const BlockHits& hits) {
     for (; mask != 0; mask &= mask - 1) {
@@ -310,13 +379,24 @@ void NativeTraversal::closest_in_packet(RayPacket& packet, std::uint32_t active,
     const auto in_instance = [&](const Instance& instance) {
       for (; lanes != 0; lanes &= lanes - 1) {
         const auto k = static_cast<unsigned>(std::countr_zero(lanes));
-        const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
-        if (is_traceable(local))
+        const float time = timed ? packet.time[k] : 0.0f;
+        const std::optional<Ray> local = timed ? to_object_space_at(instance, *packet.rays[k], time, packet.tmax[k])
+                                               : to_object_space(instance, *packet.rays[k], packet.tmax[k]);
+        if (local && is_traceable(*local))
           closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
-                           prototype_leaves_[instance.prototype], local, 0.0f, ref.geom, best[k], packet.tmax[k]);
+                           prototype_leaves_[instance.prototype], *local, time, ref.geom, best[k], packet.tmax[k]);
       }
     };
     const auto in_shapes = [&](const auto& shapes) {
+      if (timed && moves(shapes)) {
+        for (; lanes != 0; lanes &= lanes - 1) {
+          const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+          ShapeHit hit;
+          if (shape_hit_at(shapes, ref.prim, *packet.rays[k], packet.time[k], packet.tmax[k], hit))
+            offer_hit(hit.t, hit.u, hit.v, kInvalidId, ref, best[k], packet.tmax[k]);
+        }
+        return;
+      }
       native_hit_lanes(shapes, ref.prim, packet, lanes, [&](unsigned k, float t, float u, float v) {
         offer_hit(t, u, v, kInvalidId, ref, best[k], packet.tmax[k]);
       });
@@ -324,11 +404,11 @@ void NativeTraversal::closest_in_packet(RayPacket& packet, std::uint32_t active,
     visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     return active;
   };
-  traverse_packet(top_bvh_, top_leaves_, packet, active, visit, on_block_hits);
+  traverse_packet(top_bvh_, top_leaves_, packet, timed, active, visit, on_block_hits);
 }
 
 // The lanes that something blocks in (tnear, tfar).
-std::uint32_t NativeTraversal::any_in_packet(const RayPacket& packet, std::uint32_t active) const {
+std::uint32_t NativeTraversal::any_in_packet(const RayPacket& packet, bool timed, std::uint32_t active) const {
   const Group& group = scene_.top;
   std::uint32_t blocked = 0;
   const auto on_block_hits = [&](unsigned k, std::uint32_t, unsigned mask, const BlockHits& hits) {
@@ -343,14 +423,26 @@ std::uint32_t NativeTraversal::any_in_packet(const RayPacket& packet, std::uint3
     const auto in_instance = [&](const Instance& instance) {
       for (; lanes != 0; lanes &= lanes - 1) {
         const auto k = static_cast<unsigned>(std::countr_zero(lanes));
-        const Ray local = to_object_space(instance, *packet.rays[k], packet.tmax[k]);
-        if (is_traceable(local) &&
+        const float time = timed ? packet.time[k] : 0.0f;
+        const std::optional<Ray> local = timed ? to_object_space_at(instance, *packet.rays[k], time, packet.tmax[k])
+                                               : to_object_space(instance, *packet.rays[k], packet.tmax[k]);
+        if (local && is_traceable(*local) &&
             any_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
-                         prototype_leaves_[instance.prototype], local, 0.0f))
+                         prototype_leaves_[instance.prototype], *local, time))
           blocked |= 1u << k;
       }
     };
     const auto in_shapes = [&](const auto& shapes) {
+      if (timed && moves(shapes)) {
+        for (; lanes != 0; lanes &= lanes - 1) {
+          const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+          ShapeHit hit;
+          if (shape_hit_at(shapes, ref.prim, *packet.rays[k], packet.time[k], packet.tmax[k], hit) &&
+              hit.t < packet.tmax[k])
+            blocked |= 1u << k;
+        }
+        return;
+      }
       native_hit_lanes(shapes, ref.prim, packet, lanes, [&](unsigned k, float t, float, float) {
         if (t < packet.tmax[k]) blocked |= 1u << k;
       });
@@ -358,7 +450,7 @@ std::uint32_t NativeTraversal::any_in_packet(const RayPacket& packet, std::uint3
     visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     return active & ~blocked;
   };
-  traverse_packet(top_bvh_, top_leaves_, packet, active, visit, on_block_hits);
+  traverse_packet(top_bvh_, top_leaves_, packet, timed, active, visit, on_block_hits);
   return blocked;
 }
 

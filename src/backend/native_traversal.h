@@ -29,9 +29,10 @@ class NativeTraversal {
   }
   bool any(const Ray& ray, float time) const { return any_in_group(scene_.top, top_bvh_, top_leaves_, ray, time); }
   // The packet's `active` lanes: closest hits into best[lane] (distances in packet.tmax), or the
-  // lanes that something blocks in (tnear, tfar); moving shapes where they are at time 0.
-  void closest_in_packet(RayPacket& packet, std::uint32_t active, Hit* best) const;
-  std::uint32_t any_in_packet(const RayPacket& packet, std::uint32_t active) const;
+  // lanes that something blocks in (tnear, tfar); with `timed`, moving shapes where they are at
+  // each lane's packet.time, else at time 0. Lane by lane the answers of closest and any.
+  void closest_in_packet(RayPacket& packet, bool timed, std::uint32_t active, Hit* best) const;
+  std::uint32_t any_in_packet(const RayPacket& packet, bool timed, std::uint32_t active) const;
 
   double build_seconds() const { return build_seconds_; }
   std::size_t memory_bytes() const;

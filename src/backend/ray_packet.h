@@ -84,6 +84,8 @@ struct RayPacket {
   alignas(32) float dir_x[kPacketSize], dir_y[kPacketSize], dir_z[kPacketSize];
   alignas(32) float inv_x[kPacketSize], inv_y[kPacketSize], inv_z[kPacketSize];
   alignas(32) float tnear[kPacketSize], tmax[kPacketSize];
+  // Each lane's time in the shutter (scene/motion.h), read only by a traversal with times.
+  alignas(32) float time[kPacketSize] = {};
   const Ray* rays[kPacketSize];
 
   void set(unsigned lane, const Ray& ray, float t_max) {
@@ -126,12 +128,12 @@ struct RayPacket {
 
 // One axis of the slab test for eight lanes, in hits_box's operand order: a NaN axis (0·∞) leaves
 // `near` at tnear and `far` at tmax.
-[[gnu::target("avx2")]] inline void packet_slab(float lower, float upper, const float* org, const float* inv,
+[[gnu::target("avx2")]] inline void packet_slab(__m256 lower, __m256 upper, const float* org, const float* inv,
                                                 __m256 tnear, __m256 tmax, __m256& near, __m256& far) {
   constexpr float kRoundingSlack = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
   const __m256 o = _mm256_load_ps(org), i = _mm256_load_ps(inv);
-  const __m256 tn = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(lower), o), i);
-  const __m256 tf = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(upper), o), i);
+  const __m256 tn = _mm256_mul_ps(_mm256_sub_ps(lower, o), i);
+  const __m256 tf = _mm256_mul_ps(_mm256_sub_ps(upper, o), i);
   near = _mm256_max_ps(_mm256_min_ps(tf, tn), tnear);
   far = _mm256_min_ps(_mm256_mul_ps(_mm256_max_ps(tn, tf), _mm256_set1_ps(kRoundingSlack)), tmax);
 }
@@ -141,9 +143,32 @@ struct RayPacket {
   const __m256 tnear = _mm256_load_ps(p.tnear);
   const __m256 tmax = _mm256_load_ps(p.tmax);
   __m256 nx, fx, ny, fy, nz, fz;
-  packet_slab(box.lower.x, box.upper.x, p.org_x, p.inv_x, tnear, tmax, nx, fx);
-  packet_slab(box.lower.y, box.upper.y, p.org_y, p.inv_y, tnear, tmax, ny, fy);
-  packet_slab(box.lower.z, box.upper.z, p.org_z, p.inv_z, tnear, tmax, nz, fz);
+  packet_slab(_mm256_set1_ps(box.lower.x), _mm256_set1_ps(box.upper.x), p.org_x, p.inv_x, tnear, tmax, nx, fx);
+  packet_slab(_mm256_set1_ps(box.lower.y), _mm256_set1_ps(box.upper.y), p.org_y, p.inv_y, tnear, tmax, ny, fy);
+  packet_slab(_mm256_set1_ps(box.lower.z), _mm256_set1_ps(box.upper.z), p.org_z, p.inv_z, tnear, tmax, nz, fz);
+  const __m256 near = _mm256_max_ps(_mm256_max_ps(nx, ny), nz);
+  const __m256 far = _mm256_min_ps(_mm256_min_ps(fx, fy), fz);
+  return static_cast<std::uint32_t>(_mm256_movemask_ps(_mm256_cmp_ps(near, far, _CMP_LE_OQ)));
+}
+
+// A coordinate moving from a to b at each lane's time: LinearBounds::at's a + t·(b − a).
+[[gnu::target("avx2"), gnu::always_inline]] inline __m256 lanes_at(__m256 time, float a, float b) {
+  return _mm256_add_ps(_mm256_set1_ps(a), _mm256_mul_ps(time, _mm256_set1_ps(b - a)));
+}
+
+// packet_hits_box of a box moving from `open` to `close`, each lane against it at the lane's time.
+[[gnu::target("avx2")]] inline std::uint32_t packet_hits_moving_box(const BBox& open, const BBox& close,
+                                                                    const RayPacket& p) {
+  const __m256 tnear = _mm256_load_ps(p.tnear);
+  const __m256 tmax = _mm256_load_ps(p.tmax);
+  const __m256 time = _mm256_load_ps(p.time);
+  __m256 nx, fx, ny, fy, nz, fz;
+  packet_slab(lanes_at(time, open.lower.x, close.lower.x), lanes_at(time, open.upper.x, close.upper.x), p.org_x,
+              p.inv_x, tnear, tmax, nx, fx);
+  packet_slab(lanes_at(time, open.lower.y, close.lower.y), lanes_at(time, open.upper.y, close.upper.y), p.org_y,
+              p.inv_y, tnear, tmax, ny, fy);
+  packet_slab(lanes_at(time, open.lower.z, close.lower.z), lanes_at(time, open.upper.z, close.upper.z), p.org_z,
+              p.inv_z, tnear, tmax, nz, fz);
   const __m256 near = _mm256_max_ps(_mm256_max_ps(nx, ny), nz);
   const __m256 far = _mm256_min_ps(_mm256_min_ps(fx, fy), fz);
   return static_cast<std::uint32_t>(_mm256_movemask_ps(_mm256_cmp_ps(near, far, _CMP_LE_OQ)));

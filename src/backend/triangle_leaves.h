@@ -24,15 +24,30 @@ inline constexpr unsigned kBlockWidth = 4;
 // columns, so four of them load as four consecutive floats of each row (columns past the leaf's
 // end belong to the next leaves, or to the zero columns at the end, and are masked off). 36 bytes
 // a reference; one that is not a triangle has zeros. A leaf whose references are all triangles
-// is marked in triangle_leaf (per node); a tree with no such leaf has no rows.
+// that keep still is marked kStillRows in triangle_leaf (per node); a tree with no such leaf has
+// no rows.
+// Deforming meshes (scene/motion.h) have rows of their own, nine per time step in
+// `motion_vertices` (step s's rows from s · 9 · stride), for the step count of the first deforming
+// mesh of the group: a leaf whose references are all triangles of meshes with that many steps is
+// marked kMovingRows, and a ray tests it at its time, each block's two steps interpolated as the
+// meshes interpolate their vertices (TriangleMesh::vertex_at). 36 bytes a reference per step.
+inline constexpr std::uint8_t kStillRows = 1;
+inline constexpr std::uint8_t kMovingRows = 2;
+
 struct TriangleLeaves {
   std::size_t stride = 0;
   std::vector<float> vertices;
+  std::uint32_t motion_steps = 0;
+  std::vector<float> motion_vertices;
   std::vector<std::uint8_t> triangle_leaf;
 
   const float* column(std::uint32_t ref) const { return vertices.data() + ref; }
+  const float* motion_column(std::uint32_t step, std::uint32_t ref) const {
+    return motion_vertices.data() + std::size_t{step} * 9 * stride + ref;
+  }
   std::size_t memory_bytes() const {
-    return vertices.capacity() * sizeof(float) + triangle_leaf.capacity() * sizeof(std::uint8_t);
+    return (vertices.capacity() + motion_vertices.capacity()) * sizeof(float) +
+           triangle_leaf.capacity() * sizeof(std::uint8_t);
   }
 };
 
@@ -56,20 +71,44 @@ struct BlockRay {
           tnear};
 }
 
-// intersect_triangle for four consecutive references at once, those of `slots` (bit j: column
-// first + j), each within (ray.tnear, tfar]: the mask of slots it accepts, their distances and
-// barycentrics in `hits`.
-[[gnu::target("avx2"), gnu::always_inline]] inline unsigned intersect_block(const float* first, std::size_t stride,
-                                                                            unsigned slots, const BlockRay& ray,
-                                                                            float tfar, BlockHits& hits) {
+// Four consecutive columns of the nine rows: row 3·vertex + coordinate.
+struct BlockVertices {
+  __m128 row[9];
+};
+
+[[gnu::target("avx2"), gnu::always_inline]] inline BlockVertices load_block(const float* first, std::size_t stride) {
+  BlockVertices block;
+  for (std::size_t k = 0; k < 9; ++k) block.row[k] = _mm_loadu_ps(first + k * stride);
+  return block;
+}
+
+// The columns between two steps' rows (`first` in the earlier step's, the later step's nine rows
+// after them) at `fraction` of the way: motion_lerp's (1 − f)·a + f·b, operation for operation.
+[[gnu::target("avx2"), gnu::always_inline]] inline BlockVertices load_block_between(const float* first,
+                                                                                    std::size_t stride,
+                                                                                    float fraction) {
+  const __m128 f = _mm_set1_ps(fraction), rest = _mm_set1_ps(1.0f - fraction);
+  BlockVertices block;
+  for (std::size_t k = 0; k < 9; ++k)
+    block.row[k] = _mm_add_ps(_mm_mul_ps(rest, _mm_loadu_ps(first + k * stride)),
+                              _mm_mul_ps(f, _mm_loadu_ps(first + (9 + k) * stride)));
+  return block;
+}
+
+// intersect_triangle for four triangles at once, those of `slots` (bit j: column j of `block`),
+// each within (ray.tnear, tfar]: the mask of slots it accepts, their distances and barycentrics in
+// `hits`.
+[[gnu::target("avx2"), gnu::always_inline]] inline unsigned intersect_block(const BlockVertices& block, unsigned slots,
+                                                                            const BlockRay& ray, float tfar,
+                                                                            BlockHits& hits) {
   const auto sub = _mm256_sub_pd;
   const auto mul = _mm256_mul_pd;
   const auto add = _mm256_add_pd;
   __m256d p0[3], e1[3], e2[3];
   for (int c = 0; c < 3; ++c) {
-    p0[c] = _mm256_cvtps_pd(_mm_loadu_ps(first + c * stride));
-    e1[c] = sub(_mm256_cvtps_pd(_mm_loadu_ps(first + (3 + c) * stride)), p0[c]);
-    e2[c] = sub(_mm256_cvtps_pd(_mm_loadu_ps(first + (6 + c) * stride)), p0[c]);
+    p0[c] = _mm256_cvtps_pd(block.row[c]);
+    e1[c] = sub(_mm256_cvtps_pd(block.row[3 + c]), p0[c]);
+    e2[c] = sub(_mm256_cvtps_pd(block.row[6 + c]), p0[c]);
   }
   const __m256d* d = ray.dir;
   const __m256d px = sub(mul(d[1], e2[2]), mul(d[2], e2[1]));
@@ -104,6 +143,13 @@ struct BlockRay {
     _mm_store_ps(hits.v, _mm256_cvtpd_ps(v));
   }
   return mask;
+}
+
+// The block of four consecutive references from column `first` of rows `stride` long.
+[[gnu::target("avx2"), gnu::always_inline]] inline unsigned intersect_block(const float* first, std::size_t stride,
+                                                                            unsigned slots, const BlockRay& ray,
+                                                                            float tfar, BlockHits& hits) {
+  return intersect_block(load_block(first, stride), slots, ray, tfar, hits);
 }
 
 }  // namespace rtpro

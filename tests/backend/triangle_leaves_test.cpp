@@ -199,9 +199,9 @@ TEST(TriangleLeaves, TraversalAnswersTheSameWithAndWithoutRows) {
       packet_with.finish(kPacketSize);
       packet_without.finish(kPacketSize);
       Hit best_with[kPacketSize], best_without[kPacketSize];
-      with.closest_in_packet(packet_with, 0xFFu, best_with);
-      without.closest_in_packet(packet_without, 0xFFu, best_without);
-      EXPECT_EQ(with.any_in_packet(packet_with, 0xFFu), without.any_in_packet(packet_without, 0xFFu));
+      with.closest_in_packet(packet_with, false, 0xFFu, best_with);
+      without.closest_in_packet(packet_without, false, 0xFFu, best_without);
+      EXPECT_EQ(with.any_in_packet(packet_with, false, 0xFFu), without.any_in_packet(packet_without, false, 0xFFu));
       for (unsigned k = 0; k < kPacketSize; ++k) {
         Hit single_with, single_without;
         float t_with = rays[k].tfar, t_without = rays[k].tfar;

@@ -59,10 +59,11 @@ class Backend {
   // By default the time is ignored (a backend of a scene where nothing moves).
   virtual bool intersect(const Ray& ray, float /*time*/, Hit& hit) const { return intersect(ray, hit); }
   virtual bool occluded(const Ray& ray, float /*time*/) const { return occluded(ray); }
-  void intersect(std::span<const Ray> rays, std::span<const float> times, std::span<Hit> hits,
-                 RayCoherence coherence) const;
-  void occluded(std::span<const Ray> rays, std::span<const float> times, std::span<std::uint8_t> occluded,
-                RayCoherence coherence) const;
+  // By default one by one through the calls above.
+  virtual void intersect(std::span<const Ray> rays, std::span<const float> times, std::span<Hit> hits,
+                         RayCoherence coherence) const;
+  virtual void occluded(std::span<const Ray> rays, std::span<const float> times, std::span<std::uint8_t> occluded,
+                        RayCoherence coherence) const;
 
   virtual BackendStats stats() const = 0;
 };

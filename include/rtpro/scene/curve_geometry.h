@@ -79,6 +79,11 @@ CurveSet load_curves(const CurvesDesc& desc);
 std::uint32_t primitive_count_of(const CurveSet& curves);
 // A segment's bounds: its Bézier control points' hull, widened by the largest radius.
 BBox primitive_bounds_of(const CurveSet& curves, std::uint32_t prim);
+// Curves keep still: no motion steps.
+inline std::uint32_t motion_step_count_of(const CurveSet&) { return 0; }
+inline BBox primitive_bounds_at_step(const CurveSet& curves, std::uint32_t prim, std::uint32_t) {
+  return primitive_bounds_of(curves, prim);
+}
 BBox bounds_of(const CurveSet& curves);
 void tally_shapes(const CurveSet& curves, ShapeTally& tally, SceneSummary& summary);
 // Memory the entry adds to a render (scene/render_cost.h): its points and segments, and the BVH.

@@ -66,6 +66,11 @@ struct Group {
   // Instances need their prototype's bounds: callers compute RenderScene::prototype_bounds()
   // once rather than walking a large prototype again for every instance of it.
   BBox primitive_bounds(std::uint32_t g, std::uint32_t prim, std::span<const BBox> prototype_bounds) const;
+  // Time steps of geometry g's motion (scene/motion.h), 0 where it keeps still, and primitive
+  // prim's bounds at one of them: between two steps it lies within the two boxes' interpolation.
+  std::uint32_t motion_step_count(std::uint32_t g) const;
+  BBox primitive_bounds_at_step(std::uint32_t g, std::uint32_t prim, std::uint32_t step,
+                                std::span<const BBox> prototype_bounds) const;
   BBox bounds(std::span<const BBox> prototype_bounds) const;
 };
 

@@ -48,6 +48,7 @@ void read_shape_entry(const YamlNode& node, ShapeEntryReader& reader, std::vecto
 SphereSet shapes_from(const std::vector<SphereDesc>& spheres);
 std::uint32_t primitive_count_of(const SphereSet& set);
 BBox primitive_bounds_of(const SphereSet& set, std::uint32_t prim);  // over the whole shutter
+inline std::uint32_t motion_step_count_of(const SphereSet& set) { return set.moving() ? set.step_count : 0; }
 inline BBox primitive_bounds_at_step(const SphereSet& set, std::uint32_t prim, std::uint32_t step) {
   return set.sphere_bounds_at_step(prim, step);
 }

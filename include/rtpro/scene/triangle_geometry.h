@@ -24,7 +24,11 @@ inline const char* entry_type_name(const std::vector<MeshDesc>&) { return "mesh"
 void read_shape_entry(const YamlNode& node, ShapeEntryReader& reader, std::vector<MeshDesc>& meshes);
 
 std::uint32_t primitive_count_of(const TriangleMesh& mesh);
-BBox primitive_bounds_of(const TriangleMesh& mesh, std::uint32_t prim);
+BBox primitive_bounds_of(const TriangleMesh& mesh, std::uint32_t prim);  // over the whole shutter
+inline std::uint32_t motion_step_count_of(const TriangleMesh& mesh) {
+  return static_cast<std::uint32_t>(mesh.vertex_steps.size());
+}
+BBox primitive_bounds_at_step(const TriangleMesh& mesh, std::uint32_t prim, std::uint32_t step);  // a moving mesh's
 BBox bounds_of(const TriangleMesh& mesh);
 void tally_shapes(const TriangleMesh& mesh, ShapeTally& tally, SceneSummary& summary);
 

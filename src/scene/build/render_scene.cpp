@@ -26,6 +26,26 @@ BBox Group::primitive_bounds(std::uint32_t g, std::uint32_t prim, std::span<cons
                     geometries[g]);
 }
 
+std::uint32_t Group::motion_step_count(std::uint32_t g) const {
+  return std::visit(Overloaded{[](const Instance& instance) {
+                                 return static_cast<std::uint32_t>(instance.object_to_world_steps.size());
+                               },
+                               [](const auto& shapes) { return motion_step_count_of(shapes); }},
+                    geometries[g]);
+}
+
+BBox Group::primitive_bounds_at_step(std::uint32_t g, std::uint32_t prim, std::uint32_t step,
+                                     std::span<const BBox> prototype_bounds) const {
+  return std::visit(
+      Overloaded{[&](const Instance& instance) {
+                   // A point of the prototype moves linearly between the matrices'
+                   // steps, so its placed box does too.
+                   return instance.object_to_world_steps[step].apply(prototype_bounds[instance.prototype]);
+                 },
+                 [&](const auto& shapes) { return rtpro::primitive_bounds_at_step(shapes, prim, step); }},
+      geometries[g]);
+}
+
 BBox Group::bounds(std::span<const BBox> prototype_bounds) const {
   BBox b;
   for (std::uint32_t g = 0; g < geometries.size(); ++g) {

@@ -8,6 +8,14 @@ std::uint32_t primitive_count_of(const TriangleMesh& mesh) { return static_cast<
 
 BBox primitive_bounds_of(const TriangleMesh& mesh, std::uint32_t prim) { return mesh.triangle_bounds(prim); }
 
+BBox primitive_bounds_at_step(const TriangleMesh& mesh, std::uint32_t prim, std::uint32_t step) {
+  const TriangleIndices& tri = mesh.triangles[prim];
+  const std::vector<PaddedVertex>& vertices = mesh.vertex_steps[step];
+  BBox b;
+  for (std::uint32_t v : {tri.v0, tri.v1, tri.v2}) b.extend(vertices[v].position());
+  return b;
+}
+
 BBox bounds_of(const TriangleMesh& mesh) { return mesh.bounds(); }
 
 void tally_shapes(const TriangleMesh& mesh, ShapeTally& tally, SceneSummary& summary) {
