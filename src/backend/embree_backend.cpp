@@ -62,11 +62,22 @@ bool rays_decided_by_callbacks(const RenderScene& scene) {
   return true;
 }
 
+// Embree traces a coherent stream that meets a moving instance (its motion BVH over instances)
+// as packets through the prototype, whose triangle kernels round differently from a single ray's:
+// the hits in a moving instance moved by an ulp against single rays (tests/backend/
+// motion_traversal_test.cpp), while moving triangles and spheres answered as single rays. Rays
+// with a time in such a scene go one by one.
+bool has_moving_instance(const RenderScene& scene) {
+  for (const Geometry& geometry : scene.top.geometries)
+    if (const auto* instance = std::get_if<Instance>(&geometry); instance != nullptr && instance->moving()) return true;
+  return false;
+}
+
 class EmbreeBackend final : public Backend {
  public:
   EmbreeBackend(const RenderScene& scene, const BackendOptions& options)
       : device_(EmbreeDevice::get(options.threads)), packets_(rays_decided_by_callbacks(scene)),
-        wide_loads_(sphere_lanes_vectorised()) {
+        wide_loads_(sphere_lanes_vectorised()), timed_streams_(!has_moving_instance(scene)) {
     const EmbreeBuildSettings settings = embree_build_settings(options);
     EmbreeDevice::Session session(*device_, options.max_memory_bytes);
     const auto start = std::chrono::steady_clock::now();
@@ -108,28 +119,39 @@ class EmbreeBackend final : public Backend {
   // benchmarks/path_bounce_benchmark.sh) but Embree's hybrid packet traversal switches triangle
   // kernels by the number of active lanes, so a triangle hit would depend on its packet's other
   // rays, and images on tiles and threads.
+  // Rays with a time go the same ways, each with its own time.
   void intersect(std::span<const Ray> rays, std::span<Hit> hits, RayCoherence coherence) const override {
-    if (packets_) {
-      intersect_packets(target(), rays, hits);
-      return;
-    }
-    if (coherence == RayCoherence::kIncoherent) {
-      intersect_one_by_one(target(), rays, hits);
-      return;
-    }
-    intersect_stream(target(), rays, hits);
+    intersect(rays, {}, hits, coherence);
   }
 
   void occluded(std::span<const Ray> rays, std::span<std::uint8_t> result, RayCoherence coherence) const override {
+    occluded(rays, {}, result, coherence);
+  }
+
+  void intersect(std::span<const Ray> rays, std::span<const float> times, std::span<Hit> hits,
+                 RayCoherence coherence) const override {
     if (packets_) {
-      occluded_packets(target(), rays, result);
+      intersect_packets(target(), rays, times, hits);
       return;
     }
-    if (coherence == RayCoherence::kIncoherent) {
-      occluded_one_by_one(target(), rays, result);
+    if (coherence == RayCoherence::kIncoherent || (!times.empty() && !timed_streams_)) {
+      intersect_one_by_one(target(), rays, times, hits);
       return;
     }
-    occluded_stream(target(), rays, result);
+    intersect_stream(target(), rays, times, hits);
+  }
+
+  void occluded(std::span<const Ray> rays, std::span<const float> times, std::span<std::uint8_t> result,
+                RayCoherence coherence) const override {
+    if (packets_) {
+      occluded_packets(target(), rays, times, result);
+      return;
+    }
+    if (coherence == RayCoherence::kIncoherent || (!times.empty() && !timed_streams_)) {
+      occluded_one_by_one(target(), rays, times, result);
+      return;
+    }
+    occluded_stream(target(), rays, times, result);
   }
 
   // Embree's triangles accept t == tfar; asking for (tnear, previous float below tfar] instead
@@ -160,7 +182,8 @@ class EmbreeBackend final : public Backend {
   // and one callback per sphere for up to eight rays, 1.18x faster on the demo than one
   // rtcIntersect1 per ray. Only for scenes without triangles (rays_decided_by_callbacks).
   bool packets_;
-  bool wide_loads_;  // eight rays loaded at once (load_traceable_lanes needs AVX2)
+  bool wide_loads_;     // eight rays loaded at once (load_traceable_lanes needs AVX2)
+  bool timed_streams_;  // coherent rays with a time go as streams too (has_moving_instance)
   EmbreeScenes scenes_;
   BackendStats stats_;
   RayGate gate_;

@@ -26,6 +26,9 @@ bool hit_of_lane(const RTCRayHit8& packet, unsigned lane, Hit& hit) {
 
 constexpr unsigned kPacket = 8;
 
+// Ray i's time in the shutter, 0 where the batch has no times.
+inline float time_of(std::span<const float> times, std::size_t i) { return times.empty() ? 0.0f : times[i]; }
+
 // The fields of a packet lane that do not come from the ray.
 void start_packet_lane(RTCRay8& packet, unsigned lane) {
   packet.time[lane] = 0.0f;
@@ -54,8 +57,8 @@ RTCRay8& ray_of(RTCRayHit8& packet) { return packet.ray; }
 
 // Rays [first, first + 32) (fewer at the end) into the stream's lanes; tfar through `far`.
 template <typename Packet, typename Far>
-unsigned load_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, std::size_t first,
-                     Packet (&packets)[kStreamPackets], Far far) {
+unsigned load_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<const float> times,
+                     std::size_t first, Packet (&packets)[kStreamPackets], Far far) {
   const unsigned count = static_cast<unsigned>(std::min<std::size_t>(rays.size() - first, kStreamPackets * kPacket));
   for (unsigned k = 0; k < count;) {
     RTCRay8& packet = ray_of(packets[k / kPacket]);
@@ -65,6 +68,7 @@ unsigned load_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, s
       for (unsigned lane = 0; lane < kPacket; ++lane) {
         packet.tfar[lane] = far(packet.tfar[lane], packet.tnear[lane]);
         start_packet_lane(packet, lane);
+        packet.time[lane] = time_of(times, first + k + lane);
         packet.id[lane] = k + lane;
       }
       k += kPacket;
@@ -82,6 +86,7 @@ unsigned load_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, s
       packet.tnear[lane] = ray.tnear;
       packet.tfar[lane] = far(ray.tfar, ray.tnear);
       start_packet_lane(packet, lane);
+      packet.time[lane] = time_of(times, first + k);
     } else {
       leave_lane_inactive(packet, lane);
     }
@@ -96,7 +101,7 @@ unsigned load_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, s
 }  // namespace
 
 RTPRO_AVX2_CLONES void intersect_one_by_one(const EmbreeRayTarget& target, std::span<const Ray> rays,
-                                            std::span<Hit> hits) {
+                                            std::span<const float> times, std::span<Hit> hits) {
   Hit closest_user_hit;
   EmbreeIntersectContext context;
   rtcInitIntersectContext(&context.base);
@@ -113,6 +118,7 @@ RTPRO_AVX2_CLONES void intersect_one_by_one(const EmbreeRayTarget& target, std::
     if (!target.gate.admit(ray)) continue;
     closest_user_hit = no_user_hit_yet(ray);
     set_ray_fields(ray, ray.tfar, query.ray);
+    query.ray.time = time_of(times, i);
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(target.scene, &context.base, &query);
@@ -121,7 +127,7 @@ RTPRO_AVX2_CLONES void intersect_one_by_one(const EmbreeRayTarget& target, std::
 }
 
 RTPRO_AVX2_CLONES void occluded_one_by_one(const EmbreeRayTarget& target, std::span<const Ray> rays,
-                                           std::span<std::uint8_t> result) {
+                                           std::span<const float> times, std::span<std::uint8_t> result) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   alignas(16) RTCRay query;
@@ -137,16 +143,18 @@ RTPRO_AVX2_CLONES void occluded_one_by_one(const EmbreeRayTarget& target, std::s
     const float tfar = one_step_towards_zero(ray.tfar);
     if (!(tfar > ray.tnear)) continue;
     set_ray_fields(ray, tfar, query);
+    query.time = time_of(times, i);
     rtcOccluded1(target.scene, &context, &query);
     result[i] = query.tfar < 0.0f ? 1 : 0;
   }
 }
 
-RTPRO_AVX2_CLONES void intersect_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<Hit> hits) {
+RTPRO_AVX2_CLONES void intersect_stream(const EmbreeRayTarget& target, std::span<const Ray> rays,
+                                        std::span<const float> times, std::span<Hit> hits) {
   alignas(32) RTCRayHit8 packets[kStreamPackets];
   Hit closest_user_hits[kStreamPackets * kPacket];
   for (std::size_t first = 0; first < rays.size(); first += kStreamPackets * kPacket) {
-    const unsigned count = load_stream(target, rays, first, packets, [](float tfar, float) { return tfar; });
+    const unsigned count = load_stream(target, rays, times, first, packets, [](float tfar, float) { return tfar; });
     for (unsigned k = 0; k < kStreamPackets * kPacket; ++k) {
       RTCRayHit8& packet = packets[k / kPacket];
       const unsigned lane = k % kPacket;
@@ -172,10 +180,10 @@ RTPRO_AVX2_CLONES void intersect_stream(const EmbreeRayTarget& target, std::span
 // A segment too short for the open interval (tnear, tfar) is no query: its lane is left
 // inactive, and the ray unoccluded.
 RTPRO_AVX2_CLONES void occluded_stream(const EmbreeRayTarget& target, std::span<const Ray> rays,
-                                       std::span<std::uint8_t> result) {
+                                       std::span<const float> times, std::span<std::uint8_t> result) {
   alignas(32) RTCRay8 packets[kStreamPackets];
   for (std::size_t first = 0; first < rays.size(); first += kStreamPackets * kPacket) {
-    const unsigned count = load_stream(target, rays, first, packets, [](float tfar, float tnear) {
+    const unsigned count = load_stream(target, rays, times, first, packets, [](float tfar, float tnear) {
       const float below = one_step_towards_zero(tfar);
       return below > tnear ? below : -std::numeric_limits<float>::infinity();
     });
@@ -196,7 +204,7 @@ RTPRO_AVX2_CLONES void occluded_stream(const EmbreeRayTarget& target, std::span<
 }
 
 RTPRO_AVX2_CLONES void intersect_packets(const EmbreeRayTarget& target, std::span<const Ray> rays,
-                                         std::span<Hit> hits) {
+                                         std::span<const float> times, std::span<Hit> hits) {
   alignas(32) RTCRayHit8 packet;
   alignas(32) int valid[kPacket];
   Hit closest_user_hits[kPacket];
@@ -211,6 +219,7 @@ RTPRO_AVX2_CLONES void intersect_packets(const EmbreeRayTarget& target, std::spa
         hits[i] = Hit{};
         closest_user_hits[count] = no_user_hit_yet(rays[i]);
         start_packet_lane(packet.ray, count);
+        packet.ray.time[count] = time_of(times, i);
         packet.hit.geomID[count] = RTC_INVALID_GEOMETRY_ID;
         packet.hit.primID[count] = RTC_INVALID_GEOMETRY_ID;
         packet.hit.instID[0][count] = RTC_INVALID_GEOMETRY_ID;
@@ -232,6 +241,7 @@ RTPRO_AVX2_CLONES void intersect_packets(const EmbreeRayTarget& target, std::spa
       packet.ray.dir_z[count] = ray.dir.z;
       packet.ray.tfar[count] = ray.tfar;
       start_packet_lane(packet.ray, count);
+      packet.ray.time[count] = time_of(times, i);
       packet.hit.geomID[count] = RTC_INVALID_GEOMETRY_ID;
       packet.hit.primID[count] = RTC_INVALID_GEOMETRY_ID;
       packet.hit.instID[0][count] = RTC_INVALID_GEOMETRY_ID;
@@ -249,7 +259,7 @@ RTPRO_AVX2_CLONES void intersect_packets(const EmbreeRayTarget& target, std::spa
 }
 
 RTPRO_AVX2_CLONES void occluded_packets(const EmbreeRayTarget& target, std::span<const Ray> rays,
-                                        std::span<std::uint8_t> result) {
+                                        std::span<const float> times, std::span<std::uint8_t> result) {
   alignas(32) RTCRay8 packet;
   alignas(32) int valid[kPacket];
   std::size_t slots[kPacket];
@@ -269,6 +279,7 @@ RTPRO_AVX2_CLONES void occluded_packets(const EmbreeRayTarget& target, std::span
         for (; count < kPacket; ++count, ++i) {
           result[i] = 0;
           start_packet_lane(packet, count);
+          packet.time[count] = time_of(times, i);
           valid[count] = -1;
           slots[count] = i;
         }
@@ -288,6 +299,7 @@ RTPRO_AVX2_CLONES void occluded_packets(const EmbreeRayTarget& target, std::span
       packet.dir_z[count] = ray.dir.z;
       packet.tfar[count] = tfar;
       start_packet_lane(packet, count);
+      packet.time[count] = time_of(times, i);
       valid[count] = -1;
       slots[count++] = i;
     }

@@ -61,16 +61,23 @@ inline void set_ray_fields(const Ray& ray, float tfar, RTCRay& r) {
   r.tfar = tfar;
 }
 
-// Each compiled for AVX2 and for baseline x86-64 (RTPRO_AVX2_CLONES on the definitions).
+// Each compiled for AVX2 and for baseline x86-64 (RTPRO_AVX2_CLONES on the definitions). `times`
+// holds each ray's time in the shutter (scene/motion.h), or is empty: every ray at time 0.
 // One rtcIntersect1 or rtcOccluded1 per ray, whose answer is then the single-ray call's: for
 // scattered rays among triangles (see the backend). The context and the ray's constant fields are
 // set once per batch, not per ray.
-void intersect_one_by_one(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<Hit> hits);
-void occluded_one_by_one(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<std::uint8_t> result);
-void intersect_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<Hit> hits);
+void intersect_one_by_one(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<const float> times,
+                          std::span<Hit> hits);
+void occluded_one_by_one(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<const float> times,
+                         std::span<std::uint8_t> result);
+void intersect_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<const float> times,
+                      std::span<Hit> hits);
 // A segment too short for the open interval (tnear, tfar) is no query: the ray is unoccluded.
-void occluded_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<std::uint8_t> result);
-void intersect_packets(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<Hit> hits);
-void occluded_packets(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<std::uint8_t> result);
+void occluded_stream(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<const float> times,
+                     std::span<std::uint8_t> result);
+void intersect_packets(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<const float> times,
+                       std::span<Hit> hits);
+void occluded_packets(const EmbreeRayTarget& target, std::span<const Ray> rays, std::span<const float> times,
+                      std::span<std::uint8_t> result);
 
 }  // namespace rtpro
