@@ -3,10 +3,12 @@
 with one morph target animated over one second, so that with an open shutter each frame's mesh
 deforms and rtpro gives it vertex time steps. The target ripples the surface along y by
 `amplitude` × the model's size (a sine over x and z); its weight rises linearly from 0 at t = 0
-to 1 at t = `seconds` (default one frame at 24 fps). Positions only: the file has no normals
-(rtpro then shades it flat).
+to 1 at t = `seconds` (default one frame at 24 fps), or with `curved` along (1 - cos(pi t /
+seconds)) / 2, keyed 33 times: vertices that move on straight lines (rtpro takes 2 vertex steps)
+or that speed up (more steps). Positions only: the file has no normals (rtpro then shades it flat).
 
-Usage: make_morph_dragon.py IN.obj OUT.gltf [amplitude [seconds]]   (writes OUT.bin beside OUT.gltf)
+Usage: make_morph_dragon.py IN.obj OUT.gltf [amplitude [seconds [curved]]]
+       (writes OUT.bin beside OUT.gltf)
 """
 import array
 import json
@@ -42,7 +44,12 @@ def main():
         delta[v + 1] = amplitude * size * math.sin(12.0 * x) * math.cos(9.0 * z)
     d_lo = [min(delta[i::3]) for i in range(3)]
     d_hi = [max(delta[i::3]) for i in range(3)]
-    times, weights = array.array("f", [0.0, seconds]), array.array("f", [0.0, 1.0])
+    if len(sys.argv) > 5 and sys.argv[5] == "curved":
+        keys = [seconds * k / 32.0 for k in range(33)]
+        times = array.array("f", keys)
+        weights = array.array("f", [(1.0 - math.cos(math.pi * t / seconds)) / 2.0 for t in keys])
+    else:
+        times, weights = array.array("f", [0.0, seconds]), array.array("f", [0.0, 1.0])
     chunks = [positions.tobytes(), delta.tobytes(), indices.tobytes(), times.tobytes(), weights.tobytes()]
     views, offset = [], 0
     for chunk in chunks:
@@ -57,8 +64,9 @@ def main():
             {"bufferView": 0, "componentType": 5126, "count": vertices, "type": "VEC3", "min": lo, "max": hi},
             {"bufferView": 1, "componentType": 5126, "count": vertices, "type": "VEC3", "min": d_lo, "max": d_hi},
             {"bufferView": 2, "componentType": 5125, "count": len(indices), "type": "SCALAR"},
-            {"bufferView": 3, "componentType": 5126, "count": 2, "type": "SCALAR", "min": [0.0], "max": [times[1]]},
-            {"bufferView": 4, "componentType": 5126, "count": 2, "type": "SCALAR"},
+            {"bufferView": 3, "componentType": 5126, "count": len(times), "type": "SCALAR", "min": [0.0],
+             "max": [times[-1]]},
+            {"bufferView": 4, "componentType": 5126, "count": len(weights), "type": "SCALAR"},
         ],
         "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 2, "targets": [{"POSITION": 1}]}],
                     "weights": [0.0]}],
