@@ -15,6 +15,10 @@ inline bool is_radiometric(const RenderScene& scene) {
   return scene.render.light_units.value_or(LightUnits::kWhitted) == LightUnits::kRadiometric;
 }
 
+// Whether a colour is zero in every channel (a light that sends nothing, a spot light's sample
+// outside its cone).
+inline bool is_black(const Color& c) { return c.x == 0.0f && c.y == 0.0f && c.z == 0.0f; }
+
 // Light sample `ls` of `light` in whitted light units: from a radiometric scene's light divided by
 // π, and by d² for point and spot lights.
 inline LightSample in_whitted_units(const Light& light, LightSample ls, bool radiometric) {
