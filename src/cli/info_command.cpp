@@ -184,11 +184,45 @@ nlohmann::json info_json(const std::string& file, const RenderScene& scene, cons
           {"volumes", volumes_json(scene)},
           {"prototypes", s.prototypes},
           {"instances", s.instances},
+          {"motion",
+           {{"shutter", {scene.camera.shutter.open, scene.camera.shutter.close}},
+            {"camera_moves", s.motion.camera_moves},
+            {"moving_instances", s.motion.moving_instances},
+            {"transform_steps", s.motion.transform_steps},
+            {"deforming_meshes", s.motion.deforming_meshes},
+            {"vertex_steps", s.motion.vertex_steps},
+            {"moving_spheres", s.motion.moving_spheres},
+            {"center_steps", s.motion.center_steps}}},
           {"bounds", bounds},
           {"memory_bytes",
            {{"geometry", s.geometry_bytes},
             {"native_bvh_estimate", s.estimated_bvh_bytes},
             {"total_estimate", s.geometry_bytes + s.estimated_bvh_bytes}}}};
+}
+
+// What moves during an open shutter, and the most time steps each kind takes (each step a copy of
+// what moves: the cost of motion blur in memory and build time).
+void print_motion(const RenderScene& scene, const SceneSummary::Motion& m) {
+  if (!scene.camera.shutter.is_open()) return;
+  const std::streamsize precision = std::cout.precision(6);
+  std::cout << std::defaultfloat << "motion       shutter [" << scene.camera.shutter.open << ", "
+            << scene.camera.shutter.close << "] frames: " << std::fixed;
+  std::cout.precision(precision);
+  if (!m.any()) {
+    std::cout << "nothing moves\n";
+    return;
+  }
+  std::vector<std::string> parts;
+  const auto count = [](std::uint64_t n, const std::string& what, std::size_t steps) {
+    return std::to_string(n) + " " + what + (n == 1 ? "" : "s") + " (" + (n == 1 ? "" : "at most ") +
+           std::to_string(steps) + " time steps)";
+  };
+  if (m.deforming_meshes > 0) parts.push_back(count(m.deforming_meshes, "deforming mesh", m.vertex_steps));
+  if (m.moving_instances > 0) parts.push_back(count(m.moving_instances, "moving instance", m.transform_steps));
+  if (m.moving_spheres > 0) parts.push_back(count(m.moving_spheres, "moving sphere", m.center_steps));
+  if (m.camera_moves) parts.push_back("the camera");
+  for (std::size_t i = 0; i < parts.size(); ++i) std::cout << (i ? ", " : "") << parts[i];
+  std::cout << "\n";
 }
 
 void print_text(const std::string& file, const RenderScene& scene, const SceneSummary& s,
@@ -215,6 +249,7 @@ void print_text(const std::string& file, const RenderScene& scene, const SceneSu
                     : std::string())
             << "meshes       " << s.meshes << " (" << s.vertices_stored << " vertices)\n"
             << "instances    " << s.instances << " of " << s.prototypes << " prototypes\n";
+  print_motion(scene, s.motion);
   for (const auto& m : report.meshes)
     std::cout << "  mesh       " << m.file << ": " << m.stats.triangles << " triangles, " << m.stats.vertices
               << " vertices" << (m.stats.normals_generated ? ", normals generated" : "")

@@ -6,6 +6,7 @@
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <string>
@@ -37,6 +38,33 @@ TEST(ShutterOption, OpenShutterBlursAKeyframedSphereAndKeepsItsEnergy) {
     EXPECT_LT(brightest(blur), 0.7f) << backend;  // the sphere sweeps 2 units, 2 diameters
     EXPECT_NEAR(test::image_sum(blur), test::image_sum(still), 0.03 * test::image_sum(still)) << backend;
   }
+}
+
+TEST(ShutterOption, InfoSaysWhatMovesAndHowManyTimeStepsItTakes) {
+  // A sphere sliding (2 steps hold a straight line) and an instance turning 90° in the shutter (its
+  // steps doubled until each chord keeps within 1/1000 of the arc).
+  const auto scene =
+      test::write_file("moving.yaml",
+                       "rtpro: 1\n"
+                       "camera: {position: [0, 0, -8], look_at: [0, 0, 0], resolution: [4, 4]}\n"
+                       "objects: {ball: [{type: sphere, radius: 0.5}]}\n"
+                       "world:\n  - {type: sphere, radius: 0.5, center: {keyframes: {0: [-2, 0, 0], 2: [2, 0, 0]}}}\n"
+                       "  - {type: instance, object: ball,\n"
+                       "     transform: {rotate: {axis: [0, 1, 0], angle: {keyframes: {0: 0, 2: 180}}}}}\n");
+  const auto json = nlohmann::json::parse(run_rtpro("info --json " + scene.string() + " --shutter -0.5,0.5", 0));
+  const auto& motion = json.at("motion");
+  EXPECT_EQ(motion.at("shutter"), nlohmann::json::array({-0.5, 0.5}));
+  EXPECT_EQ(motion.at("moving_spheres"), 1);
+  EXPECT_EQ(motion.at("center_steps"), 2);
+  EXPECT_EQ(motion.at("moving_instances"), 1);
+  EXPECT_GE(motion.at("transform_steps").get<int>(), 17);
+  EXPECT_EQ(motion.at("deforming_meshes"), 0);
+  EXPECT_FALSE(motion.at("camera_moves").get<bool>());
+  const std::string text = run_rtpro("info " + scene.string() + " --shutter -0.5,0.5", 0);
+  EXPECT_NE(text.find("motion       shutter [-0.5, 0.5] frames: 1 moving instance ("), std::string::npos) << text;
+  EXPECT_NE(text.find("1 moving sphere (2 time steps)"), std::string::npos) << text;
+  // Closed, nothing is said of motion: nothing blurs.
+  EXPECT_EQ(run_rtpro("info " + scene.string(), 0).find("motion "), std::string::npos);
 }
 
 TEST(ShutterOption, MalformedValuesAreRefusedNamingTheFlag) {

@@ -27,6 +27,15 @@ struct SceneSummary {
   BBox bounds;
   std::size_t geometry_bytes = 0;       // spheres, vertices, indices, normals, materials
   std::size_t estimated_bvh_bytes = 0;  // native BVH, from primitive counts
+  // What moves during the shutter (scene/motion.h), and the most time steps any of it takes.
+  struct Motion {
+    std::size_t moving_instances = 0, transform_steps = 0;
+    std::size_t deforming_meshes = 0, vertex_steps = 0;
+    std::uint64_t moving_spheres = 0;
+    std::size_t center_steps = 0;
+    bool camera_moves = false;
+    bool any() const { return moving_instances + deforming_meshes + moving_spheres > 0 || camera_moves; }
+  } motion;
 };
 
 // What one group's shapes add up to, each kind of shape adding its own (tally_shapes, in the

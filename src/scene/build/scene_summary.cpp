@@ -2,6 +2,7 @@
 
 #include "rtpro/core/overloaded.h"
 
+#include <algorithm>
 #include <variant>
 
 namespace rtpro {
@@ -44,16 +45,21 @@ SceneSummary summarize(const RenderScene& scene) {
   for (const Geometry& g : scene.top.geometries) {
     if (const auto* instance = std::get_if<Instance>(&g)) {
       ++s.instances;
+      if (instance->moving()) {
+        ++s.motion.moving_instances;
+        s.motion.transform_steps = std::max(s.motion.transform_steps, instance->object_to_world_steps.size());
+      }
       s.spheres_rendered += per_prototype[instance->prototype].spheres;
       s.triangles_rendered += per_prototype[instance->prototype].triangles;
       s.curve_segments_rendered += per_prototype[instance->prototype].curve_segments;
     }
   }
+  s.motion.camera_moves = scene.camera.moving();
   s.bounds = scene.bounds();
   // The native BVH: one 8-byte reference per primitive and about one 32-byte node per primitive
   // (measured: 34 bytes a triangle on the dragon and on a grid of 10 million), and each
   // triangle's vertices copied into its leaf rows (36 bytes; backend/triangle_leaves.h).
-  s.estimated_bvh_bytes = primitives * (8 + 32) + s.triangles_stored * 36;
+  s.estimated_bvh_bytes += primitives * (8 + 32) + s.triangles_stored * 36;
   return s;
 }
 

@@ -59,6 +59,10 @@ void tally_shapes(const SphereSet& set, ShapeTally& tally, SceneSummary& summary
   tally.spheres += set.spheres.size();
   summary.geometry_bytes += set.spheres.capacity() * sizeof(Sphere) + set.center_steps.capacity() * sizeof(Vec3);
   tally.primitives += set.spheres.size();
+  if (set.moving()) {
+    summary.motion.moving_spheres += set.spheres.size();
+    summary.motion.center_steps = std::max<std::size_t>(summary.motion.center_steps, set.step_count);
+  }
 }
 
 std::uint64_t estimated_bytes(const SphereDesc&) { return 0; }

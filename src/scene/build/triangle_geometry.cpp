@@ -2,6 +2,8 @@
 
 #include "rtpro/scene/scene_summary.h"
 
+#include <algorithm>
+
 namespace rtpro {
 
 std::uint32_t primitive_count_of(const TriangleMesh& mesh) { return static_cast<std::uint32_t>(mesh.triangles.size()); }
@@ -24,6 +26,12 @@ void tally_shapes(const TriangleMesh& mesh, ShapeTally& tally, SceneSummary& sum
   summary.vertices_stored += mesh.vertices.size();
   summary.geometry_bytes += mesh.memory_bytes();
   tally.primitives += mesh.triangles.size();
+  if (mesh.moving()) {
+    ++summary.motion.deforming_meshes;
+    summary.motion.vertex_steps = std::max(summary.motion.vertex_steps, mesh.vertex_steps.size());
+    // The native BVH keeps the triangles' rows per step and a 64-byte node with linear bounds.
+    summary.estimated_bvh_bytes += mesh.triangles.size() * (36 * (mesh.vertex_steps.size() - 1) + 64);
+  }
 }
 
 }  // namespace rtpro
