@@ -367,24 +367,59 @@ bool NativeTraversal::any_in_group(const Group& group, const Bvh& bvh, const Tri
 }
 
 void NativeTraversal::closest_in_packet(RayPacket& packet, bool timed, std::uint32_t active, Hit* best) const {
-  const Group& group = scene_.top;
+  closest_in_packet_group(scene_.top, top_bvh_, top_leaves_, packet, timed, active, kInvalidId, best);
+}
+
+std::uint32_t NativeTraversal::any_in_packet(const RayPacket& packet, bool timed, std::uint32_t active) const {
+  return any_in_packet_group(scene_.top, top_bvh_, top_leaves_, packet, timed, active);
+}
+
+namespace {
+
+// The `lanes` of `packet` in `instance`'s space (each at its time where `timed`) as a packet of
+// their own, which `local_rays` holds the rays of; returns the lanes that are traceable there.
+std::uint32_t enter_instance(const Instance& instance, const RayPacket& packet, bool timed, std::uint32_t lanes,
+                             RayPacket& local, Ray (&local_rays)[kPacketSize]) {
+  std::uint32_t entering = 0;
+  for (; lanes != 0; lanes &= lanes - 1) {
+    const auto k = static_cast<unsigned>(std::countr_zero(lanes));
+    const std::optional<Ray> ray = timed ? to_object_space_at(instance, *packet.rays[k], packet.time[k], packet.tmax[k])
+                                         : to_object_space(instance, *packet.rays[k], packet.tmax[k]);
+    if (!ray || !is_traceable(*ray)) continue;
+    local_rays[k] = *ray;
+    local.set(k, local_rays[k], packet.tmax[k]);
+    local.time[k] = packet.time[k];
+    entering |= 1u << k;
+  }
+  if (entering != 0) local.finish_lanes(entering);
+  return entering;
+}
+
+}  // namespace
+
+// An instance's lanes go through its prototype's BVH as a packet of their own: the same box and
+// leaf tests lane by lane as closest_in_group's single ray in the same space.
+void NativeTraversal::closest_in_packet_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves,
+                                              RayPacket& packet, bool timed, std::uint32_t active, std::uint32_t inst,
+                                              Hit* best) const {
   const auto on_block_hits = [&](unsigned k, std::uint32_t first, unsigned mask, const BlockHits& hits) {
     for (; mask != 0; mask &= mask - 1) {
       const auto j = static_cast<unsigned>(std::countr_zero(mask));
-      offer_hit(hits.t[j], hits.u[j], hits.v[j], kInvalidId, top_bvh_.refs[first + j], best[k], packet.tmax[k]);
+      offer_hit(hits.t[j], hits.u[j], hits.v[j], inst, bvh.refs[first + j], best[k], packet.tmax[k]);
     }
     return active;
   };
   const auto visit = [&](const PrimitiveRef& ref, std::uint32_t lanes) {
     const auto in_instance = [&](const Instance& instance) {
-      for (; lanes != 0; lanes &= lanes - 1) {
-        const auto k = static_cast<unsigned>(std::countr_zero(lanes));
-        const float time = timed ? packet.time[k] : 0.0f;
-        const std::optional<Ray> local = timed ? to_object_space_at(instance, *packet.rays[k], time, packet.tmax[k])
-                                               : to_object_space(instance, *packet.rays[k], packet.tmax[k]);
-        if (local && is_traceable(*local))
-          closest_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
-                           prototype_leaves_[instance.prototype], *local, time, ref.geom, best[k], packet.tmax[k]);
+      RayPacket local;
+      Ray local_rays[kPacketSize];
+      const std::uint32_t entering = enter_instance(instance, packet, timed, lanes, local, local_rays);
+      if (entering == 0) return;
+      closest_in_packet_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
+                              prototype_leaves_[instance.prototype], local, timed, entering, ref.geom, best);
+      for (std::uint32_t done = entering; done != 0; done &= done - 1) {
+        const auto k = static_cast<unsigned>(std::countr_zero(done));
+        packet.tmax[k] = local.tmax[k];
       }
     };
     const auto in_shapes = [&](const auto& shapes) {
@@ -393,23 +428,23 @@ void NativeTraversal::closest_in_packet(RayPacket& packet, bool timed, std::uint
           const auto k = static_cast<unsigned>(std::countr_zero(lanes));
           ShapeHit hit;
           if (shape_hit_at(shapes, ref.prim, *packet.rays[k], packet.time[k], packet.tmax[k], hit))
-            offer_hit(hit.t, hit.u, hit.v, kInvalidId, ref, best[k], packet.tmax[k]);
+            offer_hit(hit.t, hit.u, hit.v, inst, ref, best[k], packet.tmax[k]);
         }
         return;
       }
       native_hit_lanes(shapes, ref.prim, packet, lanes, [&](unsigned k, float t, float u, float v) {
-        offer_hit(t, u, v, kInvalidId, ref, best[k], packet.tmax[k]);
+        offer_hit(t, u, v, inst, ref, best[k], packet.tmax[k]);
       });
     };
     visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     return active;
   };
-  traverse_packet(top_bvh_, top_leaves_, packet, timed, active, visit, on_block_hits);
+  traverse_packet(bvh, leaves, packet, timed, active, visit, on_block_hits);
 }
 
 // The lanes that something blocks in (tnear, tfar).
-std::uint32_t NativeTraversal::any_in_packet(const RayPacket& packet, bool timed, std::uint32_t active) const {
-  const Group& group = scene_.top;
+std::uint32_t NativeTraversal::any_in_packet_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves,
+                                                   const RayPacket& packet, bool timed, std::uint32_t active) const {
   std::uint32_t blocked = 0;
   const auto on_block_hits = [&](unsigned k, std::uint32_t, unsigned mask, const BlockHits& hits) {
     for (; mask != 0; mask &= mask - 1)
@@ -421,16 +456,12 @@ std::uint32_t NativeTraversal::any_in_packet(const RayPacket& packet, bool timed
   };
   const auto visit = [&](const PrimitiveRef& ref, std::uint32_t lanes) {
     const auto in_instance = [&](const Instance& instance) {
-      for (; lanes != 0; lanes &= lanes - 1) {
-        const auto k = static_cast<unsigned>(std::countr_zero(lanes));
-        const float time = timed ? packet.time[k] : 0.0f;
-        const std::optional<Ray> local = timed ? to_object_space_at(instance, *packet.rays[k], time, packet.tmax[k])
-                                               : to_object_space(instance, *packet.rays[k], packet.tmax[k]);
-        if (local && is_traceable(*local) &&
-            any_in_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
-                         prototype_leaves_[instance.prototype], *local, time))
-          blocked |= 1u << k;
-      }
+      RayPacket local;
+      Ray local_rays[kPacketSize];
+      const std::uint32_t entering = enter_instance(instance, packet, timed, lanes & ~blocked, local, local_rays);
+      if (entering == 0) return;
+      blocked |= any_in_packet_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
+                                     prototype_leaves_[instance.prototype], local, timed, entering);
     };
     const auto in_shapes = [&](const auto& shapes) {
       if (timed && moves(shapes)) {
@@ -450,7 +481,7 @@ std::uint32_t NativeTraversal::any_in_packet(const RayPacket& packet, bool timed
     visit_geometry(group.geometries[ref.geom], Overloaded{in_instance, in_shapes});
     return active & ~blocked;
   };
-  traverse_packet(top_bvh_, top_leaves_, packet, timed, active, visit, on_block_hits);
+  traverse_packet(bvh, leaves, packet, timed, active, visit, on_block_hits);
   return blocked;
 }
 

@@ -41,6 +41,12 @@ class NativeTraversal {
   void closest_in_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves, const Ray& ray, float time,
                         std::uint32_t inst, Hit& best, float& best_t) const;
   bool any_in_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves, const Ray& ray, float time) const;
+  // closest_in_packet and any_in_packet in one group: `inst` is the instance whose prototype the
+  // group is (kInvalidId at the top level).
+  void closest_in_packet_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves, RayPacket& packet,
+                               bool timed, std::uint32_t active, std::uint32_t inst, Hit* best) const;
+  std::uint32_t any_in_packet_group(const Group& group, const Bvh& bvh, const TriangleLeaves& leaves,
+                                    const RayPacket& packet, bool timed, std::uint32_t active) const;
 
   const RenderScene& scene_;
   Bvh top_bvh_;

@@ -106,6 +106,17 @@ struct RayPacket {
     for (unsigned lane = count; lane < kPacketSize; ++lane) set(lane, *rays[0], tmax[0]);
     reciprocals();
   }
+  // Lanes outside `active` (not 0) become copies of its first lane, never active; then the
+  // reciprocal directions, as finish does.
+  [[gnu::target("avx2")]] void finish_lanes(std::uint32_t active) {
+    const unsigned first = static_cast<unsigned>(__builtin_ctz(active));
+    for (unsigned lane = 0; lane < kPacketSize; ++lane)
+      if ((active >> lane & 1u) == 0) {
+        set(lane, *rays[first], tmax[first]);
+        time[lane] = time[first];
+      }
+    reciprocals();
+  }
   // Eight consecutive rays, if all are traceable (load_traceable_lanes); the packet is then
   // finished (as by finish(8)).
   [[gnu::target("avx2")]] bool load_traceable(const Ray* eight) {
