@@ -160,7 +160,8 @@ struct Sampler {
     return found(s->direction, kInfinity, s->radiance, s->pdf, false);
   }
 
-  bool on_surface(const SphereSample& s, const Emission& emission, float tex_u = 0.0f, float tex_v = 0.0f) const {
+  [[gnu::always_inline]] bool on_surface(const SphereSample& s, const Emission& emission, float tex_u = 0.0f,
+                                         float tex_v = 0.0f) const {
     const Vec3 to_light = s.point - from;
     const float d = length(to_light);
     if (!(d > 0.0f) || !(s.pdf > 0.0f) || !std::isfinite(s.pdf)) return false;
