@@ -327,7 +327,7 @@ HugePageBuffer<BuildPrimitive> build_primitives(const Group& group, std::span<co
         [&](const tbb::blocked_range<std::uint32_t>& r) {
           for (std::uint32_t p = r.begin(); p < r.end(); ++p) {
             // A moving primitive is placed in the tree by its box halfway through the shutter,
-            // which rays with a time test (motion_bounds_of) at the time they carry.
+            // which rays with a time test (motion_nodes_of) at the time they carry.
             const BBox b = moving[g] ? primitive_linear_bounds(group, g, p, prototype_bounds).at(0.5f)
                                      : group.primitive_bounds(g, p, prototype_bounds);
             primitives[first[g] + p] = {{b.lower.x, b.lower.y, b.lower.z}, g, {b.upper.x, b.upper.y, b.upper.z}, p};
