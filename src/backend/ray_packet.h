@@ -6,6 +6,7 @@
 
 #include <immintrin.h>
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -109,7 +110,7 @@ struct RayPacket {
   // Lanes outside `active` (not 0) become copies of its first lane, never active; then the
   // reciprocal directions, as finish does.
   [[gnu::target("avx2")]] void finish_lanes(std::uint32_t active) {
-    const unsigned first = static_cast<unsigned>(__builtin_ctz(active));
+    const auto first = static_cast<unsigned>(std::countr_zero(active));
     for (unsigned lane = 0; lane < kPacketSize; ++lane)
       if ((active >> lane & 1u) == 0) {
         set(lane, *rays[first], tmax[first]);

@@ -145,11 +145,4 @@ struct BlockVertices {
   return mask;
 }
 
-// The block of four consecutive references from column `first` of rows `stride` long.
-[[gnu::target("avx2"), gnu::always_inline]] inline unsigned intersect_block(const float* first, std::size_t stride,
-                                                                            unsigned slots, const BlockRay& ray,
-                                                                            float tfar, BlockHits& hits) {
-  return intersect_block(load_block(first, stride), slots, ray, tfar, hits);
-}
-
 }  // namespace rtpro

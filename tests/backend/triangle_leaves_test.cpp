@@ -116,7 +116,8 @@ Rows rows_of(const std::vector<Triangle>& tris, std::size_t gap = 5) {
 
 [[gnu::target("avx2")]] unsigned test_block(const Rows& rows, unsigned slots, const Ray& ray, float tfar,
                                             BlockHits& hits) {
-  return intersect_block(rows.values.data(), rows.stride, slots, block_ray(ray.org, ray.dir, ray.tnear), tfar, hits);
+  return intersect_block(load_block(rows.values.data(), rows.stride), slots, block_ray(ray.org, ray.dir, ray.tnear),
+                         tfar, hits);
 }
 
 TEST(TriangleLeaves, EverySlotAnswersWhatTheScalarTestAnswersBitForBit) {

@@ -46,8 +46,8 @@ bool on_chords(const std::vector<PaddedVertex>& before, const std::vector<Padded
   return true;
 }
 
-// The mesh of `placement` posed at time steps over the shutter, as few as deformation_steps_kept
-// allows; its steps stay empty when it keeps still.
+// The mesh of `placement` posed at time steps over the shutter, as few as kMaxDeformationSteps's
+// rule allows (gltf_motion.h); its steps stay empty when it keeps still.
 void add_vertex_steps(const GltfAsset& asset, const GltfPlacement& placement, const Shutter& shutter, double frame,
                       StatesOverShutter& states, TriangleMesh& mesh) {
   const GltfNode& node = asset.nodes[placement.node];
@@ -66,21 +66,20 @@ void add_vertex_steps(const GltfAsset& asset, const GltfPlacement& placement, co
   while (static_cast<int>(steps.size()) < kMaxDeformationSteps) {
     // The finer steps' times, from motion_step_times itself: the steps of every count fall on them.
     const std::vector<double> finer = motion_step_times(shutter, frame, 2 * static_cast<int>(steps.size()) - 1);
-    std::vector<TriangleMesh> refined;
+    std::vector<TriangleMesh> middles;
     bool close_enough = true;
     for (std::size_t i = 0; i + 1 < steps.size(); ++i) {
-      TriangleMesh middle = pose_at(finer[2 * i + 1]);
-      close_enough = close_enough && on_chords(steps[i].vertices, middle.vertices, steps[i + 1].vertices, tolerance);
+      middles.push_back(pose_at(finer[2 * i + 1]));
+      close_enough =
+          close_enough && on_chords(steps[i].vertices, middles.back().vertices, steps[i + 1].vertices, tolerance);
+    }
+    if (close_enough) break;
+    std::vector<TriangleMesh> refined;
+    for (std::size_t i = 0; i < middles.size(); ++i) {
       refined.push_back(std::move(steps[i]));
-      refined.push_back(std::move(middle));
+      refined.push_back(std::move(middles[i]));
     }
     refined.push_back(std::move(steps.back()));
-    if (close_enough) {
-      // The midpoints were only checked: the coarser steps are kept.
-      steps.clear();
-      for (std::size_t i = 0; i < refined.size(); i += 2) steps.push_back(std::move(refined[i]));
-      break;
-    }
     steps = std::move(refined);
   }
   for (TriangleMesh& posed : steps) {

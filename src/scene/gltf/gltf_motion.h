@@ -4,7 +4,7 @@
 // - A placement whose node moves during the shutter gets transform steps, as many as keep a
 //   rotation on its arc (sample_transform_motion).
 // - A skinned or morphed mesh whose vertices move gets vertex steps (normal steps too when it has
-//   normals), as few as keep it on its path (deformation_steps_kept); its placement, for a skinned
+//   normals), as few as keep it on its path (kMaxDeformationSteps); its placement, for a skinned
 //   mesh the identity, keeps still.
 // Nothing gets steps with a closed shutter or a file without animations.
 #include "gltf_asset.h"
