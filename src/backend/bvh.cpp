@@ -344,7 +344,7 @@ HugePageBuffer<BuildPrimitive> build_primitives(const Group& group, std::span<co
 // union (children come after their parent in `nodes`), where some geometry of `group` moves. The
 // nodes' own boxes, built from the primitives halfway through the shutter, become the boxes of
 // the whole motion (the linear bounds' two ends), for whatever traces without a time.
-std::vector<MotionNode> motion_nodes_of(const Group& group, std::span<const BBox> prototype_bounds, Bvh& bvh) {
+std::vector<MotionNode, HugePageAllocator<MotionNode>> motion_nodes_of(const Group& group, std::span<const BBox> prototype_bounds, Bvh& bvh) {
   bool moves = false;
   for (std::uint32_t g = 0; g < group.geometries.size(); ++g) moves = moves || group.motion_step_count(g) > 0;
   if (!moves) return {};
@@ -368,7 +368,7 @@ std::vector<MotionNode> motion_nodes_of(const Group& group, std::span<const BBox
     bounds[n].at_open.extend(bounds[node.index + 1].at_open);
     bounds[n].at_close.extend(bounds[node.index + 1].at_close);
   }
-  std::vector<MotionNode> nodes(bvh.nodes.size());
+  std::vector<MotionNode, HugePageAllocator<MotionNode>> nodes(bvh.nodes.size());
   for (std::size_t n = 0; n < bvh.nodes.size(); ++n) {
     BvhNode& node = bvh.nodes[n];
     node.bounds = bounds[n].at_open;

@@ -59,7 +59,7 @@ struct Bvh {
   // Per node, where something in the group moves during the shutter (else empty): the node with
   // its linear bounds, which rays with a time test instead of `bounds` (the box of the whole
   // motion).
-  std::vector<MotionNode> motion_nodes;
+  std::vector<MotionNode, HugePageAllocator<MotionNode>> motion_nodes;
   std::size_t memory_bytes() const {
     return nodes.capacity() * sizeof(BvhNode) + refs.capacity() * sizeof(PrimitiveRef) +
            motion_nodes.capacity() * sizeof(MotionNode);

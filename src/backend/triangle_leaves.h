@@ -36,9 +36,9 @@ inline constexpr std::uint8_t kMovingRows = 2;
 
 struct TriangleLeaves {
   std::size_t stride = 0;
-  std::vector<float> vertices;
+  std::vector<float, HugePageAllocator<float>> vertices;
   std::uint32_t motion_steps = 0;
-  std::vector<float> motion_vertices;
+  std::vector<float, HugePageAllocator<float>> motion_vertices;
   std::vector<std::uint8_t> triangle_leaf;
 
   const float* column(std::uint32_t ref) const { return vertices.data() + ref; }
