@@ -8,7 +8,7 @@
 #include "gltf_asset.h"
 #include "gltf_loader.h"
 #include "gltf_motion.h"
-#include "material_textures.h"
+#include "scene_materials.h"
 #include "subdivided_mesh.h"
 
 #include <algorithm>
@@ -25,40 +25,12 @@ namespace rtpro {
 
 namespace {
 
-// The surface model and the Whitted approximation of a material, each its kind's own
-// (scene/phong_material.h and its neighbours; scene/material_kinds.h asks each kind for them).
-SurfaceModel surface_model(const MaterialDesc& m, std::vector<TextureImage>& textures) {
-  return std::visit([&](const auto& params) -> SurfaceModel { return surface_model_from(params, m, textures); },
-                    m.params);
-}
-
-WhittedMaterial whitted_material(const MaterialDesc& m, const ColorTexture& base_color) {
-  return std::visit([&](const auto& params) { return whitted_approximation_of(params, m, base_color); }, m.params);
-}
-
 // A model the scene reader loaded (an entry's `loaded`, moved out of it): moved into the render
 // scene when this is its only holder, copied when another entry or description still holds it.
 template <typename Model>
 Model taken_or_copied(std::shared_ptr<Model> model) {
   if (model.use_count() == 1) return std::move(*model);
   return *model;
-}
-
-// What the Whitted integrator shows of a medium inside glass or an interface: absorption only, by
-// its extinction (what it scatters away counts as lost), as the glass's transmittance over a
-// distance; a grid's at its mean density over its box.
-void show_to_whitted(const Medium& medium, Dielectric& glass) {
-  const auto beer_lambert = [&](const Color& sigma_t) {
-    glass.transmittance = {std::exp(-sigma_t.x), std::exp(-sigma_t.y), std::exp(-sigma_t.z)};
-    glass.transmittance_distance = 1.0f;
-  };
-  std::visit(Overloaded{[&](const HomogeneousMedium& m) { beer_lambert(m.sigma_a + m.sigma_s); },
-                        [&](const AbsorbingMedium& m) {
-                          glass.transmittance = m.transmittance;
-                          glass.transmittance_distance = m.distance;
-                        },
-                        [&](const GridMedium& m) { beer_lambert((m.sigma_a + m.sigma_s) * m.grid->mean_density); }},
-             medium);
 }
 
 class RenderSceneBuilder {
@@ -74,10 +46,10 @@ class RenderSceneBuilder {
     for (const LightDesc& light : description_.lights) scene_.lights.push_back(make_light(light));
     if (const std::optional<EnvironmentDesc>& e = description_.environment)
       scene_.environment = Environment{e->file, e->color * e->intensity, e->rotation, e->visible};
-    if (description_.medium) scene_.world_medium = add_medium(*description_.medium);
-    for (const MaterialDesc& m : description_.materials) add_material(m, m.name);
+    if (description_.medium) scene_.world_medium = materials_.add_medium(*description_.medium);
+    for (const MaterialDesc& m : description_.materials) materials_.add(m, m.name);
     for (const VolumeDesc& volume : description_.volumes)
-      scene_.volumes.push_back(add_medium(make_grid_medium(volume)));
+      scene_.volumes.push_back(materials_.add_medium(make_grid_medium(volume)));
 
     check_instance_count();
     prototype_of_object_.assign(description_.objects.size(), std::nullopt);
@@ -98,60 +70,17 @@ class RenderSceneBuilder {
   }
 
  private:
-  // Images are registered as they are met: the colour's, the model's own, the emission's.
-  std::uint32_t add_material(const MaterialDesc& m, const std::string& name) {
-    Material material;
-    material.base_color = color_texture(m, m.color, scene_.textures);
-    material.model = surface_model(m, scene_.textures);
-    material.emission =
-        Emission{m.emission, m.emission_two_sided, slot_texture(m.emission_texture, Color(1.0f), scene_.textures)};
-    material.whitted = whitted_material(m, material.base_color);
-    material.index_matched = std::holds_alternative<InterfaceSurface>(material.model);
-    material.interior = interior_medium(m, material);
-    if (m.interior && material.whitted.glass) show_to_whitted(*m.interior, *material.whitted.glass);
-    scene_.materials.push_back(std::move(material));
-    scene_.material_names.push_back(name);
-    return static_cast<std::uint32_t>(scene_.materials.size() - 1);
-  }
-
-  MediumIndex add_medium(const Medium& medium) {
-    if (scene_.media.size() == kNoMedium)
-      throw InputError("the scene has more than " + std::to_string(kNoMedium) +
-                       " media (interiors, tinted glass and the world's medium together): the most a scene holds");
-    scene_.media.push_back(medium);
-    return static_cast<MediumIndex>(scene_.media.size() - 1);
-  }
-
   // Each volume entry as Blender's Volume object: its grid's box, an interface into its medium
   // (scene/grid_medium.h's bounding_box_mesh), a top-level geometry of its own.
   void add_volume_boundaries() {
     for (std::size_t v = 0; v < scene_.volumes.size(); ++v) {
-      const GridMedium& medium = std::get<GridMedium>(scene_.media[scene_.volumes[v]]);
-      MaterialDesc boundary;
-      boundary.name = "volume " + std::to_string(v);
-      boundary.params = InterfaceParams{};
-      TriangleMesh box = bounding_box_mesh(medium, 0);
+      TriangleMesh box = bounding_box_mesh(std::get<GridMedium>(scene_.media[scene_.volumes[v]]), 0);
       if (box.triangles.empty()) continue;
-      box.material = add_material(boundary, boundary.name);
-      Material& material = scene_.materials[box.material];
-      material.interior = scene_.volumes[v];
-      if (material.whitted.glass) show_to_whitted(medium, *material.whitted.glass);
+      box.material = materials_.add_volume_boundary(v);
       scene_.top.geometries.emplace_back(std::move(box));
       top_origins_.push_back({&description_.volumes[v].where});
       linking_of_object_.push_back(kNoLinking);
     }
-  }
-
-  // The medium a material's surface bounds: its `interior:`; else a glass's absorption (vacuum
-  // when clear) and an interface's vacuum; else none.
-  std::optional<MediumIndex> interior_medium(const MaterialDesc& m, const Material& material) {
-    if (m.interior) return add_medium(*m.interior);
-    if (const Dielectric* glass = interior_of(material)) {
-      const std::optional<AbsorbingMedium> absorbing = glass_absorption(*glass);
-      return absorbing ? add_medium(*absorbing) : kNoMedium;
-    }
-    if (material.index_matched) return kNoMedium;
-    return std::nullopt;
   }
 
   // Counted before anything is flattened: a few nested levels of a few instances each multiply
@@ -261,7 +190,7 @@ class RenderSceneBuilder {
       // The file's MTL materials join the scene's list; remap the mesh's local indices.
       std::vector<std::uint32_t> remap;
       for (const MaterialDesc& m : loaded.materials)
-        remap.push_back(add_material(m, desc.file.filename().string() + ":" + m.name));
+        remap.push_back(materials_.add(m, desc.file.filename().string() + ":" + m.name));
       mesh.material = remap[std::min<std::size_t>(mesh.material, remap.size() - 1)];
       for (std::uint32_t& m : mesh.triangle_materials) m = remap[m];
     }
@@ -342,7 +271,7 @@ class RenderSceneBuilder {
     std::vector<std::uint32_t> remap;
     if (desc.material == kNoMaterial)
       for (const MaterialDesc& m : asset->materials)
-        remap.push_back(add_material(m, desc.file.filename().string() + ":" + m.name));
+        remap.push_back(materials_.add(m, desc.file.filename().string() + ":" + m.name));
     // Primitives without a material take the scene's "default", like shapes without one.
     const auto material = [&](std::uint32_t m) {
       return desc.material != kNoMaterial ? desc.material : m == kNoMaterial ? 0u : remap[m];
@@ -440,6 +369,7 @@ class RenderSceneBuilder {
   SceneBuildReport* report_;
   SubdivisionContext subdivision_;
   RenderScene scene_;
+  SceneMaterials materials_{scene_};
   std::vector<std::optional<std::uint32_t>> prototype_of_object_;
   std::map<std::tuple<std::filesystem::path, int, std::uint32_t, std::string>, PlacedGltf> gltfs_;
   std::size_t flattened_ = 0;
