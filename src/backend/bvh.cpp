@@ -344,7 +344,9 @@ HugePageBuffer<BuildPrimitive> build_primitives(const Group& group, std::span<co
 // union (children come after their parent in `nodes`), where some geometry of `group` moves. The
 // nodes' own boxes, built from the primitives halfway through the shutter, become the boxes of
 // the whole motion (the linear bounds' two ends), for whatever traces without a time.
-std::vector<MotionNode, HugePageAllocator<MotionNode>> motion_nodes_of(const Group& group, std::span<const BBox> prototype_bounds, Bvh& bvh) {
+std::vector<MotionNode, HugePageAllocator<MotionNode>> motion_nodes_of(const Group& group,
+                                                                       std::span<const BBox> prototype_bounds,
+                                                                       Bvh& bvh) {
   bool moves = false;
   for (std::uint32_t g = 0; g < group.geometries.size(); ++g) moves = moves || group.motion_step_count(g) > 0;
   if (!moves) return {};

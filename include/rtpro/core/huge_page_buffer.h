@@ -67,7 +67,7 @@ struct HugePageAllocator {
   T* allocate(std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
     if (bytes < kLarge) {
-      if constexpr (kOverAligned) return static_cast<T*>(::operator new(bytes, std::align_val_t{alignof(T)}));
+      if constexpr (kOverAligned) return static_cast<T*>(::operator new (bytes, std::align_val_t{alignof(T)}));
       return static_cast<T*>(::operator new(bytes));
     }
     void* memory = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -78,7 +78,7 @@ struct HugePageAllocator {
   void deallocate(T* p, std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
     if (bytes < kLarge) {
-      if constexpr (kOverAligned) return ::operator delete(p, std::align_val_t{alignof(T)});
+      if constexpr (kOverAligned) return ::operator delete (p, std::align_val_t{alignof(T)});
       return ::operator delete(p);
     }
     munmap(p, bytes);
