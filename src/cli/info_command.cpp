@@ -186,6 +186,7 @@ nlohmann::json info_json(const std::string& file, const RenderScene& scene, cons
           {"instances", s.instances},
           {"motion",
            {{"shutter", {scene.camera.shutter.open, scene.camera.shutter.close}},
+            {"shutter_opening", {scene.camera.shutter.opening, scene.camera.shutter.closing}},
             {"camera_moves", s.motion.camera_moves},
             {"moving_instances", s.motion.moving_instances},
             {"transform_steps", s.motion.transform_steps},
@@ -205,8 +206,10 @@ nlohmann::json info_json(const std::string& file, const RenderScene& scene, cons
 void print_motion(const RenderScene& scene, const SceneSummary::Motion& m) {
   if (!scene.camera.shutter.is_open()) return;
   const std::streamsize precision = std::cout.precision(6);
-  std::cout << std::defaultfloat << "motion       shutter [" << scene.camera.shutter.open << ", "
-            << scene.camera.shutter.close << "] frames: " << std::fixed;
+  const Shutter& shutter = scene.camera.shutter;
+  std::cout << std::defaultfloat << "motion       shutter [" << shutter.open << ", " << shutter.close << "] frames";
+  if (!shutter.is_box()) std::cout << ", opening [" << shutter.opening << ", " << shutter.closing << "]";
+  std::cout << ": " << std::fixed;
   std::cout.precision(precision);
   if (!m.any()) {
     std::cout << "nothing moves\n";

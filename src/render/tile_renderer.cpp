@@ -103,12 +103,15 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
   }
   ws.camera_times.clear();
   if (camera.shutter.is_open()) {
-    // A box shutter: the time uniform over it, stratified as the sampler stratifies a dimension.
+    // The time stratified as the sampler stratifies a dimension, then spread as the shutter
+    // exposes (uniform for a box).
     ws.camera_times.resize(ws.sample_keys.size());
     switch (scene_.render.sampler) {
       case SamplerKind::kStratified: sampler.sample_1d(ws.sample_keys, sample_dimension::kTime, ws.camera_times); break;
       case SamplerKind::kSobol: sobol.sample_1d(ws.sample_keys, sample_dimension::kTime, ws.camera_times); break;
     }
+    if (!camera.shutter.is_box())
+      for (float& time : ws.camera_times) time = shutter_time(camera.shutter, time);
   }
   RenderCamera posed = integration_->still_camera;  // a moving camera's, at each sample's time
   std::size_t next = 0;

@@ -123,6 +123,44 @@ TEST(MotionBlur, QuadCrossingTheFrameBlursIntoTheTrapezoidWithTheStaticEnergy) {
   }
 }
 
+// A trapezoid shutter exposes the quad's path as it exposes time: each point of the row is lit for
+// the shutter's exposure while the quad covers it (the ramps weigh the ends of the path less),
+// with the static image's energy.
+TEST(MotionBlur, ShutterOpeningWeighsThePathAsItExposesTime) {
+  static constexpr double kOpening = 0.25, kClosing = 0.75, kExposure = 0.5 * (1.0 + kClosing - kOpening);
+  const auto exposed_until = [](double t) {
+    t = std::clamp(t, 0.0, 1.0);
+    double area = 0.5 * std::min(t, kOpening) * std::min(t, kOpening) / kOpening;
+    if (t > kOpening) area += std::min(t, kClosing) - kOpening;
+    if (t > kClosing) area += 0.5 * (1.0 - kClosing) - 0.5 * (1.0 - t) * (1.0 - t) / (1.0 - kClosing);
+    return area / kExposure;
+  };
+  const auto exposed_while_covered = [&](double s) {
+    const double from = std::max(0.0, (s - kStart - kQuadWidth) / kTravel);
+    const double to = std::min(1.0, (s - kStart) / kTravel);
+    return to > from ? exposed_until(to) - exposed_until(from) : 0.0;
+  };
+  for (BackendKind kind : kBackends) {
+    RenderScene scene = camera_scene(kWidth, kHeight, kPixel, 256);
+    scene.camera.shutter.opening = static_cast<float>(kOpening);
+    scene.camera.shutter.closing = static_cast<float>(kClosing);
+    add_moving_instance(scene, quad(0, kQuadWidth, -1, 1),
+                        {Affine::translate({kStart, 0, 0}), Affine::translate({kStart + kTravel, 0, 0})});
+    const Image image = render(scene, kind);
+    EXPECT_NEAR(red_sum(image), 8 * kHeight, 0.005 * 8 * kHeight) << backend_name(kind);
+    double worst = 0.0, worst_box = 0.0;
+    for (int x = 0; x < kWidth; ++x) {
+      double row_mean = 0.0;
+      for (int y = 0; y < kHeight; ++y) row_mean += image.at(x, y, 0) / kHeight;
+      worst =
+          std::max(worst, std::fabs(row_mean - test::box_filtered_coverage(x, kWidth, kPixel, exposed_while_covered)));
+      worst_box = std::max(worst_box, std::fabs(row_mean - expected_pixel(x)));
+    }
+    EXPECT_LT(worst, 0.01) << backend_name(kind);
+    EXPECT_GT(worst_box, 0.03) << backend_name(kind) << ": the profile should differ from a box shutter's";
+  }
+}
+
 // A bar from the centre to radius 1.5 turned by 90° about the view axis during the shutter.
 Image spun_bar(BackendKind kind, const std::vector<Affine>& steps) {
   RenderScene scene = camera_scene(40, 40, 0.1f, 32);

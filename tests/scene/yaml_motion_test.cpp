@@ -75,5 +75,26 @@ TEST(YamlMotion, ShutterClosingBeforeItOpensIsRefusedAtItsLine) {
   }
 }
 
+TEST(YamlMotion, ShutterOpeningShapesTheExposure) {
+  EXPECT_TRUE(parse("[-0.5, 0.5]", kMovingInstance).camera.shutter.is_box());  // the default
+  const SceneDescription scene = parse_scene_text(
+      "rtpro: 1\ncamera: {position: [0, 0, -5], look_at: [0, 0, 0], shutter: [0, 1], shutter_opening: [0.25, "
+      "0.75]}\n",
+      "motion.yaml", {});
+  EXPECT_EQ(scene.camera.shutter.opening, 0.25f);
+  EXPECT_EQ(scene.camera.shutter.closing, 0.75f);
+  for (const std::string& bad : {"[0.75, 0.25]", "[-0.1, 0.5]", "[0.5, 1.5]", "[0.5]"}) {
+    try {
+      parse_scene_text(
+          "rtpro: 1\ncamera: {position: [0, 0, -5], look_at: [0, 0, 0],\n  shutter_opening: " + bad + "}\n",
+          "motion.yaml", {});
+      FAIL() << bad << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.where().line, 3) << bad;
+      EXPECT_NE(e.message().find("camera.shutter_opening"), std::string::npos) << e.message();
+    }
+  }
+}
+
 }  // namespace yaml_motion_test
 }  // namespace rtpro

@@ -47,10 +47,31 @@ namespace rtpro {
 struct Shutter {
   float open = 0.0f;   // frames relative to the frame's time
   float close = 0.0f;  // >= open
+  // How the shutter exposes (RenderMan's shutterOpening), as fractions of [open, close]: it opens
+  // linearly until `opening`, exposes fully until `closing` and closes linearly to the end. [0, 1]
+  // is a box, every instant exposed alike; [0.5, 0.5] a triangle.
+  float opening = 0.0f;
+  float closing = 1.0f;  // opening <= closing, both in [0, 1]
   // Whether anything can blur: an instant shutter renders exactly as before motion existed.
   bool is_open() const { return close > open; }
+  bool is_box() const { return opening == 0.0f && closing == 1.0f; }
   bool operator==(const Shutter&) const = default;
 };
+
+// A camera sample's time in [0, 1] over the shutter from a uniform sample `u` in [0, 1), taken as
+// often as the shutter exposes it: `u` itself for a box; otherwise the inverse of the trapezoid's
+// cumulative exposure (ramp areas t²/2a and (1 − t)²/2(1 − b), the plateau between).
+inline float shutter_time(const Shutter& shutter, float u) {
+  if (shutter.is_box()) return u;
+  const double a = shutter.opening, b = shutter.closing;
+  const double exposure = 0.5 * (1.0 + b - a);
+  const double y = static_cast<double>(u) * exposure;
+  double t;
+  if (y < 0.5 * a) t = std::sqrt(2.0 * a * y);
+  else if (y <= exposure - 0.5 * (1.0 - b)) t = y + 0.5 * a;
+  else t = 1.0 - std::sqrt(std::max(0.0, 2.0 * (1.0 - b) * (exposure - y)));
+  return std::clamp(static_cast<float>(t), 0.0f, 1.0f);
+}
 
 // Embree's limit on a geometry's time steps (RTC_MAX_TIME_STEP_COUNT).
 inline constexpr int kMaxMotionSteps = 129;

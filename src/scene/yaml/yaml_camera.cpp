@@ -48,12 +48,28 @@ Shutter read_shutter(const YamlNode& node) {
   return {static_cast<float>(open), static_cast<float>(close)};
 }
 
+// `camera.shutter_opening: [opening, closing]`: fractions of the shutter, 0 <= opening <= closing <= 1.
+void read_shutter_opening(const YamlNode& node, Shutter& shutter) {
+  const auto& items = read_list(node, "camera.shutter_opening", 2,
+                                "[opening, closing]: the fractions of the shutter at which it is fully open and "
+                                "from which it closes");
+  const double opening = read_number(*items[0], "camera.shutter_opening");
+  const double closing = read_number(*items[1], "camera.shutter_opening");
+  if (!(0.0 <= opening && opening <= closing && closing <= 1.0))
+    fail_at(node,
+            "camera.shutter_opening: [opening, closing] must satisfy 0 <= opening <= closing <= 1 (fractions "
+            "of the shutter; [0, 1] is a box, [0.5, 0.5] a triangle), got [" +
+                std::string(items[0]->scalar()) + ", " + std::string(items[1]->scalar()) + "]");
+  shutter.opening = static_cast<float>(opening);
+  shutter.closing = static_cast<float>(closing);
+}
+
 }  // namespace
 
 CameraDesc read_camera(const YamlNode& node) {
   const MappingReader camera(node, "camera",
                              {"position", "look_at", "up", "projection", "fov", "ortho_height", "resolution",
-                              "aperture", "focus_distance", "shutter"});
+                              "aperture", "focus_distance", "shutter", "shutter_opening"});
   CameraDesc desc;
   desc.position = read_position(camera.required("position"), "camera.position");
   const YamlNode& look_at = camera.required("look_at");
@@ -103,6 +119,7 @@ CameraDesc read_camera(const YamlNode& node) {
               "(camera.projection)");
   }
   if (const YamlNode* shutter = camera.optional("shutter")) desc.shutter = read_shutter(*shutter);
+  if (const YamlNode* opening = camera.optional("shutter_opening")) read_shutter_opening(*opening, desc.shutter);
   if (const YamlNode* focus = camera.optional("focus_distance")) {
     const double distance = read_number(*focus, "camera.focus_distance");
     if (!(distance > 0.0) || !std::isfinite(static_cast<float>(distance)))
