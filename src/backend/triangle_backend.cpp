@@ -19,13 +19,36 @@ std::optional<std::string> embree_refusal(const TriangleMesh& mesh) {
   return std::nullopt;
 }
 
+// Below this many vertices a deforming mesh goes to Embree at kEmbreeSmallMeshSteps time steps
+// (new_embree_geometry): at most 9 copies of 4,096 vertices, 576 KiB.
+constexpr std::size_t kEmbreeSmallMeshVertices = 4096;
+constexpr unsigned kEmbreeSmallMeshSteps = 9;
+
 // A 16-byte vertex stride (x, y, z, pad) keeps Embree's rule that vertex buffers are readable 16
 // bytes past the last vertex.
 EmbreeGeometry new_embree_geometry(RTCDevice device, const TriangleMesh& mesh, RTCBuildQuality quality) {
   EmbreeGeometry geometry(rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE));
   if (!geometry) return geometry;
   RTCGeometry g = geometry.get();
-  if (mesh.moving()) {
+  if (mesh.moving() && mesh.vertex_steps.size() < kEmbreeSmallMeshSteps &&
+      mesh.vertices.size() <= kEmbreeSmallMeshVertices) {
+    // The same motion at kEmbreeSmallMeshSteps steps, each the mesh at that time (vertex_at's
+    // interpolation; the mesh's own steps fall on the finer ones, 2, 3 and 5 steps being 1, 2 and
+    // 4 segments of 8): Embree's motion builder splits a tree in time only at steps, and a small
+    // mesh that deforms much within one segment otherwise sits in one node whose triangles every
+    // ray gathers at both steps.
+    rtcSetGeometryTimeStepCount(g, kEmbreeSmallMeshSteps);
+    for (unsigned step = 0; step < kEmbreeSmallMeshSteps; ++step) {
+      auto* vertices = static_cast<PaddedVertex*>(rtcSetNewGeometryBuffer(
+          g, RTC_BUFFER_TYPE_VERTEX, step, RTC_FORMAT_FLOAT3, sizeof(PaddedVertex), mesh.vertices.size()));
+      if (vertices == nullptr) return EmbreeGeometry();
+      const float time = static_cast<float>(step) / static_cast<float>(kEmbreeSmallMeshSteps - 1);
+      for (std::uint32_t v = 0; v < mesh.vertices.size(); ++v) {
+        const Vec3 p = mesh.vertex_at(v, time);
+        vertices[v] = {p.x, p.y, p.z, 0.0f};
+      }
+    }
+  } else if (mesh.moving()) {
     // One vertex buffer per time step; Embree interpolates them linearly, as vertex_at does.
     rtcSetGeometryTimeStepCount(g, static_cast<unsigned>(mesh.vertex_steps.size()));
     for (unsigned step = 0; step < mesh.vertex_steps.size(); ++step)
