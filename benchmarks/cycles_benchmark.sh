@@ -9,7 +9,8 @@
 # Usage: benchmarks/cycles_benchmark.sh [--runs N] [--threads "1 2"]
 #   SCENE=scenes/cornell_box.gltf SIZE=256 (or WxH) SPP=64 MAX_DEPTH=8 REF_SPP=1024 pick the work;
 #   FRAME=F SHUTTER=OPEN,CLOSE render an animated file's frame F with that shutter (motion blur in
-#   both: benchmarks/cycles_motion_benchmark.sh);
+#   both: benchmarks/cycles_motion_benchmark.sh), SHUTTER_OPENING=A,B with a trapezoid shutter
+#   (rtpro's camera.shutter_opening; Cycles' shutter curve drawn through the same corners);
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
 source "$(dirname "$0")/options.sh"
@@ -27,6 +28,10 @@ rtpro_motion=() cycles_motion=()
 if [ -n "${FRAME:-}" ]; then
   rtpro_motion=(-D "frame=$FRAME" "--shutter=${SHUTTER:-0,0}")
   cycles_motion=("$FRAME" "$(echo "${SHUTTER:-0,0}" | cut -d, -f1)" "$(echo "${SHUTTER:-0,0}" | cut -d, -f2)")
+  if [ -n "${SHUTTER_OPENING:-}" ]; then
+    rtpro_motion+=(--set "camera.shutter_opening=[${SHUTTER_OPENING}]")
+    cycles_motion+=("$(echo "$SHUTTER_OPENING" | cut -d, -f1)" "$(echo "$SHUTTER_OPENING" | cut -d, -f2)")
+  fi
 fi
 
 build_release rtpro
@@ -48,7 +53,7 @@ for t in $threads; do
 done
 compare_each "$out/reference.exr" "$out"/cycles-t*-r*.exr "$out"/rtpro-t*-r*.exr
 
-python3 - "$out" "$runs" "$threads" "$scene${FRAME:+ frame $FRAME, shutter [${SHUTTER:-0,0}]}" "$pixels" "$spp" \
+python3 - "$out" "$runs" "$threads" "$scene${FRAME:+ frame $FRAME, shutter [${SHUTTER:-0,0}]}${SHUTTER_OPENING:+ opening [$SHUTTER_OPENING]}" "$pixels" "$spp" \
   "$max_depth" "$ref_spp" <<'PY'
 import json, re, statistics, sys
 out, runs, threads, scene, size, spp, depth, ref_spp = sys.argv[1:9]

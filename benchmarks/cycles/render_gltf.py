@@ -2,14 +2,17 @@
 benchmarks/cycles_benchmark.sh. Run by Debian's Blender 3.4:
 
   blender -b --factory-startup --python render_gltf.py -- FILE.gltf OUT.exr SIZE SPP MAX_DEPTH THREADS \
-      [FRAME SHUTTER_OPEN SHUTTER_CLOSE]
+      [FRAME SHUTTER_OPEN SHUTTER_CLOSE [OPENING CLOSING]]
 
 SIZE is N (N x N pixels) or WxH. With FRAME the file is rendered posed at that frame (glTF time t is
 frame t x 24, as rtpro's render.fps and Blender's importer map it), and with an open shutter
 (SHUTTER_OPEN < SHUTTER_CLOSE, in frames relative to FRAME, rtpro's camera.shutter) with Cycles'
 motion blur over the same interval: shutter length CLOSE - OPEN placed by motion_blur_position
 (START for [0, s], CENTER for [-s/2, s/2], END for [-s, 0]; other intervals are refused), object
-and deformation motion on. Every sun's angle is 0 (rtpro's directional light is a delta light).
+and deformation motion on; with OPENING and CLOSING (rtpro's camera.shutter_opening) the shutter
+curve is the trapezoid through (0, 0), (OPENING, 1), (CLOSING, 1) and (1, 0), its handles straight,
+from which Cycles samples the time as rtpro does. Every sun's angle is 0 (rtpro's directional light
+is a delta light).
 
 Fair settings (see /work/shared/notes/pathtracing.md): CPU, no adaptive sampling, no denoising, a
 one-pixel box filter, no clamping, the Standard view, 32-bit float EXR, a black world. Path length:
@@ -48,6 +51,7 @@ width, _, height = args[2].partition("x")
 width, height = int(width), int(height or width)
 spp, max_depth, threads = (int(a) for a in args[3:6])
 frame, shutter_open, shutter_close = (float(a) for a in args[6:9]) if len(args) > 6 else (None, 0.0, 0.0)
+opening, closing = (float(a) for a in args[9:11]) if len(args) > 9 else (0.0, 1.0)
 
 bpy.ops.wm.read_factory_settings(use_empty=True)
 bpy.ops.import_scene.gltf(filepath=gltf_file)
@@ -107,6 +111,23 @@ if shutter_close > shutter_open:
     scene.render.use_motion_blur = True
     scene.render.motion_blur_shutter = length
     scene.cycles.motion_blur_position = positions[shutter_open]
+    if (opening, closing) != (0.0, 1.0):
+        curve = scene.render.motion_blur_shutter_curve
+        points = curve.curves[0].points
+        corners = [(0.0, 0.0 if opening > 0.0 else 1.0)]
+        if opening > 0.0:
+            corners.append((opening, 1.0))
+        if opening < closing < 1.0:
+            corners.append((closing, 1.0))
+        corners.append((1.0, 0.0 if closing < 1.0 else 1.0))
+        while len(points) < len(corners):
+            points.new(0.5, 0.5)
+        while len(points) > len(corners):
+            points.remove(points[len(points) - 1])
+        for point, corner in zip(points, corners):
+            point.location = corner
+            point.handle_type = "VECTOR"
+        curve.update()
     for obj in scene.objects:
         obj.cycles.use_motion_blur = True
         obj.cycles.use_deform_motion = True
