@@ -19,7 +19,7 @@ std::optional<std::string> embree_refusal(const TriangleMesh& mesh) {
   return std::nullopt;
 }
 
-// Below this many vertices a deforming mesh goes to Embree at kEmbreeSmallMeshSteps time steps
+// A deforming mesh of at most this many vertices goes to Embree at kEmbreeSmallMeshSteps time steps
 // (new_embree_geometry): at most 9 copies of 4,096 vertices, 576 KiB.
 constexpr std::size_t kEmbreeSmallMeshVertices = 4096;
 constexpr unsigned kEmbreeSmallMeshSteps = 9;
