@@ -42,7 +42,7 @@ cycles() {  # NAME SPP THREADS LOG: $out/NAME.exr
 }
 
 echo "long Cycles reference: $pixels, $ref_spp spp ..." >&2
-cycles reference "$ref_spp" 2 "$out/reference.log"
+RTPRO_CYCLES_SEED=1 cycles reference "$ref_spp" 2 "$out/reference.log"
 for t in $threads; do
   for r in $(seq "$runs"); do
     cycles "cycles-t$t-r$r" "$spp" "$t" "$out/cycles-t$t-r$r.log"

@@ -29,7 +29,7 @@ cycles() {  # NAME SPP LOG: $out/NAME.exr
 }
 
 echo "long Cycles reference: ${size}x$height, $ref_spp spp ..." >&2
-cycles reference "$ref_spp" "$out/reference.log"
+RTPRO_CYCLES_SEED=1 cycles reference "$ref_spp" "$out/reference.log"
 echo "long rtpro render: $ref_spp spp ..." >&2
 "$build/rtpro" render "${spheres[@]}" -o "$out/rtpro-reference.exr" --spp "$ref_spp" --threads "$t" --quiet --no-journal
 for r in $(seq "$runs"); do

@@ -35,7 +35,7 @@ rel_mse() {  # IMAGE: relMSE of its R,G,B against the reference
     python3 -c 'import json, sys; print(json.load(sys.stdin)["rel_mse"])'
 }
 
-[ -f "$out/reference.exr" ] || { echo "long Cycles reference: ${size}x$size, $ref_spp spp ..." >&2; cycles reference "$ref_spp"; }
+[ -f "$out/reference.exr" ] || { echo "long Cycles reference: ${size}x$size, $ref_spp spp ..." >&2; RTPRO_CYCLES_SEED=1 cycles reference "$ref_spp"; }
 cycles_times=()
 cycles_errors=()
 for r in $(seq "$runs"); do

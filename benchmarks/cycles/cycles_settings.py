@@ -1,7 +1,10 @@
 """Cycles' render settings for rtpro's benchmarks, shared by render_gltf.py and render_environment.py:
 the same estimator as rtpro's path integrator (no adaptive sampling, no denoising, no clamping, a
 one-pixel box filter, caustics on, no glossy blur) with max_depth rtpro vertices = max_depth - 1
-bounces, on `threads` fixed threads; and the render itself, to a float EXR, timed."""
+bounces, on `threads` fixed threads; and the render itself, to a float EXR, timed. Cycles' seed is 0
+unless RTPRO_CYCLES_SEED says otherwise: a long reference takes another, or the runs compared with it
+would share its first samples and their relMSE would be flattered."""
+import os
 import time
 
 import bpy
@@ -23,7 +26,7 @@ def configure_cycles(scene, spp, max_depth, threads):
     cycles.transparent_max_bounces = max_depth - 1
     cycles.caustics_reflective = cycles.caustics_refractive = True
     cycles.blur_glossy = 0.0
-    cycles.seed = 0
+    cycles.seed = int(os.environ.get("RTPRO_CYCLES_SEED", "0"))
     scene.render.threads_mode = "FIXED"
     scene.render.threads = threads
 
