@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <optional>
+#include <span>
 #include <string>
 #include <variant>
 
@@ -85,13 +86,37 @@ bool is_empty(const Geometry& geometry) {
                     geometry);
 }
 
+// Whether a group holds curves and nothing else, itself or through its instances.
+bool holds_only_curves(const Group& group, std::span<const Group> prototypes) {
+  for (const Geometry& geometry : group.geometries) {
+    const bool curves = std::visit(
+        Overloaded{[&](const Instance& instance) { return holds_only_curves(prototypes[instance.prototype], {}); },
+                   [](const CurveSet&) { return true; }, [](const SphereSet&) { return false; },
+                   [](const TriangleMesh&) { return false; }},
+        geometry);
+    if (!curves) return false;
+  }
+  return !group.geometries.empty();
+}
+
+}  // namespace
+
+RTCSceneFlags embree_group_flags(const Group& group, std::span<const Group> prototypes,
+                                 const EmbreeBuildSettings& settings) {
+  if (!holds_only_curves(group, prototypes)) return settings.flags;
+  return static_cast<RTCSceneFlags>(settings.flags & ~RTC_SCENE_FLAG_ROBUST);
+}
+
+namespace {
+
 EmbreeScene build_group(EmbreeDevice::Session& session, const Group& group, int group_index,
-                        const std::vector<EmbreeScene>& prototypes, const EmbreeBuildSettings& settings) {
+                        std::span<const Group> prototype_groups, const std::vector<EmbreeScene>& prototypes,
+                        const EmbreeBuildSettings& settings) {
   RTCDevice device = session.device();
   const std::string where = group_name(group_index);
   EmbreeScene scene(rtcNewScene(device));
   session.check("creation of the scene for " + where);
-  rtcSetSceneFlags(scene.get(), settings.flags);
+  rtcSetSceneFlags(scene.get(), embree_group_flags(group, prototype_groups, settings));
   rtcSetSceneBuildQuality(scene.get(), settings.quality);
 
   for (std::uint32_t g = 0; g < group.geometries.size(); ++g) {
@@ -139,8 +164,8 @@ EmbreeScenes build_embree_scenes(EmbreeDevice::Session& session, const RenderSce
   EmbreeScenes scenes;
   scenes.prototypes.reserve(scene.prototypes.size());
   for (std::size_t p = 0; p < scene.prototypes.size(); ++p)
-    scenes.prototypes.push_back(build_group(session, scene.prototypes[p], static_cast<int>(p), {}, settings));
-  scenes.top = build_group(session, scene.top, -1, scenes.prototypes, settings);
+    scenes.prototypes.push_back(build_group(session, scene.prototypes[p], static_cast<int>(p), {}, {}, settings));
+  scenes.top = build_group(session, scene.top, -1, scene.prototypes, scenes.prototypes, settings);
   return scenes;
 }
 

@@ -15,8 +15,10 @@ void add_embree_options(CLI::App& command, BackendOptions& options) {
              "Embree BVH build quality: low (fastest build), medium or high (fastest traversal)"),
          {"low", "medium", "high"})
       ->option_text("low|medium|high (default: medium)");
-  command.add_flag("--embree-robust,!--no-embree-robust", options.embree_robust,
-                   "Embree robust traversal (default on): rays that graze edges never slip between triangles");
+  command.add_flag(
+      "--embree-robust,!--no-embree-robust", options.embree_robust,
+      "Embree robust traversal (default on; groups of curves alone go without): rays that graze edges never slip "
+      "between triangles");
 }
 
 }  // namespace rtpro::cli
