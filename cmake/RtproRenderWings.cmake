@@ -12,7 +12,7 @@ target_link_libraries(rtpro_render_headers INTERFACE rtpro_backend rtpro_image_h
 
 rtpro_add_wing(render sampling SHARES alias_table.h camera_samplers.h sample_dimensions.h sobol_sampler.h)
 rtpro_add_wing(render surface
-  SHARES film_motion.h normal_map.h ray_offset.h shading_frame.h surface.h surface_batch.h texture.h)
+  SHARES film_motion.h hit_prefetch.h normal_map.h ray_offset.h shading_frame.h surface.h surface_batch.h texture.h)
 rtpro_add_wing(render bsdf
   SHARES bsdf.h bsdf_from.h bsdf_sample.h cosine_lanes.h dielectric.h hair_lobes.h microfacet.h sheen.h
   SHARES_MATCHING *_bsdf.h

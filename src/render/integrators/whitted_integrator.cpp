@@ -5,6 +5,7 @@
 #include "beer_lambert.h"
 #include "dielectric.h"
 #include "film_motion.h"
+#include "hit_prefetch.h"
 #include "light_linking.h"
 #include "light_sample.h"
 #include "ray_offset.h"
@@ -109,7 +110,9 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
     s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
     complete(s);
   };
+  const HitPrefetch prefetch(scene, ws.hits);
   for (std::uint32_t i = 0; i < generation.tasks.size(); ++i) {
+    prefetch.before(i);
     const Workspace::RayTask& task = generation.tasks[i];
     const Hit& hit = ws.hits[i];
     const Ray& ray = generation.rays[i];

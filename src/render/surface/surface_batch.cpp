@@ -1,5 +1,7 @@
 #include "surface_batch.h"
 
+#include "hit_prefetch.h"
+
 #include "rtpro/core/lanes3.h"
 #include "rtpro/core/avx2_clones.h"
 
@@ -276,7 +278,9 @@ void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::spa
     waiting.materials[waiting.count] = material;
     waiting.add(rays[i], hits[i], out[i]);
   };
+  const HitPrefetch prefetch(scene, hits);
   for (std::size_t i = 0; i < hits.size(); ++i) {
+    prefetch.before(i);
     const Hit& hit = hits[i];
     if (!hit.valid()) continue;
     // The tests of is_plain_sphere_hit and is_plain_triangle_hit, the geometry looked up once.
@@ -325,8 +329,11 @@ void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::spa
 void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::span<const float> times,
                    std::span<const Hit> hits, std::span<SurfacePoint> out) {
   if (times.empty()) return make_surfaces(scene, rays, hits, out);
-  for (std::size_t i = 0; i < hits.size(); ++i)
+  const HitPrefetch prefetch(scene, hits);
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    prefetch.before(i);
     if (hits[i].valid()) make_surface_at(scene, rays[i], times[i], hits[i], out[i]);
+  }
 }
 
 }  // namespace rtpro
