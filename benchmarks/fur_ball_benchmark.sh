@@ -10,15 +10,15 @@
 # warm-up; rtpro's rays over its render phase at FRAMES spp), medians of RUNS interleaved runs per
 # thread count; the BVH build (Embree's builder as its verbose log times it, rtpro's build phase per
 # backend) and the acceleration structure's bytes per curve segment.
-# Usage: benchmarks/fur_ball_benchmark.sh [--runs N] [--threads "1 2"]   (SIZE=128 FRAMES=2 DEPTH=8)
+# Usage: benchmarks/fur_ball_benchmark.sh [--runs N] [--threads "1 2"]   (SIZE=256 FRAMES=8 DEPTH=8)
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
 source "$(dirname "$0")/options.sh"
 source "$(dirname "$0")/embree_fur_matte.sh"
 command -v pathtracer >/dev/null || { echo "pathtracer not found: apt-get install embree-tools" >&2; exit 2; }
 models=/usr/share/doc/embree3/models
-size=${SIZE:-128}
-frames=${FRAMES:-2}
+size=${SIZE:-256}
+frames=${FRAMES:-8}
 depth=${DEPTH:-8}
 build_release rtpro
 
