@@ -110,7 +110,7 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
     s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
     complete(s);
   };
-  const HitPrefetch prefetch(scene, ws.hits);
+  const HitPrefetch prefetch(scene, ws.hits, ws.ray_times);
   for (std::uint32_t i = 0; i < generation.tasks.size(); ++i) {
     prefetch.before(i);
     const Workspace::RayTask& task = generation.tasks[i];

@@ -7,11 +7,13 @@
 // the index names `kDataAhead` hits ahead, by when the index has arrived. Every step is inlined:
 // GCC takes a function whose only effect is a prefetch for one without effects, and drops its calls.
 #include "rtpro/backend/hit.h"
+#include "rtpro/scene/motion.h"
 #include "rtpro/scene/render_scene.h"
 
 #include <cstddef>
 #include <span>
 #include <variant>
+#include <vector>
 
 namespace rtpro {
 
@@ -20,7 +22,10 @@ class HitPrefetch {
   static constexpr std::size_t kIndexAhead = 16;
   static constexpr std::size_t kDataAhead = 8;
 
-  HitPrefetch(const RenderScene& scene, std::span<const Hit> hits) : scene_(scene), hits_(hits) {
+  // `times`: each hit's ray time (scene/motion.h), or empty while the shutter is closed; a
+  // deforming mesh is read at the steps around it.
+  HitPrefetch(const RenderScene& scene, std::span<const Hit> hits, std::span<const float> times = {})
+      : scene_(scene), hits_(hits), times_(times) {
     for (std::size_t i = 0; i < std::min(kIndexAhead, hits.size()); ++i) fetch_index(i);
     for (std::size_t i = 0; i < std::min(kDataAhead, hits.size()); ++i) fetch_data(i);
   }
@@ -62,6 +67,20 @@ class HitPrefetch {
       case GeometryKind::kTriangles: {
         const TriangleMesh& mesh = std::get<TriangleMesh>(*geometry);
         const TriangleIndices& triangle = mesh.triangles[hit.prim_id];
+        if (mesh.moving() && !times_.empty()) {
+          const MotionSegment segment = motion_segment(times_[i], mesh.vertex_steps.size());
+          const std::vector<PaddedVertex>& from = mesh.vertex_steps[segment.index];
+          const std::vector<PaddedVertex>& to = mesh.vertex_steps[segment.index + 1];
+          const bool moving_normals = !mesh.normal_steps.empty();
+          const std::vector<Vec3>& normals = moving_normals ? mesh.normal_steps[segment.index] : mesh.normals;
+          for (const std::uint32_t v : {triangle.v0, triangle.v1, triangle.v2}) {
+            __builtin_prefetch(&from[v]);
+            __builtin_prefetch(&to[v]);
+            if (!normals.empty()) __builtin_prefetch(&normals[v]);
+            if (moving_normals) __builtin_prefetch(&mesh.normal_steps[segment.index + 1][v]);
+          }
+          break;
+        }
         for (const std::uint32_t v : {triangle.v0, triangle.v1, triangle.v2}) {
           __builtin_prefetch(&mesh.vertices[v]);
           if (!mesh.normals.empty()) __builtin_prefetch(&mesh.normals[v]);
@@ -81,6 +100,7 @@ class HitPrefetch {
 
   const RenderScene& scene_;
   std::span<const Hit> hits_;
+  std::span<const float> times_;
 };
 
 }  // namespace rtpro

@@ -329,7 +329,7 @@ void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::spa
 void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::span<const float> times,
                    std::span<const Hit> hits, std::span<SurfacePoint> out) {
   if (times.empty()) return make_surfaces(scene, rays, hits, out);
-  const HitPrefetch prefetch(scene, hits);
+  const HitPrefetch prefetch(scene, hits, times);
   for (std::size_t i = 0; i < hits.size(); ++i) {
     prefetch.before(i);
     if (hits[i].valid()) make_surface_at(scene, rays[i], times[i], hits[i], out[i]);
