@@ -1,4 +1,5 @@
 #include "native_traversal.h"
+#include "placement_lanes.h"
 
 #include "backend_shapes.h"
 #include "triangle_leaves.h"
@@ -381,6 +382,31 @@ namespace {
 std::uint32_t enter_instance(const Instance& instance, const RayPacket& packet, bool timed, std::uint32_t lanes,
                              RayPacket& local, Ray (&local_rays)[kPacketSize]) {
   std::uint32_t entering = 0;
+  if (timed && instance.moving()) {
+    // The lanes' placements kPlacementLanes at a time (placement_at's, bit for bit).
+    unsigned lane_of[kPacketSize];
+    unsigned count = 0;
+    for (; lanes != 0; lanes &= lanes - 1) lane_of[count++] = static_cast<unsigned>(std::countr_zero(lanes));
+    for (unsigned first = 0; first < count; first += kPlacementLanes) {
+      const unsigned group = std::min(kPlacementLanes, count - first);
+      float times[kPlacementLanes];
+      for (unsigned g = 0; g < group; ++g) times[g] = packet.time[lane_of[first + g]];
+      Affine world_to_object[kPlacementLanes];
+      const unsigned placed = world_to_object_lanes(instance, times, group, world_to_object);
+      for (unsigned g = 0; g < group; ++g) {
+        if ((placed >> g & 1u) == 0) continue;
+        const unsigned k = lane_of[first + g];
+        const Ray ray = to_object_space(world_to_object[g], *packet.rays[k], packet.tmax[k]);
+        if (!is_traceable(ray)) continue;
+        local_rays[k] = ray;
+        local.set(k, local_rays[k], packet.tmax[k]);
+        local.time[k] = packet.time[k];
+        entering |= 1u << k;
+      }
+    }
+    if (entering != 0) local.finish_lanes(entering);
+    return entering;
+  }
   for (; lanes != 0; lanes &= lanes - 1) {
     const auto k = static_cast<unsigned>(std::countr_zero(lanes));
     const std::optional<Ray> ray = timed ? to_object_space_at(instance, *packet.rays[k], packet.time[k], packet.tmax[k])
