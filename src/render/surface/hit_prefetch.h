@@ -10,6 +10,7 @@
 #include "rtpro/scene/motion.h"
 #include "rtpro/scene/render_scene.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <span>
 #include <variant>
