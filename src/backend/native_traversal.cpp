@@ -7,6 +7,7 @@
 
 #include <immintrin.h>
 
+#include <algorithm>
 #include <bit>
 #include <chrono>
 #include <cmath>
