@@ -66,19 +66,21 @@ TEST_F(PlacementLanes, RandomMotionsGiveEachLanePlacementAtsMatrixToTheBit) {
   }
 }
 
-TEST_F(PlacementLanes, SingularAndIllConditionedPlacementsAreRefusedAsPlacementAtRefusesThem) {
-  Affine flat = Affine::scale({1.0f, 0.0f, 1.0f});             // singular at every time
-  Affine tiny = Affine::scale({1e-6f, 1e-6f, 1e-6f});          // det 1e-18 against scale 1e-6: refused
-  Affine turned = Affine::rotate({0.0f, 1.0f, 0.0f}, 180.0f);  // halfway to `Affine{}` the matrix collapses
-  Affine huge = Affine::scale({3e38f, 3e38f, 3e38f});          // its inverse's translation column overflows
-  huge.m[0][3] = 3e38f;
-  const Instance instances[] = {moving_instance({flat, flat}), moving_instance({tiny, Affine{}}),
-                                moving_instance({turned, Affine{}}), moving_instance({huge, Affine{}})};
+TEST_F(PlacementLanes, SingularAndOverflowingPlacementsAreRefusedAsPlacementAtRefusesThem) {
+  const Affine flat = Affine::scale({1.0f, 0.0f, 1.0f});             // singular at every time
+  const Affine turned = Affine::rotate({0.0f, 1.0f, 0.0f}, 180.0f);  // halfway to the identity: diag(0, 1, 0)
+  const Affine tiny = Affine::scale({1e-6f, 1e-6f, 1e-6f});          // regular: the test is relative to its scale
+  Affine overflowing = Affine::scale({1e-30f, 1e-30f, 1e-30f});      // its inverse moves by -1e60: not a float
+  overflowing.m[0][3] = 1e30f;
+  const Instance instances[] = {moving_instance({flat, flat}), moving_instance({turned, Affine{}}),
+                                moving_instance({tiny, Affine{}}), moving_instance({overflowing, overflowing})};
   const float times[kPlacementLanes] = {0.0f, 0.5f, 0.25f, 1.0f};
   for (const Instance& instance : instances) expect_lanes_match_placement_at(instance, times, kPlacementLanes);
   Affine lanes[kPlacementLanes];
   EXPECT_EQ(world_to_object_lanes(instances[0], times, kPlacementLanes, lanes), 0u);
-  EXPECT_EQ(world_to_object_lanes(instances[2], times, kPlacementLanes, lanes) & 0b0010u, 0u);  // t = 0.5
+  EXPECT_EQ(world_to_object_lanes(instances[1], times, kPlacementLanes, lanes), 0b1101u);  // not at t = 0.5
+  EXPECT_EQ(world_to_object_lanes(instances[2], times, kPlacementLanes, lanes), 0b1111u);
+  EXPECT_EQ(world_to_object_lanes(instances[3], times, kPlacementLanes, lanes), 0u);
 }
 
 TEST_F(PlacementLanes, NonFiniteStepsAreRefused) {
