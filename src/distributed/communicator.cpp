@@ -3,6 +3,7 @@
 #include "job_messages.h"
 #include "mpi_plugin_api.h"
 #include "rtpro/core/error.h"
+#include "rtpro/core/plugin_file.h"
 
 #include <dlfcn.h>
 
@@ -21,11 +22,7 @@ bool launched_by_mpirun() {
 }
 
 std::unique_ptr<Communicator> join_mpi_job() {
-  std::error_code error;
-  const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (error)
-    throw RuntimeError("cannot load MPI: cannot find rtpro's own folder (/proc/self/exe: " + error.message() + ")");
-  const std::filesystem::path file = executable.parent_path() / kMpiPluginFileName;
+  const std::filesystem::path file = plugin_beside_executable(kMpiPluginFileName, "MPI");
   // Global: Open MPI loads its own components with dlopen and needs its symbols visible to them.
   void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_GLOBAL);
   if (!handle)

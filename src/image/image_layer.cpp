@@ -7,6 +7,7 @@
 #include "direct_output.h"
 #include "image_layer_api.h"
 #include "rtpro/core/error.h"
+#include "rtpro/core/plugin_file.h"
 #include "rtpro/image/diff_image.h"
 #include "rtpro/image/texture_lookup.h"
 
@@ -22,17 +23,6 @@
 namespace rtpro {
 
 namespace {
-
-// Beside the executable, as the build puts it: found through the executable's own path, not the
-// current folder or the library search path, so the plugin always matches the executable.
-std::filesystem::path plugin_file() {
-  std::error_code error;
-  const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (error)
-    throw RuntimeError(std::string("cannot load the image layer: cannot find rtpro's own folder (/proc/self/exe: ") +
-                       error.message() + ")");
-  return executable.parent_path() / kImageLayerFileName;
-}
 
 // Debian's OpenImageIO pulls in some 260 shared libraries, linked with BIND_NOW: loading the plugin
 // binds about 155,000 symbol references at once, each looked up through the loaded objects in
@@ -52,7 +42,7 @@ void open_plugin_libraries(const std::filesystem::path& plugin) {
 }
 
 const ImageLayerApi* load_plugin() {
-  const std::filesystem::path file = plugin_file();
+  const std::filesystem::path file = plugin_beside_executable(kImageLayerFileName, "the image layer");
   open_plugin_libraries(file);
   // RTLD_LOCAL keeps OpenImageIO's symbols out of the global scope; RTLD_LAZY binds its function
   // calls on first use instead of all of them now. The handle is never closed: image buffers and
