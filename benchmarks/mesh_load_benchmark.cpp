@@ -109,7 +109,7 @@ fs::path write_dragon_glb() {
   const fs::path glb = fs::temp_directory_path() / "rtpro_benchmark_dragon.glb";
   const rtpro::TriangleMesh mesh = rtpro::load_mesh_file(dragon_ply()).mesh;
   std::string bin;
-  for (const rtpro::PaddedVertex& v : mesh.vertices) bin.append(reinterpret_cast<const char*>(&v), 12);
+  for (const rtpro::MeshVertex& v : mesh.vertices) bin.append(reinterpret_cast<const char*>(&v), 12);
   const std::size_t positions_bytes = bin.size();
   bin.append(reinterpret_cast<const char*>(mesh.triangles.data()), mesh.triangles.size() * 12);
   const rtpro::BBox b = mesh.bounds();

@@ -63,7 +63,7 @@ TriangleMesh random_triangles(std::mt19937& rng, int count, float extent) {
     const Vec3 center = uniform_point(rng, extent);
     for (int k = 0; k < 3; ++k) {
       const Vec3 p = center + uniform_point(rng, 0.2f * extent);
-      mesh.vertices.push_back({p.x, p.y, p.z, 0.0f});
+      mesh.vertices.push_back({p.x, p.y, p.z});
     }
     const auto base = static_cast<std::uint32_t>(3 * i);
     mesh.triangles.push_back({base, base + 1, base + 2});

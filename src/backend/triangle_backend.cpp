@@ -5,11 +5,11 @@
 namespace rtpro {
 
 std::optional<std::string> embree_refusal(const TriangleMesh& mesh) {
-  for (const PaddedVertex& v : mesh.vertices) {
+  for (const MeshVertex& v : mesh.vertices) {
     if (!within_traceable_range(v.position())) return "has a vertex outside Embree's coordinate range";
   }
-  for (const std::vector<PaddedVertex>& step : mesh.vertex_steps)
-    for (const PaddedVertex& v : step)
+  for (const VertexArray& step : mesh.vertex_steps)
+    for (const MeshVertex& v : step)
       if (!within_traceable_range(v.position())) return "moves a vertex outside Embree's coordinate range";
   const std::size_t vertex_count = mesh.vertices.size();
   for (const TriangleIndices& t : mesh.triangles) {
@@ -24,8 +24,8 @@ std::optional<std::string> embree_refusal(const TriangleMesh& mesh) {
 constexpr std::size_t kEmbreeSmallMeshVertices = 4096;
 constexpr unsigned kEmbreeSmallMeshSteps = 9;
 
-// A 16-byte vertex stride (x, y, z, pad) keeps Embree's rule that vertex buffers are readable 16
-// bytes past the last vertex.
+// Embree's rule that a vertex buffer be readable 16 bytes past its last vertex holds for the
+// shared arrays (VertexArray's allocator, mesh.h) and for buffers Embree allocates itself.
 EmbreeGeometry new_embree_geometry(RTCDevice device, const TriangleMesh& mesh, RTCBuildQuality quality) {
   EmbreeGeometry geometry(rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE));
   if (!geometry) return geometry;
@@ -39,13 +39,13 @@ EmbreeGeometry new_embree_geometry(RTCDevice device, const TriangleMesh& mesh, R
     // ray gathers at both steps.
     rtcSetGeometryTimeStepCount(g, kEmbreeSmallMeshSteps);
     for (unsigned step = 0; step < kEmbreeSmallMeshSteps; ++step) {
-      auto* vertices = static_cast<PaddedVertex*>(rtcSetNewGeometryBuffer(
-          g, RTC_BUFFER_TYPE_VERTEX, step, RTC_FORMAT_FLOAT3, sizeof(PaddedVertex), mesh.vertices.size()));
+      auto* vertices = static_cast<MeshVertex*>(rtcSetNewGeometryBuffer(
+          g, RTC_BUFFER_TYPE_VERTEX, step, RTC_FORMAT_FLOAT3, sizeof(MeshVertex), mesh.vertices.size()));
       if (vertices == nullptr) return EmbreeGeometry();
       const float time = static_cast<float>(step) / static_cast<float>(kEmbreeSmallMeshSteps - 1);
       for (std::uint32_t v = 0; v < mesh.vertices.size(); ++v) {
         const Vec3 p = mesh.vertex_at(v, time);
-        vertices[v] = {p.x, p.y, p.z, 0.0f};
+        vertices[v] = {p.x, p.y, p.z};
       }
     }
   } else if (mesh.moving()) {
@@ -53,10 +53,10 @@ EmbreeGeometry new_embree_geometry(RTCDevice device, const TriangleMesh& mesh, R
     rtcSetGeometryTimeStepCount(g, static_cast<unsigned>(mesh.vertex_steps.size()));
     for (unsigned step = 0; step < mesh.vertex_steps.size(); ++step)
       rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, step, RTC_FORMAT_FLOAT3, mesh.vertex_steps[step].data(), 0,
-                                 sizeof(PaddedVertex), mesh.vertex_steps[step].size());
+                                 sizeof(MeshVertex), mesh.vertex_steps[step].size());
   } else {
     rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh.vertices.data(), 0,
-                               sizeof(PaddedVertex), mesh.vertices.size());
+                               sizeof(MeshVertex), mesh.vertices.size());
   }
   rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.triangles.data(), 0,
                              sizeof(TriangleIndices), mesh.triangles.size());

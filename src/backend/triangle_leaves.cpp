@@ -69,7 +69,7 @@ TriangleLeaves build_triangle_leaves(const Group& group, const Bvh& bvh, bool en
       }
       if (mesh->vertex_steps.size() != leaves.motion_steps) continue;
       for (std::uint32_t step = 0; step < leaves.motion_steps; ++step) {
-        const std::vector<PaddedVertex>& at = mesh->vertex_steps[step];
+        const VertexArray& at = mesh->vertex_steps[step];
         write_column(leaves.motion_vertices.data() + std::size_t{step} * 9 * leaves.stride, leaves.stride, r,
                      {at[tri.v0].position(), at[tri.v1].position(), at[tri.v2].position()});
       }

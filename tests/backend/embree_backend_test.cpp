@@ -47,7 +47,7 @@ std::optional<float> reference_t(const Sphere& s, const Ray& ray) {
 // A unit right triangle in the z = 0 plane, two triangles forming the unit square.
 TriangleMesh unit_square() {
   TriangleMesh mesh;
-  mesh.vertices = {{0, 0, 0, 0}, {1, 0, 0, 0}, {0, 1, 0, 0}, {1, 1, 0, 0}};
+  mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
   mesh.triangles = {{0, 1, 2}, {1, 3, 2}};
   return mesh;
 }

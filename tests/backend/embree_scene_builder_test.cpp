@@ -22,7 +22,7 @@ CurveSet some_curves() {
 
 TriangleMesh a_triangle() {
   TriangleMesh mesh;
-  mesh.vertices = {{0, 0, 0, 0}, {1, 0, 0, 0}, {0, 1, 0, 0}};
+  mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   mesh.triangles = {{0, 1, 2}};
   return mesh;
 }

@@ -45,12 +45,12 @@ RenderScene moving_scene(int instances = 6) {
                                 {sphere.center, sphere.center + away, sphere.center - away * 0.5f});
   }
   auto& mesh = std::get<TriangleMesh>(scene.top.geometries[1]);
-  std::vector<PaddedVertex> out = mesh.vertices, back = mesh.vertices;
+  VertexArray out = mesh.vertices, back = mesh.vertices;
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     const Vec3 away = offset(rng, 0.3f);
     const Vec3 p = mesh.vertices[i].position();
-    out[i] = {p.x + away.x, p.y + away.y, p.z + away.z, 0.0f};
-    back[i] = {p.x - away.z, p.y + away.x, p.z, 0.0f};
+    out[i] = {p.x + away.x, p.y + away.y, p.z + away.z};
+    back[i] = {p.x - away.z, p.y + away.x, p.z};
   }
   mesh.vertex_steps = {mesh.vertices, out, back};
   for (std::size_t g = 2; g < scene.top.geometries.size(); ++g) {
@@ -73,7 +73,7 @@ RenderScene frozen_at(const RenderScene& scene, float time) {
   auto& mesh = std::get<TriangleMesh>(frozen.top.geometries[1]);
   for (std::uint32_t i = 0; i < mesh.vertices.size(); ++i) {
     const Vec3 p = mesh.vertex_at(i, time);
-    mesh.vertices[i] = {p.x, p.y, p.z, 0.0f};
+    mesh.vertices[i] = {p.x, p.y, p.z};
   }
   mesh.vertex_steps.clear();
   for (std::size_t g = 2; g < frozen.top.geometries.size(); ++g) {

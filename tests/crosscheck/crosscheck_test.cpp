@@ -84,7 +84,7 @@ TEST(Crosscheck, InstancedScenesAgreeWithinTolerance) {
 TEST(Crosscheck, AOneTriangleSceneAgreesThoughRandomRaysStartOnIt) {
   RenderScene scene = test::empty_scene();
   TriangleMesh triangle;
-  triangle.vertices = {{-4.0f, -3.0f, 0.0f, 0.0f}, {4.0f, -3.0f, 0.0f, 0.0f}, {0.0f, 3.0f, 0.0f, 0.0f}};
+  triangle.vertices = {{-4.0f, -3.0f, 0.0f}, {4.0f, -3.0f, 0.0f}, {0.0f, 3.0f, 0.0f}};
   triangle.triangles = {{0, 1, 2}};
   scene.top.geometries.emplace_back(std::move(triangle));
   ASSERT_EQ(scene.bounds().extent().z, 0.0f);

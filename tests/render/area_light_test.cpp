@@ -47,7 +47,7 @@ RenderScene irradiance_probe(const Light& light, int spp) {
 void add_blocker(RenderScene& scene, float z, float edge) {
   TriangleMesh blocker;
   for (const auto& [x, y] : {std::pair{-100.0f, -100.0f}, {edge, -100.0f}, {edge, 100.0f}, {-100.0f, 100.0f}})
-    blocker.vertices.push_back({x, y, z, 0.0f});
+    blocker.vertices.push_back({x, y, z});
   blocker.triangles = {{0, 1, 2}, {0, 2, 3}};
   scene.top.geometries.emplace_back(std::move(blocker));
 }

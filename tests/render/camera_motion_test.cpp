@@ -35,7 +35,7 @@ RenderScene quad_scene(const std::string& camera, const std::string& shutter) {
       "emission: [1, 1, 1]}}\n";
   RenderScene scene = build_render_scene(parse_scene_text(text, "camera_motion.yaml", {}));
   TriangleMesh quad;
-  quad.vertices = {{-0.4f, -1, 0, 0}, {0.4f, -1, 0, 0}, {0.4f, 1, 0, 0}, {-0.4f, 1, 0, 0}};
+  quad.vertices = {{-0.4f, -1, 0}, {0.4f, -1, 0}, {0.4f, 1, 0}, {-0.4f, 1, 0}};
   quad.triangles = {{0, 2, 1}, {0, 3, 2}};  // facing the camera (−z)
   quad.material = 1;
   scene.top.geometries.emplace_back(std::move(quad));

@@ -87,7 +87,7 @@ class TestScene {
     Hit hit;
     hit.geom_id = static_cast<std::uint32_t>(scene_.top.geometries.size());
     for (std::uint32_t t = 0; t < triangles.size(); ++t) {
-      for (const Vec3& p : triangles[t]) mesh.vertices.push_back({p.x, p.y, p.z, 0.0f});
+      for (const Vec3& p : triangles[t]) mesh.vertices.push_back({p.x, p.y, p.z});
       mesh.triangles.push_back({3 * t, 3 * t + 1, 3 * t + 2});
       mesh.triangle_materials.push_back(add_material(emissions[t]));
       hit.prim_id = t;
@@ -102,7 +102,7 @@ class TestScene {
   // inverse transpose, points (as make_surface sees it, mirroring transforms included).
   void add_instanced_triangle(const std::array<Vec3, 3>& object, const Affine& placement, const Emission& emission) {
     TriangleMesh mesh;
-    for (const Vec3& p : object) mesh.vertices.push_back({p.x, p.y, p.z, 0.0f});
+    for (const Vec3& p : object) mesh.vertices.push_back({p.x, p.y, p.z});
     mesh.triangles.push_back({0, 1, 2});
     mesh.material = add_material(emission);
     const Affine to_object = *inverse(placement);

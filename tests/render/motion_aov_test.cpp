@@ -36,7 +36,7 @@ RenderScene camera_scene(const std::string& integrator, const std::string& shutt
 // A 1 × 1 square in the plane z = 0 centred on the origin, facing the camera.
 TriangleMesh square() {
   TriangleMesh mesh;
-  mesh.vertices = {{-0.5f, -0.5f, 0, 0}, {0.5f, -0.5f, 0, 0}, {0.5f, 0.5f, 0, 0}, {-0.5f, 0.5f, 0, 0}};
+  mesh.vertices = {{-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}};
   mesh.triangles = {{0, 2, 1}, {0, 3, 2}};
   mesh.material = 1;
   return mesh;
@@ -86,9 +86,9 @@ TEST(MotionAov, MovingShapesShowTheirFilmVelocity) {
 
       RenderScene deformed = camera_scene(integrator);
       TriangleMesh mesh = square();
-      std::vector<PaddedVertex> before = mesh.vertices, after = mesh.vertices;
-      for (PaddedVertex& v : before) v.x -= 0.4f;
-      for (PaddedVertex& v : after) v.x += 0.4f;
+      VertexArray before = mesh.vertices, after = mesh.vertices;
+      for (MeshVertex& v : before) v.x -= 0.4f;
+      for (MeshVertex& v : after) v.x += 0.4f;
       mesh.vertex_steps = {before, after};
       deformed.top.geometries.emplace_back(std::move(mesh));
       expect_motion(centre_motion(render_motion(deformed, kind)), -16.0f, 0.0f, "deforming mesh, " + what);

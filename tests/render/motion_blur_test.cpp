@@ -38,15 +38,15 @@ RenderScene camera_scene(int width, int height, float pixel, int spp, const std:
 // A rectangle [x0, x1] × [y0, y1] in the plane z = 0, emitting towards the camera.
 TriangleMesh quad(float x0, float x1, float y0, float y1) {
   TriangleMesh mesh;
-  mesh.vertices = {{x0, y0, 0, 0}, {x1, y0, 0, 0}, {x1, y1, 0, 0}, {x0, y1, 0, 0}};
+  mesh.vertices = {{x0, y0, 0}, {x1, y0, 0}, {x1, y1, 0}, {x0, y1, 0}};
   mesh.triangles = {{0, 2, 1}, {0, 3, 2}};  // facing the camera (−z)
   mesh.material = 1;
   return mesh;
 }
 
-std::vector<PaddedVertex> shifted(const std::vector<PaddedVertex>& vertices, float dx) {
-  std::vector<PaddedVertex> out = vertices;
-  for (PaddedVertex& v : out) v.x += dx;
+VertexArray shifted(const VertexArray& vertices, float dx) {
+  VertexArray out = vertices;
+  for (MeshVertex& v : out) v.x += dx;
   return out;
 }
 
@@ -235,7 +235,7 @@ TEST(MotionBlur, MovingSpheresAreBitIdenticalAcrossBackendsAndThreads) {
 TEST(MotionBlur, DeformingTrianglesAgreeAcrossBackendsWithinTheTolerance) {
   RenderScene scene = camera_scene(48, 32, 0.1f, 8);
   TriangleMesh mesh = quad(-1.0f, 0.5f, -0.8f, 0.8f);
-  std::vector<PaddedVertex> bent = mesh.vertices;
+  VertexArray bent = mesh.vertices;
   bent[2].y += 0.6f;
   bent[2].z -= 1.0f;
   mesh.vertex_steps = {mesh.vertices, bent, shifted(bent, 0.8f)};

@@ -38,9 +38,9 @@ RenderScene scene_at_scale(const ScaleCase& c, std::uint32_t seed) {
         s.radius *= c.extent / 4.0f;
       }
     } else if (auto* mesh = std::get_if<TriangleMesh>(&g)) {
-      for (PaddedVertex& v : mesh->vertices) {
+      for (MeshVertex& v : mesh->vertices) {
         const Vec3 p = placement.apply_point(v.position());
-        v = {p.x, p.y, p.z, 0.0f};
+        v = {p.x, p.y, p.z};
       }
     } else if (auto* instance = std::get_if<Instance>(&g)) {
       instance->object_to_world = compose(placement, instance->object_to_world);

@@ -26,7 +26,7 @@ TEST(LoadedModelHandover, AMeshFileSceneMovesItsMeshIntoTheRenderScene) {
   SceneDescription description = parse_scene_file(test::write_file("tri.obj", kTriangle));
   ASSERT_EQ(description.world.meshes.size(), 1u);
   ASSERT_TRUE(description.world.meshes[0].loaded);
-  const PaddedVertex* stored = description.world.meshes[0].loaded->mesh.vertices.data();
+  const MeshVertex* stored = description.world.meshes[0].loaded->mesh.vertices.data();
   const TriangleIndices* indices = description.world.meshes[0].loaded->mesh.triangles.data();
 
   const RenderScene scene = build_render_scene_taking_models(description);
@@ -37,7 +37,7 @@ TEST(LoadedModelHandover, AMeshFileSceneMovesItsMeshIntoTheRenderScene) {
 
 TEST(LoadedModelHandover, TheConstBuildCopiesAndCanBuildAgain) {
   const SceneDescription description = parse_scene_file(test::write_file("tri.obj", kTriangle));
-  const PaddedVertex* stored = description.world.meshes[0].loaded->mesh.vertices.data();
+  const MeshVertex* stored = description.world.meshes[0].loaded->mesh.vertices.data();
   const RenderScene first = build_render_scene(description);
   const RenderScene second = build_render_scene(description);
   EXPECT_NE(top_mesh(first).vertices.data(), stored);
@@ -53,7 +53,7 @@ TEST(LoadedModelHandover, AGltfSceneMovesItsMeshesIntoThePrototypes) {
   SceneDescription description = parse_scene_file(gltf.write("model"));
   ASSERT_EQ(description.world.gltfs.size(), 1u);
   ASSERT_TRUE(description.world.gltfs[0].loaded);
-  const PaddedVertex* stored = description.world.gltfs[0].loaded->meshes[0].vertices.data();
+  const MeshVertex* stored = description.world.gltfs[0].loaded->meshes[0].vertices.data();
 
   const RenderScene scene = build_render_scene_taking_models(description);
   ASSERT_EQ(scene.prototypes.size(), 1u);

@@ -93,7 +93,7 @@ TEST(SubdivisionRefine, LimitNormalsPointOutOfAClosedCage) {
 
 float largest_coordinate(const TriangleMesh& mesh) {
   float m = 0.0f;
-  for (const PaddedVertex& v : mesh.vertices) m = std::max({m, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  for (const MeshVertex& v : mesh.vertices) m = std::max({m, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
   return m;
 }
 
@@ -109,7 +109,7 @@ TEST(SubdivisionRefine, InfinitelySharpCreasesKeepTheCageEdges) {
   // A point halfway along the cage edge between vertices 0 and 1 stays on that edge.
   const Vec3 middle(0.0f, -0.5f, -0.5f);
   float nearest = INFINITY;
-  for (const PaddedVertex& v : sharp.vertices) nearest = std::min(nearest, length(v.position() - middle));
+  for (const MeshVertex& v : sharp.vertices) nearest = std::min(nearest, length(v.position() - middle));
   EXPECT_LT(nearest, 1e-6f);
 }
 
@@ -118,7 +118,7 @@ TEST(SubdivisionRefine, ASemiSharpCornerPullsTheSurfaceTowardsIt) {
   const auto reach = [&](const SubdivisionDesc& d) {
     const TriangleMesh mesh = refine_cage(check_cage(unit_cube(), d, "c"), d.scheme, 3, "c").mesh;
     float r = 0.0f;
-    for (const PaddedVertex& v : mesh.vertices) r = std::max(r, v.x + v.y + v.z);
+    for (const MeshVertex& v : mesh.vertices) r = std::max(r, v.x + v.y + v.z);
     return r;
   };
   const float smooth = reach(desc);

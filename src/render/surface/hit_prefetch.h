@@ -70,8 +70,8 @@ class HitPrefetch {
         const TriangleIndices& triangle = mesh.triangles[hit.prim_id];
         if (mesh.moving() && !times_.empty()) {
           const MotionSegment segment = motion_segment(times_[i], mesh.vertex_steps.size());
-          const std::vector<PaddedVertex>& from = mesh.vertex_steps[segment.index];
-          const std::vector<PaddedVertex>& to = mesh.vertex_steps[segment.index + 1];
+          const VertexArray& from = mesh.vertex_steps[segment.index];
+          const VertexArray& to = mesh.vertex_steps[segment.index + 1];
           const bool moving_normals = !mesh.normal_steps.empty();
           const std::vector<Vec3>& normals = moving_normals ? mesh.normal_steps[segment.index] : mesh.normals;
           for (const std::uint32_t v : {triangle.v0, triangle.v1, triangle.v2}) {

@@ -103,15 +103,16 @@ template <bool kAllFlat>
 // The helpers below are always inlined: a lambda or helper the compiler leaves out of line is
 // compiled once for the baseline target and called from the AVX2 clones too.
 
-// Corner `corner` of four triangles: a padded vertex is one 16-byte load, and four of them
-// transpose into x, y and z lanes.
+// Corner `corner` of four triangles: a vertex is one 16-byte load (x, y, z and whatever follows:
+// a vertex array has 16 readable bytes past its end, mesh.h), and four of them transpose into x, y
+// and z lanes; the fourth lane is dropped.
 [[gnu::always_inline]] inline Lanes3 corner_positions(const TriangleMesh* const meshes[4],
                                                       const TriangleIndices* const triangles[4],
                                                       std::uint32_t TriangleIndices::*corner) {
-  __m128 a = _mm_load_ps(&meshes[0]->vertices[triangles[0]->*corner].x);
-  __m128 b = _mm_load_ps(&meshes[1]->vertices[triangles[1]->*corner].x);
-  __m128 c = _mm_load_ps(&meshes[2]->vertices[triangles[2]->*corner].x);
-  __m128 d = _mm_load_ps(&meshes[3]->vertices[triangles[3]->*corner].x);
+  __m128 a = _mm_loadu_ps(&meshes[0]->vertices[triangles[0]->*corner].x);
+  __m128 b = _mm_loadu_ps(&meshes[1]->vertices[triangles[1]->*corner].x);
+  __m128 c = _mm_loadu_ps(&meshes[2]->vertices[triangles[2]->*corner].x);
+  __m128 d = _mm_loadu_ps(&meshes[3]->vertices[triangles[3]->*corner].x);
   _MM_TRANSPOSE4_PS(a, b, c, d);
   return Lanes3{a, b, c};
 }

@@ -62,7 +62,7 @@ void displace_mesh(RefinedMesh& refined, const DisplacementDesc& desc, const Sca
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     const std::uint32_t p = refined.surface_vertex[i];
     const Vec3 moved = mesh.vertex(std::uint32_t(i)) + direction[p] * offset[p];
-    mesh.vertices[i] = {moved.x, moved.y, moved.z, 0.0f};
+    mesh.vertices[i] = {moved.x, moved.y, moved.z};
   }
 
   std::vector<Vec3> normal(points, Vec3(0.0f));

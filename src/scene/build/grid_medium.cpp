@@ -50,7 +50,7 @@ TriangleMesh bounding_box_mesh(const GridMedium& medium, std::uint32_t material)
     const Vec3 corner{(i & 1) ? box.upper.x : box.lower.x, (i & 2) ? box.upper.y : box.lower.y,
                       (i & 4) ? box.upper.z : box.lower.z};
     const Vec3 p = medium.grid->density_to_world.apply_point(corner);
-    mesh.vertices.push_back({p.x, p.y, p.z, 0.0f});
+    mesh.vertices.push_back({p.x, p.y, p.z});
   }
   // Two triangles a face, counter-clockwise seen from outside (the geometric normal is
   // (v1 - v0) × (v2 - v0)): -x, +x, -y, +y, -z, +z.

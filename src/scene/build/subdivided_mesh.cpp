@@ -42,7 +42,7 @@ PolygonCage cage_of_triangles(const TriangleMesh& mesh) {
   std::map<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, std::uint32_t> welded;
   std::vector<std::uint32_t> point_of(mesh.vertices.size());
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-    const PaddedVertex& v = mesh.vertices[i];
+    const MeshVertex& v = mesh.vertices[i];
     const auto key = std::make_tuple(std::bit_cast<std::uint32_t>(v.x), std::bit_cast<std::uint32_t>(v.y),
                                      std::bit_cast<std::uint32_t>(v.z));
     const auto [it, added] = welded.try_emplace(key, std::uint32_t(cage.positions.size()));

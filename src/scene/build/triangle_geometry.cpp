@@ -12,7 +12,7 @@ BBox primitive_bounds_of(const TriangleMesh& mesh, std::uint32_t prim) { return 
 
 BBox primitive_bounds_at_step(const TriangleMesh& mesh, std::uint32_t prim, std::uint32_t step) {
   const TriangleIndices& tri = mesh.triangles[prim];
-  const std::vector<PaddedVertex>& vertices = mesh.vertex_steps[step];
+  const VertexArray& vertices = mesh.vertex_steps[step];
   BBox b;
   for (std::uint32_t v : {tri.v0, tri.v1, tri.v2}) b.extend(vertices[v].position());
   return b;

@@ -21,7 +21,7 @@ TriangleMesh deform_mesh(const TriangleMesh& mesh, const MeshDeformation& deform
           std::fabs(p.z) <= kMaxAbsCoordinate))
       throw InputError(SourceLocation{file}, where + ": posed vertex " + std::to_string(v) +
                                                  " lies beyond the supported magnitude 1e16 or is not finite");
-    out.vertices[v] = {p.x, p.y, p.z, 0.0f};
+    out.vertices[v] = {p.x, p.y, p.z};
   }
   if (deformation.smooth_normals) {
     out.normals = area_weighted_vertex_normals(out.vertices, out.triangles);

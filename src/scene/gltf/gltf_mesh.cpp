@@ -206,7 +206,7 @@ class MeshBuilder {
 
   void append_shared(const Primitive& p, bool normals, bool uvs, bool colors) {
     const auto base = std::uint32_t(out_.vertices.size());
-    for (const Vec3& v : p.positions) out_.vertices.push_back({v.x, v.y, v.z, 0.0f});
+    for (const Vec3& v : p.positions) out_.vertices.push_back({v.x, v.y, v.z});
     if (normals)
       for (const Vec3& n : p.normals) out_.normals.push_back(unit_or(n, Vec3(0, 0, 1)));
     if (uvs) append_or_fill(out_.uvs, p.uvs, p.positions.size(), TexCoord{0.0f, 0.0f});
@@ -240,7 +240,7 @@ class MeshBuilder {
       const Vec3 face =
           unit_or(cross(p.positions[t.v1] - p.positions[t.v0], p.positions[t.v2] - p.positions[t.v0]), Vec3(0, 0, 1));
       for (const std::uint32_t v : {t.v0, t.v1, t.v2}) {
-        out_.vertices.push_back({p.positions[v].x, p.positions[v].y, p.positions[v].z, 0.0f});
+        out_.vertices.push_back({p.positions[v].x, p.positions[v].y, p.positions[v].z});
         out_.normals.push_back(face);
         if (uvs) out_.uvs.push_back(p.uvs.empty() ? TexCoord{0.0f, 0.0f} : p.uvs[v]);
         if (colors) out_.colors.push_back(p.colors.empty() ? Color(1.0f, 1.0f, 1.0f) : p.colors[v]);

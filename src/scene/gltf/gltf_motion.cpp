@@ -28,16 +28,14 @@ class StatesOverShutter {
   std::map<double, gltf::NodeState> states_;
 };
 
-bool vertices_equal(const std::vector<PaddedVertex>& a, const std::vector<PaddedVertex>& b) {
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const PaddedVertex& p, const PaddedVertex& q) {
-    return p.x == q.x && p.y == q.y && p.z == q.z;
-  });
+bool vertices_equal(const VertexArray& a, const VertexArray& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                    [](const MeshVertex& p, const MeshVertex& q) { return p.x == q.x && p.y == q.y && p.z == q.z; });
 }
 
 // Whether every vertex of `middle` lies within `tolerance` (per coordinate) of the midpoint of its
 // positions in `before` and `after`, computed as the backends interpolate.
-bool on_chords(const std::vector<PaddedVertex>& before, const std::vector<PaddedVertex>& middle,
-               const std::vector<PaddedVertex>& after, double tolerance) {
+bool on_chords(const VertexArray& before, const VertexArray& middle, const VertexArray& after, double tolerance) {
   for (std::size_t i = 0; i < middle.size(); ++i) {
     const Vec3 chord = motion_lerp(before[i].position(), after[i].position(), 0.5f);
     const Vec3 d = middle[i].position() - chord;

@@ -11,15 +11,15 @@ namespace rtpro {
 // Advises 2 MB pages for the whole pages inside [data, data + bytes); small ranges are left alone.
 void advise_huge_pages(const void* data, std::size_t bytes);
 
-template <typename T>
-void reserve_large(std::vector<T>& v, std::size_t n) {
+template <typename T, typename Allocator>
+void reserve_large(std::vector<T, Allocator>& v, std::size_t n) {
   v.reserve(n);
   advise_huge_pages(v.data(), n * sizeof(T));
 }
 
 // Resizes an empty vector to n value-initialised elements.
-template <typename T>
-void resize_large(std::vector<T>& v, std::size_t n) {
+template <typename T, typename Allocator>
+void resize_large(std::vector<T, Allocator>& v, std::size_t n) {
   reserve_large(v, n);
   v.resize(n);
 }

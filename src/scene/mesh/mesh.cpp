@@ -11,16 +11,16 @@ BBox TriangleMesh::triangle_bounds(std::uint32_t t) const {
   b.extend(vertex(tri.v1));
   b.extend(vertex(tri.v2));
   // Vertices move on straight lines between steps: the steps' boxes hold the whole motion.
-  for (const std::vector<PaddedVertex>& step : vertex_steps)
+  for (const VertexArray& step : vertex_steps)
     for (std::uint32_t v : {tri.v0, tri.v1, tri.v2}) b.extend(step[v].position());
   return b;
 }
 
 BBox TriangleMesh::bounds() const {
   BBox b;
-  for (const PaddedVertex& v : vertices) b.extend(v.position());
-  for (const std::vector<PaddedVertex>& step : vertex_steps)
-    for (const PaddedVertex& v : step) b.extend(v.position());
+  for (const MeshVertex& v : vertices) b.extend(v.position());
+  for (const VertexArray& step : vertex_steps)
+    for (const MeshVertex& v : step) b.extend(v.position());
   return b;
 }
 
@@ -37,14 +37,14 @@ Vec3 TriangleMesh::normal_at(std::uint32_t i, float time) const {
 }
 
 std::size_t TriangleMesh::memory_bytes() const {
-  return vertices.capacity() * sizeof(PaddedVertex) + triangles.capacity() * sizeof(TriangleIndices) +
+  return vertices.capacity() * sizeof(MeshVertex) + triangles.capacity() * sizeof(TriangleIndices) +
          normals.capacity() * sizeof(Vec3) + triangle_materials.capacity() * sizeof(std::uint32_t) +
          uvs.capacity() * sizeof(TexCoord) + colors.capacity() * sizeof(Color) + motion_memory_bytes();
 }
 
 std::size_t TriangleMesh::motion_memory_bytes() const {
   std::size_t bytes = 0;
-  for (const auto& step : vertex_steps) bytes += step.capacity() * sizeof(PaddedVertex);
+  for (const auto& step : vertex_steps) bytes += step.capacity() * sizeof(MeshVertex);
   for (const auto& step : normal_steps) bytes += step.capacity() * sizeof(Vec3);
   return bytes;
 }

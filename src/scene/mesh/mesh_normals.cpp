@@ -27,7 +27,7 @@ std::string repaired_normals_warning(const std::string& file, std::size_t repair
          " zero or not finite; replaced by the normals of the faces around " + (repaired == 1 ? "it" : "them");
 }
 
-std::vector<Vec3> area_weighted_vertex_normals(const std::vector<PaddedVertex>& vertices,
+std::vector<Vec3> area_weighted_vertex_normals(const VertexArray& vertices,
                                                const std::vector<TriangleIndices>& triangles) {
   std::vector<Vec3> normals;
   resize_large(normals, vertices.size());

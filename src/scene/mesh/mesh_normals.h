@@ -19,7 +19,7 @@ Vec3 unit_or(const Vec3& v, const Vec3& fallback);
 // it. Vertices used by no triangle, or only by zero-area ones, get +z. Each vertex sums its
 // triangles in triangle order, so the result depends on nothing but the arrays, not on the number
 // of threads.
-std::vector<Vec3> area_weighted_vertex_normals(const std::vector<PaddedVertex>& vertices,
+std::vector<Vec3> area_weighted_vertex_normals(const VertexArray& vertices,
                                                const std::vector<TriangleIndices>& triangles);
 
 // Whether `n` can be a shading normal: finite and not zero.

@@ -63,9 +63,8 @@ struct ShadingVertices {
   std::size_t size(std::size_t positions) const { return position_of.empty() ? positions : position_of.size(); }
 };
 
-std::vector<PaddedVertex> gather_positions(const std::vector<PaddedVertex>& positions, const ShadingVertices& shading,
-                                           std::size_t count) {
-  std::vector<PaddedVertex> vertices;
+VertexArray gather_positions(const VertexArray& positions, const ShadingVertices& shading, std::size_t count) {
+  VertexArray vertices;
   reserve_large(vertices, count);
   for (std::uint32_t v = 0; v < count; ++v) vertices.push_back(positions[shading.position(v)]);
   return vertices;

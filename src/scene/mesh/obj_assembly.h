@@ -17,10 +17,10 @@ struct TriangleRun {
 };
 
 struct MeshParts {
-  std::vector<PaddedVertex> positions;  // the file's v lines, in order
-  std::vector<Vec3> normals;            // the file's vn lines, in order
-  std::vector<TexCoord> texcoords;      // the file's vt lines, in order
-  std::vector<Color> colors;            // per position, or empty
+  VertexArray positions;            // the file's v lines, in order
+  std::vector<Vec3> normals;        // the file's vn lines, in order
+  std::vector<TexCoord> texcoords;  // the file's vt lines, in order
+  std::vector<Color> colors;        // per position, or empty
   std::vector<TriangleIndices> triangle_positions;
   std::vector<TriangleIndices> triangle_normals;    // per triangle when the file's normals are used
   std::vector<TriangleIndices> triangle_texcoords;  // per triangle when texture coordinates are kept

@@ -21,10 +21,10 @@ void for_each_face_in_order(const Chunk& chunk, TriangleFace&& triangle_face, Po
 }  // namespace
 
 PolygonCage gather_cage(const std::vector<Chunk>& chunks, const TriangleIndices* triangle_slots,
-                        const std::vector<PaddedVertex>& positions, const std::vector<TexCoord>* texcoords) {
+                        const VertexArray& positions, const std::vector<TexCoord>* texcoords) {
   PolygonCage cage;
   cage.positions.reserve(positions.size());
-  for (const PaddedVertex& v : positions) cage.positions.push_back(v.position());
+  for (const MeshVertex& v : positions) cage.positions.push_back(v.position());
   if (texcoords) cage.uvs = *texcoords;
   for (const Chunk& chunk : chunks) {
     const TriangleIndices* slots = triangle_slots + chunk.start.faces;

@@ -13,7 +13,7 @@ namespace rtpro::obj {
 // runs before triangulate_polygons() frees those. `texcoords`: the file's vt lines when every
 // corner has one, else null (the cage then has no uvs).
 PolygonCage gather_cage(const std::vector<Chunk>& chunks, const TriangleIndices* triangle_slots,
-                        const std::vector<PaddedVertex>& positions, const std::vector<TexCoord>* texcoords);
+                        const VertexArray& positions, const std::vector<TexCoord>* texcoords);
 
 // Each face's material: that of the first triangle its face became in `mesh` (`offsets`: the
 // chunks' first triangles), once the polygons are triangulated.

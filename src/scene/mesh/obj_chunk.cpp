@@ -72,7 +72,7 @@ class ChunkParser {
              "coordinate " + std::string(word_at(number_begin, end_)) + " is beyond the supported magnitude 1e16");
     }
     const std::uint32_t position = std::uint32_t(seen_.positions++);
-    out_.positions[position] = PaddedVertex{xyz[0], xyz[1], xyz[2], 0.0f};
+    out_.positions[position] = MeshVertex{xyz[0], xyz[1], xyz[2]};
     p = skip_blanks(p, end_);
     if (at_line_end(p)) return line_end(p);  // the common case: nothing more
     // A 4th number is the rational weight w (validated, unused), 3 more a vertex colour (a common

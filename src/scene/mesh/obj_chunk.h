@@ -129,7 +129,7 @@ void count_chunk(Chunk& chunk);
 
 // Where parse_chunk() writes: slot chunk.start.positions + i for the chunk's i-th `v`, and so on.
 struct Destination {
-  PaddedVertex* positions;
+  MeshVertex* positions;
   Vec3* normals;
   TexCoord* texcoords;
   TriangleIndices* triangles;  // chunk.counts.faces slots from chunk.start.faces
@@ -141,6 +141,6 @@ void parse_chunk(Chunk& chunk, const Destination& out);
 
 // Triangulates the chunk's polygons (convex: a fan; concave: ear clipping) once `positions` holds
 // every vertex of the file. Triangles with a repeated position or zero area are dropped and counted.
-void triangulate_polygons(Chunk& chunk, const std::vector<PaddedVertex>& positions);
+void triangulate_polygons(Chunk& chunk, const VertexArray& positions);
 
 }  // namespace rtpro::obj

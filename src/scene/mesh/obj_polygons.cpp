@@ -7,7 +7,7 @@
 
 namespace rtpro::obj {
 
-void triangulate_polygons(Chunk& chunk, const std::vector<PaddedVertex>& positions) {
+void triangulate_polygons(Chunk& chunk, const VertexArray& positions) {
   std::vector<Vec3> points;
   std::vector<LocalTriangle> local;
   const bool normals = chunk.every_corner_has_normal, texcoords = chunk.every_corner_has_texcoord;

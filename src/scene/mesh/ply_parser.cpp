@@ -25,7 +25,7 @@ using namespace ply;
 namespace {
 
 struct PlyMesh {
-  std::vector<PaddedVertex> vertices;
+  VertexArray vertices;
   std::vector<Vec3> normals;  // per vertex when the file has nx, ny, nz
   std::vector<TexCoord> uvs;  // per vertex when the file has u, v (or s, t)
   std::vector<Color> colors;  // per vertex when the file has red, green, blue
@@ -153,7 +153,7 @@ class BodyReader {
       }
       r_.end_element();
       const auto at = [&values](int k) { return float(values[std::size_t(k)]); };
-      mesh_.vertices.push_back({at(axes[0]), at(axes[1]), at(axes[2]), 0.0f});
+      mesh_.vertices.push_back({at(axes[0]), at(axes[1]), at(axes[2])});
       if (has_normals) mesh_.normals.emplace_back(at(normal_axes[0]), at(normal_axes[1]), at(normal_axes[2]));
       if (uv[0] >= 0) mesh_.uvs.push_back({at(uv[0]), at(uv[1])});
       if (has_colors) {

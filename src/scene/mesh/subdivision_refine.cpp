@@ -206,7 +206,7 @@ RefinedMesh refine_cage(const CheckedCage& checked, SubdivisionScheme scheme, in
   mesh.vertices.reserve(vertex_of_output.size());
   for (const int v : vertex_of_output) {
     const Point3& p = position[std::size_t(v)];
-    mesh.vertices.push_back({p.c[0], p.c[1], p.c[2], 0.0f});
+    mesh.vertices.push_back({p.c[0], p.c[1], p.c[2]});
   }
 
   // Each refined face's cage face, for its material.
