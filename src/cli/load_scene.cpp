@@ -22,8 +22,10 @@ void add_environment_image(RenderCost& cost, const SceneDescription& scene) {
 
 // Subdivision surfaces are made while the scene is built: they may take what the estimate left of
 // the budget, and read their displacement textures through the image layer.
-SceneBuildOptions build_options(const MemoryBudget& memory, const RenderCost& cost) {
+SceneBuildOptions build_options(const SceneLoad& load, const RenderCost& cost) {
+  const MemoryBudget& memory = load.memory;
   SceneBuildOptions options;
+  options.compact_normals = load.compact_normals;
   options.geometry_budget =
       std::max<std::uint64_t>(memory.bytes > cost.total_bytes ? memory.bytes - cost.total_bytes : 0, 1);
   options.budget_source = memory.source;
@@ -58,8 +60,7 @@ LoadedScene load_scene(const SceneLoad& load, Log* log,
                  format_bytes(load.memory.bytes));
   // A model read while the scene was parsed moves into the render scene: a copy would double the
   // mesh's memory while the BVH is built.
-  loaded.scene =
-      build_render_scene_taking_models(loaded.description, &loaded.report, build_options(load.memory, loaded.cost));
+  loaded.scene = build_render_scene_taking_models(loaded.description, &loaded.report, build_options(load, loaded.cost));
   if (log) {
     for (const std::string& note : loaded.description.notes) log->info(note);
     if (const auto warning = unlit_scene_warning(loaded.scene)) log->warning(*warning);

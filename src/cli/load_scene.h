@@ -27,6 +27,7 @@ struct SceneLoad {
   // `region_text` is how the command line spelled it, for the message.
   std::optional<PixelRegion> region = std::nullopt;
   std::string region_text = {};
+  bool compact_normals = false;  // --compact-normals: SceneBuildOptions::compact_normals
 };
 
 struct LoadedScene {

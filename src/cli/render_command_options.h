@@ -49,7 +49,8 @@ struct RenderCommandOptions {
   int min_samples = 0;           // 0: automatic (adaptive_sampling.h)
   std::string noise_metric = "cycles";
   BackendOptions backend_options;  // Embree settings from the command line; threads and memory set later
-  std::string max_memory_mb;       // MiB; empty: the default budget (see parse_memory_budget)
+  bool compact_normals = false;
+  std::string max_memory_mb;  // MiB; empty: the default budget (see parse_memory_budget)
 };
 
 // Registers every option of `rtpro render` on `cmd`, writing into `o` (which must outlive it).

@@ -40,6 +40,8 @@ JobIdentity render_job_identity(const SceneDescription& description, const Scene
     identity.set("embree", "quality " + quality_name(settings.backend_options.embree_quality) +
                                (settings.backend_options.embree_robust ? ", robust" : ", not robust") +
                                (settings.backend_options.embree_compact ? ", compact" : ""));
+  // Only when set: journals of renders without it keep their identity.
+  if (settings.compact_normals) identity.set("normals", "compact (octahedral)");
   const PixelRegion& r = settings.region;
   identity.set("region", std::to_string(r.x0) + "," + std::to_string(r.y0) + "," + std::to_string(r.x1) + "," +
                              std::to_string(r.y1));

@@ -28,6 +28,7 @@ struct RenderJobSettings {
   int tile_size = 0;
   std::vector<std::string> channels;
   AdaptiveSampling adaptive;
+  bool compact_normals = false;
 };
 
 JobIdentity render_job_identity(const SceneDescription& description, const SceneBuildReport& report,

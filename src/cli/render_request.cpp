@@ -151,7 +151,8 @@ RenderRequest parse_render_request(const RenderCommandOptions& o, const Communic
   return RenderRequest{
       .leader = leader,
       .threads = threads,
-      .scene = {o.scene, o.scene_overrides, memory, channels_beyond_colour(render.aovs), render.region, o.region},
+      .scene = {o.scene, o.scene_overrides, memory, channels_beyond_colour(render.aovs), render.region, o.region,
+                o.compact_normals},
       .backend = backend,
       .backend_options = backend_options,
       .render = render,

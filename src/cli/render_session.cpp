@@ -95,6 +95,7 @@ void RenderSession::open_journal() {
   settings.tile_size = tiles.tile_size();
   settings.channels = FilmLayout(options_.aovs).channels();
   settings.adaptive = options_.adaptive;
+  settings.compact_normals = request_.scene.compact_normals;
   const JobIdentity identity = render_job_identity(loaded_.description, loaded_.report, loaded_.scene, settings);
   if (job_) agree_on_job(*job_, identity, request_.start_timeout);
   if (!journaled) return;

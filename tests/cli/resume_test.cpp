@@ -183,6 +183,9 @@ TEST(Resume, JournalOfAnotherJobIsRefusedWithWhatDiffers) {
 
   std::string output = expect_rtpro_answer(render_of(scene, out, "--set render.spp=64 --resume"), 2, journal.string());
   EXPECT_NE(output.find("spp: 64 here, 256 in the journal"), std::string::npos) << output;
+  // Compact normals change the image in its last bits: a journal of full normals is another job.
+  output = expect_rtpro_answer(render_of(scene, out, "--compact-normals --resume"), 2, journal.string());
+  EXPECT_NE(output.find("normals"), std::string::npos) << output;
 
   std::string changed = kScene;
   changed.replace(changed.find("intensity: 1"), 12, "intensity: 2");

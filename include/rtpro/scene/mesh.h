@@ -1,6 +1,7 @@
 #pragma once
 // A triangle mesh in the one layout both backends use: Embree shares these arrays directly.
 #include "rtpro/core/bbox.h"
+#include "rtpro/core/octahedral_normal.h"
 #include "rtpro/core/vec3.h"
 
 #include <cstddef>
@@ -59,7 +60,10 @@ struct TriangleMesh {
   std::string name;
   VertexArray vertices;
   std::vector<TriangleIndices> triangles;
-  std::vector<Vec3> normals;                      // per vertex, unit length; empty: flat shading
+  // Per vertex, unit length: as floats in `normals` or, when the render asked for compact normals
+  // (pack_normals), as 32-bit octahedral codes in `packed_normals`; both empty: flat shading.
+  std::vector<Vec3> normals;
+  std::vector<std::uint32_t> packed_normals;
   std::vector<std::uint32_t> triangle_materials;  // per triangle; empty: `material` for all
   std::uint32_t material = 0;
   // Per vertex when the file has them, else empty; kept for texturing, not rendered yet.
@@ -76,6 +80,14 @@ struct TriangleMesh {
     return triangle_materials.empty() ? material : triangle_materials[triangle];
   }
   Vec3 vertex(std::uint32_t i) const { return vertices[i].position(); }
+  bool smooth() const { return !normals.empty() || !packed_normals.empty(); }
+  // Vertex i's shading normal; only for a smooth mesh.
+  Vec3 normal(std::uint32_t i) const {
+    return packed_normals.empty() ? normals[i] : decode_octahedral(packed_normals[i]);
+  }
+  // Moves `normals` into `packed_normals` (a third of their bytes, each within 5e-5 radians). A
+  // mesh whose normals move (normal_steps) keeps them as floats.
+  void pack_normals();
   bool moving() const { return !vertex_steps.empty(); }
   // Vertex i and its shading normal at ray time `time` in [0, 1] (a moving mesh's).
   Vec3 vertex_at(std::uint32_t i, float time) const;

@@ -78,6 +78,7 @@ class HitPrefetch {
             __builtin_prefetch(&from[v]);
             __builtin_prefetch(&to[v]);
             if (!normals.empty()) __builtin_prefetch(&normals[v]);
+            if (!moving_normals && !mesh.packed_normals.empty()) __builtin_prefetch(&mesh.packed_normals[v]);
             if (moving_normals) __builtin_prefetch(&mesh.normal_steps[segment.index + 1][v]);
           }
           break;
@@ -85,6 +86,7 @@ class HitPrefetch {
         for (const std::uint32_t v : {triangle.v0, triangle.v1, triangle.v2}) {
           __builtin_prefetch(&mesh.vertices[v]);
           if (!mesh.normals.empty()) __builtin_prefetch(&mesh.normals[v]);
+          if (!mesh.packed_normals.empty()) __builtin_prefetch(&mesh.packed_normals[v]);
         }
         break;
       }

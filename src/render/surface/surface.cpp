@@ -57,8 +57,8 @@ struct LocalSurface {
   const float w = 1.0f - u - v;
   const Vec3 p = p0 * w + p1 * u + p2 * v;
   const Vec3 ng = cross(p1 - p0, p2 - p0);
-  const bool flat = mesh.normals.empty();
-  const Vec3 ns = flat ? ng : mesh.normals[tri.v0] * w + mesh.normals[tri.v1] * u + mesh.normals[tri.v2] * v;
+  const bool flat = !mesh.smooth();
+  const Vec3 ns = flat ? ng : mesh.normal(tri.v0) * w + mesh.normal(tri.v1) * u + mesh.normal(tri.v2) * v;
   const float mag = std::max(magnitude(p0), std::max(magnitude(p1), magnitude(p2)));
   return {p, ng, ns, mag, mesh.material_of(prim), flat};
 }
@@ -130,7 +130,7 @@ LocalSurface local_surface_at(const Group& group, const Hit& hit, const Ray& loc
                p2 = mesh->vertex_at(tri.v2, time);
     const float w = 1.0f - hit.u - hit.v;
     const Vec3 ng = cross(p1 - p0, p2 - p0);
-    const bool flat = mesh->normals.empty();
+    const bool flat = !mesh->smooth();
     const Vec3 ns = flat ? ng
                          : mesh->normal_at(tri.v0, time) * w + mesh->normal_at(tri.v1, time) * hit.u +
                                mesh->normal_at(tri.v2, time) * hit.v;

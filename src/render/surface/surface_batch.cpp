@@ -122,7 +122,7 @@ template <bool kAllFlat>
                                                     const TriangleIndices* const triangles[4],
                                                     std::uint32_t TriangleIndices::*corner) {
   Vec3 n[4];
-  for (int i = 0; i < 4; ++i) n[i] = meshes[i]->normals.empty() ? Vec3() : meshes[i]->normals[triangles[i]->*corner];
+  for (int i = 0; i < 4; ++i) n[i] = meshes[i]->smooth() ? meshes[i]->normal(triangles[i]->*corner) : Vec3();
   return {_mm_setr_ps(n[0].x, n[1].x, n[2].x, n[3].x), _mm_setr_ps(n[0].y, n[1].y, n[2].y, n[3].y),
           _mm_setr_ps(n[0].z, n[1].z, n[2].z, n[3].z)};
 }
@@ -214,8 +214,7 @@ template <bool kFlat>
                                                       const std::uint32_t materials[4], const Ray* const rays[4],
                                                       const Hit* const hits[4], SurfacePoint* const out[4],
                                                       Vec3* const mirrors[4]) {
-  if (meshes[0]->normals.empty() && meshes[1]->normals.empty() && meshes[2]->normals.empty() &&
-      meshes[3]->normals.empty())
+  if (!meshes[0]->smooth() && !meshes[1]->smooth() && !meshes[2]->smooth() && !meshes[3]->smooth())
     triangle_surfaces4<true>(meshes, materials, rays, hits, out, mirrors);
   else triangle_surfaces4<false>(meshes, materials, rays, hits, out, mirrors);
 }
@@ -290,7 +289,7 @@ void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::spa
       if (const auto* mesh = std::get_if<TriangleMesh>(&geometry)) {
         const std::uint32_t material = mesh->material_of(hit.prim_id);
         if (!has_image_texture(scene, material)) {
-          if (mesh->normals.empty()) {
+          if (!mesh->smooth()) {
             add_triangle(flat_triangles, *mesh, material, i);
             if (flat_triangles.count == 4) {
               triangle_surfaces4<true>(flat_triangles.meshes, flat_triangles.materials, flat_triangles.rays,

@@ -382,18 +382,31 @@ class RenderSceneBuilder {
   static constexpr std::uint32_t kLinkedPerPrimitive = kNoLinking - 1;  // not an index: linkings < kMaxSceneEntries
 };
 
+// One mesh at a time, so that no more than one mesh's normals are held twice.
+void pack_mesh_normals(RenderScene& scene) {
+  const auto pack = [](Group& group) {
+    for (Geometry& geometry : group.geometries)
+      if (auto* mesh = std::get_if<TriangleMesh>(&geometry)) mesh->pack_normals();
+  };
+  pack(scene.top);
+  for (Group& prototype : scene.prototypes) pack(prototype);
+}
+
 }  // namespace
 
 RenderScene build_render_scene(const SceneDescription& description, SceneBuildReport* report,
                                const SceneBuildOptions& options) {
   // A shallow copy: the loaded models it shares with `description` are copied, never taken.
   const SceneDescription shared = description;
-  return RenderSceneBuilder(shared, report, options).build();
+  RenderScene scene = RenderSceneBuilder(shared, report, options).build();
+  if (options.compact_normals) pack_mesh_normals(scene);
+  return scene;
 }
 
 RenderScene build_render_scene_taking_models(SceneDescription& description, SceneBuildReport* report,
                                              const SceneBuildOptions& options) {
   RenderScene scene = RenderSceneBuilder(description, report, options).build();
+  if (options.compact_normals) pack_mesh_normals(scene);
   // An entry placing a glTF file another entry placed alike was never read: it lets go too.
   for (GltfDesc& gltf : description.world.gltfs) gltf.loaded.reset();
   return scene;

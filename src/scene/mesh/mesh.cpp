@@ -31,15 +31,23 @@ Vec3 TriangleMesh::vertex_at(std::uint32_t i, float time) const {
 }
 
 Vec3 TriangleMesh::normal_at(std::uint32_t i, float time) const {
-  if (normal_steps.empty()) return normals[i];
+  if (normal_steps.empty()) return normal(i);
   const MotionSegment segment = motion_segment(time, normal_steps.size());
   return motion_lerp(normal_steps[segment.index][i], normal_steps[segment.index + 1][i], segment.fraction);
 }
 
+void TriangleMesh::pack_normals() {
+  if (normals.empty() || !normal_steps.empty()) return;
+  packed_normals.resize(normals.size());
+  for (std::size_t i = 0; i < normals.size(); ++i) packed_normals[i] = encode_octahedral(normals[i]);
+  std::vector<Vec3>().swap(normals);
+}
+
 std::size_t TriangleMesh::memory_bytes() const {
   return vertices.capacity() * sizeof(MeshVertex) + triangles.capacity() * sizeof(TriangleIndices) +
-         normals.capacity() * sizeof(Vec3) + triangle_materials.capacity() * sizeof(std::uint32_t) +
-         uvs.capacity() * sizeof(TexCoord) + colors.capacity() * sizeof(Color) + motion_memory_bytes();
+         normals.capacity() * sizeof(Vec3) + packed_normals.capacity() * sizeof(std::uint32_t) +
+         triangle_materials.capacity() * sizeof(std::uint32_t) + uvs.capacity() * sizeof(TexCoord) +
+         colors.capacity() * sizeof(Color) + motion_memory_bytes();
 }
 
 std::size_t TriangleMesh::motion_memory_bytes() const {
