@@ -2,7 +2,7 @@
 # The large-mesh benchmark on the Stanford dragon (871,414 triangles), all measured in one run:
 # OBJ load time (rtpro vs tinyobjloader), BVH build per backend, Mrays/s for primary and
 # primary + shadow rays at 1024×1024, time to first image of the whole process, peak RSS and bytes
-# per triangle, and Embree's own `viewer` (Debian package embree-tools) on the same model and
+# per triangle (also with the lean memory settings), and Embree's own `viewer` (Debian package embree-tools) on the same model and
 # camera when it is installed. Usage: benchmarks/dragon_benchmark.sh
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/;
 #   RTPRO_BENCH_RUNS=N repeats the whole-process runs N times, interleaved (default 3).
@@ -59,6 +59,10 @@ for run in $(seq "$runs"); do
         -o "$out/$scene-$backend.png" --backend "$backend" --size 1024x1024 --spp 1 --threads "$threads" --quiet
     done
   done
+  # The lean memory settings (docs/performance.md, "Memory"), for their peak against the viewer's.
+  /usr/bin/time -f "%e %M" -o "$out/dragon-lean-$run.time" "$build/rtpro" render "$out/scene.yaml" \
+    -o "$out/dragon-lean.png" --embree-compact --embree-quality low --compact-normals --size 1024x1024 --spp 1 \
+    --threads "$threads" --quiet
   if [ "$have_pathtracer" = 1 ]; then
     pathtracer -i "$mesh" --size 1024 1024 "${camera[@]}" --max-path-length 1 --spp 1 --benchmark 2 10 \
       >"$out/pathtracer-$run.log" 2>&1 || true
@@ -156,4 +160,8 @@ if have_viewer:
     for backend in ("embree", "native"):
         print(f"  first image / viewer's whole process, {backend}: mesh {first['primary', backend][0] / whole[0]:.2f}x,"
               f" shipped scene {first['dragon', backend][0] / whole[0]:.2f}x")
+    for name, label in (("dragon-embree", "embree"), ("dragon-native", "native"),
+                        ("dragon-lean", "embree --embree-compact --embree-quality low --compact-normals")):
+        _, peak = timed(name)
+        print(f"  peak RSS of the shipped scene / the viewer's, {label}: {peak:.0f} MiB, {peak / viewer_peak:.2f}x")
 PY
