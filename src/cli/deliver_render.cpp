@@ -123,8 +123,7 @@ Image finished_image(const RenderRequest& request, RenderResult& result, RenderS
 }
 
 void report_statistics(const RenderRequest& request, RenderStatistics& stats, const RenderScene& scene,
-                       const Backend& backend, Clock::time_point start, Log& log) {
-  const BackendStats backend_stats = backend.stats();
+                       const BackendStats& backend_stats, Clock::time_point start, Log& log) {
   stats.rejected_rays = backend_stats.rejected_rays;
   stats.acceleration_bytes = backend_stats.acceleration_bytes;
   stats.peak_rss_bytes = peak_rss_bytes();
@@ -160,6 +159,7 @@ int deliver_render(const RenderRequest& request, RenderSession& session, RenderR
                    const RenderTimes& times, Log& log) {
   const auto write_start = Clock::now();
   RenderStatistics stats = render_statistics(request, session, result, times.load_seconds);
+  const BackendStats backend_stats = session.release_backend();
   ImageWriteOptions write = request.write;
   write.metadata = image_metadata(request, session.scene(), stats.backend, result);
   const Image image = finished_image(request, result, stats, log);
@@ -171,7 +171,7 @@ int deliver_render(const RenderRequest& request, RenderSession& session, RenderR
   stats.write_seconds = seconds_since(write_start);
   stats.peak_rss_after_load_bytes = times.peak_rss_after_load_bytes;
   stats.peak_rss_after_build_bytes = session.peak_rss_after_build_bytes();
-  report_statistics(request, stats, session.scene(), session.backend(), times.start, log);
+  report_statistics(request, stats, session.scene(), backend_stats, times.start, log);
 
   if (!result.complete()) {
     say_interrupted(result, written, session.journal());

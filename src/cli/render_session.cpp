@@ -75,6 +75,12 @@ void RenderSession::build_backend() {
 }
 
 // Before the render, with the image layer (waiting for its load to finish).
+BackendStats RenderSession::release_backend() {
+  const BackendStats stats = backend_->stats();
+  backend_.reset();
+  return stats;
+}
+
 void RenderSession::open_images() {
   images_ = open_scene_images(loaded_.scene, request_.scene.memory.bytes, log_);
   options_.textures = images_.textures.get();

@@ -38,7 +38,11 @@ class RenderSession {
   int follow();
 
   const RenderScene& scene() const { return loaded_.scene; }
+  // Valid until release_backend().
   const Backend& backend() const { return *backend_; }
+  // Frees the acceleration structure once the render is done: the image is made and written
+  // without it, so its bytes and the output's are never resident at once. Returns its statistics.
+  BackendStats release_backend();
   // The process's peak resident set size when the backend was built: the scene and its
   // acceleration structure, with whatever their builds held at their peaks.
   std::size_t peak_rss_after_build_bytes() const { return peak_rss_after_build_bytes_; }
