@@ -20,7 +20,7 @@ target_include_directories(rtpro_openvdb SYSTEM INTERFACE ${RTPRO_OPENVDB_INCLUD
 target_link_libraries(rtpro_openvdb INTERFACE ${RTPRO_OPENVDB_LIBRARY} Imath::Imath TBB::tbb)
 
 set(vdb_plugin_sources openvdb_file.cpp vdb_plugin.cpp)
-rtpro_add_module(volume DEPENDS core PRIVATE_DEPENDS ${CMAKE_DL_LIBS} EXCLUDE ${vdb_plugin_sources})
+rtpro_add_module(volume DEPENDS core EXCLUDE ${vdb_plugin_sources})
 set_target_properties(rtpro_volume PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
 # The plugin holds its own copies of rtpro_volume and rtpro_core; --exclude-libs keeps them local,

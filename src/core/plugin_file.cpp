@@ -2,6 +2,8 @@
 
 #include "rtpro/core/error.h"
 
+#include <dlfcn.h>
+
 #include <string>
 #include <system_error>
 
@@ -14,6 +16,14 @@ std::filesystem::path plugin_beside_executable(const char* file_name, const char
     throw RuntimeError(std::string("cannot load ") + what +
                        ": cannot find rtpro's own folder (/proc/self/exe: " + error.message() + ")");
   return executable.parent_path() / file_name;
+}
+
+void* open_plugin_entry(const std::filesystem::path& file, const char* entry_point, const char* what) {
+  void* handle = dlopen(file.c_str(), RTLD_LAZY | RTLD_LOCAL);
+  if (!handle)
+    throw RuntimeError(std::string("cannot load ") + what + ": " + dlerror() + "; rtpro needs " +
+                       file.filename().string() + " from its own build in the folder of the executable");
+  return dlsym(handle, entry_point);
 }
 
 }  // namespace rtpro

@@ -44,14 +44,8 @@ void open_plugin_libraries(const std::filesystem::path& plugin) {
 const ImageLayerApi* load_plugin() {
   const std::filesystem::path file = plugin_beside_executable(kImageLayerFileName, "the image layer");
   open_plugin_libraries(file);
-  // RTLD_LOCAL keeps OpenImageIO's symbols out of the global scope; RTLD_LAZY binds its function
-  // calls on first use instead of all of them now. The handle is never closed: image buffers and
-  // exceptions made by the plugin may outlive any one call.
-  void* handle = dlopen(file.c_str(), RTLD_LAZY | RTLD_LOCAL);
-  if (!handle)
-    throw RuntimeError(std::string("cannot load the image layer (OpenImageIO): ") + dlerror() + "; rtpro needs " +
-                       kImageLayerFileName + " from its own build in the folder of the executable");
-  const auto entry = reinterpret_cast<ImageLayerEntryPoint>(dlsym(handle, kImageLayerEntryPoint));
+  const auto entry = reinterpret_cast<ImageLayerEntryPoint>(
+      open_plugin_entry(file, kImageLayerEntryPoint, "the image layer (OpenImageIO)"));
   const ImageLayerApi* api = entry ? entry() : nullptr;
   if (!api || api->abi_version != kImageLayerAbiVersion || std::string(api->rtpro_version) != RTPRO_VERSION)
     throw RuntimeError("cannot load the image layer: " + file.string() +

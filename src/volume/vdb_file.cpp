@@ -6,8 +6,6 @@
 #include "rtpro/core/plugin_file.h"
 #include "vdb_plugin_api.h"
 
-#include <dlfcn.h>
-
 #include <string>
 
 namespace rtpro {
@@ -16,13 +14,8 @@ namespace {
 
 const VdbPluginApi* load_plugin() {
   const std::filesystem::path file = plugin_beside_executable(kVdbPluginFileName, "OpenVDB files");
-  // RTLD_LOCAL keeps OpenVDB's symbols out of the global scope. The handle is never closed: grids
-  // and exceptions made by the plugin may outlive any one call.
-  void* handle = dlopen(file.c_str(), RTLD_LAZY | RTLD_LOCAL);
-  if (!handle)
-    throw RuntimeError(std::string("cannot read OpenVDB files: ") + dlerror() + "; rtpro needs " + kVdbPluginFileName +
-                       " from its own build in the folder of the executable");
-  const auto entry = reinterpret_cast<VdbPluginEntryPoint>(dlsym(handle, kVdbPluginEntryPoint));
+  const auto entry = reinterpret_cast<VdbPluginEntryPoint>(
+      open_plugin_entry(file, kVdbPluginEntryPoint, "OpenVDB to read .vdb files"));
   const VdbPluginApi* api = entry ? entry() : nullptr;
   if (!api || api->abi_version != kVdbPluginAbiVersion || std::string(api->rtpro_version) != RTPRO_VERSION)
     throw RuntimeError("cannot read OpenVDB files: " + file.string() +
