@@ -26,4 +26,9 @@ void* open_plugin_entry(const std::filesystem::path& file, const char* entry_poi
   return dlsym(handle, entry_point);
 }
 
+void refuse_stale_plugin(const std::filesystem::path& file, const char* version, const char* what) {
+  throw RuntimeError(std::string("cannot load ") + what + ": " + file.string() +
+                     " is not the plugin of this rtpro build (" + version + "); rebuild rtpro");
+}
+
 }  // namespace rtpro

@@ -44,13 +44,8 @@ void open_plugin_libraries(const std::filesystem::path& plugin) {
 const ImageLayerApi* load_plugin() {
   const std::filesystem::path file = plugin_beside_executable(kImageLayerFileName, "the image layer");
   open_plugin_libraries(file);
-  const auto entry = reinterpret_cast<ImageLayerEntryPoint>(
-      open_plugin_entry(file, kImageLayerEntryPoint, "the image layer (OpenImageIO)"));
-  const ImageLayerApi* api = entry ? entry() : nullptr;
-  if (!api || api->abi_version != kImageLayerAbiVersion || std::string(api->rtpro_version) != RTPRO_VERSION)
-    throw RuntimeError("cannot load the image layer: " + file.string() +
-                       " is not the image plugin of this rtpro build (" RTPRO_VERSION "); rebuild rtpro");
-  return api;
+  return open_plugin_table<ImageLayerApi>(file, kImageLayerEntryPoint, kImageLayerAbiVersion, RTPRO_VERSION,
+                                          "the image layer (OpenImageIO)");
 }
 
 struct LoadState {

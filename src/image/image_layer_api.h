@@ -31,7 +31,7 @@ struct ImageLayerApi {
   TextureLookup* (*open_textures)(const TextureSource*, std::size_t, std::uint64_t max_bytes);
 };
 
-// The plugin's one exported symbol, named by kImageLayerEntryPoint.
-using ImageLayerEntryPoint = const ImageLayerApi* (*)();
+// The plugin's one exported symbol, named by kImageLayerEntryPoint, is a `const ImageLayerApi* ()`
+// (opened by core/plugin_file.h's open_plugin_table).
 
 }  // namespace rtpro

@@ -14,13 +14,8 @@ namespace {
 
 const VdbPluginApi* load_plugin() {
   const std::filesystem::path file = plugin_beside_executable(kVdbPluginFileName, "OpenVDB files");
-  const auto entry = reinterpret_cast<VdbPluginEntryPoint>(
-      open_plugin_entry(file, kVdbPluginEntryPoint, "OpenVDB to read .vdb files"));
-  const VdbPluginApi* api = entry ? entry() : nullptr;
-  if (!api || api->abi_version != kVdbPluginAbiVersion || std::string(api->rtpro_version) != RTPRO_VERSION)
-    throw RuntimeError("cannot read OpenVDB files: " + file.string() +
-                       " is not the OpenVDB plugin of this rtpro build (" RTPRO_VERSION "); rebuild rtpro");
-  return api;
+  return open_plugin_table<VdbPluginApi>(file, kVdbPluginEntryPoint, kVdbPluginAbiVersion, RTPRO_VERSION,
+                                         "OpenVDB to read .vdb files");
 }
 
 // A failed load is not remembered: the next call tries again and reports the same error.

@@ -21,7 +21,7 @@ struct VdbPluginApi {
   void (*write_file)(const std::filesystem::path&, std::span<const VdbGridSpec>);
 };
 
-// The plugin's one exported symbol, named by kVdbPluginEntryPoint.
-using VdbPluginEntryPoint = const VdbPluginApi* (*)();
+// The plugin's one exported symbol, named by kVdbPluginEntryPoint, is a `const VdbPluginApi* ()`
+// (opened by core/plugin_file.h's open_plugin_table).
 
 }  // namespace rtpro

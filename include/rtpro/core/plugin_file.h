@@ -3,6 +3,7 @@
 // puts them: through the executable's own path, not the current folder or the library search path,
 // so a plugin always comes from the same build as the program that loads it.
 #include <filesystem>
+#include <string_view>
 
 namespace rtpro {
 
@@ -15,5 +16,21 @@ std::filesystem::path plugin_beside_executable(const char* file_name, const char
 // calls on first use. The handle is never closed: objects and exceptions the plugin makes may
 // outlive any one call. Throws RuntimeError naming `what` and the file when it does not load.
 void* open_plugin_entry(const std::filesystem::path& file, const char* entry_point, const char* what);
+
+// Throws RuntimeError saying that `file` is not the plugin of this build (`version`).
+[[noreturn]] void refuse_stale_plugin(const std::filesystem::path& file, const char* version, const char* what);
+
+// The table a plugin's entry point (a function of no arguments) returns, checked to come from the
+// same build as its caller: its `abi_version` must be `abi` and its `rtpro_version` `version`.
+template <class Table>
+const Table* open_plugin_table(const std::filesystem::path& file, const char* entry_point, int abi, const char* version,
+                               const char* what) {
+  using Entry = const Table* (*)();
+  const auto entry = reinterpret_cast<Entry>(open_plugin_entry(file, entry_point, what));
+  const Table* table = entry ? entry() : nullptr;
+  if (!table || table->abi_version != abi || std::string_view(table->rtpro_version) != version)
+    refuse_stale_plugin(file, version, what);
+  return table;
+}
 
 }  // namespace rtpro
