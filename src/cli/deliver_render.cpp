@@ -53,8 +53,8 @@ RenderStatistics render_statistics(const RenderRequest& request, const RenderSes
   stats.width = stats.crop ? stats.region->width() : scene.camera.width;
   stats.height = stats.crop ? stats.region->height() : scene.camera.height;
   stats.load_seconds = load_seconds;
-  stats.backend = std::string(session.backend().name());
-  stats.build_seconds = session.backend().stats().build_seconds;
+  stats.backend = std::string(session.backend_name());
+  stats.build_seconds = session.backend_stats().build_seconds;
   stats.ranks = session.ranks();
   stats.render_seconds = result.seconds;
   stats.rays = result.rays;
@@ -159,7 +159,8 @@ int deliver_render(const RenderRequest& request, RenderSession& session, RenderR
                    const RenderTimes& times, Log& log) {
   const auto write_start = Clock::now();
   RenderStatistics stats = render_statistics(request, session, result, times.load_seconds);
-  const BackendStats backend_stats = session.release_backend();
+  session.release_backend();
+  const BackendStats backend_stats = session.backend_stats();
   ImageWriteOptions write = request.write;
   write.metadata = image_metadata(request, session.scene(), stats.backend, result);
   const Image image = finished_image(request, result, stats, log);

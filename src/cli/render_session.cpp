@@ -69,16 +69,16 @@ void RenderSession::start_workers() {
 
 void RenderSession::build_backend() {
   backend_ = make_backend(request_.backend, loaded_.scene, request_.backend_options);
+  backend_name_ = backend_->name();
   peak_rss_after_build_bytes_ = peak_rss_bytes();
   log_.verbose("built " + std::string(backend_->name()) + " acceleration structure in " +
                std::to_string(backend_->stats().build_seconds) + " s");
 }
 
-// Before the render, with the image layer (waiting for its load to finish).
-BackendStats RenderSession::release_backend() {
-  const BackendStats stats = backend_->stats();
+void RenderSession::release_backend() {
+  if (!backend_) return;
+  released_stats_ = backend_->stats();
   backend_.reset();
-  return stats;
 }
 
 void RenderSession::open_images() {
@@ -148,6 +148,7 @@ RenderResult RenderSession::render() {
   ProgressReporter progress(request_.progress, isatty(STDERR_FILENO) == 1, request_.frame);
   options.cancel = &InterruptGuard::requested();
   options.observers = observers(progress);
+  options.tracing_done = [this] { release_backend(); };
   RenderResult result = render_image(loaded_.scene, *backend_, options);
   progress.finish(result.tiles_done, result.tiles_total);
   const std::string passes = std::to_string(result.passes_done) + " of " + std::to_string(result.passes_total);

@@ -19,6 +19,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rtpro::cli {
@@ -38,11 +39,13 @@ class RenderSession {
   int follow();
 
   const RenderScene& scene() const { return loaded_.scene; }
-  // Valid until release_backend().
-  const Backend& backend() const { return *backend_; }
-  // Frees the acceleration structure once the render is done: the image is made and written
-  // without it, so its bytes and the output's are never resident at once. Returns its statistics.
-  BackendStats release_backend();
+  // The backend's name and statistics, also once it is released.
+  std::string_view backend_name() const { return backend_name_; }
+  BackendStats backend_stats() const { return backend_ ? backend_->stats() : released_stats_; }
+  // Frees the acceleration structure. render() does so as soon as its last ray is traced: the
+  // film is resolved and the image made and written without it, so that its bytes and the
+  // image's are never resident at once.
+  void release_backend();
   // The process's peak resident set size when the backend was built: the scene and its
   // acceleration structure, with whatever their builds held at their peaks.
   std::size_t peak_rss_after_build_bytes() const { return peak_rss_after_build_bytes_; }
@@ -67,6 +70,8 @@ class RenderSession {
   RenderOptions options_;
   std::optional<PrestartedThread> render_thread_;
   std::unique_ptr<Backend> backend_;
+  std::string backend_name_;
+  BackendStats released_stats_;
   std::size_t peak_rss_after_build_bytes_ = 0;
   SceneImages images_;
   std::unique_ptr<TevClient> preview_;

@@ -195,7 +195,9 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
   const TileGrid grid = render_grid(scene, checked_region(scene, options), options.tile_size);
   const FilmLayout layout(options.aovs);
   const SumLayout sums = render_sums(options);
-  TileRenderer renderer(scene, backend, grid, sums, options.textures, options.environment);
+  // Destroyed before tracing_done: nothing refers to the backend after it.
+  std::optional<TileRenderer> renderer(std::in_place, scene, backend, grid, sums, options.textures,
+                                       options.environment);
   if (options.adaptive.threshold > 0.0f && options.tile_executor)
     throw std::logic_error("render_image: adaptive sampling decides in this process; a tile executor cannot follow it");
 
@@ -228,8 +230,8 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
     return items;
   };
   const auto execute = [&](TileSource& source) {
-    if (options.tile_executor) options.tile_executor->execute(renderer, grid, source, sink);
-    else render_tiles(renderer, grid, source, sink);
+    if (options.tile_executor) options.tile_executor->execute(*renderer, grid, source, sink);
+    else render_tiles(*renderer, grid, source, sink);
   };
 
   result.passes_total = grid.passes();
@@ -249,7 +251,7 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
           result.stop = RenderStop::kConverged;
           break;
         }
-        renderer.set_active_pixels(&active);
+        renderer->set_active_pixels(&active);
       }
       // The first pass always finishes: a time limit shows whole passes.
       const std::optional<Clock::time_point> pass_deadline = pass > 0 ? deadline : std::nullopt;
@@ -267,6 +269,8 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
       }
     }
   }
+  renderer.reset();
+  if (options.tracing_done) options.tracing_done();
   result.passes_done = film.passes_merged();
   if (result.stop != RenderStop::kConverged && result.passes_done < grid.passes())
     result.stop = deadline_passed && result.passes_done > 0 ? RenderStop::kTimeLimit : RenderStop::kInterrupted;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <atomic>
 #include <cstring>
 #include <limits>
 
@@ -119,6 +120,56 @@ TEST(Renderer, CancellationStopsBeforeTheRemainingTiles) {
   EXPECT_FALSE(result.complete());
   EXPECT_GE(result.tiles_done, 3u);
   EXPECT_LT(result.tiles_done, result.tiles_total);
+}
+
+// A backend that answers as the one it wraps and counts the rays it is asked to trace once it
+// has been told it is freed.
+class ReleasableBackend final : public Backend {
+ public:
+  explicit ReleasableBackend(const Backend& traced) : traced_(traced) {}
+  std::string_view name() const override { return traced_.name(); }
+  bool intersect(const Ray& ray, Hit& hit) const override {
+    count_late_call();
+    return traced_.intersect(ray, hit);
+  }
+  bool occluded(const Ray& ray) const override {
+    count_late_call();
+    return traced_.occluded(ray);
+  }
+  BackendStats stats() const override { return traced_.stats(); }
+  void release() { released_ = true; }
+  int late_calls() const { return late_calls_; }
+
+ private:
+  void count_late_call() const {
+    if (released_) ++late_calls_;
+  }
+  const Backend& traced_;
+  std::atomic<bool> released_{false};
+  mutable std::atomic<int> late_calls_{0};
+};
+
+TEST(Renderer, TracingDoneComesAfterTheLastRayAndBeforeTheImage) {
+  RenderScene scene = test_scene();
+  scene.render.spp = 16;
+  scene.render.sampler = SamplerKind::kSobol;  // several passes
+  const auto traced = make_backend(BackendKind::kNative, scene, {});
+  ReleasableBackend backend(*traced);
+  RenderOptions options;
+  options.tile_size = 16;
+  int calls = 0;
+  options.tracing_done = [&] {
+    ++calls;
+    backend.release();
+  };
+  tbb::global_control cap(tbb::global_control::max_allowed_parallelism, 2);
+  const RenderResult result = render_image(scene, backend, options);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(backend.late_calls(), 0);
+  EXPECT_GT(result.passes_done, 1);
+  // The image is resolved after the call, from the film alone.
+  options.tracing_done = nullptr;
+  EXPECT_TRUE(bit_identical(result.image, render_image(scene, *traced, options).image));
 }
 
 TEST(Renderer, AovLayersHavePlausibleValues) {

@@ -18,6 +18,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -51,6 +52,9 @@ struct RenderOptions {
   const TextureLookup* textures = nullptr;
   // The scene's environment, built from its image; required when it has one.
   const EnvironmentLight* environment = nullptr;
+  // Called once no more rays will be traced, before the film is resolved into the image: the
+  // caller may free the backend then, so that its bytes and the image's are never resident at once.
+  std::function<void()> tracing_done;
 };
 
 // Why a render stopped: every pass done, every pixel converged, the time limit, or an interrupt.
