@@ -59,10 +59,14 @@ for run in $(seq "$runs"); do
         -o "$out/$scene-$backend.png" --backend "$backend" --size 1024x1024 --spp 1 --threads "$threads" --quiet
     done
   done
-  # The lean memory settings (docs/performance.md, "Memory"), for their peak against the viewer's.
-  /usr/bin/time -f "%e %M" -o "$out/dragon-lean-$run.time" "$build/rtpro" render "$out/scene.yaml" \
-    -o "$out/dragon-lean.png" --embree-compact --embree-quality low --compact-normals --size 1024x1024 --spp 1 \
-    --threads "$threads" --quiet
+  # The lean memory settings (docs/performance.md, "Memory"), for their peaks against the viewer's:
+  # compact leaves and normals with Embree's SAH build, and with its Morton build.
+  for lean in compact morton; do
+    quality=medium; [ "$lean" = morton ] && quality=low
+    /usr/bin/time -f "%e %M" -o "$out/dragon-lean-$lean-$run.time" "$build/rtpro" render "$out/scene.yaml" \
+      -o "$out/dragon-lean.png" --embree-compact --embree-quality "$quality" --compact-normals --size 1024x1024 \
+      --spp 1 --threads "$threads" --quiet
+  done
   if [ "$have_pathtracer" = 1 ]; then
     pathtracer -i "$mesh" --size 1024 1024 "${camera[@]}" --max-path-length 1 --spp 1 --benchmark 2 10 \
       >"$out/pathtracer-$run.log" 2>&1 || true
@@ -161,7 +165,8 @@ if have_viewer:
         print(f"  first image / viewer's whole process, {backend}: mesh {first['primary', backend][0] / whole[0]:.2f}x,"
               f" shipped scene {first['dragon', backend][0] / whole[0]:.2f}x")
     for name, label in (("dragon-embree", "embree"), ("dragon-native", "native"),
-                        ("dragon-lean", "embree --embree-compact --embree-quality low --compact-normals")):
+                        ("dragon-lean-compact", "embree --embree-compact --compact-normals"),
+                        ("dragon-lean-morton", "embree --embree-compact --embree-quality low --compact-normals")):
         _, peak = timed(name)
         print(f"  peak RSS of the shipped scene / the viewer's, {label}: {peak:.0f} MiB, {peak / viewer_peak:.2f}x")
 PY
