@@ -11,6 +11,7 @@
 #   FRAME=F SHUTTER=OPEN,CLOSE render an animated file's frame F with that shutter (motion blur in
 #   both: benchmarks/cycles_motion_benchmark.sh), SHUTTER_OPENING=A,B with a trapezoid shutter
 #   (rtpro's camera.shutter_opening; Cycles' shutter curve drawn through the same corners);
+#   ENVIRONMENT=scenes/environments/sunset.exr lights the scene by an HDRI too, in both;
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
 source "$(dirname "$0")/options.sh"
@@ -25,6 +26,13 @@ scene_file=$scene
 pixels=$size
 [[ $size = *x* ]] || pixels=${size}x$size
 rtpro_motion=() cycles_motion=()
+# ENVIRONMENT=HDRI lights the scene by that image too, in both (an HDRI-lit glTF).
+if [ -n "${ENVIRONMENT:-}" ]; then
+  environment=$ENVIRONMENT
+  [[ $environment = /* ]] || environment=$root/$environment
+  rtpro_motion+=(--environment "$environment")
+  export RTPRO_CYCLES_ENVIRONMENT=$environment
+fi
 if [ -n "${FRAME:-}" ]; then
   rtpro_motion=(-D "frame=$FRAME" "--shutter=${SHUTTER:-0,0}")
   cycles_motion=("$FRAME" "$(echo "${SHUTTER:-0,0}" | cut -d, -f1)" "$(echo "${SHUTTER:-0,0}" | cut -d, -f2)")
@@ -53,9 +61,10 @@ for t in $threads; do
 done
 compare_each "$out/reference.exr" "$out"/cycles-t*-r*.exr "$out"/rtpro-t*-r*.exr
 
-python3 - "$out" "$runs" "$threads" "$scene${FRAME:+ frame $FRAME, shutter [${SHUTTER:-0,0}]}${SHUTTER_OPENING:+ opening [$SHUTTER_OPENING]}" "$pixels" "$spp" \
+PYTHONPATH="$root/benchmarks/cycles" python3 - "$out" "$runs" "$threads" "$scene${FRAME:+ frame $FRAME, shutter [${SHUTTER:-0,0}]}${SHUTTER_OPENING:+ opening [$SHUTTER_OPENING]}" "$pixels" "$spp" \
   "$max_depth" "$ref_spp" <<'PY'
 import json, re, statistics, sys
+from equal_quality import equal_quality_ratios, equal_quality_text
 out, runs, threads, scene, size, spp, depth, ref_spp = sys.argv[1:9]
 runs, threads = int(runs), threads.split()
 
@@ -85,5 +94,11 @@ for t in threads:
         rel = statistics.median(rep["rel_mse"] for rep in reports)
         print(f"{who:8} {t:>3} {statistics.median(times):9.2f} {min(times):6.2f}-{max(times):<6.2f} {ratio:>12} "
               f"{means[0]:8.5f} {means[1]:8.5f} {means[2]:8.5f} {off:>17} {rel:9.5f}")
+print("\nrtpro's time to reach Cycles' relMSE (each run's seconds x relMSE, rtpro's over Cycles'):")
+for t in threads:
+    rs = range(1, runs + 1)
+    ratios = equal_quality_ratios([seconds("rtpro", t, r) for r in rs], [compared("rtpro", t, r)["rel_mse"] for r in rs],
+                                  [seconds("cycles", t, r) for r in rs], [compared("cycles", t, r)["rel_mse"] for r in rs])
+    print(f"  {t} thread(s): {equal_quality_text(ratios)}")
 print(f"\nimages, logs and comparisons: {out}")
 PY

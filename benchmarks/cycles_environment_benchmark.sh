@@ -39,8 +39,9 @@ for r in $(seq "$runs"); do
 done
 compare_each "$out/reference.exr" "$out"/cycles-r*.exr "$out"/rtpro-r*.exr "$out"/rtpro-reference.exr
 
-python3 - "$out" "$runs" "$size" "$height" "$spp" "$max_depth" "$ref_spp" "$t" <<'PY'
+PYTHONPATH="$root/benchmarks/cycles" python3 - "$out" "$runs" "$size" "$height" "$spp" "$max_depth" "$ref_spp" "$t" <<'PY'
 import json, re, statistics, sys
+from equal_quality import equal_quality_ratios, equal_quality_text
 out, runs, width, height, spp, depth, ref_spp, t = sys.argv[1:9]
 runs = int(runs)
 def report(name): return json.load(open(f"{out}/{name}.compare.json"))
@@ -66,5 +67,10 @@ print(f"rtpro at {ref_spp} spp: mean " + " ".join(f"{m:.5f}" for m in long_rtpro
       + f"  relMSE {long_rtpro['rel_mse']:.5f}")
 print(f"at {spp} spp, rtpro's median mean against Cycles': "
       + " ".join(f"{100 * (a / b - 1):+.2f}%" for a, b in zip(means["rtpro"], means["cycles"])))
+rs = range(1, runs + 1)
+ratios = equal_quality_ratios([seconds("rtpro", r) for r in rs], [report(f"rtpro-r{r}")["rel_mse"] for r in rs],
+                              [seconds("cycles", r) for r in rs], [report(f"cycles-r{r}")["rel_mse"] for r in rs])
+print("rtpro's time to reach Cycles' relMSE (each run's seconds x relMSE, rtpro's over Cycles'): "
+      + equal_quality_text(ratios))
 print(f"images, logs and comparisons: {out}")
 PY

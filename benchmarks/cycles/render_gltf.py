@@ -15,7 +15,8 @@ from which Cycles samples the time as rtpro does. Every sun's angle is 0 (rtpro'
 is a delta light).
 
 Fair settings (see /work/shared/notes/pathtracing.md): CPU, no adaptive sampling, no denoising, a
-one-pixel box filter, no clamping, the Standard view, 32-bit float EXR, a black world. Path length:
+one-pixel box filter, no clamping, the Standard view, 32-bit float EXR, a black world (or, with
+RTPRO_CYCLES_ENVIRONMENT=HDRI in the environment, that image as the world, as rtpro's --environment). Path length:
 rtpro's max_depth counts path vertices after the camera ray (1 is direct light only), Cycles'
 max_bounces counts bounces (0 is direct light only), so Cycles gets MAX_DEPTH - 1.
 
@@ -96,9 +97,25 @@ for spec in gltf.get("materials", []):
 
 cameras = [o for o in scene.objects if o.type == "CAMERA"]
 scene.camera = cameras[0]
-scene.world = bpy.data.worlds.new("black")
-scene.world.use_nodes = True
-scene.world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
+environment = os.environ.get("RTPRO_CYCLES_ENVIRONMENT", "")
+if environment:
+    # rtpro's `--environment FILE` at its default orientation: the Environment Texture on generated
+    # coordinates without a rotation (scenes/FORMAT.md: rtpro's rotation about y is minus Blender's about z).
+    world = bpy.data.worlds.new("hdri")
+    scene.world = world
+    world.use_nodes = True
+    nodes, links = world.node_tree.nodes, world.node_tree.links
+    texture = nodes.new("ShaderNodeTexEnvironment")
+    texture.image = bpy.data.images.load(environment)
+    texture.interpolation = "Linear"
+    links.new(nodes.new("ShaderNodeTexCoord").outputs["Generated"], texture.inputs["Vector"])
+    links.new(texture.outputs["Color"], nodes["Background"].inputs["Color"])
+    nodes["Background"].inputs["Strength"].default_value = 1.0
+    world.cycles.sampling_method = "AUTOMATIC"
+else:
+    scene.world = bpy.data.worlds.new("black")
+    scene.world.use_nodes = True
+    scene.world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
 
 if frame is not None:
     scene.frame_set(int(frame), subframe=frame - int(frame))

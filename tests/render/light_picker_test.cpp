@@ -59,6 +59,32 @@ TEST(LightPicker, TwoLightsArePickedByThePointAndU) {
   EXPECT_EQ(power.pick(near_first, 0.25f)->pmf, 0.5f);
 }
 
+// The tree picker gives the lights without a position one share each and the tree one, whatever
+// their power: a directional light 1,000 times the point lights' power is still picked half the
+// time, and the probabilities pick() returns sum to 1 with probability() agreeing.
+TEST(LightPicker, TreeGivesEachLightWithoutAPositionOneShareWhateverItsPower) {
+  for (const float directional_power : {1e-3f, 2.0f, 4e3f}) {
+    const std::vector<float> power{4.0f, 4.0f, directional_power};
+    const std::vector<std::uint32_t> members{0, 1, 2};
+    const LightPicker picker(LightSamplerKind::kTree, members, power, kBounds);
+    const Vec3 point(1.0f, 0.0f, 0.0f);
+    EXPECT_EQ(picker.probability(2, point), 0.5f) << directional_power;
+    EXPECT_NEAR(picker.probability(0, point) + picker.probability(1, point), 0.5f, 1e-6f) << directional_power;
+    int directional = 0;
+    constexpr int kPicks = 1000;
+    for (int i = 0; i < kPicks; ++i) {
+      const std::optional<LightPicker::Pick> pick = picker.pick(point, (i + 0.5f) / kPicks);
+      ASSERT_TRUE(pick);
+      EXPECT_EQ(pick->pmf, picker.probability(pick->light, point));
+      directional += pick->light == 2u;
+    }
+    EXPECT_EQ(directional, kPicks / 2) << directional_power;
+  }
+  // Without lights in the tree, the directional light is all there is.
+  const std::vector<std::uint32_t> alone{2};
+  EXPECT_EQ(LightPicker(LightSamplerKind::kTree, alone, kPower, kBounds).probability(2, Vec3(0.0f)), 1.0f);
+}
+
 TEST(LightPicker, ALightWithoutPowerLeavesThePickerEmpty) {
   const std::vector<float> no_power{0.0f};
   const std::vector<std::optional<LightBounds>> bounds{point_bounds(Vec3(0.0f), 0.0f)};

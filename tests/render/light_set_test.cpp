@@ -65,7 +65,9 @@ TEST(LightSet, SamplePdfIsThePdfOfTheSampledPoint) {
     EXPECT_NEAR(pdf, s->pdf, 2e-3f * s->pdf)
         << "light " << s->light << " from " << from.x << "," << from.y << "," << from.z;
   }
-  EXPECT_GT(area_samples, 5000);
+  // The directional light takes half the picks (one share against the tree's), the point light
+  // part of the rest: over a fifth are still area samples.
+  EXPECT_GT(area_samples, 4000);
 }
 
 // ∫ pdf dω over the directions that reach a light is 1 for a light sampled by solid angle:
