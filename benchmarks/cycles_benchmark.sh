@@ -25,14 +25,7 @@ scene_file=$scene
 [[ $scene = /* ]] || scene_file=$root/$scene
 pixels=$size
 [[ $size = *x* ]] || pixels=${size}x$size
-rtpro_motion=() cycles_motion=()
-# ENVIRONMENT=HDRI lights the scene by that image too, in both (an HDRI-lit glTF).
-if [ -n "${ENVIRONMENT:-}" ]; then
-  environment=$ENVIRONMENT
-  [[ $environment = /* ]] || environment=$root/$environment
-  rtpro_motion+=(--environment "$environment")
-  export RTPRO_CYCLES_ENVIRONMENT=$environment
-fi
+rtpro_motion=() cycles_motion=() rtpro_options=()
 if [ -n "${FRAME:-}" ]; then
   rtpro_motion=(-D "frame=$FRAME" "--shutter=${SHUTTER:-0,0}")
   cycles_motion=("$FRAME" "$(echo "${SHUTTER:-0,0}" | cut -d, -f1)" "$(echo "${SHUTTER:-0,0}" | cut -d, -f2)")
@@ -40,6 +33,13 @@ if [ -n "${FRAME:-}" ]; then
     rtpro_motion+=(--set "camera.shutter_opening=[${SHUTTER_OPENING}]")
     cycles_motion+=("$(echo "$SHUTTER_OPENING" | cut -d, -f1)" "$(echo "$SHUTTER_OPENING" | cut -d, -f2)")
   fi
+fi
+# ENVIRONMENT=HDRI lights the scene by that image too, in both (an HDRI-lit glTF).
+if [ -n "${ENVIRONMENT:-}" ]; then
+  environment=$ENVIRONMENT
+  [[ $environment = /* ]] || environment=$root/$environment
+  rtpro_options+=(--environment "$environment")
+  export RTPRO_CYCLES_ENVIRONMENT=$environment
 fi
 
 build_release rtpro
@@ -56,7 +56,7 @@ for t in $threads; do
     cycles "cycles-t$t-r$r" "$spp" "$t" "$out/cycles-t$t-r$r.log"
     /usr/bin/time -f "%e" -o "$out/rtpro-t$t-r$r.seconds" "$build/rtpro" render "$scene_file" \
       -o "$out/rtpro-t$t-r$r.exr" --size "$pixels" --spp "$spp" --max-depth "$max_depth" --threads "$t" \
-      "${rtpro_motion[@]}" --quiet --no-journal --stats-json "$out/rtpro-t$t-r$r.json"
+      "${rtpro_motion[@]}" "${rtpro_options[@]}" --quiet --no-journal --stats-json "$out/rtpro-t$t-r$r.json"
   done
 done
 compare_each "$out/reference.exr" "$out"/cycles-t*-r*.exr "$out"/rtpro-t*-r*.exr
