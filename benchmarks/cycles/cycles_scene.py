@@ -90,6 +90,27 @@ def sky_and_sun(scene, sky, sun_direction, sun):
     sun_object.rotation_euler = blender_axes(sun_direction).to_track_quat("-Z", "Y").to_euler()
 
 
+def hdri_world(scene, hdri, rotation_degrees=0.0):
+    """rtpro's `environment: {file: HDRI, rotation: [0, R, 0]}`: the image as the world on generated
+    coordinates, turned by a Mapping node (scenes/FORMAT.md: rtpro's rotation about y is minus
+    Blender's about z), light-sampled."""
+    world = bpy.data.worlds.new("hdri")
+    scene.world = world
+    world.use_nodes = True
+    nodes, links = world.node_tree.nodes, world.node_tree.links
+    texture = nodes.new("ShaderNodeTexEnvironment")
+    texture.image = bpy.data.images.load(hdri)
+    texture.interpolation = "Linear"
+    mapping = nodes.new("ShaderNodeMapping")
+    mapping.vector_type = "POINT"
+    mapping.inputs["Rotation"].default_value = (0.0, 0.0, math.radians(-rotation_degrees))
+    links.new(nodes.new("ShaderNodeTexCoord").outputs["Generated"], mapping.inputs["Vector"])
+    links.new(mapping.outputs["Vector"], texture.inputs["Vector"])
+    links.new(texture.outputs["Color"], nodes["Background"].inputs["Color"])
+    nodes["Background"].inputs["Strength"].default_value = 1.0
+    world.cycles.sampling_method = "AUTOMATIC"
+
+
 def view_from_args(scene, args):
     """The camera, sky and sun of the benchmarks that light one object as rtpro's scene does, from
     six command-line words: SKY SUN_X,SUN_Y,SUN_Z SUN CAM_X,CAM_Y,CAM_Z AT_X,AT_Y,AT_Z FOV (rtpro's

@@ -21,7 +21,6 @@ denoising, a one-pixel box filter, no clamping, Standard view, 32-bit EXR; Cycle
 rtpro's max_depth - 1).
 Prints one line: "cycles_render_seconds S".
 """
-import math
 import sys
 import os
 
@@ -30,7 +29,7 @@ import numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from cycles_materials import bsdf_node, empty_node_tree  # noqa: E402
-from cycles_scene import grid_quads, look_at_camera, mesh_object, uv_sphere  # noqa: E402
+from cycles_scene import grid_quads, hdri_world, look_at_camera, mesh_object, uv_sphere  # noqa: E402
 from cycles_settings import configure_cycles, render_timed_exr  # noqa: E402
 
 args = sys.argv[sys.argv.index("--") + 1:]
@@ -63,22 +62,7 @@ uv_sphere(scene, "metal", (0.6, 0.5, 0), 0.5, material("metal", "metal", (1.0, 1
 
 look_at_camera(scene, (0, 0.7, -4), (0, 0.35, 0), 35.0)
 
-world = bpy.data.worlds.new("hdri")
-scene.world = world
-world.use_nodes = True
-nodes, links = world.node_tree.nodes, world.node_tree.links
-texture = nodes.new("ShaderNodeTexEnvironment")
-texture.image = bpy.data.images.load(hdri)
-texture.interpolation = "Linear"
-mapping = nodes.new("ShaderNodeMapping")
-mapping.vector_type = "POINT"
-mapping.inputs["Rotation"].default_value = (0.0, 0.0, math.radians(-160.0))
-coordinates = nodes.new("ShaderNodeTexCoord")
-links.new(coordinates.outputs["Generated"], mapping.inputs["Vector"])
-links.new(mapping.outputs["Vector"], texture.inputs["Vector"])
-links.new(texture.outputs["Color"], nodes["Background"].inputs["Color"])
-nodes["Background"].inputs["Strength"].default_value = 1.0
-world.cycles.sampling_method = "AUTOMATIC"
+hdri_world(scene, hdri, 160.0)  # rtpro's `rotation: [0, 160, 0]`
 
 configure_cycles(scene, spp, max_depth, threads)
 render_timed_exr(scene, width, height, out_file)

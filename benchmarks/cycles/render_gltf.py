@@ -42,6 +42,7 @@ import numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from cycles_materials import bsdf_node, empty_node_tree  # noqa: E402
+from cycles_scene import hdri_world  # noqa: E402
 from cycles_settings import configure_cycles, render_timed_exr  # noqa: E402
 
 numpy.bool = bool  # Blender 3.4's glTF importer still uses numpy.bool, removed in Debian's numpy 1.24
@@ -99,19 +100,7 @@ cameras = [o for o in scene.objects if o.type == "CAMERA"]
 scene.camera = cameras[0]
 environment = os.environ.get("RTPRO_CYCLES_ENVIRONMENT", "")
 if environment:
-    # rtpro's `--environment FILE` at its default orientation: the Environment Texture on generated
-    # coordinates without a rotation (scenes/FORMAT.md: rtpro's rotation about y is minus Blender's about z).
-    world = bpy.data.worlds.new("hdri")
-    scene.world = world
-    world.use_nodes = True
-    nodes, links = world.node_tree.nodes, world.node_tree.links
-    texture = nodes.new("ShaderNodeTexEnvironment")
-    texture.image = bpy.data.images.load(environment)
-    texture.interpolation = "Linear"
-    links.new(nodes.new("ShaderNodeTexCoord").outputs["Generated"], texture.inputs["Vector"])
-    links.new(texture.outputs["Color"], nodes["Background"].inputs["Color"])
-    nodes["Background"].inputs["Strength"].default_value = 1.0
-    world.cycles.sampling_method = "AUTOMATIC"
+    hdri_world(scene, environment)  # rtpro's `--environment FILE`, unturned
 else:
     scene.world = bpy.data.worlds.new("black")
     scene.world.use_nodes = True
