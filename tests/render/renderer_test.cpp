@@ -149,7 +149,7 @@ class ReleasableBackend final : public Backend {
   mutable std::atomic<int> late_calls_{0};
 };
 
-TEST(Renderer, TracingDoneComesAfterTheLastRayAndBeforeTheImage) {
+TEST(Renderer, TracingDoneIsCalledOnceAfterTheLastRay) {
   RenderScene scene = test_scene();
   scene.render.spp = 16;
   scene.render.sampler = SamplerKind::kSobol;  // several passes
@@ -167,7 +167,7 @@ TEST(Renderer, TracingDoneComesAfterTheLastRayAndBeforeTheImage) {
   EXPECT_EQ(calls, 1);
   EXPECT_EQ(backend.late_calls(), 0);
   EXPECT_GT(result.passes_done, 1);
-  // The image is resolved after the call, from the film alone.
+  // Releasing the backend there leaves the image as it is without the call.
   options.tracing_done = nullptr;
   EXPECT_TRUE(bit_identical(result.image, render_image(scene, *traced, options).image));
 }
