@@ -49,10 +49,10 @@ rtpro_add_module(image DEPENDS core image_common PRIVATE_DEPENDS OpenImageIO::Op
                  EXCLUDE ${image_common_sources} ${image_loader_sources} ${image_plugin_sources}
                          ${image_tool_sources})
 
-# The loader defines the same functions as rtpro_image; a program linking both (the CLI tests)
-# takes each function from whichever archive member the linker pulls first. That needs one object
-# per source file, which a unity batch would merge.
-set_target_properties(rtpro_image PROPERTIES UNITY_BUILD OFF)
+# The loader defines the same functions as rtpro_image (and image_layer_linked.cpp the loader's
+# own, for programs without it): a program links one or the other. The executable links the
+# loader, the tests and the plugin link rtpro_image, and the modules between them (rtpro_cli) only
+# the headers and rtpro_image_common.
 
 # The plugin holds its own copies of rtpro_image and everything it links; --exclude-libs keeps
 # them local, so only the entry point (image_plugin.cpp) is exported.
