@@ -84,6 +84,7 @@ class EmbreeBackend final : public Backend {
     scenes_ = build_embree_scenes(session, scene, settings);
     stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats_.acceleration_bytes = static_cast<std::size_t>(std::max<std::int64_t>(0, session.allocated_bytes()));
+    stats_.build_peak_bytes = static_cast<std::size_t>(std::max<std::int64_t>(0, session.peak_bytes()));
   }
 
   // Releasing frees Embree memory; inside a session so another thread's build does not count it.
@@ -106,7 +107,7 @@ class EmbreeBackend final : public Backend {
     alignas(16) RTCRayHit query;
     to_embree(ray, 0, query, time);
     rtcIntersect1(scenes_.top.get(), &context.base, &query);
-    return from_embree(query, hit);
+    return from_embree(query, scenes_.piece_table, hit);
   }
 
   // Where only spheres can be hit (packets_), every batch goes in packets of eight, camera rays
@@ -175,7 +176,7 @@ class EmbreeBackend final : public Backend {
   }
 
  private:
-  EmbreeRayTarget target() const { return {scenes_.top.get(), gate_, wide_loads_}; }
+  EmbreeRayTarget target() const { return {scenes_.top.get(), gate_, wide_loads_, scenes_.piece_table}; }
 
   std::shared_ptr<EmbreeDevice> device_;
   // Rays go to Embree in packets of eight (rtcIntersect8, rtcOccluded8): one traversal

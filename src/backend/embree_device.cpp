@@ -77,7 +77,12 @@ bool EmbreeDevice::monitor_memory(void* user, ssize_t bytes, bool post) {
   auto* self = static_cast<EmbreeDevice*>(user);
   const std::int64_t total = self->session_bytes_.fetch_add(bytes, std::memory_order_relaxed) + bytes;
   const std::int64_t limit = self->session_limit_.load(std::memory_order_relaxed);
-  if (bytes <= 0 || limit == 0 || total <= limit) return true;
+  if (bytes <= 0 || limit == 0 || total <= limit) {
+    std::int64_t peak = self->session_peak_.load(std::memory_order_relaxed);
+    while (total > peak && !self->session_peak_.compare_exchange_weak(peak, total, std::memory_order_relaxed)) {
+    }
+    return true;
+  }
   self->limit_exceeded_.store(true, std::memory_order_relaxed);
   // Before the allocation (post == false) cancelling means it never happens; after it, Embree
   // frees the block itself and reports that free.
@@ -88,6 +93,7 @@ bool EmbreeDevice::monitor_memory(void* user, ssize_t bytes, bool post) {
 EmbreeDevice::Session::Session(EmbreeDevice& device, std::size_t memory_limit)
     : device_(device), lock_(device.session_mutex_), memory_limit_(memory_limit) {
   device_.session_bytes_.store(0, std::memory_order_relaxed);
+  device_.session_peak_.store(0, std::memory_order_relaxed);
   const std::size_t limit = std::min<std::size_t>(memory_limit, std::numeric_limits<std::int64_t>::max());
   device_.session_limit_.store(static_cast<std::int64_t>(limit), std::memory_order_relaxed);
   device_.limit_exceeded_.store(false, std::memory_order_relaxed);
@@ -119,5 +125,7 @@ void EmbreeDevice::Session::check(std::string_view operation) {
 std::int64_t EmbreeDevice::Session::allocated_bytes() const {
   return device_.session_bytes_.load(std::memory_order_relaxed);
 }
+
+std::int64_t EmbreeDevice::Session::peak_bytes() const { return device_.session_peak_.load(std::memory_order_relaxed); }
 
 }  // namespace rtpro

@@ -40,8 +40,9 @@ class EmbreeDevice {
     // Throws RuntimeError for the first error Embree reported since the previous check;
     // `operation` says what was being done (e.g. "commit of the top-level scene").
     void check(std::string_view operation);
-    // Net bytes Embree allocated since the session started.
+    // Net bytes Embree allocated since the session started, and the most it held at once.
     std::int64_t allocated_bytes() const;
+    std::int64_t peak_bytes() const;
     RTCDevice device() const { return device_.handle(); }
 
    private:
@@ -63,6 +64,7 @@ class EmbreeDevice {
   std::string first_error_message_;
 
   std::atomic<std::int64_t> session_bytes_{0};
+  std::atomic<std::int64_t> session_peak_{0};
   std::atomic<std::int64_t> session_limit_{0};  // 0: unlimited
   std::atomic<bool> limit_exceeded_{false};
 };

@@ -2,6 +2,7 @@
 // The Embree backend's batches: a coherent stream goes to Embree as packets of eight in its own
 // layout (rtcIntersectNM), and in scenes without triangles every batch goes as packets of eight
 // (rtcIntersect8) whose sphere callbacks decide each hit. Each ray's answer is the single-ray one.
+#include "embree_pieces.h"
 #include "ray_gate.h"
 #include "rtpro/backend/hit.h"
 #include "rtpro/core/ray.h"
@@ -14,12 +15,13 @@
 
 namespace rtpro {
 
-// What a batch is traced against: the top-level scene, the backend's gate, and whether eight
-// rays load at once (load_traceable_lanes needs AVX2).
+// What a batch is traced against: the top-level scene, the backend's gate, whether eight
+// rays load at once (load_traceable_lanes needs AVX2), and the meshes built in pieces.
 struct EmbreeRayTarget {
   RTCScene scene;
   const RayGate& gate;
   bool wide_loads;
+  const EmbreePieces& pieces;
 };
 
 // std::nextafter(t, 0.0f) without the libm call (0.7% of a render): one step towards zero is one
@@ -30,7 +32,7 @@ inline float one_step_towards_zero(float t) {
 }
 
 // An answered Embree query as rtpro's hit, or false where it hit nothing.
-inline bool from_embree(const RTCRayHit& in, Hit& hit) {
+inline bool from_embree(const RTCRayHit& in, const EmbreePieces& pieces, Hit& hit) {
   if (in.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
   hit.t = in.ray.tfar;
   hit.u = in.hit.u;
@@ -38,6 +40,7 @@ inline bool from_embree(const RTCRayHit& in, Hit& hit) {
   hit.geom_id = in.hit.geomID;
   hit.prim_id = in.hit.primID;
   hit.inst_id = in.hit.instID[0];
+  pieces.resolve(hit);
   return true;
 }
 

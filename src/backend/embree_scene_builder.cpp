@@ -5,6 +5,7 @@
 #include "rtpro/core/overloaded.h"
 #include "rtpro/core/ray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <span>
@@ -109,19 +110,64 @@ RTCSceneFlags embree_group_flags(const Group& group, std::span<const Group> prot
 
 namespace {
 
+// A mesh the scene build ordered in pieces, and big enough to be split.
+bool built_in_pieces(const Geometry& geometry) {
+  const auto* mesh = std::get_if<TriangleMesh>(&geometry);
+  return mesh != nullptr && mesh->piece_triangles != 0 && !mesh->moving() &&
+         mesh->triangle_count() > mesh->piece_triangles;
+}
+
+EmbreeScene new_scene(EmbreeDevice::Session& session, RTCSceneFlags flags, const EmbreeBuildSettings& settings,
+                      const std::string& where) {
+  EmbreeScene scene(rtcNewScene(session.device()));
+  session.check("creation of the scene for " + where);
+  rtcSetSceneFlags(scene.get(), flags);
+  rtcSetSceneBuildQuality(scene.get(), settings.quality);
+  return scene;
+}
+
+// Each piece of top-level mesh `g` as a committed scene of its own, appended to `scenes`.
+void build_pieces(EmbreeDevice::Session& session, const TriangleMesh& mesh, std::uint32_t g,
+                  const EmbreeBuildSettings& settings, EmbreeScenes& scenes) {
+  const std::string where = "a piece of geometry " + std::to_string(g) + " of the top group";
+  for (std::uint32_t first = 0; first < mesh.triangle_count(); first += mesh.piece_triangles) {
+    const auto count =
+        static_cast<std::uint32_t>(std::min<std::size_t>(mesh.piece_triangles, mesh.triangle_count() - first));
+    EmbreeScene piece = new_scene(session, settings.flags, settings, where);
+    const EmbreeGeometry geometry = new_embree_piece(session.device(), mesh, first, count, settings.quality);
+    session.check("creation of " + where);
+    rtcAttachGeometryByID(piece.get(), geometry.get(), 0);
+    session.check("attaching " + where);
+    rtcCommitScene(piece.get());
+    session.check("the BVH build of " + where);
+    scenes.pieces.push_back(std::move(piece));
+    scenes.piece_table.pieces.push_back({g, first});
+  }
+}
+
+// An instance placing a piece where its mesh is: no transform, so Embree's ray in the piece is
+// the ray itself (an identity matrix changes no coordinate).
+EmbreeGeometry new_piece_instance(RTCDevice device, RTCScene piece) {
+  static constexpr float kIdentity[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+  EmbreeGeometry geometry(rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE));
+  if (!geometry) return geometry;
+  rtcSetGeometryInstancedScene(geometry.get(), piece);
+  rtcSetGeometryTransform(geometry.get(), 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, kIdentity);
+  rtcCommitGeometry(geometry.get());
+  return geometry;
+}
+
 EmbreeScene build_group(EmbreeDevice::Session& session, const Group& group, int group_index,
                         std::span<const Group> prototype_groups, const std::vector<EmbreeScene>& prototypes,
-                        const EmbreeBuildSettings& settings) {
+                        const EmbreeBuildSettings& settings, const EmbreeScenes* pieces = nullptr) {
   RTCDevice device = session.device();
   const std::string where = group_name(group_index);
-  EmbreeScene scene(rtcNewScene(device));
-  session.check("creation of the scene for " + where);
-  rtcSetSceneFlags(scene.get(), embree_group_flags(group, prototype_groups, settings));
-  rtcSetSceneBuildQuality(scene.get(), settings.quality);
+  EmbreeScene scene = new_scene(session, embree_group_flags(group, prototype_groups, settings), settings, where);
 
   for (std::uint32_t g = 0; g < group.geometries.size(); ++g) {
     const Geometry& geometry = group.geometries[g];
-    if (is_empty(geometry)) continue;  // nothing to hit; ids need not be contiguous
+    if (is_empty(geometry)) continue;                              // nothing to hit; ids need not be contiguous
+    if (pieces != nullptr && built_in_pieces(geometry)) continue;  // its pieces' instances stand for it
     EmbreeGeometry embree_geometry;
     std::visit(
         Overloaded{
@@ -133,6 +179,15 @@ EmbreeScene build_group(EmbreeDevice::Session& session, const Group& group, int 
     session.check("creation of geometry " + std::to_string(g) + " of " + where);
     rtcAttachGeometryByID(scene.get(), embree_geometry.get(), g);
     session.check("attaching geometry " + std::to_string(g) + " of " + where);
+  }
+  if (pieces != nullptr) {
+    for (std::size_t k = 0; k < pieces->pieces.size(); ++k) {
+      const auto id = static_cast<std::uint32_t>(pieces->piece_table.first_instance + k);
+      const EmbreeGeometry instance = new_piece_instance(device, pieces->pieces[k].get());
+      session.check("creation of the instance of piece " + std::to_string(k));
+      rtcAttachGeometryByID(scene.get(), instance.get(), id);
+      session.check("attaching the instance of piece " + std::to_string(k));
+    }
   }
   rtcCommitScene(scene.get());
   session.check("the BVH build of " + where);
@@ -165,7 +220,11 @@ EmbreeScenes build_embree_scenes(EmbreeDevice::Session& session, const RenderSce
   scenes.prototypes.reserve(scene.prototypes.size());
   for (std::size_t p = 0; p < scene.prototypes.size(); ++p)
     scenes.prototypes.push_back(build_group(session, scene.prototypes[p], static_cast<int>(p), {}, {}, settings));
-  scenes.top = build_group(session, scene.top, -1, scene.prototypes, scenes.prototypes, settings);
+  scenes.piece_table.first_instance = static_cast<std::uint32_t>(scene.top.geometries.size());
+  for (std::uint32_t g = 0; g < scene.top.geometries.size(); ++g)
+    if (built_in_pieces(scene.top.geometries[g]))
+      build_pieces(session, std::get<TriangleMesh>(scene.top.geometries[g]), g, settings, scenes);
+  scenes.top = build_group(session, scene.top, -1, scene.prototypes, scenes.prototypes, settings, &scenes);
   return scenes;
 }
 

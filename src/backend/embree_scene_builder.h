@@ -5,6 +5,7 @@
 #include "rtpro/backend/backend.h"
 #include "embree_device.h"
 #include "embree_handles.h"
+#include "embree_pieces.h"
 #include "rtpro/scene/render_scene.h"
 
 #include <embree3/rtcore.h>
@@ -32,11 +33,14 @@ RTCSceneFlags embree_group_flags(const Group& group, std::span<const Group> prot
 
 struct EmbreeScenes {
   std::vector<EmbreeScene> prototypes;
+  std::vector<EmbreeScene> pieces;  // of top-level meshes built in pieces, in `piece_table`'s order
   EmbreeScene top;
+  EmbreePieces piece_table;
 };
 
-// Builds and commits everything: prototypes first, then the instances referencing them, then the
-// top scene. Triangle and sphere arrays are shared, not copied, so `scene` must outlive the
+// Builds and commits everything: prototypes first, then the pieces of top-level meshes ordered in
+// pieces (TriangleMesh::piece_triangles; each piece committed before the next is made), then the
+// top scene with the instances referencing them. Triangle and sphere arrays are shared, not copied, so `scene` must outlive the
 // result. Throws RuntimeError for geometry Embree would silently drop (non-finite or beyond its
 // coordinate range) and for every error Embree reports.
 EmbreeScenes build_embree_scenes(EmbreeDevice::Session& session, const RenderScene& scene,

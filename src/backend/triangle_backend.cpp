@@ -65,4 +65,19 @@ EmbreeGeometry new_embree_geometry(RTCDevice device, const TriangleMesh& mesh, R
   return geometry;
 }
 
+EmbreeGeometry new_embree_piece(RTCDevice device, const TriangleMesh& mesh, std::uint32_t first_triangle,
+                                std::uint32_t triangle_count, RTCBuildQuality quality) {
+  EmbreeGeometry geometry(rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE));
+  if (!geometry) return geometry;
+  RTCGeometry g = geometry.get();
+  rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh.vertices.data(), 0,
+                             sizeof(MeshVertex), mesh.vertices.size());
+  rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.triangles.data(),
+                             std::size_t{first_triangle} * sizeof(TriangleIndices), sizeof(TriangleIndices),
+                             triangle_count);
+  rtcSetGeometryBuildQuality(g, quality);
+  rtcCommitGeometry(g);
+  return geometry;
+}
+
 }  // namespace rtpro

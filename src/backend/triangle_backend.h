@@ -66,6 +66,11 @@ std::optional<std::string> embree_refusal(const TriangleMesh& mesh);
 // Shares the mesh arrays with Embree, which must outlive the geometry.
 EmbreeGeometry new_embree_geometry(RTCDevice device, const TriangleMesh& mesh, RTCBuildQuality quality);
 
+// Triangles [first_triangle, first_triangle + triangle_count) of a static mesh as a geometry of
+// their own (one of its pieces, scene/mesh_pieces.h): Embree's primIDs count from first_triangle.
+EmbreeGeometry new_embree_piece(RTCDevice device, const TriangleMesh& mesh, std::uint32_t first_triangle,
+                                std::uint32_t triangle_count, RTCBuildQuality quality);
+
 // Embree's triangle kernels round packet lanes differently from single rays, so the hit can
 // depend on which rays share a packet (embree_backend.cpp, rays_decided_by_callbacks).
 inline bool hits_decided_by_rtpro(const TriangleMesh&) { return false; }

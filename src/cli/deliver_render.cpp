@@ -126,6 +126,7 @@ void report_statistics(const RenderRequest& request, RenderStatistics& stats, co
                        const BackendStats& backend_stats, Clock::time_point start, Log& log) {
   stats.rejected_rays = backend_stats.rejected_rays;
   stats.acceleration_bytes = backend_stats.acceleration_bytes;
+  stats.acceleration_build_peak_bytes = backend_stats.build_peak_bytes;
   stats.peak_rss_bytes = peak_rss_bytes();
   if (request.print_stats || !request.stats_json.empty()) {
     const SceneSummary summary = summarize(scene);

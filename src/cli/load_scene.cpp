@@ -26,6 +26,7 @@ SceneBuildOptions build_options(const SceneLoad& load, const RenderCost& cost) {
   const MemoryBudget& memory = load.memory;
   SceneBuildOptions options;
   options.compact_normals = load.compact_normals;
+  options.piece_triangles = load.piece_triangles;
   options.geometry_budget =
       std::max<std::uint64_t>(memory.bytes > cost.total_bytes ? memory.bytes - cost.total_bytes : 0, 1);
   options.budget_source = memory.source;

@@ -27,7 +27,8 @@ struct SceneLoad {
   // `region_text` is how the command line spelled it, for the message.
   std::optional<PixelRegion> region = std::nullopt;
   std::string region_text = {};
-  bool compact_normals = false;  // --compact-normals: SceneBuildOptions::compact_normals
+  bool compact_normals = false;       // --compact-normals: SceneBuildOptions::compact_normals
+  std::uint32_t piece_triangles = 0;  // --embree-pieces: SceneBuildOptions::piece_triangles
 };
 
 struct LoadedScene {

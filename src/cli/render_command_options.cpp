@@ -116,6 +116,10 @@ void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
   cmd.add_flag("--compact-normals", o.compact_normals,
                "Mesh shading normals in 4 bytes instead of 12 (octahedral codes, each within 5e-5 radians): "
                "smaller meshes, images that differ in the last bits");
+  cmd.add_option("--embree-pieces", o.piece_triangles,
+                 "Build each mesh of more than this many triangles (0: off, else at least 4096) as compact pieces "
+                 "of that many, one Embree BVH after another: the build's temporary memory (32 bytes a triangle) "
+                 "is one piece's. Reorders the mesh's triangles, for every backend");
   cmd.add_option("--max-memory", o.max_memory_mb,
                  "Memory budget in MiB for the whole render, checked against an up-front estimate and given to "
                  "Embree as its limit (0: no limit; default: the smaller of 4096 and the available memory)");

@@ -50,7 +50,8 @@ struct RenderCommandOptions {
   std::string noise_metric = "cycles";
   BackendOptions backend_options;  // Embree settings from the command line; threads and memory set later
   bool compact_normals = false;
-  std::string max_memory_mb;  // MiB; empty: the default budget (see parse_memory_budget)
+  std::uint32_t piece_triangles = 0;  // --embree-pieces; 0: whole meshes
+  std::string max_memory_mb;          // MiB; empty: the default budget (see parse_memory_budget)
 };
 
 // Registers every option of `rtpro render` on `cmd`, writing into `o` (which must outlive it).

@@ -42,6 +42,9 @@ JobIdentity render_job_identity(const SceneDescription& description, const Scene
                                (settings.backend_options.embree_compact ? ", compact" : ""));
   // Only when set: journals of renders without it keep their identity.
   if (settings.compact_normals) identity.set("normals", "compact (octahedral)");
+  // The triangles' order decides which of two at exactly the same distance is hit.
+  if (settings.piece_triangles != 0)
+    identity.set("mesh pieces", std::to_string(settings.piece_triangles) + " triangles");
   const PixelRegion& r = settings.region;
   identity.set("region", std::to_string(r.x0) + "," + std::to_string(r.y0) + "," + std::to_string(r.x1) + "," +
                              std::to_string(r.y1));

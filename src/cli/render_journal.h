@@ -29,6 +29,7 @@ struct RenderJobSettings {
   std::vector<std::string> channels;
   AdaptiveSampling adaptive;
   bool compact_normals = false;
+  std::uint32_t piece_triangles = 0;
 };
 
 JobIdentity render_job_identity(const SceneDescription& description, const SceneBuildReport& report,

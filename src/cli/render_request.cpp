@@ -8,6 +8,7 @@
 #include "rtpro/image/color_config.h"
 #include "rtpro/image/output_check.h"
 #include "rtpro/job/tile_journal.h"
+#include "rtpro/scene/mesh_pieces.h"
 #include "rtpro/render/film.h"
 
 #include <algorithm>
@@ -23,6 +24,9 @@ RenderOptions parse_render_options(const RenderCommandOptions& o) {
   RenderOptions options;
   options.region = parse_region(o.region);
   if (o.tile_size < 1) throw InputError("--tile-size must be at least 1 pixel, got " + std::to_string(o.tile_size));
+  if (o.piece_triangles != 0 && o.piece_triangles < kMinPieceTriangles)
+    throw InputError("--embree-pieces must be 0 (whole meshes) or at least " + std::to_string(kMinPieceTriangles) +
+                     " triangles, got " + std::to_string(o.piece_triangles));
   options.tile_size = o.tile_size;
   for (const std::string& name : o.aovs) {
     const Aov aov = parse_aov(name);
@@ -161,7 +165,7 @@ RenderRequest parse_render_request(const RenderCommandOptions& o, const Communic
       .leader = leader,
       .threads = threads,
       .scene = {o.scene, o.scene_overrides, memory, channels_beyond_colour(render.aovs), render.region, o.region,
-                o.compact_normals},
+                o.compact_normals, o.piece_triangles},
       .backend = backend,
       .backend_options = backend_options,
       .render = render,

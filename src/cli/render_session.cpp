@@ -102,6 +102,7 @@ void RenderSession::open_journal() {
   settings.channels = FilmLayout(options_.aovs).channels();
   settings.adaptive = options_.adaptive;
   settings.compact_normals = request_.scene.compact_normals;
+  settings.piece_triangles = request_.scene.piece_triangles;
   const JobIdentity identity = render_job_identity(loaded_.description, loaded_.report, loaded_.scene, settings);
   if (job_) agree_on_job(*job_, identity, request_.start_timeout);
   if (!journaled) return;

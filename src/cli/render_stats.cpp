@@ -71,6 +71,11 @@ std::string RenderStatistics::text() const {
                 static_cast<unsigned long long>(nan_samples), mib(peak_rss_bytes), mib(peak_rss_after_load_bytes),
                 mib(peak_rss_after_build_bytes), mib(geometry_bytes), mib(acceleration_bytes));
   std::string out = buffer;
+  if (acceleration_build_peak_bytes > 0) {
+    std::snprintf(buffer, sizeof buffer, "  BVH build     %.1f MiB at most while built\n",
+                  mib(acceleration_build_peak_bytes));
+    out += buffer;
+  }
   if (triangles > 0) {
     std::snprintf(buffer, sizeof buffer, "  triangles     %llu, %.1f bytes each (geometry and acceleration)\n",
                   static_cast<unsigned long long>(triangles), bytes_per_triangle());
@@ -130,7 +135,8 @@ nlohmann::json RenderStatistics::json() const {
         {"peak_rss_after_load", peak_rss_after_load_bytes},
         {"peak_rss_after_build", peak_rss_after_build_bytes},
         {"geometry", geometry_bytes},
-        {"acceleration", acceleration_bytes}}}};
+        {"acceleration", acceleration_bytes},
+        {"acceleration_build_peak", acceleration_build_peak_bytes}}}};
   if (region) {
     out["region"] = {region->x0, region->y0, region->x1, region->y1};
     out["crop"] = crop;

@@ -30,6 +30,7 @@ struct RenderStatistics {
   std::uint64_t rejected_rays = 0;
   std::uint64_t nan_samples = 0;
   std::size_t acceleration_bytes = 0;
+  std::size_t acceleration_build_peak_bytes = 0;  // the most the BVH build held at once (embree; 0: not known)
   // rtpro's own arrays of the shapes (vertices, indices, normals, texture coordinates, spheres):
   // with acceleration_bytes, what the geometry costs; per stored triangle, bytes_per_triangle().
   std::size_t geometry_bytes = 0;

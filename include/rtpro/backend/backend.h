@@ -17,6 +17,7 @@ namespace rtpro {
 struct BackendStats {
   double build_seconds = 0.0;
   std::size_t acceleration_bytes = 0;  // BVH and backend-side copies; not the shared mesh arrays
+  std::size_t build_peak_bytes = 0;    // the most the build held at once, its temporaries too (embree)
   std::uint64_t rejected_rays = 0;     // rays refused by is_traceable()
 };
 

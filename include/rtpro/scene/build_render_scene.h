@@ -32,9 +32,13 @@ inline constexpr std::size_t kMaxFlattenedInstances = 10'000'000;
 // while building (subdivision surfaces; 0: the default budget), and how to read a displacement
 // texture (the image layer, which the scene module does not link; unset: such a texture is an
 // input error), and whether meshes keep their shading normals as 32-bit octahedral codes
-// (TriangleMesh::pack_normals: 8 bytes a vertex less, each normal within 5e-5 radians).
+// (TriangleMesh::pack_normals: 8 bytes a vertex less, each normal within 5e-5 radians), and
+// whether top-level static meshes of more than `piece_triangles` triangles are reordered into
+// compact pieces of that many (scene/mesh_pieces.h; 0: file order), which the Embree backend
+// builds one BVH at a time.
 struct SceneBuildOptions {
   bool compact_normals = false;
+  std::uint32_t piece_triangles = 0;
   std::uint64_t geometry_budget = 0;
   std::string budget_source = "the default budget";
   std::function<ScalarImage(const std::filesystem::path&, std::uint64_t max_bytes)> read_scalar_image = nullptr;

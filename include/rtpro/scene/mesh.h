@@ -74,6 +74,9 @@ struct TriangleMesh {
   // normal_steps likewise for `normals`; empty while vertex_steps is not: the normals stay put.
   std::vector<VertexArray> vertex_steps = {};
   std::vector<std::vector<Vec3>> normal_steps = {};
+  // Non-zero: the triangles come in spatially compact runs of this many (the last shorter), which
+  // a backend may build as separate BVHs (scene/mesh_pieces.h).
+  std::uint32_t piece_triangles = 0;
 
   std::size_t triangle_count() const { return triangles.size(); }
   std::uint32_t material_of(std::uint32_t triangle) const {

@@ -3,6 +3,7 @@
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
 #include "rtpro/core/overloaded.h"
+#include "rtpro/scene/mesh_pieces.h"
 #include "rtpro/scene/render_cost.h"
 #include "traceable_range_check.h"
 #include "gltf_asset.h"
@@ -392,6 +393,19 @@ void pack_mesh_normals(RenderScene& scene) {
   for (Group& prototype : scene.prototypes) pack(prototype);
 }
 
+// The top group's only: Embree instances one level deep, so a prototype's mesh cannot become
+// instanced pieces.
+void order_meshes_in_pieces(RenderScene& scene, std::uint32_t piece_triangles) {
+  for (Geometry& geometry : scene.top.geometries)
+    if (auto* mesh = std::get_if<TriangleMesh>(&geometry)) order_in_pieces(*mesh, piece_triangles);
+}
+
+// What the build does to the whole scene once every entry is in.
+void finish_render_scene(RenderScene& scene, const SceneBuildOptions& options) {
+  if (options.compact_normals) pack_mesh_normals(scene);
+  if (options.piece_triangles != 0) order_meshes_in_pieces(scene, options.piece_triangles);
+}
+
 }  // namespace
 
 RenderScene build_render_scene(const SceneDescription& description, SceneBuildReport* report,
@@ -399,14 +413,14 @@ RenderScene build_render_scene(const SceneDescription& description, SceneBuildRe
   // A shallow copy: the loaded models it shares with `description` are copied, never taken.
   const SceneDescription shared = description;
   RenderScene scene = RenderSceneBuilder(shared, report, options).build();
-  if (options.compact_normals) pack_mesh_normals(scene);
+  finish_render_scene(scene, options);
   return scene;
 }
 
 RenderScene build_render_scene_taking_models(SceneDescription& description, SceneBuildReport* report,
                                              const SceneBuildOptions& options) {
   RenderScene scene = RenderSceneBuilder(description, report, options).build();
-  if (options.compact_normals) pack_mesh_normals(scene);
+  finish_render_scene(scene, options);
   // An entry placing a glTF file another entry placed alike was never read: it lets go too.
   for (GltfDesc& gltf : description.world.gltfs) gltf.loaded.reset();
   return scene;
