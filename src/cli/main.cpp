@@ -9,7 +9,6 @@
 #include <embree3/rtcore_config.h>
 #include <OpenColorIO/OpenColorIO.h>
 #include <OpenImageIO/oiioversion.h>
-#include <malloc.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -46,13 +45,6 @@ int run(const rtpro::cli::Action& action) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // glibc serves a large allocation with its own mapping, returned to the system when freed, but
-  // raises that threshold to the size of each such block freed: after Embree's build array (4 to
-  // 27 MiB on the dragon) went, the BVH's 1.6 MiB blocks came from the heap, and once freed they
-  // stayed resident under the film and the image (97 MiB at the end of a render whose build
-  // peaked at 67). A fixed threshold keeps every block of 1 MiB or more its own mapping: the same
-  // render peaks at 81 MiB, in the same time.
-  mallopt(M_MMAP_THRESHOLD, 1 << 20);
   CLI::App app{"rtpro: a production-style CPU ray tracer"};
   app.set_version_flag("--version", version_text());
   app.require_subcommand(1);

@@ -9,6 +9,7 @@
 #include "rtpro/image/image_layer.h"
 #include "rtpro/render/tile_renderer.h"
 
+#include <malloc.h>
 #include <unistd.h>
 
 #include <string>
@@ -79,6 +80,11 @@ void RenderSession::release_backend() {
   if (!backend_) return;
   released_stats_ = backend_->stats();
   backend_.reset();
+  // glibc raises its mmap threshold to the size of each large block freed, so after Embree's
+  // build array went, the BVH's blocks came from the heap and, freed, would stay resident under
+  // the film and the image: handed back here, where nothing else is allocated (dragon built in
+  // pieces: the render's end 97 -> 81 MiB).
+  malloc_trim(0);
 }
 
 void RenderSession::open_images() {
