@@ -60,11 +60,14 @@ for run in $(seq "$runs"); do
     done
   done
   # The lean memory settings (docs/performance.md, "Memory"), for their peaks against the viewer's:
-  # compact leaves and normals with Embree's SAH build, and with its Morton build.
-  for lean in compact morton; do
-    quality=medium; [ "$lean" = morton ] && quality=low
+  # compact leaves and normals with Embree's SAH build, with its Morton build, and with the SAH
+  # build in pieces of 131,072 triangles (7 for the dragon).
+  for lean in compact morton pieces; do
+    extra=(--embree-quality medium)
+    [ "$lean" = morton ] && extra=(--embree-quality low)
+    [ "$lean" = pieces ] && extra=(--embree-pieces 131072)
     /usr/bin/time -f "%e %M" -o "$out/dragon-lean-$lean-$run.time" "$build/rtpro" render "$out/scene.yaml" \
-      -o "$out/dragon-lean.png" --embree-compact --embree-quality "$quality" --compact-normals --size 1024x1024 \
+      -o "$out/dragon-lean.png" --embree-compact "${extra[@]}" --compact-normals --size 1024x1024 \
       --spp 1 --threads "$threads" --quiet
   done
   if [ "$have_pathtracer" = 1 ]; then
@@ -166,7 +169,8 @@ if have_viewer:
               f" shipped scene {first['dragon', backend][0] / whole[0]:.2f}x")
     for name, label in (("dragon-embree", "embree"), ("dragon-native", "native"),
                         ("dragon-lean-compact", "embree --embree-compact --compact-normals"),
-                        ("dragon-lean-morton", "embree --embree-compact --embree-quality low --compact-normals")):
+                        ("dragon-lean-morton", "embree --embree-compact --embree-quality low --compact-normals"),
+                        ("dragon-lean-pieces", "embree --embree-compact --compact-normals --embree-pieces 131072")):
         _, peak = timed(name)
         print(f"  peak RSS of the shipped scene / the viewer's, {label}: {peak:.0f} MiB, {peak / viewer_peak:.2f}x")
 PY

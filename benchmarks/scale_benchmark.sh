@@ -6,25 +6,30 @@
 # render's start: load + build), peak RSS (and at the end of load and of build), bytes per
 # triangle (rtpro's mesh arrays + the acceleration structure, and peak RSS over the triangles),
 # and rtpro's up-front memory estimate beside the measured peak; then how each figure grows from
-# one size to the next (linear: x10 triangles, x10 figure).
+# one size to the next (linear: x10 triangles, x10 figure). A third run per size, embree-pieces,
+# builds the grid with --embree-pieces (Embree's build records one piece's at a time).
 # Usage: benchmarks/scale_benchmark.sh [--sizes "1 10 100"] [--threads N] [--max-memory MiB]
+#                                      [--pieces TRIANGLES]
 #   --sizes: millions of triangles (default "1 10 100"); the PLYs are kept in the results folder
 #     (about 19 bytes a triangle: 1.9 GB for 100 M) and reused.
 #   --max-memory: passed to rtpro (default: what rtpro allows by itself, the smaller of 4 GiB and
 #     the available memory; 100 M triangles need about 14 GB, so pass e.g. --max-memory 20000).
+#   --pieces: the piece size of the embree-pieces runs (default 1048576).
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
 source "$(dirname "$0")/release_tree.sh"
 sizes="1 10 100"
 threads=$(nproc)
 max_memory=""
+pieces=1048576
 while [ $# -gt 0 ]; do
   case "$1" in
     --sizes) sizes=$2; shift 2 ;;
     --threads) threads=$2; shift 2 ;;
     --max-memory) max_memory=$2; shift 2 ;;
+    --pieces) pieces=$2; shift 2 ;;
     -h | --help) sed -n '2,/^set /{/^set /d; s/^# \{0,1\}//; p}' "$0"; exit 0 ;;
-    *) echo "usage: $0 [--sizes \"1 10 100\"] [--threads N] [--max-memory MiB]" >&2; exit 2 ;;
+    *) echo "usage: $0 [--sizes \"1 10 100\"] [--threads N] [--max-memory MiB] [--pieces TRIANGLES]" >&2; exit 2 ;;
   esac
 done
 out="$build/benchmark-results/scale"
@@ -47,11 +52,15 @@ lights:
 world:
   - {type: mesh, file: grid-${size}M.ply, material: clay}
 EOF
-  for backend in embree native; do
-    run="$out/grid-${size}M-$backend"
+  for config in embree native embree-pieces; do
+    run="$out/grid-${size}M-$config"
+    case $config in
+      embree-pieces) settings=(--backend embree --embree-pieces "$pieces") ;;
+      *) settings=(--backend "$config") ;;
+    esac
     /usr/bin/time -f "%e %M" -o "$run.time" "$build/rtpro" render "$out/grid-${size}M.yaml" -o "$run.png" \
-      --backend "$backend" --threads "$threads" --stats-json "$run.json" "${memory_flag[@]}" -v 2>"$run.log" ||
-      { echo "grid ${size}M, $backend: failed (see $run.log)"; tail -3 "$run.log"; }
+      "${settings[@]}" --threads "$threads" --stats-json "$run.json" "${memory_flag[@]}" -v 2>"$run.log" ||
+      { echo "grid ${size}M, $config: failed (see $run.log)"; tail -3 "$run.log"; }
   done
 done
 
@@ -78,21 +87,21 @@ def run(size, backend):
             "estimate": float(estimate.group(1)) * scale[estimate.group(2)] if estimate else float("nan")}
 
 print("scale: a displaced grid, 1024x1024, 1 spp (seconds are not comparable across loaded machines)")
-print(f"{'tris':>5} {'backend':8} {'load s':>7} {'build s':>8} {'render s':>9} {'1st px s':>9} "
+print(f"{'tris':>5} {'backend':13} {'load s':>7} {'build s':>8} {'render s':>9} {'1st px s':>9} "
       f"{'peak MiB':>9} {'@load':>7} {'@build':>7} {'B/tri':>6} {'RSS/tri':>8} {'estimate MiB':>13}")
 results = {}
 for size in sizes:
-    for backend in ("embree", "native"):
+    for backend in ("embree", "native", "embree-pieces"):
         r = run(size, backend)
         results[(size, backend)] = r
         if r is None:
-            print(f"{size + 'M':>5} {backend:8} failed")
+            print(f"{size + 'M':>5} {backend:13} failed")
             continue
-        print(f"{size + 'M':>5} {backend:8} {r['load']:7.2f} {r['build']:8.2f} {r['render']:9.2f} {r['first_pixel']:9.2f} "
+        print(f"{size + 'M':>5} {backend:13} {r['load']:7.2f} {r['build']:8.2f} {r['render']:9.2f} {r['first_pixel']:9.2f} "
               f"{r['rss']:9.1f} {r['rss_load']:7.1f} {r['rss_build']:7.1f} {r['b_tri']:6.1f} {r['rss_tri']:8.1f} "
               f"{r['estimate']:13.1f}")
 print("growth from one size to the next (figure ratio over triangle ratio; 1.00 is linear)")
-for backend in ("embree", "native"):
+for backend in ("embree", "native", "embree-pieces"):
     for a, b in zip(sizes, sizes[1:]):
         ra, rb = results[(a, backend)], results[(b, backend)]
         if not ra or not rb:
@@ -100,5 +109,5 @@ for backend in ("embree", "native"):
         k = rb["tri"] / ra["tri"]
         growth = {f: (rb[f] / ra[f]) / k for f in ("load", "build", "first_pixel", "rss")}
         growth["B/tri"] = rb["b_tri"] / ra["b_tri"]  # per triangle already: 1.00 when linear
-        print(f"  {backend:8} {a}M -> {b}M: " + "  ".join(f"{f} {g:.2f}" for f, g in growth.items()))
+        print(f"  {backend:13} {a}M -> {b}M: " + "  ".join(f"{f} {g:.2f}" for f, g in growth.items()))
 EOF
