@@ -4,10 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <bit>
 #include <cmath>
-#include <random>
 #include <vector>
 
 namespace rtpro {
@@ -68,45 +65,6 @@ TEST(Distribution1D, ExtremeUStaysInsideTheCellsThatHaveProbability) {
     EXPECT_EQ(s.cell, 2u) << "u " << u;
     EXPECT_GE(s.x, 0.5f);
     EXPECT_LT(s.x, 0.75f);
-  }
-}
-
-// The cell a sample falls in by inverting the whole cdf, without sample()'s guide.
-std::size_t cell_by_whole_search(const std::vector<float>& values, float u) {
-  double sum = 0.0;
-  std::vector<double> running{0.0};
-  for (float v : values) running.push_back(sum += v);
-  std::vector<float> cdf;
-  for (double r : running) cdf.push_back(static_cast<float>(r / sum));
-  cdf.back() = 1.0f;
-  const auto above = std::upper_bound(cdf.begin(), cdf.end(), u);
-  return std::min(static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, (above - cdf.begin()) - 1)), values.size() - 1);
-}
-
-// The guide only narrows the search: every u, those on and beside the guide's bucket bounds
-// among them, lands in the cell the whole cdf gives, over peaked, sparse and 3-cell rows alike.
-TEST(Distribution1D, TheGuidedSearchFindsTheWholeSearchsCell) {
-  std::mt19937 rng(17);
-  std::uniform_real_distribution<float> value(0.0f, 1.0f);
-  for (const std::size_t n : {std::size_t{3}, std::size_t{1000}, std::size_t{4096}, std::size_t{5000}}) {
-    std::vector<float> values(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const float v = value(rng);
-      values[i] = i % 7 == 3 ? 0.0f : v * v * v * v * (i % 97 == 0 ? 1000.0f : 1.0f);  // zeros and peaks
-    }
-    const Distribution1D d(values);
-    std::vector<float> us;
-    for (int i = 0; i < 20000; ++i) us.push_back(weyl(i));
-    const float buckets = static_cast<float>(std::bit_ceil(n));
-    for (float k = 1.0f; k < buckets; k += 1.0f) {
-      const float bound = k / buckets;
-      us.push_back(bound);
-      us.push_back(std::nextafter(bound, 0.0f));
-      us.push_back(std::nextafter(bound, 1.0f));
-    }
-    us.push_back(0.0f);
-    us.push_back(0.99999994f);
-    for (const float u : us) ASSERT_EQ(d.sample(u).cell, cell_by_whole_search(values, u)) << "n " << n << " u " << u;
   }
 }
 

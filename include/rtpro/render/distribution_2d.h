@@ -29,20 +29,10 @@ class Distribution1D {
   // The integral of the values over [0, 1) (their mean); 0 when all are zero.
   float integral() const { return integral_; }
   std::size_t size() const { return func_.size(); }
-  // The guide's most buckets: one a cell up to 2^22 cells (u · 2^22 is exact in a float).
-  static constexpr std::size_t kMaxGuideBuckets = std::size_t{1} << 22;
 
  private:
-  void build_guide();
   std::vector<float> func_;
   std::vector<float> cdf_;  // size() + 1 entries, cdf_[0] = 0, cdf_.back() = 1
-  // A guide to the inversion: for u in [k, k + 1) / guide_scale_, the answer lies between
-  // guide_[k] and guide_[k + 1] (upper_bound's positions at those ends), so sample() searches a
-  // cell or two instead of the whole cdf (21 cache-missing steps for a 2048 × 1024 environment map:
-  // 16% of a render lit by one), and finds exactly the cell the whole search would. guide_scale_
-  // is a power of two, so u · guide_scale_ and k / guide_scale_ are exact.
-  std::vector<std::uint32_t> guide_;
-  float guide_scale_ = 0.0f;
   float integral_ = 0.0f;
 };
 

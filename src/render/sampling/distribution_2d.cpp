@@ -5,7 +5,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 
 namespace rtpro {
@@ -26,24 +25,10 @@ Distribution1D::Distribution1D(std::span<const float> func) : func_(func.size())
     std::fill(func_.begin(), func_.end(), 1.0f);
     for (std::size_t i = 0; i <= n; ++i) cdf_[i] = static_cast<float>(static_cast<double>(i) / static_cast<double>(n));
     integral_ = 0.0f;
-    build_guide();
     return;
   }
   for (std::size_t i = 0; i <= n; ++i) cdf_[i] = static_cast<float>(running[i] / sum);
   cdf_[n] = 1.0f;
-  build_guide();
-}
-
-void Distribution1D::build_guide() {
-  const std::size_t buckets = std::bit_ceil(std::clamp<std::size_t>(func_.size(), 1, kMaxGuideBuckets));
-  guide_scale_ = static_cast<float>(buckets);
-  guide_.resize(buckets + 1);
-  std::size_t position = 0;
-  for (std::size_t k = 0; k <= buckets; ++k) {
-    const float bound = static_cast<float>(k) / guide_scale_;
-    while (position < cdf_.size() && cdf_[position] <= bound) ++position;
-    guide_[k] = static_cast<std::uint32_t>(position);
-  }
 }
 
 float Distribution1D::pdf(std::size_t cell) const {
@@ -53,10 +38,8 @@ float Distribution1D::pdf(std::size_t cell) const {
 
 Distribution1D::Sample Distribution1D::sample(float u) const {
   const std::size_t n = func_.size();
-  // The last cell whose cdf is <= u, skipping cells of zero width; searched between the guide's
-  // positions for u's bucket, which hold it.
-  const std::size_t bucket = std::min(static_cast<std::size_t>(u * guide_scale_), guide_.size() - 2);
-  const auto above = std::upper_bound(cdf_.begin() + guide_[bucket], cdf_.begin() + guide_[bucket + 1], u);
+  // The last cell whose cdf is <= u, skipping cells of zero width.
+  const auto above = std::upper_bound(cdf_.begin(), cdf_.end(), u);
   std::size_t cell = static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, (above - cdf_.begin()) - 1));
   cell = std::min(cell, n - 1);
   const float width = cdf_[cell + 1] - cdf_[cell];
@@ -99,15 +82,12 @@ std::size_t Distribution2D::bytes() const {
   return static_cast<std::size_t>(bytes_for(static_cast<std::uint64_t>(width_), static_cast<std::uint64_t>(height_)));
 }
 
-// Per row: the values and cdf (width + 1 entries) of its distribution, its guide (a power of two
-// at least width, plus one), its object, and the marginal's value, cdf and guide entries (at most
-// two guide entries a row).
+// Per row: the values and cdf (width + 1 entries) of its distribution, its object, and the
+// marginal's value and cdf entry.
 std::uint64_t Distribution2D::bytes_for(std::uint64_t width, std::uint64_t height) {
-  const std::uint64_t buckets = std::bit_ceil(std::clamp<std::uint64_t>(width, 1, Distribution1D::kMaxGuideBuckets));
-  const std::uint64_t per_row = saturating_add(
+  const std::uint64_t per_row =
       saturating_add(saturating_multiply(saturating_add(saturating_multiply(width, 2), 1), sizeof(float)),
-                     saturating_multiply(buckets + 1, sizeof(std::uint32_t))),
-      sizeof(Distribution1D) + 2 * sizeof(float) + 2 * sizeof(std::uint32_t));
+                     sizeof(Distribution1D) + 2 * sizeof(float));
   return saturating_multiply(per_row, height);
 }
 
