@@ -9,9 +9,25 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <cmath>
 #include <string>
 
 namespace rtpro::test {
+
+std::string bumpy_grid_obj(int n, double spacing, double amplitude, double fx, double fy) {
+  std::string obj;
+  for (int y = 0; y <= n; ++y)
+    for (int x = 0; x <= n; ++x)
+      obj += "v " + std::to_string(x * spacing) + " " + std::to_string(y * spacing) + " " +
+             std::to_string(amplitude * std::sin(fx * x) * std::cos(fy * y)) + "\n";
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const int a = y * (n + 1) + x + 1, b = a + 1, c = a + n + 1, d = c + 1;
+      obj += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(d) + "\n";
+      obj += "f " + std::to_string(a) + " " + std::to_string(d) + " " + std::to_string(c) + "\n";
+    }
+  return obj;
+}
 
 std::string white_furnace_scene(const std::string& material, int size, int spp) {
   const std::string resolution = std::to_string(size);

@@ -20,6 +20,11 @@ double image_sum(const Image& image);
 // max_depth 64. A material that neither creates nor loses light vanishes in it.
 std::string white_furnace_scene(const std::string& material, int size, int spp);
 
+// The OBJ text of an n × n grid of squares `spacing` apart, two triangles each, whose height at
+// grid point (x, y) is amplitude · sin(fx · x) · cos(fy · y): smooth normals on it point every
+// which way.
+std::string bumpy_grid_obj(int n, double spacing, double amplitude, double fx, double fy);
+
 // An RGB image whose every value is `value`.
 Image uniform_image(int width, int height, float value);
 

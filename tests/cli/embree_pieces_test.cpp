@@ -8,32 +8,15 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <cmath>
 #include <fstream>
 #include <string>
 
 namespace rtpro {
 namespace embree_pieces_test {
 
-// A bumpy, smoothly shaded 90 × 90 grid: 16,200 triangles, four pieces of 4096.
-std::string bumpy_grid_obj() {
-  std::string obj;
-  const int n = 90;
-  for (int y = 0; y <= n; ++y)
-    for (int x = 0; x <= n; ++x)
-      obj += "v " + std::to_string(x / 30.0) + " " + std::to_string(y / 30.0) + " " +
-             std::to_string(0.15 * std::sin(0.4 * x) * std::cos(0.3 * y)) + "\n";
-  for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x) {
-      const int a = y * (n + 1) + x + 1, b = a + 1, c = a + n + 1, d = c + 1;
-      obj += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(d) + "\n";
-      obj += "f " + std::to_string(a) + " " + std::to_string(d) + " " + std::to_string(c) + "\n";
-    }
-  return obj;
-}
-
 std::filesystem::path grid_scene() {
-  test::write_file("grid.obj", bumpy_grid_obj());
+  // A bumpy, smoothly shaded 90 × 90 grid: 16,200 triangles, four pieces of 4096.
+  test::write_file("grid.obj", test::bumpy_grid_obj(90, 1.0 / 30.0, 0.15, 0.4, 0.3));
   return test::write_file("scene.yaml", R"(rtpro: 1
 camera: {position: [1.5, -2.5, 3], look_at: [1.5, 1.5, 0], fov: 50, resolution: [48, 36]}
 render: {integrator: path, spp: 4, max_depth: 3}

@@ -3,6 +3,7 @@
 // the top level and in prototypes alike; normals that move during the shutter stay floats.
 #include "rtpro/scene/build_render_scene.h"
 #include "rtpro/scene/scene_parser.h"
+#include "test_fixtures.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -11,23 +12,6 @@
 
 namespace rtpro {
 namespace compact_normals_test {
-
-// A bumpy, smoothly shaded grid: its normals point every which way.
-std::string bumpy_grid_obj() {
-  std::string obj;
-  const int n = 12;
-  for (int y = 0; y <= n; ++y)
-    for (int x = 0; x <= n; ++x)
-      obj += "v " + std::to_string(x) + " " + std::to_string(y) + " " +
-             std::to_string(0.7 * std::sin(1.3 * x) * std::cos(0.9 * y)) + "\n";
-  for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x) {
-      const int a = y * (n + 1) + x + 1, b = a + 1, c = a + n + 1, d = c + 1;
-      obj += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(d) + "\n";
-      obj += "f " + std::to_string(a) + " " + std::to_string(d) + " " + std::to_string(c) + "\n";
-    }
-  return obj;
-}
 
 std::vector<const TriangleMesh*> meshes_of(const RenderScene& scene) {
   std::vector<const TriangleMesh*> out;
@@ -41,7 +25,7 @@ std::vector<const TriangleMesh*> meshes_of(const RenderScene& scene) {
 }
 
 TEST(CompactNormals, EveryMeshsNormalsBecomeCodesWithinTheirBound) {
-  test::write_file("bumpy.obj", bumpy_grid_obj());
+  test::write_file("bumpy.obj", test::bumpy_grid_obj(12, 1.0, 0.7, 1.3, 0.9));
   const auto scene_file = test::write_file("scene.yaml", R"(rtpro: 1
 camera: {position: [6, 6, 20], look_at: [6, 6, 0], fov: 40, resolution: [8, 8]}
 objects:
