@@ -83,7 +83,7 @@ void RenderSession::release_backend() {
   // glibc raises its mmap threshold to the size of each large block freed, so after Embree's
   // build array went, the BVH's blocks came from the heap and, freed, would stay resident under
   // the film and the image: handed back here, where nothing else is allocated (dragon built in
-  // pieces: the render's end 97 -> 81 MiB).
+  // pieces: the render's end 97 -> 84-85 MiB).
   malloc_trim(0);
 }
 

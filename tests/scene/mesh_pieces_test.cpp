@@ -73,14 +73,6 @@ TEST(MeshPieces, EveryTriangleKeepsItsMaterialAndEachRunIsACompactPiece) {
   EXPECT_LT(summed_piece_area(mesh, kMinPieceTriangles), 1.01 * grid_area);
 }
 
-TEST(MeshPieces, TheOrderDependsOnTheMeshAlone) {
-  TriangleMesh a = shuffled_grid(64, 5), b = shuffled_grid(64, 5);
-  order_in_pieces(a, kMinPieceTriangles);
-  order_in_pieces(b, kMinPieceTriangles);
-  EXPECT_EQ(triangles_with_materials(a), triangles_with_materials(b));
-  for (std::uint32_t t = 0; t < a.triangle_count(); ++t) EXPECT_EQ(a.triangle_materials[t], b.triangle_materials[t]);
-}
-
 TEST(MeshPieces, SmallAndMovingMeshesAreLeftAlone) {
   TriangleMesh small = shuffled_grid(40, 7);  // 3,200 triangles: one piece
   const std::vector<std::uint32_t> small_order = small.triangle_materials;
