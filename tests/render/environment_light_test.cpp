@@ -153,6 +153,28 @@ TEST(EnvironmentLight, EveryDirectionThatShowsLightHasAPdf) {
   EXPECT_GT(lit, 50);
 }
 
+// Both strategies of multiple importance sampling must see one number for a direction, and the
+// escaped ray's lookup by image coordinates must be the direction's own.
+TEST(EnvironmentLight, ASampleCarriesExactlyItsDirectionsRadianceAndPdf) {
+  const Affine turn = compose(Affine::rotate({0, 1, 0}, 70.0f), Affine::rotate({1, 0, 0}, -25.0f));
+  const EnvironmentLight light(environment(turn), lumpy_image(32, 16));
+  Uniforms uniforms(11);
+  int sampled = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const std::optional<EnvironmentLight::Sample> s = light.sample(uniforms.next_2d());
+    if (!s) continue;
+    ++sampled;
+    const Color radiance = light.radiance(s->direction);
+    EXPECT_EQ(s->radiance.x, radiance.x);
+    EXPECT_EQ(s->radiance.z, radiance.z);
+    EXPECT_EQ(s->pdf, light.pdf(s->direction));
+    const EnvironmentLight::ImageCoordinates uv = light.image_coordinates(s->direction);
+    EXPECT_EQ(light.radiance_at(uv).y, radiance.y);
+    EXPECT_EQ(light.pdf_at(uv), s->pdf);
+  }
+  EXPECT_GT(sampled, 1900);
+}
+
 TEST(EnvironmentLight, GreyImagesAreReadAsEqualChannels) {
   Image grey(4, 2, {"Y"});
   for (float& v : grey.data) v = 0.75f;

@@ -36,6 +36,15 @@ class EnvironmentLight {
 
   // What arrives from world direction `direction` (any length but 0).
   Color radiance(const Vec3& direction) const;
+  // Where a world direction falls in the image (u across from the left, v down from the top, both
+  // [0, 1]; nothing to find for a constant environment): found once, for both radiance_at and
+  // pdf_at, which give what radiance() and pdf() give for that direction.
+  struct ImageCoordinates {
+    float u, v;
+  };
+  ImageCoordinates image_coordinates(const Vec3& world_direction) const;
+  Color radiance_at(ImageCoordinates uv) const;
+  float pdf_at(ImageCoordinates uv) const;
 
   struct Sample {
     Vec3 direction;  // unit, world space, towards the environment
@@ -60,10 +69,6 @@ class EnvironmentLight {
   static std::uint64_t peak_bytes(std::uint64_t width, std::uint64_t height, std::uint64_t channels);
 
  private:
-  struct ImageCoordinates {
-    float u, v;  // u across from the left, v down from the top, both [0, 1]
-  };
-  ImageCoordinates image_coordinates(const Vec3& world_direction) const;
   Color lookup(float u, float v) const;
 
   Affine to_world_, to_local_;

@@ -175,8 +175,9 @@ void PathVertexStep<kLightPathControls>::add_escaped_light(const Path& path, con
     result.radiance += clamp(path.beta * scene_.render.background, emission_limit(path));
     return;
   }
-  const Color radiance = environment->radiance(ray.dir);
-  const float w_b = bsdf_sample_weight(path, [&] { return lights_.environment_pdf(ray.dir, path.group); });
+  const EnvironmentLight::ImageCoordinates uv = environment->image_coordinates(ray.dir);
+  const Color radiance = environment->radiance_at(uv);
+  const float w_b = bsdf_sample_weight(path, [&] { return lights_.environment_pdf_at(uv, path.group); });
   result.radiance += clamp(path.beta * radiance * w_b, emission_limit(path));
 }
 

@@ -118,6 +118,7 @@ EnvironmentLight::EnvironmentLight(const Environment& environment, Image image)
 }
 
 EnvironmentLight::ImageCoordinates EnvironmentLight::image_coordinates(const Vec3& world_direction) const {
+  if (width_ == 0) return {0.0f, 0.0f};
   const Vec3 d = normalize(to_local_.apply_vector(world_direction));
   const float u = 0.5f + std::atan2(d.z, d.x) * (0.5f * kInvPi);
   const float v = std::acos(std::clamp(d.y, -1.0f, 1.0f)) * kInvPi;
@@ -129,8 +130,11 @@ Color EnvironmentLight::lookup(float u, float v) const {
   const float t = v * static_cast<float>(height_) - 0.5f;
   const float fs = std::floor(s), ft = std::floor(t);
   const float ax = s - fs, ay = std::clamp(t - ft, 0.0f, 1.0f);
+  // The column modulo the width; x is within a column of [0, width) but where u is not in [0, 1],
+  // and the remainder's division is the slow way to those two cases.
   const auto wrap = [this](float x) {
-    const int i = static_cast<int>(x) % width_;
+    int i = static_cast<int>(x);
+    if (i < 0 || i >= width_) i %= width_;
     return static_cast<std::size_t>(i < 0 ? i + width_ : i);
   };
   const auto row = [this](float y) {
@@ -144,9 +148,10 @@ Color EnvironmentLight::lookup(float u, float v) const {
   return top * (1.0f - ay) + bottom * ay;
 }
 
-Color EnvironmentLight::radiance(const Vec3& direction) const {
+Color EnvironmentLight::radiance(const Vec3& direction) const { return radiance_at(image_coordinates(direction)); }
+
+Color EnvironmentLight::radiance_at(ImageCoordinates uv) const {
   if (width_ == 0) return scale_;
-  const ImageCoordinates uv = image_coordinates(direction);
   return lookup(uv.u, uv.v);
 }
 
@@ -166,15 +171,17 @@ std::optional<EnvironmentLight::Sample> EnvironmentLight::sample(Sample2D u) con
   const Vec3 local(sin_theta * std::cos(phi), std::cos(theta), sin_theta * std::sin(phi));
   const Vec3 direction = normalize(to_world_.apply_vector(local));
   // The pdf of the direction as pdf() finds it again, so both strategies see one number.
-  const float pdf = this->pdf(direction);
+  const ImageCoordinates uv = image_coordinates(direction);
+  const float pdf = pdf_at(uv);
   if (!(pdf > 0.0f) || !std::isfinite(pdf)) return std::nullopt;
-  return Sample{direction, radiance(direction), pdf};
+  return Sample{direction, lookup(uv.u, uv.v), pdf};
 }
 
-float EnvironmentLight::pdf(const Vec3& direction) const {
+float EnvironmentLight::pdf(const Vec3& direction) const { return pdf_at(image_coordinates(direction)); }
+
+float EnvironmentLight::pdf_at(ImageCoordinates uv) const {
   if (!(mean_radiance_ > 0.0f)) return 0.0f;
   if (width_ == 0) return 1.0f / (4.0f * kPi);
-  const ImageCoordinates uv = image_coordinates(direction);
   const float sin_theta = std::sin(kPi * uv.v);
   if (!(sin_theta > 0.0f)) return 0.0f;
   return distribution_.pdf(uv.u, uv.v) / (2.0f * kPi * kPi * sin_theta);

@@ -211,6 +211,11 @@ float LightSet::environment_pdf(const Vec3& direction, std::uint32_t group) cons
   return pick_probability(environment_index_, Vec3(0.0f), group) * environment_->pdf(direction);
 }
 
+float LightSet::environment_pdf_at(EnvironmentLight::ImageCoordinates uv, std::uint32_t group) const {
+  if (environment_index_ == kInvalidId || empty(group)) return 0.0f;
+  return pick_probability(environment_index_, Vec3(0.0f), group) * environment_->pdf_at(uv);
+}
+
 std::optional<LightSet::SeenLight> LightSet::nearest_analytic_light(const Ray& ray, float t_max,
                                                                     std::uint32_t group) const {
   std::optional<SeenLight> nearest;

@@ -101,6 +101,8 @@ class LightSet {
   // angle, pick probability included).
   const EnvironmentLight* environment() const { return environment_; }
   float environment_pdf(const Vec3& direction, std::uint32_t group = 0) const;
+  // The same for the direction at `uv` in the environment's image (EnvironmentLight::image_coordinates).
+  float environment_pdf_at(EnvironmentLight::ImageCoordinates uv, std::uint32_t group = 0) const;
   std::uint32_t environment_index() const { return environment_index_; }
 
   // The nearest light without geometry (sphere and rectangle lights) illuminating the group that

@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace rtpro {
@@ -46,8 +47,10 @@ Distribution1D::Sample Distribution1D::sample(float u) const {
   float offset = width > 0.0f ? (u - cdf_[cell]) / width : 0.0f;
   offset = std::clamp(offset, 0.0f, 1.0f);
   float x = (static_cast<float>(cell) + offset) / static_cast<float>(n);
-  // Stay inside the cell (and below 1) when the division rounds up.
-  x = std::min(x, std::nextafter((static_cast<float>(cell) + 1.0f) / static_cast<float>(n), 0.0f));
+  // Stay inside the cell (and below 1) when the division rounds up: the float below the cell's
+  // end, which is positive, is the one whose bits are one less.
+  const float end = (static_cast<float>(cell) + 1.0f) / static_cast<float>(n);
+  x = std::min(x, std::bit_cast<float>(std::bit_cast<std::uint32_t>(end) - 1u));
   return {x, pdf(cell), cell};
 }
 
