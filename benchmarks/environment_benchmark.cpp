@@ -37,7 +37,7 @@ void BM_EnvironmentReady(benchmark::State& state) {
     state.PauseTiming();
     rtpro::Image copy = image;
     state.ResumeTiming();
-    const rtpro::EnvironmentLight light(environment, std::move(copy));
+    const rtpro::EnvironmentLight light(environment, std::move(copy), rtpro::EnvironmentSampling::kWhole);
     bytes = light.bytes();
     benchmark::DoNotOptimize(light.mean_radiance());
   }
@@ -59,7 +59,7 @@ void BM_EnvironmentSample(benchmark::State& state) {
   const int width = static_cast<int>(state.range(0));
   const bool with_sun = state.range(1) != 0;
   const rtpro::Environment environment{"sky.exr", rtpro::Color(1.0f), rtpro::Affine::identity(), true};
-  const rtpro::EnvironmentLight light(environment, sky(width, width / 2, with_sun));
+  const rtpro::EnvironmentLight light(environment, sky(width, width / 2, with_sun), rtpro::EnvironmentSampling::kWhole);
   std::uint64_t state_bits = 0x9e3779b97f4a7c15ull;
   const auto next = [&state_bits] {
     state_bits = state_bits * 6364136223846793005ull + 1442695040888963407ull;

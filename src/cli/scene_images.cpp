@@ -38,7 +38,7 @@ SceneImages open_scene_images(const RenderScene& scene, std::uint64_t memory_byt
                   std::to_string(image.height) + ") in " + std::to_string(seconds_since(read_start)) + " s");
     }
     const auto build_start = std::chrono::steady_clock::now();
-    images.environment.emplace(*scene.environment, std::move(image));
+    images.environment.emplace(*scene.environment, std::move(image), environment_sampling_for(scene.render));
     log.verbose("built the environment light in " + std::to_string(seconds_since(build_start)) + " s (" +
                 format_bytes(images.environment->bytes()) + ")");
   }

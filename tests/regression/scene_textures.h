@@ -27,7 +27,8 @@ inline std::optional<EnvironmentLight> build_scene_environment(const RenderScene
   if (!scene.environment) return std::nullopt;
   Image image;
   if (!scene.environment->file.empty()) image = read_image(scene.environment->file);
-  return std::optional<EnvironmentLight>(std::in_place, *scene.environment, std::move(image));
+  return std::optional<EnvironmentLight>(std::in_place, *scene.environment, std::move(image),
+                                         environment_sampling_for(scene.render));
 }
 
 }  // namespace rtpro::regression

@@ -18,6 +18,8 @@ using test::chi2_test;
 using test::Chi2Outcome;
 using test::kChi2Significance;
 using test::Uniforms;
+constexpr EnvironmentSampling kWhole = EnvironmentSampling::kWhole;
+constexpr EnvironmentSampling kAboveMean = EnvironmentSampling::kAboveMean;
 
 // An RGB image of `width` × `height` (top row first) of `background`, with pixel (x, y) `spot`.
 Image image_with_spot(int width, int height, Color background, int x, int y, Color spot) {
@@ -52,7 +54,7 @@ Environment environment(Affine to_world = Affine::identity(), Color scale = Colo
 }
 
 TEST(EnvironmentLight, ConstantEnvironmentIsTheSameEverywhereAndSampledUniformly) {
-  const EnvironmentLight light(Environment{"", Color(0.5f, 1.0f, 2.0f), Affine::identity(), true}, Image());
+  const EnvironmentLight light(Environment{"", Color(0.5f, 1.0f, 2.0f), Affine::identity(), true}, Image(), kWhole);
   Uniforms uniforms(3);
   for (int i = 0; i < 100; ++i) {
     const Vec3 d = uniforms.next_direction();
@@ -67,10 +69,10 @@ TEST(EnvironmentLight, ConstantEnvironmentIsTheSameEverywhereAndSampledUniformly
 }
 
 TEST(EnvironmentLight, BlackEnvironmentIsNeverSampled) {
-  const EnvironmentLight constant(Environment{"", Color(0.0f), Affine::identity(), true}, Image());
+  const EnvironmentLight constant(Environment{"", Color(0.0f), Affine::identity(), true}, Image(), kWhole);
   EXPECT_FALSE(constant.sample({0.5f, 0.5f}));
   EXPECT_EQ(constant.pdf(Vec3(0, 1, 0)), 0.0f);
-  const EnvironmentLight image(environment(), image_with_spot(8, 4, Color(0.0f), 0, 0, Color(0.0f)));
+  const EnvironmentLight image(environment(), image_with_spot(8, 4, Color(0.0f), 0, 0, Color(0.0f)), kWhole);
   EXPECT_FALSE(image.sample({0.5f, 0.5f}));
 }
 
@@ -79,7 +81,8 @@ TEST(EnvironmentLight, BlackEnvironmentIsNeverSampled) {
 TEST(EnvironmentLight, ImageCentreLooksAlongPlusXAndTheTopRowUp) {
   constexpr int kWidth = 16, kHeight = 8;
   const auto radiance_towards = [&](int x, int y, const Vec3& direction) {
-    const EnvironmentLight light(environment(), image_with_spot(kWidth, kHeight, Color(0.0f), x, y, Color(1.0f)));
+    const EnvironmentLight light(environment(), image_with_spot(kWidth, kHeight, Color(0.0f), x, y, Color(1.0f)),
+                                 kWhole);
     return light.radiance(direction).x;
   };
   // The centre of pixel (x, y) is exactly one texel: full weight there.
@@ -100,7 +103,7 @@ TEST(EnvironmentLight, ImageCentreLooksAlongPlusXAndTheTopRowUp) {
     Image image(kWidth, kHeight);
     for (int x = 0; x < kWidth; ++x)
       for (int c = 0; c < 3; ++c) image.at(x, lit_row, c) = 1.0f;
-    return EnvironmentLight(environment(), image);
+    return EnvironmentLight(environment(), image, kWhole);
   };
   EXPECT_NEAR(row_lit(0).radiance(Vec3(0, 1, 0)).x, 1.0f, 1e-6f);
   EXPECT_EQ(row_lit(0).radiance(Vec3(0, -1, 0)).x, 0.0f);
@@ -110,8 +113,8 @@ TEST(EnvironmentLight, ImageCentreLooksAlongPlusXAndTheTopRowUp) {
 
 TEST(EnvironmentLight, RotationTurnsTheImageWithTheWorld) {
   const Affine turn = compose(Affine::rotate({0, 1, 0}, 70.0f), Affine::rotate({1, 0, 0}, -25.0f));
-  const EnvironmentLight still(environment(), lumpy_image(32, 16));
-  const EnvironmentLight turned(environment(turn), lumpy_image(32, 16));
+  const EnvironmentLight still(environment(), lumpy_image(32, 16), kWhole);
+  const EnvironmentLight turned(environment(turn), lumpy_image(32, 16), kWhole);
   Uniforms uniforms(5);
   for (int i = 0; i < 200; ++i) {
     const Vec3 d = uniforms.next_direction();
@@ -126,7 +129,7 @@ TEST(EnvironmentLight, ScaleMultipliesTheImageAndNonFiniteOrNegativeTexelsAreBla
   Image image = image_with_spot(8, 4, Color(1.0f), 2, 1, Color(-3.0f));
   image.at(5, 2, 1) = std::nanf("");
   image.at(6, 2, 2) = std::numeric_limits<float>::infinity();
-  const EnvironmentLight light(environment(Affine::identity(), Color(2.0f, 3.0f, 4.0f)), image);
+  const EnvironmentLight light(environment(Affine::identity(), Color(2.0f, 3.0f, 4.0f)), image, kWhole);
   Uniforms uniforms(11);
   for (int i = 0; i < 2000; ++i) {
     const Color c = light.radiance(uniforms.next_direction());
@@ -140,7 +143,7 @@ TEST(EnvironmentLight, ScaleMultipliesTheImageAndNonFiniteOrNegativeTexelsAreBla
 
 // Wherever the filtered image shows light, the sampler can go: light sampling alone is unbiased.
 TEST(EnvironmentLight, EveryDirectionThatShowsLightHasAPdf) {
-  const EnvironmentLight light(environment(), image_with_spot(64, 32, Color(0.0f), 40, 9, Color(5.0f)));
+  const EnvironmentLight light(environment(), image_with_spot(64, 32, Color(0.0f), 40, 9, Color(5.0f)), kWhole);
   Uniforms uniforms(17);
   int lit = 0;
   for (int i = 0; i < 400000; ++i) {
@@ -157,7 +160,7 @@ TEST(EnvironmentLight, EveryDirectionThatShowsLightHasAPdf) {
 // escaped ray's lookup by image coordinates must be the direction's own.
 TEST(EnvironmentLight, ASampleCarriesExactlyItsDirectionsRadianceAndPdf) {
   const Affine turn = compose(Affine::rotate({0, 1, 0}, 70.0f), Affine::rotate({1, 0, 0}, -25.0f));
-  const EnvironmentLight light(environment(turn), lumpy_image(32, 16));
+  const EnvironmentLight light(environment(turn), lumpy_image(32, 16), kWhole);
   Uniforms uniforms(11);
   int sampled = 0;
   for (int i = 0; i < 2000; ++i) {
@@ -175,10 +178,52 @@ TEST(EnvironmentLight, ASampleCarriesExactlyItsDirectionsRadianceAndPdf) {
   EXPECT_GT(sampled, 1900);
 }
 
+// Sampling above the mean: the left half of the image at 1, the right half at 3, so the mean over
+// the sphere is 2. The dim half has no light samples and pdf 0 (BSDF samples cover it under MIS);
+// the bright half takes them all, in proportion to its excess: 1 in each of its 14 inner columns
+// and 0.75 in the 2 beside the dim half, where the bilinear filter mixes in an eighth of it, so
+// 32/15.5 per unit of u there, over 4π per unit area of the image on the horizon.
+TEST(EnvironmentLight, AboveTheMeanOnlyBrighterPixelsAreSampled) {
+  constexpr int kWidth = 32, kHeight = 16;
+  Image image(kWidth, kHeight);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x)
+      for (int c = 0; c < 3; ++c) image.at(x, y, c) = x < kWidth / 2 ? 1.0f : 3.0f;
+  const EnvironmentLight light(environment(), image, kAboveMean);
+  const EnvironmentLight whole(environment(), image, kWhole);
+  EXPECT_EQ(light.sampling(), kAboveMean);
+  // u = 0.25 (left half) looks along −Z, u = 0.75 (right half) along +Z, both on the horizon;
+  // away from the halves' borders the bilinear lookup reads one value.
+  EXPECT_EQ(light.pdf(Vec3(0, 0, -1)), 0.0f);
+  EXPECT_GT(whole.pdf(Vec3(0, 0, -1)), 0.0f);
+  // Within 1% of that: a row weighs the sin θ of its centre (0.995 beside the horizon).
+  const float inner = 32.0f / 15.5f / (4.0f * kPi);
+  EXPECT_NEAR(light.pdf(Vec3(0, 0, 1)), inner, 0.01f * inner);
+  EXPECT_NEAR(light.pdf(Vec3(0.3f, 0, 1)), inner, 0.01f * inner);
+  EXPECT_EQ(light.pdf(Vec3(0.3f, 0, -1)), 0.0f);
+  Uniforms uniforms(3);
+  int right = 0, total = 0;
+  for (int i = 0; i < 4000; ++i)
+    if (const std::optional<EnvironmentLight::Sample> s = light.sample(uniforms.next_2d())) {
+      ++total;
+      right += light.image_coordinates(s->direction).u >= 0.5f - 1.0f / kWidth;
+      EXPECT_GT(s->pdf, 0.0f);
+    }
+  EXPECT_EQ(total, 4000);
+  EXPECT_EQ(right, total);
+}
+
+TEST(EnvironmentLight, AnImageOfOneColourIsSampledWholeEvenAboveTheMean) {
+  const EnvironmentLight light(environment(), image_with_spot(16, 8, Color(0.7f), 0, 0, Color(0.7f)), kAboveMean);
+  EXPECT_EQ(light.sampling(), kWhole);
+  EXPECT_GT(light.pdf(Vec3(0, 0, 1)), 0.0f);
+  EXPECT_GT(light.pdf(Vec3(0, 0, -1)), 0.0f);
+}
+
 TEST(EnvironmentLight, GreyImagesAreReadAsEqualChannels) {
   Image grey(4, 2, {"Y"});
   for (float& v : grey.data) v = 0.75f;
-  const EnvironmentLight light(environment(), grey);
+  const EnvironmentLight light(environment(), grey, kWhole);
   EXPECT_EQ(light.radiance(Vec3(0.3f, 0.2f, -0.5f)), Color(0.75f));
 }
 
@@ -202,16 +247,26 @@ void expect_sampler_matches_pdf(const EnvironmentLight& light, const char* label
 TEST(EnvironmentLightChi2, SamplerMatchesPdf) {
   std::vector<std::future<void>> cases;
   cases.push_back(std::async(std::launch::async, [] {
-    expect_sampler_matches_pdf(EnvironmentLight(environment(Affine::rotate({1, 1, 0}, 40.0f)), lumpy_image(48, 24)),
-                               "lumpy, rotated");
+    expect_sampler_matches_pdf(
+        EnvironmentLight(environment(Affine::rotate({1, 1, 0}, 40.0f)), lumpy_image(48, 24), kWhole), "lumpy, rotated");
   }));
   cases.push_back(std::async(std::launch::async, [] {
     expect_sampler_matches_pdf(
-        EnvironmentLight(environment(), image_with_spot(32, 16, Color(0.1f), 20, 5, Color(300.0f))), "sun");
+        EnvironmentLight(environment(), image_with_spot(32, 16, Color(0.1f), 20, 5, Color(300.0f)), kWhole), "sun");
   }));
   cases.push_back(std::async(std::launch::async, [] {
-    expect_sampler_matches_pdf(EnvironmentLight(Environment{"", Color(1.0f), Affine::identity(), true}, Image()),
-                               "constant");
+    expect_sampler_matches_pdf(
+        EnvironmentLight(environment(Affine::rotate({1, 1, 0}, 40.0f)), lumpy_image(48, 24), kAboveMean),
+        "lumpy, rotated, above the mean");
+  }));
+  cases.push_back(std::async(std::launch::async, [] {
+    expect_sampler_matches_pdf(
+        EnvironmentLight(environment(), image_with_spot(32, 16, Color(0.1f), 20, 5, Color(300.0f)), kAboveMean),
+        "sun, above the mean");
+  }));
+  cases.push_back(std::async(std::launch::async, [] {
+    expect_sampler_matches_pdf(
+        EnvironmentLight(Environment{"", Color(1.0f), Affine::identity(), true}, Image(), kWhole), "constant");
   }));
   for (auto& c : cases) c.get();
 }

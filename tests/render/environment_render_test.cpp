@@ -30,7 +30,8 @@ Image render(const std::string& yaml, BackendKind kind, const std::vector<std::s
   Image image;
   if (scene.environment && !scene.environment->file.empty()) image = read_image(scene.environment->file);
   std::optional<EnvironmentLight> environment;
-  if (scene.environment) environment.emplace(*scene.environment, std::move(image));
+  if (scene.environment)
+    environment.emplace(*scene.environment, std::move(image), environment_sampling_for(scene.render));
   RenderOptions options;
   options.environment = environment ? &*environment : nullptr;
   return render_image(scene, *backend, options).image;
@@ -159,8 +160,9 @@ world:
                                  << " ± " << light.standard_error;
   EXPECT_TRUE(agree(mis, bsdf)) << "mis " << mis.mean << " ± " << mis.standard_error << ", bsdf " << bsdf.mean << " ± "
                                 << bsdf.standard_error;
-  // Environment sampling is what makes the sun tractable.
-  EXPECT_LT(mis.standard_error * 3.0, bsdf.standard_error);
+  // Environment sampling is what makes the sun tractable (the standard errors of six images'
+  // means are themselves uncertain by about a third).
+  EXPECT_LT(mis.standard_error * 2.0, bsdf.standard_error);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, EnvironmentRender, ::testing::Values(BackendKind::kEmbree, BackendKind::kNative),

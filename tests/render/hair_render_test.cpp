@@ -22,7 +22,7 @@ Image render(const std::string& yaml, BackendKind kind, const std::vector<std::s
   const RenderScene scene = build_render_scene(parse_scene_text(yaml, "test.yaml", overrides));
   const auto backend = make_backend(kind, scene, {});
   std::optional<EnvironmentLight> environment;
-  if (scene.environment) environment.emplace(*scene.environment, Image{});
+  if (scene.environment) environment.emplace(*scene.environment, Image{}, environment_sampling_for(scene.render));
   RenderOptions options;
   options.environment = environment ? &*environment : nullptr;
   return render_image(scene, *backend, options).image;

@@ -26,7 +26,7 @@ Image render(const std::string& yaml, BackendKind kind, const std::vector<std::s
   const RenderScene scene = build_render_scene(parse_scene_text(yaml, "linking.yaml", overrides));
   const auto backend = make_backend(kind, scene, {});
   std::optional<EnvironmentLight> environment;
-  if (scene.environment) environment.emplace(*scene.environment, Image());
+  if (scene.environment) environment.emplace(*scene.environment, Image(), environment_sampling_for(scene.render));
   RenderOptions options;
   options.environment = environment ? &*environment : nullptr;
   return render_image(scene, *backend, options).image;
@@ -203,7 +203,8 @@ TEST(LinkedLightSet, AGroupPicksAmongItsLightsAsTheSceneWithoutTheOthers) {
     const std::vector<std::string> set{std::string("render.light_sampler=") + sampler};
     const RenderScene linked = build_render_scene(parse_scene_text(scene(kBallView, 8, links, true), "l.yaml", set));
     const RenderScene without_a = build_render_scene(parse_scene_text(scene(kBallView, 8, {}, false), "w.yaml", set));
-    const EnvironmentLight linked_sky(*linked.environment, Image()), sky(*without_a.environment, Image());
+    const EnvironmentLight linked_sky(*linked.environment, Image(), EnvironmentSampling::kWhole),
+        sky(*without_a.environment, Image(), EnvironmentSampling::kWhole);
     const LightSet lights(linked, &linked_sky), fewer(without_a, &sky);
     ASSERT_EQ(linked.links.groups.size(), 3u);
     ASSERT_EQ(lights.lights().size(), fewer.lights().size() + 1);

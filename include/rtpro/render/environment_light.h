@@ -5,6 +5,12 @@
 // distribution over its pixels, with the exact solid-angle pdf of every direction for multiple
 // importance sampling.
 //
+// Under multiple importance sampling the distribution can leave out what BSDF samples find as
+// well: with EnvironmentSampling::kAboveMean each pixel weighs only its luminance above the
+// image's mean (MIS compensation: Karlík, Šik, Vévoda, Skřivan and Křivánek 2019; pbrt-v4's image
+// infinite light samples so under MIS). The dim sky goes to the BSDF samples, which meet it as
+// often as the light samples would, and the light samples go to the sun and the bright sky.
+//
 // The image's frame is +Y up; its top row looks up, its centre column looks along +X and its
 // quarter column (u = 0.25) along −Z: Blender's mapping of a world texture, as a scene exported
 // to glTF (+Y up) sees it. `rotation` turns that frame into the world.
@@ -27,12 +33,25 @@ namespace rtpro {
 // with how many such pixels there are. Call it on the image as read, before the light is built.
 void check_environment_radiance(const Image& image, const Environment& environment);
 
+// What the environment's light samples are drawn in proportion to: every pixel's luminance
+// (`kWhole`), or only its luminance above the image's mean (`kAboveMean`), which is unbiased only
+// where another strategy (BSDF or phase function samples, weighted by MIS) covers every direction
+// the light has pdf 0 for. An image with nothing above its mean (one colour) is sampled whole.
+enum class EnvironmentSampling : std::uint8_t { kWhole, kAboveMean };
+
+// The sampling the render's integrator can use: above the mean for the path integrator's MIS.
+EnvironmentSampling environment_sampling_for(const RenderSettings& render);
+
 class EnvironmentLight {
  public:
   // `image`: the environment's file as read (scene-linear; one channel is grey, the first three
   // of more are RGB), or empty for a constant environment. Negative and non-finite values read
   // as 0. The distribution is built in parallel (oneTBB).
-  EnvironmentLight(const Environment& environment, Image image);
+  EnvironmentLight(const Environment& environment, Image image, EnvironmentSampling sampling);
+
+  // What sample() draws in proportion to: kAboveMean only when asked and the image has pixels above
+  // its mean.
+  EnvironmentSampling sampling() const { return sampling_; }
 
   // What arrives from world direction `direction` (any length but 0).
   Color radiance(const Vec3& direction) const;
@@ -74,6 +93,7 @@ class EnvironmentLight {
   Affine to_world_, to_local_;
   Color scale_;
   bool visible_;
+  EnvironmentSampling sampling_ = EnvironmentSampling::kWhole;
   int width_ = 0, height_ = 0;  // 0: constant
   std::vector<Color> texels_;   // width × height, top row first, scale applied
   Distribution2D distribution_;

@@ -25,6 +25,39 @@ float channel_average(const Color& c) { return (c.x + c.y + c.z) * (1.0f / 3.0f)
 // cell: the cell's own texel 3/4, each neighbour 1/8 (per axis).
 constexpr float kCellWeights[3] = {0.125f, 0.75f, 0.125f};
 
+float row_sin_theta(std::size_t y, std::size_t h) {
+  return std::sin(kPi * (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
+}
+
+// Each cell's luminance × sin θ in `func` becomes its luminance above the mean over the sphere
+// (each cell weighed by its solid angle, ∝ sin θ) × sin θ, or 0; left as it was, and false, when
+// no cell is above the mean. Above by less than 10⁻⁴ of the mean is not above: in an image of one
+// colour the rounding of luminance × sin θ leaves some cells that far over.
+bool keep_above_mean(std::vector<float>& func, std::size_t w, std::size_t h) {
+  double weighted = 0.0, weights = 0.0;
+  for (std::size_t y = 0; y < h; ++y) {
+    double row = 0.0;
+    for (std::size_t x = 0; x < w; ++x) row += func[y * w + x];
+    weighted += row;
+    weights += static_cast<double>(row_sin_theta(y, h)) * static_cast<double>(w);
+  }
+  if (!(weights > 0.0)) return false;
+  const double mean = weighted / weights;
+  std::vector<float> above(func.size());
+  bool any = false;
+  for (std::size_t y = 0; y < h; ++y) {
+    const double sin_theta = row_sin_theta(y, h);
+    for (std::size_t x = 0; x < w; ++x) {
+      const double excess = static_cast<double>(func[y * w + x]) - mean * sin_theta;
+      above[y * w + x] = excess > 1e-4 * mean * sin_theta ? static_cast<float>(excess) : 0.0f;
+      any = any || above[y * w + x] > 0.0f;
+    }
+  }
+  if (!any) return false;
+  func = std::move(above);
+  return true;
+}
+
 }  // namespace
 
 void check_environment_radiance(const Image& image, const Environment& environment) {
@@ -54,7 +87,13 @@ void check_environment_radiance(const Image& image, const Environment& environme
                        std::to_string(bad) + " values in all");
 }
 
-EnvironmentLight::EnvironmentLight(const Environment& environment, Image image)
+EnvironmentSampling environment_sampling_for(const RenderSettings& render) {
+  return render.integrator == Integrator::kPath && render.path_sampling == PathSampling::kMis
+             ? EnvironmentSampling::kAboveMean
+             : EnvironmentSampling::kWhole;
+}
+
+EnvironmentLight::EnvironmentLight(const Environment& environment, Image image, EnvironmentSampling sampling)
     : to_world_(environment.to_world), to_local_(inverse(environment.to_world).value_or(Affine::identity())),
       scale_(environment.scale), visible_(environment.visible) {
   if (image.width <= 0 || image.height <= 0 || image.data.empty()) {
@@ -87,7 +126,7 @@ EnvironmentLight::EnvironmentLight(const Environment& environment, Image image)
     });
   };
   for_rows([&](std::size_t y) {
-    const float sin_theta = std::sin(kPi * (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
+    const float sin_theta = row_sin_theta(y, h);
     double row_sum = 0.0;
     for (std::size_t x = 0; x < w; ++x) {
       func[y * w + x] = luminance(texels_[y * w + x]);
@@ -101,7 +140,7 @@ EnvironmentLight::EnvironmentLight(const Environment& environment, Image image)
     }
   });
   for_rows([&](std::size_t y) {
-    const float sin_theta = std::sin(kPi * (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
+    const float sin_theta = row_sin_theta(y, h);
     const std::size_t up = y == 0 ? 0 : y - 1, down = y + 1 == h ? y : y + 1;
     for (std::size_t x = 0; x < w; ++x)
       func[y * w + x] = (kCellWeights[0] * across[up * w + x] + kCellWeights[1] * across[y * w + x] +
@@ -109,6 +148,7 @@ EnvironmentLight::EnvironmentLight(const Environment& environment, Image image)
                         sin_theta;
   });
   across = std::vector<float>();
+  if (sampling == EnvironmentSampling::kAboveMean && keep_above_mean(func, w, h)) sampling_ = sampling;
   distribution_ = Distribution2D(func, width_, height_);
   // The sphere's mean: each row's cells cover 2π² sin θ / (w·h) of solid angle per unit of (u, v).
   double total = 0.0;

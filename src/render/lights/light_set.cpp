@@ -16,6 +16,9 @@ namespace rtpro {
 LightSet::LightSet(const RenderScene& scene, const EnvironmentLight* environment) : environment_(environment) {
   if (scene.environment && !environment)
     throw std::logic_error("LightSet: the scene has an environment but none was built for it");
+  if (environment && environment->sampling() == EnvironmentSampling::kAboveMean &&
+      environment_sampling_for(scene.render) != EnvironmentSampling::kAboveMean)
+    throw std::logic_error("LightSet: an environment sampled above its mean needs MIS with BSDF samples");
   const LightUnits units = scene.render.light_units.value_or(LightUnits::kRadiometric);
   for (const Light& light : scene.lights) lights_.push_back(path_light_of(light, units));
   add_emitters(scene, scene.top, kInvalidId, nullptr);
