@@ -2,6 +2,7 @@
 
 #include "rtpro/core/error.h"
 #include "rtpro/core/fp_env.h"
+#include "rtpro/core/huge_page_buffer.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -30,6 +31,22 @@ void render_tiles(const TileRenderer& renderer, const TileGrid& grid, TileSource
 }
 
 namespace {
+
+// The film's output, in huge pages: with 4 KiB pages a 1024² RGB image is 3,072 page faults of
+// ~13 µs each on these virtual machines, written by one thread after the last tile (40 ms of a
+// 200 ms frame on two threads).
+Image film_output_image(int width, int height, std::vector<std::string> channels) {
+  Image image;
+  image.width = width;
+  image.height = height;
+  image.channels = std::move(channels);
+  const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * image.channels.size();
+  image.data.reserve(count);
+  if (count * sizeof(float) >= HugePageAllocator<float>::kLarge)
+    advise_huge_pages(image.data.data(), count * sizeof(float));
+  image.data.resize(count);
+  return image;
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -275,7 +292,7 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
   if (result.stop != RenderStop::kConverged && result.passes_done < grid.passes())
     result.stop = deadline_passed && result.passes_done > 0 ? RenderStop::kTimeLimit : RenderStop::kInterrupted;
 
-  result.image = Image(scene.camera.width, scene.camera.height, layout.channels());
+  result.image = film_output_image(scene.camera.width, scene.camera.height, layout.channels());
   if (result.passes_done > 0) film.resolve(layout, result.image);
   else film.resolve_with_partial_pass(layout, result.image);
   result.samples = sample_counts(film);

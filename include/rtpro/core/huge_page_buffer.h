@@ -7,6 +7,7 @@
 #include <sys/mman.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <new>
 #include <type_traits>
 
@@ -48,6 +49,16 @@ class HugePageBuffer {
   T* data_ = nullptr;
   std::size_t bytes_ = 0;
 };
+
+// Asks for transparent huge pages for [data, data + bytes), memory not yet written: a vector's
+// reserved capacity before it is resized, for example. madvise takes the whole 4 KiB pages inside
+// the range; the kernel backs each 2 MiB-aligned part of them with one page on its first write.
+inline void advise_huge_pages(void* data, std::size_t bytes) {
+  constexpr std::uintptr_t kPage = 4096;
+  const auto begin = (reinterpret_cast<std::uintptr_t>(data) + kPage - 1) & ~(kPage - 1);
+  const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(kPage - 1);
+  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+}
 
 // A std::allocator that takes memory for large arrays (4 MiB and more) the way HugePageBuffer
 // does, so that a finished BVH's nodes and leaf rows are written into huge pages too (a ray's
