@@ -1,7 +1,8 @@
 // The path integrator lit by an environment, with both backends: the white furnace through the
 // environment (a constant one of radiance 1 hides a white Lambertian sphere, with every estimator
 // and rotated), camera visibility, the Whitted integrator's view of it, and MIS, environment
-// sampling alone and BSDF sampling alone agreeing under a real HDRI with a sun (sunset.exr).
+// sampling alone and BSDF sampling alone agreeing under a real HDRI with a sun (sunset.exr), MIS
+// with the environment sampled above its mean and whole agreeing on principled layers.
 #include "rtpro/backend/backend.h"
 #include "rtpro/image/image_io.h"
 #include "rtpro/render/environment_light.h"
@@ -24,14 +25,17 @@ namespace environment_render_test {
 
 class EnvironmentRender : public ::testing::TestWithParam<BackendKind> {};
 
-Image render(const std::string& yaml, BackendKind kind, const std::vector<std::string>& overrides = {}) {
+// `sampling`: the environment's, or the one the render settings choose.
+Image render(const std::string& yaml, BackendKind kind, const std::vector<std::string>& overrides = {},
+             std::optional<EnvironmentSampling> sampling = std::nullopt) {
   const RenderScene scene = build_render_scene(parse_scene_text(yaml, test::scenes_dir() / "test.yaml", overrides));
   const auto backend = make_backend(kind, scene, {});
   Image image;
   if (scene.environment && !scene.environment->file.empty()) image = read_image(scene.environment->file);
   std::optional<EnvironmentLight> environment;
   if (scene.environment)
-    environment.emplace(*scene.environment, std::move(image), environment_sampling_for(scene.render));
+    environment.emplace(*scene.environment, std::move(image),
+                        sampling.value_or(environment_sampling_for(scene.render)));
   RenderOptions options;
   options.environment = environment ? &*environment : nullptr;
   return render_image(scene, *backend, options).image;
@@ -119,11 +123,13 @@ struct Estimate {
   double mean, standard_error;
 };
 
-Estimate mean_over_seeds(const std::string& yaml, BackendKind kind, const std::string& sampling, int seeds) {
+Estimate mean_over_seeds(const std::string& yaml, BackendKind kind, const std::string& sampling, int seeds,
+                         std::optional<EnvironmentSampling> environment_sampling = std::nullopt) {
   std::vector<double> means;
   for (int seed = 1; seed <= seeds; ++seed)
-    means.push_back(
-        stats_of(render(yaml, kind, {"render.sampling=" + sampling, "render.seed=" + std::to_string(seed)})).mean);
+    means.push_back(stats_of(render(yaml, kind, {"render.sampling=" + sampling, "render.seed=" + std::to_string(seed)},
+                                    environment_sampling))
+                        .mean);
   double mean = 0.0;
   for (double m : means) mean += m;
   mean /= seeds;
@@ -163,6 +169,43 @@ world:
   // Environment sampling is what makes the sun tractable (the standard errors of six images'
   // means are themselves uncertain by about a third).
   EXPECT_LT(mis.standard_error * 2.0, bsdf.standard_error);
+}
+
+// Under MIS the environment's light samples leave the pixels below its mean to the BSDF samples,
+// so MIS is unbiased only where those cover every direction the BSDF reflects or transmits into:
+// the principled layers (coat, sheen, a half-metal base, transmission) under MIS with the
+// environment sampled above its mean, against MIS with it sampled whole, which leans on no such
+// cover (and against light samples alone, noisier).
+TEST_P(EnvironmentRender, EstimatorsAgreeOnPrincipledLayersUnderASunset) {
+  const std::string yaml = R"(
+rtpro: 1
+camera: {position: [0, 0.6, -4], look_at: [0, 0.2, 0], fov: 40, resolution: [32, 20]}
+render: {spp: 32, max_depth: 4, integrator: path}
+materials:
+  layered: {type: principled, color: [0.8, 0.5, 0.3], roughness: 0.4, metalness: 0.5, coat_weight: 0.7,
+            coat_roughness: 0.1, fuzz_color: [0.6, 0.6, 0.9], fuzz_roughness: 0.5}
+  frosted: {type: principled, color: [0.9, 0.9, 0.9], roughness: 0.3, transmission_weight: 0.6}
+  clay: {type: diffuse, color: [0.8, 0.6, 0.5]}
+environment: {file: environments/sunset.exr, rotation: [0, 120, 0]}
+world:
+  - {type: sphere, center: [-0.6, 0, 0], radius: 0.55, material: layered}
+  - {type: sphere, center: [0.6, 0, 0], radius: 0.55, material: frosted}
+  - {type: sphere, center: [0, -100.55, 0], radius: 100, material: clay}
+)";
+  constexpr int kSeeds = 6;
+  const Estimate above = mean_over_seeds(yaml, GetParam(), "mis", kSeeds, EnvironmentSampling::kAboveMean);
+  const Estimate whole = mean_over_seeds(yaml, GetParam(), "mis", kSeeds, EnvironmentSampling::kWhole);
+  const Estimate light = mean_over_seeds(yaml, GetParam(), "light", kSeeds);
+  std::cout << "[estimators] mis above the mean " << above.mean << " ± " << above.standard_error << ", mis whole "
+            << whole.mean << " ± " << whole.standard_error << ", light " << light.mean << " ± " << light.standard_error
+            << "\n";
+  const auto agree = [](const Estimate& a, const Estimate& b) {
+    return std::fabs(a.mean - b.mean) <= 3.0 * std::hypot(a.standard_error, b.standard_error);
+  };
+  EXPECT_TRUE(agree(above, whole)) << above.mean << " ± " << above.standard_error << " against " << whole.mean << " ± "
+                                   << whole.standard_error;
+  EXPECT_TRUE(agree(above, light)) << above.mean << " ± " << above.standard_error << " against " << light.mean << " ± "
+                                   << light.standard_error;
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, EnvironmentRender, ::testing::Values(BackendKind::kEmbree, BackendKind::kNative),
