@@ -39,7 +39,8 @@ for frame in primary primary_shadow; do sed '/type: sphere/d' "$out/${frame}_gro
 # process, the rate from seconds.render): "primary" is the mesh without lights or reflection (one
 # ray per sample, what the viewer's eyelight shader traces), "primary + shadow" adds one point light
 # (one shadow ray per hit, as pathtracer --max-path-length 1 traces). 4 spp so that rendering, not
-# start-up, dominates seconds.render. The *_ground frames add the shipped scene's ground sphere,
+# start-up, dominates seconds.render; the primary frame also at 1 spp (a frame's fixed costs: film,
+# tiles, output image) and 16 spp. The *_ground frames add the shipped scene's ground sphere,
 # which the peers do not trace. Every measurement is repeated $runs times, interleaved with the
 # peers' runs (the machine is shared); the report gives medians and the spread.
 baseline_scene="$out/baseline.yaml"
@@ -78,6 +79,14 @@ for run in $(seq "$runs"); do
     for backend in embree native; do
       "$build/rtpro" render "$out/$frame.yaml" -o "$out/frame-$frame-$backend.exr" --backend "$backend" \
         --size 1024x1024 --spp 4 --threads "$threads" --quiet --stats-json "$out/frame-$frame-$backend-$run.json"
+    done
+  done
+  # The primary frame at 1 spp (its fixed per-frame costs weigh most) and 16 spp, beside the 4.
+  for spp in 1 16; do
+    for backend in embree native; do
+      "$build/rtpro" render "$out/primary.yaml" -o "$out/frame-primary-$backend.exr" --backend "$backend" \
+        --size 1024x1024 --spp "$spp" --threads "$threads" --quiet \
+        --stats-json "$out/frame-primary-$backend-spp$spp-$run.json"
     done
   done
 done
@@ -152,6 +161,16 @@ def against_peer(present, log, peer, unit, frame, label):
           f" sphere: {ratio(frame + '_ground', 'embree'):.2f}x, {ratio(frame + '_ground', 'native'):.2f}x)")
 
 against_peer(have_viewer, "viewer", "Embree viewer --shader eyelight", "Mrays/s", "primary", "primary / viewer")
+if have_viewer:
+    viewer_rate = benchmark_values("viewer", "BENCHMARK_RENDER_MRAYPS_AVG")[0]
+    for backend in ("embree", "native"):
+        ratios = []
+        for spp in (1, 4, 16):
+            suffix = "" if spp == 4 else f"-spp{spp}"
+            stats = [json.load(open(f"{out}/frame-primary-{backend}{suffix}-{run}.json")) for run in range(1, runs + 1)]
+            rate = spread([s["rays"]["camera"] / s["seconds"]["render"] / 1e6 for s in stats])
+            ratios.append(f"{spp} spp {rate[0] / viewer_rate:.2f}x ({rate[1] / viewer_rate:.2f}-{rate[2] / viewer_rate:.2f})")
+        print(f"  primary / viewer by samples per pixel, {backend}: " + ", ".join(ratios))
 against_peer(have_pathtracer, "pathtracer", "Embree pathtracer --max-path-length 1", "Msamples/s", "primary_shadow",
              "primary + shadow / pathtracer")
 
