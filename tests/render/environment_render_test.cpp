@@ -139,6 +139,14 @@ Estimate mean_over_seeds(const std::string& yaml, BackendKind kind, const std::s
   return {mean, std::sqrt(variance / seeds)};
 }
 
+// Two estimates agree when their means are within three standard errors of their difference.
+::testing::AssertionResult agree(const char* a_name, const Estimate& a, const char* b_name, const Estimate& b) {
+  if (std::fabs(a.mean - b.mean) <= 3.0 * std::hypot(a.standard_error, b.standard_error))
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << a_name << " " << a.mean << " ± " << a.standard_error << " against " << b_name
+                                       << " " << b.mean << " ± " << b.standard_error;
+}
+
 TEST_P(EnvironmentRender, EstimatorsAgreeUnderASunsetWithASun) {
   const std::string yaml = R"(
 rtpro: 1
@@ -159,13 +167,8 @@ world:
   const Estimate bsdf = mean_over_seeds(yaml, GetParam(), "bsdf", kSeeds);
   std::cout << "[estimators] mis " << mis.mean << " ± " << mis.standard_error << ", light " << light.mean << " ± "
             << light.standard_error << ", bsdf " << bsdf.mean << " ± " << bsdf.standard_error << "\n";
-  const auto agree = [](const Estimate& a, const Estimate& b) {
-    return std::fabs(a.mean - b.mean) <= 3.0 * std::hypot(a.standard_error, b.standard_error);
-  };
-  EXPECT_TRUE(agree(mis, light)) << "mis " << mis.mean << " ± " << mis.standard_error << ", light " << light.mean
-                                 << " ± " << light.standard_error;
-  EXPECT_TRUE(agree(mis, bsdf)) << "mis " << mis.mean << " ± " << mis.standard_error << ", bsdf " << bsdf.mean << " ± "
-                                << bsdf.standard_error;
+  EXPECT_TRUE(agree("mis", mis, "light", light));
+  EXPECT_TRUE(agree("mis", mis, "bsdf", bsdf));
   // Environment sampling is what makes the sun tractable (the standard errors of six images'
   // means are themselves uncertain by about a third).
   EXPECT_LT(mis.standard_error * 2.0, bsdf.standard_error);
@@ -199,13 +202,8 @@ world:
   std::cout << "[estimators] mis above the mean " << above.mean << " ± " << above.standard_error << ", mis whole "
             << whole.mean << " ± " << whole.standard_error << ", light " << light.mean << " ± " << light.standard_error
             << "\n";
-  const auto agree = [](const Estimate& a, const Estimate& b) {
-    return std::fabs(a.mean - b.mean) <= 3.0 * std::hypot(a.standard_error, b.standard_error);
-  };
-  EXPECT_TRUE(agree(above, whole)) << above.mean << " ± " << above.standard_error << " against " << whole.mean << " ± "
-                                   << whole.standard_error;
-  EXPECT_TRUE(agree(above, light)) << above.mean << " ± " << above.standard_error << " against " << light.mean << " ± "
-                                   << light.standard_error;
+  EXPECT_TRUE(agree("above the mean", above, "whole", whole));
+  EXPECT_TRUE(agree("above the mean", above, "light", light));
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, EnvironmentRender, ::testing::Values(BackendKind::kEmbree, BackendKind::kNative),
