@@ -147,20 +147,29 @@ Estimate mean_over_seeds(const std::string& yaml, BackendKind kind, const std::s
                                        << " " << b.mean << " ± " << b.standard_error;
 }
 
-TEST_P(EnvironmentRender, EstimatorsAgreeUnderASunsetWithASun) {
-  const std::string yaml = R"(
+// Two spheres on a ground sphere of clay under sunset.exr (its sun turned to light them from the
+// side), 32×20 at 32 spp: `materials` names `left` and `right`.
+std::string two_spheres_under_a_sunset(const std::string& materials) {
+  return R"(
 rtpro: 1
 camera: {position: [0, 0.6, -4], look_at: [0, 0.2, 0], fov: 40, resolution: [32, 20]}
 render: {spp: 32, max_depth: 4, integrator: path}
 materials:
   clay: {type: diffuse, color: [0.8, 0.6, 0.5]}
-  metal: {type: conductor, color: [0.9, 0.9, 0.9], roughness: 0.3}
+)" + materials +
+         R"(
 environment: {file: environments/sunset.exr, rotation: [0, 120, 0]}
 world:
-  - {type: sphere, center: [-0.6, 0, 0], radius: 0.55, material: clay}
-  - {type: sphere, center: [0.6, 0, 0], radius: 0.55, material: metal}
+  - {type: sphere, center: [-0.6, 0, 0], radius: 0.55, material: left}
+  - {type: sphere, center: [0.6, 0, 0], radius: 0.55, material: right}
   - {type: sphere, center: [0, -100.55, 0], radius: 100, material: clay}
 )";
+}
+
+TEST_P(EnvironmentRender, EstimatorsAgreeUnderASunsetWithASun) {
+  const std::string yaml = two_spheres_under_a_sunset(R"(
+  left: {type: diffuse, color: [0.8, 0.6, 0.5]}
+  right: {type: conductor, color: [0.9, 0.9, 0.9], roughness: 0.3})");
   constexpr int kSeeds = 6;
   const Estimate mis = mean_over_seeds(yaml, GetParam(), "mis", kSeeds);
   const Estimate light = mean_over_seeds(yaml, GetParam(), "light", kSeeds);
@@ -180,21 +189,10 @@ world:
 // environment sampled above its mean, against MIS with it sampled whole, which leans on no such
 // cover (and against light samples alone, noisier).
 TEST_P(EnvironmentRender, EstimatorsAgreeOnPrincipledLayersUnderASunset) {
-  const std::string yaml = R"(
-rtpro: 1
-camera: {position: [0, 0.6, -4], look_at: [0, 0.2, 0], fov: 40, resolution: [32, 20]}
-render: {spp: 32, max_depth: 4, integrator: path}
-materials:
-  layered: {type: principled, color: [0.8, 0.5, 0.3], roughness: 0.4, metalness: 0.5, coat_weight: 0.7,
-            coat_roughness: 0.1, fuzz_color: [0.6, 0.6, 0.9], fuzz_roughness: 0.5}
-  frosted: {type: principled, color: [0.9, 0.9, 0.9], roughness: 0.3, transmission_weight: 0.6}
-  clay: {type: diffuse, color: [0.8, 0.6, 0.5]}
-environment: {file: environments/sunset.exr, rotation: [0, 120, 0]}
-world:
-  - {type: sphere, center: [-0.6, 0, 0], radius: 0.55, material: layered}
-  - {type: sphere, center: [0.6, 0, 0], radius: 0.55, material: frosted}
-  - {type: sphere, center: [0, -100.55, 0], radius: 100, material: clay}
-)";
+  const std::string yaml = two_spheres_under_a_sunset(R"(
+  left: {type: principled, color: [0.8, 0.5, 0.3], roughness: 0.4, metalness: 0.5, coat_weight: 0.7,
+         coat_roughness: 0.1, fuzz_color: [0.6, 0.6, 0.9], fuzz_roughness: 0.5}
+  right: {type: principled, color: [0.9, 0.9, 0.9], roughness: 0.3, transmission_weight: 0.6})");
   constexpr int kSeeds = 6;
   const Estimate above = mean_over_seeds(yaml, GetParam(), "mis", kSeeds, EnvironmentSampling::kAboveMean);
   const Estimate whole = mean_over_seeds(yaml, GetParam(), "mis", kSeeds, EnvironmentSampling::kWhole);

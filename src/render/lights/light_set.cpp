@@ -210,8 +210,7 @@ float LightSet::pdf(std::uint32_t index, const Vec3& from, const Vec3& on_light,
 }
 
 float LightSet::environment_pdf(const Vec3& direction, std::uint32_t group) const {
-  if (environment_index_ == kInvalidId || empty(group)) return 0.0f;
-  return pick_probability(environment_index_, Vec3(0.0f), group) * environment_->pdf(direction);
+  return environment_ ? environment_pdf_at(environment_->image_coordinates(direction), group) : 0.0f;
 }
 
 float LightSet::environment_pdf_at(EnvironmentLight::ImageCoordinates uv, std::uint32_t group) const {
