@@ -114,8 +114,35 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
       for (float& time : ws.camera_times) time = shutter_time(camera.shutter, time);
   }
   RenderCamera posed = integration_->still_camera;  // a moving camera's, at each sample's time
+  if (pinhole) {
+    // Every sample's film point first, then the rays four at a time across pixels (camera_ray's
+    // rays, bit for bit): at one sample per pixel a pixel alone has no four rays to share a
+    // normalisation's square root and divisions.
+    ws.film_x.resize(ws.camera_rays.size());
+    ws.film_y.resize(ws.camera_rays.size());
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < pixel_count; ++i) {
+      const std::size_t p = pixels[i];
+      const auto x = static_cast<float>(tile.x0 + static_cast<int>(p % tile_width));
+      const auto y = static_cast<float>(tile.y0 + static_cast<int>(p / tile_width));
+      switch (scene_.render.sampler) {
+        case SamplerKind::kStratified: sampler.pixel_offsets(key_of_pixel(i), offsets); break;
+        case SamplerKind::kSobol:
+          for (int s = range.begin; s < range.end; ++s)
+            offsets[s] = ws.sobol_offsets[next + static_cast<std::size_t>(s - range.begin)];
+          break;
+      }
+      for (int s = range.begin; s < range.end; ++s, ++next) {
+        ws.film_x[next] = x + offsets[s].x;
+        ws.film_y[next] = y + offsets[s].y;
+      }
+    }
+    std::size_t k = 0;
+    for (; k + 4 <= next; k += 4) pinhole_rays4(camera, &ws.film_x[k], &ws.film_y[k], &ws.camera_rays[k]);
+    for (; k < next; ++k) copy_ray(camera_ray(camera, ws.film_x[k], ws.film_y[k], {0.5f, 0.5f}), ws.camera_rays[k]);
+  }
   std::size_t next = 0;
-  for (std::size_t i = 0; i < pixel_count; ++i) {
+  for (std::size_t i = 0; i < pixel_count && !pinhole; ++i) {
     const std::size_t p = pixels[i];
     const int x = tile.x0 + static_cast<int>(p % tile_width);
     const int y = tile.y0 + static_cast<int>(p / tile_width);
@@ -127,17 +154,7 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
           offsets[s] = ws.sobol_offsets[next + static_cast<std::size_t>(s - range.begin)];
         break;
     }
-    int s = range.begin;
-    // Pinhole rays four at a time (camera_ray's rays, bit for bit), the rest one by one.
-    for (; pinhole && s + 4 <= range.end; s += 4, next += 4) {
-      alignas(16) float px[4], py[4];
-      for (int k = 0; k < 4; ++k) {
-        px[k] = static_cast<float>(x) + offsets[s + k].x;
-        py[k] = static_cast<float>(y) + offsets[s + k].y;
-      }
-      pinhole_rays4(camera, px, py, &ws.camera_rays[next]);
-    }
-    for (; s < range.end; ++s, ++next) {
+    for (int s = range.begin; s < range.end; ++s, ++next) {
       const PixelOffset& offset = offsets[s];
       const Sample2D lens = lensless ? Sample2D{0.5f, 0.5f}
                             : scene_.render.sampler == SamplerKind::kStratified
@@ -155,23 +172,26 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
 
   const bool color_only = sums_.keeps_color_only();
   for (std::size_t i = 0; i < pixel_count; ++i) {
-    PixelAccumulator acc;
-    for (int k = 0; k < per_pixel; ++k) {
-      SampleResult& sample = ws.samples[i * static_cast<std::size_t>(per_pixel) + static_cast<std::size_t>(k)];
-      if (!is_finite(sample.radiance)) {
+    float* pixel_sums =
+        out.pixels.data() + static_cast<std::size_t>(pixels[i]) * static_cast<std::size_t>(sums_.floats());
+    SampleResult* pixel_samples = &ws.samples[i * static_cast<std::size_t>(per_pixel)];
+    for (int k = 0; k < per_pixel; ++k)
+      if (!is_finite(pixel_samples[k].radiance)) {
         ++out.nan_samples;
-        sample.radiance = Color(0.0f);
+        pixel_samples[k].radiance = Color(0.0f);
       }
-      // The colour is summed the same way either way; the other sums cost a fifth of the Whitted
-      // demo's sample loop when nothing reads them.
-      if (color_only) {
-        acc.add_color(sample.radiance);
-      } else {
-        acc.add(sample.radiance, sample.primary, range.begin + k);
-      }
+    // The colour is summed the same way either way; the other sums cost a fifth of the Whitted
+    // demo's sample loop when nothing reads them, and the whole accumulator's zeroing a tenth of
+    // a one-sample frame's.
+    if (color_only) {
+      Color radiance(0.0f);
+      for (int k = 0; k < per_pixel; ++k) radiance += pixel_samples[k].radiance;
+      SumLayout::store_color_sums(radiance, per_pixel, pixel_sums);
+      continue;
     }
-    sums_.store(acc,
-                out.pixels.data() + static_cast<std::size_t>(pixels[i]) * static_cast<std::size_t>(sums_.floats()));
+    PixelAccumulator acc;
+    for (int k = 0; k < per_pixel; ++k) acc.add(pixel_samples[k].radiance, pixel_samples[k].primary, range.begin + k);
+    sums_.store(acc, pixel_sums);
   }
 }
 

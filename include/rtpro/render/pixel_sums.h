@@ -28,7 +28,8 @@ struct PixelAccumulator {
   // Inline: it runs once per camera sample.
   void add(const Color& sample_radiance, const PrimaryHit& primary, int sample_index) {
     if (samples == 0) first_object_id = primary.hit ? primary.object_id + 1 : 0;
-    add_color(sample_radiance);
+    ++samples;
+    radiance += sample_radiance;
     (sample_index % 2 == 0 ? even_radiance : odd_radiance) += sample_radiance;
     radiance_squared += sample_radiance * sample_radiance;
     if (!primary.hit) return;
@@ -40,11 +41,6 @@ struct PixelAccumulator {
     motion[1] += primary.motion.forward_y;
     motion[2] += primary.motion.back_x;
     motion[3] += primary.motion.back_y;
-  }
-  // The colour and the count alone, as add sums them: all a SumLayout that keeps_color_only reads.
-  void add_color(const Color& sample_radiance) {
-    ++samples;
-    radiance += sample_radiance;
   }
 };
 
@@ -78,6 +74,11 @@ class SumLayout {
   // not sample is left as it is).
   void merge(float* sums, const float* later, std::size_t pixels = 1) const;
   static int samples(const float* sums) { return static_cast<int>(sums[kSamples]); }
+  // What store writes for a layout that keeps_color_only, from the colour's sum and the count alone.
+  static void store_color_sums(const Color& radiance, int samples, float* out) {
+    store_color(radiance, out);
+    out[kSamples] = static_cast<float>(samples);
+  }
 
  private:
   static constexpr int kSamples = 3;

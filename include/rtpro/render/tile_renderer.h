@@ -30,6 +30,7 @@ class TileRenderer {
     std::vector<SampleKey> sample_keys;
     std::vector<PixelOffset> pixel_offsets;  // one pixel's, spp of them
     std::vector<PixelOffset> sobol_offsets;  // every camera sample's, drawn in one batch
+    std::vector<float> film_x, film_y;       // every pinhole camera sample's film point
     std::vector<float> camera_times;         // every camera sample's time, while the shutter is open
     std::vector<SampleResult> samples;
     std::vector<std::uint32_t> pixels;  // the tile's pixels that take part in the pass
