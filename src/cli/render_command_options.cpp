@@ -110,6 +110,11 @@ void add_render_options(CLI::App& cmd, RenderCommandOptions& o) {
   cmd.add_flag("--no-journal", o.no_journal,
                "Keep no resume journal beside the output (one is kept while rendering and removed once the image "
                "is written)");
+  cmd.add_option("--journal-after", o.journal_after,
+                 "Seconds of rendering before the journal records finished tiles: the first merged pass after "
+                 "them, or an interrupt, records what came before; a render killed sooner starts over on "
+                 "--resume (0: record every tile as it finishes)")
+      ->default_str("1");
   add_embree_options(cmd, o.backend_options);
   cmd.add_flag("--embree-compact", o.backend_options.embree_compact,
                "Smaller Embree BVH (about half), about 20% slower to trace");

@@ -42,6 +42,7 @@ struct RenderCommandOptions {
   std::string stats_json;
   bool resume = false;
   bool no_journal = false;
+  double journal_after = 1.0;    // seconds of rendering before finished tiles are journaled
   double time_limit = 0.0;       // seconds; 0: none
   double rank_timeout = 60.0;    // seconds a rank of an MPI job may stay silent; 0: for ever
   double start_timeout = 600.0;  // seconds the ranks wait for each other to load the scene; 0: for ever

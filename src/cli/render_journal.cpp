@@ -59,10 +59,26 @@ JobIdentity render_job_identity(const SceneDescription& description, const Scene
   return identity;
 }
 
-void OpenedJournal::tile_result(const TileResult& item) { journal->append(item); }
+void OpenedJournal::tile_result(const TileResult& item) {
+  if (std::chrono::steady_clock::now() < record_from) {
+    unrecorded_.value = true;
+    return;
+  }
+  journal->append(item);
+}
 
 void OpenedJournal::pass_merged(int, const ProgressiveFilm& film) {
-  if (journal->bytes() > 2 * film.bytes()) journal->rewrite(film.journal_items());
+  const bool catch_up = unrecorded_.value && std::chrono::steady_clock::now() >= record_from;
+  if (!catch_up && journal->bytes() <= 2 * film.bytes()) return;
+  unrecorded_.value = false;
+  journal->rewrite(film.journal_items());
+}
+
+void OpenedJournal::render_ended(const ProgressiveFilm& film, bool complete) {
+  // A complete render's journal is removed; an interrupted one's is what --resume continues.
+  if (complete || !unrecorded_.value) return;
+  unrecorded_.value = false;
+  journal->rewrite(film.journal_items());
 }
 
 OpenedJournal open_render_journal(const std::filesystem::path& file, const JobIdentity& identity, const TileGrid& grid,

@@ -145,6 +145,8 @@ RenderRequest parse_render_request(const RenderCommandOptions& o, const Communic
   const std::string display = chosen_ocio_display(o, log);
   const ProgressMode progress = shown_progress(o, leader);
   if (o.crop && !render.region) throw InputError("--crop needs --region");
+  if (!(o.journal_after >= 0.0 && o.journal_after <= 1e6))
+    throw InputError("--journal-after must be between 0 and 1000000 seconds");
   if (o.resume && o.no_journal)
     throw InputError("--resume reads the journal that --no-journal turns off: give one of them");
   if (o.resume && output.to_stdout()) throw InputError("--resume needs an output file: -o - keeps no journal");
@@ -182,6 +184,7 @@ RenderRequest parse_render_request(const RenderCommandOptions& o, const Communic
       .progress = progress,
       .frame = o.frame,
       .journal = journal,
+      .journal_after = std::chrono::milliseconds(static_cast<std::int64_t>(o.journal_after * 1000.0)),
       .resume = o.resume,
       .rank_timeout = std::chrono::milliseconds(static_cast<std::int64_t>(o.rank_timeout * 1000.0)),
       .start_timeout = std::chrono::milliseconds(static_cast<std::int64_t>(o.start_timeout * 1000.0)),

@@ -42,8 +42,9 @@ struct RenderRequest {
   std::optional<DisplayServerAddress> display_server;  // the leader's live preview, if any
   std::string preview_name;                            // the image's name in the viewer
   ProgressMode progress = ProgressMode::kNever;
-  long frame = -1;                // the frame of --frames; -1: none
-  std::filesystem::path journal;  // the leader's resume journal beside the output; empty: none
+  long frame = -1;                             // the frame of --frames; -1: none
+  std::filesystem::path journal;               // the leader's resume journal beside the output; empty: none
+  std::chrono::milliseconds journal_after{0};  // of rendering before finished tiles are recorded
   bool resume = false;
   std::chrono::milliseconds rank_timeout{0};
   std::chrono::milliseconds start_timeout{0};  // the handshake's, after loading (agree_on_job)

@@ -124,7 +124,10 @@ TileGrid RenderSession::grid() const {
 std::vector<RenderObserver*> RenderSession::observers(RenderObserver& progress) {
   std::vector<RenderObserver*> observers;
   if (preview_) observers.push_back(preview_.get());
-  if (journal_.journal) observers.push_back(&journal_);
+  if (journal_.journal) {
+    journal_.record_from = std::chrono::steady_clock::now() + request_.journal_after;
+    observers.push_back(&journal_);
+  }
   observers.push_back(&progress);
   return observers;
 }

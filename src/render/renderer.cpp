@@ -299,6 +299,7 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
   result.tiles_done = sink.done();
   result.rays = film.rays();
   result.nan_samples = film.nan_samples();
+  for (RenderObserver* observer : options.observers) observer->render_ended(film, result.complete());
   result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
 }

@@ -46,8 +46,10 @@ world:
 // (tile_codec.h) is an 80-byte header, a pass's sums of each pixel (7 floats: colour, sample count
 // and albedo, pixel_sums.h) and a checksum. Whitted's stratified samples render in one pass; the
 // path integrator's Sobol samples in 20 (1, 1, 2, 4, 8, then 16 at a time), and the journal is
-// compacted every few passes.
-const std::vector<std::string> kOptions = {"--tile-size", "16", "--aov", "albedo", "--spp", "256"};
+// compacted every few passes. Every tile is journaled as it finishes (--journal-after 0), so that
+// the tests can stop a render between any two.
+const std::vector<std::string> kOptions = {"--tile-size", "16",  "--aov",           "albedo",
+                                           "--spp",       "256", "--journal-after", "0"};
 constexpr std::size_t kTiles = 24;
 constexpr std::size_t kRecordBytes = 80 + 16 * 16 * 7 * 4 + 8;
 

@@ -21,6 +21,9 @@ class RenderObserver {
   virtual void tile_done(std::size_t /*done*/, std::size_t /*total*/) {}
   // After each merged pass, with its number and the film.
   virtual void pass_merged(int /*pass*/, const ProgressiveFilm& /*film*/) {}
+  // Once, after the last work item, with the film as the render leaves it; `complete`: the image
+  // is the render's whole (RenderResult::complete), not an interrupted one's.
+  virtual void render_ended(const ProgressiveFilm& /*film*/, bool /*complete*/) {}
 
   // Whether this observer takes pass_image: the renderer keeps a preview image only when one
   // does, as resolving it costs a pass over the film.

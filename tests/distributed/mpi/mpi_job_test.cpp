@@ -181,7 +181,8 @@ TEST(MpiJob, KilledRankEndsTheJobAndResumeFinishesItExactly) {
   ASSERT_EQ(run_command(render_command(scene, reference) + " --spp 1024"), 0);
   std::ofstream(out) << "a previous good image";
 
-  const pid_t job = start_job(3, scene, out, {"--spp", "1024"});
+  // Every tile journaled as it finishes (--journal-after 0): the test watches the journal grow.
+  const pid_t job = start_job(3, scene, out, {"--spp", "1024", "--journal-after", "0"});
   ASSERT_GE(job, 0);
   // Kill rank 1 once the journal holds about ten of the 70 tiles (8 x 8 pixels, 14 channels: 3.7 KB
   // a record).
@@ -250,7 +251,7 @@ TEST(MpiJob, StoppedRankEndsTheJobAfterTheRankTimeoutAndResumeFinishesIt) {
   ASSERT_EQ(run_command(render_command(scene, reference) + " --spp 256"), 0);
   std::ofstream(out) << "a previous good image";
 
-  const pid_t job = start_job(2, scene, out, {"--spp", "256", "--rank-timeout", "2"}, log);
+  const pid_t job = start_job(2, scene, out, {"--spp", "256", "--rank-timeout", "2", "--journal-after", "0"}, log);
   ASSERT_GE(job, 0);
   // Stop rank 1 once the journal holds a few of the 70 tiles (3.7 KB a record).
   int status = 0;
