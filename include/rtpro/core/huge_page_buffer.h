@@ -51,13 +51,17 @@ class HugePageBuffer {
 };
 
 // Asks for transparent huge pages for [data, data + bytes), memory not yet written: a vector's
-// reserved capacity before it is resized, for example. madvise takes the whole 4 KiB pages inside
-// the range; the kernel backs each 2 MiB-aligned part of them with one page on its first write.
-inline void advise_huge_pages(void* data, std::size_t bytes) {
+// reserved capacity before it is resized, for example; the kernel backs each 2 MiB-aligned part
+// on its first write. The advice covers every 4 KiB page the range touches, its partly covered
+// first and last ones too: a 2 MiB page can only be huge if each of its 4 KiB pages has the advice,
+// and a malloc'd block ends a few bytes into its mapping's last page (left out, the last 2 MiB of a
+// 12 MiB image took 511 faults of ~13 us). The advice changes no data, so pages the range shares
+// with a neighbouring block lose nothing.
+inline void advise_huge_pages(const void* data, std::size_t bytes) {
   constexpr std::uintptr_t kPage = 4096;
-  const auto begin = (reinterpret_cast<std::uintptr_t>(data) + kPage - 1) & ~(kPage - 1);
-  const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(kPage - 1);
-  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+  const auto begin = reinterpret_cast<std::uintptr_t>(data) & ~(kPage - 1);
+  const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes + kPage - 1) & ~(kPage - 1);
+  if (bytes > 0) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
 }
 
 // A std::allocator that takes memory for large arrays (4 MiB and more) the way HugePageBuffer

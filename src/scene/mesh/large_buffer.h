@@ -3,18 +3,19 @@
 // memory for the first time (one page fault per 4 KB page) costs about 0.7 ms per MB, more than
 // parsing the text that fills it; 2 MB pages cut that about threefold. So large buffers ask the
 // kernel for transparent huge pages (a no-op where they are disabled).
+#include "rtpro/core/huge_page_buffer.h"
+
 #include <cstddef>
 #include <vector>
 
 namespace rtpro {
 
-// Advises 2 MB pages for the whole pages inside [data, data + bytes); small ranges are left alone.
-void advise_huge_pages(const void* data, std::size_t bytes);
-
+// Reserves n elements, in 2 MB pages when they take two or more (advise_huge_pages).
 template <typename T, typename Allocator>
 void reserve_large(std::vector<T, Allocator>& v, std::size_t n) {
   v.reserve(n);
-  advise_huge_pages(v.data(), n * sizeof(T));
+  constexpr std::size_t kWorthIt = std::size_t(4) << 20;  // two huge pages
+  if (n * sizeof(T) >= kWorthIt) advise_huge_pages(v.data(), n * sizeof(T));
 }
 
 // Resizes an empty vector to n value-initialised elements.
