@@ -247,8 +247,19 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
     return items;
   };
   const auto execute = [&](TileSource& source) {
-    if (options.tile_executor) options.tile_executor->execute(*renderer, grid, source, sink);
-    else render_tiles(*renderer, grid, source, sink);
+    try {
+      if (options.tile_executor) options.tile_executor->execute(*renderer, grid, source, sink);
+      else render_tiles(*renderer, grid, source, sink);
+    } catch (...) {
+      // The render failed (a rank of a job died, say): the observers still see the film as it
+      // stands, so that a journal keeps what was finished for --resume. An observer's own failure
+      // gives way to the render's.
+      for (RenderObserver* observer : options.observers) try {
+          observer->render_ended(film, false);
+        } catch (...) {
+        }
+      throw;
+    }
   };
 
   result.passes_total = grid.passes();

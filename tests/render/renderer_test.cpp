@@ -122,6 +122,71 @@ TEST(Renderer, CancellationStopsBeforeTheRemainingTiles) {
   EXPECT_LT(result.tiles_done, result.tiles_total);
 }
 
+// Observers see the film once at the end, whether the render finishes, is cancelled or fails.
+TEST(Renderer, ObserversSeeTheFilmOnceAtTheEndHoweverTheRenderEnds) {
+  const RenderScene scene = test_scene();
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
+  struct Ending final : RenderObserver {
+    int calls = 0;
+    bool complete = false;
+    std::size_t items_in = 0;
+    int passes_merged = 0;
+    void render_ended(const ProgressiveFilm& film, bool whole) override {
+      ++calls;
+      complete = whole;
+      items_in = film.items_in();
+      passes_merged = film.passes_merged();
+    }
+  };
+  tbb::global_control cap(tbb::global_control::max_allowed_parallelism, 1);
+  RenderOptions options;
+  options.tile_size = 8;
+
+  Ending finished;
+  options.observers = {&finished};
+  const RenderResult whole = render_image(scene, *backend, options);
+  EXPECT_EQ(finished.calls, 1);
+  EXPECT_TRUE(finished.complete);
+  EXPECT_EQ(finished.items_in, whole.tiles_total);
+  EXPECT_EQ(finished.passes_merged, whole.passes_total);
+
+  std::atomic<bool> cancel{false};
+  struct CancelAfterThreeTiles final : RenderObserver {
+    std::atomic<bool>& cancel;
+    explicit CancelAfterThreeTiles(std::atomic<bool>& flag) : cancel(flag) {}
+    void tile_done(std::size_t done, std::size_t) override {
+      if (done >= 3) cancel = true;
+    }
+  } canceller(cancel);
+  Ending cancelled;
+  options.cancel = &cancel;
+  options.observers = {&canceller, &cancelled};
+  const RenderResult partial = render_image(scene, *backend, options);
+  EXPECT_EQ(cancelled.calls, 1);
+  EXPECT_FALSE(cancelled.complete);
+  EXPECT_EQ(cancelled.items_in, partial.tiles_done);
+  options.cancel = nullptr;
+
+  // An executor that renders two items, then fails as a job whose rank died does.
+  struct FailingExecutor final : TileExecutor {
+    void execute(const TileRenderer& renderer, const TileGrid& grid, TileSource& source, TileSink& sink) override {
+      TileRenderer::Workspace workspace;
+      for (int i = 0; i < 2; ++i) {
+        const std::size_t index = *source.next();
+        sink.put(renderer.render(index, grid.tile(index), workspace));
+      }
+      throw RuntimeError("a rank died");
+    }
+  } failing;
+  Ending failed;
+  options.tile_executor = &failing;
+  options.observers = {&failed};
+  EXPECT_THROW(render_image(scene, *backend, options), RuntimeError);
+  EXPECT_EQ(failed.calls, 1);
+  EXPECT_FALSE(failed.complete);
+  EXPECT_EQ(failed.items_in, 2u);
+}
+
 // A backend that answers as the one it wraps and counts the rays it is asked to trace once it
 // has been told it is freed.
 class ReleasableBackend final : public Backend {

@@ -22,7 +22,8 @@ class RenderObserver {
   // After each merged pass, with its number and the film.
   virtual void pass_merged(int /*pass*/, const ProgressiveFilm& /*film*/) {}
   // Once, after the last work item, with the film as the render leaves it; `complete`: the image
-  // is the render's whole (RenderResult::complete), not an interrupted one's.
+  // is the render's whole (RenderResult::complete), not an interrupted one's. Also, with
+  // `complete` false, when the render fails with an exception (before it propagates).
   virtual void render_ended(const ProgressiveFilm& /*film*/, bool /*complete*/) {}
 
   // Whether this observer takes pass_image: the renderer keeps a preview image only when one
