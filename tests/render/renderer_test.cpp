@@ -100,6 +100,15 @@ TEST(Renderer, RegionPixelsEqualTheFullRender) {
   EXPECT_THROW(render_image(scene, *backend, options), InputError);
 }
 
+// Cancels the render once three work items are done.
+struct CancelAfterThreeTiles final : RenderObserver {
+  std::atomic<bool>& cancel;
+  explicit CancelAfterThreeTiles(std::atomic<bool>& flag) : cancel(flag) {}
+  void tile_done(std::size_t done, std::size_t) override {
+    if (done >= 3) cancel = true;
+  }
+};
+
 TEST(Renderer, CancellationStopsBeforeTheRemainingTiles) {
   const RenderScene scene = test_scene();
   const auto backend = make_backend(BackendKind::kNative, scene, {});
@@ -107,13 +116,7 @@ TEST(Renderer, CancellationStopsBeforeTheRemainingTiles) {
   RenderOptions options;
   options.tile_size = 8;
   options.cancel = &cancel;
-  struct CancelAfterThreeTiles final : RenderObserver {
-    std::atomic<bool>& cancel;
-    explicit CancelAfterThreeTiles(std::atomic<bool>& flag) : cancel(flag) {}
-    void tile_done(std::size_t done, std::size_t) override {
-      if (done >= 3) cancel = true;
-    }
-  } canceller(cancel);
+  CancelAfterThreeTiles canceller(cancel);
   options.observers = {&canceller};
   tbb::global_control cap(tbb::global_control::max_allowed_parallelism, 1);
   const RenderResult result = render_image(scene, *backend, options);
@@ -151,13 +154,7 @@ TEST(Renderer, ObserversSeeTheFilmOnceAtTheEndHoweverTheRenderEnds) {
   EXPECT_EQ(finished.passes_merged, whole.passes_total);
 
   std::atomic<bool> cancel{false};
-  struct CancelAfterThreeTiles final : RenderObserver {
-    std::atomic<bool>& cancel;
-    explicit CancelAfterThreeTiles(std::atomic<bool>& flag) : cancel(flag) {}
-    void tile_done(std::size_t done, std::size_t) override {
-      if (done >= 3) cancel = true;
-    }
-  } canceller(cancel);
+  CancelAfterThreeTiles canceller(cancel);
   Ending cancelled;
   options.cancel = &cancel;
   options.observers = {&canceller, &cancelled};
