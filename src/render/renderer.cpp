@@ -254,10 +254,12 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
       // The render failed (a rank of a job died, say): the observers still see the film as it
       // stands, so that a journal keeps what was finished for --resume. An observer's own failure
       // gives way to the render's.
-      for (RenderObserver* observer : options.observers) try {
+      for (RenderObserver* observer : options.observers) {
+        try {
           observer->render_ended(film, false);
         } catch (...) {
         }
+      }
       throw;
     }
   };

@@ -113,25 +113,28 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
     if (!camera.shutter.is_box())
       for (float& time : ws.camera_times) time = shutter_time(camera.shutter, time);
   }
-  RenderCamera posed = integration_->still_camera;  // a moving camera's, at each sample's time
+  // The pass's offsets of pixel i, whose first sample is the batch's sample `first`.
+  const auto find_offsets = [&](std::size_t i, std::size_t first) {
+    switch (scene_.render.sampler) {
+      case SamplerKind::kStratified: sampler.pixel_offsets(key_of_pixel(i), offsets); break;
+      case SamplerKind::kSobol:
+        for (int s = range.begin; s < range.end; ++s)
+          offsets[s] = ws.sobol_offsets[first + static_cast<std::size_t>(s - range.begin)];
+        break;
+    }
+  };
+  std::size_t next = 0;
   if (pinhole) {
     // Every sample's film point first, then the rays four at a time across pixels (camera_ray's
     // rays, bit for bit): at one sample per pixel a pixel alone has no four rays to share a
     // normalisation's square root and divisions.
     ws.film_x.resize(ws.camera_rays.size());
     ws.film_y.resize(ws.camera_rays.size());
-    std::size_t next = 0;
     for (std::size_t i = 0; i < pixel_count; ++i) {
       const std::size_t p = pixels[i];
       const auto x = static_cast<float>(tile.x0 + static_cast<int>(p % tile_width));
       const auto y = static_cast<float>(tile.y0 + static_cast<int>(p / tile_width));
-      switch (scene_.render.sampler) {
-        case SamplerKind::kStratified: sampler.pixel_offsets(key_of_pixel(i), offsets); break;
-        case SamplerKind::kSobol:
-          for (int s = range.begin; s < range.end; ++s)
-            offsets[s] = ws.sobol_offsets[next + static_cast<std::size_t>(s - range.begin)];
-          break;
-      }
+      find_offsets(i, next);
       for (int s = range.begin; s < range.end; ++s, ++next) {
         ws.film_x[next] = x + offsets[s].x;
         ws.film_y[next] = y + offsets[s].y;
@@ -140,30 +143,25 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
     std::size_t k = 0;
     for (; k + 4 <= next; k += 4) pinhole_rays4(camera, &ws.film_x[k], &ws.film_y[k], &ws.camera_rays[k]);
     for (; k < next; ++k) copy_ray(camera_ray(camera, ws.film_x[k], ws.film_y[k], {0.5f, 0.5f}), ws.camera_rays[k]);
-  }
-  std::size_t next = 0;
-  for (std::size_t i = 0; i < pixel_count && !pinhole; ++i) {
-    const std::size_t p = pixels[i];
-    const int x = tile.x0 + static_cast<int>(p % tile_width);
-    const int y = tile.y0 + static_cast<int>(p / tile_width);
-    const std::uint64_t pixel_key = key_of_pixel(i);
-    switch (scene_.render.sampler) {
-      case SamplerKind::kStratified: sampler.pixel_offsets(pixel_key, offsets); break;
-      case SamplerKind::kSobol:
-        for (int s = range.begin; s < range.end; ++s)
-          offsets[s] = ws.sobol_offsets[next + static_cast<std::size_t>(s - range.begin)];
-        break;
-    }
-    for (int s = range.begin; s < range.end; ++s, ++next) {
-      const PixelOffset& offset = offsets[s];
-      const Sample2D lens = lensless ? Sample2D{0.5f, 0.5f}
-                            : scene_.render.sampler == SamplerKind::kStratified
-                                ? sampler.sample_2d(pixel_key, s, sample_dimension::kLens)
-                                : sobol.sample_2d(pixel_key, s, sample_dimension::kLens);
-      if (camera.moving()) set_pose(posed, camera_pose_at(camera, ws.camera_times[next]));
-      copy_ray(camera_ray(camera.moving() ? posed : camera, static_cast<float>(x) + offset.x,
-                          static_cast<float>(y) + offset.y, lens),
-               ws.camera_rays[next]);
+  } else {
+    RenderCamera posed = integration_->still_camera;  // a moving camera's, at each sample's time
+    for (std::size_t i = 0; i < pixel_count; ++i) {
+      const std::size_t p = pixels[i];
+      const int x = tile.x0 + static_cast<int>(p % tile_width);
+      const int y = tile.y0 + static_cast<int>(p / tile_width);
+      const std::uint64_t pixel_key = key_of_pixel(i);
+      find_offsets(i, next);
+      for (int s = range.begin; s < range.end; ++s, ++next) {
+        const PixelOffset& offset = offsets[s];
+        const Sample2D lens = lensless ? Sample2D{0.5f, 0.5f}
+                              : scene_.render.sampler == SamplerKind::kStratified
+                                  ? sampler.sample_2d(pixel_key, s, sample_dimension::kLens)
+                                  : sobol.sample_2d(pixel_key, s, sample_dimension::kLens);
+        if (camera.moving()) set_pose(posed, camera_pose_at(camera, ws.camera_times[next]));
+        copy_ray(camera_ray(camera.moving() ? posed : camera, static_cast<float>(x) + offset.x,
+                            static_cast<float>(y) + offset.y, lens),
+                 ws.camera_rays[next]);
+      }
     }
   }
   ws.samples.resize(ws.camera_rays.size());
