@@ -178,6 +178,36 @@ TEST(EnvironmentLight, ASampleCarriesExactlyItsDirectionsRadianceAndPdf) {
   EXPECT_GT(sampled, 1900);
 }
 
+// A sample without its radiance (the path integrator's, whose shadow ray may still be stopped) is
+// sample()'s: the same direction and pdf, and its image coordinates give the same radiance, bit
+// for bit; for a constant environment too, and none where sample() has none.
+TEST(EnvironmentLight, ADirectionSampleIsTheSampleWithItsRadianceLeftForLater) {
+  const Affine turn = compose(Affine::rotate({0, 1, 0}, 35.0f), Affine::rotate({0, 0, 1}, 10.0f));
+  for (const EnvironmentSampling sampling : {kWhole, kAboveMean}) {
+    const EnvironmentLight light(environment(turn), lumpy_image(64, 32), sampling);
+    const EnvironmentLight constant(Environment{"", Color(0.5f, 1.0f, 2.0f), Affine::identity(), true}, Image(),
+                                    sampling);
+    Uniforms uniforms(17);
+    int sampled = 0;
+    for (int i = 0; i < 4000; ++i) {
+      const Sample2D u = uniforms.next_2d();
+      for (const EnvironmentLight* l : {&light, &constant}) {
+        const std::optional<EnvironmentLight::Sample> s = l->sample(u);
+        const std::optional<EnvironmentLight::DirectionSample> d = l->sample_direction(u);
+        ASSERT_EQ(s.has_value(), d.has_value());
+        if (!s) continue;
+        ++sampled;
+        EXPECT_EQ(d->direction, s->direction);
+        EXPECT_EQ(d->pdf, s->pdf);
+        EXPECT_EQ(l->radiance_at(d->uv), s->radiance);
+      }
+    }
+    EXPECT_GT(sampled, 7000);
+  }
+  const EnvironmentLight black(environment(), image_with_spot(8, 4, Color(0.0f), 0, 0, Color(0.0f)), kWhole);
+  EXPECT_FALSE(black.sample_direction({0.5f, 0.5f}));
+}
+
 // Sampling above the mean: the left half of the image at 1, the right half at 3, so the mean over
 // the sphere is 2. The dim half has no light samples and pdf 0 (BSDF samples cover it under MIS);
 // the bright half takes them all, in proportion to its excess: 1 in each of its 14 inner columns

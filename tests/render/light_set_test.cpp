@@ -48,6 +48,51 @@ TEST(LightSet, HoldsTheSceneLightsAndItsEmissiveSpheres) {
   EXPECT_EQ(lights.light_of_hit(hit), kInvalidId);  // instanced emitters are not sampled
 }
 
+// EnvironmentRadiance::kLater leaves an environment sample's radiance to be found from its image
+// coordinates (the path integrator does once the shadow ray passes): everything else, and that
+// radiance once found, is kNow's sample bit for bit; every other light's sample is the same and
+// says it has its radiance (no environment), whichever is asked.
+TEST(LightSet, AnEnvironmentSampleCanLeaveItsRadianceForLater) {
+  const RenderScene scene = lit_scene();
+  Image sky(16, 8);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 16; ++x)
+      for (int c = 0; c < 3; ++c) sky.at(x, y, c) = 0.1f + float((x * 7 + y * 3 + c) % 11);
+  const EnvironmentLight environment(Environment{"sky.exr", Color(1.0f), Affine::identity(), true}, std::move(sky),
+                                     EnvironmentSampling::kWhole);
+  const LightSet lights(scene, &environment);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  int environment_samples = 0, others = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 from{uniform(rng) * 6.0f - 3.0f, uniform(rng) * 3.0f, uniform(rng) * 6.0f - 3.0f};
+    const float u_pick = uniform(rng);
+    const Sample2D u{uniform(rng), uniform(rng)};
+    PathLightSample now, later;
+    const bool found_now = lights.sample(from, u_pick, u, nullptr, 0, now, EnvironmentRadiance::kNow);
+    const bool found_later = lights.sample(from, u_pick, u, nullptr, 0, later, EnvironmentRadiance::kLater);
+    ASSERT_EQ(found_now, found_later);
+    if (!found_now) continue;
+    EXPECT_EQ(now.environment, nullptr);
+    EXPECT_EQ(later.direction, now.direction);
+    EXPECT_EQ(later.distance, now.distance);
+    EXPECT_EQ(later.pdf, now.pdf);
+    EXPECT_EQ(later.delta, now.delta);
+    EXPECT_EQ(later.light, now.light);
+    if (std::holds_alternative<EnvironmentRef>(lights.lights()[now.light])) {
+      ++environment_samples;
+      ASSERT_EQ(later.environment, &environment);
+      EXPECT_EQ(environment.radiance_at(later.environment_uv), now.radiance);
+    } else {
+      ++others;
+      EXPECT_EQ(later.environment, nullptr);
+      EXPECT_EQ(later.radiance, now.radiance);
+    }
+  }
+  EXPECT_GT(environment_samples, 500);
+  EXPECT_GT(others, 5000);
+}
+
 TEST(LightSet, SamplePdfIsThePdfOfTheSampledPoint) {
   const RenderScene scene = lit_scene();
   const LightSet lights(scene);

@@ -72,6 +72,15 @@ class EnvironmentLight {
   };
   // Nothing when the environment is black everywhere.
   std::optional<Sample> sample(Sample2D u) const;
+  // sample()'s direction and pdf, and where its radiance is (radiance_at(uv) is sample()'s
+  // radiance, bit for bit), without reading the image: a light sample whose shadow ray is then
+  // stopped never needs it.
+  struct DirectionSample {
+    Vec3 direction;
+    ImageCoordinates uv;
+    float pdf;
+  };
+  std::optional<DirectionSample> sample_direction(Sample2D u) const;
   // The solid-angle pdf sample() has of `direction`.
   float pdf(const Vec3& direction) const;
 

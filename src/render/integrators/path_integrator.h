@@ -75,9 +75,21 @@ class PathWorkspace {
       return next;
     }
   };
+  static constexpr std::uint32_t kFoundRadiance = 0xffffffffu;
   struct ShadowQuery {
     std::uint32_t sample;
-    Color contribution;  // added when the shadow ray is unoccluded
+    // Added when the shadow ray is unoccluded; β·f alone where `unfound` says the light's
+    // radiance is still to be found (found_contribution).
+    Color contribution;
+    std::uint32_t unfound = kFoundRadiance;  // else an index into unfound_radiance
+  };
+  // An environment light sample's radiance left unfound until its shadow ray passes: the
+  // contribution is then clamped(β·f·Le·scale, clamp_limit), as for any light sample.
+  struct UnfoundRadiance {
+    const EnvironmentLight* environment;
+    EnvironmentLight::ImageCoordinates uv;
+    float scale;        // w_l / p_l
+    float clamp_limit;  // clamped()'s; infinite where nothing is clamped
   };
   // In a scene with media, where a shadow ray starts: its media, the seed of its ratio tracking,
   // and the scene light it goes to (kInvalidId for an emitter or the environment).
@@ -94,6 +106,7 @@ class PathWorkspace {
   std::vector<SampleKey> path_keys;    // per path, its camera sample's key
   GenerationSamples samples;           // per path, the samples of the vertex its ray reaches
   std::vector<ShadowQuery> shadow_queries;
+  std::vector<UnfoundRadiance> unfound_radiance;
   std::vector<Ray> shadow_rays;
   // Under light linking only: per shadow ray, the scene light it goes to, or kInvalidId.
   std::vector<std::uint32_t> shadow_lights;

@@ -93,7 +93,7 @@ void PathVertexStep<kLightPathControls>::scatter_in_medium(std::size_t vertex, c
   // Next-event estimation: β·p·Le·w_l/p_l, its shadow ray ratio-tracked from here.
   constexpr std::uint32_t kGroup = 0;  // a medium is no object: every light illuminates it
   if (!lights_.empty(kGroup))
-    if (const PathLightSample* ls = sample_light(vertex, position, u, kGroup)) {
+    if (const PathLightSample* ls = sample_light(vertex, position, u, kGroup, EnvironmentRadiance::kNow)) {
       const float phase = henyey_greenstein(dot(direction, ls->direction), g);
       const std::optional<float> w_l = light_sample_weight(*ls, phase);
       const Color contribution = clamp(beta * ls->radiance * (w_l.value_or(0.0f) * phase / ls->pdf),

@@ -9,6 +9,7 @@
 #include "texture.h"
 
 #include <algorithm>
+#include <limits>
 #include <optional>
 
 namespace rtpro {
@@ -97,7 +98,9 @@ void PathVertexStep<kLightPathControls>::extend(std::size_t vertex, const Path& 
   // Next-event estimation, where the BSDF is not purely specular; in a scene with media its
   // shadow ray starts in the medium on its side of the surface.
   if (!delta && !lights_.empty(group))
-    if (const PathLightSample* light = sample_light(vertex, sp.position, u, group)) {
+    // Outside media a shadow ray is passed or stopped, so the environment's radiance waits for it.
+    if (const PathLightSample* light = sample_light(
+            vertex, sp.position, u, group, has_media_ ? EnvironmentRadiance::kNow : EnvironmentRadiance::kLater)) {
       const std::size_t queued = ws_.shadow_queries.size();
       queue_light_sample(path.sample, origins, surface, wo, *light, beta,
                          path.bounce == 0 ? direct_limit_ : indirect_limit_);
@@ -186,10 +189,12 @@ void PathVertexStep<kLightPathControls>::add_escaped_light(const Path& path, con
 // the light sends nothing there.
 template <bool kLightPathControls>
 const PathLightSample* PathVertexStep<kLightPathControls>::sample_light(std::size_t vertex, const Vec3& position,
-                                                                        const VertexSamples& u, std::uint32_t group) {
+                                                                        const VertexSamples& u, std::uint32_t group,
+                                                                        EnvironmentRadiance environment) {
   if (lone_point_light_) return ws_.samples.lone_light_sample(vertex);
-  return lights_.sample(position, u.choices.x, u.light_point, textures_, group, light_sample_) ? &light_sample_
-                                                                                               : nullptr;
+  return lights_.sample(position, u.choices.x, u.light_point, textures_, group, light_sample_, environment)
+             ? &light_sample_
+             : nullptr;
 }
 
 // β·f·|cos θ|·Le·w_l/p_l of a light sample, queued with its shadow ray: added when that passes.
@@ -204,8 +209,17 @@ void PathVertexStep<kLightPathControls>::queue_light_sample(std::uint32_t sample
   if (carries_no_light(f)) return;
   const std::optional<float> w_l = light_sample_weight(ls, ls.delta ? 0.0f : bsdf_pdf(surface.bsdf, wo, wi));
   if (!w_l) return;
-  const Color contribution = clamp(beta * f * ls.radiance * (*w_l / ls.pdf), clamp_limit);
-  if (!is_finite(contribution) || carries_no_light(contribution)) return;
+  Color contribution;
+  if (ls.environment) {
+    // β·f now, the rest once the shadow ray passes (found_contribution), in the same order.
+    contribution = beta * f;
+    // clamped() leaves everything below an infinite limit as it is, as clamp() does unclamped.
+    const float limit = kLightPathControls && clamping_ ? clamp_limit : std::numeric_limits<float>::infinity();
+    ws_.unfound_radiance.push_back({ls.environment, ls.environment_uv, *w_l / ls.pdf, limit});
+  } else {
+    contribution = clamp(beta * f * ls.radiance * (*w_l / ls.pdf), clamp_limit);
+    if (!is_finite(contribution) || carries_no_light(contribution)) return;
+  }
   Ray ray;
   if (std::isinf(ls.distance)) {
     ray = spawn_ray(origins, ls.direction);
@@ -214,6 +228,7 @@ void PathVertexStep<kLightPathControls>::queue_light_sample(std::uint32_t sample
     ray.tfar = 1.0f - kShadowEpsilon;
   }
   queue_shadow(sample, contribution, ray, ls.light);
+  if (ls.environment) ws_.shadow_queries.back().unfound = static_cast<std::uint32_t>(ws_.unfound_radiance.size() - 1);
 }
 
 template <bool kLightPathControls>

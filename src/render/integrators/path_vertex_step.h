@@ -161,7 +161,7 @@ class PathVertexStep {
                     const Vec3& on_light, const Color& beta);
   void add_escaped_light(const Path& path, const Ray& ray, SampleResult& result);
   const PathLightSample* sample_light(std::size_t vertex, const Vec3& position, const VertexSamples& u,
-                                      std::uint32_t group);
+                                      std::uint32_t group, EnvironmentRadiance environment);
   void queue_light_sample(std::uint32_t sample, SpawnOrigins& origins, const SurfaceBsdf& surface, const Vec3& wo,
                           const PathLightSample& ls, const Color& beta, float clamp_limit);
   // Queues a shadow ray with what it adds when it passes.

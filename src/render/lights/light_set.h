@@ -58,11 +58,12 @@ class LightSet {
   }
   // The same into `out` (its fields undefined when there is none), for the path integrator's loop.
   // Inline, the pick and a point light's sample with it: every path vertex asks.
+  // `environment`: whether an environment sample's radiance is found now or left to the caller.
   bool sample(const Vec3& point, float u_pick, Sample2D u, const TextureLookup* textures, std::uint32_t group,
-              PathLightSample& out) const {
+              PathLightSample& out, EnvironmentRadiance environment = EnvironmentRadiance::kNow) const {
     LightPicker::Pick pick;
     if (!picker(group).pick(point, u_pick, pick)) return false;
-    if (!sample_path_light(lights_[pick.light], point, u, textures, out)) return false;
+    if (!sample_path_light(lights_[pick.light], point, u, textures, out, environment)) return false;
     out.pdf *= pick.pmf;
     out.light = pick.light;
     return true;

@@ -103,6 +103,7 @@ struct Sampler {
   Sample2D u;
   const TextureLookup* textures;
   PathLightSample& out;
+  EnvironmentRadiance environment_radiance;
 
   bool found(const Vec3& direction, float distance, const Color& radiance, float pdf, bool delta) const {
     out.direction = direction;
@@ -110,6 +111,7 @@ struct Sampler {
     out.radiance = radiance;
     out.pdf = pdf;
     out.delta = delta;
+    out.environment = nullptr;
     return true;
   }
 
@@ -155,6 +157,14 @@ struct Sampler {
     return on_surface(s, l.emission, uv.u, uv.v);
   }
   bool operator()(const EnvironmentRef& l) const {
+    if (environment_radiance == EnvironmentRadiance::kLater) {
+      const std::optional<EnvironmentLight::DirectionSample> s = l.light->sample_direction(u);
+      if (!s) return false;
+      found(s->direction, kInfinity, Color(0.0f), s->pdf, false);
+      out.environment = l.light;
+      out.environment_uv = s->uv;
+      return true;
+    }
     const std::optional<EnvironmentLight::Sample> s = l.light->sample(u);
     if (!s || s->radiance == Color(0.0f)) return false;
     return found(s->direction, kInfinity, s->radiance, s->pdf, false);
@@ -287,8 +297,8 @@ std::optional<LightBounds> path_light_bounds(const PathLight& light, float power
 }
 
 bool sample_path_light_of_any_kind(const PathLight& light, const Vec3& from, Sample2D u, const TextureLookup* textures,
-                                   PathLightSample& out) {
-  return std::visit(Sampler{from, u, textures, out}, light);
+                                   PathLightSample& out, EnvironmentRadiance environment) {
+  return std::visit(Sampler{from, u, textures, out, environment}, light);
 }
 
 float path_light_pdf(const PathLight& light, const Vec3& from, const Vec3& on_light) {

@@ -55,11 +55,21 @@ using PathLight = WithEmitters<Light, EmissiveTriangle, EmissiveSphere, Environm
 struct PathLightSample {
   Vec3 direction;       // unit, from the point towards the light
   float distance;       // to the sampled point; infinity for directional lights and the environment
-  Color radiance;       // arriving along `direction` (no pdf folded in)
+  Color radiance;       // arriving along `direction` (no pdf folded in); unset where `environment` is
   float pdf;            // solid angle, times the probability of picking the light; 1 for delta lights
   bool delta;           // point, spot and directional lights: no BSDF sample can reach them
   std::uint32_t light;  // which light of the set
+  // An environment sample taken with EnvironmentRadiance::kLater: the radiance is
+  // environment->radiance_at(environment_uv), to be found once the shadow ray passes. Null for
+  // every other sample.
+  const EnvironmentLight* environment;
+  EnvironmentLight::ImageCoordinates environment_uv;
 };
+
+// Whether an environment sample reads its radiance from the image at once, or leaves it for the
+// caller (PathLightSample::environment): inside a room most environment samples' shadow rays are
+// stopped, and each lookup is a cache miss.
+enum class EnvironmentRadiance : std::uint8_t { kNow, kLater };
 
 // A scene light as the path integrator reads it in a scene of light units `units`.
 PathLight path_light_of(const Light& light, LightUnits units);
@@ -84,21 +94,22 @@ inline bool sample_point_light(const PointLight& light, const Vec3& from, PathLi
   out.radiance = light.inverse_square ? light.radiance * (1.0f / d2) : light.radiance;
   out.pdf = 1.0f;
   out.delta = true;
+  out.environment = nullptr;
   return true;
 }
 
 // sample_path_light for a light of any kind, out of line.
 bool sample_path_light_of_any_kind(const PathLight& light, const Vec3& from, Sample2D u, const TextureLookup* textures,
-                                   PathLightSample& out);
+                                   PathLightSample& out, EnvironmentRadiance environment = EnvironmentRadiance::kNow);
 
 // A point of the light by `u`, seen from `from`, into `out` (its direction, distance, radiance,
 // pdf and whether it is a delta light; not `light`); false when the light sends nothing there.
 // Point lights inline: a scene lit by them samples one at every path vertex, and a point light's
 // sample costs less than a call.
 inline bool sample_path_light(const PathLight& light, const Vec3& from, Sample2D u, const TextureLookup* textures,
-                              PathLightSample& out) {
+                              PathLightSample& out, EnvironmentRadiance environment = EnvironmentRadiance::kNow) {
   if (const auto* point = std::get_if<PointLight>(&light)) return sample_point_light(*point, from, out);
-  return sample_path_light_of_any_kind(light, from, u, textures, out);
+  return sample_path_light_of_any_kind(light, from, u, textures, out, environment);
 }
 // The solid-angle pdf of sample_path_light reaching `on_light` from `from`; 0 for delta lights.
 float path_light_pdf(const PathLight& light, const Vec3& from, const Vec3& on_light);

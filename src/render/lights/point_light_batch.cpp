@@ -41,6 +41,7 @@ void sample_point_light_batch(const PointLight& light, std::span<const SurfacePo
       s.radiance = {rx[k], ry[k], rz[k]};
       s.pdf = 1.0f;
       s.delta = true;
+      s.environment = nullptr;
       found[i + k] = (lit >> k) & 1;
     }
   }
