@@ -72,15 +72,10 @@ class EnvironmentLight {
   };
   // Nothing when the environment is black everywhere.
   std::optional<Sample> sample(Sample2D u) const;
-  // sample()'s direction and pdf, and where its radiance is (radiance_at(uv) is sample()'s
-  // radiance, bit for bit), without reading the image: a light sample whose shadow ray is then
-  // stopped never needs it.
-  struct DirectionSample {
-    Vec3 direction;
-    ImageCoordinates uv;
-    float pdf;
-  };
-  std::optional<DirectionSample> sample_direction(Sample2D u) const;
+  // sample()'s direction alone, without its pdf and radiance (pdf() and radiance() of it, bit for
+  // bit sample()'s where it has one; sample() has none where that pdf is not positive and
+  // finite): a light sample whose shadow ray is then stopped needs neither.
+  std::optional<Vec3> sample_direction(Sample2D u) const;
   // The solid-angle pdf sample() has of `direction`.
   float pdf(const Vec3& direction) const;
 

@@ -47,19 +47,6 @@ std::span<const SampleKey> path_keys(std::span<const SampleKey> keys, PathWorksp
   return ws.path_keys;
 }
 
-// What a shadow query adds when its ray passes: its contribution, or, for an environment sample
-// whose radiance was left unfound, clamp(β·f·Le·(w_l/p_l)) with Le read now, as
-// queue_light_sample computes it for other lights; nothing when that is not finite or is black,
-// as a light sample that would carry it is not queued.
-std::optional<Color> found_contribution(const PathWorkspace::ShadowQuery& query, const PathWorkspace& ws) {
-  if (query.unfound == PathWorkspace::kFoundRadiance) return query.contribution;
-  const PathWorkspace::UnfoundRadiance& unfound = ws.unfound_radiance[query.unfound];
-  const Color contribution =
-      clamped(query.contribution * unfound.environment->radiance_at(unfound.uv) * unfound.scale, unfound.clamp_limit);
-  if (!is_finite(contribution) || carries_no_light(contribution)) return std::nullopt;
-  return contribution;
-}
-
 }  // namespace
 
 void PathIntegrator::trace(const CameraBatch& batch, RayCounts& counts, Workspace& ws) const {
@@ -99,7 +86,7 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
     ws.next_paths.clear();
     ws.next_rays.clear();
     ws.shadow_queries.clear();
-    ws.unfound_radiance.clear();
+    ws.unfound_lights.clear();
     ws.shadow_rays.clear();
     ws.shadow_lights.clear();
     ws.medium_shadows.clear();
@@ -122,7 +109,8 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
       medium_shadow_transmittance(backend_, scene, ws.shadow_rays, ws.shadow_times, ws.medium_shadows,
                                   ws.shadow_transmittance);
       for (std::size_t i = 0; i < ws.shadow_queries.size(); ++i)
-        if (const std::optional<Color> contribution = found_contribution(ws.shadow_queries[i], ws))
+        if (const std::optional<Color> contribution =
+                found_contribution(ws.shadow_queries[i], ws, scene.render.path_sampling))
           batch.results[ws.shadow_queries[i].sample].radiance += *contribution * ws.shadow_transmittance[i];
     } else {
       ws.occluded.resize(ws.shadow_rays.size());
@@ -130,7 +118,8 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
                                    ws.occluded, RayCoherence::kIncoherent);
       for (std::size_t i = 0; i < ws.shadow_queries.size(); ++i)
         if (!ws.occluded[i])
-          if (const std::optional<Color> contribution = found_contribution(ws.shadow_queries[i], ws))
+          if (const std::optional<Color> contribution =
+                  found_contribution(ws.shadow_queries[i], ws, scene.render.path_sampling))
             batch.results[ws.shadow_queries[i].sample].radiance += *contribution;
     }
     // Summed in a local: a store to the counts in the loop would reload every path's field.

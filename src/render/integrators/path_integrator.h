@@ -75,20 +75,22 @@ class PathWorkspace {
       return next;
     }
   };
-  static constexpr std::uint32_t kFoundRadiance = 0xffffffffu;
+  static constexpr std::uint32_t kFound = 0xffffffffu;
   struct ShadowQuery {
     std::uint32_t sample;
     // Added when the shadow ray is unoccluded; β·f alone where `unfound` says the light's
-    // radiance is still to be found (found_contribution).
+    // radiance and pdf are still to be found (found_contribution).
     Color contribution;
-    std::uint32_t unfound = kFoundRadiance;  // else an index into unfound_radiance
+    std::uint32_t unfound = kFound;  // else an index into unfound_lights
   };
-  // An environment light sample's radiance left unfound until its shadow ray passes: the
-  // contribution is then clamped(β·f·Le·scale, clamp_limit), as for any light sample.
-  struct UnfoundRadiance {
+  // An environment light sample whose radiance and pdf are left unfound until its shadow ray
+  // passes: the contribution is then clamped(β·f·Le·(w_l/p_l), clamp_limit), as for any light
+  // sample, with p_l the direction's pdf times the pick's.
+  struct UnfoundLight {
     const EnvironmentLight* environment;
-    EnvironmentLight::ImageCoordinates uv;
-    float scale;        // w_l / p_l
+    Vec3 direction;
+    float pick_pmf;
+    float scatter_pdf;  // the BSDF's pdf of the direction, for w_l
     float clamp_limit;  // clamped()'s; infinite where nothing is clamped
   };
   // In a scene with media, where a shadow ray starts: its media, the seed of its ratio tracking,
@@ -106,7 +108,7 @@ class PathWorkspace {
   std::vector<SampleKey> path_keys;    // per path, its camera sample's key
   GenerationSamples samples;           // per path, the samples of the vertex its ray reaches
   std::vector<ShadowQuery> shadow_queries;
-  std::vector<UnfoundRadiance> unfound_radiance;
+  std::vector<UnfoundLight> unfound_lights;
   std::vector<Ray> shadow_rays;
   // Under light linking only: per shadow ray, the scene light it goes to, or kInvalidId.
   std::vector<std::uint32_t> shadow_lights;

@@ -150,12 +150,7 @@ template <bool kLightPathControls>
 std::optional<float> PathVertexStep<kLightPathControls>::light_sample_weight(const PathLightSample& ls,
                                                                              float scatter_pdf) const {
   if (ls.delta) return 1.0f;  // only light sampling finds a delta light
-  switch (scene_.render.path_sampling) {
-    case PathSampling::kMis: return power_heuristic(ls.pdf, scatter_pdf);
-    case PathSampling::kLight: return 1.0f;
-    case PathSampling::kBsdf: return std::nullopt;  // BSDF samples find it
-  }
-  return 1.0f;
+  return light_weight(scene_.render.path_sampling, ls.pdf, scatter_pdf);
 }
 
 // L += β·Le·w_b for the radiance Le emitted at `on_light` (of light `light`, kInvalidId for an
@@ -207,16 +202,19 @@ void PathVertexStep<kLightPathControls>::queue_light_sample(std::uint32_t sample
   const Vec3 wi = surface.frame.to_local(ls.direction);
   const Color f = eval_bsdf(surface.bsdf, wo, wi) * std::fabs(wi.z);
   if (carries_no_light(f)) return;
-  const std::optional<float> w_l = light_sample_weight(ls, ls.delta ? 0.0f : bsdf_pdf(surface.bsdf, wo, wi));
-  if (!w_l) return;
+  const float scatter_pdf = ls.delta ? 0.0f : bsdf_pdf(surface.bsdf, wo, wi);
   Color contribution;
   if (ls.environment) {
-    // β·f now, the rest once the shadow ray passes (found_contribution), in the same order.
+    // β·f now, the rest once the shadow ray passes (found_contribution), in the same order; its
+    // weight depends on its pdf only where BSDF samples do not find it alone.
+    if (scene_.render.path_sampling == PathSampling::kBsdf) return;  // BSDF samples alone find it
     contribution = beta * f;
     // clamped() leaves everything below an infinite limit as it is, as clamp() does unclamped.
     const float limit = kLightPathControls && clamping_ ? clamp_limit : std::numeric_limits<float>::infinity();
-    ws_.unfound_radiance.push_back({ls.environment, ls.environment_uv, *w_l / ls.pdf, limit});
+    ws_.unfound_lights.push_back({ls.environment, ls.direction, ls.pdf, scatter_pdf, limit});
   } else {
+    const std::optional<float> w_l = light_sample_weight(ls, scatter_pdf);
+    if (!w_l) return;
     contribution = clamp(beta * f * ls.radiance * (*w_l / ls.pdf), clamp_limit);
     if (!is_finite(contribution) || carries_no_light(contribution)) return;
   }
@@ -228,7 +226,24 @@ void PathVertexStep<kLightPathControls>::queue_light_sample(std::uint32_t sample
     ray.tfar = 1.0f - kShadowEpsilon;
   }
   queue_shadow(sample, contribution, ray, ls.light);
-  if (ls.environment) ws_.shadow_queries.back().unfound = static_cast<std::uint32_t>(ws_.unfound_radiance.size() - 1);
+  if (ls.environment) ws_.shadow_queries.back().unfound = static_cast<std::uint32_t>(ws_.unfound_lights.size() - 1);
+}
+
+std::optional<Color> found_contribution(const PathWorkspace::ShadowQuery& query, const PathWorkspace& ws,
+                                        PathSampling sampling) {
+  if (query.unfound == PathWorkspace::kFound) return query.contribution;
+  const PathWorkspace::UnfoundLight& light = ws.unfound_lights[query.unfound];
+  // EnvironmentLight::sample's pdf and radiance, then LightSet::sample's pick.
+  const EnvironmentLight::ImageCoordinates uv = light.environment->image_coordinates(light.direction);
+  float pdf = light.environment->pdf_at(uv);
+  if (!(pdf > 0.0f) || !std::isfinite(pdf)) return std::nullopt;
+  pdf *= light.pick_pmf;
+  const std::optional<float> w_l = light_weight(sampling, pdf, light.scatter_pdf);
+  if (!w_l) return std::nullopt;
+  const Color contribution =
+      clamped(query.contribution * light.environment->radiance_at(uv) * (*w_l / pdf), light.clamp_limit);
+  if (!is_finite(contribution) || carries_no_light(contribution)) return std::nullopt;
+  return contribution;
 }
 
 template <bool kLightPathControls>

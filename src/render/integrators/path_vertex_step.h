@@ -44,6 +44,18 @@ inline float power_heuristic(float a, float b) {
 // No channel positive (NaN counts as nothing).
 inline bool carries_no_light(const Color& c) { return !(c.x > 0.0f || c.y > 0.0f || c.z > 0.0f); }
 
+// w_l, the weight of a sample of a light with an extent, of pdf `light_pdf`, against the BSDF or
+// phase sampling of pdf `scatter_pdf` that could find the same direction; nothing when BSDF
+// sampling alone counts.
+inline std::optional<float> light_weight(PathSampling sampling, float light_pdf, float scatter_pdf) {
+  switch (sampling) {
+    case PathSampling::kMis: return power_heuristic(light_pdf, scatter_pdf);
+    case PathSampling::kLight: return 1.0f;
+    case PathSampling::kBsdf: return std::nullopt;  // BSDF samples find it
+  }
+  return 1.0f;
+}
+
 // Russian roulette (pbrt-v4's rule): where β·eta_scale, the throughput without the 1/η² by which
 // the path's refractions scaled radiance, is below 1 in its largest channel m, the path ends with
 // probability q = 1 − m and a survivor's β is divided by 1 − q; a path with m >= 1 goes on as it
@@ -68,6 +80,13 @@ inline Color clamped(const Color& contribution, float sum_limit) {
   const float sum = std::fabs(contribution.x) + std::fabs(contribution.y) + std::fabs(contribution.z);
   return sum > sum_limit ? contribution * (sum_limit / sum) : contribution;
 }
+
+// What a shadow query adds when its ray passes: its contribution, or, for an environment sample
+// whose radiance and pdf were left unfound, β·f·Le·w_l/p_l clamped, found now in the order
+// queue_light_sample computes it for other lights; nothing when that sample would have been none
+// (a direction of pdf 0) or carries nothing finite, as queue_light_sample queues no such sample.
+std::optional<Color> found_contribution(const PathWorkspace::ShadowQuery& query, const PathWorkspace& ws,
+                                        PathSampling sampling);
 
 class SpawnOrigins;  // render/surface/ray_offset.h
 

@@ -196,31 +196,30 @@ Color EnvironmentLight::radiance_at(ImageCoordinates uv) const {
 }
 
 std::optional<EnvironmentLight::Sample> EnvironmentLight::sample(Sample2D u) const {
-  const std::optional<DirectionSample> s = sample_direction(u);
-  if (!s) return std::nullopt;
-  return Sample{s->direction, radiance_at(s->uv), s->pdf};
+  const std::optional<Vec3> direction = sample_direction(u);
+  if (!direction) return std::nullopt;
+  // The pdf of the direction as pdf() finds it again, so both strategies see one number.
+  const ImageCoordinates uv = image_coordinates(*direction);
+  const float pdf = pdf_at(uv);
+  if (!(pdf > 0.0f) || !std::isfinite(pdf)) return std::nullopt;
+  return Sample{*direction, radiance_at(uv), pdf};
 }
 
-std::optional<EnvironmentLight::DirectionSample> EnvironmentLight::sample_direction(Sample2D u) const {
+std::optional<Vec3> EnvironmentLight::sample_direction(Sample2D u) const {
   if (!(mean_radiance_ > 0.0f)) return std::nullopt;
   if (width_ == 0) {
     // Uniform over the sphere.
     const float z = 1.0f - 2.0f * u.x;
     const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
     const float phi = 2.0f * kPi * u.y;
-    return DirectionSample{Vec3(r * std::cos(phi), z, r * std::sin(phi)), {0.0f, 0.0f}, 1.0f / (4.0f * kPi)};
+    return Vec3(r * std::cos(phi), z, r * std::sin(phi));
   }
   const Distribution2D::Sample s = distribution_.sample(u);
   const float theta = kPi * s.v, phi = 2.0f * kPi * (s.u - 0.5f);
   const float sin_theta = std::sin(theta);
   if (!(sin_theta > 0.0f) || !(s.pdf > 0.0f)) return std::nullopt;
   const Vec3 local(sin_theta * std::cos(phi), std::cos(theta), sin_theta * std::sin(phi));
-  const Vec3 direction = normalize(to_world_.apply_vector(local));
-  // The pdf of the direction as pdf() finds it again, so both strategies see one number.
-  const ImageCoordinates uv = image_coordinates(direction);
-  const float pdf = pdf_at(uv);
-  if (!(pdf > 0.0f) || !std::isfinite(pdf)) return std::nullopt;
-  return DirectionSample{direction, uv, pdf};
+  return normalize(to_world_.apply_vector(local));
 }
 
 float EnvironmentLight::pdf(const Vec3& direction) const { return pdf_at(image_coordinates(direction)); }

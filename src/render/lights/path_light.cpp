@@ -158,11 +158,10 @@ struct Sampler {
   }
   bool operator()(const EnvironmentRef& l) const {
     if (environment_radiance == EnvironmentRadiance::kLater) {
-      const std::optional<EnvironmentLight::DirectionSample> s = l.light->sample_direction(u);
-      if (!s) return false;
-      found(s->direction, kInfinity, Color(0.0f), s->pdf, false);
+      const std::optional<Vec3> direction = l.light->sample_direction(u);
+      if (!direction) return false;
+      found(*direction, kInfinity, Color(0.0f), 1.0f, false);  // the pick's pmf multiplies the 1
       out.environment = l.light;
-      out.environment_uv = s->uv;
       return true;
     }
     const std::optional<EnvironmentLight::Sample> s = l.light->sample(u);

@@ -59,16 +59,17 @@ struct PathLightSample {
   float pdf;            // solid angle, times the probability of picking the light; 1 for delta lights
   bool delta;           // point, spot and directional lights: no BSDF sample can reach them
   std::uint32_t light;  // which light of the set
-  // An environment sample taken with EnvironmentRadiance::kLater: the radiance is
-  // environment->radiance_at(environment_uv), to be found once the shadow ray passes. Null for
-  // every other sample.
+  // An environment sample taken with EnvironmentRadiance::kLater, its radiance and the pdf of its
+  // direction still to be found (environment->radiance(direction), ->pdf(direction)), once its
+  // shadow ray passes: `pdf` is then the pick's probability alone, and the sample may turn out
+  // to be none (a direction of pdf 0, which kNow would not have given). Null for every other
+  // sample.
   const EnvironmentLight* environment;
-  EnvironmentLight::ImageCoordinates environment_uv;
 };
 
-// Whether an environment sample reads its radiance from the image at once, or leaves it for the
-// caller (PathLightSample::environment): inside a room most environment samples' shadow rays are
-// stopped, and each lookup is a cache miss.
+// Whether an environment sample finds its radiance and pdf at once, or leaves them to the caller
+// (PathLightSample::environment): inside a room most environment samples' shadow rays are
+// stopped, and finding them is a cache miss or two, an atan2 and an acos.
 enum class EnvironmentRadiance : std::uint8_t { kNow, kLater };
 
 // A scene light as the path integrator reads it in a scene of light units `units`.
