@@ -3,6 +3,7 @@
 // scattered through a room (one-sided quads facing random ways, points, two-sided triangles).
 // The points are random in the room, so the walk takes different branches from call to call.
 #include "light_tree.h"
+#include "render/scattered_lights.h"
 
 #include <benchmark/benchmark.h>
 
@@ -45,21 +46,7 @@ std::vector<std::optional<LightBounds>> ceiling_light() {
 
 std::vector<std::optional<LightBounds>> scattered_lights(int count) {
   Uniforms u{7};
-  std::vector<std::optional<LightBounds>> lights;
-  for (int i = 0; i < count; ++i) {
-    const Vec3 center(20.0f * u.next() - 10.0f, 10.0f * u.next(), 20.0f * u.next() - 10.0f);
-    const float size = 0.05f + 0.5f * u.next();
-    BBox box;
-    box.extend(center - Vec3(size));
-    box.extend(center + Vec3(size));
-    const float power = std::pow(10.0f, 3.0f * u.next());
-    switch (i % 3) {
-      case 0: lights.push_back(LightBounds{box, Vec3(0, 0, 1), power, -1.0f, 0.0f, false}); break;
-      case 1: lights.push_back(LightBounds{box, u.next_direction(), power, 1.0f, 0.0f, false}); break;
-      case 2: lights.push_back(LightBounds{box, u.next_direction(), power, 1.0f, 0.0f, true}); break;
-    }
-  }
-  return lights;
+  return rtpro::test::scattered_lights(count, u, false);
 }
 
 std::vector<std::optional<LightBounds>> lights_for(std::int64_t count) {

@@ -4,6 +4,7 @@
 #include "light_tree.h"
 
 #include "bsdf_test_support.h"
+#include "scattered_lights.h"
 
 #include <gtest/gtest.h>
 
@@ -16,26 +17,10 @@ namespace light_tree_test {
 
 using test::Uniforms;
 
-// A scatter of small lights of every kind of bounds: points (a sphere of normals), one-sided
-// quads facing random ways, two-sided triangles; powers over three decades.
+// scattered_lights.h's lights, every fourth without a position.
 std::vector<std::optional<LightBounds>> scattered_lights(int count, std::uint64_t seed) {
   Uniforms u(seed);
-  std::vector<std::optional<LightBounds>> lights;
-  for (int i = 0; i < count; ++i) {
-    const Vec3 center(20.0f * u.next() - 10.0f, 10.0f * u.next(), 20.0f * u.next() - 10.0f);
-    const float size = 0.05f + 0.5f * u.next();
-    BBox box;
-    box.extend(center - Vec3(size));
-    box.extend(center + Vec3(size));
-    const float power = std::pow(10.0f, 3.0f * u.next());
-    switch (i % 4) {
-      case 0: lights.push_back(LightBounds{box, Vec3(0, 0, 1), power, -1.0f, 0.0f, false}); break;
-      case 1: lights.push_back(LightBounds{box, u.next_direction(), power, 1.0f, 0.0f, false}); break;
-      case 2: lights.push_back(LightBounds{box, u.next_direction(), power, 1.0f, 0.0f, true}); break;
-      case 3: lights.push_back(std::nullopt); break;  // a light without a position
-    }
-  }
-  return lights;
+  return test::scattered_lights(count, u, true);
 }
 
 // The pmf of every light, plus the chance that no light is picked (where every light of a
