@@ -98,7 +98,7 @@ void PathVertexStep<kLightPathControls>::extend(std::size_t vertex, const Path& 
   // Next-event estimation, where the BSDF is not purely specular; in a scene with media its
   // shadow ray starts in the medium on its side of the surface.
   if (!delta && !lights_.empty(group))
-    // Outside media a shadow ray is passed or stopped, so the environment's radiance waits for it.
+    // Outside media a shadow ray is passed or stopped: an environment sample's radiance and pdf wait.
     if (const PathLightSample* light = sample_light(
             vertex, sp.position, u, group, has_media_ ? EnvironmentRadiance::kNow : EnvironmentRadiance::kLater)) {
       const std::size_t queued = ws_.shadow_queries.size();

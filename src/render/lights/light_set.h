@@ -58,7 +58,7 @@ class LightSet {
   }
   // The same into `out` (its fields undefined when there is none), for the path integrator's loop.
   // Inline, the pick and a point light's sample with it: every path vertex asks.
-  // `environment`: whether an environment sample's radiance is found now or left to the caller.
+  // `environment`: whether an environment sample's radiance and pdf are found now or left to the caller.
   bool sample(const Vec3& point, float u_pick, Sample2D u, const TextureLookup* textures, std::uint32_t group,
               PathLightSample& out, EnvironmentRadiance environment = EnvironmentRadiance::kNow) const {
     LightPicker::Pick pick;
