@@ -71,14 +71,14 @@ void OpenedJournal::pass_merged(int, const ProgressiveFilm& film) {
   const bool catch_up = unrecorded_.value && std::chrono::steady_clock::now() >= record_from;
   if (!catch_up && journal->bytes() <= 2 * film.bytes()) return;
   unrecorded_.value = false;
-  journal->rewrite(film.journal_items());
+  journal->rewrite([&film](const auto& write) { film.visit_journal_items(write); });
 }
 
 void OpenedJournal::render_ended(const ProgressiveFilm& film, bool complete) {
   // A complete render's journal is removed; an interrupted one's is what --resume continues.
   if (complete || !unrecorded_.value) return;
   unrecorded_.value = false;
-  journal->rewrite(film.journal_items());
+  journal->rewrite([&film](const auto& write) { film.visit_journal_items(write); });
 }
 
 OpenedJournal open_render_journal(const std::filesystem::path& file, const JobIdentity& identity, const TileGrid& grid,

@@ -177,10 +177,12 @@ TileJournal::TileJournal(std::filesystem::path file, const JobIdentity& identity
                          std::span<const TileResult> kept)
     : file_(std::move(file)), channel_count_(channel_count), header_(header_bytes(identity)) {
   const std::lock_guard lock(mutex_);
-  write_new(kept);
+  write_new([kept](const std::function<void(const TileResult&)>& write) {
+    for (const TileResult& tile : kept) write(tile);
+  });
 }
 
-void TileJournal::write_new(std::span<const TileResult> kept) {
+void TileJournal::write_new(const Items& items) {
   std::filesystem::path temporary;
   // A file or link planted at a temporary name is skipped, never written through or removed.
   int descriptor = create_owned_temporary(folder_of(file_), temporary_prefix(file_), temporary);
@@ -195,10 +197,16 @@ void TileJournal::write_new(std::span<const TileResult> kept) {
   if (descriptor < 0) throw fail("create");
   std::size_t bytes = header_.size();
   if (!write_all(descriptor, header_.data(), header_.size())) throw fail("write");
-  for (const TileResult& tile : kept) {
+  int write_error = 0;  // errno of the failed write, kept past the items still handed over
+  items([&](const TileResult& tile) {
+    if (write_error != 0) return;
     const std::vector<std::byte> record = encode_tile(tile, channel_count_);
-    if (!write_all(descriptor, record.data(), record.size())) throw fail("write");
-    bytes += record.size();
+    if (write_all(descriptor, record.data(), record.size())) bytes += record.size();
+    else write_error = errno != 0 ? errno : EIO;
+  });
+  if (write_error != 0) {
+    errno = write_error;
+    throw fail("write");
   }
   // Only a journal is ever replaced: a FIFO, device or link put there meanwhile stays.
   try {
@@ -216,11 +224,11 @@ void TileJournal::write_new(std::span<const TileResult> kept) {
   remove_stale_temporaries(folder_of(file_), temporary_prefix(file_));
 }
 
-void TileJournal::rewrite(std::span<const TileResult> kept) {
+void TileJournal::rewrite(const Items& items) {
   const std::lock_guard lock(mutex_);
   if (descriptor_ < 0 || !error_.empty()) return;
   try {
-    write_new(kept);
+    write_new(items);
   } catch (const RuntimeError& error) {
     error_ = std::string(error.what()) + ": the journal keeps its records so far";
   }

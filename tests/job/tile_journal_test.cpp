@@ -84,6 +84,37 @@ TEST(TileJournal, AppendedTilesFromSeveralThreadsAreReadBack) {
   for (bool s : seen) EXPECT_TRUE(s);
 }
 
+// A rewrite takes its records one at a time, each handed over in the same refilled item (as
+// ProgressiveFilm::visit_journal_items does), and replaces every record appended before it; what
+// is appended after it follows the new records.
+TEST(TileJournal, RewriteReplacesTheRecordsWithItemsHandedOverOneAtATime) {
+  const TileGrid grid({0, 0, 40, 30}, 8);
+  const auto file = test::scratch_dir() / "out.exr.rtpro-journal";
+  {
+    TileJournal journal(file, identity_of("4"), kChannels, {});
+    for (std::size_t i = 0; i < 6; ++i) journal.append(tile_of(grid, i));
+    journal.rewrite([&](const auto& write) {
+      TileResult item;
+      for (const std::size_t index : {9u, 3u, 11u}) {
+        item = tile_of(grid, index);
+        write(item);
+      }
+    });
+    journal.append(tile_of(grid, 5));
+    EXPECT_EQ(journal.error(), "");
+    EXPECT_EQ(journal.bytes(), std::filesystem::file_size(file));
+  }
+  const JournalContents contents = read_journal(file, grid, kChannels);
+  EXPECT_EQ(contents.identity, identity_of("4"));
+  EXPECT_EQ(contents.dropped_records, 0u);
+  ASSERT_EQ(contents.tiles.size(), 4u);
+  const std::size_t expected[] = {9, 3, 11, 5};
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(contents.tiles[k].index, expected[k]);
+    EXPECT_EQ(contents.tiles[k].pixels, tile_of(grid, expected[k]).pixels);
+  }
+}
+
 TEST(TileJournal, TornTailAndCorruptRecordLoseOnlyTheirTiles) {
   const TileGrid grid({0, 0, 16, 16}, 8);
   const auto file = test::scratch_dir() / "j";

@@ -100,7 +100,8 @@ TEST(ProgressiveFilm, JournalItemsRebuildTheFilmExactly) {
   ProgressiveFilm partial(grid, layer_sums());
   for (std::size_t i = 0; i < 3 * tiles + 1; ++i) partial.add(TileResult(items[i]));
   ASSERT_EQ(partial.passes_merged(), 3);
-  const std::vector<TileResult> journal = partial.journal_items();
+  std::vector<TileResult> journal;
+  partial.visit_journal_items([&](const TileResult& item) { journal.push_back(item); });
   ASSERT_EQ(journal.size(), tiles + 1);
   for (std::size_t t = 0; t < tiles; ++t) EXPECT_TRUE(journal[t].cumulative);
   EXPECT_FALSE(journal.back().cumulative);

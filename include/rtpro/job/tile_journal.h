@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <span>
 #include <string>
@@ -54,9 +55,12 @@ class TileJournal {
   void append(const TileResult& tile);
   std::string error() const;
 
+  // The items of a journal's records, handed to `write` one at a time (ProgressiveFilm::
+  // visit_journal_items): a rewrite holds one record at a time, not a copy of the film.
+  using Items = std::function<void(const std::function<void(const TileResult&)>& write)>;
   // Replaces the journal (through a temporary file, as the constructor does) with one holding
-  // `kept`. A failure leaves the journal as it was and sets error().
-  void rewrite(std::span<const TileResult> kept);
+  // `items`. A failure leaves the journal as it was and sets error().
+  void rewrite(const Items& items);
   // Bytes in the journal: its header and records.
   std::size_t bytes() const;
 
@@ -67,7 +71,7 @@ class TileJournal {
 
  private:
   std::filesystem::path file_;
-  void write_new(std::span<const TileResult> kept);
+  void write_new(const Items& items);
 
   int channel_count_;
   std::vector<std::byte> header_;

@@ -45,8 +45,10 @@ class ProgressiveFilm {
 
   // Every tile's sums through the last merged pass, as cumulative items (before the first pass is
   // whole: the first pass's tiles that are in, as items of that pass), and the items waiting: all a
-  // resume journal has to keep.
-  std::vector<TileResult> journal_items() const;
+  // resume journal has to keep. Handed to `visit` one at a time, in one item refilled for each, so
+  // that writing a journal never holds a second copy of the film. Call it where no pass merges
+  // meanwhile: from on_pass_merged, or once the tiles are rendered.
+  void visit_journal_items(const std::function<void(const TileResult&)>& visit) const;
   // Bytes of the sums (a journal holding more than a few times this is worth compacting).
   std::size_t bytes() const { return pixels_.size() * sizeof(float); }
 

@@ -144,14 +144,15 @@ void ProgressiveFilm::resolve_with_partial_pass(const FilmLayout& layout, Image&
   }
 }
 
-std::vector<TileResult> ProgressiveFilm::journal_items() const {
-  std::lock_guard lock(mutex_);
-  std::vector<TileResult> items;
+void ProgressiveFilm::visit_journal_items(const std::function<void(const TileResult&)>& visit) const {
   const std::size_t tiles = grid_.tiles_per_pass();
+  TileResult item;
   // Through the last merged pass, or the first pass's tiles merged so far (as items of their own).
-  for (std::size_t tile = 0; tile < tiles; ++tile)
-    if (merged_ > 0 || first_pass_tiles_[tile] == kTileMerged) {
-      TileResult item;
+  // The lock is taken for each copy only: workers keep adding the next pass's items meanwhile.
+  for (std::size_t tile = 0; tile < tiles; ++tile) {
+    {
+      std::lock_guard lock(mutex_);
+      if (merged_ == 0 && first_pass_tiles_[tile] != kTileMerged) continue;
       item.index = merged_ > 0 ? static_cast<std::size_t>(merged_ - 1) * tiles + tile : tile;
       item.region = grid_.tile(tile);
       item.cumulative = merged_ > 0;
@@ -165,12 +166,27 @@ std::vector<TileResult> ProgressiveFilm::journal_items() const {
                   item.pixels.begin() +
                       static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y - item.region.y0) * row_floats));
       }
-      items.push_back(std::move(item));
     }
-  for (const auto& [pass, waiting] : waiting_)
-    for (const TileResult& item : waiting.items)
-      if (!item.pixels.empty()) items.push_back(item);
-  return items;
+    visit(item);
+  }
+  // A waiting pass leaves the map only when the merging thread merges it: the caller's, or none.
+  std::vector<int> passes;
+  {
+    std::lock_guard lock(mutex_);
+    for (const auto& entry : waiting_) passes.push_back(entry.first);
+  }
+  for (const int pass : passes)
+    for (std::size_t slot = 0; slot < tiles; ++slot) {
+      {
+        std::lock_guard lock(mutex_);
+        const auto waiting = waiting_.find(pass);
+        if (waiting == waiting_.end() || slot >= waiting->second.items.size() ||
+            waiting->second.items[slot].pixels.empty())
+          continue;
+        item = waiting->second.items[slot];
+      }
+      visit(item);
+    }
 }
 
 RayCounts ProgressiveFilm::rays() const {
