@@ -18,6 +18,11 @@ namespace {
 // and to amortise each generation's bookkeeping, small enough that a batch's rays, hits and
 // surfaces stay in the L2 cache.
 constexpr std::size_t kSamplesPerBatch = 1024;
+// A tile's pixels go in blocks of 4×4: at one or two samples a pixel, the 32 camera rays Embree
+// traces as one coherent stream then cover 8×4 or 4×4 pixels, and its packets of eight 4×2, where
+// rows of a 32-pixel tile gave it 32×1 strips (the dragon's 1-spp frame: 77.8 → 67 ms). Each ray's
+// answer is the ray's alone, so the order changes no image.
+constexpr int kBlockSide = 4;
 
 }  // namespace
 
@@ -202,11 +207,14 @@ TileResult TileRenderer::render(std::size_t index, const PixelRegion& tile, Work
   const SampleRange range = schedule_.pass(grid_.pass(index));
   ws.pixels.clear();
   const PixelRegion& region = grid_.region();
-  for (int y = tile.y0; y < tile.y1; ++y)
-    for (int x = tile.x0; x < tile.x1; ++x)
-      if (!active_ || (*active_)[static_cast<std::size_t>(y - region.y0) * static_cast<std::size_t>(region.width()) +
-                                 static_cast<std::size_t>(x - region.x0)])
-        ws.pixels.push_back(static_cast<std::uint32_t>((y - tile.y0) * tile.width() + (x - tile.x0)));
+  for (int by = tile.y0; by < tile.y1; by += kBlockSide)
+    for (int bx = tile.x0; bx < tile.x1; bx += kBlockSide)
+      for (int y = by; y < std::min(by + kBlockSide, tile.y1); ++y)
+        for (int x = bx; x < std::min(bx + kBlockSide, tile.x1); ++x)
+          if (!active_ ||
+              (*active_)[static_cast<std::size_t>(y - region.y0) * static_cast<std::size_t>(region.width()) +
+                         static_cast<std::size_t>(x - region.x0)])
+            ws.pixels.push_back(static_cast<std::uint32_t>((y - tile.y0) * tile.width() + (x - tile.x0)));
   // Whole pixels per batch, about kSamplesPerBatch samples.
   const std::size_t pixels_per_batch =
       std::max<std::size_t>(1, kSamplesPerBatch / static_cast<std::size_t>(range.count()));
