@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace rtpro {
 
@@ -88,6 +89,9 @@ class StratifiedSampler {
   StrataGrid grid_;
   float inv_columns_, inv_rows_;
   std::uint64_t seed_;
+  // mix64(s) of each sample index s: hash_combine(bits, s) is mix64(bits ^ sample_mixes_[s]), one
+  // mix of a pixel's two a sample fewer (pixel_offsets' hashes were 4% of a 1-spp frame).
+  std::vector<std::uint64_t> sample_mixes_;
 };
 
 // Element `index` of a pseudo-random permutation of [0, count) chosen by `key` (Kensler's

@@ -54,6 +54,8 @@ StratifiedSampler::StratifiedSampler(int spp, std::uint64_t seed) : grid_(strata
   if (spp <= 0) throw InputError("samples per pixel must be at least 1, got " + std::to_string(spp));
   inv_columns_ = 1.0f / static_cast<float>(grid_.columns);
   inv_rows_ = 1.0f / static_cast<float>(grid_.rows);
+  sample_mixes_.resize(static_cast<std::size_t>(spp));
+  for (int s = 0; s < spp; ++s) sample_mixes_[static_cast<std::size_t>(s)] = mix64(static_cast<std::uint64_t>(s));
 }
 
 std::uint64_t StratifiedSampler::sample_bits(std::uint64_t pixel_key, int sample_index) const {
@@ -77,7 +79,7 @@ void StratifiedSampler::pixel_offsets(std::uint64_t pixel_key, PixelOffset* out)
   for (int sy = 0; sy < grid_.rows; ++sy)
     for (int sx = 0; sx < grid_.columns; ++sx, ++sample_index) {
       out[sample_index] =
-          jittered_in_stratum(hash_combine(pixel_bits, static_cast<std::uint64_t>(sample_index)), sx, sy);
+          jittered_in_stratum(mix64(pixel_bits ^ sample_mixes_[static_cast<std::size_t>(sample_index)]), sx, sy);
     }
 }
 
