@@ -52,9 +52,10 @@ cycles() {  # NAME SPP THREADS LOG: $out/NAME.exr
 echo "long Cycles reference: $pixels, $ref_spp spp ..." >&2
 RTPRO_CYCLES_SEED=1 cycles reference "$ref_spp" 2 "$out/reference.log"
 for t in $threads; do
+  pin_for "$t"  # one-thread runs of both on one CPU
   for r in $(seq "$runs"); do
     cycles "cycles-t$t-r$r" "$spp" "$t" "$out/cycles-t$t-r$r.log"
-    /usr/bin/time -f "%e" -o "$out/rtpro-t$t-r$r.seconds" "$build/rtpro" render "$scene_file" \
+    /usr/bin/time -f "%e" -o "$out/rtpro-t$t-r$r.seconds" "${pin[@]}" "$build/rtpro" render "$scene_file" \
       -o "$out/rtpro-t$t-r$r.exr" --size "$pixels" --spp "$spp" --max-depth "$max_depth" --threads "$t" \
       "${rtpro_motion[@]}" "${rtpro_options[@]}" --quiet --no-journal --stats-json "$out/rtpro-t$t-r$r.json"
   done

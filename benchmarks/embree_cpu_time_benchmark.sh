@@ -41,14 +41,15 @@ cpu_seconds() {
   awk '{print $1 + $2}' "$log.time"
 }
 
+pin_for 1  # every run on one CPU: the CPU time a process is charged depends on the core too
 for r in $(seq "$runs"); do
   for n in $lo $hi; do
-    (cd "$(dirname "$ecs")" && cpu_seconds "$out/peer-$n-r$r.log" pathtracer -c "$ecs" --size "$size" "$size" \
+    (cd "$(dirname "$ecs")" && cpu_seconds "$out/peer-$n-r$r.log" "${pin[@]}" pathtracer -c "$ecs" --size "$size" "$size" \
       --spp 1 --max-path-length 8 --threads 1 "${isa[@]}" --benchmark 0 "$n") >"$out/peer-$n-r$r.cpu"
     for config in $configs; do
       flags=(--backend "${config%%-*}")
       [[ $config != *-not-robust ]] || flags+=(--no-embree-robust)
-      cpu_seconds "$out/$config-$n-r$r.log" "$build/rtpro" render "$yaml" -o "$out/rtpro.exr" --size "${size}x$size" \
+      cpu_seconds "$out/$config-$n-r$r.log" "${pin[@]}" "$build/rtpro" render "$yaml" -o "$out/rtpro.exr" --size "${size}x$size" \
         --spp "$n" --max-depth 8 --threads 1 "${flags[@]}" --quiet --no-journal \
         --stats-json "$out/$config-$n-r$r.json" >"$out/$config-$n-r$r.cpu"
     done

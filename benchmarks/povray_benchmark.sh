@@ -6,6 +6,7 @@
 # the runs are interleaved (povray, rtpro embree, rtpro native, N times) and timed as whole
 # processes; the table gives medians, min-max, POV time / rtpro time, and rays by kind per second
 # of render (rtpro: --stats-json over seconds.render; POV-Ray: its own statistics over Trace Time).
+# One-thread runs share one CPU (pin_for, release_tree.sh).
 # Usage: benchmarks/povray_benchmark.sh [--runs N] [--threads "1 2"]
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
@@ -25,12 +26,13 @@ for entry in "${scenes[@]}"; do
   cmp -s "$out/$name.pov" "$root/benchmarks/povray/$name.pov" ||
     echo "warning: benchmarks/povray/$name.pov is not the translation of $yaml; regenerate it with scripts/yaml_to_pov.py" >&2
   for t in $threads; do
+    pin_for "$t"
     for r in $(seq "$runs"); do
       (cd "$out" && /usr/bin/time -f "%e %U %S %M" -o "$out/$name-povray-t$t-r$r.time" \
-        povray "$root/benchmarks/povray/$name.ini" +I"$root/benchmarks/povray/$name.pov" +O"$name-povray.exr" \
+        "${pin[@]}" povray "$root/benchmarks/povray/$name.ini" +I"$root/benchmarks/povray/$name.pov" +O"$name-povray.exr" \
         +WT"$t" -V >"$out/$name-povray-t$t-r$r.log" 2>&1) || echo "povray failed on $name, see $out" >&2
       for backend in embree native; do
-        /usr/bin/time -f "%e %U %S %M" -o "$out/$name-$backend-t$t-r$r.time" "$build/rtpro" render "$root/$yaml" \
+        /usr/bin/time -f "%e %U %S %M" -o "$out/$name-$backend-t$t-r$r.time" "${pin[@]}" "$build/rtpro" render "$root/$yaml" \
           -o "$out/$name-$backend.exr" --size "$size" --spp "$spp" --max-depth "$depth" --backend "$backend" \
           --threads "$t" --quiet --stats-json "$out/$name-$backend-t$t-r$r.json" || echo "rtpro $backend failed on $name" >&2
       done

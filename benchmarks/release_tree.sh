@@ -1,6 +1,6 @@
 # Sourced by the benchmark scripts: the Release tree they measure (RTPRO_BUILD_DIR, else
-# build-release/ beside the sources). Sets root and build, and defines build_release and
-# compare_each.
+# build-release/ beside the sources). Sets root and build, and defines build_release,
+# compare_each and pin_for.
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${RTPRO_BUILD_DIR:-$root/build-release}
 
@@ -22,4 +22,17 @@ compare_each() {
   for image in "$@"; do
     "$build/rtpro" compare "$reference" "$image" --json >"${image%.exr}.compare.json" || true
   done
+}
+
+# pin_for THREADS: sets `pin` to the prefix of a command run with THREADS threads: for one thread,
+# taskset onto one CPU (RTPRO_BENCH_CPU, default 0; "none" leaves it to the scheduler), for more,
+# nothing. Both peers of a one-thread comparison then run on the same core: the shared VMs' two
+# vCPUs differ in speed by up to 30% as their hosts' load moves (Embree's pathtracer on its Cornell
+# box 8.9-9.2 Mrays/s on one, 7.0-9.0 on the other, interleaved), which unpinned runs turn into
+# noise in every ratio.
+pin=()
+pin_for() {
+  local cpu=${RTPRO_BENCH_CPU:-0}
+  pin=()
+  if [ "$1" = 1 ] && [ "$cpu" != none ] && command -v taskset >/dev/null; then pin=(taskset -c "$cpu"); fi
 }

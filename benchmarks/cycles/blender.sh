@@ -3,11 +3,11 @@
 command -v blender >/dev/null || { echo "blender not found: apt-get install blender (Debian package, 3.4)" >&2; exit 2; }
 
 # run_blender SCRIPT LOG ARG...: Blender runs benchmarks/cycles/SCRIPT with the ARGs, from $out,
-# its output in LOG.
+# its output in LOG; with the prefix in `pin` (pin_for, release_tree.sh), when it is set.
 run_blender() {
   local script=$1 log=$2
   shift 2
-  (cd "$out" && blender -b --factory-startup --python "$root/benchmarks/cycles/$script" -- "$@" >"$log" 2>&1) ||
+  (cd "$out" && "${pin[@]}" blender -b --factory-startup --python "$root/benchmarks/cycles/$script" -- "$@" >"$log" 2>&1) ||
     { echo "blender failed, see $log" >&2; exit 1; }
 }
 
