@@ -3,8 +3,8 @@
 # writes an image. See include/rtpro/image/image_layer.h.
 #
 #   rtpro_image_common   output checks, pixel encodings, OpenColorIO colour configs, the EXR
-#                        writer (OpenEXR, libdeflate) and the PNG writer (libpng): no OpenImageIO (the
-#                        output check uses a list generated from it at build time)
+#                        writer and reader (OpenEXR, libdeflate) and the PNG writer (libpng): no
+#                        OpenImageIO (the output check uses a list generated from it at build time)
 #   rtpro_image          the whole module, calling OpenImageIO directly: what tests link
 #   rtpro_image_oiio     librtpro_image_oiio.so, rtpro_image as a plugin beside the executable
 #   rtpro_image_loader   the executable's stand-in for rtpro_image: loads the plugin and forwards
@@ -27,8 +27,8 @@ add_custom_command(
   COMMENT "Listing the output formats OpenImageIO can write")
 
 set(image_common_sources atomic_file_replacement.cpp color_config.cpp direct_output.cpp display_encoding.cpp
-                         exr_output.cpp exr_zip_block.cpp image_metadata.cpp output_check.cpp pixel_encoding.cpp
-                         png_output.cpp)
+                         exr_input.cpp exr_output.cpp exr_zip_block.cpp image_file_check.cpp
+                         image_header_check.cpp image_metadata.cpp output_check.cpp pixel_encoding.cpp png_output.cpp)
 set(image_loader_sources image_layer.cpp)
 set(image_plugin_sources image_plugin.cpp)
 set(image_tool_sources generate_oiio_output_formats.cpp)

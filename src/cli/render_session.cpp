@@ -56,14 +56,16 @@ void RenderSession::check_passes() const {
 
 // OpenImageIO takes 0.15–0.5 s to load: do it while the BVH builds and the scene renders. Not
 // earlier: its hundreds of mmap calls slow the page faults of a large scene file's parse. EXR
-// and PNG are written without it; image textures need it before the render starts, every rank's.
+// and PNG are written without it, an EXR environment read without it; image textures need it
+// before the render starts, every rank's.
 void RenderSession::start_workers() {
   start_tbb_workers(request_.threads);
   // Rank 0 of a job creates its render thread first: a thread created while a dlopen runs waits
   // for it (prestarted_thread.h). The other ranks write no image.
   if (job_ && request_.leader) render_thread_.emplace();
   const RenderScene& scene = loaded_.scene;
-  const bool reads_images = !scene.textures.empty() || (scene.environment && !scene.environment->file.empty());
+  const bool reads_images = !scene.textures.empty() || (scene.environment && !scene.environment->file.empty() &&
+                                                        reading_needs_image_layer(scene.environment->file));
   if ((request_.leader && writing_needs_image_layer(request_.output.file())) || reads_images)
     start_loading_image_layer();
 }

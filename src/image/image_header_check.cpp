@@ -1,5 +1,6 @@
 #include "image_header_check.h"
 
+#include "image_file_check.h"
 #include "rtpro/core/error.h"
 
 #include <algorithm>
@@ -385,6 +386,13 @@ std::optional<DeclaredImageSize> check_image_header(const std::filesystem::path&
         std::isspace(static_cast<unsigned char>(head[2])) && head.find('#') == std::string::npos)
       check_raw_pnm(head, size, where);
   }
+  return std::nullopt;
+}
+
+std::optional<ImageSize> image_size_from_header(const std::filesystem::path& file) {
+  require_image_file(file);
+  if (const auto declared = check_image_header(file))
+    return ImageSize{declared->width, declared->height, declared->channels};
   return std::nullopt;
 }
 

@@ -13,6 +13,8 @@
 // read; OpenImageIO's GIF reader allocates a canvas of the declared screen size, its BMP reader
 // decodes a run-length-encoded image whole at open. The declared size is returned so that the read
 // budget applies before opening.
+#include "rtpro/image/image_size.h"
+
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -34,5 +36,9 @@ struct DeclaredImageSize {
 // frames (as RGBA), a BMP's declared size (as RGBA), a PNG's IHDR size (palette images as RGBA),
 // nothing for other formats.
 std::optional<DeclaredImageSize> check_image_header(const std::filesystem::path& file);
+
+// read_image_size's answer where check_image_header gives one, after require_image_file (both
+// throw InputError naming the file): without OpenImageIO. Nothing for the other formats.
+std::optional<ImageSize> image_size_from_header(const std::filesystem::path& file);
 
 }  // namespace rtpro

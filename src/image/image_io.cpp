@@ -4,6 +4,7 @@
 
 #include "display_encoding.h"
 #include "direct_output.h"
+#include "exr_input.h"
 #include "image_metadata.h"
 #include "pixel_encoding.h"
 #include "image_format_sniff.h"
@@ -274,6 +275,7 @@ void write_image(const std::filesystem::path& file, const Image& image, const Im
 }
 
 Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
+  if (std::optional<Image> image = read_exr_without_openimageio(file, max_bytes)) return std::move(*image);
   return read_image_counting(file, max_bytes, 0, "");
 }
 

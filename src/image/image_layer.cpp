@@ -1,10 +1,12 @@
 // The executable's side of the image layer (see rtpro/image/image_layer.h): finds and loads
 // librtpro_image_oiio.so once, on a background thread or on first use, and forwards the
 // OpenImageIO-backed calls of image_io.h, image_size.h, image_compare.h and diff_image.h to it. EXR and PNG
-// files are written here without it (direct_output.h).
+// files are written here without it (direct_output.h), and plain RGB(A) EXR files read (exr_input.h).
 #include "rtpro/image/image_layer.h"
 
 #include "direct_output.h"
+#include "exr_input.h"
+#include "image_header_check.h"
 #include "image_layer_api.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/plugin_file.h"
@@ -17,6 +19,7 @@
 #include <fstream>
 #include <future>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -100,15 +103,21 @@ bool image_layer_loading() { return load_state().in_flight; }
 
 bool writing_needs_image_layer(const std::filesystem::path& file) { return !written_without_openimageio(file); }
 
+bool reading_needs_image_layer(const std::filesystem::path& file) { return !has_exr_signature(file); }
+
 void write_image(const std::filesystem::path& file, const Image& image, const ImageWriteOptions& options) {
   if (!write_without_openimageio(file, image, options)) image_layer().write_image(file, image, options);
 }
 
 Image read_image(const std::filesystem::path& file, std::uint64_t max_bytes) {
+  if (std::optional<Image> image = read_exr_without_openimageio(file, max_bytes)) return std::move(*image);
   return image_layer().read_image(file, max_bytes);
 }
 
-ImageSize read_image_size(const std::filesystem::path& file) { return image_layer().read_image_size(file); }
+ImageSize read_image_size(const std::filesystem::path& file) {
+  if (const std::optional<ImageSize> size = image_size_from_header(file)) return *size;
+  return image_layer().read_image_size(file);
+}
 
 ImageComparison compare_images(const Image& reference, const Image& test, const CompareThresholds& thresholds) {
   return image_layer().compare_images(reference, test, thresholds);

@@ -8,6 +8,8 @@ namespace rtpro {
 
 bool writing_needs_image_layer(const std::filesystem::path&) { return false; }
 
+bool reading_needs_image_layer(const std::filesystem::path&) { return false; }
+
 void start_loading_image_layer() {}
 
 bool image_layer_loading() { return false; }

@@ -13,11 +13,10 @@
 namespace rtpro {
 
 ImageSize read_image_size(const std::filesystem::path& file) {
-  require_image_file(file);
-  const SourceLocation where{file.string()};
   // Formats whose library allocates from the declared size when a file is opened (image_header_check.h)
   // are answered from rtpro's own reading of the header, without opening them.
-  if (const auto declared = check_image_header(file)) return {declared->width, declared->height, declared->channels};
+  if (const std::optional<ImageSize> size = image_size_from_header(file)) return *size;
+  const SourceLocation where{file.string()};
   const std::string reader = image_reader_name(file);
   if (reader.empty())
     throw InputError(where, "cannot tell what kind of image this is: it has no extension and no signature rtpro knows");

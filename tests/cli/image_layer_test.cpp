@@ -41,6 +41,10 @@ TEST(ImageLayer, OnlyReadingOrWritingAnImageLoadsOpenImageIo) {
   EXPECT_FALSE(loads_openimageio("render -q " + scene.string() + " -o " + (folder / "x.png").string(), 0));
   // The control: the same check sees the load when an image is written through OpenImageIO.
   EXPECT_TRUE(loads_openimageio("render -q " + scene.string() + " -o " + (folder / "x.tif").string(), 0));
+  // An EXR environment is read through OpenEXR alone.
+  const auto lit =
+      test::write_file("lit.yaml", kTinyScene + "environment: {file: " + (folder / "x.exr").string() + "}\n");
+  EXPECT_FALSE(loads_openimageio("render -q " + lit.string() + " -o " + (folder / "lit.exr").string(), 0));
 }
 
 // The render starts loading the image layer in the background before it reads the scene; an error
@@ -67,9 +71,18 @@ TEST(ImageLayer, WithoutThePluginImagesFailWithAClearErrorAndEverythingElseWorks
     EXPECT_EQ(run_command(lonely.string() + " render -q " + scene.string() + " -o " + image.string(), &out), 0) << out;
     EXPECT_TRUE(std::filesystem::exists(image));
   }
-  EXPECT_EQ(run_command(lonely.string() + " compare " + (folder / "a.exr").string() + " " + (folder / "b.exr").string(),
-                        &out),
-            1);
+  // An EXR of R, G, B is read through OpenEXR too: an HDRI environment needs no plugin, and a
+  // comparison fails only where it compares.
+  const auto lit =
+      test::write_file("lit.yaml", kTinyScene + "environment: {file: " + (folder / "x.exr").string() + "}\n");
+  EXPECT_EQ(run_command(lonely.string() + " render -q " + lit.string() + " -o " + (folder / "lit.exr").string(), &out),
+            0)
+      << out;
+  EXPECT_TRUE(std::filesystem::exists(folder / "lit.exr"));
+  EXPECT_EQ(
+      run_command(lonely.string() + " compare " + (folder / "x.exr").string() + " " + (folder / "lit.exr").string(),
+                  &out),
+      1);
   EXPECT_NE(out.find("librtpro_image_oiio.so"), std::string::npos) << out;
 }
 
