@@ -28,7 +28,7 @@ add_custom_command(
 
 set(image_common_sources atomic_file_replacement.cpp color_config.cpp direct_output.cpp display_encoding.cpp
                          exr_input.cpp exr_output.cpp exr_zip_block.cpp image_file_check.cpp
-                         image_header_check.cpp image_metadata.cpp output_check.cpp pixel_encoding.cpp png_output.cpp)
+                         image_header_check.cpp image_metadata.cpp image_read_limits.cpp output_check.cpp pixel_encoding.cpp png_output.cpp)
 set(image_loader_sources image_layer.cpp)
 set(image_plugin_sources image_plugin.cpp)
 set(image_tool_sources generate_oiio_output_formats.cpp)

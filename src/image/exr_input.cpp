@@ -2,6 +2,7 @@
 
 #include "image_file_check.h"
 #include "image_header_check.h"
+#include "image_read_limits.h"
 #include "rtpro/core/memory_budget.h"
 
 #include <OpenEXR/ImfChannelList.h>
@@ -23,9 +24,6 @@ namespace rtpro {
 namespace {
 
 constexpr std::array<char, 4> kOpenExrMagic = {0x76, 0x2f, 0x31, 0x01};
-// image_io.cpp's limits: 4 GiB of floats at most, and a band of 256 rows OpenEXR may buffer.
-constexpr std::uint64_t kMaxReadValues = std::uint64_t{1} << 30;
-constexpr std::uint64_t kLibraryRows = 256;
 
 // The channels in OpenImageIO's order when the file holds exactly R, G, B (and A), each half or
 // float at full resolution; nothing otherwise.
@@ -56,14 +54,9 @@ std::optional<Image> read_exr_without_openimageio(const std::filesystem::path& f
   const std::optional<DeclaredImageSize> declared = check_image_header(file);
   if (!declared) return std::nullopt;
   if (max_bytes == 0) max_bytes = default_memory_budget();
-  // Only what OpenImageIO's path accepts (image_io.cpp's refusal, from the same header figures);
-  // the rest is left to it, which explains the refusal.
-  const std::uint64_t pixels = saturating_multiply(declared->width, declared->height);
-  const std::uint64_t read_pixels =
-      std::max({pixels, saturating_multiply(declared->width, kLibraryRows),
-                saturating_multiply(saturating_multiply(declared->tile_width, declared->tile_height), 2)});
-  if (pixels == 0 || pixels > kMaxReadValues || saturating_multiply(pixels, declared->channels) > kMaxReadValues ||
-      saturating_multiply(saturating_multiply(read_pixels, declared->channels), sizeof(float)) > max_bytes)
+  // Only what OpenImageIO's path accepts; it explains a refusal.
+  if (!image_read_allowed(declared->width, declared->height, declared->channels,
+                          saturating_multiply(declared->tile_width, declared->tile_height), 0, max_bytes))
     return std::nullopt;
   try {
     Imf::InputFile input(file.c_str());

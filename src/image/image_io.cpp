@@ -11,6 +11,7 @@
 #include "image_file_check.h"
 #include "image_header_check.h"
 #include "image_read_budget.h"
+#include "image_read_limits.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
 
@@ -28,8 +29,6 @@
 namespace rtpro {
 
 namespace {
-
-constexpr std::size_t kMaxReadValues = std::size_t{1} << 30;  // 4 GiB of floats: a 16k x 16k RGBA image
 
 using PixelBuffer = std::variant<std::vector<float>, std::vector<std::uint8_t>, std::vector<std::uint16_t>>;
 
@@ -293,26 +292,15 @@ Image read_image_counting(const std::filesystem::path& file, std::uint64_t max_b
   // again from the opened spec.
   const auto refuse_if_too_large = [&](std::uint64_t width, std::uint64_t height, std::uint64_t channels,
                                        std::uint64_t tile_pixels = 0) {
-    // Each factor is at most 2^32, so the product of the first two cannot overflow 64 bits.
-    const std::uint64_t pixels = width * height;
-    // OpenImageIO reads up to 256 scanlines at once into a buffer of its own, whatever the image's
-    // height: a 2-row image 681553 pixels wide made it allocate 3.5 GB (a fuzz finding). The
-    // estimate counts the larger of the image and that buffer.
-    constexpr std::uint64_t kLibraryRows = 256;
-    // A tiled file costs its tile buffers too (a tile and its compressor's, counted as two).
-    const std::uint64_t read_pixels =
-        std::max({pixels, saturating_multiply(width, kLibraryRows), saturating_multiply(tile_pixels, 2)});
-    const std::uint64_t bytes =
-        saturating_add(saturating_multiply(saturating_multiply(read_pixels, channels), sizeof(float)),
-                       saturating_multiply(pixels, extra_bytes_per_pixel));
-    if (pixels > kMaxReadValues || saturating_multiply(pixels, channels) > kMaxReadValues || bytes > max_bytes)
-      throw InputError(
-          where, "the image is too large to read: " + std::to_string(width) + "x" + std::to_string(height) + ", " +
-                     std::to_string(channels) + " channels" +
-                     (tile_pixels > pixels ? " in tiles of " + std::to_string(tile_pixels) + " pixels" : "") + " is " +
-                     format_bytes(bytes) + " as floats" +
-                     (extra_bytes_per_pixel ? " " + extra_purpose : std::string()) + "; the limit is " +
-                     format_bytes(max_bytes) + budget);
+    if (image_read_allowed(width, height, channels, tile_pixels, extra_bytes_per_pixel, max_bytes)) return;
+    throw InputError(
+        where, "the image is too large to read: " + std::to_string(width) + "x" + std::to_string(height) + ", " +
+                   std::to_string(channels) + " channels" +
+                   (tile_pixels > width * height ? " in tiles of " + std::to_string(tile_pixels) + " pixels" : "") +
+                   " is " +
+                   format_bytes(image_read_bytes(width, height, channels, tile_pixels, extra_bytes_per_pixel)) +
+                   " as floats" + (extra_bytes_per_pixel ? " " + extra_purpose : std::string()) + "; the limit is " +
+                   format_bytes(max_bytes) + budget);
   };
   if (const auto declared = check_image_header(file))
     refuse_if_too_large(declared->width, declared->height, declared->channels,
