@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
 #include <exception>
 #include <fstream>
 #include <string>
@@ -85,7 +84,7 @@ std::optional<Image> read_exr_without_openimageio(const std::filesystem::path& f
                                                     sizeof(float) * row_values));
     input.setFrameBuffer(frame);
     const int band_rows = static_cast<int>(
-        std::min<std::size_t>(std::max<std::size_t>((std::size_t{1} << 20) / row_values, 64), image.height));
+        std::min<std::size_t>(image_read_band_rows(row_values), static_cast<std::size_t>(image.height)));
     for (int y = 0; y < image.height; y += band_rows) {
       const int end = std::min(y + band_rows, image.height);
       image.data.resize(row_values * static_cast<std::size_t>(end));

@@ -337,13 +337,9 @@ Image read_image_counting(const std::filesystem::path& file, std::uint64_t max_b
     image.channels = spec.channelnames;
     const std::size_t row_values = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.nchannels);
     image.data.reserve(row_values * static_cast<std::size_t>(spec.height));
-    // Bands of at least 64 rows and about a million values: each read costs the library a call of
-    // its own, so a narrow image must not take one call per 64 rows (a 5x32864 TIFF took 514 calls and
-    // 53 s under ASan, a fuzz finding).
-    constexpr std::size_t kBandValues = std::size_t{1} << 20;
     // A tiled image is read one row of tiles at a time.
     const bool tiled = spec.tile_width > 0;
-    const std::size_t wanted_rows = std::max<std::size_t>(kBandValues / row_values, 64);
+    const std::size_t wanted_rows = image_read_band_rows(row_values);
     const int band_rows = static_cast<int>(
         std::min<std::size_t>(tiled ? static_cast<std::size_t>(std::max(spec.tile_height, 1)) : wanted_rows,
                               static_cast<std::size_t>(spec.height)));

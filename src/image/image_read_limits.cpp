@@ -29,4 +29,9 @@ bool image_read_allowed(std::uint64_t width, std::uint64_t height, std::uint64_t
          image_read_bytes(width, height, channels, tile_pixels, extra_bytes_per_pixel) <= max_bytes;
 }
 
+std::size_t image_read_band_rows(std::size_t row_values) {
+  constexpr std::size_t kBandValues = std::size_t{1} << 20;
+  return std::max<std::size_t>(kBandValues / std::max<std::size_t>(row_values, 1), 64);
+}
+
 }  // namespace rtpro
