@@ -70,16 +70,15 @@ TileRenderer::TileRenderer(const RenderScene& scene, const Backend& backend, con
 
 TileRenderer::~TileRenderer() = default;
 
-// The listed pixels of the tile (indices into it, row-major), samples `range` of each.
+// The listed pixels of a tile, samples `range` of each.
 RTPRO_AVX2_CLONES
-void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, const std::uint32_t* pixels,
-                                 std::size_t pixel_count, TileResult& out, Workspace& ws) const {
+void TileRenderer::render_pixels(SampleRange range, const Workspace::TilePixel* pixels, std::size_t pixel_count,
+                                 TileResult& out, Workspace& ws) const {
   const StratifiedSampler& sampler = integration_->samplers.stratified();
   const SobolSampler& sobol = integration_->samplers.sobol();
   const int spp = sampler.samples_per_pixel();
   const int per_pixel = range.count();
   const auto image_width = static_cast<std::uint64_t>(scene_.camera.width);
-  const auto tile_width = static_cast<std::size_t>(tile.width());
   const RenderCamera& camera = scene_.camera;
   const bool lensless = camera.lens_radius == 0.0f;
   const bool pinhole = lensless && !camera.orthographic && !camera.moving();
@@ -89,14 +88,12 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
   ws.pixel_offsets.resize(static_cast<std::size_t>(spp));
   PixelOffset* offsets = ws.pixel_offsets.data();
   const auto key_of_pixel = [&](std::size_t i) {
-    const std::size_t p = pixels[i];
-    return static_cast<std::uint64_t>(tile.y0 + static_cast<int>(p / tile_width)) * image_width +
-           static_cast<std::uint64_t>(tile.x0 + static_cast<int>(p % tile_width));
+    return static_cast<std::uint64_t>(pixels[i].y) * image_width + static_cast<std::uint64_t>(pixels[i].x);
   };
   std::size_t key = 0;
   for (std::size_t i = 0; i < pixel_count; ++i) {
-    // Out of the loop by hand: the keys' int stores may alias the pixel indices (int and unsigned
-    // may alias), so the compiler would load and divide again for every sample.
+    // Out of the loop by hand: the keys' int stores may alias the pixel coordinates, so the
+    // compiler would load them again for every sample.
     const std::uint64_t pixel_key = key_of_pixel(i);
     for (int s = range.begin; s < range.end; ++s) ws.sample_keys[key++] = {pixel_key, s};
   }
@@ -136,9 +133,8 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
     ws.film_x.resize(ws.camera_rays.size());
     ws.film_y.resize(ws.camera_rays.size());
     for (std::size_t i = 0; i < pixel_count; ++i) {
-      const std::size_t p = pixels[i];
-      const auto x = static_cast<float>(tile.x0 + static_cast<int>(p % tile_width));
-      const auto y = static_cast<float>(tile.y0 + static_cast<int>(p / tile_width));
+      const auto x = static_cast<float>(pixels[i].x);
+      const auto y = static_cast<float>(pixels[i].y);
       find_offsets(i, next);
       for (int s = range.begin; s < range.end; ++s, ++next) {
         ws.film_x[next] = x + offsets[s].x;
@@ -151,9 +147,8 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
   } else {
     RenderCamera posed = integration_->still_camera;  // a moving camera's, at each sample's time
     for (std::size_t i = 0; i < pixel_count; ++i) {
-      const std::size_t p = pixels[i];
-      const int x = tile.x0 + static_cast<int>(p % tile_width);
-      const int y = tile.y0 + static_cast<int>(p / tile_width);
+      const int x = pixels[i].x;
+      const int y = pixels[i].y;
       const std::uint64_t pixel_key = key_of_pixel(i);
       find_offsets(i, next);
       for (int s = range.begin; s < range.end; ++s, ++next) {
@@ -176,7 +171,7 @@ void TileRenderer::render_pixels(const PixelRegion& tile, SampleRange range, con
   const bool color_only = sums_.keeps_color_only();
   for (std::size_t i = 0; i < pixel_count; ++i) {
     float* pixel_sums =
-        out.pixels.data() + static_cast<std::size_t>(pixels[i]) * static_cast<std::size_t>(sums_.floats());
+        out.pixels.data() + static_cast<std::size_t>(pixels[i].index) * static_cast<std::size_t>(sums_.floats());
     SampleResult* pixel_samples = &ws.samples[i * static_cast<std::size_t>(per_pixel)];
     for (int k = 0; k < per_pixel; ++k)
       if (!is_finite(pixel_samples[k].radiance)) {
@@ -214,12 +209,12 @@ TileResult TileRenderer::render(std::size_t index, const PixelRegion& tile, Work
           if (!active_ ||
               (*active_)[static_cast<std::size_t>(y - region.y0) * static_cast<std::size_t>(region.width()) +
                          static_cast<std::size_t>(x - region.x0)])
-            ws.pixels.push_back(static_cast<std::uint32_t>((y - tile.y0) * tile.width() + (x - tile.x0)));
+            ws.pixels.push_back({static_cast<std::uint32_t>((y - tile.y0) * tile.width() + (x - tile.x0)), x, y});
   // Whole pixels per batch, about kSamplesPerBatch samples.
   const std::size_t pixels_per_batch =
       std::max<std::size_t>(1, kSamplesPerBatch / static_cast<std::size_t>(range.count()));
   for (std::size_t first = 0; first < ws.pixels.size(); first += pixels_per_batch)
-    render_pixels(tile, range, ws.pixels.data() + first, std::min(pixels_per_batch, ws.pixels.size() - first), out, ws);
+    render_pixels(range, ws.pixels.data() + first, std::min(pixels_per_batch, ws.pixels.size() - first), out, ws);
   return out;
 }
 

@@ -9,6 +9,8 @@
 // s div columns)). Every later dimension pair is stratified over the same grid, but visits its strata in an order of its own — a pseudo-random permutation
 // per pixel and dimension — so that, e.g., the lens position is not correlated with the position
 // in the pixel (pbrt's padded stratified sampling).
+#include "rtpro/core/random.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -47,7 +49,8 @@ class StratifiedSampler {
 
   // pixel_offset(pixel_key, s) for every sample s of the pixel, in sample order, into
   // out[0, samples_per_pixel()), bit for bit: the pixel's hash is worked out once and the strata
-  // are walked in order instead of divided out sample by sample.
+  // are walked in order instead of divided out sample by sample. Inline: a tile's pixels then
+  // work out their hashes side by side, where a call a pixel made each wait for the last.
   void pixel_offsets(std::uint64_t pixel_key, PixelOffset* out) const;
 
   // The 2D value of dimension pair (dimension, dimension + 1) for this sample; dimension is even
@@ -93,6 +96,21 @@ class StratifiedSampler {
   // mix of a pixel's two a sample fewer (pixel_offsets' hashes were 4% of a 1-spp frame).
   std::vector<std::uint64_t> sample_mixes_;
 };
+
+inline PixelOffset StratifiedSampler::jittered_in_stratum(std::uint64_t bits, int sx, int sy) const {
+  // (s + jitter) / n stays below 1 because jitter <= 1 − 2⁻²⁴.
+  return {(static_cast<float>(sx) + to_unit_float(bits)) * inv_columns_,
+          (static_cast<float>(sy) + to_unit_float(bits << 24)) * inv_rows_};
+}
+
+inline void StratifiedSampler::pixel_offsets(std::uint64_t pixel_key, PixelOffset* out) const {
+  const std::uint64_t pixel_bits = hash_combine(seed_, pixel_key);
+  int sample_index = 0;
+  for (int sy = 0; sy < grid_.rows; ++sy)
+    for (int sx = 0; sx < grid_.columns; ++sx, ++sample_index)
+      out[sample_index] =
+          jittered_in_stratum(mix64(pixel_bits ^ sample_mixes_[static_cast<std::size_t>(sample_index)]), sx, sy);
+}
 
 // Element `index` of a pseudo-random permutation of [0, count) chosen by `key` (Kensler's
 // hash-based cycle walking): a bijection for every key, computed without storing the permutation.

@@ -33,8 +33,14 @@ class TileRenderer {
     std::vector<float> film_x, film_y;       // every pinhole camera sample's film point
     std::vector<float> camera_times;         // every camera sample's time, while the shutter is open
     std::vector<SampleResult> samples;
-    std::vector<std::uint32_t> pixels;  // the tile's pixels that take part in the pass
-    struct IntegratorBuffers;           // the integrators' own (render/integrators/integrator.h)
+    // A pixel of the tile that takes part in the pass: its place among the tile's sums
+    // (row-major) and its image coordinates, kept beside it rather than divided out per sample.
+    struct TilePixel {
+      std::uint32_t index;
+      int x, y;
+    };
+    std::vector<TilePixel> pixels;
+    struct IntegratorBuffers;  // the integrators' own (render/integrators/integrator.h)
     std::unique_ptr<IntegratorBuffers> integrator;
   };
 
@@ -58,8 +64,8 @@ class TileRenderer {
   const SumLayout& sums() const { return sums_; }
 
  private:
-  void render_pixels(const PixelRegion& tile, SampleRange samples, const std::uint32_t* pixels, std::size_t count,
-                     TileResult& out, Workspace& ws) const;
+  void render_pixels(SampleRange samples, const Workspace::TilePixel* pixels, std::size_t count, TileResult& out,
+                     Workspace& ws) const;
 
   const RenderScene& scene_;
   const Backend& backend_;

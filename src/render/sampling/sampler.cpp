@@ -62,25 +62,9 @@ std::uint64_t StratifiedSampler::sample_bits(std::uint64_t pixel_key, int sample
   return hash_combine(hash_combine(seed_, pixel_key), static_cast<std::uint64_t>(sample_index));
 }
 
-PixelOffset StratifiedSampler::jittered_in_stratum(std::uint64_t bits, int sx, int sy) const {
-  // (s + jitter) / n stays below 1 because jitter <= 1 − 2⁻²⁴.
-  return {(static_cast<float>(sx) + to_unit_float(bits)) * inv_columns_,
-          (static_cast<float>(sy) + to_unit_float(bits << 24)) * inv_rows_};
-}
-
 PixelOffset StratifiedSampler::pixel_offset(std::uint64_t pixel_key, int sample_index) const {
   return jittered_in_stratum(sample_bits(pixel_key, sample_index), sample_index % grid_.columns,
                              sample_index / grid_.columns);
-}
-
-void StratifiedSampler::pixel_offsets(std::uint64_t pixel_key, PixelOffset* out) const {
-  const std::uint64_t pixel_bits = hash_combine(seed_, pixel_key);
-  int sample_index = 0;
-  for (int sy = 0; sy < grid_.rows; ++sy)
-    for (int sx = 0; sx < grid_.columns; ++sx, ++sample_index) {
-      out[sample_index] =
-          jittered_in_stratum(mix64(pixel_bits ^ sample_mixes_[static_cast<std::size_t>(sample_index)]), sx, sy);
-    }
 }
 
 StratifiedSampler::PermutedSample StratifiedSampler::permuted(std::uint64_t pixel_key, int sample_index,
