@@ -1,6 +1,7 @@
 #include "microfacet.h"
 
 #include "bsdf_sample.h"
+#include "energy_tables.h"
 
 #include "rtpro/core/math_constants.h"
 #include "table_coordinate.h"
@@ -25,15 +26,10 @@ float tan2_theta(const Vec3& w) {
 // continuous (it fades to 0 at the horizon): no random numbers, the same table on every run, and
 // about 5e-4 from the exact integral. u.x = 1 − v² with v uniform puts the nodes where they are
 // needed: at v → 0 the disk's rim maps to the steep facets that send light into the surface.
-constexpr int kTableSize = 32;
+constexpr int kTableSize = kGgxAlbedoNodes;
 constexpr int kQuadrature = 48;
 // μ = 0 itself is degenerate (Λ of a grazing direction is taken as 0); the node holds the limit.
 constexpr float kGrazingMu = 1e-4f;
-
-struct AlbedoTable {
-  std::array<std::array<float, kTableSize>, kTableSize> e{};  // [√α node][√μ node]
-  std::array<float, kTableSize> e_average{};                  // per √α node
-};
 
 float node_coordinate(int i) { return static_cast<float>(i) / (kTableSize - 1); }
 
@@ -64,8 +60,12 @@ float average_of_interpolant(const std::array<float, kTableSize>& e) {
   return static_cast<float>(4.0 * integral);
 }
 
-AlbedoTable build_albedo_table() {
-  AlbedoTable table;
+TableCoordinate albedo_table_coordinate(float x) { return sqrt_spaced_coordinate(x, kTableSize); }
+
+}  // namespace
+
+GgxAlbedoTable integrate_ggx_albedo_table() {
+  GgxAlbedoTable table;
   for (int a = 0; a < kTableSize; ++a) {
     const float alpha = node_coordinate(a) * node_coordinate(a);
     for (int m = 0; m < kTableSize; ++m) {
@@ -76,15 +76,6 @@ AlbedoTable build_albedo_table() {
   }
   return table;
 }
-
-const AlbedoTable& albedo_table() {
-  static const AlbedoTable table = build_albedo_table();  // thread-safe one-time initialisation
-  return table;
-}
-
-TableCoordinate albedo_table_coordinate(float x) { return sqrt_spaced_coordinate(x, kTableSize); }
-
-}  // namespace
 
 float roughness_to_alpha(float roughness) { return roughness * roughness; }
 
@@ -131,7 +122,7 @@ Vec3 GgxDistribution::sample_visible_normal(const Vec3& w, Sample2D u) const {
 }
 
 float ggx_directional_albedo(float mu, float alpha) {
-  const AlbedoTable& table = albedo_table();
+  const GgxAlbedoTable& table = ggx_albedo_table();
   const TableCoordinate m = albedo_table_coordinate(mu);
   const TableCoordinate a = albedo_table_coordinate(alpha);
   const float lower = table_lerp(m.fraction, table.e[a.index][m.index], table.e[a.index][m.index + 1]);
@@ -140,7 +131,7 @@ float ggx_directional_albedo(float mu, float alpha) {
 }
 
 float ggx_average_albedo(float alpha) {
-  const AlbedoTable& table = albedo_table();
+  const GgxAlbedoTable& table = ggx_albedo_table();
   const TableCoordinate a = albedo_table_coordinate(alpha);
   return table_lerp(a.fraction, table.e_average[a.index], table.e_average[a.index + 1]);
 }

@@ -48,7 +48,7 @@ struct GgxDistribution {
 
 // E(μ, α): the fraction of light a GGX mirror-facet surface (Fresnel = 1) reflects after a single
 // scattering, for incidence cos θ = μ. What is missing, 1 − E, is the energy that in reality
-// scatters more than once. Looked up bilinearly in a table integrated on first use.
+// scatters more than once. Looked up bilinearly in a table integrated ahead of time (energy_tables.h).
 float ggx_directional_albedo(float mu, float alpha);
 // E_avg(α) = 2 ∫ E(μ, α) μ dμ, exactly the integral of the table's interpolation, so a lobe built
 // from 1 − E(μ) normalised by 1 − E_avg carries exactly the energy it should.

@@ -1,6 +1,7 @@
 #include "sheen.h"
 
 #include "rtpro/core/math_constants.h"
+#include "energy_tables.h"
 #include "table_coordinate.h"
 
 #include <algorithm>
@@ -28,15 +29,10 @@ float lambda_exponent(float x, float alpha) {
 // over (x, φ) with μi = x², which puts the nodes near the horizon where the lobe lives; the
 // integrand is mirror-symmetric in φ about wo's plane, so half the circle is integrated and
 // doubled. The lookups agree with a fine integration to 3e-3 between the nodes (sheen_test.cpp).
-constexpr int kMuNodes = 32;
-constexpr int kRoughnessNodes = 32;
+constexpr int kMuNodes = kSheenMuNodes;
+constexpr int kRoughnessNodes = kSheenRoughnessNodes;
 constexpr int kSheenQuadrature = 64;
 constexpr float kSheenGrazingMu = 1e-4f;
-
-struct SheenTables {
-  std::array<std::array<float, kMuNodes>, kRoughnessNodes> raw{};      // E of eval, [roughness][√μ]
-  std::array<std::array<float, kMuNodes>, kRoughnessNodes> bounded{};  // Ē of the bounded lobe
-};
 
 float mu_node(int m) {
   const float x = static_cast<float>(m) / (kMuNodes - 1);
@@ -91,10 +87,17 @@ float along_mu(const std::array<float, kMuNodes>& row, float mu) {
 constexpr float kBoundMargin = 1.05f;
 float albedo_bound(float e_o, float e_i) { return std::max(1.0f, kBoundMargin * std::max(e_o, e_i)); }
 
+float lookup(const std::array<std::array<float, kMuNodes>, kRoughnessNodes>& table, float mu, float roughness) {
+  const TableCoordinate r = roughness_coordinate(roughness);
+  return table_lerp(r.fraction, along_mu(table[r.index], mu), along_mu(table[r.index + 1], mu));
+}
+
+}  // namespace
+
 // Per roughness node: E from the rows, then Ē from the same rows divided by the bound, which
 // needs E at every quadrature μi of this roughness, i.e. the node row just made.
-SheenTables build_sheen_tables() {
-  SheenTables tables;
+SheenAlbedoTables integrate_sheen_albedo_tables() {
+  SheenAlbedoTables tables;
   for (int r = 0; r < kRoughnessNodes; ++r) {
     const CharlieSheen sheen{sheen_roughness_to_alpha(roughness_node(r))};
     std::array<std::array<double, kSheenQuadrature>, kMuNodes> rows;
@@ -113,18 +116,6 @@ SheenTables build_sheen_tables() {
   }
   return tables;
 }
-
-const SheenTables& sheen_tables() {
-  static const SheenTables built = build_sheen_tables();  // thread-safe one-time initialisation
-  return built;
-}
-
-float lookup(const std::array<std::array<float, kMuNodes>, kRoughnessNodes>& table, float mu, float roughness) {
-  const TableCoordinate r = roughness_coordinate(roughness);
-  return table_lerp(r.fraction, along_mu(table[r.index], mu), along_mu(table[r.index + 1], mu));
-}
-
-}  // namespace
 
 float sheen_roughness_to_alpha(float roughness) {
   const float r = std::clamp(roughness, kMinRoughness, 1.0f);
@@ -154,7 +145,7 @@ float CharlieSheen::eval(const Vec3& wo, const Vec3& wi) const {
   return d(wm) * g / (4.0f * cos_o * cos_i);
 }
 
-float sheen_directional_albedo(float mu, float roughness) { return lookup(sheen_tables().raw, mu, roughness); }
+float sheen_directional_albedo(float mu, float roughness) { return lookup(sheen_albedo_tables().raw, mu, roughness); }
 
 SheenLobe::SheenLobe(float roughness)
     : roughness_(std::clamp(roughness, 0.0f, 1.0f)), charlie_{sheen_roughness_to_alpha(roughness)} {}
@@ -166,6 +157,6 @@ float SheenLobe::eval(const Vec3& wo, const Vec3& wi) const {
                           sheen_directional_albedo(std::fabs(wi.z), roughness_));
 }
 
-float SheenLobe::albedo(float mu) const { return lookup(sheen_tables().bounded, mu, roughness_); }
+float SheenLobe::albedo(float mu) const { return lookup(sheen_albedo_tables().bounded, mu, roughness_); }
 
 }  // namespace rtpro

@@ -34,7 +34,7 @@ float sheen_directional_albedo(float mu, float roughness);
 // which is the lobe itself wherever it conserves energy, symmetric in wo and wi, and never
 // reflects more than it receives (its albedo at wo is at most E(μo) / max(1, 1.05·E(μo)); the 5%
 // covers the table's interpolation of E). Both E and the bounded lobe's albedo Ē come from tables
-// integrated deterministically on first use and read bilinearly.
+// integrated ahead of time (energy_tables.h) and read bilinearly.
 class SheenLobe {
  public:
   explicit SheenLobe(float roughness);

@@ -1,5 +1,6 @@
 #include "specular_albedo.h"
 
+#include "energy_tables.h"
 #include "table_coordinate.h"
 
 #include "microfacet.h"
@@ -15,18 +16,11 @@ namespace {
 // spaced in √μ and √α, where E changes fastest; node values from a fixed midpoint rule over the
 // visible-normal sampler's unit square (no random numbers, the same table on every run). The
 // (1 − c)⁵ weight is smooth on that square too, so E₅ converges as E₁ does.
-constexpr int kSpecularTableSize = 32;
+constexpr int kSpecularTableSize = kSpecularAlbedoNodes;
 constexpr int kSpecularQuadrature = 48;
 constexpr float kSpecularGrazingMu = 1e-4f;
 
-struct Node {
-  float e1 = 0.0f, e5 = 0.0f;
-};
-
-struct SpecularTables {
-  std::array<std::array<Node, kSpecularTableSize>, kSpecularTableSize> e{};  // [√α node][√μ node]
-  std::array<Node, kSpecularTableSize> average{};                            // per √α node
-};
+using Node = SpecularAlbedoNode;
 
 float specular_node_coordinate(int i) { return static_cast<float>(i) / (kSpecularTableSize - 1); }
 
@@ -74,8 +68,18 @@ Node average_of_interpolant(const std::array<Node, kSpecularTableSize>& e) {
   return {static_cast<float>(4.0 * e1), static_cast<float>(4.0 * e5)};
 }
 
-SpecularTables build_specular_tables() {
-  SpecularTables tables;
+TableCoordinate specular_table_coordinate(float x) { return sqrt_spaced_coordinate(x, kSpecularTableSize); }
+
+Node table_lerp(float t, const Node& a, const Node& b) {
+  return {(1.0f - t) * a.e1 + t * b.e1, (1.0f - t) * a.e5 + t * b.e5};
+}
+
+SchlickAlbedo to_albedo(const Node& n) { return {std::max(0.0f, n.e1 - n.e5), n.e5}; }
+
+}  // namespace
+
+SpecularAlbedoTable integrate_specular_albedo_table() {
+  SpecularAlbedoTable tables;
   for (int a = 0; a < kSpecularTableSize; ++a) {
     const float alpha = specular_node_coordinate(a) * specular_node_coordinate(a);
     for (int m = 0; m < kSpecularTableSize; ++m) {
@@ -88,27 +92,12 @@ SpecularTables build_specular_tables() {
   return tables;
 }
 
-const SpecularTables& specular_tables() {
-  static const SpecularTables built = build_specular_tables();  // thread-safe one-time initialisation
-  return built;
-}
-
-TableCoordinate specular_table_coordinate(float x) { return sqrt_spaced_coordinate(x, kSpecularTableSize); }
-
-Node table_lerp(float t, const Node& a, const Node& b) {
-  return {(1.0f - t) * a.e1 + t * b.e1, (1.0f - t) * a.e5 + t * b.e5};
-}
-
-SchlickAlbedo to_albedo(const Node& n) { return {std::max(0.0f, n.e1 - n.e5), n.e5}; }
-
-}  // namespace
-
 SchlickAlbedo ggx_schlick_albedo(float mu, float alpha) {
   if (GgxDistribution{alpha}.effectively_smooth()) {
     const float edge = schlick_weight(mu);
     return {1.0f - edge, edge};
   }
-  const SpecularTables& t = specular_tables();
+  const SpecularAlbedoTable& t = specular_albedo_table();
   const TableCoordinate m = specular_table_coordinate(mu);
   const TableCoordinate a = specular_table_coordinate(alpha);
   const Node lower = table_lerp(m.fraction, t.e[a.index][m.index], t.e[a.index][m.index + 1]);
@@ -119,7 +108,7 @@ SchlickAlbedo ggx_schlick_albedo(float mu, float alpha) {
 SchlickAlbedo ggx_schlick_average_albedo(float alpha) {
   // A mirror's average of (1 − μ)⁵ in closed form: 2∫(1 − μ)⁵ μ dμ = 1/21.
   if (GgxDistribution{alpha}.effectively_smooth()) return {20.0f / 21.0f, 1.0f / 21.0f};
-  const SpecularTables& t = specular_tables();
+  const SpecularAlbedoTable& t = specular_albedo_table();
   const TableCoordinate a = specular_table_coordinate(alpha);
   return to_albedo(table_lerp(a.fraction, t.average[a.index], t.average[a.index + 1]));
 }

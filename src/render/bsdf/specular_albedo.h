@@ -18,7 +18,7 @@ struct SchlickAlbedo {
 };
 
 // E(μ, α) for incidence |cos θo| = μ. Below kSmoothAlpha the closed form of a mirror, E = F(μ);
-// otherwise looked up bilinearly in tables integrated deterministically on first use.
+// otherwise looked up bilinearly in tables integrated ahead of time (energy_tables.h).
 SchlickAlbedo ggx_schlick_albedo(float mu, float alpha);
 // 2 ∫ E(μ, α) μ dμ, exactly the integral of what ggx_schlick_albedo interpolates, so that a lobe
 // built from 1 − E(μ) and normalised by 1 − E_avg carries exactly the energy the layer leaves.
