@@ -10,6 +10,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 namespace rtpro {
 namespace dielectric_albedo_test {
@@ -69,6 +73,34 @@ TEST(DielectricAlbedo, IsOneWhenSmoothAndLessWhenRough) {
     }
   }
   EXPECT_LT(rough_dielectric_albedo(0.5f, 1.0f, 1.5f), 0.95f);
+}
+
+// Tables prepared ahead (as a render does before its tiles) while other threads already look up the
+// same interfaces, some nodes built by the preparation, some by the lookups: no thread waits for
+// ever, and every lookup gives what a lookup alone gives, bit for bit (here: the same nodes'
+// values read back a second time, on one thread, after all are built), for indices no other test
+// reads.
+TEST(DielectricAlbedo, PreparingWhileOtherThreadsLookUpGivesTheSameValues) {
+  const std::vector<RoughInterface> interfaces{
+      {2.7f, GlassFresnel::kExact}, {2.7f, GlassFresnel::kSchlick}, {1.0f / 1.9f, GlassFresnel::kExact}};
+  const std::vector<float> etas{2.7f, 1.0f / 2.7f, 1.9f, 1.0f / 1.9f};
+  const std::vector<float> mus{0.04f, 0.3f, 0.77f};
+  std::vector<float> concurrent(etas.size() * mus.size() * 2);
+  tbb::parallel_invoke([&] { prepare_rough_dielectric_albedo(interfaces); },
+                       [&] {
+                         tbb::parallel_for(std::size_t{0}, concurrent.size(), [&](std::size_t i) {
+                           const GlassFresnel fresnel = i % 2 ? GlassFresnel::kSchlick : GlassFresnel::kExact;
+                           concurrent[i] = rough_dielectric_albedo(mus[i / 2 % mus.size()], 0.3f,
+                                                                   etas[i / 2 / mus.size()], fresnel);
+                         });
+                       });
+  for (std::size_t i = 0; i < concurrent.size(); ++i) {
+    const GlassFresnel fresnel = i % 2 ? GlassFresnel::kSchlick : GlassFresnel::kExact;
+    const float eta = etas[i / 2 / mus.size()], mu = mus[i / 2 % mus.size()];
+    EXPECT_EQ(concurrent[i], rough_dielectric_albedo(mu, 0.3f, eta, fresnel)) << "eta " << eta << ", mu " << mu;
+    EXPECT_NEAR(concurrent[i], integrate_rough_dielectric_albedo(mu, 0.3f, eta, fresnel, 64), 5e-3)
+        << "eta " << eta << ", mu " << mu;
+  }
 }
 
 }  // namespace dielectric_albedo_test

@@ -14,6 +14,8 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <utility>
+#include <vector>
 
 namespace rtpro {
 namespace {
@@ -92,6 +94,17 @@ float glass_bilinear(const GlassTable& table, const TableCoordinate& m, const Ta
   return table_lerp(a.fraction, lower, upper);
 }
 
+// Where index η' = max(η, 1/η) falls among the nodes: the lower node k and the position scaled to
+// node units, whose fraction past k weighs node k + 1.
+struct EtaCoordinate {
+  int k;
+  float scaled;
+};
+EtaCoordinate eta_coordinate(float index) {
+  const float scaled = std::sqrt(std::clamp((index - 1.0f) / (index + 1.0f), 0.0f, 1.0f)) * (kGlassEtaNodes - 1);
+  return {std::min(static_cast<int>(scaled), kGlassEtaNodes - 2), scaled};
+}
+
 }  // namespace
 
 float schlick_glass_fresnel(float cos_incident, float eta) {
@@ -121,12 +134,23 @@ float integrate_rough_dielectric_albedo(float mu, float alpha, float eta, GlassF
   return static_cast<float>(mean / g1_wo);
 }
 
+void prepare_rough_dielectric_albedo(std::span<const RoughInterface> interfaces) {
+  std::vector<std::pair<int, GlassFresnel>> nodes;
+  for (const RoughInterface& interface : interfaces) {
+    const int k = eta_coordinate(interface.ior >= 1.0f ? interface.ior : 1.0f / interface.ior).k;
+    for (const int node : {k, k + 1}) nodes.emplace_back(node, interface.fresnel);
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  // Each node on a thread of its own, its rows spread further where threads are left (build_glass_table).
+  tbb::parallel_for(std::size_t{0}, nodes.size(),
+                    [&](std::size_t i) { glass_eta_node(nodes[i].first, nodes[i].second); });
+}
+
 float rough_dielectric_albedo(float mu, float alpha, float eta, GlassFresnel fresnel) {
   if (GgxDistribution{alpha}.effectively_smooth()) return 1.0f;
   const bool entering = eta >= 1.0f;
-  const float index = entering ? eta : 1.0f / eta;
-  const float scaled = std::sqrt(std::clamp((index - 1.0f) / (index + 1.0f), 0.0f, 1.0f)) * (kGlassEtaNodes - 1);
-  const int k = std::min(static_cast<int>(scaled), kGlassEtaNodes - 2);
+  const auto [k, scaled] = eta_coordinate(entering ? eta : 1.0f / eta);
   const TableCoordinate m = sqrt_spaced_coordinate(mu, kGlassTableSize);
   const TableCoordinate a = sqrt_spaced_coordinate(alpha, kGlassTableSize);
   const auto side = [&](int node) {

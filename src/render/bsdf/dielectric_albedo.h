@@ -13,7 +13,11 @@
 // each side of the interface. Each η node's pair is integrated deterministically (a fixed
 // quadrature over the visible-normal sampler's unit square, as the conductor's tables) the first
 // time an index near it is asked for, so a scene pays only for the indices it uses: about 0.1 s
-// per node, two nodes per index.
+// per node, two nodes per index. A render builds them ahead of its tiles
+// (prepare_rough_dielectric_albedo), where the first tile to ask built them alone while the others
+// waited.
+#include <span>
+
 namespace rtpro {
 
 enum class GlassFresnel {
@@ -26,6 +30,16 @@ enum class GlassFresnel {
 float schlick_glass_fresnel(float cos_incident, float eta);
 
 float rough_dielectric_albedo(float mu, float alpha, float eta, GlassFresnel fresnel = GlassFresnel::kExact);
+
+// An interface whose rough_dielectric_albedo a render will read: its index of refraction (either
+// side's relative η reads the same nodes) and Fresnel model.
+struct RoughInterface {
+  float ior;
+  GlassFresnel fresnel;
+};
+// Builds the η nodes of every interface now, side by side on the task arena's threads; call it
+// outside any render task. The lookups then find them built (and still build any other).
+void prepare_rough_dielectric_albedo(std::span<const RoughInterface> interfaces);
 
 // The node value itself, integrated afresh (no table): what the tables interpolate, for tests.
 float integrate_rough_dielectric_albedo(float mu, float alpha, float eta, GlassFresnel fresnel, int quadrature);

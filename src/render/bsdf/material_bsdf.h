@@ -49,6 +49,12 @@ inline bool makes_lambert_bsdf(const Material& material) {
 // drawn).
 inline bool reads_lobe_choice(const Material& material) { return !makes_lambert_bsdf(material); }
 
+// Builds the tables the scene's materials' BSDFs will look up (the rough interfaces' albedos,
+// render/bsdf/dielectric_albedo.h) before the tiles start, on every thread of the task arena:
+// otherwise the first tile to need one builds it alone while the others wait for it. Outside any
+// render task.
+void prepare_material_bsdfs(const RenderScene& scene);
+
 // `textures`: the scene's image textures, opened, for the colour textures the material reads.
 // Written into `out`, whose previous contents do not matter.
 void material_bsdf(const Material& material, const SurfacePoint& point, const TextureLookup* textures,

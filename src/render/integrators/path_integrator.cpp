@@ -1,5 +1,7 @@
 #include "path_integrator.h"
 
+#include "material_bsdf.h"
+
 #include "light_linking.h"
 #include "medium_shadows.h"
 #include "path_vertex_step.h"
@@ -48,6 +50,13 @@ std::span<const SampleKey> path_keys(std::span<const SampleKey> keys, PathWorksp
 }
 
 }  // namespace
+
+PathIntegrator::PathIntegrator(const RenderScene& scene, const Backend& backend, const CameraSamplers& samplers,
+                               const TextureLookup* textures, const EnvironmentLight* environment, bool records_motion)
+    : scene_(scene), backend_(backend), samplers_(samplers), textures_(textures), lights_(scene, environment),
+      draws_(vertex_draws(scene, lights_)), records_motion_(records_motion) {
+  prepare_material_bsdfs(scene);
+}
 
 void PathIntegrator::trace(const CameraBatch& batch, RayCounts& counts, Workspace& ws) const {
   samplers_.with_chosen([&](const auto& sampler) { trace_with(sampler, batch, counts, ws); });

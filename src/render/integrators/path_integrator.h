@@ -127,9 +127,7 @@ class PathIntegrator {
  public:
   using Workspace = PathWorkspace;
   PathIntegrator(const RenderScene& scene, const Backend& backend, const CameraSamplers& samplers,
-                 const TextureLookup* textures, const EnvironmentLight* environment, bool records_motion = false)
-      : scene_(scene), backend_(backend), samplers_(samplers), textures_(textures), lights_(scene, environment),
-        draws_(vertex_draws(scene, lights_)), records_motion_(records_motion) {}
+                 const TextureLookup* textures, const EnvironmentLight* environment, bool records_motion = false);
 
   // Traces the batch's paths; each sample's random numbers come from the sampler render.sampler
   // chooses. Ray counts are added to `counts` (bounces as reflection or refraction rays).
