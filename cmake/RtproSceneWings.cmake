@@ -19,7 +19,7 @@ target_include_directories(rtpro_opensubdiv SYSTEM INTERFACE ${OPENSUBDIV_INCLUD
 target_link_libraries(rtpro_opensubdiv INTERFACE ${OPENSUBDIV_CPU_LIBRARY})
 
 rtpro_add_wing(scene mesh
-  SHARES ascii_scan.h cage_check.h hair_file.h large_buffer.h mapped_file.h mesh_limits.h mesh_normals.h
+  SHARES ascii_scan.h cage_check.h hair_file.h mapped_file.h mesh_limits.h mesh_normals.h
          mtl_parser.h path_containment.h subdivision_refine.h
   PRIVATE_DEPENDS TBB::tbb rtpro_opensubdiv)
 rtpro_add_wing(scene gltf

@@ -1,5 +1,7 @@
 #include "exr_input.h"
 
+#include "rtpro/core/large_buffer.h"
+
 #include "image_file_check.h"
 #include "image_header_check.h"
 #include "image_read_limits.h"
@@ -77,7 +79,8 @@ std::optional<Image> read_exr_without_openimageio(const std::filesystem::path& f
     const std::size_t row_values = static_cast<std::size_t>(width) * count;
     // Reserved once and grown band by band as rows decode, as OpenImageIO's path does: a file cut
     // short fails after one band, not after the whole image was cleared.
-    image.data.reserve(row_values * static_cast<std::size_t>(height));
+    // In huge pages: an HDRI's 6 MB took 1,500 page faults of ~13 us here.
+    reserve_large(image.data, row_values * static_cast<std::size_t>(height));
     Imf::FrameBuffer frame;
     for (std::size_t c = 0; c < count; ++c)
       frame.insert((*channels)[c], Imf::Slice::Make(Imf::FLOAT, image.data.data() + c, window, sizeof(float) * count,

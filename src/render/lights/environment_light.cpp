@@ -1,5 +1,7 @@
 #include "rtpro/render/environment_light.h"
 
+#include "rtpro/core/large_buffer.h"
+
 #include "rtpro/core/math_constants.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
@@ -103,7 +105,7 @@ EnvironmentLight::EnvironmentLight(const Environment& environment, Image image, 
   width_ = image.width;
   height_ = image.height;
   const auto w = static_cast<std::size_t>(width_), h = static_cast<std::size_t>(height_);
-  texels_.resize(w * h);
+  resize_large(texels_, w * h);  // in huge pages (large_buffer.h), as the file's pixels were read
   const int channels = image.channel_count();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, h), [&](const tbb::blocked_range<std::size_t>& rows) {
     for (std::size_t y = rows.begin(); y < rows.end(); ++y)
@@ -118,7 +120,9 @@ EnvironmentLight::EnvironmentLight(const Environment& environment, Image image, 
   // Each cell weighs what the bilinear lookup shows over it (so a cell is never 0 where the
   // lookup is not) by luminance and by sin θ, the solid angle a row's cells cover. Luminance is
   // linear, so the cell average is filtered from the texels' luminance, one axis at a time.
-  std::vector<float> func(w * h), across(w * h);
+  std::vector<float> func, across;
+  resize_large(func, w * h);
+  resize_large(across, w * h);
   std::vector<double> row_sums(h);
   const auto for_rows = [h](auto&& body) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, h), [&](const tbb::blocked_range<std::size_t>& rows) {

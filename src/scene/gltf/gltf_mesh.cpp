@@ -1,7 +1,7 @@
 #include "gltf_mesh.h"
 
 #include "rtpro/core/error.h"
-#include "large_buffer.h"
+#include "rtpro/core/large_buffer.h"
 #include "mesh_limits.h"
 #include "mesh_normals.h"
 

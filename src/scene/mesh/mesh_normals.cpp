@@ -1,6 +1,6 @@
 #include "mesh_normals.h"
 
-#include "large_buffer.h"
+#include "rtpro/core/large_buffer.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>

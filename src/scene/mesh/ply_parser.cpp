@@ -2,7 +2,7 @@
 
 #include "rtpro/core/error.h"
 #include "ascii_scan.h"
-#include "large_buffer.h"
+#include "rtpro/core/large_buffer.h"
 #include "mapped_file.h"
 #include "mesh_color.h"
 #include "mesh_limits.h"
