@@ -49,8 +49,8 @@ class StratifiedSampler {
 
   // pixel_offset(pixel_key, s) for every sample s of the pixel, in sample order, into
   // out[0, samples_per_pixel()), bit for bit: the pixel's hash is worked out once and the strata
-  // are walked in order instead of divided out sample by sample. Inline: a tile's pixels then
-  // work out their hashes side by side, where a call a pixel made each wait for the last.
+  // are walked in order instead of divided out sample by sample. Inline, so that the hashes of a
+  // batch's pixels overlap; with a call per pixel, each waited for the one before.
   void pixel_offsets(std::uint64_t pixel_key, PixelOffset* out) const;
 
   // The 2D value of dimension pair (dimension, dimension + 1) for this sample; dimension is even
