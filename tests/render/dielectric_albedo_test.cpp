@@ -81,25 +81,34 @@ TEST(DielectricAlbedo, IsOneWhenSmoothAndLessWhenRough) {
 // values read back a second time, on one thread, after all are built), for indices no other test
 // reads.
 TEST(DielectricAlbedo, PreparingWhileOtherThreadsLookUpGivesTheSameValues) {
-  const std::vector<RoughInterface> interfaces{
-      {2.7f, GlassFresnel::kExact}, {2.7f, GlassFresnel::kSchlick}, {1.0f / 1.9f, GlassFresnel::kExact}};
-  const std::vector<float> etas{2.7f, 1.0f / 2.7f, 1.9f, 1.0f / 1.9f};
-  const std::vector<float> mus{0.04f, 0.3f, 0.77f};
-  std::vector<float> concurrent(etas.size() * mus.size() * 2);
+  // 2.7 prepared for both Fresnel models; 1.9 left to the lookups (exact Fresnel only).
+  const std::vector<RoughInterface> interfaces{{2.7f, GlassFresnel::kExact}, {2.7f, GlassFresnel::kSchlick}};
+  struct Lookup {
+    float eta;
+    GlassFresnel fresnel;
+  };
+  const std::vector<Lookup> lookups{{2.7f, GlassFresnel::kExact},
+                                    {1.0f / 2.7f, GlassFresnel::kExact},
+                                    {1.0f / 2.7f, GlassFresnel::kSchlick},
+                                    {1.9f, GlassFresnel::kExact},
+                                    {1.0f / 1.9f, GlassFresnel::kExact}};
+  const std::vector<float> mus{0.04f, 0.77f};
+  std::vector<float> concurrent(lookups.size() * mus.size());
+  const auto look_up = [&](std::size_t i) {
+    const Lookup& l = lookups[i / mus.size()];
+    return rough_dielectric_albedo(mus[i % mus.size()], 0.3f, l.eta, l.fresnel);
+  };
   tbb::parallel_invoke([&] { prepare_rough_dielectric_albedo(interfaces); },
                        [&] {
-                         tbb::parallel_for(std::size_t{0}, concurrent.size(), [&](std::size_t i) {
-                           const GlassFresnel fresnel = i % 2 ? GlassFresnel::kSchlick : GlassFresnel::kExact;
-                           concurrent[i] = rough_dielectric_albedo(mus[i / 2 % mus.size()], 0.3f,
-                                                                   etas[i / 2 / mus.size()], fresnel);
-                         });
+                         tbb::parallel_for(std::size_t{0}, concurrent.size(),
+                                           [&](std::size_t i) { concurrent[i] = look_up(i); });
                        });
   for (std::size_t i = 0; i < concurrent.size(); ++i) {
-    const GlassFresnel fresnel = i % 2 ? GlassFresnel::kSchlick : GlassFresnel::kExact;
-    const float eta = etas[i / 2 / mus.size()], mu = mus[i / 2 % mus.size()];
-    EXPECT_EQ(concurrent[i], rough_dielectric_albedo(mu, 0.3f, eta, fresnel)) << "eta " << eta << ", mu " << mu;
-    EXPECT_NEAR(concurrent[i], integrate_rough_dielectric_albedo(mu, 0.3f, eta, fresnel, 64), 5e-3)
-        << "eta " << eta << ", mu " << mu;
+    const Lookup& l = lookups[i / mus.size()];
+    const float mu = mus[i % mus.size()];
+    EXPECT_EQ(concurrent[i], look_up(i)) << "eta " << l.eta << ", mu " << mu;
+    EXPECT_NEAR(concurrent[i], integrate_rough_dielectric_albedo(mu, 0.3f, l.eta, l.fresnel, 64), 5e-3)
+        << "eta " << l.eta << ", mu " << mu;
   }
 }
 
