@@ -33,8 +33,11 @@ TEST(OctahedralNormal, AxesFoldsAndSeamsKeepTheirSigns) {
     const Vec3 n = normalize(v);
     const Vec3 back = decode_octahedral(encode_octahedral(n));
     EXPECT_LT(angle(n, back), 5e-5) << n.x << " " << n.y << " " << n.z;
-    for (int k = 0; k < 3; ++k)
-      if (std::fabs(n[k]) > 1e-3f) EXPECT_EQ(std::signbit(back[k]), std::signbit(n[k])) << k;
+    for (int k = 0; k < 3; ++k) {
+      if (std::fabs(n[k]) > 1e-3f) {
+        EXPECT_EQ(std::signbit(back[k]), std::signbit(n[k])) << k;
+      }
+    }
   }
 }
 
