@@ -60,7 +60,7 @@ Color through_medium(const RenderScene& scene, const Workspace::RayTask& task, c
 // where records_primary (with its film motion where records_motion).
 RTPRO_AVX2_CLONES
 void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler, std::span<const SampleKey> keys,
-                     const Workspace::Generation& generation, int depth, bool records_primary, bool records_motion,
+                     const Workspace::GenerationView& generation, int depth, bool records_primary, bool records_motion,
                      std::span<SampleResult> results, Workspace& ws) {
   ws.surfaces.clear();
   ws.shadow_queries.clear();
@@ -183,7 +183,7 @@ void queue_dielectric_children(const Dielectric& glass, const Workspace::ShadedS
 // sample and queues the reflection and refraction rays of the next generation. Glass has no
 // diffuse part: only highlights, then its two children.
 RTPRO_AVX2_CLONES
-void light_surfaces(const RenderScene& scene, const Workspace::Generation& generation, int depth,
+void light_surfaces(const RenderScene& scene, const Workspace::GenerationView& generation, int depth,
                     std::span<SampleResult> results, Workspace& ws) {
   ws.next.clear();
   for (const Workspace::ShadedSurface& s : ws.surfaces) {
@@ -216,7 +216,8 @@ void light_surfaces(const RenderScene& scene, const Workspace::Generation& gener
 }
 
 // Each shadow ray's sample's time (nothing while the shutter is closed).
-void times_of_shadow_rays(std::span<const float> sample_times, const Workspace::Generation& generation, Workspace& ws) {
+void times_of_shadow_rays(std::span<const float> sample_times, const Workspace::GenerationView& generation,
+                          Workspace& ws) {
   ws.shadow_times.resize(sample_times.empty() ? 0 : ws.shadow_rays.size());
   for (const Workspace::ShadedSurface& s : ws.surfaces)
     if (!sample_times.empty())
@@ -249,25 +250,26 @@ void WhittedIntegrator::trace(const CameraBatch& batch, RayCounts& counts, Works
     results[i] = SampleResult{};
     ws.current.tasks[i] = {i, Color(1.0f)};
   }
-  ws.current.rays.assign(camera_rays.begin(), camera_rays.end());
   counts[RayKind::kCamera] += camera_rays.size();
 
-  for (int depth = 0; !ws.current.rays.empty(); ++depth) {
-    ws.hits.resize(ws.current.rays.size());
+  for (int depth = 0;; ++depth) {
+    const Workspace::GenerationView generation{ws.current.tasks,
+                                               depth == 0 ? camera_rays : std::span<const Ray>(ws.current.rays)};
+    if (generation.rays.empty()) break;
+    ws.hits.resize(generation.rays.size());
     times_of_samples(
-        batch.times, std::span<const Workspace::RayTask>(ws.current.tasks),
-        [](const Workspace::RayTask& task) { return task.sample; }, ws.ray_times);
-    backend_.intersect(ws.current.rays, ws.ray_times, ws.hits,
+        batch.times, generation.tasks, [](const Workspace::RayTask& task) { return task.sample; }, ws.ray_times);
+    backend_.intersect(generation.rays, ws.ray_times, ws.hits,
                        depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
-    gather_surfaces(scene, sampler_, keys, ws.current, depth, records_primary_, records_motion_, results, ws);
+    gather_surfaces(scene, sampler_, keys, generation, depth, records_primary_, records_motion_, results, ws);
 
     ws.occluded.resize(ws.shadow_rays.size());
-    times_of_shadow_rays(batch.times, ws.current, ws);
+    times_of_shadow_rays(batch.times, generation, ws);
     occluded_with_shadow_linking(backend_, scene.links, ws.shadow_rays, ws.shadow_times, ws.shadow_lights, ws.occluded,
                                  depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
     counts[RayKind::kShadow] += ws.shadow_rays.size();
 
-    light_surfaces(scene, ws.current, depth, results, ws);
+    light_surfaces(scene, generation, depth, results, ws);
     // Summed in a local: a store to the counts in the loop would reload every task's field.
     std::uint64_t refracted = 0;
     for (const Workspace::RayTask& task : ws.next.tasks) refracted += task.refracted;

@@ -78,6 +78,12 @@ class ShadingWorkspace {
     }
   };
 
+  // A generation as it is read: the first one's rays are the camera batch's own, not a copy.
+  struct GenerationView {
+    std::span<const RayTask> tasks;
+    std::span<const Ray> rays;
+  };
+
   Generation current, next;
   std::vector<Hit> hits;
   std::vector<ShadedSurface> surfaces;

@@ -80,7 +80,7 @@ constexpr std::size_t kMaxLanedLights = 8;
 // that illuminate its object, one surface at a time.
 RTPRO_AVX2_CLONES
 void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sampler, std::span<const SampleKey> keys,
-                       const Workspace::Generation& generation, int depth, Workspace& ws) {
+                       const Workspace::GenerationView& generation, int depth, Workspace& ws) {
   const std::size_t light_count = scene.lights.size();
   const bool radiometric = is_radiometric(scene);
   bool laned = light_count <= kMaxLanedLights && !scene.links.linked() && !radiometric;

@@ -13,6 +13,6 @@ namespace rtpro {
 // (each surface's range in its first_shadow and end_shadow): surface by surface, lights in scene
 // order.
 void queue_shadow_rays(const RenderScene& scene, const StratifiedSampler& sampler, std::span<const SampleKey> keys,
-                       const ShadingWorkspace::Generation& generation, int depth, ShadingWorkspace& ws);
+                       const ShadingWorkspace::GenerationView& generation, int depth, ShadingWorkspace& ws);
 
 }  // namespace rtpro
