@@ -50,7 +50,7 @@ TEST(SurfaceBatch, FlatAndSmoothMeshHitsInOneBatchAreMakeSurfaceOfEachHit) {
   SurfacePoint untouched;
   untouched.material = 12345;
   std::vector<SurfacePoint> batch(hits.size(), untouched);
-  make_surfaces(scene, rays, hits, batch);
+  make_surfaces(scene, true, rays, hits, batch);
 
   int on_mesh[2] = {0, 0};
   for (std::size_t i = 0; i < hits.size(); ++i) {

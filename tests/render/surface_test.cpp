@@ -193,7 +193,7 @@ TEST(Surface, ABatchOfHitsIsMakeSurfaceOfEachHit) {
   SurfacePoint untouched;
   untouched.material = 12345;
   std::vector<SurfacePoint> batch(hits.size(), untouched);
-  make_surfaces(scene, rays, hits, batch);
+  make_surfaces(scene, true, rays, hits, batch);
   int plain_spheres = 0, plain_triangles = 0, misses = 0, others = 0;
   for (std::size_t i = 0; i < hits.size(); ++i) {
     const int hit = static_cast<int>(i);

@@ -6,6 +6,7 @@
 #include "medium_shadows.h"
 #include "path_vertex_step.h"
 #include "sample_times.h"
+#include "hit_prefetch.h"
 #include "surface_batch.h"
 
 #include <limits>
@@ -54,7 +55,7 @@ std::span<const SampleKey> path_keys(std::span<const SampleKey> keys, PathWorksp
 PathIntegrator::PathIntegrator(const RenderScene& scene, const Backend& backend, const CameraSamplers& samplers,
                                const TextureLookup* textures, const EnvironmentLight* environment, bool records_motion)
     : scene_(scene), backend_(backend), samplers_(samplers), textures_(textures), lights_(scene, environment),
-      draws_(vertex_draws(scene, lights_)), records_motion_(records_motion) {
+      draws_(vertex_draws(scene, lights_)), records_motion_(records_motion), prefetch_hits_(hit_prefetch_pays(scene)) {
   prepare_material_bsdfs(scene);
 }
 
@@ -100,7 +101,7 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
     ws.shadow_lights.clear();
     ws.medium_shadows.clear();
     ws.surfaces.resize(ws.rays.size());
-    make_surfaces(scene, ws.rays, ws.ray_times, ws.hits, ws.surfaces);
+    make_surfaces(scene, prefetch_hits_, ws.rays, ws.ray_times, ws.hits, ws.surfaces);
     // Media track every generation's rays, the last's too, with the vertex's numbers.
     if (generation < scene.render.max_depth || draws_.medium) {
       ws.samples.draw(sampler, path_keys(batch.keys, ws), generation, draws_);

@@ -146,6 +146,7 @@ class PathIntegrator {
   LightSet lights_;
   VertexDraws draws_;    // which of a vertex's random numbers the scene reads
   bool records_motion_;  // the camera hits' film motion (the motion AOV)
+  bool prefetch_hits_;   // hit_prefetch_pays(scene)
 };
 
 }  // namespace rtpro

@@ -61,7 +61,7 @@ Color through_medium(const RenderScene& scene, const Workspace::RayTask& task, c
 RTPRO_AVX2_CLONES
 void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler, std::span<const SampleKey> keys,
                      const Workspace::GenerationView& generation, int depth, bool records_primary, bool records_motion,
-                     std::span<SampleResult> results, Workspace& ws) {
+                     bool prefetch_hits, std::span<SampleResult> results, Workspace& ws) {
   ws.surfaces.clear();
   ws.shadow_queries.clear();
   ws.shadow_rays.clear();
@@ -110,7 +110,7 @@ void gather_surfaces(const RenderScene& scene, const StratifiedSampler& sampler,
     s.mirror = reflect(normalize(ray.dir), s.point.shading_normal);
     complete(s);
   };
-  const HitPrefetch prefetch(scene, ws.hits, ws.ray_times);
+  const HitPrefetch prefetch(scene, prefetch_hits, ws.hits, ws.ray_times);
   for (std::uint32_t i = 0; i < generation.tasks.size(); ++i) {
     prefetch.before(i);
     const Workspace::RayTask& task = generation.tasks[i];
@@ -261,7 +261,8 @@ void WhittedIntegrator::trace(const CameraBatch& batch, RayCounts& counts, Works
         batch.times, generation.tasks, [](const Workspace::RayTask& task) { return task.sample; }, ws.ray_times);
     backend_.intersect(generation.rays, ws.ray_times, ws.hits,
                        depth == 0 ? RayCoherence::kCoherent : RayCoherence::kIncoherent);
-    gather_surfaces(scene, sampler_, keys, generation, depth, records_primary_, records_motion_, results, ws);
+    gather_surfaces(scene, sampler_, keys, generation, depth, records_primary_, records_motion_, prefetch_hits_,
+                    results, ws);
 
     ws.occluded.resize(ws.shadow_rays.size());
     times_of_shadow_rays(batch.times, generation, ws);

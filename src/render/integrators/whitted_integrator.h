@@ -23,6 +23,7 @@
 #include "rtpro/render/sample_result.h"
 #include "rtpro/render/ray_counts.h"
 #include "rtpro/render/sampler.h"
+#include "hit_prefetch.h"
 #include "surface.h"
 #include "rtpro/scene/render_scene.h"
 
@@ -115,7 +116,7 @@ class WhittedIntegrator {
                     const TextureLookup* textures, const EnvironmentLight* environment, bool records_primary,
                     bool records_motion)
       : scene_(scene), backend_(backend), sampler_(sampler), textures_(textures), environment_(environment),
-        records_primary_(records_primary), records_motion_(records_motion) {}
+        records_primary_(records_primary), records_motion_(records_motion), prefetch_hits_(hit_prefetch_pays(scene)) {}
 
   // Traces and shades the batch; area lights draw their shadow samples from the sampler with each
   // sample's key. Ray counts are added to `counts`.
@@ -129,6 +130,7 @@ class WhittedIntegrator {
   const EnvironmentLight* environment_;
   bool records_primary_;
   bool records_motion_;
+  bool prefetch_hits_;  // hit_prefetch_pays(scene)
 };
 
 }  // namespace rtpro

@@ -245,7 +245,7 @@ void make_triangle_surfaces4(const RenderScene& scene, const Ray* const rays[4],
 // Cloned itself, so that the four-at-a-time kernels inline into each version rather than being
 // called through their dispatchers.
 RTPRO_AVX2_CLONES
-void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::span<const Hit> hits,
+void make_surfaces(const RenderScene& scene, bool prefetch, std::span<const Ray> rays, std::span<const Hit> hits,
                    std::span<SurfacePoint> out) {
   // The hits waiting for three more of their kind, with what classifying them looked up.
   struct Waiting {
@@ -278,9 +278,9 @@ void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::spa
     waiting.materials[waiting.count] = material;
     waiting.add(rays[i], hits[i], out[i]);
   };
-  const HitPrefetch prefetch(scene, hits);
+  const HitPrefetch prefetcher(scene, prefetch, hits);
   for (std::size_t i = 0; i < hits.size(); ++i) {
-    prefetch.before(i);
+    prefetcher.before(i);
     const Hit& hit = hits[i];
     if (!hit.valid()) continue;
     // The tests of is_plain_sphere_hit and is_plain_triangle_hit, the geometry looked up once.
@@ -326,12 +326,12 @@ void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::spa
       make_surface(scene, *waiting->rays[k], *waiting->hits[k], *waiting->points[k]);
 }
 
-void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::span<const float> times,
+void make_surfaces(const RenderScene& scene, bool prefetch, std::span<const Ray> rays, std::span<const float> times,
                    std::span<const Hit> hits, std::span<SurfacePoint> out) {
-  if (times.empty()) return make_surfaces(scene, rays, hits, out);
-  const HitPrefetch prefetch(scene, hits, times);
+  if (times.empty()) return make_surfaces(scene, prefetch, rays, hits, out);
+  const HitPrefetch prefetcher(scene, prefetch, hits, times);
   for (std::size_t i = 0; i < hits.size(); ++i) {
-    prefetch.before(i);
+    prefetcher.before(i);
     if (hits[i].valid()) make_surface_at(scene, rays[i], times[i], hits[i], out[i]);
   }
 }

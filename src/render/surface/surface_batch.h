@@ -42,12 +42,12 @@ void make_triangle_surfaces4(const RenderScene& scene, const Ray* const rays[4],
 // make_surface for each valid hit: out[i] is make_surface(scene, rays[i], hits[i]) bit for bit, and
 // the entries of misses are left as they were. Plain sphere and plain triangle hits go four at a
 // time through make_sphere_surfaces4 and make_triangle_surfaces4: one latency chain of square roots
-// and divisions for four surfaces.
-void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::span<const Hit> hits,
+// and divisions for four surfaces. `prefetch`: hit_prefetch_pays(scene) (hit_prefetch.h).
+void make_surfaces(const RenderScene& scene, bool prefetch, std::span<const Ray> rays, std::span<const Hit> hits,
                    std::span<SurfacePoint> out);
 // The same for rays at `times` (scene/motion.h; empty: the call above), one by one with
 // make_surface_at.
-void make_surfaces(const RenderScene& scene, std::span<const Ray> rays, std::span<const float> times,
+void make_surfaces(const RenderScene& scene, bool prefetch, std::span<const Ray> rays, std::span<const float> times,
                    std::span<const Hit> hits, std::span<SurfacePoint> out);
 
 }  // namespace rtpro
