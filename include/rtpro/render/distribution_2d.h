@@ -39,9 +39,9 @@ class Distribution1D {
 
 // width × height cells over [0,1)²: a marginal distribution over rows, a conditional one along
 // each row. `func` is row-major (row 0 at v = 0). Rows are built in parallel (oneTBB); the result
-// does not depend on the thread count. Every row's values and cdf lie in one array in huge pages:
-// as a Distribution1D each, a 1024×512 image's rows were a thousand allocations whose first
-// touches were ~400 page faults of ~13 µs.
+// does not depend on the thread count. Every row's values and cdf lie in one array in huge pages
+// rather than in a Distribution1D each: a 1024×512 image's rows would be a thousand allocations,
+// each faulting on its first touch (~13 µs a fault on the VMs rtpro is measured on).
 class Distribution2D {
  public:
   Distribution2D() = default;
