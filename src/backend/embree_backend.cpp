@@ -107,7 +107,7 @@ class EmbreeBackend final : public Backend {
     alignas(16) RTCRayHit query;
     to_embree(ray, 0, query, time);
     rtcIntersect1(scenes_.top.get(), &context.base, &query);
-    return from_embree(query, scenes_.piece_table, hit);
+    return from_embree(query, scenes_.hit_ids, hit);
   }
 
   // Where only spheres can be hit (packets_), every batch goes in packets of eight, camera rays
@@ -176,7 +176,7 @@ class EmbreeBackend final : public Backend {
   }
 
  private:
-  EmbreeRayTarget target() const { return {scenes_.top.get(), gate_, wide_loads_, scenes_.piece_table}; }
+  EmbreeRayTarget target() const { return {scenes_.top.get(), gate_, wide_loads_, scenes_.hit_ids}; }
 
   std::shared_ptr<EmbreeDevice> device_;
   // Rays go to Embree in packets of eight (rtcIntersect8, rtcOccluded8): one traversal

@@ -13,7 +13,7 @@ namespace rtpro {
 namespace {
 
 // Lane `lane` of an answered packet, or nothing where it hit nothing.
-bool hit_of_lane(const RTCRayHit8& packet, unsigned lane, const EmbreePieces& pieces, Hit& hit) {
+bool hit_of_lane(const RTCRayHit8& packet, unsigned lane, const EmbreeHitIds& hit_ids, Hit& hit) {
   if (packet.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID) return false;
   hit.t = packet.ray.tfar[lane];
   hit.u = packet.hit.u[lane];
@@ -21,7 +21,7 @@ bool hit_of_lane(const RTCRayHit8& packet, unsigned lane, const EmbreePieces& pi
   hit.geom_id = packet.hit.geomID[lane];
   hit.prim_id = packet.hit.primID[lane];
   hit.inst_id = packet.hit.instID[0][lane];
-  pieces.resolve(hit);
+  hit_ids.resolve(hit);
   return true;
 }
 
@@ -123,7 +123,7 @@ RTPRO_AVX2_CLONES void intersect_one_by_one(const EmbreeRayTarget& target, std::
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(target.scene, &context.base, &query);
-    from_embree(query, target.pieces, hit);
+    from_embree(query, target.hit_ids, hit);
   }
 }
 
@@ -173,7 +173,7 @@ RTPRO_AVX2_CLONES void intersect_stream(const EmbreeRayTarget& target, std::span
                    sizeof(RTCRayHit8));
     for (unsigned k = 0; k < count; ++k) {
       hits[first + k] = Hit{};
-      hit_of_lane(packets[k / kPacket], k % kPacket, target.pieces, hits[first + k]);
+      hit_of_lane(packets[k / kPacket], k % kPacket, target.hit_ids, hits[first + k]);
     }
   }
 }
@@ -255,7 +255,7 @@ RTPRO_AVX2_CLONES void intersect_packets(const EmbreeRayTarget& target, std::spa
     rtcInitIntersectContext(&context.base);
     context.closest_user_hits = closest_user_hits;
     rtcIntersect8(valid, target.scene, &context.base, &packet);
-    for (unsigned k = 0; k < count; ++k) hit_of_lane(packet, k, target.pieces, hits[slots[k]]);
+    for (unsigned k = 0; k < count; ++k) hit_of_lane(packet, k, target.hit_ids, hits[slots[k]]);
   }
 }
 

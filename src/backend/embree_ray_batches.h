@@ -2,7 +2,7 @@
 // The Embree backend's batches: a coherent stream goes to Embree as packets of eight in its own
 // layout (rtcIntersectNM), and in scenes without triangles every batch goes as packets of eight
 // (rtcIntersect8) whose sphere callbacks decide each hit. Each ray's answer is the single-ray one.
-#include "embree_pieces.h"
+#include "embree_hit_ids.h"
 #include "ray_gate.h"
 #include "rtpro/backend/hit.h"
 #include "rtpro/core/ray.h"
@@ -16,12 +16,12 @@
 namespace rtpro {
 
 // What a batch is traced against: the top-level scene, the backend's gate, whether eight
-// rays load at once (load_traceable_lanes needs AVX2), and the meshes built in pieces.
+// rays load at once (load_traceable_lanes needs AVX2), and how its ids become rtpro's.
 struct EmbreeRayTarget {
   RTCScene scene;
   const RayGate& gate;
   bool wide_loads;
-  const EmbreePieces& pieces;
+  const EmbreeHitIds& hit_ids;
 };
 
 // std::nextafter(t, 0.0f) without the libm call (0.7% of a render): one step towards zero is one
@@ -32,7 +32,7 @@ inline float one_step_towards_zero(float t) {
 }
 
 // An answered Embree query as rtpro's hit, or false where it hit nothing.
-inline bool from_embree(const RTCRayHit& in, const EmbreePieces& pieces, Hit& hit) {
+inline bool from_embree(const RTCRayHit& in, const EmbreeHitIds& hit_ids, Hit& hit) {
   if (in.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
   hit.t = in.ray.tfar;
   hit.u = in.hit.u;
@@ -40,7 +40,7 @@ inline bool from_embree(const RTCRayHit& in, const EmbreePieces& pieces, Hit& hi
   hit.geom_id = in.hit.geomID;
   hit.prim_id = in.hit.primID;
   hit.inst_id = in.hit.instID[0];
-  pieces.resolve(hit);
+  hit_ids.resolve(hit);
   return true;
 }
 

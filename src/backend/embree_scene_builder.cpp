@@ -141,7 +141,7 @@ void build_pieces(EmbreeDevice::Session& session, const TriangleMesh& mesh, std:
     rtcCommitScene(piece.get());
     session.check("the BVH build of " + where);
     scenes.pieces.push_back(std::move(piece));
-    scenes.piece_table.pieces.push_back({g, first});
+    scenes.hit_ids.pieces.pieces.push_back({g, first});
   }
 }
 
@@ -157,17 +157,44 @@ EmbreeGeometry new_piece_instance(RTCDevice device, RTCScene piece) {
   return geometry;
 }
 
+// Whether the top group's instances give their prototypes' shapes to the top scene
+// (EmbreeHitIds), so that it holds no instance: each places its prototype as is, nothing else
+// places that prototype (or its BVH would be built twice), and the prototype is built with the top
+// scene's flags (robust or not). All or none: beside a single remaining instance the top scene
+// holds two trees that every ray walks (`animated_shot.gltf`'s floor inlined beside its moving box
+// took 1.2× as long).
+bool top_instances_inlined(const RenderScene& scene, const EmbreeBuildSettings& settings) {
+  std::vector<std::uint32_t> placements(scene.prototypes.size(), 0);
+  for (const Geometry& geometry : scene.top.geometries)
+    if (const auto* instance = std::get_if<Instance>(&geometry)) ++placements[instance->prototype];
+  const RTCSceneFlags top_flags = embree_group_flags(scene.top, scene.prototypes, settings);
+  bool any = false;
+  for (const Geometry& geometry : scene.top.geometries) {
+    const auto* instance = std::get_if<Instance>(&geometry);
+    if (instance == nullptr) continue;
+    if (!instance->places_as_is() || placements[instance->prototype] != 1 ||
+        embree_group_flags(scene.prototypes[instance->prototype], {}, settings) != top_flags)
+      return false;
+    any = true;
+  }
+  return any;
+}
+
+// `top`: the top group's pieces and inlined shapes, attached after its own geometries.
 EmbreeScene build_group(EmbreeDevice::Session& session, const Group& group, int group_index,
                         std::span<const Group> prototype_groups, const std::vector<EmbreeScene>& prototypes,
-                        const EmbreeBuildSettings& settings, const EmbreeScenes* pieces = nullptr) {
+                        const EmbreeBuildSettings& settings, const EmbreeScenes* top = nullptr) {
   RTCDevice device = session.device();
   const std::string where = group_name(group_index);
   EmbreeScene scene = new_scene(session, embree_group_flags(group, prototype_groups, settings), settings, where);
 
   for (std::uint32_t g = 0; g < group.geometries.size(); ++g) {
     const Geometry& geometry = group.geometries[g];
-    if (is_empty(geometry)) continue;                              // nothing to hit; ids need not be contiguous
-    if (pieces != nullptr && built_in_pieces(geometry)) continue;  // its pieces' instances stand for it
+    if (is_empty(geometry)) continue;                           // nothing to hit; ids need not be contiguous
+    if (top != nullptr && built_in_pieces(geometry)) continue;  // its pieces' instances stand for it
+    if (const auto* instance = std::get_if<Instance>(&geometry);
+        instance != nullptr && !prototypes[instance->prototype])
+      continue;  // its prototype's shapes stand for it (top_instances_inlined)
     EmbreeGeometry embree_geometry;
     std::visit(
         Overloaded{
@@ -180,13 +207,30 @@ EmbreeScene build_group(EmbreeDevice::Session& session, const Group& group, int 
     rtcAttachGeometryByID(scene.get(), embree_geometry.get(), g);
     session.check("attaching geometry " + std::to_string(g) + " of " + where);
   }
-  if (pieces != nullptr) {
-    for (std::size_t k = 0; k < pieces->pieces.size(); ++k) {
-      const auto id = static_cast<std::uint32_t>(pieces->piece_table.first_instance + k);
-      const EmbreeGeometry instance = new_piece_instance(device, pieces->pieces[k].get());
+  if (top != nullptr) {
+    for (std::size_t k = 0; k < top->pieces.size(); ++k) {
+      const auto id = static_cast<std::uint32_t>(top->hit_ids.pieces.first_instance + k);
+      const EmbreeGeometry instance = new_piece_instance(device, top->pieces[k].get());
       session.check("creation of the instance of piece " + std::to_string(k));
       rtcAttachGeometryByID(scene.get(), instance.get(), id);
       session.check("attaching the instance of piece " + std::to_string(k));
+    }
+    for (std::size_t k = 0; k < top->hit_ids.inlined.size(); ++k) {
+      const EmbreeInlinedShape& shape = top->hit_ids.inlined[k];
+      const Instance& instance = std::get<Instance>(group.geometries[shape.instance]);
+      const Geometry& geometry = prototype_groups[instance.prototype].geometries[shape.geometry];
+      const std::string what = "geometry " + std::to_string(shape.geometry) + " of " +
+                               group_name(static_cast<int>(instance.prototype)) + " in the top scene";
+      EmbreeGeometry embree_geometry;
+      std::visit(Overloaded{[](const Instance&) {},  // prototypes hold no instances (validate_group)
+                            [&](const auto& shapes) {
+                              embree_geometry = new_embree_geometry(device, shapes, settings.quality);
+                            }},
+                 geometry);
+      session.check("creation of " + what);
+      rtcAttachGeometryByID(scene.get(), embree_geometry.get(),
+                            top->hit_ids.first_inlined + static_cast<std::uint32_t>(k));
+      session.check("attaching " + what);
     }
   }
   rtcCommitScene(scene.get());
@@ -216,14 +260,29 @@ EmbreeScenes build_embree_scenes(EmbreeDevice::Session& session, const RenderSce
     validate_group(scene.prototypes[p], static_cast<int>(p), {});
   validate_group(scene.top, -1, scene.prototype_bounds());
 
+  std::vector<bool> inlined(scene.prototypes.size(), false);
+  if (top_instances_inlined(scene, settings))
+    for (const Geometry& geometry : scene.top.geometries)
+      if (const auto* instance = std::get_if<Instance>(&geometry)) inlined[instance->prototype] = true;
+
   EmbreeScenes scenes;
   scenes.prototypes.reserve(scene.prototypes.size());
   for (std::size_t p = 0; p < scene.prototypes.size(); ++p)
-    scenes.prototypes.push_back(build_group(session, scene.prototypes[p], static_cast<int>(p), {}, {}, settings));
-  scenes.piece_table.first_instance = static_cast<std::uint32_t>(scene.top.geometries.size());
+    scenes.prototypes.push_back(
+        inlined[p] ? EmbreeScene() : build_group(session, scene.prototypes[p], static_cast<int>(p), {}, {}, settings));
+  scenes.hit_ids.pieces.first_instance = static_cast<std::uint32_t>(scene.top.geometries.size());
   for (std::uint32_t g = 0; g < scene.top.geometries.size(); ++g)
     if (built_in_pieces(scene.top.geometries[g]))
       build_pieces(session, std::get<TriangleMesh>(scene.top.geometries[g]), g, settings, scenes);
+  scenes.hit_ids.first_inlined =
+      scenes.hit_ids.pieces.first_instance + static_cast<std::uint32_t>(scenes.hit_ids.pieces.pieces.size());
+  for (std::uint32_t g = 0; g < scene.top.geometries.size(); ++g) {
+    const auto* instance = std::get_if<Instance>(&scene.top.geometries[g]);
+    if (instance == nullptr || !inlined[instance->prototype]) continue;
+    const Group& prototype = scene.prototypes[instance->prototype];
+    for (std::uint32_t k = 0; k < prototype.geometries.size(); ++k)
+      if (!is_empty(prototype.geometries[k])) scenes.hit_ids.inlined.push_back({g, k});
+  }
   scenes.top = build_group(session, scene.top, -1, scene.prototypes, scenes.prototypes, settings, &scenes);
   return scenes;
 }

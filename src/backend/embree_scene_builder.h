@@ -5,7 +5,7 @@
 #include "rtpro/backend/backend.h"
 #include "embree_device.h"
 #include "embree_handles.h"
-#include "embree_pieces.h"
+#include "embree_hit_ids.h"
 #include "rtpro/scene/render_scene.h"
 
 #include <embree3/rtcore.h>
@@ -33,9 +33,9 @@ RTCSceneFlags embree_group_flags(const Group& group, std::span<const Group> prot
 
 struct EmbreeScenes {
   std::vector<EmbreeScene> prototypes;
-  std::vector<EmbreeScene> pieces;  // of top-level meshes built in pieces, in `piece_table`'s order
+  std::vector<EmbreeScene> pieces;  // of top-level meshes built in pieces, in `hit_ids.pieces`' order
   EmbreeScene top;
-  EmbreePieces piece_table;
+  EmbreeHitIds hit_ids;
 };
 
 // Builds and commits everything: prototypes first, then the pieces of top-level meshes ordered in

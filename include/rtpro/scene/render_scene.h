@@ -27,6 +27,7 @@
 #include <span>
 #include <variant>
 #include <vector>
+#include <cstring>
 
 namespace rtpro {
 
@@ -39,6 +40,12 @@ struct Instance {
   std::vector<Affine> object_to_world_steps = {};
 
   bool moving() const { return !object_to_world_steps.empty(); }
+  // Static and placed by the identity, bit for bit: a ray in its prototype's space has the ray's
+  // own coordinates, so a backend may trace the prototype's shapes as if they stood in the top group.
+  bool places_as_is() const {
+    const Affine identity;
+    return !moving() && std::memcmp(&object_to_world, &identity, sizeof(Affine)) == 0;
+  }
 };
 
 // A moving instance's placement at ray time `time` in [0, 1] and its inverse (nothing when the

@@ -1,0 +1,107 @@
+// Instances that place their prototypes as is (Instance::places_as_is) give their shapes to the
+// Embree top scene when every top-level instance does: every ray must get exactly the answer it
+// gets through the instances, reported as the instance's hit (its id, the shape's id in the
+// prototype), and the native backend's.
+#include "rtpro/backend/backend.h"
+#include "rtpro/core/fp_env.h"
+#include "test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace rtpro {
+namespace embree_inlined_instances_test {
+
+// A top-level sphere set, then two prototypes placed as is: one of spheres and a mesh, one of a
+// mesh. `with_far_copy` places prototype 1 once more, translated far from every test ray, so that
+// no instance is inlined (a prototype placed twice keeps its instances).
+RenderScene scene_with_identity_instances(bool with_far_copy) {
+  std::mt19937 rng(8);
+  RenderScene scene = test::empty_scene();
+  scene.top.geometries.emplace_back(test::random_spheres(rng, 20, 4.0f));
+  Group& first = scene.prototypes.emplace_back();
+  first.geometries.emplace_back(test::random_spheres(rng, 30, 4.0f));
+  first.geometries.emplace_back(test::random_triangles(rng, 300, 4.0f));
+  Group& second = scene.prototypes.emplace_back();
+  second.geometries.emplace_back(test::random_triangles(rng, 300, 4.0f));
+  scene.top.geometries.emplace_back(Instance{0, Affine::identity(), Affine::identity()});
+  scene.top.geometries.emplace_back(Instance{1, Affine::identity(), Affine::identity()});
+  if (with_far_copy) {
+    const Affine far = Affine::translate({1000.0f, 1000.0f, 1000.0f});
+    scene.top.geometries.emplace_back(Instance{1, far, Affine::translate({-1000.0f, -1000.0f, -1000.0f})});
+  }
+  return scene;
+}
+
+std::vector<Ray> test_rays() {
+  std::mt19937 rng(12);
+  std::vector<Ray> rays;
+  for (int i = 0; i < 4000; ++i) {
+    Ray ray = test::random_ray(rng, 6.0f);
+    if (i % 3 == 1) ray.tfar = 2.0f;
+    rays.push_back(ray);
+  }
+  return rays;
+}
+
+void expect_same_hit(const Hit& a, const Hit& b, std::size_t i) {
+  ASSERT_EQ(a.valid(), b.valid()) << i;
+  if (!a.valid()) return;
+  EXPECT_EQ(a.t, b.t) << i;
+  EXPECT_EQ(a.u, b.u) << i;
+  EXPECT_EQ(a.v, b.v) << i;
+  EXPECT_EQ(a.inst_id, b.inst_id) << i;
+  EXPECT_EQ(a.geom_id, b.geom_id) << i;
+  EXPECT_EQ(a.prim_id, b.prim_id) << i;
+}
+
+class EmbreeInlinedInstances : public ::testing::Test {
+ protected:
+  void SetUp() override { set_tracing_fp_mode(); }
+};
+
+TEST_F(EmbreeInlinedInstances, EveryRayGetsTheInstancesAnswer) {
+  const RenderScene inlined = scene_with_identity_instances(false), instanced = scene_with_identity_instances(true);
+  ASSERT_TRUE(std::get<Instance>(inlined.top.geometries[1]).places_as_is());
+  const auto in_top = make_backend(BackendKind::kEmbree, inlined, {});
+  const auto through_instances = make_backend(BackendKind::kEmbree, instanced, {});
+  const std::vector<Ray> rays = test_rays();
+  int hits_by_instance[3] = {0, 0, 0};
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    Hit a, b;
+    in_top->intersect(rays[i], a);
+    through_instances->intersect(rays[i], b);
+    expect_same_hit(a, b, i);
+    if (a.valid()) ++hits_by_instance[a.inst_id == kInvalidId ? 0 : a.inst_id];
+    EXPECT_EQ(in_top->occluded(rays[i]), through_instances->occluded(rays[i])) << i;
+  }
+  // Hits on the top-level spheres and on both inlined instances, reported as the instances'.
+  EXPECT_GT(hits_by_instance[0], 10);
+  EXPECT_GT(hits_by_instance[1], 100);
+  EXPECT_GT(hits_by_instance[2], 100);
+
+  for (const RayCoherence coherence : {RayCoherence::kCoherent, RayCoherence::kIncoherent}) {
+    std::vector<Hit> a(rays.size()), b(rays.size());
+    in_top->intersect(rays, a, coherence);
+    through_instances->intersect(rays, b, coherence);
+    for (std::size_t i = 0; i < rays.size(); ++i) expect_same_hit(a[i], b[i], i);
+    std::vector<std::uint8_t> oa(rays.size()), ob(rays.size());
+    in_top->occluded(rays, oa, coherence);
+    through_instances->occluded(rays, ob, coherence);
+    EXPECT_EQ(oa, ob);
+  }
+}
+
+TEST(InstancePlacement, OnlyAStaticBitForBitIdentityPlacesAsIs) {
+  EXPECT_TRUE((Instance{0, Affine::identity(), Affine::identity()}.places_as_is()));
+  Affine negative_zero = Affine::identity();
+  negative_zero.m[0][3] = -0.0f;
+  EXPECT_FALSE((Instance{0, negative_zero, Affine::identity()}.places_as_is()));
+  EXPECT_FALSE((Instance{0, Affine::translate({0.0f, 1e-7f, 0.0f}), Affine::identity()}.places_as_is()));
+  EXPECT_FALSE(
+      (Instance{0, Affine::identity(), Affine::identity(), {Affine::identity(), Affine::identity()}}.places_as_is()));
+}
+
+}  // namespace embree_inlined_instances_test
+}  // namespace rtpro
