@@ -159,8 +159,9 @@ EmbreeGeometry new_piece_instance(RTCDevice device, RTCScene piece) {
 
 // Whether the top group's instances give their prototypes' shapes to the top scene
 // (EmbreeHitIds), so that it holds no instance: each places its prototype as is, nothing else
-// places that prototype (or its BVH would be built twice), and the prototype is built with the top
-// scene's flags (robust or not). All or none: beside a single remaining instance the top scene
+// places that prototype (or its BVH would be built twice), the prototype is built with the top
+// scene's flags (robust or not), and it holds no spheres: their callbacks break ties between
+// equal distances by Embree's ids (embree_user_geometry.h), which inlining would change. All or none: beside a single remaining instance the top scene
 // holds two trees that every ray walks (`animated_shot.gltf`'s floor inlined beside its moving box
 // took 1.2× as long).
 bool top_instances_inlined(const RenderScene& scene, const EmbreeBuildSettings& settings) {
@@ -172,8 +173,11 @@ bool top_instances_inlined(const RenderScene& scene, const EmbreeBuildSettings& 
   for (const Geometry& geometry : scene.top.geometries) {
     const auto* instance = std::get_if<Instance>(&geometry);
     if (instance == nullptr) continue;
-    if (!instance->places_as_is() || placements[instance->prototype] != 1 ||
-        embree_group_flags(scene.prototypes[instance->prototype], {}, settings) != top_flags)
+    const Group& prototype = scene.prototypes[instance->prototype];
+    const bool holds_spheres = std::ranges::any_of(
+        prototype.geometries, [](const Geometry& g) { return std::holds_alternative<SphereSet>(g); });
+    if (!instance->places_as_is() || placements[instance->prototype] != 1 || holds_spheres ||
+        embree_group_flags(prototype, {}, settings) != top_flags)
       return false;
     any = true;
   }

@@ -13,15 +13,15 @@
 namespace rtpro {
 namespace embree_inlined_instances_test {
 
-// A top-level sphere set, then two prototypes placed as is: one of spheres and a mesh, one of a
-// mesh. `with_far_copy` places prototype 1 once more, translated far from every test ray, so that
+// A top-level sphere set, then two prototypes of meshes placed as is (a prototype with spheres
+// keeps its instance: their tie rule reads Embree's ids). `with_far_copy` places prototype 1 once more, translated far from every test ray, so that
 // no instance is inlined (a prototype placed twice keeps its instances).
 RenderScene scene_with_identity_instances(bool with_far_copy) {
   std::mt19937 rng(8);
   RenderScene scene = test::empty_scene();
   scene.top.geometries.emplace_back(test::random_spheres(rng, 20, 4.0f));
   Group& first = scene.prototypes.emplace_back();
-  first.geometries.emplace_back(test::random_spheres(rng, 30, 4.0f));
+  first.geometries.emplace_back(test::random_triangles(rng, 200, 4.0f));
   first.geometries.emplace_back(test::random_triangles(rng, 300, 4.0f));
   Group& second = scene.prototypes.emplace_back();
   second.geometries.emplace_back(test::random_triangles(rng, 300, 4.0f));
