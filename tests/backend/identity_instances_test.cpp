@@ -1,7 +1,8 @@
-// Instances that place their prototypes as is (Instance::places_as_is) give their shapes to the
-// Embree top scene when every top-level instance does: every ray must get exactly the answer it
-// gets through the instances, reported as the instance's hit (its id, the shape's id in the
-// prototype), and the native backend's.
+// Instances that place their prototypes as is (Instance::places_as_is) take shortcuts: Embree
+// gives their shapes to its top scene when every top-level instance does, and the native backend
+// traces their prototypes with the rays themselves. Every ray must get exactly the answer it gets
+// through the instances' transforms, reported as the instance's hit (its id, the shape's id in the
+// prototype).
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/fp_env.h"
 #include "test_scenes.h"
@@ -11,7 +12,7 @@
 #include <random>
 
 namespace rtpro {
-namespace embree_inlined_instances_test {
+namespace identity_instances_test {
 
 // A top-level sphere set, then two prototypes of meshes placed as is (a prototype with spheres
 // keeps its instance: their tie rule reads Embree's ids). `with_far_copy` places prototype 1 once more, translated far from every test ray, so that
@@ -56,12 +57,12 @@ void expect_same_hit(const Hit& a, const Hit& b, std::size_t i) {
   EXPECT_EQ(a.prim_id, b.prim_id) << i;
 }
 
-class EmbreeInlinedInstances : public ::testing::Test {
+class IdentityInstances : public ::testing::Test {
  protected:
   void SetUp() override { set_tracing_fp_mode(); }
 };
 
-TEST_F(EmbreeInlinedInstances, EveryRayGetsTheInstancesAnswer) {
+TEST_F(IdentityInstances, EmbreeGetsTheInstancesAnswer) {
   const RenderScene inlined = scene_with_identity_instances(false), instanced = scene_with_identity_instances(true);
   ASSERT_TRUE(std::get<Instance>(inlined.top.geometries[1]).places_as_is());
   const auto in_top = make_backend(BackendKind::kEmbree, inlined, {});
@@ -93,6 +94,44 @@ TEST_F(EmbreeInlinedInstances, EveryRayGetsTheInstancesAnswer) {
   }
 }
 
+// The same scene placed by an identity whose translation has a −0: the same coordinates, but not
+// placed as is, so the native backend transforms every ray that enters it.
+RenderScene with_transformed_identities(RenderScene scene) {
+  for (Geometry& geometry : scene.top.geometries)
+    if (auto* instance = std::get_if<Instance>(&geometry); instance && instance->places_as_is())
+      instance->object_to_world.m[0][3] = -0.0f;
+  return scene;
+}
+
+TEST_F(IdentityInstances, NativeGetsTheTransformedRaysAnswer) {
+  const RenderScene as_is = scene_with_identity_instances(false);
+  const RenderScene transformed = with_transformed_identities(as_is);
+  ASSERT_FALSE(std::get<Instance>(transformed.top.geometries[1]).places_as_is());
+  const auto shortcut = make_backend(BackendKind::kNative, as_is, {});
+  const auto through_transforms = make_backend(BackendKind::kNative, transformed, {});
+  const std::vector<Ray> rays = test_rays();
+  int instance_hits = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    Hit a, b;
+    shortcut->intersect(rays[i], a);
+    through_transforms->intersect(rays[i], b);
+    expect_same_hit(a, b, i);
+    instance_hits += a.valid() && a.inst_id != kInvalidId;
+    EXPECT_EQ(shortcut->occluded(rays[i]), through_transforms->occluded(rays[i])) << i;
+  }
+  EXPECT_GT(instance_hits, 200);
+  for (const RayCoherence coherence : {RayCoherence::kCoherent, RayCoherence::kIncoherent}) {
+    std::vector<Hit> a(rays.size()), b(rays.size());
+    shortcut->intersect(rays, a, coherence);
+    through_transforms->intersect(rays, b, coherence);
+    for (std::size_t i = 0; i < rays.size(); ++i) expect_same_hit(a[i], b[i], i);
+    std::vector<std::uint8_t> oa(rays.size()), ob(rays.size());
+    shortcut->occluded(rays, oa, coherence);
+    through_transforms->occluded(rays, ob, coherence);
+    EXPECT_EQ(oa, ob);
+  }
+}
+
 TEST(InstancePlacement, OnlyAStaticBitForBitIdentityPlacesAsIs) {
   EXPECT_TRUE((Instance{0, Affine::identity(), Affine::identity()}.places_as_is()));
   Affine negative_zero = Affine::identity();
@@ -103,5 +142,5 @@ TEST(InstancePlacement, OnlyAStaticBitForBitIdentityPlacesAsIs) {
       (Instance{0, Affine::identity(), Affine::identity(), {Affine::identity(), Affine::identity()}}.places_as_is()));
 }
 
-}  // namespace embree_inlined_instances_test
+}  // namespace identity_instances_test
 }  // namespace rtpro
