@@ -5,6 +5,7 @@
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/fp_env.h"
 #include "rtpro/scene/mesh_pieces.h"
+#include "same_hit.h"
 #include "test_scenes.h"
 
 #include <gtest/gtest.h>
@@ -28,28 +29,6 @@ RenderScene scene_in_pieces(bool whole) {
   return scene;
 }
 
-std::vector<Ray> test_rays() {
-  std::mt19937 rng(4);
-  std::vector<Ray> rays;
-  for (int i = 0; i < 4000; ++i) {
-    Ray ray = test::random_ray(rng, 6.0f);
-    if (i % 3 == 1) ray.tfar = 2.0f;
-    rays.push_back(ray);
-  }
-  return rays;
-}
-
-void expect_same_hit(const Hit& a, const Hit& b, std::size_t i) {
-  ASSERT_EQ(a.valid(), b.valid()) << i;
-  if (!a.valid()) return;
-  EXPECT_EQ(a.t, b.t) << i;
-  EXPECT_EQ(a.u, b.u) << i;
-  EXPECT_EQ(a.v, b.v) << i;
-  EXPECT_EQ(a.inst_id, b.inst_id) << i;
-  EXPECT_EQ(a.geom_id, b.geom_id) << i;
-  EXPECT_EQ(a.prim_id, b.prim_id) << i;
-}
-
 class EmbreePieces : public ::testing::Test {
  protected:
   void SetUp() override { set_tracing_fp_mode(); }
@@ -60,13 +39,13 @@ TEST_F(EmbreePieces, EveryRayGetsTheWholeMeshsAnswer) {
   ASSERT_EQ(std::get<TriangleMesh>(pieces.top.geometries[1]).piece_triangles, kMinPieceTriangles);
   const auto in_pieces = make_backend(BackendKind::kEmbree, pieces, {});
   const auto in_one = make_backend(BackendKind::kEmbree, whole, {});
-  const std::vector<Ray> rays = test_rays();
+  const std::vector<Ray> rays = test::scattered_rays(4, 4000, 2.0f);
   int mesh_hits = 0;
   for (std::size_t i = 0; i < rays.size(); ++i) {
     Hit a, b;
     in_pieces->intersect(rays[i], a);
     in_one->intersect(rays[i], b);
-    expect_same_hit(a, b, i);
+    test::expect_same_hit(a, b, i);
     mesh_hits += a.valid() && a.geom_id == 1 && a.inst_id == kInvalidId;
     EXPECT_EQ(in_pieces->occluded(rays[i]), in_one->occluded(rays[i])) << i;
   }
@@ -76,7 +55,7 @@ TEST_F(EmbreePieces, EveryRayGetsTheWholeMeshsAnswer) {
     std::vector<Hit> a(rays.size()), b(rays.size());
     in_pieces->intersect(rays, a, coherence);
     in_one->intersect(rays, b, coherence);
-    for (std::size_t i = 0; i < rays.size(); ++i) expect_same_hit(a[i], b[i], i);
+    for (std::size_t i = 0; i < rays.size(); ++i) test::expect_same_hit(a[i], b[i], i);
     std::vector<std::uint8_t> oa(rays.size()), ob(rays.size());
     in_pieces->occluded(rays, oa, coherence);
     in_one->occluded(rays, ob, coherence);

@@ -5,6 +5,7 @@
 // prototype).
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/fp_env.h"
+#include "same_hit.h"
 #include "test_scenes.h"
 
 #include <gtest/gtest.h>
@@ -35,28 +36,6 @@ RenderScene scene_with_identity_instances(bool with_far_copy) {
   return scene;
 }
 
-std::vector<Ray> test_rays() {
-  std::mt19937 rng(12);
-  std::vector<Ray> rays;
-  for (int i = 0; i < 4000; ++i) {
-    Ray ray = test::random_ray(rng, 6.0f);
-    if (i % 3 == 1) ray.tfar = 2.0f;
-    rays.push_back(ray);
-  }
-  return rays;
-}
-
-void expect_same_hit(const Hit& a, const Hit& b, std::size_t i) {
-  ASSERT_EQ(a.valid(), b.valid()) << i;
-  if (!a.valid()) return;
-  EXPECT_EQ(a.t, b.t) << i;
-  EXPECT_EQ(a.u, b.u) << i;
-  EXPECT_EQ(a.v, b.v) << i;
-  EXPECT_EQ(a.inst_id, b.inst_id) << i;
-  EXPECT_EQ(a.geom_id, b.geom_id) << i;
-  EXPECT_EQ(a.prim_id, b.prim_id) << i;
-}
-
 class IdentityInstances : public ::testing::Test {
  protected:
   void SetUp() override { set_tracing_fp_mode(); }
@@ -67,13 +46,13 @@ TEST_F(IdentityInstances, EmbreeGetsTheInstancesAnswer) {
   ASSERT_TRUE(std::get<Instance>(inlined.top.geometries[1]).places_as_is());
   const auto in_top = make_backend(BackendKind::kEmbree, inlined, {});
   const auto through_instances = make_backend(BackendKind::kEmbree, instanced, {});
-  const std::vector<Ray> rays = test_rays();
+  const std::vector<Ray> rays = test::scattered_rays(12, 4000, 2.0f);
   int hits_by_instance[3] = {0, 0, 0};
   for (std::size_t i = 0; i < rays.size(); ++i) {
     Hit a, b;
     in_top->intersect(rays[i], a);
     through_instances->intersect(rays[i], b);
-    expect_same_hit(a, b, i);
+    test::expect_same_hit(a, b, i);
     if (a.valid()) ++hits_by_instance[a.inst_id == kInvalidId ? 0 : a.inst_id];
     EXPECT_EQ(in_top->occluded(rays[i]), through_instances->occluded(rays[i])) << i;
   }
@@ -86,7 +65,7 @@ TEST_F(IdentityInstances, EmbreeGetsTheInstancesAnswer) {
     std::vector<Hit> a(rays.size()), b(rays.size());
     in_top->intersect(rays, a, coherence);
     through_instances->intersect(rays, b, coherence);
-    for (std::size_t i = 0; i < rays.size(); ++i) expect_same_hit(a[i], b[i], i);
+    for (std::size_t i = 0; i < rays.size(); ++i) test::expect_same_hit(a[i], b[i], i);
     std::vector<std::uint8_t> oa(rays.size()), ob(rays.size());
     in_top->occluded(rays, oa, coherence);
     through_instances->occluded(rays, ob, coherence);
@@ -109,13 +88,13 @@ TEST_F(IdentityInstances, NativeGetsTheTransformedRaysAnswer) {
   ASSERT_FALSE(std::get<Instance>(transformed.top.geometries[1]).places_as_is());
   const auto shortcut = make_backend(BackendKind::kNative, as_is, {});
   const auto through_transforms = make_backend(BackendKind::kNative, transformed, {});
-  const std::vector<Ray> rays = test_rays();
+  const std::vector<Ray> rays = test::scattered_rays(12, 4000, 2.0f);
   int instance_hits = 0;
   for (std::size_t i = 0; i < rays.size(); ++i) {
     Hit a, b;
     shortcut->intersect(rays[i], a);
     through_transforms->intersect(rays[i], b);
-    expect_same_hit(a, b, i);
+    test::expect_same_hit(a, b, i);
     instance_hits += a.valid() && a.inst_id != kInvalidId;
     EXPECT_EQ(shortcut->occluded(rays[i]), through_transforms->occluded(rays[i])) << i;
   }
@@ -124,7 +103,7 @@ TEST_F(IdentityInstances, NativeGetsTheTransformedRaysAnswer) {
     std::vector<Hit> a(rays.size()), b(rays.size());
     shortcut->intersect(rays, a, coherence);
     through_transforms->intersect(rays, b, coherence);
-    for (std::size_t i = 0; i < rays.size(); ++i) expect_same_hit(a[i], b[i], i);
+    for (std::size_t i = 0; i < rays.size(); ++i) test::expect_same_hit(a[i], b[i], i);
     std::vector<std::uint8_t> oa(rays.size()), ob(rays.size());
     shortcut->occluded(rays, oa, coherence);
     through_transforms->occluded(rays, ob, coherence);

@@ -7,6 +7,7 @@
 #include "rtpro/backend/backend.h"
 #include "rtpro/core/fp_env.h"
 #include "rtpro/scene/motion.h"
+#include "same_hit.h"
 #include "test_scenes.h"
 
 #include <gtest/gtest.h>
@@ -86,19 +87,6 @@ RenderScene frozen_at(const RenderScene& scene, float time) {
   return frozen;
 }
 
-void expect_same_hit(const Hit& a, const Hit& b, std::size_t i) {
-  ASSERT_EQ(a.valid(), b.valid()) << "ray " << i;
-  if (!a.valid()) return;
-  const std::string ray =
-      std::to_string(i) + " (geometry " + std::to_string(b.geom_id) + ", instance " + std::to_string(b.inst_id) + ")";
-  EXPECT_EQ(a.t, b.t) << "ray " << ray;
-  EXPECT_EQ(a.u, b.u) << "ray " << ray;
-  EXPECT_EQ(a.v, b.v) << "ray " << ray;
-  EXPECT_EQ(a.inst_id, b.inst_id) << "ray " << ray;
-  EXPECT_EQ(a.geom_id, b.geom_id) << "ray " << ray;
-  EXPECT_EQ(a.prim_id, b.prim_id) << "ray " << ray;
-}
-
 struct TimedRays {
   std::vector<Ray> rays;
   std::vector<float> times;
@@ -137,7 +125,7 @@ TEST_P(MotionTraversal, TimedBatchesAnswerAsSingleRaysAtTheirTimes) {
       for (std::size_t i = 0; i < timed.rays.size(); ++i) {
         Hit single;
         if (!backend->intersect(timed.rays[i], timed.times[i], single)) single = Hit{};
-        expect_same_hit(hits[i], single, i);
+        test::expect_same_hit(hits[i], single, i);
         found += hits[i].valid() ? 1 : 0;
         ASSERT_EQ(occluded[i] == 1, backend->occluded(timed.rays[i], timed.times[i])) << "ray " << i;
         blocked += occluded[i];
@@ -162,7 +150,7 @@ TEST(NativeMotionTraversal, FindsTheHitsOfTheSceneFrozenAtEachRaysTime) {
       if (timed.times[i] != time) continue;
       Hit expected;
       if (!still->intersect(timed.rays[i], expected)) expected = Hit{};
-      expect_same_hit(hits[i], expected, i);
+      test::expect_same_hit(hits[i], expected, i);
       EXPECT_EQ(moving->occluded(timed.rays[i], time), still->occluded(timed.rays[i])) << "ray " << i;
       checked += expected.valid() ? 1 : 0;
     }
