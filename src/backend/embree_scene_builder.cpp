@@ -161,9 +161,9 @@ EmbreeGeometry new_piece_instance(RTCDevice device, RTCScene piece) {
 // (EmbreeHitIds), so that it holds no instance: each places its prototype as is, nothing else
 // places that prototype (or its BVH would be built twice), the prototype is built with the top
 // scene's flags (robust or not), and it holds no spheres: their callbacks break ties between
-// equal distances by Embree's ids (embree_user_geometry.h), which inlining would change. All or none: beside a single remaining instance the top scene
-// holds two trees that every ray walks (`animated_shot.gltf`'s floor inlined beside its moving box
-// took 1.2× as long).
+// equal distances by Embree's ids (embree_user_geometry.h), which inlining would change. All or
+// none: beside a single remaining instance the top scene holds two trees that every ray walks
+// (`animated_shot.gltf`'s floor inlined beside its moving box took 1.2× as long).
 bool top_instances_inlined(const RenderScene& scene, const EmbreeBuildSettings& settings) {
   std::vector<std::uint32_t> placements(scene.prototypes.size(), 0);
   for (const Geometry& geometry : scene.top.geometries)
