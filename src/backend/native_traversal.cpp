@@ -95,8 +95,8 @@ std::optional<Ray> to_object_space_at(const Instance& instance, const Ray& ray, 
 
 // to_object_space_at, but an instance that places its prototype as is takes the ray itself: the
 // identity would give the same coordinates (a zero's sign aside, which no test below reads
-// differently), and a glTF file's meshes are such instances (17% of cornell_box.gltf's profile
-// was their transforms).
+// differently). A glTF file's meshes are such instances; transforming rays into them would be 17%
+// of cornell_box.gltf's native profile.
 std::optional<Ray> in_prototype_space(const Instance& instance, const Ray& ray, float time, float tfar) {
   if (!instance.places_as_is()) return to_object_space_at(instance, ray, time, tfar);
   Ray same = ray;
@@ -500,8 +500,9 @@ std::uint32_t NativeTraversal::any_in_packet_group(const Group& group, const Bvh
   const auto visit = [&](const PrimitiveRef& ref, std::uint32_t lanes) {
     const auto in_instance = [&](const Instance& instance) {
       if (instance.places_as_is()) {  // the lanes as they are (in_prototype_space)
-        blocked |= any_in_packet_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
-                                       prototype_leaves_[instance.prototype], packet, timed, lanes & ~blocked);
+        if ((lanes & ~blocked) != 0)
+          blocked |= any_in_packet_group(scene_.prototypes[instance.prototype], prototype_bvhs_[instance.prototype],
+                                         prototype_leaves_[instance.prototype], packet, timed, lanes & ~blocked);
         return;
       }
       RayPacket local;
