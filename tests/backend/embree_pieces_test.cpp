@@ -51,16 +51,7 @@ TEST_F(EmbreePieces, EveryRayGetsTheWholeMeshsAnswer) {
   }
   EXPECT_GT(mesh_hits, 400);  // the pieces were hit, across the mesh's triangle numbers
 
-  for (const RayCoherence coherence : {RayCoherence::kCoherent, RayCoherence::kIncoherent}) {
-    std::vector<Hit> a(rays.size()), b(rays.size());
-    in_pieces->intersect(rays, a, coherence);
-    in_one->intersect(rays, b, coherence);
-    for (std::size_t i = 0; i < rays.size(); ++i) test::expect_same_hit(a[i], b[i], i);
-    std::vector<std::uint8_t> oa(rays.size()), ob(rays.size());
-    in_pieces->occluded(rays, oa, coherence);
-    in_one->occluded(rays, ob, coherence);
-    EXPECT_EQ(oa, ob);
-  }
+  test::expect_same_batch_answers(*in_pieces, *in_one, rays);
 }
 
 TEST_F(EmbreePieces, TheBuildHoldsLessAtOnce) {

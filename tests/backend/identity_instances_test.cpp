@@ -61,16 +61,7 @@ TEST_F(IdentityInstances, EmbreeGetsTheInstancesAnswer) {
   EXPECT_GT(hits_by_instance[1], 100);
   EXPECT_GT(hits_by_instance[2], 100);
 
-  for (const RayCoherence coherence : {RayCoherence::kCoherent, RayCoherence::kIncoherent}) {
-    std::vector<Hit> a(rays.size()), b(rays.size());
-    in_top->intersect(rays, a, coherence);
-    through_instances->intersect(rays, b, coherence);
-    for (std::size_t i = 0; i < rays.size(); ++i) test::expect_same_hit(a[i], b[i], i);
-    std::vector<std::uint8_t> oa(rays.size()), ob(rays.size());
-    in_top->occluded(rays, oa, coherence);
-    through_instances->occluded(rays, ob, coherence);
-    EXPECT_EQ(oa, ob);
-  }
+  test::expect_same_batch_answers(*in_top, *through_instances, rays);
 }
 
 // The same scene placed by an identity whose translation has a −0: the same coordinates, but not
@@ -99,16 +90,7 @@ TEST_F(IdentityInstances, NativeGetsTheTransformedRaysAnswer) {
     EXPECT_EQ(shortcut->occluded(rays[i]), through_transforms->occluded(rays[i])) << i;
   }
   EXPECT_GT(instance_hits, 200);
-  for (const RayCoherence coherence : {RayCoherence::kCoherent, RayCoherence::kIncoherent}) {
-    std::vector<Hit> a(rays.size()), b(rays.size());
-    shortcut->intersect(rays, a, coherence);
-    through_transforms->intersect(rays, b, coherence);
-    for (std::size_t i = 0; i < rays.size(); ++i) test::expect_same_hit(a[i], b[i], i);
-    std::vector<std::uint8_t> oa(rays.size()), ob(rays.size());
-    shortcut->occluded(rays, oa, coherence);
-    through_transforms->occluded(rays, ob, coherence);
-    EXPECT_EQ(oa, ob);
-  }
+  test::expect_same_batch_answers(*shortcut, *through_transforms, rays);
 }
 
 TEST(InstancePlacement, OnlyAStaticBitForBitIdentityPlacesAsIs) {

@@ -1,6 +1,7 @@
 #pragma once
 // What the backend tests that compare two ways of answering the same rays share: the rays, and
 // the assertion that two answers are the same hit bit for bit.
+#include "rtpro/backend/backend.h"
 #include "rtpro/backend/hit.h"
 #include "rtpro/core/ray.h"
 #include "test_scenes.h"
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <random>
 #include <string>
 #include <vector>
@@ -39,6 +41,21 @@ inline void expect_same_hit(const Hit& a, const Hit& b, std::size_t i) {
   EXPECT_EQ(a.inst_id, b.inst_id) << "ray " << ray;
   EXPECT_EQ(a.geom_id, b.geom_id) << "ray " << ray;
   EXPECT_EQ(a.prim_id, b.prim_id) << "ray " << ray;
+}
+
+// Both backends' batched answers to `rays`, coherent and incoherent alike: the same hits bit for
+// bit and the same occlusion.
+inline void expect_same_batch_answers(const Backend& a, const Backend& b, const std::vector<Ray>& rays) {
+  for (const RayCoherence coherence : {RayCoherence::kCoherent, RayCoherence::kIncoherent}) {
+    std::vector<Hit> hits_a(rays.size()), hits_b(rays.size());
+    a.intersect(rays, hits_a, coherence);
+    b.intersect(rays, hits_b, coherence);
+    for (std::size_t i = 0; i < rays.size(); ++i) expect_same_hit(hits_a[i], hits_b[i], i);
+    std::vector<std::uint8_t> occluded_a(rays.size()), occluded_b(rays.size());
+    a.occluded(rays, occluded_a, coherence);
+    b.occluded(rays, occluded_b, coherence);
+    EXPECT_EQ(occluded_a, occluded_b);
+  }
 }
 
 }  // namespace rtpro::test

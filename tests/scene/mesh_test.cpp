@@ -31,7 +31,9 @@ TEST(VertexArray, SixteenBytesFromTheLastVertexAreReadableAndZero) {
     EXPECT_EQ(last[2], 3.0f);
     EXPECT_EQ(last[3], 0.0f) << count;
     // Elsewhere the fourth lane is the next vertex's x.
-    if (count > 1) EXPECT_EQ(load16(vertices, 0)[3], 2.0f);
+    if (count > 1) {
+      EXPECT_EQ(load16(vertices, 0)[3], 2.0f);
+    }
   }
 }
 

@@ -83,10 +83,11 @@ TEST(YamlMotion, ShutterOpeningShapesTheExposure) {
       "motion.yaml", {});
   EXPECT_EQ(scene.camera.shutter.opening, 0.25f);
   EXPECT_EQ(scene.camera.shutter.closing, 0.75f);
-  for (const std::string& bad : {"[0.75, 0.25]", "[-0.1, 0.5]", "[0.5, 1.5]", "[0.5]"}) {
+  for (const char* bad : {"[0.75, 0.25]", "[-0.1, 0.5]", "[0.5, 1.5]", "[0.5]"}) {
     try {
       parse_scene_text(
-          "rtpro: 1\ncamera: {position: [0, 0, -5], look_at: [0, 0, 0],\n  shutter_opening: " + bad + "}\n",
+          std::string("rtpro: 1\ncamera: {position: [0, 0, -5], look_at: [0, 0, 0],\n  shutter_opening: ") + bad +
+              "}\n",
           "motion.yaml", {});
       FAIL() << bad << ": no error";
     } catch (const InputError& e) {
