@@ -54,5 +54,6 @@ EmbreeGeometry new_embree_geometry(RTCDevice device, const CurveSet& curves, RTC
 // Embree's curve kernels decide the hits, and differ between packets and single rays as its
 // triangle kernels do.
 inline bool hits_decided_by_rtpro(const CurveSet&) { return false; }
+inline bool packet_lanes_answer_alone(const CurveSet&, bool /*compact*/) { return false; }
 
 }  // namespace rtpro

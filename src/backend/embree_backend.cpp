@@ -50,15 +50,42 @@ bool has_triangles(const Group& group) {
   return false;
 }
 
-// Packets keep every ray's answer a function of the ray alone only where rtpro's own callbacks
-// decide each hit. Embree's triangle kernels round packet lanes differently from single rays
-// (2e-5 in a glTF scene), and its hybrid traversal chooses between them by how many lanes of a
-// packet are active, so a triangle hit would depend on which rays share its packet: on tiles,
-// threads and ranks.
+// Where rtpro's own callbacks decide every hit, every batch goes in packets, camera rays too.
+// Elsewhere a packet's answers are known to be each ray's alone only under
+// packet_lanes_answer_alone: Embree's hybrid traversal chooses between packet and single-ray
+// kernels by how many lanes are active, and through instances its packets answered a glTF
+// scene's rays 2e-5 away from single rays, so a hit could depend on which rays share its packet
+// (tiles, threads, ranks).
 bool rays_decided_by_callbacks(const RenderScene& scene) {
   if (has_triangles(scene.top)) return false;
   for (const Group& prototype : scene.prototypes)
     if (has_triangles(prototype)) return false;
+  return true;
+}
+
+// Whether Embree answers every lane of a packet of eight as it answers the ray alone: where the
+// top scene holds every shape itself (no instance geometry: none in the scene, or every one
+// inlined; no mesh in pieces, which are instances too) and each kind's packet kernels compute
+// what its single-ray kernels do (packet_lanes_answer_alone: spheres, whose hits rtpro's
+// callbacks decide lane by lane, and triangles stored in the leaves). With instances in packets
+// a pixel of scenes/dragon_field.yaml moved by 3e-7 against single rays, its cause not found, so
+// they keep single rays.
+bool packet_lanes_answer_alone(const RenderScene& scene, const EmbreeScenes& built, bool compact) {
+  if (!built.pieces.empty()) return false;
+  for (const EmbreeScene& prototype : built.prototypes)
+    if (prototype.get() != nullptr) return false;
+  const auto answer_alone = [&](const Group& group) {
+    for (const Geometry& geometry : group.geometries) {
+      const bool alone = std::visit(Overloaded{[](const Instance&) { return true; },  // checked as its prototype
+                                               [&](const auto& shapes) { return packet_lanes_answer_alone(shapes, compact); }},
+                                    geometry);
+      if (!alone) return false;
+    }
+    return true;
+  };
+  if (!answer_alone(scene.top)) return false;
+  for (const Group& prototype : scene.prototypes)  // inlined into the top scene
+    if (!answer_alone(prototype)) return false;
   return true;
 }
 
@@ -85,6 +112,7 @@ class EmbreeBackend final : public Backend {
     stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats_.acceleration_bytes = static_cast<std::size_t>(std::max<std::int64_t>(0, session.allocated_bytes()));
     stats_.build_peak_bytes = static_cast<std::size_t>(std::max<std::int64_t>(0, session.peak_bytes()));
+    scattered_packets_ = packet_lanes_answer_alone(scene, scenes_, options.embree_compact);
   }
 
   // Releasing frees Embree memory; inside a session so another thread's build does not count it.
@@ -115,12 +143,11 @@ class EmbreeBackend final : public Backend {
   // gains for a handful of user-geometry primitives. Elsewhere camera rays go to Embree as a
   // stream with the coherent flag: Embree regroups them into packets, which traced camera tiles
   // 1.3–2.4× faster than one rtcIntersect1 per ray (third_party_notes/embree.md), and scattered
-  // rays one by one: streams of them were 1.3–2.6× slower than single rays. Packets of eight
-  // would be faster (1.1–1.6× on the path integrator's Cornell box shadow rays,
-  // benchmarks/path_bounce_benchmark.sh) but Embree's hybrid packet traversal switches triangle
-  // kernels by the number of active lanes, so a triangle hit would depend on its packet's other
-  // rays, and images on tiles and threads.
-  // Rays with a time go the same ways, each with its own time.
+  // rays in packets of eight where Embree answers each lane as the ray alone
+  // (packet_lanes_answer_alone), else one by one: streams of them were 1.3–2.6× slower than
+  // single rays, packets 1.1–1.6× faster on the path integrator's Cornell box shadow rays
+  // (benchmarks/path_bounce_benchmark.sh). Rays with a time go the same ways, each with its own
+  // time.
   void intersect(std::span<const Ray> rays, std::span<Hit> hits, RayCoherence coherence) const override {
     intersect(rays, {}, hits, coherence);
   }
@@ -131,7 +158,7 @@ class EmbreeBackend final : public Backend {
 
   void intersect(std::span<const Ray> rays, std::span<const float> times, std::span<Hit> hits,
                  RayCoherence coherence) const override {
-    if (packets_) {
+    if (packets_ || (coherence == RayCoherence::kIncoherent && scattered_packets_)) {
       intersect_packets(target(), rays, times, hits);
       return;
     }
@@ -144,7 +171,7 @@ class EmbreeBackend final : public Backend {
 
   void occluded(std::span<const Ray> rays, std::span<const float> times, std::span<std::uint8_t> result,
                 RayCoherence coherence) const override {
-    if (packets_) {
+    if (packets_ || (coherence == RayCoherence::kIncoherent && scattered_packets_)) {
       occluded_packets(target(), rays, times, result);
       return;
     }
@@ -183,6 +210,7 @@ class EmbreeBackend final : public Backend {
   // and one callback per sphere for up to eight rays, 1.18x faster on the demo than one
   // rtcIntersect1 per ray. Only for scenes without triangles (rays_decided_by_callbacks).
   bool packets_;
+  bool scattered_packets_ = false;  // incoherent rays in packets too (packet_lanes_answer_alone)
   bool wide_loads_;     // eight rays loaded at once (load_traceable_lanes needs AVX2)
   bool timed_streams_;  // coherent rays with a time go as streams too (has_moving_instance)
   EmbreeScenes scenes_;

@@ -68,5 +68,6 @@ EmbreeGeometry new_embree_geometry(RTCDevice device, const SphereSet& set, RTCBu
 
 // rtpro's own callbacks decide every sphere hit, so a ray's answer never depends on its packet.
 inline bool hits_decided_by_rtpro(const SphereSet&) { return true; }
+inline bool packet_lanes_answer_alone(const SphereSet&, bool /*compact*/) { return true; }
 
 }  // namespace rtpro
