@@ -76,9 +76,10 @@ bool packet_lanes_answer_alone(const RenderScene& scene, const EmbreeScenes& bui
     if (prototype.get() != nullptr) return false;
   const auto answer_alone = [&](const Group& group) {
     for (const Geometry& geometry : group.geometries) {
-      const bool alone = std::visit(Overloaded{[](const Instance&) { return true; },  // checked as its prototype
-                                               [&](const auto& shapes) { return packet_lanes_answer_alone(shapes, compact); }},
-                                    geometry);
+      const bool alone =
+          std::visit(Overloaded{[](const Instance&) { return true; },  // checked as its prototype
+                                [&](const auto& shapes) { return packet_lanes_answer_alone(shapes, compact); }},
+                     geometry);
       if (!alone) return false;
     }
     return true;
@@ -211,8 +212,8 @@ class EmbreeBackend final : public Backend {
   // rtcIntersect1 per ray. Only for scenes without triangles (rays_decided_by_callbacks).
   bool packets_;
   bool scattered_packets_ = false;  // incoherent rays in packets too (packet_lanes_answer_alone)
-  bool wide_loads_;     // eight rays loaded at once (load_traceable_lanes needs AVX2)
-  bool timed_streams_;  // coherent rays with a time go as streams too (has_moving_instance)
+  bool wide_loads_;                 // eight rays loaded at once (load_traceable_lanes needs AVX2)
+  bool timed_streams_;              // coherent rays with a time go as streams too (has_moving_instance)
   EmbreeScenes scenes_;
   BackendStats stats_;
   RayGate gate_;
