@@ -104,7 +104,7 @@ bool has_moving_instance(const RenderScene& scene) {
 class EmbreeBackend final : public Backend {
  public:
   EmbreeBackend(const RenderScene& scene, const BackendOptions& options)
-      : device_(EmbreeDevice::get(options.threads)), packets_(rays_decided_by_callbacks(scene)),
+      : scene_(scene), device_(EmbreeDevice::get(options.threads)), packets_(rays_decided_by_callbacks(scene)),
         wide_loads_(sphere_lanes_vectorised()), timed_streams_(!has_moving_instance(scene)) {
     const EmbreeBuildSettings settings = embree_build_settings(options);
     EmbreeDevice::Session session(*device_, options.max_memory_bytes);
@@ -204,8 +204,9 @@ class EmbreeBackend final : public Backend {
   }
 
  private:
-  EmbreeRayTarget target() const { return {scenes_.top.get(), gate_, wide_loads_, scenes_.hit_ids}; }
+  EmbreeRayTarget target() const { return {scenes_.top.get(), gate_, wide_loads_, scenes_.hit_ids, scene_}; }
 
+  const RenderScene& scene_;  // outlives the backend: Embree shares its arrays
   std::shared_ptr<EmbreeDevice> device_;
   // Rays go to Embree in packets of eight (rtcIntersect8, rtcOccluded8): one traversal
   // and one callback per sphere for up to eight rays, 1.18x faster on the demo than one

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <variant>
 
 namespace rtpro {
 
@@ -26,6 +27,23 @@ bool hit_of_lane(const RTCRayHit8& packet, unsigned lane, const EmbreeHitIds& hi
 }
 
 constexpr unsigned kPacket = 8;
+
+// Where a ray meets two triangles at exactly the same distance (through their shared edge or
+// vertex), Embree's coherent stream can report the other one than the ray traced alone, depending
+// on the rays it is grouped with (tests/backend/batch_queries_test.cpp). Both triangles must then
+// count the hit as within them, Embree's edge test allowing one ulp of their edge functions' sum,
+// so each reports a barycentric within an ulp of 0 times the ratio of the two triangles' heights
+// over that edge: hits within kTieBand of an edge are traced again alone, which covers neighbours
+// up to some 800 times as high.
+constexpr float kTieBand = 1e-4f;
+
+bool may_tie_with_a_neighbour(const RenderScene& scene, const Hit& hit) {
+  const Group& group = hit.inst_id == kInvalidId
+                           ? scene.top
+                           : scene.prototypes[std::get<Instance>(scene.top.geometries[hit.inst_id]).prototype];
+  if (!std::holds_alternative<TriangleMesh>(group.geometries[hit.geom_id])) return false;
+  return hit.u <= kTieBand || hit.v <= kTieBand || 1.0f - hit.u - hit.v <= kTieBand;
+}
 
 // Ray i's time in the shutter, 0 where the batch has no times.
 inline float time_of(std::span<const float> times, std::size_t i) { return times.empty() ? 0.0f : times[i]; }
@@ -155,7 +173,10 @@ RTPRO_AVX2_CLONES void intersect_stream(const EmbreeRayTarget& target, std::span
   alignas(32) RTCRayHit8 packets[kStreamPackets];
   Hit closest_user_hits[kStreamPackets * kPacket];
   for (std::size_t first = 0; first < rays.size(); first += kStreamPackets * kPacket) {
-    const unsigned count = load_stream(target, rays, times, first, packets, [](float tfar, float) { return tfar; });
+    // The stream misses hits exactly at tfar, which (tnear, tfar] includes: it is asked for one
+    // float further, and a hit beyond tfar is a miss.
+    const unsigned count = load_stream(target, rays, times, first, packets,
+                                       [](float tfar, float) { return one_step_away_from_zero(tfar); });
     for (unsigned k = 0; k < kStreamPackets * kPacket; ++k) {
       RTCRayHit8& packet = packets[k / kPacket];
       const unsigned lane = k % kPacket;
@@ -172,8 +193,13 @@ RTPRO_AVX2_CLONES void intersect_stream(const EmbreeRayTarget& target, std::span
     rtcIntersectNM(target.scene, &context.base, reinterpret_cast<RTCRayHitN*>(packets), kPacket, kStreamPackets,
                    sizeof(RTCRayHit8));
     for (unsigned k = 0; k < count; ++k) {
-      hits[first + k] = Hit{};
-      hit_of_lane(packets[k / kPacket], k % kPacket, target.hit_ids, hits[first + k]);
+      Hit& hit = hits[first + k];
+      hit = Hit{};
+      if (!hit_of_lane(packets[k / kPacket], k % kPacket, target.hit_ids, hit)) continue;
+      if (hit.t > rays[first + k].tfar) hit = Hit{};
+      else if (may_tie_with_a_neighbour(target.render_scene, hit))
+        intersect_one_by_one(target, rays.subspan(first + k, 1), times.empty() ? times : times.subspan(first + k, 1),
+                             std::span<Hit>(&hit, 1));
     }
   }
 }

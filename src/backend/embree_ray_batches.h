@@ -6,10 +6,12 @@
 #include "ray_gate.h"
 #include "rtpro/backend/hit.h"
 #include "rtpro/core/ray.h"
+#include "rtpro/scene/render_scene.h"
 
 #include <embree3/rtcore.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <span>
 
@@ -22,6 +24,7 @@ struct EmbreeRayTarget {
   const RayGate& gate;
   bool wide_loads;
   const EmbreeHitIds& hit_ids;
+  const RenderScene& render_scene;  // what the hits' ids name
 };
 
 // std::nextafter(t, 0.0f) without the libm call (0.7% of a render): one step towards zero is one
@@ -29,6 +32,11 @@ struct EmbreeRayTarget {
 // Never called with NaN (the gate refuses it).
 inline float one_step_towards_zero(float t) {
   return t == 0.0f ? t : std::bit_cast<float>(std::bit_cast<std::uint32_t>(t) - 1u);
+}
+
+// The next float away from zero for finite positive t; infinity stays infinity.
+inline float one_step_away_from_zero(float t) {
+  return std::isinf(t) ? t : std::bit_cast<float>(std::bit_cast<std::uint32_t>(t) + 1u);
 }
 
 // An answered Embree query as rtpro's hit, or false where it hit nothing.

@@ -173,43 +173,72 @@ class BatchQueriesAtTies : public ::testing::Test {
     return rays;
   }
 
-  // The batch's answers against single rays', bit for bit; the number of hits.
-  static int expect_batches_answer_as_single_rays(const Backend& backend, RayCoherence coherence) {
+  // The batch's hits against single rays', bit for bit; the number of hits.
+  static int expect_batches_hit_as_single_rays(const Backend& backend, RayCoherence coherence) {
     const std::vector<Ray> rays = tie_rays();
     std::vector<Hit> hits(rays.size());
     backend.intersect(rays, hits, coherence);
-    std::vector<std::uint8_t> occluded(rays.size(), 7);
-    backend.occluded(rays, occluded, coherence);
     int found = 0;
     for (std::size_t r = 0; r < rays.size(); ++r) {
       Hit single;
       backend.intersect(rays[r], single);
       test::expect_same_hit(hits[r], single, r);
-      EXPECT_EQ(occluded[r] == 1, backend.occluded(rays[r])) << r;
       found += single.valid();
     }
     return found;
+  }
+
+  // The batch's occlusion against single rays'; the number of occluded rays.
+  static int expect_batches_occluded_as_single_rays(const Backend& backend, RayCoherence coherence) {
+    const std::vector<Ray> rays = tie_rays();
+    std::vector<std::uint8_t> occluded(rays.size(), 7);
+    backend.occluded(rays, occluded, coherence);
+    int blocked = 0;
+    for (std::size_t r = 0; r < rays.size(); ++r) {
+      EXPECT_EQ(occluded[r] == 1, backend.occluded(rays[r]))
+          << r << ": from (" << rays[r].org.x << ", " << rays[r].org.y << ", " << rays[r].org.z << ") along ("
+          << rays[r].dir.x << ", " << rays[r].dir.y << ", " << rays[r].dir.z << ") to " << rays[r].tfar;
+      blocked += occluded[r] == 1;
+    }
+    return blocked;
   }
 };
 
 TEST_F(BatchQueriesAtTies, NativeBatchesAnswerAsSingleRays) {
   const auto backend = make_backend(BackendKind::kNative, grid_scene(), {});
-  for (const RayCoherence coherence : {RayCoherence::kCoherent, RayCoherence::kIncoherent})
-    EXPECT_GT(expect_batches_answer_as_single_rays(*backend, coherence), 1800);
+  for (const RayCoherence coherence : {RayCoherence::kCoherent, RayCoherence::kIncoherent}) {
+    EXPECT_GT(expect_batches_hit_as_single_rays(*backend, coherence), 1800);
+    EXPECT_GT(expect_batches_occluded_as_single_rays(*backend, coherence), 1800);
+  }
 }
 
 TEST_F(BatchQueriesAtTies, EmbreeScatteredBatchesAnswerAsSingleRays) {
   const auto backend = make_backend(BackendKind::kEmbree, grid_scene(), {});
-  EXPECT_GT(expect_batches_answer_as_single_rays(*backend, RayCoherence::kIncoherent), 1800);
+  EXPECT_GT(expect_batches_hit_as_single_rays(*backend, RayCoherence::kIncoherent), 1800);
+  EXPECT_GT(expect_batches_occluded_as_single_rays(*backend, RayCoherence::kIncoherent), 1800);
 }
 
-// Known to fail: Embree's stream traversal, which traces coherent batches of a scene with
-// triangles, reports another of the triangles at the same distance than its single rays and
-// packets do, depending on the rays it is grouped with (about 300 of these 4,800 rays change when
-// the first three go alone). An intersection filter applying the tie rule to Embree's triangles
-// did not make it pass (the stream does not offer it every tied triangle); streams without the
-// coherent flag do, but took 1.4 times as long over the dragon's camera rays.
-TEST_F(BatchQueriesAtTies, DISABLED_EmbreeCoherentBatchesAnswerWhateverTheirGrouping) {
+// Embree's stream traversal, which traces coherent batches of a scene with triangles, reports
+// another of the triangles at the same distance than its single rays do, depending on the rays
+// it is grouped with (about 300 of these 4,800 rays, when the first three go alone), and misses
+// hits exactly at tfar; the backend traces such hits again alone and asks the stream for one float
+// further (embree_ray_batches.cpp, may_tie_with_a_neighbour).
+TEST_F(BatchQueriesAtTies, EmbreeCoherentBatchesAnswerAsSingleRays) {
+  const auto backend = make_backend(BackendKind::kEmbree, grid_scene(), {});
+  EXPECT_GT(expect_batches_hit_as_single_rays(*backend, RayCoherence::kCoherent), 1800);
+}
+
+// Known to fail: the coherent stream's occlusion differs from single rays' for 7 of these rays,
+// which run straight down exactly along the grid's outer edge (no neighbour on the other side),
+// and 2 to 5 of them change when regrouped. Packets of eight answer them as single rays, but
+// took 1.11 times as long over the dragon's camera rays' shadow rays, so the stream stays.
+TEST_F(BatchQueriesAtTies, DISABLED_EmbreeCoherentOcclusionAsSingleRays) {
+  const auto backend = make_backend(BackendKind::kEmbree, grid_scene(), {});
+  EXPECT_GT(expect_batches_occluded_as_single_rays(*backend, RayCoherence::kCoherent), 1800);
+}
+
+// What the images rely on: a coherent batch's hits do not depend on how its rays are grouped.
+TEST_F(BatchQueriesAtTies, EmbreeCoherentBatchesAnswerWhateverTheirGrouping) {
   const auto backend = make_backend(BackendKind::kEmbree, grid_scene(), {});
   const std::vector<Ray> rays = tie_rays();
   std::vector<Hit> hits(rays.size()), regrouped(rays.size());
