@@ -1,9 +1,9 @@
 #pragma once
 // The kinds of shape the backends trace, registered: each kind's backend side is one header
 // (native_hit, native_hit_lanes, embree_refusal, new_embree_geometry, hits_decided_by_rtpro,
-// packet_lanes_answer_alone: see sphere_backend.h). A new kind of shape is its header's include here and its case in
-// visit_geometry; the native traversal, the Embree scene builder and the Embree backend then name
-// whatever it still lacks.
+// packet_lanes_answer_alone: see sphere_backend.h). A new kind of shape is its header's include
+// here and its case in visit_geometry; the native traversal, the Embree scene builder and the
+// Embree backend then name whatever it still lacks.
 #include "curve_backend.h"
 #include "sphere_backend.h"
 #include "triangle_backend.h"

@@ -51,8 +51,8 @@ std::optional<std::string> embree_refusal(const CurveSet& curves);
 // Shares the control points and segments with Embree, which must outlive the geometry.
 EmbreeGeometry new_embree_geometry(RTCDevice device, const CurveSet& curves, RTCBuildQuality quality);
 
-// Embree's curve kernels decide the hits, and differ between packets and single rays as its
-// triangle kernels do.
+// Embree's curve kernels decide the hits, and its packets answer some rays otherwise than the same
+// rays alone (scenes/curves.yaml's image moved with every batch in packets).
 inline bool hits_decided_by_rtpro(const CurveSet&) { return false; }
 inline bool packet_lanes_answer_alone(const CurveSet&, bool /*compact*/) { return false; }
 
