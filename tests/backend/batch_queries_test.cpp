@@ -205,7 +205,8 @@ class BatchQueriesAtTies : public ::testing::Test {
 };
 
 TEST_F(BatchQueriesAtTies, NativeBatchesAnswerAsSingleRays) {
-  const auto backend = make_backend(BackendKind::kNative, grid_scene(), {});
+  const RenderScene scene = grid_scene();  // outlives the backend, which shares its arrays
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
   for (const RayCoherence coherence : {RayCoherence::kCoherent, RayCoherence::kIncoherent}) {
     EXPECT_GT(expect_batches_hit_as_single_rays(*backend, coherence), 1800);
     EXPECT_GT(expect_batches_occluded_as_single_rays(*backend, coherence), 1800);
@@ -213,7 +214,8 @@ TEST_F(BatchQueriesAtTies, NativeBatchesAnswerAsSingleRays) {
 }
 
 TEST_F(BatchQueriesAtTies, EmbreeScatteredBatchesAnswerAsSingleRays) {
-  const auto backend = make_backend(BackendKind::kEmbree, grid_scene(), {});
+  const RenderScene scene = grid_scene();  // outlives the backend, which shares its arrays
+  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
   EXPECT_GT(expect_batches_hit_as_single_rays(*backend, RayCoherence::kIncoherent), 1800);
   EXPECT_GT(expect_batches_occluded_as_single_rays(*backend, RayCoherence::kIncoherent), 1800);
 }
@@ -224,7 +226,8 @@ TEST_F(BatchQueriesAtTies, EmbreeScatteredBatchesAnswerAsSingleRays) {
 // hits exactly at tfar; the backend traces such hits again alone and asks the stream for one float
 // further (embree_ray_batches.cpp, may_tie_with_a_neighbour).
 TEST_F(BatchQueriesAtTies, EmbreeCoherentBatchesAnswerAsSingleRays) {
-  const auto backend = make_backend(BackendKind::kEmbree, grid_scene(), {});
+  const RenderScene scene = grid_scene();  // outlives the backend, which shares its arrays
+  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
   EXPECT_GT(expect_batches_hit_as_single_rays(*backend, RayCoherence::kCoherent), 1800);
 }
 
@@ -233,13 +236,15 @@ TEST_F(BatchQueriesAtTies, EmbreeCoherentBatchesAnswerAsSingleRays) {
 // and 2 to 5 of them change when regrouped. Packets of eight answer them as single rays, but
 // took 1.11 times as long over the dragon's camera rays' shadow rays, so the stream stays.
 TEST_F(BatchQueriesAtTies, DISABLED_EmbreeCoherentOcclusionAsSingleRays) {
-  const auto backend = make_backend(BackendKind::kEmbree, grid_scene(), {});
+  const RenderScene scene = grid_scene();  // outlives the backend, which shares its arrays
+  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
   EXPECT_GT(expect_batches_occluded_as_single_rays(*backend, RayCoherence::kCoherent), 1800);
 }
 
 // What the images rely on: a coherent batch's hits do not depend on how its rays are grouped.
 TEST_F(BatchQueriesAtTies, EmbreeCoherentBatchesAnswerWhateverTheirGrouping) {
-  const auto backend = make_backend(BackendKind::kEmbree, grid_scene(), {});
+  const RenderScene scene = grid_scene();  // outlives the backend, which shares its arrays
+  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
   const std::vector<Ray> rays = tie_rays();
   std::vector<Hit> hits(rays.size()), regrouped(rays.size());
   backend->intersect(rays, hits, RayCoherence::kCoherent);
