@@ -144,21 +144,20 @@ TEST(AreaLight, CameraAndMirrorsSeeTheEmitterOnlyFromItsFront) {
   Ray towards;
   towards.org = {0.0f, 0.0f, 0.0f};
   towards.dir = {0.0f, 0.0f, 2.0f};  // not unit: t is in units of the direction's length
-  ASSERT_TRUE(hit_light(sphere, towards, 100.0f));
-  EXPECT_FLOAT_EQ(*hit_light(sphere, towards, 100.0f), 1.25f);
-  EXPECT_FALSE(hit_light(sphere, towards, 1.0f));  // a surface in front hides it
+  EXPECT_FLOAT_EQ(hit_light(sphere, towards, 100.0f), 1.25f);
+  EXPECT_EQ(hit_light(sphere, towards, 1.0f), kLightMissed);  // a surface in front hides it
   const Light quad =
       make_light(QuadLightDesc{{0.0f, 0.0f, 3.0f}, {0.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, Color(2.0f), 1.0f, 2});
-  ASSERT_TRUE(hit_light(quad, towards, 100.0f));  // its normal faces -z, towards the ray
+  EXPECT_FLOAT_EQ(hit_light(quad, towards, 100.0f), 1.5f);  // its normal faces -z, towards the ray
   EXPECT_EQ(light_emission(quad).x, 2.0f);
   Ray from_above = towards;
   from_above.org = {0.0f, 0.0f, 6.0f};
   from_above.dir = {0.0f, 0.0f, -1.0f};
-  EXPECT_FALSE(hit_light(quad, from_above, 100.0f));  // its back
+  EXPECT_EQ(hit_light(quad, from_above, 100.0f), kLightMissed);  // its back
   Ray beside = towards;
   beside.org = {0.6f, 0.0f, 0.0f};
-  EXPECT_FALSE(hit_light(quad, beside, 100.0f));
-  EXPECT_FALSE(hit_light(make_light(PointLightDesc{{0, 0, 3}, Color(1.0f), 1.0f}), towards, 100.0f));
+  EXPECT_EQ(hit_light(quad, beside, 100.0f), kLightMissed);
+  EXPECT_EQ(hit_light(make_light(PointLightDesc{{0, 0, 3}, Color(1.0f), 1.0f}), towards, 100.0f), kLightMissed);
 }
 
 TEST(AreaLight, BadAreaLightsAreRefusedAtTheirLocation) {

@@ -76,7 +76,7 @@ TEST(SpotLight, WhittedSampleIsThePointLightsTimesTheFalloff) {
   const Light spot = make_spot(position, Vec3(0, -1, 0), Color(2.0f, 1.0f, 0.5f), 10.0, 35.0);
   const Light point = PointLight{position, Color(2.0f, 1.0f, 0.5f)};
   EXPECT_EQ(light_samples_per_axis(spot), 1);
-  EXPECT_FALSE(hit_light(spot, Ray{Vec3(1.0f, 0.0f, -2.0f), 0.0f, Vec3(0, 1, 0)}, 100.0f));
+  EXPECT_EQ(hit_light(spot, Ray{Vec3(1.0f, 0.0f, -2.0f), 0.0f, Vec3(0, 1, 0)}, 100.0f), kLightMissed);
   EXPECT_EQ(light_emission(spot), Color(0.0f));
   for (const double theta : {0.0, 5.0, 15.0, 25.0, 34.0, 36.0, 80.0}) {
     const float d = 3.0f;

@@ -39,9 +39,9 @@ struct SeenEmitter {
 std::optional<SeenEmitter> seen_emitter(const RenderScene& scene, const Workspace& ws, const Ray& ray, float t_max) {
   std::optional<SeenEmitter> seen;
   for (const std::uint32_t l : ws.emitters)
-    if (const std::optional<float> t = hit_light(scene.lights[l], ray, t_max)) {
-      t_max = *t;
-      seen = SeenEmitter{light_emission(scene.lights[l]), *t};
+    if (const float t = hit_light(scene.lights[l], ray, t_max); t < t_max) {
+      t_max = t;
+      seen = SeenEmitter{light_emission(scene.lights[l]), t};
     }
   return seen;
 }

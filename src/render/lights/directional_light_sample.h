@@ -7,7 +7,6 @@
 #include "rtpro/scene/directional_light.h"
 
 #include <limits>
-#include <optional>
 
 namespace rtpro {
 
@@ -17,7 +16,7 @@ inline LightSample sample_light_of_kind(const DirectionalLight& light, const Vec
   return {light.to_light, std::numeric_limits<float>::infinity(), light.radiance};
 }
 
-inline std::optional<float> hit_light_of_kind(const DirectionalLight&, const Ray&, float) { return std::nullopt; }
+inline float hit_light_of_kind(const DirectionalLight&, const Ray&, float) { return kLightMissed; }
 inline Color emission_of_kind(const DirectionalLight&) { return Color(0.0f); }
 
 }  // namespace rtpro

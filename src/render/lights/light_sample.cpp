@@ -8,7 +8,7 @@ int light_samples_per_axis(const Light& light) {
   return std::visit([](const auto& l) { return samples_per_axis(l); }, light);
 }
 
-std::optional<float> hit_light(const Light& light, const Ray& ray, float t_max) {
+float hit_light(const Light& light, const Ray& ray, float t_max) {
   return std::visit([&](const auto& l) { return hit_light_of_kind(l, ray, t_max); }, light);
 }
 

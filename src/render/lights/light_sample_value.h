@@ -3,6 +3,8 @@
 // (render/lights/point_light_sample.h and its neighbours) returns one.
 #include "rtpro/core/vec3.h"
 
+#include <limits>
+
 namespace rtpro {
 
 struct LightSample {
@@ -13,5 +15,9 @@ struct LightSample {
   // light, inside a sphere light). Average over the light's samples.
   Color radiance;
 };
+
+// What a light's hit test (hit_light_of_kind, hit_light) returns where the ray does not meet it:
+// infinity, which no hit in (tnear, t_max) can equal, so `t < t_max` tells a hit.
+constexpr float kLightMissed = std::numeric_limits<float>::infinity();
 
 }  // namespace rtpro

@@ -223,8 +223,11 @@ std::optional<LightSet::SeenLight> LightSet::nearest_analytic_light(const Ray& r
   std::optional<SeenLight> nearest;
   for (const std::uint32_t index : linked(group).analytic) {
     Color radiance;
-    const std::optional<float> t = meet_path_light(lights_[index], ray, nearest ? nearest->t : t_max, radiance);
-    if (t) nearest = SeenLight{index, *t, radiance};
+    const float t = meet_path_light(lights_[index], ray, t_max, radiance);
+    if (t < t_max) {
+      nearest = SeenLight{index, t, radiance};
+      t_max = t;
+    }
   }
   return nearest;
 }

@@ -231,21 +231,21 @@ struct Meeting {
   const Ray& ray;
   float t_max;
   Color& seen;
-  std::optional<float> operator()(const PointLight&) const { return std::nullopt; }
-  std::optional<float> operator()(const SpotLight&) const { return std::nullopt; }
-  std::optional<float> operator()(const DirectionalLight&) const { return std::nullopt; }
-  std::optional<float> operator()(const SphereLight& l) const {
-    if (!clearly_outside(l.center, l.radius, ray.org)) return std::nullopt;  // no light inside
+  float operator()(const PointLight&) const { return kLightMissed; }
+  float operator()(const SpotLight&) const { return kLightMissed; }
+  float operator()(const DirectionalLight&) const { return kLightMissed; }
+  float operator()(const SphereLight& l) const {
+    if (!clearly_outside(l.center, l.radius, ray.org)) return kLightMissed;  // no light inside
     seen = l.radiance;
-    return hit_light(Light(l), ray, t_max);
+    return hit_light_of_kind(l, ray, t_max);
   }
-  std::optional<float> operator()(const QuadLight& l) const {
+  float operator()(const QuadLight& l) const {
     seen = l.radiance;
-    return hit_light(Light(l), ray, t_max);
+    return hit_light_of_kind(l, ray, t_max);
   }
-  std::optional<float> operator()(const EmissiveTriangle&) const { return std::nullopt; }
-  std::optional<float> operator()(const EmissiveSphere&) const { return std::nullopt; }
-  std::optional<float> operator()(const EnvironmentRef&) const { return std::nullopt; }
+  float operator()(const EmissiveTriangle&) const { return kLightMissed; }
+  float operator()(const EmissiveSphere&) const { return kLightMissed; }
+  float operator()(const EnvironmentRef&) const { return kLightMissed; }
 };
 
 // Each visitor above has an overload for every kind of PathLight: a kind without one stops the
@@ -308,7 +308,7 @@ bool met_by_rays(const PathLight& light) { return std::visit(MetByRays{}, light)
 
 bool samples_by_number(const PathLight& light) { return std::visit(SamplesByNumber{}, light); }
 
-std::optional<float> meet_path_light(const PathLight& light, const Ray& ray, float t_max, Color& seen) {
+float meet_path_light(const PathLight& light, const Ray& ray, float t_max, Color& seen) {
   return std::visit(Meeting{ray, t_max, seen}, light);
 }
 

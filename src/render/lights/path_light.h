@@ -115,11 +115,13 @@ inline bool sample_path_light(const PathLight& light, const Vec3& from, Sample2D
 // The solid-angle pdf of sample_path_light reaching `on_light` from `from`; 0 for delta lights.
 float path_light_pdf(const PathLight& light, const Vec3& from, const Vec3& on_light);
 // Whether camera and BSDF rays can meet the light itself (sphere and quad lights; the backend
-// finds the emissive surfaces), and where `ray` meets it before t_max (`seen`: its radiance there).
+// finds the emissive surfaces).
 bool met_by_rays(const PathLight& light);
 // Whether sample_path_light reads its `u` (lights with an extent; a point, spot or directional
 // light has one direction to give, whatever `u`).
 bool samples_by_number(const PathLight& light);
-std::optional<float> meet_path_light(const PathLight& light, const Ray& ray, float t_max, Color& seen);
+// Where `ray` meets a light met_by_rays says rays meet, before t_max (`seen`: its radiance there),
+// or kLightMissed (hit_light, render/lights/light_sample.h).
+float meet_path_light(const PathLight& light, const Ray& ray, float t_max, Color& seen);
 
 }  // namespace rtpro

@@ -7,8 +7,6 @@
 #include "rtpro/render/sampler.h"
 #include "rtpro/scene/point_light.h"
 
-#include <optional>
-
 namespace rtpro {
 
 inline int samples_per_axis(const PointLight&) { return 1; }
@@ -21,7 +19,7 @@ inline LightSample sample_light_of_kind(const PointLight& light, const Vec3& poi
   return {to_light / distance, distance, light.radiance};
 }
 
-inline std::optional<float> hit_light_of_kind(const PointLight&, const Ray&, float) { return std::nullopt; }
+inline float hit_light_of_kind(const PointLight&, const Ray&, float) { return kLightMissed; }
 inline Color emission_of_kind(const PointLight&) { return Color(0.0f); }
 
 }  // namespace rtpro

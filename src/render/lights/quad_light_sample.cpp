@@ -17,17 +17,17 @@ LightSample sample_light_of_kind(const QuadLight& light, const Vec3& point, Samp
   return {direction, distance, light.radiance * (cos_light * light.area / d2)};
 }
 
-std::optional<float> hit_light_of_kind(const QuadLight& light, const Ray& ray, float t_max) {
+float hit_light_of_kind(const QuadLight& light, const Ray& ray, float t_max) {
   const float facing = dot(light.normal, ray.dir);
-  if (!(facing < 0.0f)) return std::nullopt;  // seen from behind or edge-on: it emits on one side only
+  if (!(facing < 0.0f)) return kLightMissed;  // seen from behind or edge-on: it emits on one side only
   const float t = dot(light.normal, light.corner - ray.org) / facing;
-  if (!(t > ray.tnear && t < t_max)) return std::nullopt;
+  if (!(t > ray.tnear && t < t_max)) return kLightMissed;
   const Vec3 q = ray.at(t) - light.corner;
   const Vec3 n = light.normal * light.area;  // edge1 × edge2
   const float inv = 1.0f / dot(n, n);
   const float alpha = dot(cross(q, light.edge2), n) * inv;
   const float beta = dot(cross(light.edge1, q), n) * inv;
-  if (!(alpha >= 0.0f && alpha <= 1.0f && beta >= 0.0f && beta <= 1.0f)) return std::nullopt;
+  if (!(alpha >= 0.0f && alpha <= 1.0f && beta >= 0.0f && beta <= 1.0f)) return kLightMissed;
   return t;
 }
 

@@ -6,8 +6,6 @@
 #include "rtpro/render/sampler.h"
 #include "rtpro/scene/quad_light.h"
 
-#include <optional>
-
 namespace rtpro {
 
 inline int samples_per_axis(const QuadLight& light) { return light.samples_per_axis; }
@@ -15,8 +13,9 @@ inline int samples_per_axis(const QuadLight& light) { return light.samples_per_a
 // Uniform over the area; `u` is a point of [0,1)².
 LightSample sample_light_of_kind(const QuadLight& light, const Vec3& point, Sample2D u);
 
-// The ray parameter of a hit on its front in (ray.tnear, t_max): it emits on one side only.
-std::optional<float> hit_light_of_kind(const QuadLight& light, const Ray& ray, float t_max);
+// The ray parameter of a hit on its front in (ray.tnear, t_max), or kLightMissed: it emits on one
+// side only.
+float hit_light_of_kind(const QuadLight& light, const Ray& ray, float t_max);
 
 inline Color emission_of_kind(const QuadLight& light) { return light.radiance; }
 

@@ -45,13 +45,13 @@ LightSample sample_light_of_kind(const SphereLight& light, const Vec3& point, Sa
   return {direction, distance, light.radiance * solid_angle};
 }
 
-std::optional<float> hit_light_of_kind(const SphereLight& light, const Ray& ray, float t_max) {
+float hit_light_of_kind(const SphereLight& light, const Ray& ray, float t_max) {
   const Vec3 oc = ray.org - light.center;
   const float a = dot(ray.dir, ray.dir);
   const float b = dot(oc, ray.dir);
   const float c = dot(oc, oc) - light.radius * light.radius;
   const float discriminant = b * b - a * c;
-  if (!(discriminant >= 0.0f)) return std::nullopt;
+  if (!(discriminant >= 0.0f)) return kLightMissed;
   const float root = std::sqrt(discriminant);
   // The nearer root first, in the numerically stable form; the far one from inside the light.
   const float q = b >= 0.0f ? -(b + root) : -(b - root);
@@ -59,7 +59,7 @@ std::optional<float> hit_light_of_kind(const SphereLight& light, const Ray& ray,
   if (t0 > t1) std::swap(t0, t1);
   for (const float t : {t0, t1})
     if (t > ray.tnear && t < t_max) return t;
-  return std::nullopt;
+  return kLightMissed;
 }
 
 }  // namespace rtpro

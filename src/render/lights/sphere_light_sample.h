@@ -6,8 +6,6 @@
 #include "rtpro/render/sampler.h"
 #include "rtpro/scene/sphere_light.h"
 
-#include <optional>
-
 namespace rtpro {
 
 inline int samples_per_axis(const SphereLight& light) { return light.samples_per_axis; }
@@ -15,8 +13,9 @@ inline int samples_per_axis(const SphereLight& light) { return light.samples_per
 // Uniform over the cone of directions the sphere fills; `u` is a point of [0,1)².
 LightSample sample_light_of_kind(const SphereLight& light, const Vec3& point, Sample2D u);
 
-// The ray parameter of the nearest visible hit on its surface in (ray.tnear, t_max).
-std::optional<float> hit_light_of_kind(const SphereLight& light, const Ray& ray, float t_max);
+// The ray parameter of the nearest visible hit on its surface in (ray.tnear, t_max), or
+// kLightMissed.
+float hit_light_of_kind(const SphereLight& light, const Ray& ray, float t_max);
 
 inline Color emission_of_kind(const SphereLight& light) { return light.radiance; }
 

@@ -6,8 +6,6 @@
 #include "rtpro/render/sampler.h"
 #include "rtpro/scene/spot_light.h"
 
-#include <optional>
-
 namespace rtpro {
 
 inline int samples_per_axis(const SpotLight&) { return 1; }
@@ -21,7 +19,7 @@ inline LightSample sample_light_of_kind(const SpotLight& light, const Vec3& poin
   return {direction, distance, light.radiance * light.falloff(-direction)};
 }
 
-inline std::optional<float> hit_light_of_kind(const SpotLight&, const Ray&, float) { return std::nullopt; }
+inline float hit_light_of_kind(const SpotLight&, const Ray&, float) { return kLightMissed; }
 inline Color emission_of_kind(const SpotLight&) { return Color(0.0f); }
 
 }  // namespace rtpro
