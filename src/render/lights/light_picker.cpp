@@ -37,12 +37,7 @@ LightPicker::LightPicker(LightSamplerKind kind, std::span<const std::uint32_t> m
   if (!infinite_.empty())
     infinite_probability_ =
         tree_lit ? static_cast<float>(infinite_.size()) / static_cast<float>(infinite_.size() + 1) : 1.0f;
-  if (members_.size() == 1 && !empty()) {
-    if (const std::optional<Pick> pick = pick_among(Vec3(0.0f), 0.0f)) {
-      single_pick_ = *pick;
-      single_ = true;
-    }
-  }
+  if (members_.size() == 1 && !empty()) single_ = pick_among(Vec3(0.0f), 0.0f, single_pick_);
 }
 
 float LightPicker::probability(std::uint32_t light, const Vec3& point) const {
@@ -57,24 +52,27 @@ float LightPicker::probability(std::uint32_t light, const Vec3& point) const {
   return 0.0f;
 }
 
-std::optional<LightPicker::Pick> LightPicker::pick_among(const Vec3& point, float u) const {
+bool LightPicker::pick_among(const Vec3& point, float u, Pick& out) const {
   switch (kind_) {
     case LightSamplerKind::kPower: {
       const AliasTable::Pick pick = pick_.sample(u);
-      return Pick{members_[pick.index], pick.pmf};
+      out = Pick{members_[pick.index], pick.pmf};
+      return true;
     }
     case LightSamplerKind::kTree:
       if (u < infinite_probability_) {
         const AliasTable::Pick pick = infinite_pick_.sample(std::min(u / infinite_probability_, 0x1.fffffep-1f));
-        return Pick{members_[infinite_[pick.index]], infinite_probability_ * pick.pmf};
+        out = Pick{members_[infinite_[pick.index]], infinite_probability_ * pick.pmf};
+        return true;
       } else {
         const float u_tree = std::min((u - infinite_probability_) / (1.0f - infinite_probability_), 0x1.fffffep-1f);
-        const std::optional<LightTree::Pick> pick = tree_.sample(point, u_tree);
-        if (!pick) return std::nullopt;
-        return Pick{members_[pick->light], (1.0f - infinite_probability_) * pick->pmf};
+        LightTree::Pick pick;
+        if (!tree_.sample(point, u_tree, pick)) return false;
+        out = Pick{members_[pick.light], (1.0f - infinite_probability_) * pick.pmf};
+        return true;
       }
   }
-  return std::nullopt;
+  return false;
 }
 
 }  // namespace rtpro

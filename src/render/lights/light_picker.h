@@ -37,16 +37,14 @@ class LightPicker {
     Pick p;
     return pick(point, u, p) ? std::optional<Pick>(p) : std::nullopt;
   }
-  // The same into `out` (left as it was when there is none), for the path integrator's loop: a
-  // returned optional went through the stack.
+  // The same into `out` (left as it was when there is none), for the path integrator's loop
+  // (LightTree::sample says why).
   bool pick(const Vec3& point, float u, Pick& out) const {
     if (single_) {
       out = single_pick_;
       return true;
     }
-    const std::optional<Pick> p = pick_among(point, u);
-    if (p) out = *p;
-    return p.has_value();
+    return pick_among(point, u, out);
   }
   // Whether pick() reads its `u`: not for one member (nor none).
   bool picks_by_number() const { return !single_ && !members_.empty(); }
@@ -57,7 +55,7 @@ class LightPicker {
 
  private:
   static constexpr std::uint32_t kNone = ~0u;
-  std::optional<Pick> pick_among(const Vec3& point, float u) const;
+  bool pick_among(const Vec3& point, float u, Pick& out) const;
   LightSamplerKind kind_ = LightSamplerKind::kTree;
   std::vector<std::uint32_t> members_;    // the set's index of each member
   std::vector<std::uint32_t> member_of_;  // per light of the set: its member index, or kNone

@@ -177,14 +177,14 @@ std::uint32_t LightTree::build(std::span<Entry> entries, std::uint64_t trail, in
   return index;
 }
 
-std::optional<LightTree::Pick> LightTree::sample(const Vec3& p, float u) const {
-  if (nodes_.empty()) return std::nullopt;
+bool LightTree::sample(const Vec3& p, float u, Pick& out) const {
+  if (nodes_.empty()) return false;
   std::uint32_t node = 0;
   float pmf = 1.0f;
   while (!nodes_[node].leaf) {
     const std::uint32_t first = node + 1, second = nodes_[node].index;
     const float a = nodes_[first].importance.at(p), b = nodes_[second].importance.at(p);
-    if (!(a + b > 0.0f)) return std::nullopt;
+    if (!(a + b > 0.0f)) return false;
     const float p_first = a / (a + b);
     if (u < p_first) {
       u = std::min(u / p_first, 0x1.fffffep-1f);
@@ -197,8 +197,9 @@ std::optional<LightTree::Pick> LightTree::sample(const Vec3& p, float u) const {
       node = second;
     }
   }
-  if (!(pmf > 0.0f)) return std::nullopt;
-  return Pick{nodes_[node].index, pmf};
+  if (!(pmf > 0.0f)) return false;
+  out = Pick{nodes_[node].index, pmf};
+  return true;
 }
 
 float LightTree::pmf(const Vec3& p, std::uint32_t light) const {

@@ -49,7 +49,14 @@ class LightTree {
     float pmf;
   };
   // u in [0, 1). Nothing when no light of the tree can reach `p`.
-  std::optional<Pick> sample(const Vec3& p, float u) const;
+  std::optional<Pick> sample(const Vec3& p, float u) const {
+    Pick pick;
+    return sample(p, u, pick) ? std::optional<Pick>(pick) : std::nullopt;
+  }
+  // The same into `out` (left as it was when there is none), for the path integrator's loop: an
+  // optional returned from out of line is put together on the stack field by field and then loaded
+  // whole, which stalls on store forwarding.
+  bool sample(const Vec3& p, float u, Pick& out) const;
   // The probability sample() picks `light` at `p`; 0 for lights not in the tree.
   float pmf(const Vec3& p, std::uint32_t light) const;
 
