@@ -119,18 +119,16 @@ void PathIntegrator::trace_with(const Sampler& sampler, const CameraBatch& batch
       medium_shadow_transmittance(backend_, scene, ws.shadow_rays, ws.shadow_times, ws.medium_shadows,
                                   ws.shadow_transmittance);
       for (std::size_t i = 0; i < ws.shadow_queries.size(); ++i)
-        if (const std::optional<Color> contribution =
-                found_contribution(ws.shadow_queries[i], ws, scene.render.path_sampling))
-          batch.results[ws.shadow_queries[i].sample].radiance += *contribution * ws.shadow_transmittance[i];
+        if (Color contribution; found_contribution(ws.shadow_queries[i], ws, scene.render.path_sampling, contribution))
+          batch.results[ws.shadow_queries[i].sample].radiance += contribution * ws.shadow_transmittance[i];
     } else {
       ws.occluded.resize(ws.shadow_rays.size());
       occluded_with_shadow_linking(backend_, scene.links, ws.shadow_rays, ws.shadow_times, ws.shadow_lights,
                                    ws.occluded, RayCoherence::kIncoherent);
       for (std::size_t i = 0; i < ws.shadow_queries.size(); ++i)
-        if (!ws.occluded[i])
-          if (const std::optional<Color> contribution =
-                  found_contribution(ws.shadow_queries[i], ws, scene.render.path_sampling))
-            batch.results[ws.shadow_queries[i].sample].radiance += *contribution;
+        if (Color contribution;
+            !ws.occluded[i] && found_contribution(ws.shadow_queries[i], ws, scene.render.path_sampling, contribution))
+          batch.results[ws.shadow_queries[i].sample].radiance += contribution;
     }
     // Summed in a local: a store to the counts in the loop would reload every path's field.
     std::uint64_t transmitted = 0;

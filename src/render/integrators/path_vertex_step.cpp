@@ -229,21 +229,21 @@ void PathVertexStep<kLightPathControls>::queue_light_sample(std::uint32_t sample
   if (ls.environment) ws_.shadow_queries.back().unfound = static_cast<std::uint32_t>(ws_.unfound_lights.size() - 1);
 }
 
-std::optional<Color> found_contribution(const PathWorkspace::ShadowQuery& query, const PathWorkspace& ws,
-                                        PathSampling sampling) {
-  if (query.unfound == PathWorkspace::kFound) return query.contribution;
+bool found_environment_contribution(const PathWorkspace::ShadowQuery& query, const PathWorkspace& ws,
+                                    PathSampling sampling, Color& out) {
   const PathWorkspace::UnfoundLight& light = ws.unfound_lights[query.unfound];
   // EnvironmentLight::sample's pdf and radiance, then LightSet::sample's pick.
   const EnvironmentLight::ImageCoordinates uv = light.environment->image_coordinates(light.direction);
   float pdf = light.environment->pdf_at(uv);
-  if (!(pdf > 0.0f) || !std::isfinite(pdf)) return std::nullopt;
+  if (!(pdf > 0.0f) || !std::isfinite(pdf)) return false;
   pdf *= light.pick_pmf;
   const std::optional<float> w_l = light_weight(sampling, pdf, light.scatter_pdf);
-  if (!w_l) return std::nullopt;
+  if (!w_l) return false;
   const Color contribution =
       clamped(query.contribution * light.environment->radiance_at(uv) * (*w_l / pdf), light.clamp_limit);
-  if (!is_finite(contribution) || carries_no_light(contribution)) return std::nullopt;
-  return contribution;
+  if (!is_finite(contribution) || carries_no_light(contribution)) return false;
+  out = contribution;
+  return true;
 }
 
 template <bool kLightPathControls>
