@@ -62,7 +62,7 @@ float DdaMajorantIterator::crossing(int axis) const {
   return std::max(t, t_min_);
 }
 
-std::optional<RayMajorantSegment> DdaMajorantIterator::next() {
+bool DdaMajorantIterator::next(RayMajorantSegment& out) {
   while (t_min_ < t_max_) {
     int axis = 0;
     if (next_t_[1] < next_t_[axis]) axis = 1;
@@ -78,9 +78,12 @@ std::optional<RayMajorantSegment> DdaMajorantIterator::next() {
       t_min_ = segment.t_max;
       next_t_[axis] = crossing(axis);
     }
-    if (segment.t_max > segment.t_min && !(skip_empty_ && density_max == 0.0f)) return segment;
+    if (segment.t_max > segment.t_min && !(skip_empty_ && density_max == 0.0f)) {
+      out = segment;
+      return true;
+    }
   }
-  return std::nullopt;
+  return false;
 }
 
 }  // namespace rtpro

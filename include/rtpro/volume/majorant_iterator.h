@@ -27,7 +27,14 @@ class DdaMajorantIterator {
   DdaMajorantIterator(const Vec3& origin, const Vec3& dir, float t_min, float t_max, const MajorantGrid& grid,
                       float sigma_t, bool skip_empty = false);
 
-  std::optional<RayMajorantSegment> next();
+  std::optional<RayMajorantSegment> next() {
+    RayMajorantSegment segment;
+    return next(segment) ? std::optional<RayMajorantSegment>(segment) : std::nullopt;
+  }
+  // The same into `out` (left as it was at the end), for the tracking's loop: an optional
+  // returned from out of line is put together on the stack field by field and loaded back whole,
+  // which stalls on store forwarding (40% of this function's time in smoke.yaml).
+  bool next(RayMajorantSegment& out);
 
  private:
   float crossing(int axis) const;

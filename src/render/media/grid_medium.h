@@ -23,9 +23,9 @@ class GridMajorants {
  public:
   explicit GridMajorants(DdaMajorantIterator cells) : cells_(cells) {}
   std::optional<MajorantSegment> next() {
-    const std::optional<RayMajorantSegment> cell = cells_.next();
-    if (!cell) return std::nullopt;
-    return MajorantSegment{cell->t_min, cell->t_max, cell->sigma_maj};
+    RayMajorantSegment cell;
+    if (!cells_.next(cell)) return std::nullopt;
+    return MajorantSegment{cell.t_min, cell.t_max, cell.sigma_maj};
   }
 
  private:

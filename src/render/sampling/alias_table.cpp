@@ -41,14 +41,4 @@ AliasTable::AliasTable(std::span<const float> weights) {
   for (const std::uint32_t i : large) bins_[i].threshold = 1.0f;
 }
 
-AliasTable::Pick AliasTable::sample(float u) const {
-  const float scaled = u * static_cast<float>(bins_.size());
-  const auto bin = std::min(static_cast<std::size_t>(scaled), bins_.size() - 1);
-  const float within = std::min(scaled - static_cast<float>(bin), 0x1.fffffep-1f);
-  const Bin& b = bins_[bin];
-  if (within < b.threshold)
-    return {static_cast<std::uint32_t>(bin), b.pmf, std::min(within / b.threshold, 0x1.fffffep-1f)};
-  return {b.alias, bins_[b.alias].pmf, std::min((within - b.threshold) / (1.0f - b.threshold), 0x1.fffffep-1f)};
-}
-
 }  // namespace rtpro
