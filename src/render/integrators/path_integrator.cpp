@@ -24,22 +24,26 @@ void start_camera_paths(const CameraBatch& batch, PathWorkspace& ws) {
   ws.rays.assign(batch.rays.begin(), batch.rays.end());
   for (std::uint32_t i = 0; i < batch.rays.size(); ++i) {
     batch.results[i] = SampleResult{};
-    ws.paths.push_back({.sample = i,
-                        .bounce = 0,
-                        .diffuse_bounces = 0,
-                        .glossy_bounces = 0,
-                        .transmission_bounces = 0,
-                        .volume_bounces = 0,
-                        .beta = Color(1.0f),
-                        .eta_scale = 1.0f,
-                        .origin = batch.rays[i].org,
-                        .bsdf_pdf = 0.0f,
-                        .min_pdf = std::numeric_limits<float>::infinity(),
-                        .group = 0,
-                        .media = {},
-                        .specular = true,
-                        .aov_pending = true,
-                        .transmitted = false});
+    // Written in place a field at a time: a Path built as a temporary and pushed was copied with
+    // wide loads over the narrow stores that had just built it, a store-forwarding stall per path
+    // (half of this function's time).
+    Path& path = ws.paths.emplace_back();
+    path.sample = i;
+    path.bounce = 0;
+    path.diffuse_bounces = 0;
+    path.glossy_bounces = 0;
+    path.transmission_bounces = 0;
+    path.volume_bounces = 0;
+    path.beta = Color(1.0f);
+    path.eta_scale = 1.0f;
+    path.origin = batch.rays[i].org;
+    path.bsdf_pdf = 0.0f;
+    path.min_pdf = std::numeric_limits<float>::infinity();
+    path.group = 0;
+    path.media = {};
+    path.specular = true;
+    path.aov_pending = true;
+    path.transmitted = false;
   }
 }
 
