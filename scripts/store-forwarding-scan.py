@@ -18,6 +18,7 @@ function's share of the whole profile; candidates are sorted by the product.
 """
 import collections
 import re
+import signal
 import subprocess
 import sys
 
@@ -159,6 +160,8 @@ def main():
         for address, text in sites:
             # The load's own samples and those of the next few bytes (the instruction after it).
             on_load = sum(at.get(address + k, 0) for k in range(0, 12))
+            if on_load == 0:
+                continue
             rows.append((on_load / total, on_load / samples, samples / total, function, address, text))
     for of_total, of_function, function_share, function, address, text in sorted(rows, reverse=True)[:40]:
         print(f'{100 * of_total:5.2f}% of all  ({100 * of_function:4.1f}% of a function at {100 * function_share:4.1f}%)'
@@ -166,4 +169,5 @@ def main():
 
 
 if __name__ == '__main__':
+    signal.signal(signal.SIGPIPE, signal.SIG_DFL)  # quiet when piped into head
     main()
