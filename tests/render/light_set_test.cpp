@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -153,6 +154,42 @@ TEST(LightSet, PdfOfASphereLightIntegratesToOne) {
     integral *= 2.0 * std::numbers::pi * (1.0 - cos_cone) / kDirections;
     EXPECT_NEAR(integral, 1.0, 0.01);
   }
+}
+
+// A camera or BSDF ray sees the nearest light without geometry in (tnear, t_max) and no other: a
+// quad in front of a sphere light hides it, a t_max at or before a light's surface hides that
+// light, and a ray that starts past the quad sees the sphere.
+TEST(LightSet, ARaySeesTheNearestLightWithoutGeometryBeforeItsEnd) {
+  const RenderScene scene = build_render_scene(parse_scene_text(R"(
+rtpro: 1
+camera: {position: [0, 0, -5], look_at: [0, 0, 0]}
+lights:
+  - {type: quad, position: [0, 0, 3], edge1: [0, 1, 0], edge2: [1, 0, 0], intensity: 4}
+  - {type: sphere, center: [0, 0, 5], radius: 1, intensity: 3}
+world: []
+)",
+                                                                "seen.yaml"));
+  const LightSet lights(scene);
+  const Ray from_origin{Vec3(0.0f, 0.0f, 0.0f), 0.0f, Vec3(0.0f, 0.0f, 1.0f)};
+  const std::optional<LightSet::SeenLight> quad = lights.seen_light(from_origin, 100.0f);
+  ASSERT_TRUE(quad);
+  EXPECT_EQ(quad->index, 0u);  // the sphere, met after it in the list, is farther
+  EXPECT_FLOAT_EQ(quad->t, 3.0f);
+  EXPECT_GT(quad->radiance.x, 0.0f);
+  EXPECT_FALSE(lights.seen_light(from_origin, 3.0f));  // t_max at the quad: (tnear, t_max) is open
+  EXPECT_FALSE(lights.seen_light(from_origin, 2.5f));
+
+  const Ray past_the_quad{Vec3(0.0f, 0.0f, 3.5f), 0.0f, Vec3(0.0f, 0.0f, 1.0f)};
+  const std::optional<LightSet::SeenLight> sphere = lights.seen_light(past_the_quad, 100.0f);
+  ASSERT_TRUE(sphere);
+  EXPECT_EQ(sphere->index, 1u);
+  EXPECT_FLOAT_EQ(sphere->t, 0.5f);
+  EXPECT_NE(sphere->radiance, quad->radiance);
+  EXPECT_FALSE(lights.seen_light(past_the_quad, 0.5f));
+
+  // The quad's back faces the sphere: a ray from the sphere towards it sees nothing.
+  const Ray back{Vec3(0.0f, 0.0f, 3.5f), 0.0f, Vec3(0.0f, 0.0f, -1.0f)};
+  EXPECT_FALSE(lights.seen_light(back, 100.0f));
 }
 
 // reads_pick_number and reads_point_numbers may say "no" only when sample() does not depend on
