@@ -33,7 +33,7 @@ class DdaMajorantIterator {
   }
   // The same into `out` (left as it was at the end), for the tracking's loop: an optional
   // returned from out of line is put together on the stack field by field and loaded back whole,
-  // which stalls on store forwarding (40% of this function's time in smoke.yaml).
+  // which stalls on store forwarding.
   bool next(RayMajorantSegment& out);
 
  private:

@@ -24,9 +24,8 @@ void start_camera_paths(const CameraBatch& batch, PathWorkspace& ws) {
   ws.rays.assign(batch.rays.begin(), batch.rays.end());
   for (std::uint32_t i = 0; i < batch.rays.size(); ++i) {
     batch.results[i] = SampleResult{};
-    // Written in place a field at a time: a Path built as a temporary and pushed was copied with
-    // wide loads over the narrow stores that had just built it, a store-forwarding stall per path
-    // (half of this function's time).
+    // Written in place a field at a time: a Path built as a temporary and pushed is copied with
+    // wide loads over the narrow stores that have just built it, a store-forwarding stall per path.
     Path& path = ws.paths.emplace_back();
     path.sample = i;
     path.bounce = 0;

@@ -90,9 +90,8 @@ bool found_environment_contribution(const PathWorkspace::ShadowQuery& query, con
 
 // What a shadow query adds when its ray passes, into `out`: its contribution, or an environment
 // sample's found now; false when it adds nothing. Inline, and not an optional: every shadow ray
-// that passes asks, and an optional<Color> returned from out of line was put together on the stack
-// a field at a time and loaded back whole, a store-forwarding stall (three quarters of the
-// function's time).
+// that passes asks, and an optional<Color> returned from out of line is put together on the stack
+// a field at a time and loaded back whole, a store-forwarding stall.
 inline bool found_contribution(const PathWorkspace::ShadowQuery& query, const PathWorkspace& ws, PathSampling sampling,
                                Color& out) {
   if (query.unfound != PathWorkspace::kFound) return found_environment_contribution(query, ws, sampling, out);

@@ -33,8 +33,7 @@ inline LightSample sample_light(const Light& light, const Vec3& point, Sample2D 
 // nearest visible hit in (ray.tnear, t_max), or kLightMissed (always for point, spot and
 // directional lights, which are never seen). What it shows is light_emission(). A float, not a
 // std::optional: every camera and BSDF ray asks every sphere and quad light, and an optional<float>
-// put together in memory field by field, then loaded whole, stalls on store forwarding (it was
-// two thirds of the time of LightSet's search for the light a ray sees).
+// put together in memory field by field, then loaded whole, stalls on store forwarding.
 float hit_light(const Light& light, const Ray& ray, float t_max);
 Color light_emission(const Light& light);
 

@@ -24,8 +24,8 @@ struct PhaseSample {
 };
 
 // A direction from the phase function about unit `incoming`, from the two numbers u. Inline: its
-// PhaseSample returned from out of line was put together on the stack a float at a time and
-// loaded back in pairs, a store-forwarding stall (a third of its time in subsurface.yaml).
+// PhaseSample returned from out of line is put together on the stack a float at a time and
+// loaded back in pairs, a store-forwarding stall.
 inline PhaseSample sample_henyey_greenstein(const Vec3& incoming, float g, Sample2D u) {
   // The inverse of the distribution of cos θ; isotropic below |g| = 1e-3, where the inverse loses
   // its digits to cancellation.

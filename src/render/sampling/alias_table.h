@@ -23,7 +23,7 @@ class AliasTable {
     float pmf;         // the probability of picking `index`
     float remapped_u;  // u's remaining precision, uniform in [0, 1) again, for a further choice
   };
-  // u in [0, 1). The table must not be empty. Inline: its Pick returned from out of line was put
+  // u in [0, 1). The table must not be empty. Inline: its Pick returned from out of line is put
   // together on the stack and loaded back whole, a store-forwarding stall per pick.
   Pick sample(float u) const {
     const float scaled = u * static_cast<float>(bins_.size());
