@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <variant>
 
 namespace rtpro {
@@ -43,6 +44,39 @@ bool may_tie_with_a_neighbour(const RenderScene& scene, const Hit& hit) {
                            : scene.prototypes[std::get<Instance>(scene.top.geometries[hit.inst_id]).prototype];
   if (!std::holds_alternative<TriangleMesh>(group.geometries[hit.geom_id])) return false;
   return hit.u <= kTieBand || hit.v <= kTieBand || 1.0f - hit.u - hit.v <= kTieBand;
+}
+
+// A coherent occlusion stream's context. The stream culls with its packets' frustum and its own
+// test of a leaf's box (none for a root leaf), which can let a ray that runs exactly along a
+// triangle's edge into a leaf whose box the ray alone misses by an ulp; Embree's edge test allows
+// an ulp, so the stream meets a hit the ray alone never reaches, and whether it does depends on
+// the rays it is grouped with (Embree 3.13's BVHNIntersectorStream::occludedCoherent). Such a
+// candidate lies within kTieBand of the edge: the filter refuses it and marks the ray to be traced
+// again alone. Any other candidate the ray alone meets too (every box on its way holds it with
+// room to spare), so it stands.
+struct StreamOcclusionContext {
+  RTCIntersectContext base;  // first member: Embree passes &base to the filter
+  const EmbreeRayTarget* target;
+  std::uint32_t alone;  // bit k: ray k of the 32 met a candidate within kTieBand of an edge
+};
+static_assert(std::is_standard_layout_v<StreamOcclusionContext>);
+
+// Embree's context filter (called from inside its kernels: nothing here may throw).
+void refuse_edge_candidates(const RTCFilterFunctionNArguments* args) {
+  auto* context = reinterpret_cast<StreamOcclusionContext*>(args->context);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] == 0) continue;
+    Hit hit;
+    hit.u = RTCHitN_u(args->hit, args->N, i);
+    hit.v = RTCHitN_v(args->hit, args->N, i);
+    hit.geom_id = RTCHitN_geomID(args->hit, args->N, i);
+    hit.prim_id = RTCHitN_primID(args->hit, args->N, i);
+    hit.inst_id = RTCHitN_instID(args->hit, args->N, i, 0);
+    context->target->hit_ids.resolve(hit);
+    if (!may_tie_with_a_neighbour(context->target->render_scene, hit)) continue;
+    args->valid[i] = 0;
+    context->alone |= 1u << RTCRayN_id(args->ray, args->N, i);
+  }
 }
 
 // Ray i's time in the shutter, 0 where the batch has no times.
@@ -218,14 +252,20 @@ RTPRO_AVX2_CLONES void occluded_stream(const EmbreeRayTarget& target, std::span<
     std::uint32_t queried = 0;
     for (unsigned k = 0; k < count; ++k)
       if (packets[k / kPacket].tfar[k % kPacket] >= 0.0f) queried |= 1u << k;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-    rtcOccludedNM(target.scene, &context, reinterpret_cast<RTCRayN*>(packets), kPacket, kStreamPackets,
+    StreamOcclusionContext context;
+    rtcInitIntersectContext(&context.base);
+    context.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    context.base.filter = refuse_edge_candidates;
+    context.target = &target;
+    context.alone = 0;
+    rtcOccludedNM(target.scene, &context.base, reinterpret_cast<RTCRayN*>(packets), kPacket, kStreamPackets,
                   sizeof(RTCRay8));
     for (unsigned k = 0; k < count; ++k) {
       const bool occluded = (queried >> k & 1u) != 0 && packets[k / kPacket].tfar[k % kPacket] < 0.0f;
       result[first + k] = occluded ? 1 : 0;
+      if (!occluded && (context.alone >> k & 1u) != 0)
+        occluded_one_by_one(target, rays.subspan(first + k, 1), times.empty() ? times : times.subspan(first + k, 1),
+                            result.subspan(first + k, 1));
     }
   }
 }

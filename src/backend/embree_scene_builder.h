@@ -16,7 +16,7 @@
 namespace rtpro {
 
 struct EmbreeBuildSettings {
-  RTCSceneFlags flags = RTC_SCENE_FLAG_ROBUST;
+  RTCSceneFlags flags = static_cast<RTCSceneFlags>(RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   RTCBuildQuality quality = RTC_BUILD_QUALITY_MEDIUM;
 };
 

@@ -65,7 +65,11 @@ TEST(EmbreeGroupFlags, OtherFlagsAndTheOptionsStand) {
   EXPECT_TRUE((curves & RTC_SCENE_FLAG_COMPACT) != 0);
   EXPECT_FALSE(robust(curves));
   options.embree_robust = false;
-  EXPECT_FALSE(robust(embree_group_flags(group_of({a_triangle()}), {}, embree_build_settings(options))));
+  const RTCSceneFlags triangles = embree_group_flags(group_of({a_triangle()}), {}, embree_build_settings(options));
+  EXPECT_FALSE(robust(triangles));
+  // Coherent occlusion streams set a context filter (embree_ray_batches.cpp): every scene allows it.
+  for (const RTCSceneFlags flags : {curves, triangles})
+    EXPECT_TRUE((flags & RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION) != 0);
 }
 
 }  // namespace
