@@ -277,5 +277,100 @@ TEST_F(BatchQueriesAtTies, EmbreeCoherentOcclusionWhateverItsGrouping) {
   }
 }
 
+// Curves: Embree answers a ray's curve hits in a stream or packet in their last bits otherwise
+// than alone, but never otherwise for other company. Groups of eight rays from one point, aimed
+// at points on and just beside random tubes and ribbons, so that many graze them; the curves
+// alone (traced without robust mode) and beside a triangle (with it).
+class BatchQueriesOnCurves : public ::testing::TestWithParam<std::tuple<CurveShape, bool>> {
+ protected:
+  void SetUp() override { set_tracing_fp_mode(); }
+
+  static RenderScene curve_scene(CurveShape shape, bool beside_a_triangle) {
+    std::mt19937 rng(3);
+    RenderScene scene = test::empty_scene();
+    CurveSet curves;
+    curves.shape = shape;
+    curves.basis = CurveBasis::kCatmullRom;
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f), radius(0.01f, 0.05f);
+    for (int c = 0; c < 300; ++c) {
+      const Vec3 start{3.0f * unit(rng), 3.0f * unit(rng), 3.0f * unit(rng)};
+      const Vec3 step{0.3f * unit(rng), 0.3f * unit(rng), 0.3f * unit(rng)};
+      curves.segments.push_back(static_cast<std::uint32_t>(curves.points.size()));
+      for (int k = 0; k < 4; ++k) curves.points.push_back({start + step * float(k), radius(rng)});
+    }
+    scene.top.geometries.emplace_back(std::move(curves));
+    if (beside_a_triangle) {
+      TriangleMesh mesh;
+      mesh.vertices = {{-9, -9, -9}, {-8, -9, -9}, {-9, -8, -9}};
+      mesh.triangles = {{0, 1, 2}};
+      scene.top.geometries.emplace_back(std::move(mesh));
+    }
+    return scene;
+  }
+
+  static std::vector<Ray> grazing_rays(const RenderScene& scene) {
+    const CurveSet& curves = std::get<CurveSet>(scene.top.geometries[0]);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    std::vector<Ray> rays;
+    for (int group = 0; group < 500; ++group) {
+      const Vec3 eye{6.0f * unit(rng), 6.0f * unit(rng), 8.0f};
+      for (int k = 0; k < 8; ++k) {
+        const CurvePoint& p = curves.points[(rng() % curves.segments.size()) * 4 + 1 + rng() % 2];
+        const Vec3 side = normalize(Vec3{unit(rng), unit(rng), unit(rng)});
+        const float reach = p.radius * (k % 2 == 0 ? 1.0f + 1e-4f * unit(rng) : 0.5f * (1.0f + unit(rng)));
+        Ray ray;
+        ray.org = eye;
+        ray.dir = p.position + side * reach - eye;
+        if (k % 4 == 3) ray.tfar = 1.0f;
+        rays.push_back(ray);
+      }
+    }
+    return rays;
+  }
+};
+
+TEST_P(BatchQueriesOnCurves, EmbreeBatchesAnswerWhateverTheirGrouping) {
+  const RenderScene scene = curve_scene(std::get<0>(GetParam()), std::get<1>(GetParam()));
+  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
+  const std::vector<Ray> rays = grazing_rays(scene);
+  const std::span<const Ray> all(rays);
+  for (const RayCoherence coherence : {RayCoherence::kCoherent, RayCoherence::kIncoherent}) {
+    std::vector<Hit> hits(rays.size());
+    backend->intersect(rays, hits, coherence);
+    std::vector<std::uint8_t> occluded(rays.size(), 7);
+    backend->occluded(rays, occluded, coherence);
+    int found = 0, blocked = 0;
+    for (std::size_t r = 0; r < rays.size(); ++r) {
+      found += hits[r].valid();
+      blocked += occluded[r] == 1;
+    }
+    EXPECT_GT(found, 1000);
+    EXPECT_GT(blocked, 1000);
+    for (const std::size_t split : {1, 3, 5, 17}) {
+      std::vector<Hit> regrouped(rays.size());
+      const std::span<Hit> out(regrouped);
+      backend->intersect(all.first(split), out.first(split), coherence);
+      backend->intersect(all.subspan(split), out.subspan(split), coherence);
+      std::vector<std::uint8_t> occluded_regrouped(rays.size(), 7);
+      const std::span<std::uint8_t> blocked_out(occluded_regrouped);
+      backend->occluded(all.first(split), blocked_out.first(split), coherence);
+      backend->occluded(all.subspan(split), blocked_out.subspan(split), coherence);
+      for (std::size_t r = 0; r < rays.size(); ++r) {
+        test::expect_same_hit(hits[r], regrouped[r], r);
+        EXPECT_EQ(occluded[r], occluded_regrouped[r]) << r << " split at " << split;
+      }
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, BatchQueriesOnCurves,
+                         ::testing::Combine(::testing::Values(CurveShape::kRound, CurveShape::kFlat),
+                                            ::testing::Bool()),
+                         [](const auto& info) {
+                           return std::string(std::get<0>(info.param) == CurveShape::kRound ? "round" : "flat") +
+                                  (std::get<1>(info.param) ? "_robust" : "_alone");
+                         });
+
 }  // namespace batch_queries_test
 }  // namespace rtpro
