@@ -125,6 +125,24 @@ class BatchQueriesAtTies : public ::testing::Test {
 
   static constexpr int kCells = 24;
 
+  // The grid placed by an instance, one unit up (rays and grid then meet at the same points); a
+  // translation keeps the rays' coordinates exact in the instance's space.
+  static RenderScene instanced_grid_scene() {
+    RenderScene grid = grid_scene();
+    RenderScene scene = test::empty_scene();
+    Group prototype;
+    prototype.geometries = std::move(grid.top.geometries);
+    scene.prototypes.push_back(std::move(prototype));
+    const Affine up = Affine::translate({0.0f, 1.0f, 0.0f});
+    scene.top.geometries.emplace_back(Instance{0, up, *inverse(up)});
+    return scene;
+  }
+
+  static std::vector<Ray> raised(std::vector<Ray> rays) {
+    for (Ray& ray : rays) ray.org.y += 1.0f;
+    return rays;
+  }
+
   static RenderScene grid_scene() {
     RenderScene scene = test::empty_scene();
     TriangleMesh grid;
@@ -371,6 +389,42 @@ INSTANTIATE_TEST_SUITE_P(Shapes, BatchQueriesOnCurves,
                            return std::string(std::get<0>(info.param) == CurveShape::kRound ? "round" : "flat") +
                                   (std::get<1>(info.param) ? "_robust" : "_alone");
                          });
+
+TEST_F(BatchQueriesAtTies, EmbreeCoherentBatchesThroughAnInstanceWhateverTheirGrouping) {
+  const RenderScene scene = instanced_grid_scene();
+  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
+  const std::vector<Ray> rays = raised(tie_rays());
+  const std::span<const Ray> all(rays);
+  for (const RayCoherence coherence : {RayCoherence::kCoherent, RayCoherence::kIncoherent}) {
+    std::vector<Hit> hits(rays.size());
+    backend->intersect(rays, hits, coherence);
+    std::vector<std::uint8_t> occluded(rays.size(), 7);
+    backend->occluded(rays, occluded, coherence);
+    int found = 0;
+    for (std::size_t r = 0; r < rays.size(); ++r) {
+      Hit single;
+      backend->intersect(rays[r], single);
+      test::expect_same_hit(hits[r], single, r);
+      EXPECT_EQ(occluded[r] == 1, backend->occluded(rays[r])) << r;
+      found += single.valid();
+    }
+    EXPECT_GT(found, 1800);
+    for (const std::size_t split : {1, 3, 5, 17}) {
+      std::vector<Hit> regrouped(rays.size());
+      const std::span<Hit> out(regrouped);
+      backend->intersect(all.first(split), out.first(split), coherence);
+      backend->intersect(all.subspan(split), out.subspan(split), coherence);
+      std::vector<std::uint8_t> occluded_regrouped(rays.size(), 7);
+      const std::span<std::uint8_t> blocked(occluded_regrouped);
+      backend->occluded(all.first(split), blocked.first(split), coherence);
+      backend->occluded(all.subspan(split), blocked.subspan(split), coherence);
+      for (std::size_t r = 0; r < rays.size(); ++r) {
+        test::expect_same_hit(hits[r], regrouped[r], r);
+        EXPECT_EQ(occluded[r], occluded_regrouped[r]) << r << " split at " << split;
+      }
+    }
+  }
+}
 
 }  // namespace batch_queries_test
 }  // namespace rtpro
