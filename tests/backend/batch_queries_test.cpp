@@ -298,7 +298,7 @@ TEST_F(BatchQueriesAtTies, EmbreeCoherentOcclusionWhateverItsGrouping) {
 // Curves: Embree answers a ray's curve hits in a stream or packet in their last bits otherwise
 // than alone, but never otherwise for other company. Groups of eight rays from one point, aimed
 // at points on and just beside random tubes and ribbons, so that many graze them; the curves
-// alone (traced without robust mode) and beside a triangle (with it).
+// alone (Embree traces them without robust mode) and beside a triangle (with it).
 class BatchQueriesOnCurves : public ::testing::TestWithParam<std::tuple<CurveShape, bool>> {
  protected:
   void SetUp() override { set_tracing_fp_mode(); }
@@ -382,12 +382,34 @@ TEST_P(BatchQueriesOnCurves, EmbreeBatchesAnswerWhateverTheirGrouping) {
   }
 }
 
+// The native backend's packets answer each curve lane as the ray alone.
+TEST_P(BatchQueriesOnCurves, NativeBatchesAnswerAsSingleRays) {
+  const RenderScene scene = curve_scene(std::get<0>(GetParam()), std::get<1>(GetParam()));
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
+  const std::vector<Ray> rays = grazing_rays(scene);
+  for (const RayCoherence coherence : {RayCoherence::kCoherent, RayCoherence::kIncoherent}) {
+    std::vector<Hit> hits(rays.size());
+    backend->intersect(rays, hits, coherence);
+    std::vector<std::uint8_t> occluded(rays.size(), 7);
+    backend->occluded(rays, occluded, coherence);
+    int found = 0;
+    for (std::size_t r = 0; r < rays.size(); ++r) {
+      Hit single;
+      backend->intersect(rays[r], single);
+      test::expect_same_hit(hits[r], single, r);
+      EXPECT_EQ(occluded[r] == 1, backend->occluded(rays[r])) << r;
+      found += single.valid();
+    }
+    EXPECT_GT(found, 1000);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Shapes, BatchQueriesOnCurves,
                          ::testing::Combine(::testing::Values(CurveShape::kRound, CurveShape::kFlat),
                                             ::testing::Bool()),
                          [](const auto& info) {
                            return std::string(std::get<0>(info.param) == CurveShape::kRound ? "round" : "flat") +
-                                  (std::get<1>(info.param) ? "_robust" : "_alone");
+                                  (std::get<1>(info.param) ? "_beside_a_triangle" : "_alone");
                          });
 
 TEST_F(BatchQueriesAtTies, EmbreeCoherentBatchesThroughAnInstanceWhateverTheirGrouping) {
