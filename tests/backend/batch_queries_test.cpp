@@ -365,6 +365,11 @@ TEST_P(BatchQueriesOnCurves, EmbreeBatchesAnswerWhateverTheirGrouping) {
     }
     EXPECT_GT(found, 1000);
     EXPECT_GT(blocked, 1000);
+    for (std::size_t r = 0; r < rays.size(); ++r) {
+      Hit alone;
+      backend->intersect(all.subspan(r, 1), std::span<Hit>(&alone, 1), coherence);
+      test::expect_same_hit(hits[r], alone, r);
+    }
     for (const std::size_t split : {1, 3, 5, 17}) {
       std::vector<Hit> regrouped(rays.size());
       const std::span<Hit> out(regrouped);
