@@ -295,6 +295,45 @@ TEST_F(BatchQueriesAtTies, EmbreeCoherentOcclusionWhateverItsGrouping) {
   }
 }
 
+// The grid deforming during the shutter (rising half a unit, level throughout, so the ties stay
+// exact at every time): rays with times at ties, through Embree's motion kernels.
+TEST_F(BatchQueriesAtTies, EmbreeTimedCoherentBatchesAnswerAsSingleRays) {
+  RenderScene scene = grid_scene();
+  auto& grid = std::get<TriangleMesh>(scene.top.geometries[0]);
+  VertexArray raised_grid = grid.vertices;
+  for (std::size_t i = 0; i < raised_grid.size(); ++i) {
+    const Vec3 p = grid.vertices[i].position();
+    raised_grid[i] = {p.x, p.y + 0.5f, p.z};
+  }
+  grid.vertex_steps = {grid.vertices, raised_grid};
+  const auto backend = make_backend(BackendKind::kEmbree, scene, {});
+  // The tie rays (each traced again alone where it meets the grid near an edge), and as many
+  // again through the cells' insides, which only the stream answers.
+  std::vector<Ray> rays = tie_rays();
+  for (std::size_t r = 0, ties = rays.size(); r < ties; ++r) {
+    Ray inside = rays[r];
+    inside.org = inside.org + Vec3(0.07f, 0.0f, 0.17f);
+    rays.push_back(inside);
+  }
+  std::vector<float> times(rays.size());
+  for (std::size_t r = 0; r < rays.size(); ++r) times[r] = static_cast<float>(r % 3) * 0.5f;
+  for (const RayCoherence coherence : {RayCoherence::kCoherent, RayCoherence::kIncoherent}) {
+    std::vector<Hit> hits(rays.size());
+    backend->intersect(rays, times, hits, coherence);
+    std::vector<std::uint8_t> occluded(rays.size(), 7);
+    backend->occluded(rays, times, occluded, coherence);
+    int found = 0;
+    for (std::size_t r = 0; r < rays.size(); ++r) {
+      Hit single;
+      if (!backend->intersect(rays[r], times[r], single)) single = Hit{};
+      test::expect_same_hit(hits[r], single, r);
+      EXPECT_EQ(occluded[r] == 1, backend->occluded(rays[r], times[r])) << r;
+      found += single.valid();
+    }
+    EXPECT_GT(found, 3600);
+  }
+}
+
 // Curves: Embree answers a ray's curve hits in a stream or packet in their last bits otherwise
 // than alone, but never otherwise for other company. Groups of eight rays from one point, aimed
 // at points on and just beside random tubes and ribbons, so that many graze them; the curves
