@@ -19,7 +19,8 @@ namespace {
 
 constexpr unsigned char kExrMagic[4] = {0x76, 0x2f, 0x31, 0x01};
 constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
-constexpr unsigned char kJpegSignature[3] = {0xFF, 0xD8, 0xFF};
+// libjpeg needs only the start-of-image marker first; it skips any bytes before the next marker.
+constexpr unsigned char kJpegSignature[2] = {0xFF, 0xD8};
 constexpr unsigned char kGif87[6] = {'G', 'I', 'F', '8', '7', 'a'};
 constexpr unsigned char kGif89[6] = {'G', 'I', 'F', '8', '9', 'a'};
 constexpr std::uint32_t kExrLongNames = 0x400;

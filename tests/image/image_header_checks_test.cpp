@@ -41,6 +41,14 @@ TEST(ImageIo, AJpegWhosePhotoshopBlockClaimsMoreThanItsSegmentIsRefused) {
   claims_more[resource + 11] = '\xff';
   std::ofstream(folder / "claims_more.jpg", std::ios::binary) << claims_more;
   EXPECT_THROW(read_image(folder / "claims_more.jpg"), InputError);
+  // The same with a stray byte for the first segment's marker, which libjpeg skips up to the next
+  // one (a fuzz finding: the file no longer starts with JPEG's three-byte signature, so it was
+  // opened as JPEG by its extension, unchecked).
+  std::string stray_byte = claims_more;
+  ASSERT_EQ(stray_byte[2], '\xff');
+  stray_byte[2] = '\x5d';
+  std::ofstream(folder / "stray_byte.jpg", std::ios::binary) << stray_byte;
+  EXPECT_THROW(read_image(folder / "stray_byte.jpg"), InputError);
 
   std::string cut_short = written;  // the segment ends inside the block's header (16 bytes of data)
   cut_short[segment + 2] = 0;
