@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Renders every shipped scene (the dragons aside) small, on both backends and under both
 # integrators, into a folder of EXRs: the before/after evidence that a refactor changed no pixel.
-#   scripts/render-fingerprints.sh RTPRO_BINARY OUT_DIR
+#   scripts/render-fingerprints.sh RTPRO_BINARY OUT_DIR [RENDER_OPTION...]  # e.g. --tile-size 7
 #   scripts/render-fingerprints.sh --compare DIR_A DIR_B   # every image pair identical, bit for bit
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,6 +22,7 @@ if [ "${1:-}" = "--compare" ]; then
 fi
 
 binary=$1 out=$2
+shift 2  # what is left goes to every render, after the script's own options
 mkdir -p "$out"
 scenes=(scenes/*.yaml scenes/*.gltf benchmarks/embree/cornell_box.yaml benchmarks/scenes/*.yaml)
 for scene in "${scenes[@]}"; do
@@ -33,7 +34,7 @@ for scene in "${scenes[@]}"; do
   for backend in native embree; do
     for integrator in whitted path; do
       "$binary" render "$scene" -o "$out/$stem.$backend.$integrator.exr" --size 160x120 --spp 4 \
-        --backend "$backend" --integrator "$integrator" --threads 2 -q --no-journal
+        --backend "$backend" --integrator "$integrator" --threads 2 -q --no-journal "$@"
     done
   done
 done
