@@ -21,8 +21,10 @@ constexpr unsigned char kExrMagic[4] = {0x76, 0x2f, 0x31, 0x01};
 constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
 // libjpeg needs only the start-of-image marker first; it skips any bytes before the next marker.
 constexpr unsigned char kJpegSignature[2] = {0xFF, 0xD8};
-constexpr unsigned char kGif87[6] = {'G', 'I', 'F', '8', '7', 'a'};
-constexpr unsigned char kGif89[6] = {'G', 'I', 'F', '8', '9', 'a'};
+// giflib compares only the first three bytes of GIF's six-byte signature (GIF_VERSION_POS): a
+// "GIF00a" file named .gif opens as well as a GIF89a.
+constexpr unsigned char kGifStamp[3] = {'G', 'I', 'F'};
+constexpr std::size_t kGifSignatureBytes = 6;
 constexpr std::uint32_t kExrLongNames = 0x400;
 constexpr std::uint32_t kExrMultipart = 0x1000;
 
@@ -376,7 +378,10 @@ std::optional<DeclaredImageSize> check_image_header(const std::filesystem::path&
   Reader in(file, size);
   const SourceLocation where{file.string()};
   if (in.starts_with(kExrMagic, sizeof kExrMagic)) return check_exr(in, where);
-  if (in.starts_with(kGif87, sizeof kGif87) || in.starts_with(kGif89, sizeof kGif89)) return check_gif(in);
+  if (size >= kGifSignatureBytes && in.starts_with(kGifStamp, sizeof kGifStamp)) {
+    in.seek(kGifSignatureBytes);
+    return check_gif(in);
+  }
   if (size >= 26 && in.starts_with(reinterpret_cast<const unsigned char*>("BM"), 2)) return check_bmp(in);
   if (in.starts_with(kJpegSignature, sizeof kJpegSignature)) check_jpeg(in, where);
   else if (in.starts_with(kPngSignature, sizeof kPngSignature)) return check_png(in, where);

@@ -20,8 +20,8 @@ namespace {
 // seed images are far smaller; a larger budget only spends executions on clearing memory and on
 // comparing big images pixel by pixel.
 constexpr std::uint64_t kReadBudget = std::uint64_t{2} << 20;
-constexpr std::array<std::string_view, 9> kExtensions = {".exr", ".png", ".tif", ".jpg", ".hdr",
-                                                         ".pfm", ".ppm", ".bmp", ".tga"};
+constexpr std::array<std::string_view, 10> kExtensions = {".exr", ".png", ".tif", ".jpg", ".hdr",
+                                                          ".pfm", ".ppm", ".bmp", ".tga", ".gif"};
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

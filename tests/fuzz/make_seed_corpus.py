@@ -125,6 +125,7 @@ def image_seeds(work):
     path = pathlib.Path(work) / "small.gif"
     subprocess.run(["oiiotool", "--pattern", "checker", "6x5", "3", "-d", "uint8", "-o", str(path)], check=True)
     put("image", "small.gif", bytes([1]) + path.read_bytes())
+    put("image", "small-named.gif", bytes([9]) + path.read_bytes())  # by its .gif extension too
     # A valid PNG signature and header declaring 65535 x 65535 pixels, and nothing else.
     ihdr = struct.pack(">IIBBBBB", 65535, 65535, 8, 2, 0, 0, 0)
     png = b"\x89PNG\r\n\x1a\n" + struct.pack(">I", len(ihdr)) + b"IHDR" + ihdr + struct.pack(">I", zlib.crc32(b"IHDR" + ihdr))
