@@ -334,7 +334,7 @@ DeclaredImageSize check_gif(Reader& in) {
 // from the info header: Windows (40 bytes or more: signed 32-bit width and height, a negative height
 // meaning top-down rows) or OS/2 core (12 bytes: unsigned 16-bit width and height).
 DeclaredImageSize check_bmp(Reader& in) {
-  DeclaredImageSize declared;  // "BM" has been read: file size, two reserved words, pixel offset
+  DeclaredImageSize declared;  // the magic number has been read: file size, two reserved words, pixel offset
   in.skip(12);
   const std::uint32_t info_size = in.u32(false);
   if (info_size == 12) {
@@ -382,7 +382,9 @@ std::optional<DeclaredImageSize> check_image_header(const std::filesystem::path&
     in.seek(kGifSignatureBytes);
     return check_gif(in);
   }
-  if (size >= 26 && in.starts_with(reinterpret_cast<const unsigned char*>("BM"), 2)) return check_bmp(in);
+  // OpenImageIO's BMP reader takes OS/2's magic numbers as well as Windows' BM.
+  for (const char* magic : {"BM", "BA", "CI", "CP", "PT"})
+    if (size >= 26 && in.starts_with(reinterpret_cast<const unsigned char*>(magic), 2)) return check_bmp(in);
   if (in.starts_with(kJpegSignature, sizeof kJpegSignature)) check_jpeg(in, where);
   else if (in.starts_with(kPngSignature, sizeof kPngSignature)) return check_png(in, where);
   else if (in.starts_with(reinterpret_cast<const unsigned char*>("P"), 1)) {

@@ -158,6 +158,16 @@ TEST(ImageIo, ABmpDeclaringMorePixelsThanTheBudgetIsRefusedBeforeOpenImageIoDeco
       error_message_of<InputError>([&] { read_image(folder / "wide.bmp", std::uint64_t{256} << 20); });
   EXPECT_NE(message.find("536870917x4"), std::string::npos) << message;
   EXPECT_NE(message.find("too large"), std::string::npos) << message;
+  // The reader takes OS/2's magic numbers too: each was opened unchecked, and the decode asked for
+  // the declared size.
+  for (const std::string magic : {"BA", "CI", "CP", "PT"}) {
+    std::string os2 = bytes;
+    os2.replace(0, 2, magic);
+    std::ofstream(folder / "wide_os2.bmp", std::ios::binary) << os2;
+    const std::string refused =
+        error_message_of<InputError>([&] { read_image(folder / "wide_os2.bmp", std::uint64_t{256} << 20); });
+    EXPECT_NE(refused.find("536870917x4"), std::string::npos) << magic << ": " << refused;
+  }
   put_u32(bytes, 18, 8);
   put_u32(bytes, 22, 0x80000000u);  // a height of INT32_MIN: top-down, and no absolute value in 32 bits
   std::ofstream(folder / "tall.bmp", std::ios::binary) << bytes;
