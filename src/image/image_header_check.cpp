@@ -382,9 +382,13 @@ std::optional<DeclaredImageSize> check_image_header(const std::filesystem::path&
     in.seek(kGifSignatureBytes);
     return check_gif(in);
   }
-  // OpenImageIO's BMP reader takes OS/2's magic numbers as well as Windows' BM.
-  for (const char* magic : {"BM", "BA", "CI", "CP", "PT"})
-    if (size >= 26 && in.starts_with(reinterpret_cast<const unsigned char*>(magic), 2)) return check_bmp(in);
+  if (size >= 26) {
+    // OpenImageIO's BMP reader takes OS/2's magic numbers as well as Windows' BM.
+    in.seek(0);
+    const std::string magic = in.chars(2);
+    for (const char* bmp : {"BM", "BA", "CI", "CP", "PT"})
+      if (magic == bmp) return check_bmp(in);
+  }
   if (in.starts_with(kJpegSignature, sizeof kJpegSignature)) check_jpeg(in, where);
   else if (in.starts_with(kPngSignature, sizeof kPngSignature)) return check_png(in, where);
   else if (in.starts_with(reinterpret_cast<const unsigned char*>("P"), 1)) {
