@@ -21,7 +21,8 @@ void add_environment_image(RenderCost& cost, const SceneDescription& scene) {
 }
 
 // Subdivision surfaces are made while the scene is built: they may take what the estimate left of
-// the budget, and read their displacement textures through the image layer.
+// the budget, and read their displacement textures through the image layer. Grids may take what
+// the estimate counted for them, from their files' statistics, and what it left.
 SceneBuildOptions build_options(const SceneLoad& load, const RenderCost& cost) {
   const MemoryBudget& memory = load.memory;
   SceneBuildOptions options;
@@ -29,6 +30,8 @@ SceneBuildOptions build_options(const SceneLoad& load, const RenderCost& cost) {
   options.piece_triangles = load.piece_triangles;
   options.geometry_budget =
       std::max<std::uint64_t>(memory.bytes > cost.total_bytes ? memory.bytes - cost.total_bytes : 0, 1);
+  const std::uint64_t left = memory.bytes > cost.total_bytes ? memory.bytes - cost.total_bytes : 0;
+  options.volume_budget = std::max<std::uint64_t>(saturating_add(cost.volume_bytes, left), 1);
   options.budget_source = memory.source;
   options.read_scalar_image = [](const std::filesystem::path& file, std::uint64_t max_bytes) {
     const Image image = read_image(file, max_bytes);

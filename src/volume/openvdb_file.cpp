@@ -2,6 +2,8 @@
 // that calls OpenVDB.
 #include "openvdb_file.h"
 
+#include "vdb_layout_check.h"
+
 #include "rtpro/core/closest_match.h"
 #include "rtpro/core/memory_budget.h"
 #include "rtpro/core/printable_text.h"
@@ -41,6 +43,9 @@ class VdbSource {
     std::error_code error;
     if (!std::filesystem::is_regular_file(request.file, error))
       fail(request, printable_text(request.file.string()) + ": no such OpenVDB file");
+    // Before OpenVDB reads a byte: it trusts every length and count the file states.
+    if (const std::optional<std::string> problem = vdb_layout_problem(request.file))
+      fail(request, printable_text(request.file.string()) + ": not a readable OpenVDB file (" + *problem + ")");
     try {
       file_.open(/*delayLoad=*/false);
       grids_ = file_.readAllGridMetadata();
@@ -185,15 +190,37 @@ VoxelGrid to_voxel_grid(const GridType& grid, const VdbRequest& request) {
   return voxels;
 }
 
+// The bricks the tree fills: one per leaf, and one per 8³ voxels of each active tile.
+template <typename GridType>
+std::uint64_t bricks_of(const GridType& grid) {
+  std::uint64_t bricks = grid.tree().leafCount();
+  auto tile = grid.tree().cbeginValueOn();
+  tile.setMaxDepth(grid.tree().treeDepth() - 2);  // above the leaves: tiles, not voxels
+  for (; tile; ++tile) bricks = saturating_add(bricks, tile.getBoundingBox().volume() / VoxelGrid::kBrickVoxels);
+  return bricks;
+}
+
+// `taken`: what the request's grids read before this one hold.
 VoxelGrid read_scalar_grid(VdbSource& source, const VdbRequest& request, const std::string& name,
-                           const std::string& role) {
+                           const std::string& role, std::uint64_t taken) {
   source.metadata(name, role);
   const openvdb::GridBase::Ptr grid = source.read(name);
   const openvdb::Index64 active = grid->activeVoxelCount();
   if (active == 0) fail(request, grid_label(request, name) + " has no active voxels");
-  VoxelGrid voxels = openvdb::GridBase::grid<openvdb::FloatGrid>(grid)
-                         ? to_voxel_grid(*openvdb::GridBase::grid<openvdb::FloatGrid>(grid), request)
-                         : to_voxel_grid(*openvdb::GridBase::grid<openvdb::DoubleGrid>(grid), request);
+  const auto floats = openvdb::GridBase::grid<openvdb::FloatGrid>(grid);
+  const auto doubles = openvdb::GridBase::grid<openvdb::DoubleGrid>(grid);
+  // The tree, not the statistics the budget was checked against: a 10 KB file whose statistics
+  // claimed one voxel held a tile of 4096³ (10 GB and rising after a minute, unchecked).
+  const VoxelBox box = voxel_box(grid->evalActiveVoxelBoundingBox());
+  const std::uint64_t bytes = VoxelGrid::bytes_for(box, floats ? bricks_of(*floats) : bricks_of(*doubles));
+  if (saturating_add(taken, bytes) > request.max_bytes)
+    fail(request,
+         grid_label(request, name) + " holds " + std::to_string(active) + " active voxels, " + format_bytes(bytes) +
+             " as rtpro holds them, more than the " +
+             format_bytes(request.max_bytes - std::min(taken, request.max_bytes)) + " left of the memory budget" +
+             (estimated_grid_bytes(*grid).value_or(bytes) < bytes ? " (the file's statistics claim less)" : "") +
+             "; raise the budget with --max-memory MiB");
+  VoxelGrid voxels = floats ? to_voxel_grid(*floats, request) : to_voxel_grid(*doubles, request);
   voxels.active_voxels = active;
   return voxels;
 }
@@ -216,10 +243,14 @@ std::uint64_t openvdb_estimate_bytes(const VdbRequest& request) {
 VdbGrids openvdb_read_grids(const VdbRequest& request) {
   VdbSource source(request);
   VdbGrids grids;
-  grids.density = read_scalar_grid(source, request, request.density, "density");
-  if (!request.emission.empty()) grids.emission = read_scalar_grid(source, request, request.emission, "emission");
+  grids.density = read_scalar_grid(source, request, request.density, "density", 0);
+  std::uint64_t taken = grids.density.memory_bytes();
+  if (!request.emission.empty()) {
+    grids.emission = read_scalar_grid(source, request, request.emission, "emission", taken);
+    taken = saturating_add(taken, grids.emission->memory_bytes());
+  }
   if (!request.temperature.empty())
-    grids.temperature = read_scalar_grid(source, request, request.temperature, "temperature");
+    grids.temperature = read_scalar_grid(source, request, request.temperature, "temperature", taken);
 
   grids.memory.active_voxels = grids.density.active_voxels;
   grids.memory.bytes = grids.density.memory_bytes() + (grids.emission ? grids.emission->memory_bytes() : 0) +
@@ -248,7 +279,8 @@ openvdb::GridBase::Ptr make_grid(const VdbGridSpec& spec, Convert convert) {
 
 }  // namespace
 
-void openvdb_write_file(const std::filesystem::path& file, std::span<const VdbGridSpec> grids) {
+void openvdb_write_file(const std::filesystem::path& file, std::span<const VdbGridSpec> grids,
+                        VdbCompression compression) {
   initialize_openvdb();
   openvdb::GridPtrVec out;
   for (const VdbGridSpec& spec : grids) {
@@ -261,13 +293,25 @@ void openvdb_write_file(const std::filesystem::path& file, std::span<const VdbGr
       grid = make_grid<openvdb::Vec3SGrid>(spec, [](float v) { return openvdb::Vec3s(v, v, v); });
     else throw InputError("write_vdb_file: unknown grid type '" + spec.type + "'");
     grid->setName(spec.name);
-    grid->setGridClass(spec.level_set ? openvdb::GRID_LEVEL_SET : openvdb::GRID_FOG_VOLUME);
+    grid->setGridClass(spec.level_set      ? openvdb::GRID_LEVEL_SET
+                       : spec.unclassified ? openvdb::GRID_UNKNOWN
+                                           : openvdb::GRID_FOG_VOLUME);
     openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(spec.voxel_size);
     transform->postTranslate(openvdb::Vec3d(spec.translation[0], spec.translation[1], spec.translation[2]));
     grid->setTransform(transform);
+    grid->setSaveFloatAsHalf(spec.save_as_half);
     out.push_back(grid);
   }
-  openvdb::io::File(file.string()).write(out);
+  openvdb::io::File writer(file.string());
+  switch (compression) {
+    case VdbCompression::kBlosc: break;  // OpenVDB's default
+    case VdbCompression::kZip:
+      writer.setCompression(openvdb::io::COMPRESS_ZIP | openvdb::io::COMPRESS_ACTIVE_MASK);
+      break;
+    case VdbCompression::kActiveMaskOnly: writer.setCompression(openvdb::io::COMPRESS_ACTIVE_MASK); break;
+    case VdbCompression::kNone: writer.setCompression(openvdb::io::COMPRESS_NONE); break;
+  }
+  writer.write(out);
 }
 
 }  // namespace rtpro

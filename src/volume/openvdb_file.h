@@ -7,6 +7,7 @@ namespace rtpro {
 
 std::uint64_t openvdb_estimate_bytes(const VdbRequest& request);
 VdbGrids openvdb_read_grids(const VdbRequest& request);
-void openvdb_write_file(const std::filesystem::path& file, std::span<const VdbGridSpec> grids);
+void openvdb_write_file(const std::filesystem::path& file, std::span<const VdbGridSpec> grids,
+                        VdbCompression compression);
 
 }  // namespace rtpro

@@ -30,8 +30,8 @@ std::uint64_t estimate_vdb_bytes(const VdbRequest& request) { return vdb_plugin(
 
 VdbGrids read_vdb_grids(const VdbRequest& request) { return vdb_plugin().read_grids(request); }
 
-void write_vdb_file(const std::filesystem::path& file, std::span<const VdbGridSpec> grids) {
-  vdb_plugin().write_file(file, grids);
+void write_vdb_file(const std::filesystem::path& file, std::span<const VdbGridSpec> grids, VdbCompression compression) {
+  vdb_plugin().write_file(file, grids, compression);
 }
 
 }  // namespace rtpro

@@ -9,7 +9,7 @@
 namespace rtpro {
 
 // Raise whenever a call is added, removed or changes its signature.
-inline constexpr int kVdbPluginAbiVersion = 1;
+inline constexpr int kVdbPluginAbiVersion = 2;
 inline constexpr const char* kVdbPluginEntryPoint = "rtpro_vdb_plugin";
 inline constexpr const char* kVdbPluginFileName = "librtpro_vdb.so";
 
@@ -18,7 +18,7 @@ struct VdbPluginApi {
   const char* rtpro_version;
   std::uint64_t (*estimate_bytes)(const VdbRequest&);
   VdbGrids (*read_grids)(const VdbRequest&);
-  void (*write_file)(const std::filesystem::path&, std::span<const VdbGridSpec>);
+  void (*write_file)(const std::filesystem::path&, std::span<const VdbGridSpec>, VdbCompression);
 };
 
 // The plugin's one exported symbol, named by kVdbPluginEntryPoint, is a `const VdbPluginApi* ()`

@@ -143,6 +143,37 @@ TEST(VdbFile, NegativeAndNonFiniteValuesAreRefusedWithTheFirstVoxel) {
   }
 }
 
+TEST(VdbFile, GridsLargerThanTheBudgetAreRefusedWhateverTheFilesStatisticsSay) {
+  VdbGridSpec spec = density_grid();
+  spec.tile_origin = VoxelCoord{128, 0, 0};
+  spec.tile_value = 0.5f;
+  spec.tile_level = 2;  // 128³ voxels: 4,096 bricks, 8 MiB
+  const auto file = write_vdb("tile.vdb", {spec});
+  VdbRequest request = request_for(file);
+  EXPECT_GT(estimate_vdb_bytes(request), 8u << 20);
+  request.max_bytes = 4u << 20;
+  std::string message = read_error(request);
+  EXPECT_NE(message.find("tile.vdb: grid 'density' holds 2097155 active voxels, "), std::string::npos) << message;
+  EXPECT_NE(message.find("more than the 4.0 MiB left of the memory budget; raise"), std::string::npos) << message;
+  // Statistics that claim three voxels in a small box: the estimate believes them, the read does not.
+  std::string bytes = test::read_file(file);
+  const auto patch = [&](const std::string& name, const void* value, std::size_t size) {
+    const std::size_t at = bytes.find(name);
+    ASSERT_NE(at, std::string::npos) << name;
+    const std::size_t value_at = at + name.size() + 4 + 5 + 4;  // the type "int64"/"vec3i", its size
+    bytes.replace(value_at, size, static_cast<const char*>(value), size);
+  };
+  const std::int64_t three = 3;
+  const std::int32_t small_box[3] = {1, 4, 20};
+  patch("file_voxel_count", &three, sizeof three);
+  patch("file_bbox_max", small_box, sizeof small_box);
+  request.file = test::write_file("lying.vdb", bytes);
+  EXPECT_LT(estimate_vdb_bytes(request), 4u << 20);
+  message = read_error(request);
+  EXPECT_NE(message.find("lying.vdb: grid 'density' holds 2097155 active voxels"), std::string::npos) << message;
+  EXPECT_NE(message.find("(the file's statistics claim less)"), std::string::npos) << message;
+}
+
 TEST(VdbFile, TheEmissionGridIsCheckedLikeTheDensity) {
   VdbGridSpec emission = density_grid("heat");
   emission.voxels.push_back({{2, 2, 2}, -3.0f});

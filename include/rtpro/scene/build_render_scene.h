@@ -40,6 +40,9 @@ struct SceneBuildOptions {
   bool compact_normals = false;
   std::uint32_t piece_triangles = 0;
   std::uint64_t geometry_budget = 0;
+  // What the volumes' grids may take, read: what the estimate counted for them (from the files'
+  // statistics) and what it left of the budget (0: the default budget).
+  std::uint64_t volume_budget = 0;
   std::string budget_source = "the default budget";
   std::function<ScalarImage(const std::filesystem::path&, std::uint64_t max_bytes)> read_scalar_image = nullptr;
 };

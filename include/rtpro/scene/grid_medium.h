@@ -9,6 +9,7 @@
 #include "rtpro/volume/grid_volume.h"
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -31,8 +32,10 @@ struct GridMedium {
 TriangleMesh bounding_box_mesh(const GridMedium& medium, std::uint32_t material);
 
 // Reads the entry's grids (InputError at the entry, naming the file and grid, for what
-// read_vdb_grids refuses) and places them by its transform.
-GridMedium make_grid_medium(const VolumeDesc& desc);
+// read_vdb_grids refuses, a grid larger than `max_bytes` among them) and places them by its
+// transform.
+GridMedium make_grid_medium(const VolumeDesc& desc,
+                            std::uint64_t max_bytes = std::numeric_limits<std::uint64_t>::max());
 
 // The bytes reading the entry's grids needs at most, from the file's grid metadata (the same
 // errors as make_grid_medium for what the metadata shows).

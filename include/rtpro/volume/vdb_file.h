@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -22,6 +23,10 @@ struct VdbRequest {
   std::string density = "density";
   std::string emission;     // empty: none
   std::string temperature;  // empty: none
+  // The most the grids may take as rtpro holds them. The estimate the budget was checked against
+  // comes from the file's statistics, which a file can misstate: read_vdb_grids counts the bricks
+  // of the trees it read against this before filling any.
+  std::uint64_t max_bytes = std::numeric_limits<std::uint64_t>::max();
 };
 
 // Bytes per active voxel are what the report and `rtpro info` show against the file's own size.
@@ -46,7 +51,9 @@ std::uint64_t estimate_vdb_bytes(const VdbRequest& request);
 // Reads the grids. Throws InputError, naming the file and grid, for: a missing or unreadable file,
 // a missing grid (listing the file's grids), a grid that is not a float or double scalar, a level
 // set, a non-linear (frustum) transform, a grid without active voxels, and values that are
-// negative, NaN or infinite.
+// negative, NaN or infinite. Both calls first walk the file's layout as OpenVDB will read it and
+// refuse any length, count or offset the file cannot hold (src/volume/vdb_layout_check.h): OpenVDB
+// trusts them.
 VdbGrids read_vdb_grids(const VdbRequest& request);
 
 // A grid for write_vdb_file: the value type by OpenVDB's name ("float", "double", "int32",
@@ -69,8 +76,18 @@ struct VdbGridSpec {
   std::optional<VoxelCoord> tile_origin;
   float tile_value = 0.0f;
   int tile_level = 1;
+  bool save_as_half = false;  // node values stored as 16-bit halves (float and double grids)
+  // No grid class, not a fog volume: OpenVDB compresses fog volumes' and level sets' values with
+  // Blosc or not at all, other grids' with zlib too (VdbCompression::kZip).
+  bool unclassified = false;
 };
 
-void write_vdb_file(const std::filesystem::path& file, std::span<const VdbGridSpec> grids);
+// How write_vdb_file compresses node values: OpenVDB's default (Blosc, inactive values left out),
+// zlib with the same mask compression, raw but inactive values left out, or raw.
+enum class VdbCompression { kBlosc, kZip, kActiveMaskOnly, kNone };
+
+// Writes the grids as openvdb::io::File does (tests and tools).
+void write_vdb_file(const std::filesystem::path& file, std::span<const VdbGridSpec> grids,
+                    VdbCompression compression = VdbCompression::kBlosc);
 
 }  // namespace rtpro

@@ -39,7 +39,8 @@ class RenderSceneBuilder {
   RenderSceneBuilder(const SceneDescription& description, SceneBuildReport* report, const SceneBuildOptions& options)
       : description_(description),
         report_(report), subdivision_{description.camera, options,
-                                      options.geometry_budget ? options.geometry_budget : default_memory_budget()} {}
+                                      options.geometry_budget ? options.geometry_budget : default_memory_budget()},
+        volume_budget_(options.volume_budget ? options.volume_budget : default_memory_budget()) {}
 
   RenderScene build() {
     scene_.camera = make_render_camera(description_.camera);
@@ -49,8 +50,12 @@ class RenderSceneBuilder {
       scene_.environment = Environment{e->file, e->color * e->intensity, e->rotation, e->visible};
     if (description_.medium) scene_.world_medium = materials_.add_medium(*description_.medium);
     for (const MaterialDesc& m : description_.materials) materials_.add(m, m.name);
-    for (const VolumeDesc& volume : description_.volumes)
-      scene_.volumes.push_back(materials_.add_medium(make_grid_medium(volume)));
+    std::uint64_t volume_budget = volume_budget_;
+    for (const VolumeDesc& volume : description_.volumes) {
+      GridMedium medium = make_grid_medium(volume, volume_budget);
+      volume_budget -= std::min(volume_budget, medium.grid->memory.bytes);
+      scene_.volumes.push_back(materials_.add_medium(medium));
+    }
 
     check_instance_count();
     prototype_of_object_.assign(description_.objects.size(), std::nullopt);
@@ -369,6 +374,7 @@ class RenderSceneBuilder {
   const SceneDescription& description_;
   SceneBuildReport* report_;
   SubdivisionContext subdivision_;
+  std::uint64_t volume_budget_;  // bytes the volumes' grids may take between them
   RenderScene scene_;
   SceneMaterials materials_{scene_};
   std::vector<std::optional<std::uint32_t>> prototype_of_object_;

@@ -2,14 +2,16 @@
 
 #include "rtpro/core/printable_text.h"
 
+#include <limits>
 #include <utility>
 
 namespace rtpro {
 
 namespace {
 
-VdbRequest request_of(const VolumeDesc& desc) {
+VdbRequest request_of(const VolumeDesc& desc, std::uint64_t max_bytes = std::numeric_limits<std::uint64_t>::max()) {
   VdbRequest request;
+  request.max_bytes = max_bytes;
   request.file = desc.file;
   request.where = desc.where;
   request.density = desc.grid;
@@ -20,10 +22,10 @@ VdbRequest request_of(const VolumeDesc& desc) {
 
 }  // namespace
 
-GridMedium make_grid_medium(const VolumeDesc& desc) {
+GridMedium make_grid_medium(const VolumeDesc& desc, std::uint64_t max_bytes) {
   GridMedium medium;
   medium.grid = std::make_shared<const GridVolume>(
-      place_grid_volume(read_vdb_grids(request_of(desc)), desc.transform, desc.where));
+      place_grid_volume(read_vdb_grids(request_of(desc, max_bytes)), desc.transform, desc.where));
   // albedo = σs/σt with σt = density_scale per unit of density.
   medium.sigma_s = desc.albedo * desc.density_scale;
   medium.sigma_a = (Color(1.0f) - desc.albedo) * desc.density_scale;
