@@ -10,6 +10,7 @@
 
 #include <sys/stat.h>
 
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -271,6 +272,27 @@ TEST(HostileInput, ImagesWhoseHeadersDeclareGigabytesAreRefusedFromTheHeader) {
                                0,    0xff, 0xff, 0,   0,    0xff, 0xff, 8,    2, 0, 0, 0,  0x39, 0x67, 0x4e, 0x07};
   const auto huge = write_file("huge.png", std::string(reinterpret_cast<const char*>(png), sizeof png));
   expect_answer(run_capped({rtpro(), "compare", good.string(), huge.string()}), 2, {"huge.png"}, &image_startup);
+}
+
+// The vdb fuzz target's findings through a scene: each a 10 KB file that cost OpenVDB gigabytes,
+// a hang or its heap before the layout walk, now one message at the volume entry.
+TEST(HostileInput, OpenVdbFilesThatMisstateTheirSizesAreAnsweredAtTheVolumeEntry) {
+  const auto dir = scratch_dir();
+  const auto scene_for = [&](const std::filesystem::path& vdb) {
+    return write_file("volume.yaml", "rtpro: 1\n" + kCamera + "world:\n  - {type: volume, file: " + vdb.string() +
+                                         ", grid: density, density_scale: 1}\n");
+  };
+  const auto render = [&](const std::filesystem::path& scene) {
+    return run_capped({rtpro(), "render", scene.string(), "-o", (dir / "volume.png").string(), "--spp", "1", "-q"});
+  };
+  // A good grid first: the runs below are judged against one that loads OpenVDB's plugin.
+  const CappedRun vdb_startup = render(scene_for(source_dir() / "tests/fuzz/corpus/vdb/two-voxels.vdb"));
+  ASSERT_EQ(vdb_startup.exit_code, 0) << vdb_startup.output;
+  for (const auto& entry : std::filesystem::directory_iterator(source_dir() / "tests/fuzz/regressions/vdb")) {
+    SCOPED_TRACE(entry.path().filename().string());
+    const auto vdb = write_file("hostile.vdb", read_file(entry.path()));
+    expect_answer(render(scene_for(vdb)), 2, {"volume.yaml:4:26: ", "hostile.vdb"}, &vdb_startup);
+  }
 }
 
 // 100,000 distinct unknown OBJ keywords (1 MB): warning bookkeeping that was once quadratic (55 s).
