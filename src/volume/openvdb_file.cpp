@@ -134,16 +134,27 @@ std::optional<std::uint64_t> estimated_grid_bytes(const openvdb::GridBase& grid)
   return saturating_add(static_cast<std::uint64_t>(*tree_bytes), VoxelGrid::bytes_for(box, bricks));
 }
 
+// The bricks the tree fills: one per leaf, and one per 8³ voxels of each active tile.
+template <typename GridType>
+std::uint64_t bricks_of(const GridType& grid) {
+  std::uint64_t bricks = grid.tree().leafCount();
+  auto tile = grid.tree().cbeginValueOn();
+  tile.setMaxDepth(grid.tree().treeDepth() - 2);  // above the leaves: tiles, not voxels
+  for (; tile; ++tile) bricks = saturating_add(bricks, tile.getBoundingBox().volume() / VoxelGrid::kBrickVoxels);
+  return bricks;
+}
+
 // Copies a scalar grid's leaves and active tiles into bricks, refusing values a density (or an
 // emission or temperature) cannot have.
 template <typename GridType>
-VoxelGrid to_voxel_grid(const GridType& grid, const VdbRequest& request) {
+VoxelGrid to_voxel_grid(const GridType& grid, const VdbRequest& request, std::uint64_t bricks) {
   const std::string& name = grid.getName();
   const float background = static_cast<float>(grid.background());
   if (!std::isfinite(background) || background < 0.0f)
     fail(request, grid_label(request, name) + " has a background of " + std::to_string(background) +
                       "; values must be finite and not negative");
   VoxelGrid voxels(voxel_box(grid.evalActiveVoxelBoundingBox()), background);
+  voxels.reserve_bricks(bricks);
 
   std::uint64_t bad = 0;
   std::optional<std::pair<openvdb::Coord, float>> first_bad;
@@ -161,16 +172,13 @@ VoxelGrid to_voxel_grid(const GridType& grid, const VdbRequest& request) {
       check(leaf->offsetToGlobalCoord(i), value);
     }
   }
-  for (auto tile = grid.tree().cbeginValueOn(); tile; ++tile) {
-    if (tile.isVoxelValue()) continue;
+  auto tile = grid.tree().cbeginValueOn();
+  tile.setMaxDepth(grid.tree().treeDepth() - 2);  // above the leaves: tiles, not voxels
+  for (; tile; ++tile) {
     const float value = static_cast<float>(*tile);
     const openvdb::CoordBBox box = tile.getBoundingBox();
     check(box.min(), value);
-    for (auto at = box.begin(); at; ++at) {
-      const openvdb::Coord c = *at;
-      voxels.brick_at({c.x(), c.y(),
-                       c.z()})[static_cast<std::size_t>(((c.x() & 7) << 6) | ((c.y() & 7) << 3) | (c.z() & 7))] = value;
-    }
+    voxels.fill(voxel_box(box), value);
   }
   if (bad > 0) {
     const auto& [at, value] = *first_bad;
@@ -190,16 +198,6 @@ VoxelGrid to_voxel_grid(const GridType& grid, const VdbRequest& request) {
   return voxels;
 }
 
-// The bricks the tree fills: one per leaf, and one per 8³ voxels of each active tile.
-template <typename GridType>
-std::uint64_t bricks_of(const GridType& grid) {
-  std::uint64_t bricks = grid.tree().leafCount();
-  auto tile = grid.tree().cbeginValueOn();
-  tile.setMaxDepth(grid.tree().treeDepth() - 2);  // above the leaves: tiles, not voxels
-  for (; tile; ++tile) bricks = saturating_add(bricks, tile.getBoundingBox().volume() / VoxelGrid::kBrickVoxels);
-  return bricks;
-}
-
 // `taken`: what the request's grids read before this one hold.
 VoxelGrid read_scalar_grid(VdbSource& source, const VdbRequest& request, const std::string& name,
                            const std::string& role, std::uint64_t taken) {
@@ -212,7 +210,8 @@ VoxelGrid read_scalar_grid(VdbSource& source, const VdbRequest& request, const s
   // The tree, not the statistics the budget was checked against: a 10 KB file whose statistics
   // claimed one voxel held a tile of 4096³ (10 GB and rising after a minute, unchecked).
   const VoxelBox box = voxel_box(grid->evalActiveVoxelBoundingBox());
-  const std::uint64_t bytes = VoxelGrid::bytes_for(box, floats ? bricks_of(*floats) : bricks_of(*doubles));
+  const std::uint64_t bricks = floats ? bricks_of(*floats) : bricks_of(*doubles);
+  const std::uint64_t bytes = VoxelGrid::bytes_for(box, bricks);
   if (saturating_add(taken, bytes) > request.max_bytes)
     fail(request,
          grid_label(request, name) + " holds " + std::to_string(active) + " active voxels, " + format_bytes(bytes) +
@@ -220,7 +219,7 @@ VoxelGrid read_scalar_grid(VdbSource& source, const VdbRequest& request, const s
              format_bytes(request.max_bytes - std::min(taken, request.max_bytes)) + " left of the memory budget" +
              (estimated_grid_bytes(*grid).value_or(bytes) < bytes ? " (the file's statistics claim less)" : "") +
              "; raise the budget with --max-memory MiB");
-  VoxelGrid voxels = floats ? to_voxel_grid(*floats, request) : to_voxel_grid(*doubles, request);
+  VoxelGrid voxels = floats ? to_voxel_grid(*floats, request, bricks) : to_voxel_grid(*doubles, request, bricks);
   voxels.active_voxels = active;
   return voxels;
 }

@@ -78,14 +78,49 @@ float VoxelGrid::lookup(const Vec3& p) const {
   return lerp(lerp(c00, c10, ty), lerp(c01, c11, ty), tz);
 }
 
+void VoxelGrid::reserve_bricks(std::uint64_t bricks) {
+  origins_.reserve(static_cast<std::size_t>(bricks));
+  values_.reserve(static_cast<std::size_t>(bricks) * kBrickVoxels);
+}
+
+void VoxelGrid::fill(const VoxelBox& box, float value) {
+  if (box.empty()) return;
+  for (std::int32_t bx = box.lo[0] & ~(kBrickSide - 1); bx <= box.hi[0]; bx += kBrickSide)
+    for (std::int32_t by = box.lo[1] & ~(kBrickSide - 1); by <= box.hi[1]; by += kBrickSide)
+      for (std::int32_t bz = box.lo[2] & ~(kBrickSide - 1); bz <= box.hi[2]; bz += kBrickSide) {
+        const std::span<float> brick = brick_at({bx, by, bz});
+        const VoxelCoord lo{std::max(bx, box.lo[0]), std::max(by, box.lo[1]), std::max(bz, box.lo[2])};
+        const VoxelCoord hi{std::min(bx + kBrickSide - 1, box.hi[0]), std::min(by + kBrickSide - 1, box.hi[1]),
+                            std::min(bz + kBrickSide - 1, box.hi[2])};
+        if (lo == VoxelCoord{bx, by, bz} && hi == VoxelCoord{bx + 7, by + 7, bz + 7}) {
+          std::fill(brick.begin(), brick.end(), value);
+          continue;
+        }
+        for (std::int32_t x = lo[0]; x <= hi[0]; ++x)
+          for (std::int32_t y = lo[1]; y <= hi[1]; ++y)
+            for (std::int32_t z = lo[2]; z <= hi[2]; ++z)
+              brick[static_cast<std::size_t>(((x & 7) << 6) | ((y & 7) << 3) | (z & 7))] = value;
+      }
+}
+
 void VoxelGrid::seal() {
   BBox differing;
   for_each_brick([&](const VoxelCoord& origin, std::span<const float> values) {
+    // The brick's differing voxels' box in its own coordinates, then one extension per brick.
+    int lo[3] = {kBrickSide, kBrickSide, kBrickSide}, hi[3] = {-1, -1, -1};
     for (int i = 0; i < kBrickVoxels; ++i) {
       if (values[static_cast<std::size_t>(i)] == background_) continue;
-      differing.extend(Vec3(static_cast<float>(origin[0] + (i >> 6)), static_cast<float>(origin[1] + ((i >> 3) & 7)),
-                            static_cast<float>(origin[2] + (i & 7))));
+      const int at[3] = {i >> 6, (i >> 3) & 7, i & 7};
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = std::min(lo[a], at[a]);
+        hi[a] = std::max(hi[a], at[a]);
+      }
     }
+    if (hi[0] < 0) return;
+    differing.extend(Vec3(static_cast<float>(origin[0] + lo[0]), static_cast<float>(origin[1] + lo[1]),
+                          static_cast<float>(origin[2] + lo[2])));
+    differing.extend(Vec3(static_cast<float>(origin[0] + hi[0]), static_cast<float>(origin[1] + hi[1]),
+                          static_cast<float>(origin[2] + hi[2])));
   });
   support_ = differing.empty() ? BBox{} : BBox{differing.lower - Vec3(1.0f), differing.upper + Vec3(1.0f)};
   // The bricks were appended one by one: give back what their vectors' doubling reserved.

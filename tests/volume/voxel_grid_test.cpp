@@ -25,6 +25,25 @@ TEST(VoxelGrid, VoxelCentresReadTheirValuesAndBetweenThemTrilinearly) {
   EXPECT_EQ(grid.brick_count(), 2u);
 }
 
+TEST(VoxelGrid, AFilledBoxSetsItsVoxelsWholeBricksAndPartsAlike) {
+  // 16³ bricks' worth and a ragged edge: bricks from -8 to 15 on x, parts of bricks on y and z.
+  const VoxelBox box{{-8, -3, 2}, {15, 9, 4}};
+  VoxelGrid grid(VoxelBox{{-16, -16, -16}, {31, 31, 31}}, 0.0f);
+  grid.reserve_bricks(12);
+  grid.fill(box, 2.5f);
+  grid.seal();
+  EXPECT_EQ(grid.brick_count(), 3u * 3u * 1u);
+  for (std::int32_t x = -10; x <= 17; ++x)
+    for (std::int32_t y = -5; y <= 11; ++y)
+      for (std::int32_t z = 0; z <= 6; ++z) {
+        const bool inside = x >= -8 && x <= 15 && y >= -3 && y <= 9 && z >= 2 && z <= 4;
+        ASSERT_EQ(grid.voxel(x, y, z), inside ? 2.5f : 0.0f) << x << " " << y << " " << z;
+      }
+  // The support found brick by brick: one voxel around the box.
+  EXPECT_EQ(grid.support().lower, Vec3(-9.0f, -4.0f, 1.0f));
+  EXPECT_EQ(grid.support().upper, Vec3(16.0f, 10.0f, 5.0f));
+}
+
 TEST(VoxelGrid, SupportIsOneVoxelAroundTheValuesAndOutsideItLookupsReadTheBackground) {
   VoxelGrid grid(VoxelBox{{3, 3, 3}, {20, 20, 20}}, 0.0f);
   set(grid, 5, 6, 7, 1.0f);

@@ -45,6 +45,12 @@ class VoxelGrid {
   // The 512 values of the brick holding voxel `origin` (made on first use, filled with the
   // background), in OpenVDB's leaf order: offset = (x & 7) << 6 | (y & 7) << 3 | (z & 7).
   std::span<float> brick_at(const VoxelCoord& origin);
+  // Room for `bricks` bricks, when their number is known before they are made (no doubling of
+  // the values while they are appended, nothing to give back when sealed).
+  void reserve_bricks(std::uint64_t bricks);
+  // Sets every voxel of `box` to `value`: whole bricks at once (a tile of OpenVDB's covers whole
+  // leaves), voxel by voxel where the box covers part of a brick.
+  void fill(const VoxelBox& box, float value);
   // Called once the bricks are filled: finds the voxels that differ from the background, which
   // bound support().
   void seal();
