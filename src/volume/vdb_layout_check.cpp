@@ -10,6 +10,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <span>
 #include <string_view>
 #include <system_error>
 #include <vector>
@@ -342,7 +343,7 @@ void check_node_values(LayoutWalk& walk, const TreeLayout& tree, std::uint32_t t
   check_chunk(walk, tree, count * (tree.half ? 2 : tree.value_bytes), "the values of " + what);
 }
 
-std::uint32_t bits_on(const std::vector<unsigned char>& mask) {
+std::uint32_t bits_on(std::span<const unsigned char> mask) {
   std::uint32_t on = 0;
   for (const unsigned char byte : mask) on += static_cast<std::uint32_t>(std::popcount(byte));
   return on;
@@ -367,9 +368,7 @@ void check_internal_topology(LayoutWalk& walk, const TreeLayout& tree, int log2_
         check_internal_topology(walk, tree, kLowerLog2, owner, leaf_active);
       } else {
         walk.read(leaf_mask, kLeafMaskBytes, "the value mask of a leaf of " + owner);
-        std::uint32_t on = 0;
-        for (const unsigned char b : leaf_mask) on += static_cast<std::uint32_t>(std::popcount(b));
-        leaf_active.push_back(static_cast<std::uint16_t>(on));
+        leaf_active.push_back(static_cast<std::uint16_t>(bits_on(leaf_mask)));
       }
     }
 }
