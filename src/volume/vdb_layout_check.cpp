@@ -213,6 +213,16 @@ void check_header(LayoutWalk& walk) {
   }
 }
 
+// OpenVDB reads a bool's byte straight into a bool: any other value than 0 or 1 is undefined
+// behaviour where it is used (UBSan: "load of value 99, which is not a valid value for type
+// 'bool'", a fuzz finding in a root tile).
+void check_bool(LayoutWalk& walk, const std::string& what) {
+  if (walk.u8(what) > 1) {
+    walk.seek(walk.at() - 1);
+    walk.fail(what + " is a bool of neither 0 nor 1");
+  }
+}
+
 // io::DelayedLoadMetadata::readValue: a leaf count, then a mask of that many bytes and a table of
 // that many 8-byte sizes, each raw or as a Blosc block that declares its size uncompressed.
 void check_delayed_load(LayoutWalk& walk, std::uint32_t stated, const std::string& what) {
@@ -273,7 +283,8 @@ void check_metadata(LayoutWalk& walk, const std::string& owner) {
       if (stated != *fixed)
         walk.fail(what + " states " + std::to_string(stated) + " bytes for a " + printable_text(type) + " of " +
                   std::to_string(*fixed));
-      walk.skip(stated, what);
+      if (type == "bool") check_bool(walk, what);
+      else walk.skip(stated, what);
     } else {
       walk.skip(stated, what);  // a string, or a type OpenVDB keeps as raw bytes
     }
@@ -397,7 +408,8 @@ void check_tree(LayoutWalk& walk, const TreeLayout& tree, const std::string& own
   std::vector<Origin> tile_origins;
   for (std::uint32_t i = 0; i < tiles; ++i) {
     tile_origins.push_back(origin("the origin of a root tile of " + owner));
-    walk.skip(tree.value_bytes + 1, "a root tile of " + owner);
+    walk.skip(tree.value_bytes, "a root tile of " + owner);
+    check_bool(walk, "whether a root tile of " + owner + " is active");
   }
   std::sort(tile_origins.begin(), tile_origins.end());
   std::vector<std::uint16_t> leaf_active;

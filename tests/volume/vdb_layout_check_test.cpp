@@ -160,6 +160,19 @@ TEST(VdbLayoutCheck, CountsTheFileCannotHoldAreRefused) {
   }
 }
 
+TEST(VdbLayoutCheck, BoolsOfNeitherZeroNorOneAreRefused) {
+  // OpenVDB reads the byte into a bool: any other value is undefined behaviour where it is used.
+  WrittenFile file("bool.vdb", density_grid());
+  const std::string name = "is_saved_as_half_float";
+  const std::size_t value_at = file.find(name) + name.size() + 4 + 4 + 4;  // type "bool", its size
+  ASSERT_EQ(file.value<std::uint8_t>(value_at), 0u);
+  const std::string message = read_error(file.with<std::uint8_t>(value_at, 99));
+  EXPECT_NE(message.find("at byte " + std::to_string(value_at) + ", metadata 'is_saved_as_half_float' of the grid " +
+                         "'density' is a bool of neither 0 nor 1"),
+            std::string::npos)
+      << message;
+}
+
 TEST(VdbLayoutCheck, GridOffsetsOutsideTheFileAreRefused) {
   WrittenFile file("offsets.vdb", density_grid());
   const std::size_t end_at = file.find("Tree_float_5_4_3") + 16 + 4 + 16;
