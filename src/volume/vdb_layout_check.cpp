@@ -43,6 +43,7 @@ constexpr std::uint32_t kBloscPadBytes = 128;  // points/StreamCompression.h: BL
 // The 5-4-3 tree: internal nodes of 32³ and 16³ entries above leaves of 8³ voxels.
 constexpr int kUpperLog2 = 5, kLowerLog2 = 4;
 constexpr std::uint32_t kLeafVoxels = 512;
+constexpr std::int32_t kRootChildVoxels = 4096;  // a root child's side: 32 × 16 × 8
 constexpr std::size_t kLeafMaskBytes = kLeafVoxels / 8;
 
 // Value sizes OpenVDB reads for its registered fixed-size metadata types, whatever size the file
@@ -401,9 +402,14 @@ void check_tree(LayoutWalk& walk, const TreeLayout& tree, const std::string& own
               " children, which need " + std::to_string(needed) + " bytes; " + std::to_string(walk.left()) +
               " are left before its data blocks");
   using Origin = std::array<std::int32_t, 3>;
+  // The root keys its entries by their first voxel, a multiple of a child's 4096 voxels: so
+  // OpenVDB's corner arithmetic (origin + 4095) cannot overflow.
   const auto origin = [&](const std::string& what) {
-    return Origin{static_cast<std::int32_t>(walk.u32(what)), static_cast<std::int32_t>(walk.u32(what)),
-                  static_cast<std::int32_t>(walk.u32(what))};
+    const Origin at{static_cast<std::int32_t>(walk.u32(what)), static_cast<std::int32_t>(walk.u32(what)),
+                    static_cast<std::int32_t>(walk.u32(what))};
+    for (const std::int32_t c : at)
+      if (c % kRootChildVoxels != 0) walk.fail(what + " is not a multiple of " + std::to_string(kRootChildVoxels));
+    return at;
   };
   std::vector<Origin> tile_origins;
   for (std::uint32_t i = 0; i < tiles; ++i) {

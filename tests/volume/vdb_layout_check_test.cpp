@@ -152,6 +152,17 @@ TEST(VdbLayoutCheck, CountsTheFileCannotHoldAreRefused) {
         << message;
   }
   {
+    // A root child whose origin is not one the root keys by: OpenVDB's corners would overflow.
+    WrittenFile file("origin.vdb", density_grid());
+    const std::string map = "UniformScaleTranslateMap";
+    const std::size_t first_child_at = file.find(map) + map.size() + 6 * 24 + 4 + 4 + 8;
+    ASSERT_EQ(file.value<std::int32_t>(first_child_at), -4096);
+    const std::string message = read_error(file.with<std::int32_t>(first_child_at, 2147483647));
+    EXPECT_NE(message.find("the origin of a root child of the grid 'density' is not a multiple of 4096"),
+              std::string::npos)
+        << message;
+  }
+  {
     WrittenFile file("metadata-count.vdb", density_grid());
     const std::size_t count_at = file.find("class") - 8;  // the grid's metadata count, then 'class'
     ASSERT_GT(file.value<std::uint32_t>(count_at), 5u);
