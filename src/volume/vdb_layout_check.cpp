@@ -236,7 +236,7 @@ void check_delayed_load(LayoutWalk& walk, std::uint32_t stated, const std::strin
     const std::uint32_t compressed = walk.u32(what + "'s " + part + " size");
     if (compressed == 0) return walk.skip(std::uint64_t{count} * element, what + "'s " + part);
     // A Blosc block's header: its version bytes, then its uncompressed and compressed sizes.
-    if (compressed < 16)
+    if (compressed < kBloscHeaderBytes)
       walk.fail(what + "'s " + part + " is a compressed block of " + std::to_string(compressed) +
                 " bytes, shorter than a Blosc header");
     const std::uint64_t block = walk.at();
@@ -308,14 +308,26 @@ void check_transform(LayoutWalk& walk, const std::string& owner) {
   walk.skip(*bytes, "the transform of " + owner);
 }
 
+// What the messages call a kind of node's fields, made once per grid: a tree's walk reads
+// these fields for every node, and builds a message only when one is wrong.
+struct NodeLabels {
+  explicit NodeLabels(const std::string& node)
+      : flag("the value flag of " + node), inactive("the inactive values of " + node),
+        selection("the selection mask of " + node), values("the values of " + node),
+        size("the size of the values of " + node), child_mask("the child mask of " + node),
+        value_mask("the value mask of " + node) {}
+  std::string flag, inactive, selection, values, size, child_mask, value_mask;
+};
+
 // io::bloscFromStream and io::unzipFromStream read an int64 first. A negative one is the size of
 // the raw values that follow: both read that many bytes into the node's buffer before comparing it
 // with the buffer's size, so a larger one overruns the heap (OpenVDB 10; a fuzz finding: glibc's
 // "free(): invalid size"). A positive one is the compressed size; Blosc then reads its own header
 // and as many bytes as that states, whatever the buffer holds.
-void check_chunk(LayoutWalk& walk, const TreeLayout& tree, std::uint64_t bytes, const std::string& what) {
+void check_chunk(LayoutWalk& walk, const TreeLayout& tree, std::uint64_t bytes, const NodeLabels& labels) {
+  const std::string& what = labels.values;
   if (!(tree.compression & (kCompressBlosc | kCompressZip))) return walk.skip(bytes, what);
-  const std::int64_t stated = walk.i64("the size of " + what);
+  const std::int64_t stated = walk.i64(labels.size);
   if (stated <= 0) {
     if (stated == std::numeric_limits<std::int64_t>::min() || static_cast<std::uint64_t>(-stated) != bytes)
       walk.fail(what + " states " + std::to_string(stated) + " raw bytes for " + std::to_string(bytes) +
@@ -344,15 +356,15 @@ void check_chunk(LayoutWalk& walk, const TreeLayout& tree, std::uint64_t bytes, 
 // One node's values as io::readCompressedValues reads them: a flag, up to two inactive values and
 // a selection mask, then the values (all `total`, or the `active` ones under mask compression).
 void check_node_values(LayoutWalk& walk, const TreeLayout& tree, std::uint32_t total, std::uint32_t active,
-                       const std::string& what) {
-  const std::uint8_t flag = walk.u8("the value flag of " + what);
+                       const NodeLabels& labels) {
+  const std::uint8_t flag = walk.u8(labels.flag);
   if (flag == kNoMaskAndOneInactiveVal || flag == kMaskAndOneInactiveVal || flag == kMaskAndTwoInactiveVals)
-    walk.skip(tree.value_bytes * (flag == kMaskAndTwoInactiveVals ? 2 : 1), "the inactive values of " + what);
+    walk.skip(tree.value_bytes * (flag == kMaskAndTwoInactiveVals ? 2 : 1), labels.inactive);
   if (flag == kMaskAndNoInactiveVals || flag == kMaskAndOneInactiveVal || flag == kMaskAndTwoInactiveVals)
-    walk.skip(total / 8, "the selection mask of " + what);
+    walk.skip(total / 8, labels.selection);
   const std::uint64_t count = (tree.compression & kCompressActiveMask) && flag != kNoMaskAndAllVals ? active : total;
   if (tree.half && count == 0) return;  // HalfReader reads nothing then
-  check_chunk(walk, tree, count * (tree.half ? 2 : tree.value_bytes), "the values of " + what);
+  check_chunk(walk, tree, count * (tree.half ? 2 : tree.value_bytes), labels);
 }
 
 std::uint32_t bits_on(std::span<const unsigned char> mask) {
@@ -364,22 +376,27 @@ std::uint32_t bits_on(std::span<const unsigned char> mask) {
 // The topology below the root, as InternalNode::readTopology reads it: child and value masks, the
 // node's values, then each child in the order of its bit. A leaf's topology is its value mask;
 // the number of its active voxels is kept, in reading order, for its buffer.
-void check_internal_topology(LayoutWalk& walk, const TreeLayout& tree, int log2_dim, const std::string& owner,
+struct TreeLabels {
+  explicit TreeLabels(const std::string& owner)
+      : internal("an internal node of " + owner), leaf("a leaf of " + owner) {}
+  NodeLabels internal, leaf;
+};
+
+void check_internal_topology(LayoutWalk& walk, const TreeLayout& tree, int log2_dim, const TreeLabels& labels,
                              std::vector<std::uint16_t>& leaf_active) {
   const std::uint32_t entries = 1u << (3 * log2_dim);
-  const std::string what = "an internal node of " + owner;
   std::vector<unsigned char> child_mask(entries / 8), value_mask(entries / 8);
-  walk.read(child_mask.data(), child_mask.size(), "the child mask of " + what);
-  walk.read(value_mask.data(), value_mask.size(), "the value mask of " + what);
-  check_node_values(walk, tree, entries, bits_on(value_mask), what);
+  walk.read(child_mask.data(), child_mask.size(), labels.internal.child_mask);
+  walk.read(value_mask.data(), value_mask.size(), labels.internal.value_mask);
+  check_node_values(walk, tree, entries, bits_on(value_mask), labels.internal);
   unsigned char leaf_mask[kLeafMaskBytes];
   for (std::size_t byte = 0; byte < child_mask.size(); ++byte)
     for (int bit = 0; bit < 8; ++bit) {
       if (!(child_mask[byte] >> bit & 1)) continue;
       if (log2_dim == kUpperLog2) {
-        check_internal_topology(walk, tree, kLowerLog2, owner, leaf_active);
+        check_internal_topology(walk, tree, kLowerLog2, labels, leaf_active);
       } else {
-        walk.read(leaf_mask, kLeafMaskBytes, "the value mask of a leaf of " + owner);
+        walk.read(leaf_mask, kLeafMaskBytes, labels.leaf.value_mask);
         leaf_active.push_back(static_cast<std::uint16_t>(bits_on(leaf_mask)));
       }
     }
@@ -418,6 +435,7 @@ void check_tree(LayoutWalk& walk, const TreeLayout& tree, const std::string& own
     check_bool(walk, "whether a root tile of " + owner + " is active");
   }
   std::sort(tile_origins.begin(), tile_origins.end());
+  const TreeLabels labels(owner);
   std::vector<std::uint16_t> leaf_active;
   std::optional<Origin> previous;
   for (std::uint32_t i = 0; i < children; ++i) {
@@ -425,13 +443,12 @@ void check_tree(LayoutWalk& walk, const TreeLayout& tree, const std::string& own
     if ((previous && !(*previous < at)) || std::binary_search(tile_origins.begin(), tile_origins.end(), at))
       walk.fail("the root of " + owner + " holds a child at an origin not after the previous child's, or at a tile's");
     previous = at;
-    check_internal_topology(walk, tree, kUpperLog2, owner, leaf_active);
+    check_internal_topology(walk, tree, kUpperLog2, labels, leaf_active);
   }
   walk.limit(end);
-  const std::string leaf = "a leaf of " + owner;
   for (const std::uint16_t active : leaf_active) {
-    walk.skip(kLeafMaskBytes, "the value mask of " + leaf);
-    check_node_values(walk, tree, kLeafVoxels, active, leaf);
+    walk.skip(kLeafMaskBytes, labels.leaf.value_mask);
+    check_node_values(walk, tree, kLeafVoxels, active, labels.leaf);
   }
 }
 
