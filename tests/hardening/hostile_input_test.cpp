@@ -289,6 +289,8 @@ TEST(HostileInput, OpenVdbFilesThatMisstateTheirSizesAreAnsweredAtTheVolumeEntry
   const CappedRun vdb_startup = render(scene_for(source_dir() / "tests/fuzz/corpus/vdb/two-voxels.vdb"));
   ASSERT_EQ(vdb_startup.exit_code, 0) << vdb_startup.output;
   for (const auto& entry : std::filesystem::directory_iterator(source_dir() / "tests/fuzz/regressions/vdb")) {
+    // A grid of tiles within the fuzz target's budget: a finding for its speed, rendered, not refused.
+    if (entry.path().filename().string().starts_with("tiles-")) continue;
     SCOPED_TRACE(entry.path().filename().string());
     const auto vdb = write_file("hostile.vdb", read_file(entry.path()));
     expect_answer(render(scene_for(vdb)), 2, {"volume.yaml:4:26: ", "hostile.vdb"}, &vdb_startup);
