@@ -75,17 +75,16 @@ std::optional<std::uint64_t> linear_map_bytes(std::string_view type) {
 // A scalar tree rtpro reads (Tree_float_5_4_3, Tree_double_5_4_3), as the grid stores it.
 struct TreeLayout {
   std::uint64_t value_bytes = 4;  // a value as the tree holds it (backgrounds, tiles, inactive values)
-  bool half = false;              // node values stored as 16-bit halves (the _HalfFloat type suffix)
+  bool half = false;              // node values stored as 16-bit halves (the grid's is_saved_as_half_float)
   std::uint32_t compression = 0;  // the grid's io::COMPRESS_* flags
 };
 
+// The descriptor's type name, without the _HalfFloat suffix it carries when the grid was saved
+// as halves.
 std::optional<TreeLayout> scalar_tree(std::string_view type) {
   constexpr std::string_view kHalf = "_HalfFloat";
   TreeLayout tree;
-  if (type.ends_with(kHalf)) {
-    type.remove_suffix(kHalf.size());
-    tree.half = true;
-  }
+  if (type.ends_with(kHalf)) type.remove_suffix(kHalf.size());
   if (type == "Tree_float_5_4_3") return tree;
   if (type == "Tree_double_5_4_3") {
     tree.value_bytes = 8;
@@ -267,8 +266,14 @@ void check_delayed_load(LayoutWalk& walk, std::uint32_t stated, const std::strin
   walk.skip(stated, what);  // OpenVDB skips what it does not know at the end
 }
 
+// GridBase::META_SAVE_HALF_FLOAT: a grid's values are read as halves when this metadata says so,
+// whatever the descriptor's type name says (the grid's metadata replaces what the descriptor set).
+constexpr std::string_view kSavedAsHalf = "is_saved_as_half_float";
+
 // MetaMap::readMeta: a count, then each item's name, type name, stated size and value.
-void check_metadata(LayoutWalk& walk, const std::string& owner) {
+// `saved_as_half`, for a grid: set to the last is_saved_as_half_float item's value, false without one.
+void check_metadata(LayoutWalk& walk, const std::string& owner, bool* saved_as_half = nullptr) {
+  if (saved_as_half) *saved_as_half = false;
   const std::uint32_t count = walk.u32("the metadata count of " + owner);
   if (count > walk.left() / kMetadataItemBytes)
     walk.fail(owner + " counts " + std::to_string(count) + " metadata items, more than its " +
@@ -278,6 +283,17 @@ void check_metadata(LayoutWalk& walk, const std::string& owner) {
     const std::string what = "metadata " + in_quotes(name) + " of " + owner;
     const std::string type = walk.string("the type of " + what);
     const std::uint32_t stated = walk.u32("the size of " + what);
+    // Any other type would need its own idea of truth (GridBase::saveFloatAsHalf asks asBool()).
+    if (saved_as_half && name == kSavedAsHalf) {
+      if (type != "bool" || stated != 1) walk.fail(what + " is a " + printable_text(type, 64) + ", not a bool");
+      const std::uint8_t value = walk.u8(what);
+      if (value > 1) {
+        walk.seek(walk.at() - 1);
+        walk.fail(what + " is a bool of neither 0 nor 1");
+      }
+      *saved_as_half = value == 1;
+      continue;
+    }
     if (type == "__delayedload") {
       check_delayed_load(walk, stated, what);
     } else if (const std::optional<std::uint32_t> fixed = metadata_fixed_size(type)) {
@@ -498,10 +514,12 @@ void check_grid(LayoutWalk& walk, const GridPlace& place) {
   walk.seek(place.grid);
   walk.limit(place.blocks);
   const std::uint32_t compression = walk.u32("the compression of " + owner);
-  check_metadata(walk, owner);
+  bool saved_as_half = false;
+  check_metadata(walk, owner, &saved_as_half);
   check_transform(walk, owner);
   if (std::optional<TreeLayout> tree = scalar_tree(place.type); tree && !place.instance) {
     tree->compression = compression;
+    tree->half = saved_as_half;
     check_tree(walk, *tree, owner, place.end);
   }
 }

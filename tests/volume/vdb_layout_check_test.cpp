@@ -184,6 +184,28 @@ TEST(VdbLayoutCheck, BoolsOfNeitherZeroNorOneAreRefused) {
       << message;
 }
 
+TEST(VdbLayoutCheck, WhetherValuesAreHalvesIsReadFromTheGridsMetadataAsOpenVdbReadsIt) {
+  // OpenVDB takes it from the grid's is_saved_as_half_float, not from the descriptor's type name
+  // (a fuzz finding: a flag of an unknown type read as true sent OpenVDB past the file's end).
+  VdbGridSpec spec = density_grid();
+  spec.save_as_half = true;
+  const std::string name = "is_saved_as_half_float";
+  {
+    WrittenFile file("flag.vdb", spec);
+    const std::size_t value_at = file.find(name) + name.size() + 4 + 4 + 4;
+    ASSERT_EQ(file.value<std::uint8_t>(value_at), 1u);
+    // Read as floats, the halves' chunks are half the size OpenVDB would expect.
+    const std::string message = read_error(file.with<std::uint8_t>(value_at, 0));
+    EXPECT_NE(message.find("flag.vdb: not a readable OpenVDB file"), std::string::npos) << message;
+  }
+  WrittenFile file("type.vdb", spec);
+  const std::size_t type_at = file.find(name) + name.size() + 4;
+  const std::string message = read_error(file.with<char>(type_at + 1, 'g'));  // "bgol"
+  EXPECT_NE(message.find("metadata 'is_saved_as_half_float' of the grid 'density' is a bgol, not a bool"),
+            std::string::npos)
+      << message;
+}
+
 TEST(VdbLayoutCheck, GridOffsetsOutsideTheFileAreRefused) {
   WrittenFile file("offsets.vdb", density_grid());
   const std::size_t end_at = file.find("Tree_float_5_4_3") + 16 + 4 + 16;
