@@ -35,6 +35,34 @@ std::string grid_label(const VdbRequest& request, const std::string& grid) {
   throw InputError(request.where, message);
 }
 
+// vdb_layout_problem, remembering the last file found good as it was then (size and modification
+// time): a volume entry's estimate and its read open the same file one after the other, and a
+// large file's walk reads most of it.
+std::optional<std::string> layout_problem(const std::filesystem::path& file) {
+  struct Seen {
+    std::filesystem::path file;
+    std::uintmax_t size = 0;
+    std::filesystem::file_time_type::rep modified = 0;
+    bool operator==(const Seen&) const = default;
+  };
+  static std::mutex mutex;
+  static std::optional<Seen> last_good;
+  std::error_code size_error, time_error;
+  const Seen now{file, std::filesystem::file_size(file, size_error),
+                 std::filesystem::last_write_time(file, time_error).time_since_epoch().count()};
+  const bool known = !size_error && !time_error;
+  if (known) {
+    const std::lock_guard lock(mutex);
+    if (last_good == now) return std::nullopt;
+  }
+  std::optional<std::string> problem = vdb_layout_problem(file);
+  if (!problem && known) {
+    const std::lock_guard lock(mutex);
+    last_good = now;
+  }
+  return problem;
+}
+
 // The open file, its grids' metadata (no voxels), and what the request names.
 class VdbSource {
  public:
@@ -44,7 +72,7 @@ class VdbSource {
     if (!std::filesystem::is_regular_file(request.file, error))
       fail(request, printable_text(request.file.string()) + ": no such OpenVDB file");
     // Before OpenVDB reads a byte: it trusts every length and count the file states.
-    if (const std::optional<std::string> problem = vdb_layout_problem(request.file))
+    if (const std::optional<std::string> problem = layout_problem(request.file))
       fail(request, printable_text(request.file.string()) + ": not a readable OpenVDB file (" + *problem + ")");
     try {
       file_.open(/*delayLoad=*/false);

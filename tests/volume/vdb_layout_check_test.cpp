@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -138,6 +139,18 @@ TEST(VdbLayoutCheck, AMetadataStringLongerThanTheFileIsRefusedBeforeOpenVdbFills
   EXPECT_EQ(test::error_message_of<InputError>(
                 [&] { estimate_vdb_bytes(request_for(file.with<std::uint32_t>(size_at, 0xffffffffu))); }),
             message);
+}
+
+TEST(VdbLayoutCheck, AFileChangedAfterItsLayoutWasFoundGoodIsWalkedAgain) {
+  // A good file's walk is remembered for the read that follows its estimate, as it was then.
+  WrittenFile file("changed.vdb", density_grid());
+  const std::filesystem::file_time_type written = std::filesystem::last_write_time(file.path());
+  EXPECT_GT(estimate_vdb_bytes(request_for(file.path())), 0u);
+  const std::size_t size_at = file.find("blosc + active values") - 4;
+  file.with<std::uint32_t>(size_at, 0xffffffffu);  // the same size, other bytes
+  std::filesystem::last_write_time(file.path(), written + std::chrono::seconds(1));
+  EXPECT_NE(read_error(file.path()).find("metadata 'file_compression' of the grid 'density' needs 4294967295 bytes"),
+            std::string::npos);
 }
 
 TEST(VdbLayoutCheck, CountsTheFileCannotHoldAreRefused) {
