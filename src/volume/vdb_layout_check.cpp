@@ -216,11 +216,13 @@ void check_header(LayoutWalk& walk) {
 // OpenVDB reads a bool's byte straight into a bool: any other value than 0 or 1 is undefined
 // behaviour where it is used (UBSan: "load of value 99, which is not a valid value for type
 // 'bool'", a fuzz finding in a root tile).
-void check_bool(LayoutWalk& walk, const std::string& what) {
-  if (walk.u8(what) > 1) {
+bool check_bool(LayoutWalk& walk, const std::string& what) {
+  const std::uint8_t value = walk.u8(what);
+  if (value > 1) {
     walk.seek(walk.at() - 1);
     walk.fail(what + " is a bool of neither 0 nor 1");
   }
+  return value == 1;
 }
 
 // io::DelayedLoadMetadata::readValue: a leaf count, then a mask of that many bytes and a table of
@@ -286,12 +288,7 @@ void check_metadata(LayoutWalk& walk, const std::string& owner, bool* saved_as_h
     // Any other type would need its own idea of truth (GridBase::saveFloatAsHalf asks asBool()).
     if (saved_as_half && name == kSavedAsHalf) {
       if (type != "bool" || stated != 1) walk.fail(what + " is a " + printable_text(type, 64) + ", not a bool");
-      const std::uint8_t value = walk.u8(what);
-      if (value > 1) {
-        walk.seek(walk.at() - 1);
-        walk.fail(what + " is a bool of neither 0 nor 1");
-      }
-      *saved_as_half = value == 1;
+      *saved_as_half = check_bool(walk, what);
       continue;
     }
     if (type == "__delayedload") {
