@@ -1,19 +1,21 @@
 #!/usr/bin/env bash
 # Rays per CPU second of Embree's own `pathtracer` and of rtpro, one thread, on Embree's Cornell box
-# (benchmarks/embree/cornell_box.yaml, 512x512, path length 8) or its furBall_A (SCENE=fur:
-# benchmarks/fur_ball.yaml, 128x128, fibres matte as in fur_ball_benchmark.sh). For a machine
+# (benchmarks/embree/cornell_box.yaml, 512x512, path length 8), its furBall_A (SCENE=fur:
+# benchmarks/fur_ball.yaml, 128x128, fibres matte as in fur_ball_benchmark.sh) or the Stanford
+# dragon (SCENE=dragon: benchmarks/embree_dragon_path.sh, 512x512). For a machine
 # shared with other work, where wall-clock rates follow the neighbours' load: the CPU time a
 # process is charged barely moves with it. Each renderer runs twice per run, at LO and HI samples
 # (Embree: --benchmark 0 LO and 0 HI frames of 1 spp), and the rate is the extra rays over the extra
 # CPU seconds (user + system, /usr/bin/time), so loading, building and writing cancel out. Embree's
 # rays a frame are its BENCHMARK_RENDER_MRAYPS_AVG / BENCHMARK_RENDER_AVG (frames a second); rtpro's
 # from --stats-json. Runs are interleaved; the table gives medians, min-max and ratios to Embree.
-# Usage: benchmarks/embree_cpu_time_benchmark.sh [--runs N]   (SCENE=box|fur LO=1 HI=5
+# Usage: benchmarks/embree_cpu_time_benchmark.sh [--runs N]   (SCENE=box|fur|dragon LO=1 HI=5
 #   CONFIGS="embree embree-not-robust native" EMBREE_ISA=default|avx2|...)
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
 source "$(dirname "$0")/options.sh"
 source "$(dirname "$0")/embree_fur_matte.sh"
+source "$(dirname "$0")/embree_dragon_path.sh"
 command -v pathtracer >/dev/null || { echo "pathtracer not found: apt-get install embree-tools" >&2; exit 2; }
 models=/usr/share/doc/embree3/models
 lo=${LO:-1}
@@ -23,12 +25,13 @@ build_release rtpro
 
 out=$(mktemp -d "${TMPDIR:-/tmp}/rtpro-embree-cpu.XXXXXX")
 case ${SCENE:-box} in
-  box) size=512 ecs=$models/cornell_box.ecs yaml=$root/benchmarks/embree/cornell_box.yaml ;;
+  box) size=512 peer_scene=(-c "$models/cornell_box.ecs") yaml=$root/benchmarks/embree/cornell_box.yaml ;;
   fur)
-    size=128 ecs=$out/furBall_matte.ecs yaml=$out/fur_ball.yaml
+    size=128 peer_scene=(-c "$out/furBall_matte.ecs") yaml=$out/fur_ball.yaml
     embree_fur_matte "$out"
     sed "s#file: fur_ball.hair#file: $root/benchmarks/fur_ball.hair#" "$root/benchmarks/fur_ball.yaml" >"$yaml" ;;
-  *) echo "SCENE must be box or fur" >&2; exit 2 ;;
+  dragon) size=512 yaml=$out/dragon_path.yaml; embree_dragon_path "$out" "$size" ;;
+  *) echo "SCENE must be box, fur or dragon" >&2; exit 2 ;;
 esac
 isa=()
 [ "${EMBREE_ISA:-default}" = default ] || isa=(--rtcore "max_isa=$EMBREE_ISA")
@@ -44,7 +47,7 @@ cpu_seconds() {
 pin_for 1  # every run on one CPU: the CPU time a process is charged depends on the core too
 for r in $(seq "$runs"); do
   for n in $lo $hi; do
-    (cd "$(dirname "$ecs")" && cpu_seconds "$out/peer-$n-r$r.log" "${pin[@]}" pathtracer -c "$ecs" --size "$size" "$size" \
+    (cd "$out" && cpu_seconds "$out/peer-$n-r$r.log" "${pin[@]}" pathtracer "${peer_scene[@]}" --size "$size" "$size" \
       --spp 1 --max-path-length 8 --threads 1 "${isa[@]}" --benchmark 0 "$n") >"$out/peer-$n-r$r.cpu"
     for config in $configs; do
       flags=(--backend "${config%%-*}")
