@@ -3,7 +3,7 @@
 #
 #   scripts/fuzz.sh [--build DIR] [--seconds N | --runs N] [--timeout S] [--parallel] [TARGET...]
 #
-# TARGET is scene, obj, ply, image, gltf, journal, vdb (default: all). Each target replays its seed corpus and its
+# TARGET is scene, obj, ply, image, gltf, journal, vdb, hair (default: all). Each target replays its seed corpus and its
 # regressions, then fuzzes for N seconds (default 600) or N executions, with its dictionary and
 # the limits below, which turn a slow or fat input into a finding (timeout / out-of-memory
 # artifact). New interesting inputs go to DIR/fuzz/corpus/TARGET (kept between runs, never
@@ -39,7 +39,7 @@ while [ $# -gt 0 ]; do
     *) targets+=("$1"); shift ;;
   esac
 done
-[ ${#targets[@]} -gt 0 ] || targets=(scene obj ply image gltf journal vdb)
+[ ${#targets[@]} -gt 0 ] || targets=(scene obj ply image gltf journal vdb hair)
 
 # Per input: 10 s of wall time (generous: a sanitizer build at nice 19 on a busy machine; the
 # corpus replay and the hostile-input tests hold inputs to far tighter limits), 2 GB of resident

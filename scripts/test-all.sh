@@ -48,7 +48,7 @@ fi
 
 if [[ $stages == *,3,* ]]; then
   stage "3: fuzz smoke run, ${fuzz_seconds} s per target"
-  for pair in "scene obj" "ply gltf" "image journal" "vdb"; do
+  for pair in "scene obj" "ply gltf" "image journal" "vdb hair"; do
     # shellcheck disable=SC2086
     scripts/fuzz.sh --build build-asan --seconds "$fuzz_seconds" --parallel $pair
   done

@@ -213,13 +213,41 @@ def gltf_seeds():
     put("gltf", "tree-of-576-placements.gltf", gltf_document(embedded, len(data), many_instances))
 
 
+def hair(strands, points, arrays, positions, segments=None, thickness=None, transparency=None, colors=None,
+         default_segments=0, default_thickness=0.01):
+    """A .hair file: the 128-byte header, then the arrays its flags name, in the format's order."""
+    header = b"HAIR" + struct.pack("<4I", strands, points, arrays, default_segments)
+    header += struct.pack("<5f", default_thickness, 1.0, 0.5, 0.4, 0.3) + b"rtpro fuzz seed".ljust(88, b"\0")
+    body = b""
+    for values, form in ((segments, "H"), (positions, "f"), (thickness, "f"), (transparency, "f"), (colors, "f")):
+        if values is not None:
+            body += struct.pack("<%d%s" % (len(values), form), *values)
+    return header + body
+
+
+def hair_seeds():
+    # A strand of 4 points and one of 7 (3n + 1: every basis takes them), every array present.
+    xyz = [c for i in range(11) for c in (0.1 * i, 0.05 * i * i, 0.0 if i < 4 else 1.0)]
+    put("hair", "all-arrays.hair", hair(2, 11, 31, xyz, segments=[3, 6], thickness=[0.02] * 11,
+                                        transparency=[0.0] * 11, colors=[0.5, 0.3, 0.2] * 11))
+    # No segments array: every strand has the default count; no thickness: the default one.
+    put("hair", "defaults.hair", hair(3, 12, 2, [0.25 * i for i in range(36)], default_segments=3))
+    put("hair", "one-point-strands.hair", hair(2, 2, 3, [0, 0, 0, 1, 1, 1], segments=[0, 0]))
+    put("hair", "empty.hair", hair(0, 0, 2, []))
+    put("hair", "hostile-counts.hair", hair(0xFFFFFFFF, 0xFFFFFFFF, 31, [0, 0, 0]))
+    put("hair", "hostile-strands-need-more.hair", hair(2, 3, 3, [0] * 9, segments=[0xFFFF, 1]))
+    put("hair", "hostile-values.hair", hair(1, 4, 7, [float("nan"), 0, 0, float("inf"), 0, 0, 1e30, 0, 0, 0, 0, 0],
+                                            segments=[3], thickness=[-1.0, 0.0, float("nan"), 1e38]))
+
+
 if __name__ == "__main__":
-    for target in ("scene", "obj", "ply", "image", "gltf"):
+    for target in ("scene", "obj", "ply", "image", "gltf", "hair"):
         shutil.rmtree(CORPUS / target, ignore_errors=True)
     scene_seeds()
     obj_seeds()
     ply_seeds()
     gltf_seeds()
+    hair_seeds()
     with tempfile.TemporaryDirectory() as work:
         image_seeds(work)
     for target in sorted(os.listdir(CORPUS)):
