@@ -60,9 +60,11 @@ void check_replaceable(const std::filesystem::path& target) {
                      "; rtpro replaces only regular files (remove it or choose another name)");
   }
   // A full file system is known before anything is rendered; a nearly full one shows up as a
-  // failed write later, with the old file kept.
+  // failed write later, with the old file kept. One without blocks at all (/proc, /sys) is not
+  // full: creating the file there fails and says why.
   struct statvfs space {};
-  if (::statvfs(folder.c_str(), &space) == 0 && (::geteuid() == 0 ? space.f_bfree : space.f_bavail) == 0)
+  if (::statvfs(folder.c_str(), &space) == 0 && space.f_blocks > 0 &&
+      (::geteuid() == 0 ? space.f_bfree : space.f_bavail) == 0)
     fail(target, "the file system of folder '" + folder.string() + "' is full");
 }
 

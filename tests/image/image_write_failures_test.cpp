@@ -44,6 +44,19 @@ TEST(ImageIo, MissingFolderIsARuntimeErrorNamingIt) {
   EXPECT_FALSE(fs::exists(folder));
 }
 
+// /proc reports no free blocks because it has no blocks at all: its folders are not "full", the
+// file cannot be created there (root passes the writability check, others are told it is not
+// writable).
+TEST(ImageIo, AFolderOnAFileSystemWithoutBlocksIsNotCalledFull) {
+  if (!fs::is_directory("/proc/self")) GTEST_SKIP() << "no /proc";
+  const fs::path target = "/proc/rtpro-image-write-test.png";
+  const std::string message =
+      error_message_of<RuntimeError>([&] { write_image(target, uniform_image(2, 2, 0.5f), {}); });
+  EXPECT_NE(message.find(target.string()), std::string::npos) << message;
+  EXPECT_EQ(message.find("full"), std::string::npos) << message;
+  EXPECT_FALSE(fs::exists(target));
+}
+
 TEST(ImageIo, EmptyImageIsRefusedWithoutTouchingTheDisk) {
   const auto folder = test::scratch_dir();
   EXPECT_THROW(write_image(folder / "empty.exr", Image(0, 4), {}), RuntimeError);
