@@ -31,8 +31,10 @@ void check_image_output(const std::filesystem::path& file) {
   if (!openimageio_writes(file))
     throw InputError("cannot write '" + file.string() + "': unknown image format '" + file.extension().string() +
                      "' (use .exr, .png, .jpg or .tif)");
-  // The atomic writer's own checks: folder, file type, a full file system.
-  check_replaceable(file);
+  // The atomic writer's own checks (folder, file type, a full file system), then its temporary
+  // file created and removed again: a folder that passes the checks but takes no file (root in
+  // /proc, an immutable folder, root squashed on NFS) fails here, not after the render.
+  const AtomicFileReplacement probe(file);
 }
 
 }  // namespace rtpro

@@ -72,5 +72,17 @@ TEST(OutputCheck, MissingFolderIsARuntimeError) {
   EXPECT_THROW(check_image_output(test::scratch_dir() / "missing" / "image.png"), RuntimeError);
 }
 
+// /proc passes root's writability check but takes no new file: refused before a render, not after.
+TEST(OutputCheck, AFolderThatTakesNoNewFileIsARuntimeError) {
+  if (!std::filesystem::is_directory("/proc/self")) GTEST_SKIP() << "no /proc";
+  EXPECT_THROW(check_image_output("/proc/rtpro-output-check.png"), RuntimeError);
+}
+
+TEST(OutputCheck, LeavesNothingBehindInAWritableFolder) {
+  const auto folder = test::scratch_dir();
+  check_image_output(folder / "image.png");
+  EXPECT_TRUE(std::filesystem::is_empty(folder));
+}
+
 }  // namespace output_check_test
 }  // namespace rtpro
