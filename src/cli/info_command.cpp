@@ -8,6 +8,7 @@
 #include "rtpro/core/memory_budget.h"
 #include "rtpro/core/printable_text.h"
 #include "rtpro/scene/scene_lighting.h"
+#include "rtpro/scene/unused_settings.h"
 #include "rtpro/scene/scene_summary.h"
 
 #include <nlohmann/json.hpp>
@@ -292,6 +293,7 @@ int run_info(const InfoOptions& o) {
   const std::vector<LightLine> lights = light_lines(loaded.description);
   std::vector<std::string> notes = loaded.description.notes;
   if (const auto warning = unlit_scene_warning(loaded.scene)) notes.push_back("warning: " + *warning);
+  if (const auto warning = ignored_path_controls_warning(loaded.scene.render)) notes.push_back("warning: " + *warning);
   if (o.json) {
     nlohmann::json json = info_json(o.scene, loaded.scene, summary, loaded.report);
     json["light_list"] = lights_json(lights);

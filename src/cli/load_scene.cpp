@@ -4,6 +4,7 @@
 #include "rtpro/core/error.h"
 #include "rtpro/core/memory_budget.h"
 #include "rtpro/scene/scene_lighting.h"
+#include "rtpro/scene/unused_settings.h"
 #include "rtpro/image/image_io.h"
 #include "rtpro/image/image_size.h"
 #include "rtpro/render/environment_light.h"
@@ -68,6 +69,7 @@ LoadedScene load_scene(const SceneLoad& load, Log* log,
   if (log) {
     for (const std::string& note : loaded.description.notes) log->info(note);
     if (const auto warning = unlit_scene_warning(loaded.scene)) log->warning(*warning);
+    if (const auto warning = ignored_path_controls_warning(loaded.scene.render)) log->warning(*warning);
   }
   return loaded;
 }

@@ -94,6 +94,10 @@ TEST(ModelScene, WhatLightsAModelIsSaidAndAnUnlitSceneWarned) {
   expect_rtpro_answer(render_args(dark, dir / "d.exr", "--integrator whitted"), 0,
                       "warning: the scene has no lights: under the whitted integrator");
   expect_rtpro_answer("info " + dark.string(), 0, "note         warning: nothing lights the scene");
+  // Cycles' light-path controls given to a whitted render are said to do nothing there.
+  expect_rtpro_answer(
+      render_args(test::scenes_dir() / "demo.yaml", dir / "w.exr", "--size 8x6 --spp 1 --clamp-direct 3"), 0,
+      "warning: render.clamp_direct is read by the path integrator only; the whitted integrator renders without it");
   const std::string demo =
       run_rtpro(render_args(test::scenes_dir() / "demo.yaml", dir / "demo.exr", "--size 8x6 --spp 1"), 0);
   EXPECT_EQ(demo.find("warning"), std::string::npos) << demo;
