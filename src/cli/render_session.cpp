@@ -34,6 +34,10 @@ RenderSession::RenderSession(const RenderRequest& request, const LoadedScene& lo
   const float threshold = static_cast<float>(request.noise_threshold);
   options_.adaptive = {threshold, resolved_min_samples(request.min_samples, threshold, loaded.scene.render.spp),
                        request.noise_metric};
+  if (const int spp = loaded.scene.render.spp; request.min_samples > spp)
+    log.warning("--min-samples " + std::to_string(request.min_samples) + " is more than the " + std::to_string(spp) +
+                " samples a pixel takes at most (--spp): every pixel takes all " + std::to_string(spp) +
+                ", as without --noise-threshold");
   log_meshes(loaded.report, log);
   start_workers();
   build_backend();

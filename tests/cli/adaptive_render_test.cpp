@@ -194,5 +194,18 @@ TEST(AdaptiveRender, RefusesAThresholdForAOnePassRender) {
   EXPECT_NE(output.find("one pass"), std::string::npos) << output;
 }
 
+// A least number of samples above the most a pixel takes is said, not silently cut to it.
+TEST(AdaptiveRender, WarnsOfMinSamplesAboveTheSpp) {
+  const auto scene = test::write_file("scene.yaml", kScene);
+  std::string output;
+  EXPECT_EQ(run_command(rtpro_command(render_args(scene, scene.parent_path() / "x.exr") +
+                                      " --size 8x8 --spp 4 --noise-threshold 0.01 --min-samples 64"),
+                        &output),
+            0);
+  EXPECT_NE(output.find("warning: --min-samples 64 is more than the 4 samples a pixel takes at most"),
+            std::string::npos)
+      << output;
+}
+
 }  // namespace adaptive_render_test
 }  // namespace rtpro
