@@ -8,8 +8,8 @@
 #include "rtpro/core/memory_budget.h"
 #include "rtpro/core/printable_text.h"
 #include "rtpro/scene/scene_lighting.h"
-#include "rtpro/scene/unused_settings.h"
 #include "rtpro/scene/scene_summary.h"
+#include "rtpro/scene/unused_settings.h"
 
 #include <nlohmann/json.hpp>
 

@@ -17,6 +17,7 @@
 namespace rtpro {
 namespace adaptive_render_test {
 
+using test::expect_rtpro_answer;
 using test::render_args;
 using test::rtpro_command;
 using test::run_command;
@@ -186,25 +187,16 @@ TEST(AdaptiveRender, TimeLimitEndsWithTheFinishedPasses) {
 
 TEST(AdaptiveRender, RefusesAThresholdForAOnePassRender) {
   const auto scene = test::write_file("scene.yaml", kScene);
-  std::string output;
-  EXPECT_EQ(run_command(rtpro_command(render_args(scene, scene.parent_path() / "x.exr") +
-                                      " --integrator whitted --noise-threshold 0.01"),
-                        &output),
-            2);
-  EXPECT_NE(output.find("one pass"), std::string::npos) << output;
+  expect_rtpro_answer(render_args(scene, scene.parent_path() / "x.exr", "--integrator whitted --noise-threshold 0.01"),
+                      2, "one pass");
 }
 
 // A least number of samples above the most a pixel takes is said, not silently cut to it.
 TEST(AdaptiveRender, WarnsOfMinSamplesAboveTheSpp) {
   const auto scene = test::write_file("scene.yaml", kScene);
-  std::string output;
-  EXPECT_EQ(run_command(rtpro_command(render_args(scene, scene.parent_path() / "x.exr") +
-                                      " --size 8x8 --spp 4 --noise-threshold 0.01 --min-samples 64"),
-                        &output),
-            0);
-  EXPECT_NE(output.find("warning: --min-samples 64 is more than the 4 samples a pixel takes at most"),
-            std::string::npos)
-      << output;
+  expect_rtpro_answer(
+      render_args(scene, scene.parent_path() / "x.exr", "--size 8x8 --spp 4 --noise-threshold 0.01 --min-samples 64"),
+      0, "warning: --min-samples 64 is more than the 4 samples a pixel takes at most");
 }
 
 }  // namespace adaptive_render_test
