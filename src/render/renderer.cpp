@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -166,23 +165,6 @@ std::vector<const TileResult*> usable_journal_items(std::span<const TileResult> 
   return cumulative;
 }
 
-// Every pixel of the film's region, through its last merged pass (before the first: the first
-// pass's tiles that are in, as resolve shows them).
-SampleCounts sample_counts(const ProgressiveFilm& film) {
-  const PixelRegion& region = film.grid().region();
-  SampleCounts counts{std::numeric_limits<int>::max(), 0, 0.0};
-  double sum = 0.0;
-  for (int y = region.y0; y < region.y1; ++y)
-    for (int x = region.x0; x < region.x1; ++x) {
-      const int samples = film.pixel(x, y).samples;
-      counts.min = std::min(counts.min, samples);
-      counts.max = std::max(counts.max, samples);
-      sum += samples;
-    }
-  counts.mean = sum / (double(region.width()) * double(region.height()));
-  return counts;
-}
-
 }  // namespace
 
 PixelRegion checked_region(const RenderScene& scene, const RenderOptions& options) {
@@ -306,9 +288,8 @@ RenderResult render_image(const RenderScene& scene, const Backend& backend, cons
     result.stop = deadline_passed && result.passes_done > 0 ? RenderStop::kTimeLimit : RenderStop::kInterrupted;
 
   result.image = film_output_image(scene.camera.width, scene.camera.height, layout.channels());
-  if (result.passes_done > 0) film.resolve(layout, result.image);
-  else film.resolve_with_partial_pass(layout, result.image);
-  result.samples = sample_counts(film);
+  result.samples = result.passes_done > 0 ? film.resolve(layout, result.image)
+                                          : film.resolve_with_partial_pass(layout, result.image);
   result.tiles_done = sink.done();
   result.rays = film.rays();
   result.nan_samples = film.nan_samples();

@@ -117,6 +117,36 @@ TEST(ProgressiveFilm, JournalItemsRebuildTheFilmExactly) {
   EXPECT_EQ(resumed.rays().total(), whole.rays().total());
 }
 
+// resolve gives the samples the resolved sums hold: of the merged passes, or before the first pass
+// is whole, of its tiles that are in (the others 0).
+TEST(ProgressiveFilm, ResolveCountsTheSamplesOfTheMergedPasses) {
+  const RenderScene scene = path_scene();
+  const auto backend = make_backend(BackendKind::kNative, scene, {});
+  const TileGrid grid = render_grid(scene, {0, 0, 40, 28}, 16);  // tiles of 16×16, 16×12, 8×16, 8×12
+  const std::vector<TileResult> items = render_items(scene, *backend, grid);
+  const std::size_t tiles = grid.tiles_per_pass();
+  const FilmLayout layout(kLayers);
+  Image image(scene.camera.width, scene.camera.height, layout.channels());
+
+  ProgressiveFilm film(grid, layer_sums());
+  film.add(TileResult(items[1]));  // the first pass's tile 1 alone: 16×16 of 40×28 pixels at 1 sample
+  SampleCounts counts = film.resolve_with_partial_pass(layout, image);
+  EXPECT_EQ(counts.min, 0);
+  EXPECT_EQ(counts.max, 1);
+  EXPECT_DOUBLE_EQ(counts.mean, items[1].region.pixel_count() / (40.0 * 28.0));
+
+  for (std::size_t i = 0; i < 3 * tiles + 2; ++i)
+    if (i != 1) film.add(TileResult(items[i]));
+  ASSERT_EQ(film.passes_merged(), 3);  // two tiles of the fourth pass wait
+  const int merged = render_passes(scene).samples_through(2);
+  for (const SampleCounts& resolved : {film.resolve(layout, image), film.resolve_with_partial_pass(layout, image)}) {
+    EXPECT_EQ(resolved.min, merged);
+    EXPECT_EQ(resolved.max, merged);
+    EXPECT_DOUBLE_EQ(resolved.mean, merged);
+    EXPECT_TRUE(resolved.uniform());
+  }
+}
+
 // A pixel masked out of a pass gets no samples in it; the others get the pass's.
 TEST(ProgressiveFilm, PixelsOutOfTheMaskTakeNoSamples) {
   const RenderScene scene = path_scene();

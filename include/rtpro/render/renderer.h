@@ -60,14 +60,6 @@ struct RenderOptions {
 // Why a render stopped: every pass done, every pixel converged, the time limit, or an interrupt.
 enum class RenderStop { kAllPasses, kConverged, kTimeLimit, kInterrupted };
 
-// The samples the pixels of the region took: all `spp` for a finished render; fewer for one
-// stopped by its time limit; anything up to `spp` under adaptive sampling.
-struct SampleCounts {
-  int min = 0, max = 0;
-  double mean = 0.0;
-  bool uniform() const { return min == max; }
-};
-
 struct RenderResult {
   // Full camera resolution; pixels outside the region are 0. The passes merged, or when none
   // was, the tiles of the first pass that finished (the others 0).

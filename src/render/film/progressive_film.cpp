@@ -1,8 +1,12 @@
 #include "rtpro/render/progressive_film.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <span>
 #include <stdexcept>
 
@@ -116,19 +120,41 @@ bool ProgressiveFilm::has(std::size_t index) const {
          !waiting->second.items[index % grid_.tiles_per_pass()].pixels.empty();
 }
 
-void ProgressiveFilm::resolve(const FilmLayout& layout, Image& image) const {
+SampleCounts ProgressiveFilm::resolve(const FilmLayout& layout, Image& image) const {
   const PixelRegion& region = grid_.region();
-  tbb::parallel_for(region.y0, region.y1, [&](int y) {
-    layout.resolve_row(sums_, pixel_sums(region.x0, y), region.width(), &image.at(region.x0, y, 0));
-  });
+  // Integer sums, so that the mean is the same however the rows are split.
+  struct Counted {
+    int min = std::numeric_limits<int>::max(), max = 0;
+    std::uint64_t sum = 0;
+  };
+  const Counted counted = tbb::parallel_reduce(
+      tbb::blocked_range<int>(region.y0, region.y1), Counted{},
+      [&](const tbb::blocked_range<int>& rows, Counted counts) {
+        for (int y = rows.begin(); y < rows.end(); ++y) {
+          const float* sums = pixel_sums(region.x0, y);
+          layout.resolve_row(sums_, sums, region.width(), &image.at(region.x0, y, 0));
+          for (int x = 0; x < region.width(); ++x, sums += sums_.floats()) {
+            const int samples = SumLayout::samples(sums);
+            counts.min = std::min(counts.min, samples);
+            counts.max = std::max(counts.max, samples);
+            counts.sum += static_cast<std::uint64_t>(samples);
+          }
+        }
+        return counts;
+      },
+      [](const Counted& a, const Counted& b) {
+        return Counted{std::min(a.min, b.min), std::max(a.max, b.max), a.sum + b.sum};
+      });
+  return {counted.min, counted.max,
+          static_cast<double>(counted.sum) / (double(region.width()) * double(region.height()))};
 }
 
-void ProgressiveFilm::resolve_with_partial_pass(const FilmLayout& layout, Image& image) const {
-  resolve(layout, image);  // holds the first pass's tiles that are in
+SampleCounts ProgressiveFilm::resolve_with_partial_pass(const FilmLayout& layout, Image& image) const {
+  const SampleCounts counts = resolve(layout, image);  // holds the first pass's tiles that are in
   std::lock_guard lock(mutex_);
-  if (merged_ == 0) return;
+  if (merged_ == 0) return counts;
   const auto waiting = waiting_.find(merged_);
-  if (waiting == waiting_.end()) return;
+  if (waiting == waiting_.end()) return counts;
   const auto channels = static_cast<std::size_t>(layout.channel_count());
   const auto floats = static_cast<std::size_t>(sums_.floats());
   std::vector<float> sums(floats);
@@ -142,6 +168,7 @@ void ProgressiveFilm::resolve_with_partial_pass(const FilmLayout& layout, Image&
         layout.resolve(sums_.load(sums.data()), std::span<float>(&image.at(x, y, 0), channels));
       }
   }
+  return counts;
 }
 
 void ProgressiveFilm::visit_journal_items(const std::function<void(const TileResult&)>& visit) const {
