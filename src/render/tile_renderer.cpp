@@ -76,7 +76,6 @@ void TileRenderer::render_pixels(SampleRange range, const Workspace::TilePixel* 
                                  TileResult& out, Workspace& ws) const {
   const StratifiedSampler& sampler = integration_->samplers.stratified();
   const SobolSampler& sobol = integration_->samplers.sobol();
-  const int spp = sampler.samples_per_pixel();
   const int per_pixel = range.count();
   const auto image_width = static_cast<std::uint64_t>(scene_.camera.width);
   const RenderCamera& camera = scene_.camera;
@@ -85,8 +84,6 @@ void TileRenderer::render_pixels(SampleRange range, const Workspace::TilePixel* 
   // Sized once per batch and written in place (a resize to the same size does nothing).
   ws.camera_rays.resize(pixel_count * static_cast<std::size_t>(per_pixel));
   ws.sample_keys.resize(ws.camera_rays.size());
-  ws.pixel_offsets.resize(static_cast<std::size_t>(spp));
-  PixelOffset* offsets = ws.pixel_offsets.data();
   const auto key_of_pixel = [&](std::size_t i) {
     return static_cast<std::uint64_t>(pixels[i].y) * image_width + static_cast<std::uint64_t>(pixels[i].x);
   };
@@ -97,12 +94,14 @@ void TileRenderer::render_pixels(SampleRange range, const Workspace::TilePixel* 
     const std::uint64_t pixel_key = key_of_pixel(i);
     for (int s = range.begin; s < range.end; ++s) ws.sample_keys[key++] = {pixel_key, s};
   }
-  if (scene_.render.sampler == SamplerKind::kSobol) {
-    // Every sample's pixel offset in one batch (the same values as pixel_offset, bit for bit),
-    // whose hashes run side by side.
-    ws.sobol_offsets.resize(ws.sample_keys.size());
-    sobol.sample_2d(ws.sample_keys, sample_dimension::kPixel, ws.sobol_offsets);
+  // Every sample's pixel offset in one batch (the same values as pixel_offset, bit for bit), whose
+  // hashes run side by side.
+  ws.pixel_offsets.resize(ws.sample_keys.size());
+  switch (scene_.render.sampler) {
+    case SamplerKind::kStratified: sampler.pixel_offsets(ws.sample_keys, ws.pixel_offsets); break;
+    case SamplerKind::kSobol: sobol.sample_2d(ws.sample_keys, sample_dimension::kPixel, ws.pixel_offsets); break;
   }
+  const PixelOffset* offsets = ws.pixel_offsets.data();
   ws.camera_times.clear();
   if (camera.shutter.is_open()) {
     // The time stratified as the sampler stratifies a dimension, then spread as the shutter
@@ -115,16 +114,6 @@ void TileRenderer::render_pixels(SampleRange range, const Workspace::TilePixel* 
     if (!camera.shutter.is_box())
       for (float& time : ws.camera_times) time = shutter_time(camera.shutter, time);
   }
-  // The pass's offsets of pixel i, whose first sample is the batch's sample `first`.
-  const auto find_offsets = [&](std::size_t i, std::size_t first) {
-    switch (scene_.render.sampler) {
-      case SamplerKind::kStratified: sampler.pixel_offsets(key_of_pixel(i), offsets); break;
-      case SamplerKind::kSobol:
-        for (int s = range.begin; s < range.end; ++s)
-          offsets[s] = ws.sobol_offsets[first + static_cast<std::size_t>(s - range.begin)];
-        break;
-    }
-  };
   std::size_t next = 0;
   if (pinhole) {
     // Every sample's film point first, then the rays four at a time across pixels (camera_ray's
@@ -135,10 +124,9 @@ void TileRenderer::render_pixels(SampleRange range, const Workspace::TilePixel* 
     for (std::size_t i = 0; i < pixel_count; ++i) {
       const auto x = static_cast<float>(pixels[i].x);
       const auto y = static_cast<float>(pixels[i].y);
-      find_offsets(i, next);
       for (int s = range.begin; s < range.end; ++s, ++next) {
-        ws.film_x[next] = x + offsets[s].x;
-        ws.film_y[next] = y + offsets[s].y;
+        ws.film_x[next] = x + offsets[next].x;
+        ws.film_y[next] = y + offsets[next].y;
       }
     }
     std::size_t k = 0;
@@ -150,9 +138,8 @@ void TileRenderer::render_pixels(SampleRange range, const Workspace::TilePixel* 
       const int x = pixels[i].x;
       const int y = pixels[i].y;
       const std::uint64_t pixel_key = key_of_pixel(i);
-      find_offsets(i, next);
       for (int s = range.begin; s < range.end; ++s, ++next) {
-        const PixelOffset& offset = offsets[s];
+        const PixelOffset& offset = offsets[next];
         const Sample2D lens = lensless ? Sample2D{0.5f, 0.5f}
                               : scene_.render.sampler == SamplerKind::kStratified
                                   ? sampler.sample_2d(pixel_key, s, sample_dimension::kLens)

@@ -4,9 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <set>
+#include <span>
 #include <vector>
 
 namespace rtpro {
@@ -43,22 +45,25 @@ TEST(StratifiedSampler, IsAPureFunctionOfSeedPixelAndIndex) {
   EXPECT_NE(a.pixel_offset(99, 0).x, a.pixel_offset(100, 0).x);
 }
 
-TEST(StratifiedSampler, AllOffsetsOfAPixelAtOnceArePixelOffsetBitForBit) {
-  // Square, oblong (8x6), prime (7x1) and single-sample grids; keys near the ends of the range.
+TEST(StratifiedSampler, OffsetsOfABatchOfKeysArePixelOffsetBitForBit) {
+  // Square, oblong (8x6), prime (7x1) and single-sample grids; keys near the ends of the range, in
+  // batches longer and shorter than a run of the batch's hashing, samples in any order.
   for (const int spp : {1, 7, 16, 48, 64, 100}) {
     for (const std::uint64_t seed : {0ull, 12345ull}) {
       const StratifiedSampler sampler(spp, seed);
-      std::vector<PixelOffset> all(static_cast<std::size_t>(spp));
-      for (const std::uint64_t pixel : {0ull, 1ull, 640ull * 480ull - 1ull, ~0ull}) {
-        sampler.pixel_offsets(pixel, all.data());
-        for (int s = 0; s < spp; ++s) {
-          const PixelOffset one = sampler.pixel_offset(pixel, s);
-          ASSERT_EQ(std::bit_cast<std::uint32_t>(all[static_cast<std::size_t>(s)].x),
-                    std::bit_cast<std::uint32_t>(one.x))
-              << "spp " << spp << " pixel " << pixel << " sample " << s;
-          ASSERT_EQ(std::bit_cast<std::uint32_t>(all[static_cast<std::size_t>(s)].y),
-                    std::bit_cast<std::uint32_t>(one.y))
-              << "spp " << spp << " pixel " << pixel << " sample " << s;
+      std::vector<SampleKey> keys;
+      for (const std::uint64_t pixel : {0ull, 1ull, 640ull * 480ull - 1ull, ~0ull, 0x123456789abcdefull})
+        for (int s = spp - 1; s >= 0; --s) keys.push_back({pixel, s});
+      for (const std::size_t count : {keys.size(), std::size_t{1}, std::size_t{63}, std::size_t{65}}) {
+        const std::span<const SampleKey> batch(keys.data(), std::min(count, keys.size()));
+        std::vector<PixelOffset> offsets(batch.size());
+        sampler.pixel_offsets(batch, offsets);
+        for (std::size_t i = 0; i < batch.size(); ++i) {
+          const PixelOffset one = sampler.pixel_offset(batch[i].pixel_key, batch[i].sample_index);
+          ASSERT_EQ(std::bit_cast<std::uint32_t>(offsets[i].x), std::bit_cast<std::uint32_t>(one.x))
+              << "spp " << spp << " key " << i;
+          ASSERT_EQ(std::bit_cast<std::uint32_t>(offsets[i].y), std::bit_cast<std::uint32_t>(one.y))
+              << "spp " << spp << " key " << i;
         }
       }
     }

@@ -47,11 +47,11 @@ class StratifiedSampler {
   // `pixel_key` identifies the pixel in the full image (y·width + x). Dimensions 0–1.
   PixelOffset pixel_offset(std::uint64_t pixel_key, int sample_index) const;
 
-  // pixel_offset(pixel_key, s) for every sample s of the pixel, in sample order, into
-  // out[0, samples_per_pixel()), bit for bit: the pixel's hash is worked out once and the strata
-  // are walked in order instead of divided out sample by sample. Inline, so that the hashes of a
-  // batch's pixels overlap; with a call per pixel, each waited for the one before.
-  void pixel_offsets(std::uint64_t pixel_key, PixelOffset* out) const;
+  // pixel_offset(keys[i].pixel_key, keys[i].sample_index) into out[i] (out.size() == keys.size(),
+  // every sample index in [0, samples_per_pixel())), bit for bit. Worked in runs of keys, each step
+  // for every key of the run before the next, so that the AVX2 clone hashes four keys at a time
+  // (one at a time, a 1-spp frame's three mixes a key were a tenth of its instructions).
+  void pixel_offsets(std::span<const SampleKey> keys, std::span<PixelOffset> out) const;
 
   // The 2D value of dimension pair (dimension, dimension + 1) for this sample; dimension is even
   // and at least 2.
@@ -93,23 +93,16 @@ class StratifiedSampler {
   float inv_columns_, inv_rows_;
   std::uint64_t seed_;
   // mix64(s) of each sample index s: hash_combine(bits, s) is mix64(bits ^ sample_mixes_[s]), one
-  // mix of a pixel's two a sample fewer (pixel_offsets' hashes were 4% of a 1-spp frame).
+  // mix of a key's three fewer to work out.
   std::vector<std::uint64_t> sample_mixes_;
+  // Sample s's stratum (s mod columns, s div columns), as floats: no division per key.
+  std::vector<Sample2D> strata_;
 };
 
 inline PixelOffset StratifiedSampler::jittered_in_stratum(std::uint64_t bits, int sx, int sy) const {
   // (s + jitter) / n stays below 1 because jitter <= 1 − 2⁻²⁴.
   return {(static_cast<float>(sx) + to_unit_float(bits)) * inv_columns_,
           (static_cast<float>(sy) + to_unit_float(bits << 24)) * inv_rows_};
-}
-
-inline void StratifiedSampler::pixel_offsets(std::uint64_t pixel_key, PixelOffset* out) const {
-  const std::uint64_t pixel_bits = hash_combine(seed_, pixel_key);
-  int sample_index = 0;
-  for (int sy = 0; sy < grid_.rows; ++sy)
-    for (int sx = 0; sx < grid_.columns; ++sx, ++sample_index)
-      out[sample_index] =
-          jittered_in_stratum(mix64(pixel_bits ^ sample_mixes_[static_cast<std::size_t>(sample_index)]), sx, sy);
 }
 
 // Element `index` of a pseudo-random permutation of [0, count) chosen by `key` (Kensler's

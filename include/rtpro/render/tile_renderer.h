@@ -28,8 +28,7 @@ class TileRenderer {
     Workspace& operator=(Workspace&&) noexcept;
     std::vector<Ray> camera_rays;
     std::vector<SampleKey> sample_keys;
-    std::vector<PixelOffset> pixel_offsets;  // one pixel's, spp of them
-    std::vector<PixelOffset> sobol_offsets;  // every camera sample's, drawn in one batch
+    std::vector<PixelOffset> pixel_offsets;  // every camera sample's, drawn in one batch
     std::vector<float> film_x, film_y;       // every pinhole camera sample's film point
     std::vector<float> camera_times;         // every camera sample's time, while the shutter is open
     std::vector<SampleResult> samples;

@@ -1,8 +1,10 @@
 #include "rtpro/render/sampler.h"
 
+#include "rtpro/core/avx2_clones.h"
 #include "rtpro/core/error.h"
 #include "rtpro/core/random.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -55,7 +57,49 @@ StratifiedSampler::StratifiedSampler(int spp, std::uint64_t seed) : grid_(strata
   inv_columns_ = 1.0f / static_cast<float>(grid_.columns);
   inv_rows_ = 1.0f / static_cast<float>(grid_.rows);
   sample_mixes_.resize(static_cast<std::size_t>(spp));
-  for (int s = 0; s < spp; ++s) sample_mixes_[static_cast<std::size_t>(s)] = mix64(static_cast<std::uint64_t>(s));
+  strata_.resize(static_cast<std::size_t>(spp));
+  for (int s = 0; s < spp; ++s) {
+    sample_mixes_[static_cast<std::size_t>(s)] = mix64(static_cast<std::uint64_t>(s));
+    strata_[static_cast<std::size_t>(s)] = {static_cast<float>(s % grid_.columns),
+                                            static_cast<float>(s / grid_.columns)};
+  }
+}
+
+namespace {
+
+constexpr std::size_t kOffsetRun = 64;
+
+// StratifiedSampler::pixel_offsets over keys[0, count), count <= kOffsetRun: the arithmetic of
+// sample_bits and jittered_in_stratum, a step at a time for the whole run. The jitters' 24-bit
+// integers are converted through int32 (exact, as through uint64, and the AVX2 clone has that
+// conversion in vectors).
+RTPRO_AVX2_CLONES
+void pixel_offsets_run(std::uint64_t seed, const SampleKey* keys, std::size_t count, const std::uint64_t* sample_mixes,
+                       const Sample2D* strata, float inv_columns, float inv_rows, PixelOffset* out) {
+  std::uint64_t bits[kOffsetRun], mixes[kOffsetRun];
+  float sx[kOffsetRun], sy[kOffsetRun];
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto s = static_cast<std::size_t>(keys[i].sample_index);
+    bits[i] = keys[i].pixel_key;
+    mixes[i] = sample_mixes[s];
+    sx[i] = strata[s].x;
+    sy[i] = strata[s].y;
+  }
+  for (std::size_t i = 0; i < count; ++i) bits[i] = mix64(mix64(seed ^ mix64(bits[i])) ^ mixes[i]);
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto jitter_x = static_cast<std::int32_t>(bits[i] >> 40);
+    const auto jitter_y = static_cast<std::int32_t>((bits[i] >> 16) & 0xFFFFFFu);
+    out[i] = {(sx[i] + static_cast<float>(jitter_x) * (1.0f / 16777216.0f)) * inv_columns,
+              (sy[i] + static_cast<float>(jitter_y) * (1.0f / 16777216.0f)) * inv_rows};
+  }
+}
+
+}  // namespace
+
+void StratifiedSampler::pixel_offsets(std::span<const SampleKey> keys, std::span<PixelOffset> out) const {
+  for (std::size_t first = 0; first < keys.size(); first += kOffsetRun)
+    pixel_offsets_run(seed_, keys.data() + first, std::min(kOffsetRun, keys.size() - first), sample_mixes_.data(),
+                      strata_.data(), inv_columns_, inv_rows_, out.data() + first);
 }
 
 std::uint64_t StratifiedSampler::sample_bits(std::uint64_t pixel_key, int sample_index) const {
