@@ -3,6 +3,7 @@
 #include "rtpro/core/error.h"
 
 #include <OpenColorIO/OpenColorIO.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -160,13 +161,18 @@ DisplayTransform::DisplayTransform(std::string display, std::string view, std::s
 
 void DisplayTransform::apply(float* rgb, std::size_t pixel_count) const {
   // OpenColorIO converts whatever it is given into scratch RGBA float buffers first: a 1024×1024
-  // image in one call cost 50 MB of peak memory. Bounded chunks keep that to a few hundred KB.
+  // image in one call cost 50 MB of peak memory. Bounded chunks keep that to a few hundred KB a
+  // thread. A CPU processor is immutable and its apply thread-safe, so the chunks go side by side
+  // (each pixel's transform is its own: the result is the same): one thread took 20 ms of a
+  // 1024² PNG's write in the sRGB transfer's powf.
   constexpr std::size_t kChunkPixels = 16384;
-  for (std::size_t first = 0; first < pixel_count; first += kChunkPixels) {
+  const std::size_t chunks = (pixel_count + kChunkPixels - 1) / kChunkPixels;
+  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t chunk) {
+    const std::size_t first = chunk * kChunkPixels;
     const std::size_t count = std::min(kChunkPixels, pixel_count - first);
     OCIO::PackedImageDesc pixels(rgb + 3 * first, static_cast<long>(count), 1, 3);
     processor_->cpu->apply(pixels);
-  }
+  });
 }
 
 }  // namespace rtpro

@@ -100,6 +100,21 @@ TEST(ColorConfig, RawViewLeavesValuesAlone) {
   EXPECT_EQ(std::vector<float>(rgb, rgb + 6), (std::vector<float>{0.1f, 0.5f, 2.0f, -1.0f, 0.0f, 0.25f}));
 }
 
+// An image's pixels are transformed in chunks side by side: each comes out as it does alone, the
+// chunks' seams and the last, short chunk included.
+TEST(ColorConfig, ApplyingToAnImageTransformsEachPixelAsAlone) {
+  for (const char* view : {"Standard", "ACES 1.0 SDR-video"}) {
+    const DisplayTransform transform = ColorConfig::bundled().display_transform("sRGB", view);
+    const std::size_t pixels = 3 * 16384 + 77;
+    std::vector<float> image(3 * pixels);
+    for (std::size_t i = 0; i < image.size(); ++i) image[i] = 0.0003f * static_cast<float>(i % 9973);
+    std::vector<float> alone = image;
+    transform.apply(image.data(), pixels);
+    for (std::size_t p = 0; p < pixels; ++p) transform.apply(&alone[3 * p], 1);
+    for (std::size_t i = 0; i < image.size(); ++i) ASSERT_EQ(image[i], alone[i]) << view << ", value " << i;
+  }
+}
+
 TEST(ColorConfig, UnknownViewListsTheAvailableOnes) {
   const std::string message =
       error_message_of<InputError>([] { ColorConfig::bundled().display_transform("sRGB", "Filmic"); });

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -142,6 +143,37 @@ TEST(PngOutput, PixelsAreTheDisplayEncodingsCodes) {
       ASSERT_TRUE(input->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, codes.data()));
       EXPECT_EQ(codes, expected);
     }
+  }
+}
+
+// A code is the value's rounding to the nearest code, halves away from zero (lround's), also for
+// the floats nearest the halfway points; out-of-range values, infinities and NaN clamp.
+TEST(PngOutput, CodesRoundAsLroundDoes) {
+  std::vector<float> values{0.0f,
+                            1.0f,
+                            -0.0f,
+                            -1.0f,
+                            2.0f,
+                            std::numeric_limits<float>::infinity(),
+                            -std::numeric_limits<float>::infinity(),
+                            std::numeric_limits<float>::quiet_NaN()};
+  for (const float top : {255.0f, 65535.0f})
+    for (int code = 0; code < 256; ++code) {
+      const float half = (static_cast<float>(code) + 0.5f) / top;
+      values.insert(values.end(), {std::nextafter(half, 0.0f), half, std::nextafter(half, 1.0f)});
+    }
+  Image image(static_cast<int>(values.size()), 1, {"R", "G", "B"});
+  for (std::size_t i = 0; i < values.size(); ++i)
+    image.data[3 * i] = image.data[3 * i + 1] = image.data[3 * i + 2] = values[i];
+  ImageWriteOptions options;
+  options.view = "Raw";
+  const DisplayTransform raw = display_encoding(options).transform;
+  const std::vector<std::uint8_t> codes8 = encode_for_display_8bit(image, raw);
+  const std::vector<std::uint16_t> codes16 = encode_for_display_16bit(image, raw);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const float clamped = values[i] > 0.0f ? std::min(values[i], 1.0f) : 0.0f;
+    EXPECT_EQ(codes8[3 * i], std::lround(clamped * 255.0f)) << values[i];
+    EXPECT_EQ(codes16[3 * i], std::lround(clamped * 65535.0f)) << values[i];
   }
 }
 
