@@ -1,21 +1,42 @@
 #include "triangle_backend.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace rtpro {
 
+namespace {
+
+// The checks as branch-free passes, which the compiler vectorises: with a test and a return per
+// element the dragon's 437,645 vertices and 871,414 triangles took 4 ms of one thread before its
+// build. within_traceable_range's finiteness test is in its magnitude test (NaN and ∞ fail it).
+bool all_within_traceable_range(const VertexArray& vertices) {
+  unsigned outside = 0;
+  for (const MeshVertex& v : vertices)
+    outside |= static_cast<unsigned>(!(std::fabs(v.x) < kMaxTraceableMagnitude)) |
+               static_cast<unsigned>(!(std::fabs(v.y) < kMaxTraceableMagnitude)) |
+               static_cast<unsigned>(!(std::fabs(v.z) < kMaxTraceableMagnitude));
+  return outside == 0;
+}
+
+std::uint32_t largest_index(const std::vector<TriangleIndices>& triangles) {
+  std::uint32_t largest = 0;
+  for (const TriangleIndices& t : triangles) largest = std::max(largest, std::max(t.v0, std::max(t.v1, t.v2)));
+  return largest;
+}
+
+}  // namespace
+
 std::optional<std::string> embree_refusal(const TriangleMesh& mesh) {
-  for (const MeshVertex& v : mesh.vertices) {
-    if (!within_traceable_range(v.position())) return "has a vertex outside Embree's coordinate range";
-  }
+  if (!all_within_traceable_range(mesh.vertices)) return "has a vertex outside Embree's coordinate range";
   for (const VertexArray& step : mesh.vertex_steps)
-    for (const MeshVertex& v : step)
-      if (!within_traceable_range(v.position())) return "moves a vertex outside Embree's coordinate range";
+    if (!all_within_traceable_range(step)) return "moves a vertex outside Embree's coordinate range";
   const std::size_t vertex_count = mesh.vertices.size();
-  for (const TriangleIndices& t : mesh.triangles) {
-    if (t.v0 >= vertex_count || t.v1 >= vertex_count || t.v2 >= vertex_count)
-      return "has a triangle index past its " + std::to_string(vertex_count) + " vertices";
-  }
+  if (!mesh.triangles.empty() && largest_index(mesh.triangles) >= vertex_count)
+    return "has a triangle index past its " + std::to_string(vertex_count) + " vertices";
   return std::nullopt;
 }
 

@@ -6,6 +6,7 @@
 
 #include "rtpro/core/error.h"
 #include "rtpro/core/fp_env.h"
+#include "rtpro/core/ray.h"
 #include "rtpro/geometry/sphere_intersect.h"
 #include "test_scenes.h"
 
@@ -13,6 +14,7 @@
 
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -267,9 +269,30 @@ TEST_F(EmbreeBackendTest, GeometryEmbreeWouldDropIsRefused) {
   bad_vertex.vertices[2].y = std::numeric_limits<float>::quiet_NaN();
   EXPECT_THROW(make_backend(BackendKind::kEmbree, scene_with({bad_vertex}), {}), RuntimeError);
 
-  TriangleMesh bad_index = unit_square();
-  bad_index.triangles[1].v2 = 4;
-  EXPECT_THROW(make_backend(BackendKind::kEmbree, scene_with({bad_index}), {}), RuntimeError);
+  for (const float value : {std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(), 1e20f,
+                            -1e20f, kMaxTraceableMagnitude, -kMaxTraceableMagnitude}) {
+    for (int axis = 0; axis < 3; ++axis) {
+      TriangleMesh far_vertex = unit_square();
+      float* xyz[3] = {&far_vertex.vertices.back().x, &far_vertex.vertices.back().y, &far_vertex.vertices.back().z};
+      *xyz[axis] = value;
+      EXPECT_THROW(make_backend(BackendKind::kEmbree, scene_with({far_vertex}), {}), RuntimeError)
+          << value << " on axis " << axis;
+    }
+  }
+
+  for (int corner = 0; corner < 3; ++corner) {
+    TriangleMesh bad_index = unit_square();
+    std::uint32_t* corners[3] = {&bad_index.triangles[1].v0, &bad_index.triangles[1].v1, &bad_index.triangles[1].v2};
+    *corners[corner] = static_cast<std::uint32_t>(bad_index.vertices.size());
+    EXPECT_THROW(make_backend(BackendKind::kEmbree, scene_with({bad_index}), {}), RuntimeError) << corner;
+    *corners[corner] = 0xFFFFFFFFu;
+    EXPECT_THROW(make_backend(BackendKind::kEmbree, scene_with({bad_index}), {}), RuntimeError) << corner;
+  }
+  // The last vertex is a vertex, and the edge of the range is not past it.
+  TriangleMesh last_vertex = unit_square();
+  last_vertex.triangles[0].v0 = static_cast<std::uint32_t>(last_vertex.vertices.size() - 1);
+  last_vertex.vertices.back().x = std::nextafter(kMaxTraceableMagnitude, 0.0f);
+  EXPECT_NO_THROW(make_backend(BackendKind::kEmbree, scene_with({last_vertex}), {}));
 
   EXPECT_THROW(make_backend(BackendKind::kEmbree, scene_with({spheres({{{1e20f, 0, 0}, 1.0f, 0}})}), {}), RuntimeError);
   EXPECT_THROW(make_backend(BackendKind::kEmbree, scene_with({Instance{3, {}, {}}}), {}), RuntimeError);
