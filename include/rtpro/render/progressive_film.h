@@ -4,7 +4,7 @@
 // only when all its tiles are in and every earlier pass is merged, tile by tile in parallel, so a
 // pixel's sums are added in pass order whatever the arrival order, and the sums always hold whole
 // passes: what an interrupt or a time limit shows. The first pass is the exception that costs
-// nothing: it adds to sums of nothing, so its tiles go in as they come.
+// nothing: it adds to sums of nothing, so its tiles are set as they come.
 #include "rtpro/core/huge_page_buffer.h"
 #include "rtpro/image/image.h"
 #include "rtpro/render/film.h"
@@ -71,8 +71,9 @@ class ProgressiveFilm {
     std::vector<TileResult> items;  // by tile; an absent item has no pixels
     std::size_t count = 0;
   };
-  // Adds (or, cumulative, sets) the item's sums: the caller owns the item's pixels.
-  void merge_pixels(const TileResult& item, bool cumulative);
+  // Adds the item's sums to the tile's, or sets them (`set`: a cumulative item, or a first-pass
+  // tile onto sums still zero); the caller owns the item's pixels.
+  void merge_pixels(const TileResult& item, bool set);
   void count_cost(const TileResult& item);  // under the lock
   std::size_t sums_offset(int x, int y) const {
     const PixelRegion& region = grid_.region();

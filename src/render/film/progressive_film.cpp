@@ -17,12 +17,12 @@ ProgressiveFilm::ProgressiveFilm(const TileGrid& grid, const SumLayout& sums)
       first_pass_tiles_(grid.tiles_per_pass(), kTileAbsent), tile_rays_(grid.tiles_per_pass()),
       tile_nan_samples_(grid.tiles_per_pass(), 0) {}
 
-void ProgressiveFilm::merge_pixels(const TileResult& item, bool cumulative) {
+void ProgressiveFilm::merge_pixels(const TileResult& item, bool set) {
   const std::size_t row_floats = static_cast<std::size_t>(item.region.width() * sums_.floats());
   const float* later = item.pixels.data();
   for (int y = item.region.y0; y < item.region.y1; ++y, later += row_floats) {
     float* row = pixels_.data() + sums_offset(item.region.x0, y);
-    if (cumulative) {
+    if (set) {
       std::copy(later, later + row_floats, row);
       continue;
     }
@@ -62,7 +62,10 @@ void ProgressiveFilm::add(TileResult&& item) {
     state = kTileMerging;
     ++first_pass_in_;
     lock.unlock();
-    merge_pixels(item, false);
+    // Set rather than added: the sums there are zero, and adding zero changes no sum (a sum is
+    // never -0, the one value zero plus it changes, as every sum starts from +0), so the film's
+    // rows are written without being read.
+    merge_pixels(item, true);
     lock.lock();
     state = kTileMerged;
     count_cost(item);
