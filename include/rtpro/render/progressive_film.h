@@ -81,12 +81,14 @@ class ProgressiveFilm {
             static_cast<std::size_t>(x - region.x0)) *
            static_cast<std::size_t>(sums_.floats());
   }
-  const float* pixel_sums(int x, int y) const { return pixels_.data() + sums_offset(x, y); }
+  const float* pixel_sums(int x, int y) const { return pixels_.get() + sums_offset(x, y); }
   void merge_ready_passes(std::unique_lock<std::mutex>& lock);
 
   TileGrid grid_;
   SumLayout sums_;
-  std::vector<float, HugePageAllocator<float>> pixels_;  // sums_.floats() a pixel, row-major
+  // sums_.floats() a pixel, row-major; zero as mapped, and populated before any tile is in (the
+  // vector's zeroing was a second pass over it in one thread).
+  HugePageBuffer<float> pixels_;
   mutable std::mutex mutex_;
   std::map<int, WaitingPass> waiting_;
   int merged_ = 0;

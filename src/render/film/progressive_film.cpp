@@ -15,13 +15,15 @@ namespace rtpro {
 ProgressiveFilm::ProgressiveFilm(const TileGrid& grid, const SumLayout& sums)
     : grid_(grid), sums_(sums), pixels_(grid.region().pixel_count() * static_cast<std::size_t>(sums.floats())),
       first_pass_tiles_(grid.tiles_per_pass(), kTileAbsent), tile_rays_(grid.tiles_per_pass()),
-      tile_nan_samples_(grid.tiles_per_pass(), 0) {}
+      tile_nan_samples_(grid.tiles_per_pass(), 0) {
+  pixels_.populate();
+}
 
 void ProgressiveFilm::merge_pixels(const TileResult& item, bool set) {
   const std::size_t row_floats = static_cast<std::size_t>(item.region.width() * sums_.floats());
   const float* later = item.pixels.data();
   for (int y = item.region.y0; y < item.region.y1; ++y, later += row_floats) {
-    float* row = pixels_.data() + sums_offset(item.region.x0, y);
+    float* row = pixels_.get() + sums_offset(item.region.x0, y);
     if (set) {
       std::copy(later, later + row_floats, row);
       continue;
