@@ -87,18 +87,22 @@ void TileRenderer::render_pixels(SampleRange range, const Workspace::TilePixel* 
   const auto key_of_pixel = [&](std::size_t i) {
     return static_cast<std::uint64_t>(pixels[i].y) * image_width + static_cast<std::uint64_t>(pixels[i].x);
   };
+  ws.pixel_keys.resize(pixel_count);
   std::size_t key = 0;
   for (std::size_t i = 0; i < pixel_count; ++i) {
     // Out of the loop by hand: the keys' int stores may alias the pixel coordinates, so the
     // compiler would load them again for every sample.
     const std::uint64_t pixel_key = key_of_pixel(i);
+    ws.pixel_keys[i] = pixel_key;
     for (int s = range.begin; s < range.end; ++s) ws.sample_keys[key++] = {pixel_key, s};
   }
   // Every sample's pixel offset in one batch (the same values as pixel_offset, bit for bit), whose
   // hashes run side by side.
   ws.pixel_offsets.resize(ws.sample_keys.size());
   switch (scene_.render.sampler) {
-    case SamplerKind::kStratified: sampler.pixel_offsets(ws.sample_keys, ws.pixel_offsets); break;
+    case SamplerKind::kStratified:
+      sampler.pixel_offsets(ws.pixel_keys, range.begin, per_pixel, ws.pixel_offsets);
+      break;
     case SamplerKind::kSobol: sobol.sample_2d(ws.sample_keys, sample_dimension::kPixel, ws.pixel_offsets); break;
   }
   const PixelOffset* offsets = ws.pixel_offsets.data();

@@ -45,27 +45,36 @@ TEST(StratifiedSampler, IsAPureFunctionOfSeedPixelAndIndex) {
   EXPECT_NE(a.pixel_offset(99, 0).x, a.pixel_offset(100, 0).x);
 }
 
-TEST(StratifiedSampler, OffsetsOfABatchOfKeysArePixelOffsetBitForBit) {
+TEST(StratifiedSampler, OffsetsOfABatchOfPixelsArePixelOffsetBitForBit) {
   // Square, oblong (8x6), prime (7x1) and single-sample grids; keys near the ends of the range, in
-  // batches longer and shorter than a run of the batch's hashing, samples in any order.
+  // batches longer and shorter than a run of the batch's hashing; one sample of each pixel, all
+  // of them, and a pass's share starting past the first.
   for (const int spp : {1, 7, 16, 48, 64, 100}) {
     for (const std::uint64_t seed : {0ull, 12345ull}) {
       const StratifiedSampler sampler(spp, seed);
-      std::vector<SampleKey> keys;
-      for (const std::uint64_t pixel : {0ull, 1ull, 640ull * 480ull - 1ull, ~0ull, 0x123456789abcdefull})
-        for (int s = spp - 1; s >= 0; --s) keys.push_back({pixel, s});
-      for (const std::size_t count : {keys.size(), std::size_t{1}, std::size_t{63}, std::size_t{65}}) {
-        const std::span<const SampleKey> batch(keys.data(), std::min(count, keys.size()));
-        std::vector<PixelOffset> offsets(batch.size());
-        sampler.pixel_offsets(batch, offsets);
-        for (std::size_t i = 0; i < batch.size(); ++i) {
-          const PixelOffset one = sampler.pixel_offset(batch[i].pixel_key, batch[i].sample_index);
-          ASSERT_EQ(std::bit_cast<std::uint32_t>(offsets[i].x), std::bit_cast<std::uint32_t>(one.x))
-              << "spp " << spp << " key " << i;
-          ASSERT_EQ(std::bit_cast<std::uint32_t>(offsets[i].y), std::bit_cast<std::uint32_t>(one.y))
-              << "spp " << spp << " key " << i;
+      std::vector<std::uint64_t> pixels;
+      for (std::uint64_t i = 0; i < 70; ++i) pixels.push_back(i * 0x9e3779b97f4a7c15ull);
+      for (const std::uint64_t pixel : {0ull, 1ull, 640ull * 480ull - 1ull, ~0ull}) pixels.push_back(pixel);
+      struct Samples {
+        int first, count;
+      };
+      for (const Samples samples :
+           {Samples{0, 1}, Samples{spp - 1, 1}, Samples{0, spp}, Samples{spp / 2, spp - spp / 2}})
+        for (const std::size_t count : {pixels.size(), std::size_t{1}, std::size_t{64}, std::size_t{65}}) {
+          const std::span<const std::uint64_t> batch(pixels.data(), count);
+          std::vector<PixelOffset> offsets(batch.size() * static_cast<std::size_t>(samples.count));
+          sampler.pixel_offsets(batch, samples.first, samples.count, offsets);
+          for (std::size_t i = 0; i < batch.size(); ++i)
+            for (int k = 0; k < samples.count; ++k) {
+              const PixelOffset one = sampler.pixel_offset(batch[i], samples.first + k);
+              const PixelOffset& many =
+                  offsets[i * static_cast<std::size_t>(samples.count) + static_cast<std::size_t>(k)];
+              ASSERT_EQ(std::bit_cast<std::uint32_t>(many.x), std::bit_cast<std::uint32_t>(one.x))
+                  << "spp " << spp << " pixel " << i << " sample " << samples.first + k;
+              ASSERT_EQ(std::bit_cast<std::uint32_t>(many.y), std::bit_cast<std::uint32_t>(one.y))
+                  << "spp " << spp << " pixel " << i << " sample " << samples.first + k;
+            }
         }
-      }
     }
   }
 }

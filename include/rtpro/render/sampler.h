@@ -47,11 +47,13 @@ class StratifiedSampler {
   // `pixel_key` identifies the pixel in the full image (y·width + x). Dimensions 0–1.
   PixelOffset pixel_offset(std::uint64_t pixel_key, int sample_index) const;
 
-  // pixel_offset(keys[i].pixel_key, keys[i].sample_index) into out[i] (out.size() == keys.size(),
-  // every sample index in [0, samples_per_pixel())), bit for bit. Worked in runs of keys, each step
-  // for every key of the run before the next, so that the AVX2 clone hashes four keys at a time
-  // (one at a time, a 1-spp frame's three mixes a key were a tenth of its instructions).
-  void pixel_offsets(std::span<const SampleKey> keys, std::span<PixelOffset> out) const;
+  // pixel_offset(pixel_keys[i], first_sample + k) into out[i · samples + k], for k in [0, samples)
+  // (out.size() == pixel_keys.size() · samples; the samples within [0, samples_per_pixel())), bit
+  // for bit. Worked in runs of pixels, each step for the whole run before the next, so that the
+  // AVX2 clone hashes four pixels or samples at a time (one at a time, a 1-spp frame's three mixes
+  // a sample were a tenth of its instructions).
+  void pixel_offsets(std::span<const std::uint64_t> pixel_keys, int first_sample, int samples,
+                     std::span<PixelOffset> out) const;
 
   // The 2D value of dimension pair (dimension, dimension + 1) for this sample; dimension is even
   // and at least 2.

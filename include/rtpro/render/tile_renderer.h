@@ -28,6 +28,7 @@ class TileRenderer {
     Workspace& operator=(Workspace&&) noexcept;
     std::vector<Ray> camera_rays;
     std::vector<SampleKey> sample_keys;
+    std::vector<std::uint64_t> pixel_keys;   // every listed pixel's, y · width + x
     std::vector<PixelOffset> pixel_offsets;  // every camera sample's, drawn in one batch
     std::vector<float> film_x, film_y;       // every pinhole camera sample's film point
     std::vector<float> camera_times;         // every camera sample's time, while the shutter is open

@@ -69,37 +69,50 @@ namespace {
 
 constexpr std::size_t kOffsetRun = 64;
 
-// StratifiedSampler::pixel_offsets over keys[0, count), count <= kOffsetRun: the arithmetic of
-// sample_bits and jittered_in_stratum, a step at a time for the whole run. The jitters' 24-bit
-// integers are converted through int32 (exact, as through uint64, and the AVX2 clone has that
-// conversion in vectors).
+// The offset of a sample whose hash is `bits`, in stratum (sx, sy): jittered_in_stratum, with the
+// jitters' 24-bit integers converted through int32 (exact, as through uint64, and the AVX2 clone
+// has that conversion in vectors).
+inline PixelOffset offset_of(std::uint64_t bits, const Sample2D& stratum, float inv_columns, float inv_rows) {
+  const auto jitter_x = static_cast<std::int32_t>(bits >> 40);
+  const auto jitter_y = static_cast<std::int32_t>((bits >> 16) & 0xFFFFFFu);
+  return {(stratum.x + static_cast<float>(jitter_x) * (1.0f / 16777216.0f)) * inv_columns,
+          (stratum.y + static_cast<float>(jitter_y) * (1.0f / 16777216.0f)) * inv_rows};
+}
+
+// StratifiedSampler::pixel_offsets for pixels[0, count), count <= kOffsetRun, samples
+// [first_sample, first_sample + samples) of each: the arithmetic of sample_bits, a step at a time
+// for the whole run, each pixel's own hash once (a key's two mixes of three), each sample's one mix
+// across the pixels at one sample a pixel, across the samples at more.
 RTPRO_AVX2_CLONES
-void pixel_offsets_run(std::uint64_t seed, const SampleKey* keys, std::size_t count, const std::uint64_t* sample_mixes,
-                       const Sample2D* strata, float inv_columns, float inv_rows, PixelOffset* out) {
-  std::uint64_t bits[kOffsetRun], mixes[kOffsetRun];
-  float sx[kOffsetRun], sy[kOffsetRun];
-  for (std::size_t i = 0; i < count; ++i) {
-    const auto s = static_cast<std::size_t>(keys[i].sample_index);
-    bits[i] = keys[i].pixel_key;
-    mixes[i] = sample_mixes[s];
-    sx[i] = strata[s].x;
-    sy[i] = strata[s].y;
+void pixel_offsets_run(std::uint64_t seed, const std::uint64_t* pixels, std::size_t count, int first_sample,
+                       int samples, const std::uint64_t* sample_mixes, const Sample2D* strata, float inv_columns,
+                       float inv_rows, PixelOffset* out) {
+  std::uint64_t pixel_bits[kOffsetRun];
+  for (std::size_t i = 0; i < count; ++i) pixel_bits[i] = mix64(seed ^ mix64(pixels[i]));
+  const std::uint64_t* mixes = sample_mixes + first_sample;
+  const Sample2D* sample_strata = strata + first_sample;
+  if (samples == 1) {
+    for (std::size_t i = 0; i < count; ++i) pixel_bits[i] = mix64(pixel_bits[i] ^ mixes[0]);
+    for (std::size_t i = 0; i < count; ++i) out[i] = offset_of(pixel_bits[i], sample_strata[0], inv_columns, inv_rows);
+    return;
   }
-  for (std::size_t i = 0; i < count; ++i) bits[i] = mix64(mix64(seed ^ mix64(bits[i])) ^ mixes[i]);
+  const auto per_pixel = static_cast<std::size_t>(samples);
   for (std::size_t i = 0; i < count; ++i) {
-    const auto jitter_x = static_cast<std::int32_t>(bits[i] >> 40);
-    const auto jitter_y = static_cast<std::int32_t>((bits[i] >> 16) & 0xFFFFFFu);
-    out[i] = {(sx[i] + static_cast<float>(jitter_x) * (1.0f / 16777216.0f)) * inv_columns,
-              (sy[i] + static_cast<float>(jitter_y) * (1.0f / 16777216.0f)) * inv_rows};
+    PixelOffset* pixel_out = out + i * per_pixel;
+    for (std::size_t k = 0; k < per_pixel; ++k)
+      pixel_out[k] = offset_of(mix64(pixel_bits[i] ^ mixes[k]), sample_strata[k], inv_columns, inv_rows);
   }
 }
 
 }  // namespace
 
-void StratifiedSampler::pixel_offsets(std::span<const SampleKey> keys, std::span<PixelOffset> out) const {
-  for (std::size_t first = 0; first < keys.size(); first += kOffsetRun)
-    pixel_offsets_run(seed_, keys.data() + first, std::min(kOffsetRun, keys.size() - first), sample_mixes_.data(),
-                      strata_.data(), inv_columns_, inv_rows_, out.data() + first);
+void StratifiedSampler::pixel_offsets(std::span<const std::uint64_t> pixel_keys, int first_sample, int samples,
+                                      std::span<PixelOffset> out) const {
+  const auto per_pixel = static_cast<std::size_t>(samples);
+  for (std::size_t first = 0; first < pixel_keys.size(); first += kOffsetRun)
+    pixel_offsets_run(seed_, pixel_keys.data() + first, std::min(kOffsetRun, pixel_keys.size() - first), first_sample,
+                      samples, sample_mixes_.data(), strata_.data(), inv_columns_, inv_rows_,
+                      out.data() + first * per_pixel);
 }
 
 std::uint64_t StratifiedSampler::sample_bits(std::uint64_t pixel_key, int sample_index) const {
