@@ -1,6 +1,7 @@
 #include "rtpro/render/sampler.h"
 
 #include "rtpro/core/error.h"
+#include "rtpro/core/random.h"
 
 #include <gtest/gtest.h>
 
@@ -43,6 +44,26 @@ TEST(StratifiedSampler, IsAPureFunctionOfSeedPixelAndIndex) {
   EXPECT_GT(differing, 12);
   // Neighbouring pixels are jittered independently.
   EXPECT_NE(a.pixel_offset(99, 0).x, a.pixel_offset(100, 0).x);
+}
+
+// The offset's definition, written out with the hashes of core/random.h, so that the batch's
+// arithmetic (which pixel_offset shares) is checked against something other than itself.
+TEST(StratifiedSampler, PixelOffsetIsItsStratumJitteredByTheSamplesHash) {
+  for (const int spp : {1, 6, 16, 7}) {
+    const StratifiedSampler sampler(spp, 99);
+    const StrataGrid grid = sampler.grid();
+    for (const std::uint64_t pixel : {0ull, 777ull, ~0ull})
+      for (int s = 0; s < spp; ++s) {
+        const std::uint64_t bits = hash_combine(hash_combine(99, pixel), static_cast<std::uint64_t>(s));
+        const float x =
+            (static_cast<float>(s % grid.columns) + to_unit_float(bits)) * (1.0f / static_cast<float>(grid.columns));
+        const float y =
+            (static_cast<float>(s / grid.columns) + to_unit_float(bits << 24)) * (1.0f / static_cast<float>(grid.rows));
+        const PixelOffset o = sampler.pixel_offset(pixel, s);
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(o.x), std::bit_cast<std::uint32_t>(x)) << spp << " " << s;
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(o.y), std::bit_cast<std::uint32_t>(y)) << spp << " " << s;
+      }
+  }
 }
 
 TEST(StratifiedSampler, OffsetsOfABatchOfPixelsArePixelOffsetBitForBit) {

@@ -47,11 +47,10 @@ class HugePageBuffer {
   T& operator[](std::size_t i) const { return data_[i]; }
   std::size_t size() const { return count_; }
 
-  // Faults every page in now, on this thread, still zero: a buffer that several threads go on to
-  // write side by side would otherwise take its first faults in all of them, and two threads
-  // faulting the same 2 MiB page each zero one, of which the kernel keeps one (a film's 16 MB
-  // cost a 1-spp frame's tiles 6 ms that way).
-  // The pages of the elements only, not the mapping's rounding to whole huge pages.
+  // Faults the elements' pages in now (not the mapping's rounding to whole huge pages), on this
+  // thread, still zero: a buffer that several threads go on to write side by side would otherwise
+  // take its first faults in all of them, and two threads faulting the same 2 MiB page each zero
+  // one, of which the kernel keeps one (a film's 16 MB cost a 1-spp frame's tiles 6 ms that way).
   void populate() const {
     const std::size_t used = (count_ * sizeof(T) + 4095) / 4096 * 4096;
     if (used == 0) return;

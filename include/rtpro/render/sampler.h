@@ -44,7 +44,9 @@ class StratifiedSampler {
   int samples_per_pixel() const { return grid_.columns * grid_.rows; }
   StrataGrid grid() const { return grid_; }
 
-  // `pixel_key` identifies the pixel in the full image (y·width + x). Dimensions 0–1.
+  // `pixel_key` identifies the pixel in the full image (y·width + x); sample_index is in
+  // [0, samples_per_pixel()). Dimensions 0–1: stratum (s mod columns, s div columns) jittered by
+  // the top 24 bits of hash_combine(hash_combine(seed, pixel_key), s) (x) and the next 24 (y).
   PixelOffset pixel_offset(std::uint64_t pixel_key, int sample_index) const;
 
   // pixel_offset(pixel_keys[i], first_sample + k) into out[i · samples + k], for k in [0, samples)
@@ -88,8 +90,6 @@ class StratifiedSampler {
   };
   PermutedSample permuted(std::uint64_t pixel_key, int sample_index, int dimension) const;
   std::uint64_t sample_bits(std::uint64_t pixel_key, int sample_index) const;
-  // Stratum (sx, sy) of the pixel grid, jittered by the top bits of `bits` (x) and the next (y).
-  PixelOffset jittered_in_stratum(std::uint64_t bits, int sx, int sy) const;
 
   StrataGrid grid_;
   float inv_columns_, inv_rows_;
@@ -100,12 +100,6 @@ class StratifiedSampler {
   // Sample s's stratum (s mod columns, s div columns), as floats: no division per key.
   std::vector<Sample2D> strata_;
 };
-
-inline PixelOffset StratifiedSampler::jittered_in_stratum(std::uint64_t bits, int sx, int sy) const {
-  // (s + jitter) / n stays below 1 because jitter <= 1 − 2⁻²⁴.
-  return {(static_cast<float>(sx) + to_unit_float(bits)) * inv_columns_,
-          (static_cast<float>(sy) + to_unit_float(bits << 24)) * inv_rows_};
-}
 
 // Element `index` of a pseudo-random permutation of [0, count) chosen by `key` (Kensler's
 // hash-based cycle walking): a bijection for every key, computed without storing the permutation.

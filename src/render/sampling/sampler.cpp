@@ -69,9 +69,10 @@ namespace {
 
 constexpr std::size_t kOffsetRun = 64;
 
-// The offset of a sample whose hash is `bits`, in stratum (sx, sy): jittered_in_stratum, with the
-// jitters' 24-bit integers converted through int32 (exact, as through uint64, and the AVX2 clone
-// has that conversion in vectors).
+// The offset of a sample whose hash is `bits` in `stratum` of the pixel's grid, jittered by the
+// hash's top 24 bits (x) and the next 24 (y): to_unit_float's values, the integers converted
+// through int32 (exact, as through uint64, and the AVX2 clone has that conversion in vectors).
+// (s + jitter) / n stays below 1 because jitter <= 1 − 2⁻²⁴.
 inline PixelOffset offset_of(std::uint64_t bits, const Sample2D& stratum, float inv_columns, float inv_rows) {
   const auto jitter_x = static_cast<std::int32_t>(bits >> 40);
   const auto jitter_y = static_cast<std::int32_t>((bits >> 16) & 0xFFFFFFu);
@@ -120,8 +121,8 @@ std::uint64_t StratifiedSampler::sample_bits(std::uint64_t pixel_key, int sample
 }
 
 PixelOffset StratifiedSampler::pixel_offset(std::uint64_t pixel_key, int sample_index) const {
-  return jittered_in_stratum(sample_bits(pixel_key, sample_index), sample_index % grid_.columns,
-                             sample_index / grid_.columns);
+  return offset_of(sample_bits(pixel_key, sample_index), strata_[static_cast<std::size_t>(sample_index)], inv_columns_,
+                   inv_rows_);
 }
 
 StratifiedSampler::PermutedSample StratifiedSampler::permuted(std::uint64_t pixel_key, int sample_index,
