@@ -171,6 +171,21 @@ if have_viewer:
             rate = spread([s["rays"]["camera"] / s["seconds"]["render"] / 1e6 for s in stats])
             ratios.append(f"{spp} spp {rate[0] / viewer_rate:.2f}x ({rate[1] / viewer_rate:.2f}-{rate[2] / viewer_rate:.2f})")
         print(f"  primary / viewer by samples per pixel, {backend}: " + ", ".join(ratios))
+    # The render phase as a line in the samples per pixel (least squares over the three frames):
+    # what a frame costs whatever its samples (film, tiles, output image, and the camera rays'
+    # first, least coherent pass through the BVH) and what each further sample a pixel adds.
+    print(f"  render phase = per frame + per sample a pixel, ms (the viewer's frame: {1048576 / viewer_rate / 1e3:.1f} ms):",
+          end="")
+    for backend in ("embree", "native"):
+        points = []
+        for spp in (1, 4, 16):
+            suffix = "" if spp == 4 else f"-spp{spp}"
+            points += [(spp, json.load(open(f"{out}/frame-primary-{backend}{suffix}-{run}.json"))["seconds"]["render"] * 1e3)
+                       for run in range(1, runs + 1)]
+        mean_n = statistics.mean(n for n, _ in points)
+        mean_t = statistics.mean(t for _, t in points)
+        slope = (sum((n - mean_n) * (t - mean_t) for n, t in points) / sum((n - mean_n) ** 2 for n, _ in points))
+        print(f" {backend} {mean_t - slope * mean_n:.1f} + {slope:.1f}", end=";" if backend == "embree" else "\n")
 against_peer(have_pathtracer, "pathtracer", "Embree pathtracer --max-path-length 1", "Msamples/s", "primary_shadow",
              "primary + shadow / pathtracer")
 
