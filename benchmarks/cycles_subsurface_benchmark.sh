@@ -62,7 +62,7 @@ cycles() {  # NAME SPP THREADS SEED: $out/NAME-METHOD.exr for each method, the l
   for method in $methods; do keep_rgb "$1-$method"; done
 }
 rtpro() {  # NAME METHOD SPP THREADS SEED: $out/NAME-METHOD.exr, its seconds in $out/NAME-METHOD.seconds
-  /usr/bin/time -f "%e %U %S" -o "$out/$1-$2.seconds" "$build/rtpro" render "$out/$2.yaml" -o "$out/$1-$2.exr" \
+  /usr/bin/time -f "%e %U %S" -o "$out/$1-$2.seconds" "${pin[@]}" "$build/rtpro" render "$out/$2.yaml" -o "$out/$1-$2.exr" \
     --spp "$3" --backend "$backend" --threads "$4" --quiet --no-journal --set render.seed="$5"
 }
 
@@ -70,12 +70,14 @@ echo "references: ${size}x$size, $ref_spp spp ..." >&2
 cycles cycles-reference "$ref_spp" "$t_last" 1000
 for method in $methods; do rtpro rtpro-reference "$method" "$ref_spp" "$t_last" 1000; done
 for t in $threads; do
+  pin_for "$t"  # one-thread runs of both on one CPU
   for r in $(seq "$runs"); do
     cut -d' ' -f1 /proc/loadavg >"$out/load-t$t-r$r.cycles"
     cycles "cycles-t$t-r$r" "$spp" "$t" "$r"
     cut -d' ' -f1 /proc/loadavg >"$out/load-t$t-r$r.rtpro"
     for method in $methods; do rtpro "rtpro-t$t-r$r" "$method" "$spp" "$t" "$r"; done
   done
+  pin_for "$t_last"  # the equal-time runs are on the most threads
   for method in $methods; do
     # Equal time: the spp Cycles' median time buys at rtpro's median speed.
     equal_spp=$(python3 -c "

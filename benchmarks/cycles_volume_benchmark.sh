@@ -32,7 +32,7 @@ cycles() {  # NAME SPP LOG THREADS SEED: $out/NAME.exr
   render_with_cycles render_volume.py "$vdb" "$1" "$3" "$size" "$size" "$2" "$max_depth" "$4" "$5" "$hdri"
 }
 rtpro() {  # NAME SPP THREADS SEED: $out/NAME.exr, its seconds in $out/NAME.seconds
-  /usr/bin/time -f "%e" -o "$out/$1.seconds" "$build/rtpro" render "${smoke[@]}" -o "$out/$1.exr" --spp "$2" \
+  /usr/bin/time -f "%e" -o "$out/$1.seconds" "${pin[@]}" "$build/rtpro" render "${smoke[@]}" -o "$out/$1.exr" --spp "$2" \
     --threads "$3" --quiet --no-journal --set render.seed="$4"
 }
 
@@ -41,6 +41,7 @@ echo "references: ${size}x$size, $ref_spp spp ..." >&2
 cycles cycles-reference "$ref_spp" "$out/cycles-reference.log" "$t_last" 1000
 rtpro rtpro-reference "$ref_spp" "$t_last" 1000
 for t in $threads; do
+  pin_for "$t"  # one-thread runs of both on one CPU
   for r in $(seq "$runs"); do
     cut -d' ' -f1 /proc/loadavg >"$out/load-t$t-r$r.cycles"
     cycles "cycles-t$t-r$r" "$spp" "$out/cycles-t$t-r$r.log" "$t" "$r"
@@ -55,6 +56,7 @@ c = statistics.median(float(re.search(r'cycles_render_seconds ([\d.]+)', open(f'
 p = statistics.median(float(open(f'{out}/rtpro-t{t}-r{r}.seconds').read().split()[-1]) for r in range(1, runs + 1))
 print(max(1, round(spp * c / p)))")
   echo "$equal_spp" >"$out/equal-spp-t$t"
+  pin_for "$t_last"
   for r in $(seq "$runs"); do rtpro "rtpro-equal-t$t-r$r" "$equal_spp" "$t_last" "$r"; done
 done
 compare_each "$out/cycles-reference.exr" "$out"/cycles-t*.exr

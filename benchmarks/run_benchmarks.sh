@@ -2,13 +2,12 @@
 # Measures both backends side by side in one run and prints a table: BVH build time, primary-ray
 # and whole-render Mrays/s (Google Benchmark, Release build), plus end-to-end time and peak RSS of
 # `rtpro render` per scene. Usage: benchmarks/run_benchmarks.sh [scene.yaml ...]
+# RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-build="$root/build-release"
+source "$(dirname "$0")/release_tree.sh"
 out="$build/benchmark-results"
 
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTPRO_BUILD_TESTS=OFF >/dev/null
-cmake --build "$build" --target rtpro rtpro_backend_benchmark >/dev/null
+build_release rtpro rtpro_backend_benchmark
 mkdir -p "$out"
 
 if [ $# -gt 0 ]; then
@@ -23,8 +22,11 @@ RTPRO_BENCH_SCENES=$(IFS=:; echo "${scenes[*]}") \
 for scene in "${scenes[@]}"; do
   name=$(basename "$scene" .yaml)
   for backend in native embree; do
+    # A failed render must not leave an earlier run's figures to be reported as its own.
+    rm -f "$out/$name-$backend.rss" "$out/$name-$backend.json"
     /usr/bin/time -f "%M" -o "$out/$name-$backend.rss" "$build/rtpro" render "$scene" -o "$out/$name-$backend.exr" \
-      --backend "$backend" --quiet --stats-json "$out/$name-$backend.json" || echo "render of $name with $backend failed"
+      --backend "$backend" --quiet --stats-json "$out/$name-$backend.json" ||
+      { echo "render of $name with $backend failed" >&2; rm -f "$out/$name-$backend.rss" "$out/$name-$backend.json"; }
   done
 done
 

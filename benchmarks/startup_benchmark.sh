@@ -43,11 +43,11 @@ done
 python3 - "$out" "$runs" "${binaries[@]}" <<'PY'
 import statistics, sys, pathlib
 out, runs, binaries = pathlib.Path(sys.argv[1]), sys.argv[2], sys.argv[3:]
-print(f"median [min-max] of {runs} interleaved runs; wall seconds, peak RSS MB")
+print(f"median [min-max] of {runs} interleaved runs; wall seconds, peak RSS MiB")
 for name in ("version", "info", "input-error", "render-64x48-png", "render-64x48-tif"):
     for b, binary in enumerate(binaries):
         rows = [l.split() for l in (out / f"{name}.{b}").read_text().splitlines() if l[:1].isdigit()]
         t = [float(r[0]) for r in rows]; m = [int(r[1]) / 1024 for r in rows]
         print(f"{name:18s} {statistics.median(t):5.2f} s [{min(t):.2f}-{max(t):.2f}]  "
-              f"{statistics.median(m):6.1f} MB [{min(m):.0f}-{max(m):.0f}]  {binary}")
+              f"{statistics.median(m):6.1f} MiB [{min(m):.0f}-{max(m):.0f}]  {binary}")
 PY

@@ -39,7 +39,8 @@ rel_mse() {  # IMAGE: relMSE of its R,G,B against the reference
 cycles_times=()
 cycles_errors=()
 for r in $(seq "$runs"); do
-  cycles "cycles-$r" "$cycles_spp"
+  # A seed a run (the reference has 1), so that the runs' relMSE is a spread of noise, not one image.
+  RTPRO_CYCLES_SEED=$((r + 1)) cycles "cycles-$r" "$cycles_spp"
   cycles_times+=("$(sed -n 's/.*cycles_render_seconds \([0-9.]*\).*/\1/p' "$out/cycles-$r.log")")
   cycles_errors+=("$(rel_mse "$out/cycles-$r.exr")")
 done
