@@ -5,7 +5,8 @@
 # uniform one given the adaptive render's own time (--time-limit: whole passes, every pixel alike),
 # both against a long reference (4·MAX_SPP spp), as relMSE (rtpro compare: mean of
 # (x − ref)² / (ref² + 0.01) over pixels and channels). Runs are interleaved, ROUNDS times with
-# different seeds; the medians are printed.
+# different seeds; printed per scene: each strategy's median relMSE (the lower middle one for an
+# even ROUNDS) beside every round's, the adaptive renders' seconds, and uniform ÷ adaptive.
 #
 #   benchmarks/adaptive_sampling_benchmark.sh RTPRO WORKDIR [MAX_SPP] [ROUNDS] [THRESHOLD] [METRIC]
 #

@@ -1,6 +1,7 @@
 #!/bin/sh
-# Measures `rtpro denoise` (a benchmark of quality and time) the way docs/usage.md ("Denoising") reports it: for each scene, relMSE
-# against a long reference of the noisy 16-spp image, the denoised one and the noisy 128-spp one.
+# Measures `rtpro denoise` (a benchmark of quality and time): for each scene, relMSE against a long
+# reference of the noisy 16-spp image, the denoised one and the noisy 128-spp one, the columns of
+# docs/usage.md's "Denoising" table that need no other render.
 #
 #   benchmarks/denoiser_benchmark.sh RTPRO WORKDIR
 #

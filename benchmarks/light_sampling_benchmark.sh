@@ -7,8 +7,9 @@
 #     REF_SPP spp with MIS, and the REF_SPP-spp means of the two strategies;
 #   many lights: 10,000 small emissive spheres (powers over three decades) over a ground with a
 #     few objects, the light tree against picking by power, at equal time: the tree at LIGHTS_SPP
-#     spp, power at the spp that takes the same time (its time per spp measured first).
-# Usage: benchmarks/light_sampling_benchmark.sh [--runs N] [--threads "2"]
+#     spp, power at the spp that takes the same time (each one's time at LIGHTS_SPP measured
+#     first, as whole processes, the scene's load included); reference: the tree at REF_SPP/4 spp.
+# Usage: benchmarks/light_sampling_benchmark.sh [--runs N] [--threads "2"]   (the last count given)
 #   SIZE=160 ENV_SPP=16 LIGHTS_SPP=16 REF_SPP=4096 pick the work; RTPRO_BUILD_DIR=DIR an existing
 #   Release tree.
 set -euo pipefail
