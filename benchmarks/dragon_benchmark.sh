@@ -163,12 +163,13 @@ def against_peer(present, log, peer, unit, frame, label):
 against_peer(have_viewer, "viewer", "Embree viewer --shader eyelight", "Mrays/s", "primary", "primary / viewer")
 if have_viewer:
     viewer_rate = benchmark_values("viewer", "BENCHMARK_RENDER_MRAYPS_AVG")[0]
+    primary_frames = {(backend, spp): [json.load(open(f"{out}/frame-primary-{backend}{'' if spp == 4 else f'-spp{spp}'}-{run}.json"))
+                                       for run in range(1, runs + 1)]
+                      for backend in ("embree", "native") for spp in (1, 4, 16)}
     for backend in ("embree", "native"):
         ratios = []
         for spp in (1, 4, 16):
-            suffix = "" if spp == 4 else f"-spp{spp}"
-            stats = [json.load(open(f"{out}/frame-primary-{backend}{suffix}-{run}.json")) for run in range(1, runs + 1)]
-            rate = spread([s["rays"]["camera"] / s["seconds"]["render"] / 1e6 for s in stats])
+            rate = spread([s["rays"]["camera"] / s["seconds"]["render"] / 1e6 for s in primary_frames[backend, spp]])
             ratios.append(f"{spp} spp {rate[0] / viewer_rate:.2f}x ({rate[1] / viewer_rate:.2f}-{rate[2] / viewer_rate:.2f})")
         print(f"  primary / viewer by samples per pixel, {backend}: " + ", ".join(ratios))
     # The render phase as a line in the samples per pixel (least squares over the three frames):
@@ -177,11 +178,7 @@ if have_viewer:
     print(f"  render phase = per frame + per sample a pixel, ms (the viewer's frame: {1048576 / viewer_rate / 1e3:.1f} ms):",
           end="")
     for backend in ("embree", "native"):
-        points = []
-        for spp in (1, 4, 16):
-            suffix = "" if spp == 4 else f"-spp{spp}"
-            points += [(spp, json.load(open(f"{out}/frame-primary-{backend}{suffix}-{run}.json"))["seconds"]["render"] * 1e3)
-                       for run in range(1, runs + 1)]
+        points = [(spp, s["seconds"]["render"] * 1e3) for spp in (1, 4, 16) for s in primary_frames[backend, spp]]
         mean_n = statistics.mean(n for n, _ in points)
         mean_t = statistics.mean(t for _, t in points)
         slope = (sum((n - mean_n) * (t - mean_t) for n, t in points) / sum((n - mean_n) ** 2 for n, _ in points))
