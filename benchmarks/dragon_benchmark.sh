@@ -3,14 +3,16 @@
 # OBJ load time (rtpro vs tinyobjloader), BVH build per backend, Mrays/s for primary and
 # primary + shadow rays at 1024×1024, time to first image of the whole process, peak RSS and bytes
 # per triangle (also with the lean memory settings), and Embree's own `viewer` (Debian package embree-tools) on the same model and
-# camera when it is installed. Usage: benchmarks/dragon_benchmark.sh
-#   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/;
-#   RTPRO_BENCH_RUNS=N repeats the whole-process runs N times, interleaved (default 3).
+# camera when it is installed. Usage: benchmarks/dragon_benchmark.sh [--runs N] [--threads T]
+#   --runs N (or RTPRO_BENCH_RUNS=N) repeats the whole-process runs N times, interleaved (default 3);
+#   --threads T (or RTPRO_BENCH_THREADS=T) renders on T threads (default every core);
+#   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
 set -euo pipefail
-source "$(dirname "$0")/release_tree.sh"
+default_runs=${RTPRO_BENCH_RUNS:-3}
+default_threads=${RTPRO_BENCH_THREADS:-$(nproc)}
+source "$(dirname "$0")/options.sh"
+single_thread_count
 out="$build/benchmark-results/dragon"
-threads=${RTPRO_BENCH_THREADS:-$(nproc)}
-runs=${RTPRO_BENCH_RUNS:-3}
 
 "$root/scripts/fetch-dragon.sh" >/dev/null
 build_release rtpro rtpro_backend_benchmark rtpro_mesh_load_benchmark

@@ -12,16 +12,18 @@
 # Reported: seconds.render (median over the runs, and its spread), the ratio blurred / static,
 # CPU seconds of the whole process, and memory: the --stats-json geometry and acceleration bytes
 # and the peak RSS, each as bytes per triangle more than the static frame's.
-# Usage: benchmarks/motion_cost_benchmark.sh
+# Usage: benchmarks/motion_cost_benchmark.sh [--runs N] [--threads T]
+#   --runs N (or RTPRO_BENCH_RUNS=N) repeats every render N times, interleaved (default 3);
+#   --threads T (or RTPRO_BENCH_THREADS=T) renders on T threads (default every core);
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/;
-#   RTPRO_BENCH_RUNS=N repeats every render N times, interleaved (default 3);
 #   RTPRO_BENCH_SIZE=WxH, RTPRO_BENCH_SPP=N (default 480x360, 4 spp);
 #   RTPRO_BENCH_INTEGRATORS="whitted path" (default both).
 set -euo pipefail
-source "$(dirname "$0")/release_tree.sh"
+default_runs=${RTPRO_BENCH_RUNS:-3}
+default_threads=${RTPRO_BENCH_THREADS:-$(nproc)}
+source "$(dirname "$0")/options.sh"
+single_thread_count
 out="$build/benchmark-results/motion_cost"
-threads=${RTPRO_BENCH_THREADS:-$(nproc)}
-runs=${RTPRO_BENCH_RUNS:-3}
 size=${RTPRO_BENCH_SIZE:-480x360}
 spp=${RTPRO_BENCH_SPP:-4}
 integrators=${RTPRO_BENCH_INTEGRATORS:-whitted path}

@@ -4,13 +4,14 @@
 # to PNG (written through libpng) and to TIFF (through OpenImageIO, which the render then loads),
 # as the median and range of N runs. With other rtpro binaries given (e.g. one built from
 # an older commit), every binary runs each command in turn, interleaved, so a busy machine affects
-# all of them alike. Usage: benchmarks/startup_benchmark.sh [-n N] [OTHER_RTPRO ...]
+# all of them alike. Usage: benchmarks/startup_benchmark.sh [--runs N] [OTHER_RTPRO ...] (-n N too)
 # (RTPRO_BUILD_DIR: use that build folder instead of build-release.)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="${RTPRO_BUILD_DIR:-$root/build-release}"
 runs=10
-if [ "${1:-}" = "-n" ]; then runs=$2; shift 2; fi
+case "${1:-}" in -n | --runs) runs=$2; shift 2 ;; esac
+[[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "$0: --runs takes a positive count, not '$runs'" >&2; exit 2; }
 
 # An existing build folder (RTPRO_BUILD_DIR) keeps its own settings; only a new one is configured.
 if [ ! -f "$build/CMakeCache.txt" ]; then

@@ -7,8 +7,9 @@
 # (relmse metric) under time limits of FRACTIONS of Cycles' median time, each timed as a whole
 # process (load, BVH, render, denoise, write). Reported: Cycles' time and relMSE, and for each
 # rtpro run its time, the ratio to Cycles' time and its relMSE; the first run at or below
-# Cycles' relMSE answers the question.
-# Usage: benchmarks/time_to_quality_benchmark.sh [--runs N]   (threads: 2)
+# Cycles' relMSE answers the question. Cycles' runs come first, not interleaved with rtpro's: rtpro's
+# time limits are fractions of their median.
+# Usage: benchmarks/time_to_quality_benchmark.sh [--runs N] [--threads "2"]   (both on the last count given)
 #   SCENE=scenes/cornell_box.gltf SIZE=256 CYCLES_SPP=1024 REF_SPP=4096 MAX_DEPTH=8
 #   FRACTIONS="0.05 0.1 0.15 0.2 0.25" THRESHOLD=0.0015 WORKDIR=DIR (keeps the reference)
 #   RTPRO_BUILD_DIR=DIR uses an existing Release tree instead of build-release/.
@@ -25,9 +26,10 @@ threshold=${THRESHOLD:-0.0015}
 out=${WORKDIR:-$(mktemp -d "${TMPDIR:-/tmp}/rtpro-ttq.XXXXXX")}
 mkdir -p "$out"
 build_release rtpro
+t=${threads##* }
 
-cycles() {  # NAME SPP: $out/NAME.exr, on 2 threads
-  render_with_cycles render_gltf.py "$root/$scene" "$1" "$out/$1.log" "$size" "$2" "$max_depth" 2
+cycles() {  # NAME SPP: $out/NAME.exr, on $t threads
+  render_with_cycles render_gltf.py "$root/$scene" "$1" "$out/$1.log" "$size" "$2" "$max_depth" "$t"
 }
 rel_mse() {  # IMAGE: relMSE of its R,G,B against the reference
   oiiotool "$1" --ch R,G,B -o "$out/rgb.exr"
@@ -47,13 +49,13 @@ done
 median() { printf '%s\n' "$@" | sort -g | awk '{v[NR]=$1} END {print v[int((NR+1)/2)]}'; }
 tc=$(median "${cycles_times[@]}")
 ec=$(median "${cycles_errors[@]}")
-echo "$scene, ${size}x$size, max depth $max_depth, 2 threads; reference: Cycles at $ref_spp spp"
+echo "$scene, ${size}x$size, max depth $max_depth, $t threads; reference: Cycles at $ref_spp spp"
 echo "Cycles $cycles_spp spp: ${tc} s (runs: ${cycles_times[*]}), relMSE $ec (runs: ${cycles_errors[*]})"
 for f in $fractions; do
   limit=$(python3 -c "print($f * $tc)")
   start=$(date +%s.%N)
   "$build/rtpro" render "$root/$scene" -o "$out/rtpro-$f.exr" --size "${size}x$size" --max-depth "$max_depth" \
-    --threads 2 --spp 65536 --time-limit "$limit" --noise-threshold "$threshold" --noise-metric relmse --denoise \
+    --threads "$t" --spp 65536 --time-limit "$limit" --noise-threshold "$threshold" --noise-metric relmse --denoise \
     --quiet --no-journal --stats-json "$out/rtpro-$f.json"
   seconds=$(python3 -c "print(round($(date +%s.%N) - $start, 2))")
   error=$(rel_mse "$out/rtpro-$f.exr")
