@@ -5,7 +5,9 @@
 # each thread count. Reported per renderer and thread count: the median time and its spread
 # (rtpro: the whole process; Cycles: its render call, scene sync, BVH and sampling, without
 # Blender's start-up and glTF import), rtpro's time over Cycles', each image's mean per channel
-# and its relMSE against a long Cycles render (REF_SPP samples).
+# and its relMSE against a long Cycles render (REF_SPP samples). Run r renders with seed r + 1 in
+# Cycles (the reference has 1) and r in rtpro, so that the runs' relMSE is a spread of noise, not
+# one image's.
 # Usage: benchmarks/cycles_benchmark.sh [--runs N] [--threads "1 2"]
 #   SCENE=scenes/cornell_box.gltf SIZE=256 (or WxH) SPP=64 MAX_DEPTH=8 REF_SPP=1024 pick the work;
 #   FRAME=F SHUTTER=OPEN,CLOSE render an animated file's frame F with that shutter (motion blur in
@@ -54,10 +56,11 @@ RTPRO_CYCLES_SEED=1 cycles reference "$ref_spp" 2 "$out/reference.log"
 for t in $threads; do
   pin_for "$t"  # one-thread runs of both on one CPU
   for r in $(seq "$runs"); do
-    cycles "cycles-t$t-r$r" "$spp" "$t" "$out/cycles-t$t-r$r.log"
+    RTPRO_CYCLES_SEED=$((r + 1)) cycles "cycles-t$t-r$r" "$spp" "$t" "$out/cycles-t$t-r$r.log"
     /usr/bin/time -f "%e" -o "$out/rtpro-t$t-r$r.seconds" "${pin[@]}" "$build/rtpro" render "$scene_file" \
       -o "$out/rtpro-t$t-r$r.exr" --size "$pixels" --spp "$spp" --max-depth "$max_depth" --threads "$t" \
-      "${rtpro_motion[@]}" "${rtpro_options[@]}" --quiet --no-journal --stats-json "$out/rtpro-t$t-r$r.json"
+      "${rtpro_motion[@]}" "${rtpro_options[@]}" --set render.seed="$r" --quiet --no-journal \
+      --stats-json "$out/rtpro-t$t-r$r.json"
   done
 done
 compare_each "$out/reference.exr" "$out"/cycles-t*-r*.exr "$out"/rtpro-t*-r*.exr

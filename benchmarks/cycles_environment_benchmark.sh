@@ -33,7 +33,7 @@ RTPRO_CYCLES_SEED=1 cycles reference "$ref_spp" "$out/reference.log"
 echo "long rtpro render: $ref_spp spp ..." >&2
 "$build/rtpro" render "${spheres[@]}" -o "$out/rtpro-reference.exr" --spp "$ref_spp" --threads "$t" --quiet --no-journal
 for r in $(seq "$runs"); do
-  cycles "cycles-r$r" "$spp" "$out/cycles-r$r.log"
+  RTPRO_CYCLES_SEED=$((r + 1)) cycles "cycles-r$r" "$spp" "$out/cycles-r$r.log"  # a seed a run: the reference has 1
   /usr/bin/time -f "%e" -o "$out/rtpro-r$r.seconds" "$build/rtpro" render "${spheres[@]}" -o "$out/rtpro-r$r.exr" \
     --spp "$spp" --threads "$t" --quiet --no-journal --set render.seed="$r"
 done

@@ -1,8 +1,8 @@
 """Time at equal quality: how long one renderer takes to reach the other's noise. For unbiased Monte
 Carlo the relMSE falls as 1/samples, so time x relMSE is constant for a renderer on a scene, and
 (rtpro's seconds x relMSE) / (Cycles' seconds x relMSE) is rtpro's time to reach Cycles' relMSE over
-Cycles' time: noise per second, compared. Each run's pair (interleaved, the same samples) gives one
-ratio; reported as the median with the spread. Valid while both estimators are unbiased and the
+Cycles' time: noise per second, compared. Each run's pair (interleaved, each with a seed of its own)
+gives one ratio; reported as the median with the spread. Valid while both estimators are unbiased and the
 reference's own noise is small against theirs (a long render: REF_SPP >> SPP)."""
 import statistics
 
