@@ -14,10 +14,10 @@ while [ $# -gt 0 ]; do
   esac
 done
 [[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "$0: --runs takes a positive count, not '$runs'" >&2; exit 2; }
-for t in $threads; do
-  [[ $t =~ ^[1-9][0-9]*$ ]] || { echo "$0: --threads takes positive counts, not '$threads'" >&2; exit 2; }
-done
+[[ $threads =~ ^\ *[1-9][0-9]*(\ +[1-9][0-9]*)*\ *$ ]] ||
+  { echo "$0: --threads takes positive counts, not '$threads'" >&2; exit 2; }
 # single_thread_count: stops a script that renders at one thread count when given several.
 single_thread_count() {
-  [[ $threads =~ ^[1-9][0-9]*$ ]] || { echo "$0: --threads takes one count here, not '$threads'" >&2; exit 2; }
+  [[ $threads =~ ^\ *([1-9][0-9]*)\ *$ ]] || { echo "$0: --threads takes one count here, not '$threads'" >&2; exit 2; }
+  threads=${BASH_REMATCH[1]}
 }
