@@ -13,7 +13,7 @@ while [ $# -gt 0 ]; do
     *) echo "usage: $0 [--runs N] [--threads \"$threads\"] (--help: what it measures)" >&2; exit 2 ;;
   esac
 done
-[[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "$0: --runs takes a positive count, not '$runs'" >&2; exit 2; }
+check_runs
 [[ $threads =~ ^\ *[1-9][0-9]*(\ +[1-9][0-9]*)*\ *$ ]] ||
   { echo "$0: --threads takes positive counts, not '$threads'" >&2; exit 2; }
 # single_thread_count: stops a script that renders at one thread count when given several.

@@ -1,5 +1,5 @@
 # Sourced by the benchmark scripts: the Release tree they measure (RTPRO_BUILD_DIR, else
-# build-release/ beside the sources). Sets root and build, and defines build_release,
+# build-release/ beside the sources). Sets root and build, and defines build_release, check_runs,
 # compare_each and pin_for.
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${RTPRO_BUILD_DIR:-$root/build-release}
@@ -12,6 +12,11 @@ build_release() {
   fi
   grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$build/CMakeCache.txt" || { echo "$build is not a Release tree" >&2; exit 2; }
   cmake --build "$build" --target "$@" >/dev/null
+}
+
+# check_runs: stops the script unless runs is a positive count.
+check_runs() {
+  [[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "$0: --runs takes a positive count, not '$runs'" >&2; exit 2; }
 }
 
 # compare_each REFERENCE IMAGE...: `rtpro compare REFERENCE IMAGE --json` into IMAGE.compare.json

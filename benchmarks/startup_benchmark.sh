@@ -7,17 +7,11 @@
 # all of them alike. Usage: benchmarks/startup_benchmark.sh [--runs N] [OTHER_RTPRO ...] (-n N too)
 # (RTPRO_BUILD_DIR: use that build folder instead of build-release.)
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-build="${RTPRO_BUILD_DIR:-$root/build-release}"
+source "$(dirname "$0")/release_tree.sh"
 runs=10
 case "${1:-}" in -n | --runs) runs=$2; shift 2 ;; esac
-[[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "$0: --runs takes a positive count, not '$runs'" >&2; exit 2; }
-
-# An existing build folder (RTPRO_BUILD_DIR) keeps its own settings; only a new one is configured.
-if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTPRO_BUILD_TESTS=OFF >/dev/null
-fi
-cmake --build "$build" --target rtpro >/dev/null
+check_runs
+build_release rtpro
 binaries=("$build/rtpro" "$@")
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
